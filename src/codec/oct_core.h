@@ -1,0 +1,141 @@
+/* Octahedral mapping: the scalar arithmetic every path shares (scalar, SSE2 batch, GLSL mirror).
+ * Each operation is written in the exact order shaders/codec.glsl uses, so that results agree
+ * bit for bit; the build disables FMA contraction for the same reason. */
+#ifndef TL_CODEC_OCT_CORE_H
+#define TL_CODEC_OCT_CORE_H
+
+#include <math.h>
+#include <stdint.h>
+
+#include "thinlight/codec.h"
+
+static inline uint32_t tl__oct_clamp_bits(uint32_t bits)
+{
+    return bits < TL_OCT_MIN_BITS ? TL_OCT_MIN_BITS : bits > TL_OCT_MAX_BITS ? TL_OCT_MAX_BITS : bits;
+}
+
+/* Sign-not-zero from the sign bit: -0 gives -1, so the fold keeps -0 and +0 apart and the
+ * round trip stays exact on the square's outer edges. */
+static inline float tl__sign_not_zero(float v) { return copysignf(1.0f, v); }
+
+/* True when (x, y, z) can be used without sanitising: its L1 norm lies in [2^-60, 2^60]. This
+ * rejects NaN, Inf and zero, and keeps the precise variant's squared errors clear of overflow
+ * and underflow; anything else is sanitised to a unit vector first. */
+static inline int tl__oct_input_ok(float x, float y, float z)
+{
+    float l1 = (fabsf(x) + fabsf(y)) + fabsf(z);
+    return l1 >= 0x1.0p-60f && l1 <= 0x1.0p60f;
+}
+
+static inline void tl__oct_project_raw(float x, float y, float z, float *pu, float *pv)
+{
+    float l1 = (fabsf(x) + fabsf(y)) + fabsf(z);
+    float u = x / l1, v = y / l1;
+    if (z < 0.0f) {
+        float fu = (1.0f - fabsf(v)) * tl__sign_not_zero(u);
+        float fv = (1.0f - fabsf(u)) * tl__sign_not_zero(v);
+        u = fu;
+        v = fv;
+    }
+    *pu = u;
+    *pv = v;
+}
+
+/* Unnormalised direction for a point of the square. */
+static inline void tl__oct_unproject_raw(float u, float v, float *x, float *y, float *z)
+{
+    float w = (1.0f - fabsf(u)) - fabsf(v);
+    if (w < 0.0f) {
+        float fu = (1.0f - fabsf(v)) * tl__sign_not_zero(u);
+        float fv = (1.0f - fabsf(u)) * tl__sign_not_zero(v);
+        u = fu;
+        v = fv;
+    }
+    *x = u;
+    *y = v;
+    *z = w;
+}
+
+/* Component value of code k: (2k - max) / max, as one product with a rounded reciprocal. */
+static inline float tl__oct_dequant(uint32_t k, uint32_t max, float inv_max)
+{
+    return (float)((int32_t)(2u * k) - (int32_t)max) * inv_max;
+}
+
+/* Nearest code for a component in [-1,1]: q = (p + 1) * (max / 2), code = trunc(q + 0.5). */
+static inline uint32_t tl__oct_quant(float p, float half_max)
+{
+    float q = (p + 1.0f) * half_max;
+    return (uint32_t)(int32_t)(q + 0.5f);
+}
+
+static inline void tl__normalize3(float *x, float *y, float *z)
+{
+    float inv = 1.0f / sqrtf((*x * *x + *y * *y) + *z * *z);
+    *x *= inv;
+    *y *= inv;
+    *z *= inv;
+}
+
+static inline void tl__oct_decode_core(uint32_t code, uint32_t bits, float n[3])
+{
+    uint32_t max = (1u << bits) - 1u;
+    float inv_max = 1.0f / (float)max;
+    float u = tl__oct_dequant(code & max, max, inv_max);
+    float v = tl__oct_dequant((code >> bits) & max, max, inv_max);
+    float x, y, z;
+    tl__oct_unproject_raw(u, v, &x, &y, &z);
+    tl__normalize3(&x, &y, &z);
+    n[0] = x;
+    n[1] = y;
+    n[2] = z;
+}
+
+static inline uint32_t tl__oct_encode_core(float x, float y, float z, uint32_t bits)
+{
+    uint32_t max = (1u << bits) - 1u;
+    float half_max = 0.5f * (float)max;
+    float u, v;
+    tl__oct_project_raw(x, y, z, &u, &v);
+    return tl__oct_quant(u, half_max) | (tl__oct_quant(v, half_max) << bits);
+}
+
+/* Error of a candidate code: |n x c|^2 / |c|^2 = |n|^2 sin^2(angle). The sine keeps its relative
+ * precision at tiny angles, where 1 - cos falls below float resolution (at 12 bits and more the
+ * candidates' cosines differ by a few ULP). Smaller is better. */
+static inline float tl__oct_candidate_error(float x, float y, float z, float cu, float cv)
+{
+    float dx, dy, dz;
+    tl__oct_unproject_raw(cu, cv, &dx, &dy, &dz);
+    float ex = y * dz - z * dy, ey = z * dx - x * dz, ez = x * dy - y * dx;
+    float e = (ex * ex + ey * ey) + ez * ez;
+    float l = (dx * dx + dy * dy) + dz * dz;
+    return e / l;
+}
+
+static inline uint32_t tl__oct_encode_precise_core(float x, float y, float z, uint32_t bits)
+{
+    uint32_t max = (1u << bits) - 1u;
+    float half_max = 0.5f * (float)max;
+    float inv_max = 1.0f / (float)max;
+    float u, v;
+    tl__oct_project_raw(x, y, z, &u, &v);
+    uint32_t u0 = (uint32_t)(int32_t)((u + 1.0f) * half_max);
+    uint32_t v0 = (uint32_t)(int32_t)((v + 1.0f) * half_max);
+    u0 = u0 > max - 1u ? max - 1u : u0;
+    v0 = v0 > max - 1u ? max - 1u : v0;
+    float cu0 = tl__oct_dequant(u0, max, inv_max), cu1 = tl__oct_dequant(u0 + 1u, max, inv_max);
+    float cv0 = tl__oct_dequant(v0, max, inv_max), cv1 = tl__oct_dequant(v0 + 1u, max, inv_max);
+    /* Candidates in a fixed order; a later one wins only when strictly better. */
+    float best = tl__oct_candidate_error(x, y, z, cu0, cv0);
+    uint32_t bu = u0, bv = v0;
+    float e = tl__oct_candidate_error(x, y, z, cu1, cv0);
+    if (e < best) { best = e; bu = u0 + 1u; bv = v0; }
+    e = tl__oct_candidate_error(x, y, z, cu0, cv1);
+    if (e < best) { best = e; bu = u0; bv = v0 + 1u; }
+    e = tl__oct_candidate_error(x, y, z, cu1, cv1);
+    if (e < best) { bu = u0 + 1u; bv = v0 + 1u; }
+    return bu | (bv << bits);
+}
+
+#endif

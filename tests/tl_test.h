@@ -1,0 +1,78 @@
+/* Minimal test harness: one executable holds named cases; ctest runs each case by name
+ * (tests/CMakeLists.txt, tl_add_test). A case fails when any TL_CHECK in it fails. */
+#ifndef TL_TEST_H
+#define TL_TEST_H
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct tl_test_case {
+    const char *name;
+    void (*fn)(void);
+} tl_test_case;
+
+extern int tl_test_failures;
+
+#define TL_CHECK(cond)                                                                           \
+    do {                                                                                         \
+        if (!(cond)) {                                                                           \
+            fprintf(stderr, "%s:%d: check failed: %s\n", __FILE__, __LINE__, #cond);             \
+            tl_test_failures++;                                                                  \
+        }                                                                                        \
+    } while (0)
+
+/* Like TL_CHECK but prints the values compared; for bounds. */
+#define TL_CHECK_LE(a, b)                                                                        \
+    do {                                                                                         \
+        double tl__a = (double)(a), tl__b = (double)(b);                                         \
+        if (!(tl__a <= tl__b)) {                                                                 \
+            fprintf(stderr, "%s:%d: check failed: %s <= %s (%.9g > %.9g)\n", __FILE__, __LINE__, \
+                    #a, #b, tl__a, tl__b);                                                       \
+            tl_test_failures++;                                                                  \
+        }                                                                                        \
+    } while (0)
+
+#define TL_CHECK_EQ_U(a, b)                                                                      \
+    do {                                                                                         \
+        unsigned long long tl__a = (unsigned long long)(a), tl__b = (unsigned long long)(b);     \
+        if (tl__a != tl__b) {                                                                    \
+            fprintf(stderr, "%s:%d: check failed: %s == %s (0x%llx != 0x%llx)\n", __FILE__,      \
+                    __LINE__, #a, #b, tl__a, tl__b);                                             \
+            tl_test_failures++;                                                                  \
+        }                                                                                        \
+    } while (0)
+
+#define TL_CHECK_FINITE3(v) TL_CHECK(isfinite((v)[0]) && isfinite((v)[1]) && isfinite((v)[2]))
+
+/* Deterministic random numbers (splitmix64), so every run sees the same inputs. */
+typedef struct tl_rng { unsigned long long s; } tl_rng;
+static inline unsigned long long tl_rng_u64(tl_rng *r)
+{
+    unsigned long long z = (r->s += 0x9E3779B97F4A7C15ull);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+    return z ^ (z >> 31);
+}
+/* Uniform in [0,1). */
+static inline double tl_rng_unit(tl_rng *r) { return (double)(tl_rng_u64(r) >> 11) * 0x1.0p-53; }
+/* Uniform direction on the sphere (float). */
+static inline void tl_rng_direction(tl_rng *r, float v[3])
+{
+    double z = 2.0 * tl_rng_unit(r) - 1.0, phi = 6.283185307179586 * tl_rng_unit(r);
+    double s = sqrt(fmax(0.0, 1.0 - z * z));
+    v[0] = (float)(s * cos(phi));
+    v[1] = (float)(s * sin(phi));
+    v[2] = (float)z;
+}
+
+int tl_test_main(int argc, char **argv, const tl_test_case *cases, size_t count);
+
+#define TL_TEST_MAIN(cases)                                                                      \
+    int main(int argc, char **argv)                                                              \
+    {                                                                                            \
+        return tl_test_main(argc, argv, cases, sizeof(cases) / sizeof(cases[0]));                \
+    }
+
+#endif
