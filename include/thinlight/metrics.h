@@ -15,27 +15,28 @@ TL_API double tl_angle_deg(const float a[3], const float b[3]);
 
 /** CIE L*a*b* (D65 white) of an sRGB-encoded colour with channels in [0,1]. */
 TL_API void tl_srgb_to_lab(const double srgb[3], double lab[3]);
-/** CIEDE2000 colour difference (kL = kC = kH = 1), as in Sharma, Wu and Dalal (2005). */
+/** CIEDE2000 colour difference (kL = kC = kH = 1), as in Sharma, Wu and Dalal (2005). NULL gives NaN. */
 TL_API double tl_ciede2000(const double lab1[3], const double lab2[3]);
 
 /** Summary of the difference between two float images or arrays of `count` values. */
 typedef struct tl_image_error {
     double mse;            /**< mean squared error over finite pairs */
-    double psnr_db;        /**< 10 log10(peak^2 / mse); 999 when mse == 0 */
+    double psnr_db;        /**< 10 log10(peak^2 / mse), capped at 999 (mse == 0); 0 when no pair is finite */
     double mean_abs;       /**< mean absolute error over finite pairs */
     double max_abs;        /**< largest absolute error over finite pairs */
     size_t nonfinite;      /**< values where either side is NaN or Inf (excluded above) */
-    size_t count;          /**< values compared */
+    size_t count;          /**< values compared, non-finite ones included */
 } tl_image_error;
 
-/** Compares `count` floats; `peak` is the signal's peak (1 for [0,1] images). NULL or zero
- *  count returns TL_ERROR_INVALID_ARGUMENT. */
+/** Compares `count` floats; `peak` (finite, > 0) is the signal's peak, 1 for [0,1] images. NULL, a
+ *  zero count or a bad peak returns TL_ERROR_INVALID_ARGUMENT and zeroes `out`. */
 TL_API tl_result tl_image_compare(const float *a, const float *b, size_t count, double peak,
                                   tl_image_error *out);
 /** Same for 8-bit data (peak 255, errors in 8-bit steps). */
 TL_API tl_result tl_image_compare_u8(const uint8_t *a, const uint8_t *b, size_t count, tl_image_error *out);
 
-/** Relative error |a - ref| / |ref| in double; 0 when both are 0, +huge when ref is 0 and a is not. */
+/** Relative error |a - ref| / |ref| in double; 0 when both are 0, DBL_MAX when ref is 0 and a is
+ *  not (never Inf, so the value stays valid JSON); NaN inputs give NaN. */
 TL_API double tl_relative_error(double a, double ref);
 
 /* Running statistics: mean, max and percentiles from a log-spaced histogram held in the struct
@@ -56,7 +57,7 @@ typedef struct tl_stats {
     uint64_t bins[TL_STATS_BINS];
 } tl_stats;
 
-/** Resets to empty; a zero-initialised tl_stats is also empty except min, which this sets. */
+/** Resets to empty (every field 0); a zero-initialised tl_stats is equally empty and ready. */
 TL_API void tl_stats_reset(tl_stats *s);
 TL_API void tl_stats_add(tl_stats *s, double value);
 TL_API void tl_stats_add_n(tl_stats *s, const double *values, size_t count);
@@ -64,7 +65,8 @@ TL_API void tl_stats_add_n(tl_stats *s, const double *values, size_t count);
 TL_API void tl_stats_merge(tl_stats *s, const tl_stats *other);
 /** Mean of the accepted values (0 when empty). */
 TL_API double tl_stats_mean(const tl_stats *s);
-/** The p-quantile (p in [0,1], e.g. 0.99), 0 when empty. */
+/** The p-quantile by nearest rank (p in [0,1], e.g. 0.99): exactly min at p <= 0 and max at
+ *  p >= 1, 0 when empty, NaN for a NaN p. */
 TL_API double tl_stats_percentile(const tl_stats *s, double p);
 
 #ifdef __cplusplus
