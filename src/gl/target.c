@@ -1,0 +1,306 @@
+/* Render targets that know their size in bytes, framebuffers over them, readback. */
+#include <string.h>
+
+#include "gl.h"
+#include "msg.h"
+
+#define TL__F(fmt, bpp, kind, f, t) {fmt, #fmt, bpp, kind, f, t}
+
+/* Bytes per pixel are what the driver allocates: the declared bits, except D24 (stored in 32
+ * bits, as packed D24S8) and D32F_S8 (stored as 64 bits). Three-channel formats are not listed:
+ * RGB16F/RGB32F are not required to be renderable and RGB8 is padded differently by drivers. */
+static const tl__format_info tl__formats[] = {
+    TL__F(GL_R8, 1, TL__FORMAT_COLOR, GL_RED, GL_UNSIGNED_BYTE),
+    TL__F(GL_RG8, 2, TL__FORMAT_COLOR, GL_RG, GL_UNSIGNED_BYTE),
+    TL__F(GL_RGBA8, 4, TL__FORMAT_COLOR, GL_RGBA, GL_UNSIGNED_BYTE),
+    TL__F(GL_SRGB8_ALPHA8, 4, TL__FORMAT_COLOR, GL_RGBA, GL_UNSIGNED_BYTE),
+    TL__F(GL_R16, 2, TL__FORMAT_COLOR, GL_RED, GL_UNSIGNED_SHORT),
+    TL__F(GL_RG16, 4, TL__FORMAT_COLOR, GL_RG, GL_UNSIGNED_SHORT),
+    TL__F(GL_RGBA16, 8, TL__FORMAT_COLOR, GL_RGBA, GL_UNSIGNED_SHORT),
+    TL__F(GL_RGB10_A2, 4, TL__FORMAT_COLOR, GL_RGBA, GL_UNSIGNED_INT_2_10_10_10_REV),
+    TL__F(GL_RGB10_A2UI, 4, TL__FORMAT_COLOR, GL_RGBA_INTEGER, GL_UNSIGNED_INT_2_10_10_10_REV),
+    TL__F(GL_R11F_G11F_B10F, 4, TL__FORMAT_COLOR, GL_RGB, GL_UNSIGNED_INT_10F_11F_11F_REV),
+    TL__F(GL_R16F, 2, TL__FORMAT_COLOR, GL_RED, GL_HALF_FLOAT),
+    TL__F(GL_RG16F, 4, TL__FORMAT_COLOR, GL_RG, GL_HALF_FLOAT),
+    TL__F(GL_RGBA16F, 8, TL__FORMAT_COLOR, GL_RGBA, GL_HALF_FLOAT),
+    TL__F(GL_R32F, 4, TL__FORMAT_COLOR, GL_RED, GL_FLOAT),
+    TL__F(GL_RG32F, 8, TL__FORMAT_COLOR, GL_RG, GL_FLOAT),
+    TL__F(GL_RGBA32F, 16, TL__FORMAT_COLOR, GL_RGBA, GL_FLOAT),
+    TL__F(GL_R8UI, 1, TL__FORMAT_COLOR, GL_RED_INTEGER, GL_UNSIGNED_BYTE),
+    TL__F(GL_RG8UI, 2, TL__FORMAT_COLOR, GL_RG_INTEGER, GL_UNSIGNED_BYTE),
+    TL__F(GL_RGBA8UI, 4, TL__FORMAT_COLOR, GL_RGBA_INTEGER, GL_UNSIGNED_BYTE),
+    TL__F(GL_R16UI, 2, TL__FORMAT_COLOR, GL_RED_INTEGER, GL_UNSIGNED_SHORT),
+    TL__F(GL_RG16UI, 4, TL__FORMAT_COLOR, GL_RG_INTEGER, GL_UNSIGNED_SHORT),
+    TL__F(GL_RGBA16UI, 8, TL__FORMAT_COLOR, GL_RGBA_INTEGER, GL_UNSIGNED_SHORT),
+    TL__F(GL_R32UI, 4, TL__FORMAT_COLOR, GL_RED_INTEGER, GL_UNSIGNED_INT),
+    TL__F(GL_RG32UI, 8, TL__FORMAT_COLOR, GL_RG_INTEGER, GL_UNSIGNED_INT),
+    TL__F(GL_RGBA32UI, 16, TL__FORMAT_COLOR, GL_RGBA_INTEGER, GL_UNSIGNED_INT),
+    TL__F(GL_DEPTH_COMPONENT16, 2, TL__FORMAT_DEPTH, GL_DEPTH_COMPONENT, GL_UNSIGNED_SHORT),
+    TL__F(GL_DEPTH_COMPONENT24, 4, TL__FORMAT_DEPTH, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT),
+    TL__F(GL_DEPTH_COMPONENT32F, 4, TL__FORMAT_DEPTH, GL_DEPTH_COMPONENT, GL_FLOAT),
+    TL__F(GL_DEPTH24_STENCIL8, 4, TL__FORMAT_DEPTH_STENCIL, GL_DEPTH_STENCIL,
+          GL_UNSIGNED_INT_24_8),
+    TL__F(GL_DEPTH32F_STENCIL8, 8, TL__FORMAT_DEPTH_STENCIL, GL_DEPTH_STENCIL,
+          GL_FLOAT_32_UNSIGNED_INT_24_8_REV),
+    TL__F(GL_STENCIL_INDEX8, 1, TL__FORMAT_STENCIL, GL_STENCIL_INDEX, GL_UNSIGNED_BYTE),
+};
+
+const tl__format_info *tl__format_lookup(GLenum internal_format)
+{
+    for (size_t i = 0; i < sizeof tl__formats / sizeof tl__formats[0]; i++)
+        if (tl__formats[i].internal_format == internal_format) return &tl__formats[i];
+    return NULL;
+}
+
+size_t tl__format_bytes_per_pixel(GLenum internal_format)
+{
+    const tl__format_info *f = tl__format_lookup(internal_format);
+    return f ? f->bytes_per_pixel : 0;
+}
+
+tl_result tl__target_create(const GladGLContext *gl, const tl__target_desc *desc, tl__target *out,
+                            char *msg, size_t msg_size)
+{
+    tl__msg(msg, msg_size, "%s", "");
+    if (out) memset(out, 0, sizeof *out);
+    if (!gl || !desc || !out) {
+        tl__msg(msg, msg_size, "tl__target_create: NULL %s",
+                !gl ? "context" : !desc ? "descriptor" : "output");
+        return TL_ERROR_INVALID_ARGUMENT;
+    }
+    const char *label = desc->label ? desc->label : "";
+    const tl__format_info *f = tl__format_lookup(desc->internal_format);
+    if (!f) {
+        tl__msg(msg, msg_size, "target \"%s\": internal format 0x%04x is not in the format table",
+                label, (unsigned)desc->internal_format);
+        return TL_ERROR_UNSUPPORTED;
+    }
+    GLint max_size = 0;
+    gl->GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    if (desc->width == 0 || desc->height == 0 || desc->width > (uint32_t)max_size ||
+        desc->height > (uint32_t)max_size) {
+        tl__msg(msg, msg_size, "target \"%s\": size %ux%u outside 1..%d (GL_MAX_TEXTURE_SIZE)",
+                label, (unsigned)desc->width, (unsigned)desc->height, (int)max_size);
+        return desc->width == 0 || desc->height == 0 ? TL_ERROR_INVALID_ARGUMENT : TL_ERROR_LIMIT;
+    }
+    size_t pixels = (size_t)desc->width * desc->height;
+    if (pixels > SIZE_MAX / f->bytes_per_pixel) {
+        tl__msg(msg, msg_size, "target \"%s\": %ux%u %s overflows size_t", label,
+                (unsigned)desc->width, (unsigned)desc->height, f->name);
+        return TL_ERROR_LIMIT;
+    }
+
+    GLuint tex = 0;
+    gl->CreateTextures(GL_TEXTURE_2D, 1, &tex);
+    if (!tex) {
+        tl__msg(msg, msg_size, "target \"%s\": glCreateTextures failed", label);
+        return TL_ERROR_GL;
+    }
+    gl->TextureStorage2D(tex, 1, f->internal_format, (GLsizei)desc->width,
+                         (GLsizei)desc->height);
+    /* Storage that failed (GL_OUT_OF_MEMORY, ...) leaves the texture mutable; checking this avoids
+     * glGetError, which would also consume the caller's pending errors. */
+    GLint immutable = GL_FALSE;
+    gl->GetTextureParameteriv(tex, GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
+    if (!immutable) {
+        gl->DeleteTextures(1, &tex);
+        tl__msg(msg, msg_size, "target \"%s\": could not allocate %ux%u %s (%zu bytes)", label,
+                (unsigned)desc->width, (unsigned)desc->height, f->name,
+                pixels * f->bytes_per_pixel);
+        return TL_ERROR_GL;
+    }
+    gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    tl__gl_label(gl, GL_TEXTURE, tex, desc->label);
+
+    out->texture = tex;
+    out->internal_format = f->internal_format;
+    out->width = desc->width;
+    out->height = desc->height;
+    out->bytes = pixels * f->bytes_per_pixel;
+    return TL_OK;
+}
+
+void tl__target_destroy(const GladGLContext *gl, tl__target *t)
+{
+    if (!t) return;
+    if (gl && t->texture) gl->DeleteTextures(1, &t->texture);
+    memset(t, 0, sizeof *t);
+}
+
+/* Bytes per pixel of a client-side pixel transfer, 0 if this layer does not know the pair. */
+static size_t tl__transfer_bytes(GLenum format, GLenum type)
+{
+    size_t channels;
+    switch (format) {
+    case GL_RED: case GL_RED_INTEGER: case GL_DEPTH_COMPONENT: case GL_STENCIL_INDEX:
+        channels = 1; break;
+    case GL_RG: case GL_RG_INTEGER: channels = 2; break;
+    case GL_RGB: case GL_RGB_INTEGER: channels = 3; break;
+    case GL_RGBA: case GL_RGBA_INTEGER: channels = 4; break;
+    case GL_DEPTH_STENCIL: channels = 1; break; /* only packed types below */
+    default: return 0;
+    }
+    switch (type) {
+    case GL_UNSIGNED_BYTE: case GL_BYTE: return channels;
+    case GL_UNSIGNED_SHORT: case GL_SHORT: case GL_HALF_FLOAT: return 2 * channels;
+    case GL_UNSIGNED_INT: case GL_INT: case GL_FLOAT: return 4 * channels;
+    case GL_UNSIGNED_INT_2_10_10_10_REV: case GL_UNSIGNED_INT_10F_11F_11F_REV:
+    case GL_UNSIGNED_INT_24_8: return 4;
+    case GL_FLOAT_32_UNSIGNED_INT_24_8_REV: return 8;
+    default: return 0;
+    }
+}
+
+tl_result tl__target_read(const GladGLContext *gl, const tl__target *t, GLenum format, GLenum type,
+                          void *dst, size_t dst_size, char *msg, size_t msg_size)
+{
+    tl__msg(msg, msg_size, "%s", "");
+    if (!gl || !t || !t->texture || !dst) {
+        tl__msg(msg, msg_size, "%s", "tl__target_read: NULL context, target, texture or buffer");
+        return TL_ERROR_INVALID_ARGUMENT;
+    }
+    const tl__format_info *f = tl__format_lookup(t->internal_format);
+    if (format == 0 && type == 0 && f) {
+        format = f->format;
+        type = f->type;
+    }
+    size_t bpp = tl__transfer_bytes(format, type);
+    if (bpp == 0) {
+        tl__msg(msg, msg_size, "tl__target_read: unknown transfer format 0x%04x / type 0x%04x",
+                (unsigned)format, (unsigned)type);
+        return TL_ERROR_UNSUPPORTED;
+    }
+    size_t need = bpp * t->width * t->height;
+    if (dst_size < need || need > 0x7fffffff) {
+        tl__msg(msg, msg_size, "tl__target_read: %ux%u needs %zu bytes, buffer has %zu",
+                (unsigned)t->width, (unsigned)t->height, need, dst_size);
+        return TL_ERROR_LIMIT;
+    }
+    GLint alignment = 4, pack_buffer = 0;
+    gl->GetIntegerv(GL_PACK_ALIGNMENT, &alignment);
+    gl->GetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &pack_buffer);
+    gl->PixelStorei(GL_PACK_ALIGNMENT, 1);
+    if (pack_buffer) gl->BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    gl->GetTextureImage(t->texture, 0, format, type, (GLsizei)need, dst);
+    if (pack_buffer) gl->BindBuffer(GL_PIXEL_PACK_BUFFER, (GLuint)pack_buffer);
+    gl->PixelStorei(GL_PACK_ALIGNMENT, alignment);
+    return TL_OK;
+}
+
+const char *tl__framebuffer_status_string(GLenum status)
+{
+    switch (status) {
+    case GL_FRAMEBUFFER_COMPLETE: return "GL_FRAMEBUFFER_COMPLETE";
+    case GL_FRAMEBUFFER_UNDEFINED: return "GL_FRAMEBUFFER_UNDEFINED";
+    case GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT: return "GL_FRAMEBUFFER_INCOMPLETE_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT:
+        return "GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT";
+    case GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_DRAW_BUFFER";
+    case GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER: return "GL_FRAMEBUFFER_INCOMPLETE_READ_BUFFER";
+    case GL_FRAMEBUFFER_UNSUPPORTED: return "GL_FRAMEBUFFER_UNSUPPORTED";
+    case GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE: return "GL_FRAMEBUFFER_INCOMPLETE_MULTISAMPLE";
+    case GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS: return "GL_FRAMEBUFFER_INCOMPLETE_LAYER_TARGETS";
+    case 0: return "glCheckNamedFramebufferStatus failed";
+    default: return "unknown framebuffer status";
+    }
+}
+
+tl_result tl__framebuffer_create(const GladGLContext *gl, const char *label,
+                                 const tl__target *const *colors, size_t color_count,
+                                 const tl__target *depth, GLuint *out_fbo, char *msg,
+                                 size_t msg_size)
+{
+    tl__msg(msg, msg_size, "%s", "");
+    if (out_fbo) *out_fbo = 0;
+    if (!label) label = "";
+    if (!gl || !out_fbo || (color_count && !colors)) {
+        tl__msg(msg, msg_size, "%s", "tl__framebuffer_create: NULL context, output or colors");
+        return TL_ERROR_INVALID_ARGUMENT;
+    }
+    GLint max_attachments = 0, max_draw_buffers = 0;
+    gl->GetIntegerv(GL_MAX_COLOR_ATTACHMENTS, &max_attachments);
+    gl->GetIntegerv(GL_MAX_DRAW_BUFFERS, &max_draw_buffers);
+    size_t limit = TL__FRAMEBUFFER_MAX_COLORS;
+    if ((size_t)max_attachments < limit) limit = (size_t)max_attachments;
+    if ((size_t)max_draw_buffers < limit) limit = (size_t)max_draw_buffers;
+    if (color_count > limit) {
+        tl__msg(msg, msg_size, "framebuffer \"%s\": %zu colour targets, the limit is %zu", label,
+                color_count, limit);
+        return TL_ERROR_LIMIT;
+    }
+    if (color_count == 0 && !depth) {
+        tl__msg(msg, msg_size, "framebuffer \"%s\": no target", label);
+        return TL_ERROR_INVALID_ARGUMENT;
+    }
+    const tl__target *first = color_count ? colors[0] : depth;
+    for (size_t i = 0; i <= color_count; i++) {
+        const tl__target *t = i < color_count ? colors[i] : depth;
+        if (!t) {
+            if (i < color_count) {
+                tl__msg(msg, msg_size, "framebuffer \"%s\": colour target %zu is NULL", label, i);
+                return TL_ERROR_INVALID_ARGUMENT;
+            }
+            continue;
+        }
+        const tl__format_info *f = tl__format_lookup(t->internal_format);
+        bool want_color = i < color_count;
+        if (!t->texture || !f || (f->kind == TL__FORMAT_COLOR) != want_color) {
+            tl__msg(msg, msg_size, "framebuffer \"%s\": %s target %zu is %s", label,
+                    want_color ? "colour" : "depth", i,
+                    !t->texture || !f ? "not created" : "of the wrong kind");
+            return TL_ERROR_INVALID_ARGUMENT;
+        }
+        if (t->width != first->width || t->height != first->height) {
+            tl__msg(msg, msg_size, "framebuffer \"%s\": target sizes differ (%ux%u and %ux%u)",
+                    label, (unsigned)first->width, (unsigned)first->height, (unsigned)t->width,
+                    (unsigned)t->height);
+            return TL_ERROR_INVALID_ARGUMENT;
+        }
+    }
+
+    GLuint fbo = 0;
+    gl->CreateFramebuffers(1, &fbo);
+    if (!fbo) {
+        tl__msg(msg, msg_size, "framebuffer \"%s\": glCreateFramebuffers failed", label);
+        return TL_ERROR_GL;
+    }
+    GLenum draw[TL__FRAMEBUFFER_MAX_COLORS];
+    for (size_t i = 0; i < color_count; i++) {
+        draw[i] = GL_COLOR_ATTACHMENT0 + (GLenum)i;
+        gl->NamedFramebufferTexture(fbo, draw[i], colors[i]->texture, 0);
+    }
+    if (depth) {
+        const tl__format_info *f = tl__format_lookup(depth->internal_format);
+        GLenum attachment = f->kind == TL__FORMAT_DEPTH_STENCIL ? GL_DEPTH_STENCIL_ATTACHMENT
+                            : f->kind == TL__FORMAT_STENCIL     ? GL_STENCIL_ATTACHMENT
+                                                                : GL_DEPTH_ATTACHMENT;
+        gl->NamedFramebufferTexture(fbo, attachment, depth->texture, 0);
+    }
+    if (color_count) {
+        gl->NamedFramebufferDrawBuffers(fbo, (GLsizei)color_count, draw);
+        gl->NamedFramebufferReadBuffer(fbo, GL_COLOR_ATTACHMENT0);
+    } else {
+        gl->NamedFramebufferDrawBuffer(fbo, GL_NONE);
+        gl->NamedFramebufferReadBuffer(fbo, GL_NONE);
+    }
+    GLenum status = gl->CheckNamedFramebufferStatus(fbo, GL_DRAW_FRAMEBUFFER);
+    if (status != GL_FRAMEBUFFER_COMPLETE) {
+        gl->DeleteFramebuffers(1, &fbo);
+        tl__msg(msg, msg_size, "framebuffer \"%s\" is incomplete: %s (0x%04x)", label,
+                tl__framebuffer_status_string(status), (unsigned)status);
+        return TL_ERROR_GL;
+    }
+    tl__gl_label(gl, GL_FRAMEBUFFER, fbo, label);
+    *out_fbo = fbo;
+    return TL_OK;
+}
+
+void tl__framebuffer_destroy(const GladGLContext *gl, GLuint *fbo)
+{
+    if (!fbo) return;
+    if (gl && *fbo) gl->DeleteFramebuffers(1, fbo);
+    *fbo = 0;
+}

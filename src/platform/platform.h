@@ -1,0 +1,63 @@
+/* Private: the context object shared by the back ends (osmesa.c, glfw.c) and context.c. */
+#ifndef TL_PLATFORM_PLATFORM_H
+#define TL_PLATFORM_PLATFORM_H
+
+#include <stdarg.h>
+#include <stdio.h>
+
+#include "thinlight/context.h"
+
+struct tl_context {
+    tl_context_backend backend;
+    uint32_t width, height; /* requested default framebuffer size */
+    int major, minor;       /* core version obtained */
+    char renderer[128];     /* GL_RENDERER */
+    char version[128];      /* GL_VERSION */
+    char error[512];        /* last failure on this context */
+    void *impl;             /* back-end state */
+};
+
+/* Descriptor with defaults resolved (tl__context_desc_defaults). */
+typedef struct tl__context_config {
+    tl_context_backend backend;
+    uint32_t width, height;
+    int major, minor;
+    bool exact_version, debug, visible;
+    const char *title;
+} tl__context_config;
+
+/* Core versions tried, best first, after the requested one (unless exact_version). */
+#define TL__CONTEXT_FALLBACKS {{4, 6}, {4, 5}, {4, 4}, {4, 3}, {4, 2}, {4, 1}, {4, 0}, {3, 3}}
+
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+static inline void tl__context_error(tl_context *ctx, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(ctx->error, sizeof ctx->error, fmt, ap);
+    va_end(ap);
+}
+
+/* Each back end: create fills ctx->impl, major/minor and makes the context current; on failure it
+ * leaves ctx->impl NULL, writes ctx->error and cleans up after itself. */
+#if defined(TL_HAVE_OSMESA)
+tl_result tl__osmesa_create(tl_context *ctx, const tl__context_config *cfg);
+tl_result tl__osmesa_make_current(tl_context *ctx);
+void tl__osmesa_release(void);
+tl_gl_proc tl__osmesa_proc(tl_context *ctx, const char *name);
+void tl__osmesa_destroy(tl_context *ctx);
+#endif
+
+#if defined(TL_HAVE_GLFW)
+tl_result tl__glfw_create(tl_context *ctx, const tl__context_config *cfg);
+tl_result tl__glfw_make_current(tl_context *ctx);
+void tl__glfw_release(void);
+tl_gl_proc tl__glfw_proc(tl_context *ctx, const char *name);
+tl_result tl__glfw_swap(tl_context *ctx);
+void tl__glfw_size(const tl_context *ctx, uint32_t *width, uint32_t *height);
+void tl__glfw_destroy(tl_context *ctx);
+#endif
+
+#endif
