@@ -1,0 +1,152 @@
+/* thinlight scene: what the renderer draws. A plain CPU-side description (arrays and counts, as
+ * cgltf does) that the built-in generator and the glTF loader both fill; the renderer uploads it.
+ * Everything a scene owns is freed by tl_scene_destroy. */
+#ifndef THINLIGHT_SCENE_H
+#define THINLIGHT_SCENE_H
+
+#include "thinlight/base.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** Optional allocator; a zeroed one means malloc/free. */
+typedef struct tl_allocator {
+    void *(*alloc)(size_t size, void *user); /**< returns NULL on failure */
+    void (*free)(void *ptr, void *user);
+    void *user;
+} tl_allocator;
+
+/** Interleaved vertex: 48 bytes. */
+typedef struct tl_vertex {
+    float position[3];
+    float normal[3];
+    float uv[2];
+    float tangent[4]; /**< xyz tangent, w = bitangent sign; zero when the object has no normal map */
+} tl_vertex;
+
+/** An RGBA8 texture; albedo textures hold sRGB-encoded colour. */
+typedef struct tl_texture {
+    uint32_t width;
+    uint32_t height;
+    uint8_t *rgba; /**< width * height * 4 bytes, rows top to bottom */
+    char name[64];
+} tl_texture;
+
+#define TL_NO_TEXTURE UINT32_MAX
+
+/** The renderer's material: Lambert diffuse + normalised Blinn-Phong/GGX specular. */
+typedef struct tl_material {
+    float albedo[3];          /**< linear diffuse colour (multiplied by the texture, if any) */
+    float specular[3];        /**< linear specular colour (F0); all zero = no specular */
+    float gloss;              /**< [0,1], see tl_gloss_to_specular_power */
+    float emissive[3];        /**< linear emitted radiance */
+    float alpha_cutoff;       /**< alpha-test threshold (alpha mode MASK) */
+    uint32_t albedo_texture;  /**< index into textures, or TL_NO_TEXTURE */
+    uint32_t normal_texture;  /**< tangent-space normal map, or TL_NO_TEXTURE */
+    uint32_t flags;           /**< TL_MATERIAL_* */
+    char name[64];
+} tl_material;
+
+#define TL_MATERIAL_DOUBLE_SIDED 1u
+#define TL_MATERIAL_ALPHA_MASK 2u
+#define TL_MATERIAL_ALPHA_BLEND 4u
+
+/** A drawable object: a range of the scene's index buffer with one material and a world transform. */
+typedef struct tl_object {
+    uint32_t first_index;
+    uint32_t index_count;
+    uint32_t material;
+    float transform[16];   /**< column-major object-to-world */
+    float bounds_min[3];   /**< world-space axis-aligned bounds */
+    float bounds_max[3];
+} tl_object;
+
+typedef enum tl_light_type {
+    TL_LIGHT_DEFAULT = 0, /**< = TL_LIGHT_POINT */
+    TL_LIGHT_POINT,
+    TL_LIGHT_SPOT,
+    TL_LIGHT_DIRECTIONAL,
+    TL_LIGHT_TYPE_COUNT_
+} tl_light_type;
+
+/**
+ * A light with a finite range. Point and spot lights fall off with the windowed inverse square
+ *   attenuation(d) = clamp(1 - (d / radius)^4, 0, 1)^2 / max(d^2, (0.01 radius)^2),
+ * which reaches exactly zero at d = radius and stays finite at d = 0.
+ */
+typedef struct tl_light {
+    tl_light_type type;
+    float position[3];   /**< world space (point, spot) */
+    float direction[3];  /**< unit, the direction light travels (spot, directional) */
+    float color[3];      /**< linear colour times intensity */
+    float radius;        /**< range; > 0 for point and spot */
+    float cos_inner;     /**< spot: full intensity inside this cone */
+    float cos_outer;     /**< spot: zero outside this cone; cos_outer < cos_inner */
+} tl_light;
+
+typedef struct tl_camera {
+    float position[3];
+    float target[3];
+    float up[3];
+    float fov_y;  /**< radians */
+    float near_z;
+    float far_z;  /**< <= 0 or Inf: infinite far plane */
+} tl_camera;
+
+typedef struct tl_scene {
+    tl_vertex *vertices;
+    size_t vertex_count;
+    uint32_t *indices;   /**< triangles, 3 per face */
+    size_t index_count;
+    tl_object *objects;
+    size_t object_count;
+    tl_material *materials;
+    size_t material_count;
+    tl_texture *textures;
+    size_t texture_count;
+    tl_light *lights;
+    size_t light_count;
+    tl_camera camera;
+    float ambient[3];     /**< linear ambient radiance */
+    float bounds_min[3];
+    float bounds_max[3];
+    tl_allocator allocator;
+} tl_scene;
+
+/** What a scene uses, for the frame planner (DESIGN.md section 4). */
+typedef struct tl_scene_features {
+    size_t point_lights;
+    size_t spot_lights;
+    size_t directional_lights;
+    int has_specular;     /**< some material has non-zero specular */
+    int has_textures;     /**< some material samples a texture (UVs needed) */
+    int has_normal_maps;  /**< tangents needed */
+    int has_emissive;
+    int has_alpha_mask;
+    int has_alpha_blend;
+    size_t triangle_count;
+    size_t object_count;
+} tl_scene_features;
+
+TL_API void tl_scene_features_get(const tl_scene *scene, tl_scene_features *out);
+
+/** Parameters of the built-in scene; zero means the default. */
+typedef struct tl_default_scene_desc {
+    uint32_t point_lights;   /**< default 64; at most 65536 */
+    uint32_t spot_lights;    /**< default point_lights / 8 */
+    int no_directional;      /**< 1 to leave out the directional light (moonlight through the roof) */
+    uint64_t seed;           /**< default 1; same seed, same scene */
+    uint32_t detail;         /**< tessellation level 1..8, default 4 (>= 100k triangles) */
+    tl_allocator allocator;
+} tl_default_scene_desc;
+
+/** Builds the built-in crypt scene. TL_ERROR_LIMIT for absurd counts, TL_ERROR_OUT_OF_MEMORY. */
+TL_API tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **out);
+/** Frees a scene from any tl_scene_* constructor; NULL is ignored. */
+TL_API void tl_scene_destroy(tl_scene *scene);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

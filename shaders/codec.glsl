@@ -1,0 +1,306 @@
+// thinlight codec, GLSL mirror of src/codec (oct_core.h, rt0.c, gloss.c, albedo.c, depth.c).
+// Every function performs the same IEEE operations in the same order as its C twin; `precise`
+// forbids contraction into FMA, so that the parity test can demand identical bits.
+// Included by pass shaders; requires GLSL 4.50.
+
+#ifndef TL_CODEC_GLSL
+#define TL_CODEC_GLSL
+
+// Sign-not-zero from the sign bit: -0 gives -1 (plain sign() would give 0 and send (0,0,-1) to +Z).
+float tl_sign_not_zero(float v)
+{
+    return (floatBitsToUint(v) >> 31) != 0u ? -1.0 : 1.0;
+}
+
+bool tl_oct_input_ok(vec3 n)
+{
+    precise float l1 = (abs(n.x) + abs(n.y)) + abs(n.z);
+    return l1 >= 8.673617379884035e-19 && l1 <= 1.152921504606847e18; // 2^-60, 2^60
+}
+
+void tl_normalize3(inout vec3 v)
+{
+    precise float len2 = (v.x * v.x + v.y * v.y) + v.z * v.z;
+    precise float inv = 1.0 / sqrt(len2);
+    v = vec3(v.x * inv, v.y * inv, v.z * inv);
+}
+
+// tl_normal_sanitize: NaN -> +Z, zero -> +Z, Inf components -> +-1 (finite ones 0), else scaled by
+// the largest magnitude and normalised.
+vec3 tl_normal_sanitize(vec3 n)
+{
+    if (isnan(n.x) || isnan(n.y) || isnan(n.z)) return vec3(0.0, 0.0, 1.0);
+    float m = max(abs(n.x), max(abs(n.y), abs(n.z)));
+    if (m == 0.0) return vec3(0.0, 0.0, 1.0);
+    precise vec3 v;
+    if (isinf(m)) {
+        v = vec3(isinf(n.x) ? tl_sign_not_zero(n.x) : 0.0,
+                 isinf(n.y) ? tl_sign_not_zero(n.y) : 0.0,
+                 isinf(n.z) ? tl_sign_not_zero(n.z) : 0.0);
+    } else {
+        v = vec3(n.x / m, n.y / m, n.z / m);
+    }
+    tl_normalize3(v);
+    return v;
+}
+
+vec2 tl_oct_project_raw(vec3 n)
+{
+    precise float l1 = (abs(n.x) + abs(n.y)) + abs(n.z);
+    precise float u = n.x / l1;
+    precise float v = n.y / l1;
+    if (n.z < 0.0) {
+        precise float fu = (1.0 - abs(v)) * tl_sign_not_zero(u);
+        precise float fv = (1.0 - abs(u)) * tl_sign_not_zero(v);
+        u = fu;
+        v = fv;
+    }
+    return vec2(u, v);
+}
+
+vec3 tl_oct_unproject_raw(vec2 p)
+{
+    precise float u = p.x;
+    precise float v = p.y;
+    precise float w = (1.0 - abs(u)) - abs(v);
+    if (w < 0.0) {
+        precise float fu = (1.0 - abs(v)) * tl_sign_not_zero(u);
+        precise float fv = (1.0 - abs(u)) * tl_sign_not_zero(v);
+        u = fu;
+        v = fv;
+    }
+    return vec3(u, v, w);
+}
+
+float tl_oct_dequant(uint k, uint maxv, float inv_max)
+{
+    precise float f = float(int(2u * k) - int(maxv)) * inv_max;
+    return f;
+}
+
+uint tl_oct_quant(float p, float half_max)
+{
+    precise float q = (p + 1.0) * half_max;
+    precise float r = q + 0.5;
+    return uint(int(r));
+}
+
+vec3 tl_oct_input(vec3 n)
+{
+    return tl_oct_input_ok(n) ? n : tl_normal_sanitize(n);
+}
+
+// Code layout as in C: u in the low `bits` bits, v above it.
+uint tl_oct_encode(vec3 n, uint bits)
+{
+    vec3 v = tl_oct_input(n);
+    uint maxv = (1u << bits) - 1u;
+    float half_max = 0.5 * float(maxv);
+    vec2 p = tl_oct_project_raw(v);
+    return tl_oct_quant(p.x, half_max) | (tl_oct_quant(p.y, half_max) << bits);
+}
+
+float tl_oct_candidate_error(vec3 n, float cu, float cv)
+{
+    vec3 d = tl_oct_unproject_raw(vec2(cu, cv));
+    precise float ex = n.y * d.z - n.z * d.y;
+    precise float ey = n.z * d.x - n.x * d.z;
+    precise float ez = n.x * d.y - n.y * d.x;
+    precise float e = (ex * ex + ey * ey) + ez * ez;
+    precise float l = (d.x * d.x + d.y * d.y) + d.z * d.z;
+    precise float r = e / l;
+    return r;
+}
+
+uint tl_oct_encode_precise(vec3 n, uint bits)
+{
+    vec3 v = tl_oct_input(n);
+    uint maxv = (1u << bits) - 1u;
+    float half_max = 0.5 * float(maxv);
+    float inv_max = 1.0 / float(maxv);
+    vec2 p = tl_oct_project_raw(v);
+    precise float qu = (p.x + 1.0) * half_max;
+    precise float qv = (p.y + 1.0) * half_max;
+    uint u0 = min(uint(int(qu)), maxv - 1u);
+    uint v0 = min(uint(int(qv)), maxv - 1u);
+    float cu0 = tl_oct_dequant(u0, maxv, inv_max), cu1 = tl_oct_dequant(u0 + 1u, maxv, inv_max);
+    float cv0 = tl_oct_dequant(v0, maxv, inv_max), cv1 = tl_oct_dequant(v0 + 1u, maxv, inv_max);
+    float best = tl_oct_candidate_error(v, cu0, cv0);
+    uint bu = u0, bv = v0;
+    float e = tl_oct_candidate_error(v, cu1, cv0);
+    if (e < best) { best = e; bu = u0 + 1u; bv = v0; }
+    e = tl_oct_candidate_error(v, cu0, cv1);
+    if (e < best) { best = e; bu = u0; bv = v0 + 1u; }
+    e = tl_oct_candidate_error(v, cu1, cv1);
+    if (e < best) { bu = u0 + 1u; bv = v0 + 1u; }
+    return bu | (bv << bits);
+}
+
+vec3 tl_oct_decode(uint code, uint bits)
+{
+    uint maxv = (1u << bits) - 1u;
+    float inv_max = 1.0 / float(maxv);
+    float u = tl_oct_dequant(code & maxv, maxv, inv_max);
+    float v = tl_oct_dequant((code >> bits) & maxv, maxv, inv_max);
+    vec3 n = tl_oct_unproject_raw(vec2(u, v));
+    tl_normalize3(n);
+    return n;
+}
+
+// ---- gloss ---------------------------------------------------------------------------------
+
+uint tl_gloss_encode(float gloss, uint bits)
+{
+    float g = gloss > 0.0 ? (gloss < 1.0 ? gloss : 1.0) : 0.0; // NaN -> 0, as in C
+    precise float q = g * float((1u << bits) - 1u);
+    precise float r = q + 0.5;
+    return uint(r);
+}
+
+float tl_gloss_decode(uint code, uint bits)
+{
+    uint maxv = (1u << bits) - 1u;
+    return float(min(code, maxv)) / float(maxv);
+}
+
+// Specular power 2^(1 + 11 g), the one gloss mapping (codec.h).
+float tl_gloss_to_specular_power(float gloss)
+{
+    return exp2(1.0 + 11.0 * clamp(gloss, 0.0, 1.0));
+}
+
+// ---- RT0 -----------------------------------------------------------------------------------
+
+// RGBA8: R = u[11:4], G = v[11:4], B = u[3:0] << 4 | v[3:0], A = gloss8 (bytes as uint).
+uvec4 tl_rt0_encode_rgba8(vec3 n, float gloss)
+{
+    uint code = tl_oct_encode_precise(n, 12u);
+    uint u = code & 0xFFFu, v = code >> 12;
+    return uvec4(u >> 4, v >> 4, ((u & 0xFu) << 4) | (v & 0xFu), tl_gloss_encode(gloss, 8u));
+}
+
+// Decodes bytes (as read back from an RGBA8 target: round(value * 255)).
+vec4 tl_rt0_decode_rgba8(uvec4 t)
+{
+    uint u = (t.r << 4) | (t.b >> 4);
+    uint v = (t.g << 4) | (t.b & 0xFu);
+    return vec4(tl_oct_decode(u | (v << 12), 12u), tl_gloss_decode(t.a, 8u));
+}
+
+uvec4 tl_unorm8_bytes(vec4 c)
+{
+    return uvec4(c * 255.0 + 0.5);
+}
+
+// RGB10A2: bits 0-9 u, 10-19 v, 20-29 gloss10, 30-31 flags.
+uint tl_rt0_encode_rgb10a2(vec3 n, float gloss, uint flags)
+{
+    return tl_oct_encode_precise(n, 10u) | (tl_gloss_encode(gloss, 10u) << 20) | ((flags & 3u) << 30);
+}
+
+vec4 tl_rt0_decode_rgb10a2(uint t)
+{
+    return vec4(tl_oct_decode(t & 0xFFFFFu, 10u), tl_gloss_decode((t >> 20) & 0x3FFu, 10u));
+}
+
+// ---- albedo --------------------------------------------------------------------------------
+
+float tl_clamp01(float v) { return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0; }
+
+// BT.601 full range (space 1) or YCoCg (space 2); chroma offset by 0.5.
+vec3 tl_rgb_to_luma_chroma(uint space, vec3 rgb)
+{
+    float r = tl_clamp01(rgb.r), g = tl_clamp01(rgb.g), b = tl_clamp01(rgb.b);
+    if (space == 2u) {
+        precise float y = (0.25 * r + 0.5 * g) + 0.25 * b;
+        precise float co = 0.5 * (r - b) + 0.5;
+        precise float cg = (0.5 * g - 0.25 * (r + b)) + 0.5;
+        return vec3(y, co, cg);
+    }
+    precise float y = (0.299 * r + 0.587 * g) + 0.114 * b;
+    precise float cb = (b - y) * (0.5 / 0.886) + 0.5;
+    precise float cr = (r - y) * (0.5 / 0.701) + 0.5;
+    return vec3(y, cb, cr);
+}
+
+vec3 tl_luma_chroma_to_rgb(uint space, vec3 ycc)
+{
+    precise float y = ycc.x;
+    precise float c1 = ycc.y - 0.5;
+    precise float c2 = ycc.z - 0.5;
+    precise float r, g, b;
+    if (space == 2u) {
+        precise float t = y - c2;
+        g = y + c2;
+        r = t + c1;
+        b = t - c1;
+    } else {
+        r = y + 1.402 * c2;
+        b = y + 1.772 * c1;
+        g = ((y - 0.299 * r) - 0.114 * b) / 0.587;
+    }
+    return vec3(tl_clamp01(r), tl_clamp01(g), tl_clamp01(b));
+}
+
+uint tl_chroma_parity(uvec2 p) { return (p.x + p.y) & 1u; }
+
+uint tl_unorm8(float v)
+{
+    precise float q = tl_clamp01(v) * 255.0;
+    precise float r = q + 0.5;
+    return uint(r);
+}
+
+// Two bytes: luma and the chroma selected by the pixel's parity.
+uvec2 tl_albedo_encode_pixel(uint space, vec3 rgb, uvec2 pixel)
+{
+    vec3 ycc = tl_rgb_to_luma_chroma(space, rgb);
+    return uvec2(tl_unorm8(ycc.x), tl_unorm8(tl_chroma_parity(pixel) == 0u ? ycc.y : ycc.z));
+}
+
+// Edge-directed weights of tl_albedo_missing_chroma (filter 3) from the centre luma byte and the
+// four neighbours' (luma, chroma) bytes; count = how many neighbours are usable (in order).
+float tl_albedo_edge_chroma(int luma, ivec4 nl, ivec4 nc, int count)
+{
+    if (count == 0) return 0.5;
+    const float threshold = (30.0 / 255.0) * 255.0;
+    precise float wsum = 0.0;
+    precise float csum = 0.0;
+    int closest = 0;
+    for (int i = 0; i < count; i++) {
+        int d = abs(nl[i] - luma);
+        int dc = abs(nl[closest] - luma);
+        if (d < dc) closest = i;
+        precise float wgt = 1.0 - float(d) / threshold;
+        if (wgt > 0.0) {
+            wsum += wgt;
+            csum += wgt * float(nc[i]);
+        }
+    }
+    if (wsum <= 0.0) return float(nc[closest]) / 255.0;
+    precise float den = wsum * 255.0;
+    return csum / den;
+}
+
+// ---- depth ---------------------------------------------------------------------------------
+
+// z_eye = b / (c * z_ndc - a), a = m[10], b = m[14], c = m[11]; reversed Z uses z_ndc = d.
+float tl_depth_linearize(float window_depth, float a, float b, float c, bool reversed)
+{
+    precise float z_ndc = reversed ? window_depth : 2.0 * window_depth - 1.0;
+    precise float den = c * z_ndc - a;
+    precise float z = b / den;
+    if (isinf(z) || isnan(z) || z > 0.0) return -3.4028234663852886e38;
+    return z;
+}
+
+// View-ray method: d_eye = (-(x_ndc + m8) / m0, -(y_ndc + m9) / m5, 1), position = z_eye * d_eye.
+vec3 tl_view_position(float z_eye, vec2 ndc, vec4 m0_m5_m8_m9)
+{
+    precise float dx = -(ndc.x + m0_m5_m8_m9.z) / m0_m5_m8_m9.x;
+    precise float dy = -(ndc.y + m0_m5_m8_m9.w) / m0_m5_m8_m9.y;
+    precise vec3 p = vec3(z_eye * dx, z_eye * dy, z_eye);
+    return p;
+}
+
+#endif

@@ -1,0 +1,42 @@
+// Pass 2: light volumes. One instanced draw per light type: TL_LIGHT_TYPE 1 point (sphere),
+// 2 spot (cone), 3 directional (full-screen triangle). Per-instance data in view space.
+#include "fullscreen.glsl"
+
+layout(location = 0) in vec3 a_position;           // unit volume mesh (sphere or cone)
+layout(location = 1) in vec4 i_position_radius;    // world
+layout(location = 2) in vec4 i_color;
+layout(location = 3) in vec4 i_direction_cos_outer; // world direction light travels
+layout(location = 4) in float i_cos_inner;
+
+uniform mat4 u_view;
+uniform mat4 u_view_proj;
+
+flat out vec4 f_position_radius; // view space
+flat out vec3 f_color;
+flat out vec4 f_direction_cos_outer; // view space
+flat out float f_cos_inner;
+
+void main()
+{
+    f_position_radius = vec4((u_view * vec4(i_position_radius.xyz, 1.0)).xyz, i_position_radius.w);
+    f_color = i_color.rgb;
+    f_direction_cos_outer = vec4(normalize(mat3(u_view) * i_direction_cos_outer.xyz), i_direction_cos_outer.w);
+    f_cos_inner = i_cos_inner;
+#if TL_LIGHT_TYPE == 3
+    gl_Position = vec4(tl_fullscreen_position(gl_VertexID), 0.0, 1.0);
+#elif TL_LIGHT_TYPE == 2
+    // Cone: apex at the light, axis +Z of the mesh along the direction; mesh z in [0,1] is scaled
+    // by the radius, xy by radius * tan(outer angle) (the mesh already contains the true cone).
+    vec3 w = normalize(i_direction_cos_outer.xyz);
+    vec3 a = abs(w.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
+    vec3 u = normalize(cross(a, w));
+    vec3 v = cross(w, u);
+    float c = clamp(i_direction_cos_outer.w, 0.05, 1.0);
+    float base = i_position_radius.w * sqrt(1.0 - c * c) / c;
+    vec3 world = i_position_radius.xyz + u * (a_position.x * base) + v * (a_position.y * base) +
+                 w * (a_position.z * i_position_radius.w);
+    gl_Position = u_view_proj * vec4(world, 1.0);
+#else
+    gl_Position = u_view_proj * vec4(i_position_radius.xyz + a_position * i_position_radius.w, 1.0);
+#endif
+}

@@ -1,0 +1,24 @@
+// Pass 4: exposure, ACES-fitted tone curve (Narkowicz 2015) in linear space, sRGB encoding, and
+// gamma-encoded luma in alpha for FXAA.
+in vec2 v_uv;
+uniform sampler2D u_hdr;
+uniform float u_exposure;
+layout(location = 0) out vec4 o_ldr;
+
+vec3 tl_aces(vec3 x)
+{
+    return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+
+float tl_encode_srgb(float c)
+{
+    return c <= 0.0031308 ? c * 12.92 : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+}
+
+void main()
+{
+    vec3 hdr = max(texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb, vec3(0.0)) * u_exposure;
+    vec3 l = tl_aces(hdr);
+    vec3 s = vec3(tl_encode_srgb(l.r), tl_encode_srgb(l.g), tl_encode_srgb(l.b));
+    o_ldr = vec4(s, dot(s, vec3(0.299, 0.587, 0.114)));
+}
