@@ -117,7 +117,7 @@ int main(int argc, char **argv)
     tl_renderer_desc rd = {0};
     tl_default_scene_desc sd = {0};
     uint32_t frames = 1;
-    int stats = 0, plan = 0, spots_set = 0;
+    int stats = 0, plan = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -154,7 +154,6 @@ int main(int argc, char **argv)
                 if (!parse_u32(v, &sd.point_lights)) return bad_usage("--lights wants a count", v);
             } else if (!strcmp(a, "--spots")) {
                 if (!parse_u32(v, &sd.spot_lights)) return bad_usage("--spots wants a count", v);
-                spots_set = 1;
             } else if (!strcmp(a, "--seed")) {
                 uint32_t s;
                 if (!parse_u32(v, &s)) return bad_usage("--seed wants a number", v);

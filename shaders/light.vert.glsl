@@ -22,7 +22,7 @@ void main()
     f_color = i_color.rgb;
     f_direction_cos_outer = vec4(normalize(mat3(u_view) * i_direction_cos_outer.xyz), i_direction_cos_outer.w);
     f_cos_inner = i_cos_inner;
-#if TL_LIGHT_TYPE == 3
+#if TL_LIGHT_TYPE == 3 || defined(TL_LIGHT_FULLSCREEN)
     gl_Position = vec4(tl_fullscreen_position(gl_VertexID), 0.0, 1.0);
 #elif TL_LIGHT_TYPE == 2
     // Cone: apex at the light, axis +Z of the mesh along the direction; mesh z in [0,1] is scaled

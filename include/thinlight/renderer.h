@@ -63,6 +63,9 @@ typedef struct tl_renderer_desc {
     float fxaa_edge_threshold_min;     /**< default 0.0833 (absolute, in gamma-encoded luma) */
     float fxaa_subpix;                 /**< default 0.75; a negative value means 0 */
     float exposure;                    /**< default 1; multiplies HDR colour before tone mapping */
+    int fullscreen_lights;             /**< 1: shade point and spot lights over the whole screen instead
+                                            of drawing their volumes (the reference the volume tests
+                                            compare against; costs every light the full screen) */
     tl_get_proc_address_fn get_proc_address; /**< required */
     void *get_proc_address_user;
     tl_allocator allocator;            /**< zeroed: malloc/free */
@@ -122,6 +125,13 @@ TL_API tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, 
 
 /** Renders one frame with `camera` (NULL: the scene's) and waits for it; stats may be NULL. */
 TL_API tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_frame_stats *stats);
+
+/**
+ * Runs the renderer's FXAA pass (with its preset and thresholds) on a caller image: RGBA8
+ * gamma-encoded, width x height of the renderer, rows bottom to top; luma is computed from RGB.
+ * `out` receives the result (alpha 255). Useful to anti-alias an image rendered elsewhere.
+ */
+TL_API tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *out, size_t size);
 
 /** Reads the final LDR image as RGBA8, rows bottom to top (GL order); size >= w*h*4. */
 TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t size);

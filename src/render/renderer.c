@@ -35,6 +35,7 @@ struct tl_renderer {
     tl__target targets[TL_TARGET_COUNT];
     GLuint fbo_gbuffer, fbo_lights, fbo_material, fbo_tonemap, fbo_output;
     GLuint prog_gbuffer, prog_material, prog_material_uv, prog_light[TL__LIGHT_KINDS], prog_tonemap, prog_fxaa;
+    GLuint prog_luma; /* RGB -> RGB + luma, for tl_renderer_apply_fxaa */
     GLuint sampler_linear;
 
     GLuint vao_scene, vbo_scene, ibo_scene;
@@ -132,9 +133,11 @@ static tl_result tl__build_programs(tl_renderer *r)
     static const char *const type_defs[TL__LIGHT_KINDS] = {"TL_LIGHT_TYPE=1", "TL_LIGHT_TYPE=2", "TL_LIGHT_TYPE=3"};
     static const char *const labels[TL__LIGHT_KINDS] = {"lights.point", "lights.spot", "lights.directional"};
     for (int k = 0; k < TL__LIGHT_KINDS; k++) {
-        const char *ldefs[] = {type_defs[k], rt0, spec};
-        if ((res = tl__build(r, labels[k], "light.vert.glsl", "light.frag.glsl", ldefs, 3, &r->prog_light[k]))) return res;
+        const char *ldefs[] = {type_defs[k], rt0, spec, "TL_LIGHT_FULLSCREEN"};
+        size_t nd = r->desc.fullscreen_lights ? 4 : 3;
+        if ((res = tl__build(r, labels[k], "light.vert.glsl", "light.frag.glsl", ldefs, nd, &r->prog_light[k]))) return res;
     }
+    if ((res = tl__build(r, "luma", "fullscreen.vert.glsl", "luma.frag.glsl", NULL, 0, &r->prog_luma))) return res;
     if ((res = tl__build(r, "tonemap", "fullscreen.vert.glsl", "tonemap.frag.glsl", NULL, 0, &r->prog_tonemap))) return res;
     const char *fdefs[2];
     size_t nf = 0;
@@ -338,7 +341,7 @@ void tl_renderer_destroy(tl_renderer *r)
     GLuint *fbos[] = {&r->fbo_gbuffer, &r->fbo_lights, &r->fbo_material, &r->fbo_tonemap, &r->fbo_output};
     for (size_t i = 0; i < sizeof fbos / sizeof fbos[0]; i++) tl__framebuffer_destroy(gl, fbos[i]);
     GLuint progs[] = {r->prog_gbuffer, r->prog_material, r->prog_material_uv, r->prog_light[0], r->prog_light[1],
-                      r->prog_light[2], r->prog_tonemap, r->prog_fxaa};
+                      r->prog_light[2], r->prog_tonemap, r->prog_fxaa, r->prog_luma};
     for (size_t i = 0; i < sizeof progs / sizeof progs[0]; i++)
         if (progs[i]) gl->DeleteProgram(progs[i]);
     if (r->vao_light[0]) gl->DeleteVertexArrays(TL__LIGHT_KINDS, r->vao_light);
@@ -629,6 +632,30 @@ static void tl__upload_instances(tl_renderer *r, const tl__view *v, size_t count
     }
 }
 
+static void tl__fxaa_pass(tl_renderer *r)
+{
+    const GladGLContext *gl = &r->gl;
+    GLsizei w = (GLsizei)r->desc.width, h = (GLsizei)r->desc.height;
+    gl->Viewport(0, 0, w, h);
+    if (r->desc.fxaa == TL_FXAA_OFF) {
+        gl->BlitNamedFramebuffer(r->fbo_tonemap, r->fbo_output, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        return;
+    }
+    GLuint p = r->prog_fxaa;
+    gl->BindFramebuffer(GL_FRAMEBUFFER, r->fbo_output);
+    gl->UseProgram(p);
+    gl->BindVertexArray(r->vao_light[2]);
+    gl->BindTextureUnit(0, r->targets[TL_TARGET_LDR].texture);
+    gl->BindSampler(0, r->sampler_linear);
+    gl->ProgramUniform1i(p, gl->GetUniformLocation(p, "u_ldr"), 0);
+    gl->ProgramUniform2f(p, gl->GetUniformLocation(p, "u_rcp_size"), 1.0f / (float)w, 1.0f / (float)h);
+    gl->ProgramUniform1f(p, gl->GetUniformLocation(p, "u_edge_threshold"), r->desc.fxaa_edge_threshold);
+    gl->ProgramUniform1f(p, gl->GetUniformLocation(p, "u_edge_threshold_min"), r->desc.fxaa_edge_threshold_min);
+    gl->ProgramUniform1f(p, gl->GetUniformLocation(p, "u_subpix"), r->desc.fxaa_subpix);
+    gl->DrawArrays(GL_TRIANGLES, 0, 3);
+    gl->BindSampler(0, 0);
+}
+
 static double tl__now_ms(void)
 {
     struct timespec t;
@@ -697,7 +724,7 @@ tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_frame_s
         gl->UseProgram(p);
         tl__set_gbuffer_read_uniforms(r, p, &v);
         gl->BindVertexArray(r->vao_light[k]);
-        if (k == 2) {
+        if (k == 2 || r->desc.fullscreen_lights) {
             gl->Disable(GL_DEPTH_TEST);
             gl->Disable(GL_CULL_FACE);
             gl->DrawArraysInstanced(GL_TRIANGLES, 0, 3, (GLsizei)counts[k]);
@@ -759,22 +786,7 @@ tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_frame_s
     /* 5: FXAA (or a plain copy when off) */
     tl__gl_debug_push(gl, "fxaa");
     tl__timer_begin(gl, &r->timers[TL_PASS_FXAA]);
-    if (r->desc.fxaa == TL_FXAA_OFF) {
-        gl->BlitNamedFramebuffer(r->fbo_tonemap, r->fbo_output, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    } else {
-        GLuint p = r->prog_fxaa;
-        gl->BindFramebuffer(GL_FRAMEBUFFER, r->fbo_output);
-        gl->UseProgram(p);
-        gl->BindTextureUnit(0, r->targets[TL_TARGET_LDR].texture);
-        gl->BindSampler(0, r->sampler_linear);
-        gl->ProgramUniform1i(p, gl->GetUniformLocation(p, "u_ldr"), 0);
-        gl->ProgramUniform2f(p, gl->GetUniformLocation(p, "u_rcp_size"), 1.0f / (float)w, 1.0f / (float)h);
-        gl->ProgramUniform1f(p, gl->GetUniformLocation(p, "u_edge_threshold"), r->desc.fxaa_edge_threshold);
-        gl->ProgramUniform1f(p, gl->GetUniformLocation(p, "u_edge_threshold_min"), r->desc.fxaa_edge_threshold_min);
-        gl->ProgramUniform1f(p, gl->GetUniformLocation(p, "u_subpix"), r->desc.fxaa_subpix);
-        gl->DrawArrays(GL_TRIANGLES, 0, 3);
-        gl->BindSampler(0, 0);
-    }
+    tl__fxaa_pass(r);
     tl__timer_end(gl, &r->timers[TL_PASS_FXAA]);
     tl__gl_debug_pop(gl);
 
@@ -805,6 +817,43 @@ tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_frame_s
 }
 
 /* ---- readback ------------------------------------------------------------------------------- */
+
+tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *out, size_t size)
+{
+    if (!r || !rgba || !out) return TL_ERROR_INVALID_ARGUMENT;
+    const GladGLContext *gl = &r->gl;
+    size_t need = (size_t)r->desc.width * r->desc.height * 4;
+    if (size < need) {
+        snprintf(r->error, sizeof r->error, "renderer: FXAA buffers of %zu bytes are too small (%zu needed)", size, need);
+        return TL_ERROR_LIMIT;
+    }
+    while (gl->GetError() != GL_NO_ERROR) {}
+    /* the image goes into HDR-sized scratch (the output target), luma is added into LDR */
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl->TextureSubImage2D(r->targets[TL_TARGET_OUTPUT].texture, 0, 0, 0, (GLsizei)r->desc.width,
+                          (GLsizei)r->desc.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    gl->Viewport(0, 0, (GLsizei)r->desc.width, (GLsizei)r->desc.height);
+    gl->Disable(GL_DEPTH_TEST);
+    gl->Disable(GL_BLEND);
+    gl->Disable(GL_CULL_FACE);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, r->fbo_tonemap);
+    gl->UseProgram(r->prog_luma);
+    gl->BindVertexArray(r->vao_light[2]);
+    gl->BindTextureUnit(0, r->targets[TL_TARGET_OUTPUT].texture);
+    gl->ProgramUniform1i(r->prog_luma, gl->GetUniformLocation(r->prog_luma, "u_image"), 0);
+    gl->DrawArrays(GL_TRIANGLES, 0, 3);
+    tl__fxaa_pass(r);
+    gl->BindVertexArray(0);
+    gl->UseProgram(0);
+    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    tl_result res = tl_renderer_read_output(r, out, size);
+    GLenum e = gl->GetError();
+    if (res == TL_OK && e != GL_NO_ERROR) {
+        snprintf(r->error, sizeof r->error, "renderer: %s in FXAA", tl__gl_error_string(e));
+        return TL_ERROR_GL;
+    }
+    return res;
+}
 
 tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t size)
 {
