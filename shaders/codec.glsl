@@ -12,10 +12,11 @@ float tl_sign_not_zero(float v)
     return (floatBitsToUint(v) >> 31) != 0u ? -1.0 : 1.0;
 }
 
+// Usable without sanitising: L1 norm in [2^-32, 2^60] (oct_core.h tl__oct_input_ok says why).
 bool tl_oct_input_ok(vec3 n)
 {
     precise float l1 = (abs(n.x) + abs(n.y)) + abs(n.z);
-    return l1 >= 8.673617379884035e-19 && l1 <= 1.152921504606847e18; // 2^-60, 2^60
+    return l1 >= 2.3283064365386963e-10 && l1 <= 1.152921504606847e18; // 2^-32, 2^60
 }
 
 void tl_normalize3(inout vec3 v)
@@ -123,16 +124,21 @@ uint tl_oct_encode_precise(vec3 n, uint bits)
     precise float qv = (p.y + 1.0) * half_max;
     uint u0 = min(uint(int(qu)), maxv - 1u);
     uint v0 = min(uint(int(qv)), maxv - 1u);
-    float cu0 = tl_oct_dequant(u0, maxv, inv_max), cu1 = tl_oct_dequant(u0 + 1u, maxv, inv_max);
-    float cv0 = tl_oct_dequant(v0, maxv, inv_max), cv1 = tl_oct_dequant(v0 + 1u, maxv, inv_max);
-    float best = tl_oct_candidate_error(v, cu0, cv0);
-    uint bu = u0, bv = v0;
-    float e = tl_oct_candidate_error(v, cu1, cv0);
-    if (e < best) { best = e; bu = u0 + 1u; bv = v0; }
-    e = tl_oct_candidate_error(v, cu0, cv1);
-    if (e < best) { best = e; bu = u0; bv = v0 + 1u; }
-    e = tl_oct_candidate_error(v, cu1, cv1);
-    if (e < best) { bu = u0 + 1u; bv = v0 + 1u; }
+    // Per component, a = the plain-rounded code (always u0 or u0 + 1), b = the other one.
+    uint ua = tl_oct_quant(p.x, half_max), va = tl_oct_quant(p.y, half_max);
+    uint ub = (2u * u0 + 1u) - ua, vb = (2u * v0 + 1u) - va;
+    float cua = tl_oct_dequant(ua, maxv, inv_max), cub = tl_oct_dequant(ub, maxv, inv_max);
+    float cva = tl_oct_dequant(va, maxv, inv_max), cvb = tl_oct_dequant(vb, maxv, inv_max);
+    // Fixed order, the plain-rounded candidate first; a later one wins only when strictly better
+    // (exact ties on the square's outer edge keep the input's zero sign).
+    float best = tl_oct_candidate_error(v, cua, cva);
+    uint bu = ua, bv = va;
+    float e = tl_oct_candidate_error(v, cub, cva);
+    if (e < best) { best = e; bu = ub; bv = va; }
+    e = tl_oct_candidate_error(v, cua, cvb);
+    if (e < best) { best = e; bu = ua; bv = vb; }
+    e = tl_oct_candidate_error(v, cub, cvb);
+    if (e < best) { bu = ub; bv = vb; }
     return bu | (bv << bits);
 }
 
@@ -163,10 +169,14 @@ float tl_gloss_decode(uint code, uint bits)
     return float(min(code, maxv)) / float(maxv);
 }
 
-// Specular power 2^(1 + 11 g), the one gloss mapping (codec.h).
+// Specular power 2^(1 + 11 g), the one gloss mapping (codec.h). The exponent is exact like C's
+// (NaN -> 0 as in tl__clamp01, which GLSL clamp() leaves undefined); exp2 itself is only as
+// accurate as the driver's (GLSL: 3 + 2|x| ULP), so this is the one function not bit-exact.
 float tl_gloss_to_specular_power(float gloss)
 {
-    return exp2(1.0 + 11.0 * clamp(gloss, 0.0, 1.0));
+    float g = gloss > 0.0 ? (gloss < 1.0 ? gloss : 1.0) : 0.0;
+    precise float e = 1.0 + 11.0 * g;
+    return exp2(e);
 }
 
 // ---- RT0 -----------------------------------------------------------------------------------
@@ -225,9 +235,9 @@ vec3 tl_rgb_to_luma_chroma(uint space, vec3 rgb)
 
 vec3 tl_luma_chroma_to_rgb(uint space, vec3 ycc)
 {
-    precise float y = ycc.x;
-    precise float c1 = ycc.y - 0.5;
-    precise float c2 = ycc.z - 0.5;
+    precise float y = isnan(ycc.x) ? 0.0 : ycc.x; // NaN: luma 0, neutral chroma, as in C
+    precise float c1 = (isnan(ycc.y) ? 0.5 : ycc.y) - 0.5;
+    precise float c2 = (isnan(ycc.z) ? 0.5 : ycc.z) - 0.5;
     precise float r, g, b;
     if (space == 2u) {
         precise float t = y - c2;
@@ -295,12 +305,22 @@ float tl_depth_linearize(float window_depth, float a, float b, float c, bool rev
 }
 
 // View-ray method: d_eye = (-(x_ndc + m8) / m0, -(y_ndc + m9) / m5, 1), position = z_eye * d_eye.
+// As in C: a NaN coordinate counts as the centre line, and z_eye * d saturates to +-FLT_MAX (z_eye
+// is -FLT_MAX at the infinite far plane, so the product overflows wherever |d| > 1).
+float tl_saturate_float(float v)
+{
+    return v > 3.4028234663852886e38 ? 3.4028234663852886e38 : (v < -3.4028234663852886e38 ? -3.4028234663852886e38 : v);
+}
+
 vec3 tl_view_position(float z_eye, vec2 ndc, vec4 m0_m5_m8_m9)
 {
-    precise float dx = -(ndc.x + m0_m5_m8_m9.z) / m0_m5_m8_m9.x;
-    precise float dy = -(ndc.y + m0_m5_m8_m9.w) / m0_m5_m8_m9.y;
-    precise vec3 p = vec3(z_eye * dx, z_eye * dy, z_eye);
-    return p;
+    float nx = isnan(ndc.x) ? 0.0 : ndc.x;
+    float ny = isnan(ndc.y) ? 0.0 : ndc.y;
+    precise float dx = -(nx + m0_m5_m8_m9.z) / m0_m5_m8_m9.x;
+    precise float dy = -(ny + m0_m5_m8_m9.w) / m0_m5_m8_m9.y;
+    precise float px = z_eye * dx;
+    precise float py = z_eye * dy;
+    return vec3(tl_saturate_float(px), tl_saturate_float(py), z_eye);
 }
 
 #endif

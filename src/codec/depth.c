@@ -15,6 +15,9 @@ const char *tl_depth_format_name(tl_depth_format format)
 
 static int tl__reversed(const tl_projection *p) { return p->format == TL_DEPTH_FORMAT_D32F_REVERSED; }
 
+/* +-Inf to +-FLT_MAX (finite values unchanged). */
+static float tl__saturate(float v) { return v > FLT_MAX ? FLT_MAX : v < -FLT_MAX ? -FLT_MAX : v; }
+
 tl_result tl_projection_perspective(tl_depth_format format, float fov_y, float aspect, float near_z, float far_z,
                                     tl_projection *out)
 {
@@ -105,10 +108,13 @@ void tl_view_position_from_depth(const tl_projection *proj, float x_ndc, float y
         return;
     }
     float z = tl_depth_linearize(proj, window_depth);
-    float dx = -(x_ndc + proj->m[8]) / proj->m[0];
-    float dy = -(y_ndc + proj->m[9]) / proj->m[5];
-    pos[0] = z * dx;
-    pos[1] = z * dy;
+    /* A NaN coordinate counts as the centre line. */
+    float dx = -((isnan(x_ndc) ? 0.0f : x_ndc) + proj->m[8]) / proj->m[0];
+    float dy = -((isnan(y_ndc) ? 0.0f : y_ndc) + proj->m[9]) / proj->m[5];
+    /* z is -FLT_MAX at (or beyond) the infinite far plane, so z * d overflows wherever |d| > 1
+     * (any ray off the centre of a wide frustum): saturate like z itself. */
+    pos[0] = tl__saturate(z * dx);
+    pos[1] = tl__saturate(z * dy);
     pos[2] = z;
 }
 

@@ -137,7 +137,7 @@ static inline void tl__v_store_xyz(float *p, __m128 x, __m128 y, __m128 z)
 static inline int tl__v_bad_mask(__m128 x, __m128 y, __m128 z)
 {
     __m128 l1 = _mm_add_ps(_mm_add_ps(tl__v_abs(x), tl__v_abs(y)), tl__v_abs(z));
-    __m128 ok = _mm_and_ps(_mm_cmpge_ps(l1, _mm_set1_ps(0x1.0p-60f)),
+    __m128 ok = _mm_and_ps(_mm_cmpge_ps(l1, _mm_set1_ps(0x1.0p-32f)),
                            _mm_cmple_ps(l1, _mm_set1_ps(0x1.0p60f)));
     return _mm_movemask_ps(ok) ^ 0xF;
 }
@@ -209,25 +209,30 @@ static void tl__oct_encode_block(const float *n, uint32_t *codes, uint32_t bits,
         __m128i u0 = _mm_or_si128(_mm_and_si128(gt, top), _mm_andnot_si128(gt, qu));
         gt = _mm_cmpgt_epi32(qv, top);
         __m128i v0 = _mm_or_si128(_mm_and_si128(gt, top), _mm_andnot_si128(gt, qv));
-        __m128i u1 = _mm_add_epi32(u0, ione), v1 = _mm_add_epi32(v0, ione);
-        __m128 cu0 = tl__v_dequant(u0, max, inv_max), cu1 = tl__v_dequant(u1, max, inv_max);
-        __m128 cv0 = tl__v_dequant(v0, max, inv_max), cv1 = tl__v_dequant(v1, max, inv_max);
-        __m128 best = tl__v_error(x, y, z, cu0, cv0);
-        __m128i bu = u0, bv = v0;
-        __m128 s = tl__v_error(x, y, z, cu1, cv0);
+        /* plain-rounded code first (see tl__oct_encode_precise_core), the other one second */
+        __m128 h = _mm_set1_ps(0.5f);
+        __m128i ua = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(_mm_add_ps(u, one), half_max), h));
+        __m128i va = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(_mm_add_ps(v, one), half_max), h));
+        __m128i ub = _mm_sub_epi32(_mm_add_epi32(_mm_add_epi32(u0, u0), ione), ua);
+        __m128i vb = _mm_sub_epi32(_mm_add_epi32(_mm_add_epi32(v0, v0), ione), va);
+        __m128 cua = tl__v_dequant(ua, max, inv_max), cub = tl__v_dequant(ub, max, inv_max);
+        __m128 cva = tl__v_dequant(va, max, inv_max), cvb = tl__v_dequant(vb, max, inv_max);
+        __m128 best = tl__v_error(x, y, z, cua, cva);
+        __m128i bu = ua, bv = va;
+        __m128 s = tl__v_error(x, y, z, cub, cva);
         __m128 m = _mm_cmplt_ps(s, best);
         best = tl__v_select(m, s, best);
-        bu = tl__vi_select(m, u1, bu);
-        bv = tl__vi_select(m, v0, bv);
-        s = tl__v_error(x, y, z, cu0, cv1);
+        bu = tl__vi_select(m, ub, bu);
+        bv = tl__vi_select(m, va, bv);
+        s = tl__v_error(x, y, z, cua, cvb);
         m = _mm_cmplt_ps(s, best);
         best = tl__v_select(m, s, best);
-        bu = tl__vi_select(m, u0, bu);
-        bv = tl__vi_select(m, v1, bv);
-        s = tl__v_error(x, y, z, cu1, cv1);
+        bu = tl__vi_select(m, ua, bu);
+        bv = tl__vi_select(m, vb, bv);
+        s = tl__v_error(x, y, z, cub, cvb);
         m = _mm_cmplt_ps(s, best);
-        bu = tl__vi_select(m, u1, bu);
-        bv = tl__vi_select(m, v1, bv);
+        bu = tl__vi_select(m, ub, bu);
+        bv = tl__vi_select(m, vb, bv);
         code = _mm_or_si128(bu, _mm_sll_epi32(bv, _mm_cvtsi32_si128((int)bits)));
     }
     _mm_storeu_si128((__m128i *)(void *)codes, code);

@@ -18,13 +18,16 @@ static inline uint32_t tl__oct_clamp_bits(uint32_t bits)
  * round trip stays exact on the square's outer edges. */
 static inline float tl__sign_not_zero(float v) { return copysignf(1.0f, v); }
 
-/* True when (x, y, z) can be used without sanitising: its L1 norm lies in [2^-60, 2^60]. This
+/* True when (x, y, z) can be used without sanitising: its L1 norm lies in [2^-32, 2^60]. This
  * rejects NaN, Inf and zero, and keeps the precise variant's squared errors clear of overflow
- * and underflow; anything else is sanitised to a unit vector first. */
+ * and underflow: a losing candidate's |n x c|^2 is at least |n|^2 (2^-17)^2 at 16 bits, which
+ * stays a normal float (> 2^-126) only for |n| above about 2^-46; below it, candidates' errors
+ * flush to equal denormals or zero and the choice degrades to the first candidate. Anything
+ * else is sanitised to a unit vector first. */
 static inline int tl__oct_input_ok(float x, float y, float z)
 {
     float l1 = (fabsf(x) + fabsf(y)) + fabsf(z);
-    return l1 >= 0x1.0p-60f && l1 <= 0x1.0p60f;
+    return l1 >= 0x1.0p-32f && l1 <= 0x1.0p60f;
 }
 
 static inline void tl__oct_project_raw(float x, float y, float z, float *pu, float *pv)
@@ -124,17 +127,23 @@ static inline uint32_t tl__oct_encode_precise_core(float x, float y, float z, ui
     uint32_t v0 = (uint32_t)(int32_t)((v + 1.0f) * half_max);
     u0 = u0 > max - 1u ? max - 1u : u0;
     v0 = v0 > max - 1u ? max - 1u : v0;
-    float cu0 = tl__oct_dequant(u0, max, inv_max), cu1 = tl__oct_dequant(u0 + 1u, max, inv_max);
-    float cv0 = tl__oct_dequant(v0, max, inv_max), cv1 = tl__oct_dequant(v0 + 1u, max, inv_max);
-    /* Candidates in a fixed order; a later one wins only when strictly better. */
-    float best = tl__oct_candidate_error(x, y, z, cu0, cv0);
-    uint32_t bu = u0, bv = v0;
-    float e = tl__oct_candidate_error(x, y, z, cu1, cv0);
-    if (e < best) { best = e; bu = u0 + 1u; bv = v0; }
-    e = tl__oct_candidate_error(x, y, z, cu0, cv1);
-    if (e < best) { best = e; bu = u0; bv = v0 + 1u; }
-    e = tl__oct_candidate_error(x, y, z, cu1, cv1);
-    if (e < best) { bu = u0 + 1u; bv = v0 + 1u; }
+    /* Per component, a = the plain-rounded code (always u0 or u0 + 1), b = the other one. */
+    uint32_t ua = tl__oct_quant(u, half_max), va = tl__oct_quant(v, half_max);
+    uint32_t ub = (2u * u0 + 1u) - ua, vb = (2u * v0 + 1u) - va;
+    float cua = tl__oct_dequant(ua, max, inv_max), cub = tl__oct_dequant(ub, max, inv_max);
+    float cva = tl__oct_dequant(va, max, inv_max), cvb = tl__oct_dequant(vb, max, inv_max);
+    /* Candidates in a fixed order, the plain-rounded one first; a later one wins only when
+     * strictly better. Exact ties happen where two codes are mirror images of one direction on
+     * the square's outer edge (they differ only in a zero's sign); the plain-rounded code keeps
+     * the sign the input had, so decode -> encode stays exact there. */
+    float best = tl__oct_candidate_error(x, y, z, cua, cva);
+    uint32_t bu = ua, bv = va;
+    float e = tl__oct_candidate_error(x, y, z, cub, cva);
+    if (e < best) { best = e; bu = ub; bv = va; }
+    e = tl__oct_candidate_error(x, y, z, cua, cvb);
+    if (e < best) { best = e; bu = ua; bv = vb; }
+    e = tl__oct_candidate_error(x, y, z, cub, cvb);
+    if (e < best) { bu = ub; bv = vb; }
     return bu | (bv << bits);
 }
 
