@@ -1,4 +1,4 @@
-// Lighting model shared by every mode (docs/lighting.md): Lambert diffuse and normalised
+// Lighting model shared by every mode (docs/renderer.md): Lambert diffuse and normalised
 // Blinn-Phong specular; light colours have pi folded in, so diffuse radiance = albedo * sum.
 
 #ifndef TL_LIGHTING_GLSL

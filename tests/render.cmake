@@ -8,7 +8,8 @@ if(TARGET thinlight AND THINLIGHT_WITH_OSMESA)
     light_volume_mixed_types_draw_calls
     fxaa_reduces_edge_gradient
     fxaa_flat_and_text_pattern_bounded
-    renderer_bad_input)
+    renderer_bad_input
+    default_scene_image_sanity)
   tl_add_test(test_render
     SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_render.c
     LIBS thinlight::thinlight

@@ -4,6 +4,7 @@
 
 #include "thinlight/context.h"
 #include "thinlight/renderer.h"
+#include "thinlight/scene.h"
 
 static tl_context *g_ctx;
 
@@ -358,6 +359,122 @@ static void fxaa_flat_and_text_pattern_bounded(void)
     tl_renderer_destroy(r);
 }
 
+/* ---- the built-in scene ------------------------------------------------------------------ */
+
+static int all_finite(tl_renderer *r, tl_target_id id, float *buf, size_t n, size_t *bad)
+{
+    if (tl_renderer_read_target(r, id, buf, n) != TL_OK) return 0; /* not allocated */
+    for (size_t i = 0; i < n; i++)
+        if (!isfinite(buf[i])) (*bad)++;
+    return 1;
+}
+
+static void default_scene_image_sanity(void)
+{
+    const uint32_t w = 640, h = 360;
+    TL_CHECK(ensure_context());
+    if (!g_ctx) return;
+    tl_scene *scene = NULL;
+    TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 64}, &scene) == TL_OK);
+    if (!scene) return;
+    tl_renderer *r = make_renderer(w, h, TL_DEPTH_FORMAT_D24, 0, TL_FXAA_29);
+    TL_CHECK(r != NULL);
+    if (!r) {
+        tl_scene_destroy(scene);
+        return;
+    }
+    TL_CHECK(tl_renderer_set_scene(r, scene) == TL_OK);
+    tl_frame_stats st;
+    TL_CHECK(tl_renderer_render(r, NULL, &st) == TL_OK);
+    size_t n = (size_t)w * h * 4;
+    float *buf = malloc(n * sizeof *buf), *before = malloc(n * sizeof *before), *after = malloc(n * sizeof *after);
+    /* no NaN or Inf in any target the frame allocated */
+    size_t checked = 0;
+    for (int t = 0; t < TL_TARGET_COUNT; t++) {
+        size_t bad = 0;
+        if (!all_finite(r, (tl_target_id)t, buf, n, &bad)) continue;
+        checked++;
+        if (bad) fprintf(stderr, "target %s: %zu non-finite values\n", tl_target_name((tl_target_id)t), bad);
+        TL_CHECK_EQ_U(bad, 0);
+    }
+    TL_CHECK(checked >= 6);
+    /* a non-trivial histogram of the final image */
+    uint8_t *img = malloc(n);
+    TL_CHECK(tl_renderer_read_output(r, img, n) == TL_OK);
+    size_t hist[256] = {0}, black = 0, white = 0;
+    double mean = 0;
+    for (size_t i = 0; i < n; i += 4) {
+        int l = (int)lround(luma8(img + i) * 255.0);
+        hist[l]++;
+        black += l <= 2;
+        white += l >= 253;
+        mean += l / 255.0;
+    }
+    mean /= (double)(n / 4);
+    size_t levels = 0;
+    for (int i = 0; i < 256; i++) levels += hist[i] > 0;
+    printf("default scene 640x360, 64 point + %u spot + %u directional lights drawn: mean luma %.3f, %zu levels, "
+           "%.1f %% black, %.1f %% white\n",
+           st.lights_drawn[TL_LIGHT_SPOT], st.lights_drawn[TL_LIGHT_DIRECTIONAL], mean, levels,
+           100.0 * (double)black / (double)(n / 4), 100.0 * (double)white / (double)(n / 4));
+    TL_CHECK(levels >= 100);
+    TL_CHECK(mean > 0.08 && mean < 0.8);
+    TL_CHECK(black * 4 < n / 4); /* under a quarter black */
+    TL_CHECK(white * 20 < n / 4); /* under 5 % clipped */
+
+    /* removing every light leaves only ambient and emissive: the light buffer is empty and no
+     * HDR pixel gets brighter */
+    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_HDR, before, n) == TL_OK);
+    TL_CHECK(tl_renderer_set_lights(r, NULL, 0) == TL_OK);
+    TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
+    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_LIGHT_DIFFUSE, buf, n) == TL_OK);
+    double lsum = 0;
+    for (size_t i = 0; i < n; i++) lsum += fabs(buf[i]);
+    TL_CHECK(lsum == 0.0);
+    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_HDR, after, n) == TL_OK);
+    double sum_before = 0, sum_after = 0;
+    size_t brighter = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (i % 4 == 3) continue;
+        sum_before += before[i];
+        sum_after += after[i];
+        if (after[i] > before[i] * (1.0 + 0x1.0p-10) + 1e-6) brighter++;
+    }
+    printf("HDR sum with lights %.1f, without %.1f\n", sum_before, sum_after);
+    TL_CHECK(sum_after < 0.5 * sum_before);
+    TL_CHECK_EQ_U(brighter, 0);
+
+    /* adding one bright light in front of the camera brightens the image, and no pixel darkens */
+    tl_light *more = malloc((scene->light_count + 1) * sizeof *more);
+    memcpy(more, scene->lights, scene->light_count * sizeof *more);
+    const tl_camera *c = &scene->camera;
+    float f[3] = {c->target[0] - c->position[0], c->target[1] - c->position[1], c->target[2] - c->position[2]};
+    float fl = sqrtf(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    more[scene->light_count] = (tl_light){TL_LIGHT_POINT,
+                                          {c->position[0] + 6 * f[0] / fl, c->position[1] + 6 * f[1] / fl,
+                                           c->position[2] + 6 * f[2] / fl},
+                                          {0, -1, 0}, {40, 40, 40}, 8.0f, 0, 0};
+    TL_CHECK(tl_renderer_set_lights(r, more, scene->light_count + 1) == TL_OK);
+    TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
+    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_HDR, after, n) == TL_OK);
+    size_t darker = 0, lit = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (i % 4 == 3) continue;
+        if (after[i] < before[i] * (1.0 - 0x1.0p-10) - 1e-6) darker++;
+        if (after[i] > before[i] * 1.05 + 1e-3) lit++;
+    }
+    printf("extra light: %zu values brighter by > 5 %%, %zu darker\n", lit, darker);
+    TL_CHECK(lit > n / 100);
+    TL_CHECK_EQ_U(darker, 0);
+    free(more);
+    free(img);
+    free(buf);
+    free(before);
+    free(after);
+    tl_renderer_destroy(r);
+    tl_scene_destroy(scene);
+}
+
 /* ---- bad input --------------------------------------------------------------------------- */
 
 static void renderer_bad_input(void)
@@ -394,6 +511,7 @@ static const tl_test_case cases[] = {
     {"fxaa_reduces_edge_gradient", fxaa_reduces_edge_gradient},
     {"fxaa_flat_and_text_pattern_bounded", fxaa_flat_and_text_pattern_bounded},
     {"renderer_bad_input", renderer_bad_input},
+    {"default_scene_image_sanity", default_scene_image_sanity},
 };
 
 int main(int argc, char **argv)
