@@ -117,7 +117,7 @@ int main(int argc, char **argv)
     tl_renderer_desc rd = {0};
     tl_default_scene_desc sd = {0};
     uint32_t frames = 1;
-    int stats = 0, plan = 0;
+    int stats = 0, plan = 0, zero_points = 0, zero_spots = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char *v = i + 1 < argc ? argv[i + 1] : NULL;
@@ -152,8 +152,10 @@ int main(int argc, char **argv)
                 }
             } else if (!strcmp(a, "--lights")) {
                 if (!parse_u32(v, &sd.point_lights)) return bad_usage("--lights wants a count", v);
+                zero_points = sd.point_lights == 0;
             } else if (!strcmp(a, "--spots")) {
                 if (!parse_u32(v, &sd.spot_lights)) return bad_usage("--spots wants a count", v);
+                zero_spots = sd.spot_lights == 0;
             } else if (!strcmp(a, "--seed")) {
                 uint32_t s;
                 if (!parse_u32(v, &s)) return bad_usage("--seed wants a number", v);
@@ -215,6 +217,15 @@ int main(int argc, char **argv)
         fprintf(stderr, "thinlight-render: building the default scene: %s\n", tl_result_string(res));
         return 1;
     }
+    /* In the scene descriptor zero means "default"; on the command line it means none. */
+    if (zero_points && !zero_spots && sd.spot_lights == 0) zero_spots = 1;
+    size_t kept = 0;
+    for (size_t i = 0; i < scene->light_count; i++) {
+        tl_light_type t = scene->lights[i].type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : scene->lights[i].type;
+        if ((t == TL_LIGHT_POINT && zero_points) || (t == TL_LIGHT_SPOT && zero_spots)) continue;
+        scene->lights[kept++] = scene->lights[i];
+    }
+    scene->light_count = kept;
     if (!rd.width) {
         rd.width = 1280;
         rd.height = 720;
