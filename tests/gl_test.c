@@ -4,43 +4,13 @@
 
 #include "gl/gl.h"
 #include "thinlight/context.h"
+#include "gl_fixture.h"
 #include "tl_test.h"
 
-typedef struct gl_env {
-    tl_context *ctx;
-    GladGLContext gl;
-} gl_env;
+typedef tl_gl_fixture gl_env;
 
-static GLADapiproc load_proc(void *user, const char *name)
-{
-    return (GLADapiproc)tl_context_get_proc_address((tl_context *)user, name);
-}
-
-/* A 4.5 core OSMesa context with glad loaded; false (and a failed check) if impossible. */
-static bool gl_open(gl_env *env)
-{
-    memset(env, 0, sizeof *env);
-    tl_result r = tl_context_create(&(tl_context_desc){.width = 64, .height = 64}, &env->ctx);
-    if (r != TL_OK) fprintf(stderr, "tl_context_create: %s\n", tl_context_last_error(NULL));
-    TL_CHECK(r == TL_OK);
-    if (r != TL_OK) return false;
-    char msg[256];
-    r = tl__gl_load(&env->gl, load_proc, env->ctx, msg, sizeof msg);
-    if (r != TL_OK) fprintf(stderr, "tl__gl_load: %s\n", msg);
-    TL_CHECK(r == TL_OK);
-    if (r != TL_OK) {
-        tl_context_destroy(env->ctx);
-        return false;
-    }
-    return true;
-}
-
-static void gl_close(gl_env *env)
-{
-    TL_CHECK_EQ_U(env->gl.GetError(), GL_NO_ERROR);
-    tl_context_destroy(env->ctx);
-    env->ctx = NULL;
-}
+static bool gl_open(gl_env *env) { return tl_gl_fixture_open(env, 64); }
+static void gl_close(gl_env *env) { tl_gl_fixture_close(env); }
 
 static void gl_context_osmesa_core45(void)
 {

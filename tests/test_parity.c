@@ -24,6 +24,7 @@
 #include "gl/gl.h"
 #include "thinlight/codec.h"
 #include "thinlight/context.h"
+#include "gl_fixture.h"
 #include "tl_test.h"
 
 /* ---- operations (must match the #if chain in the shader below) ------------------------------ */
@@ -121,8 +122,7 @@ static const char parity_shader[] =
 /* ---- GL plumbing ---------------------------------------------------------------------------- */
 
 typedef struct parity_env {
-    tl_context *ctx;
-    GladGLContext gl;
+    tl_gl_fixture f;
     GLuint buffers[3]; /* in_f, in_u, out */
 } parity_env;
 
@@ -131,36 +131,18 @@ typedef struct parity_params {
     float depth[4], ray[4];
 } parity_params;
 
-static GLADapiproc load_proc(void *user, const char *name)
-{
-    return (GLADapiproc)tl_context_get_proc_address((tl_context *)user, name);
-}
-
 static bool env_open(parity_env *env)
 {
     memset(env, 0, sizeof *env);
-    tl_result r = tl_context_create(&(tl_context_desc){.width = 16, .height = 16}, &env->ctx);
-    if (r != TL_OK) fprintf(stderr, "tl_context_create: %s\n", tl_context_last_error(NULL));
-    TL_CHECK(r == TL_OK);
-    if (r != TL_OK) return false;
-    char msg[256];
-    r = tl__gl_load(&env->gl, load_proc, env->ctx, msg, sizeof msg);
-    if (r != TL_OK) fprintf(stderr, "tl__gl_load: %s\n", msg);
-    TL_CHECK(r == TL_OK);
-    if (r != TL_OK) {
-        tl_context_destroy(env->ctx);
-        return false;
-    }
-    env->gl.CreateBuffers(3, env->buffers);
+    if (!tl_gl_fixture_open(&env->f, 16)) return false;
+    env->f.gl.CreateBuffers(3, env->buffers);
     return true;
 }
 
 static void env_close(parity_env *env)
 {
-    env->gl.DeleteBuffers(3, env->buffers);
-    TL_CHECK_EQ_U(env->gl.GetError(), GL_NO_ERROR);
-    tl_context_destroy(env->ctx);
-    env->ctx = NULL;
+    env->f.gl.DeleteBuffers(3, env->buffers);
+    tl_gl_fixture_close(&env->f);
 }
 
 /* Runs operation `op` over `count` items; `out` receives `out_words` uint32 words. Returns false
@@ -168,7 +150,7 @@ static void env_close(parity_env *env)
 static bool run_op(parity_env *env, int op, const parity_params *pp, uint32_t count, const float *in_f,
                    size_t nf, const uint32_t *in_u, size_t nu, uint32_t *out, size_t out_words)
 {
-    const GladGLContext *gl = &env->gl;
+    const GladGLContext *gl = &env->f.gl;
     char define[32];
     snprintf(define, sizeof define, "TL_PARITY_OP=%d", op);
     const char *defines[1] = {define};
