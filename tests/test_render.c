@@ -80,8 +80,21 @@ static void build_room(test_scene *t)
     t->obj[1] = (tl_object){(uint32_t)room_indices, (uint32_t)(ni - room_indices), 1, {0}, {-B, 0, -B}, {B, BH, B}};
     memcpy(t->obj[0].transform, id, sizeof id);
     memcpy(t->obj[1].transform, id, sizeof id);
-    t->mat[0] = (tl_material){{0.7f, 0.7f, 0.7f}, {0.04f, 0.04f, 0.04f}, 0.25f, {0, 0, 0}, 0, TL_NO_TEXTURE, TL_NO_TEXTURE, 0, "wall"};
-    t->mat[1] = (tl_material){{0.8f, 0.2f, 0.1f}, {0.05f, 0.05f, 0.05f}, 0.8f, {0, 0, 0}, 0, TL_NO_TEXTURE, TL_NO_TEXTURE, 0, "box"};
+    const tl_material plain = {.alpha = 1.0f, .albedo_texture = TL_NO_TEXTURE, .normal_texture = TL_NO_TEXTURE,
+                               .metallic_roughness_texture = TL_NO_TEXTURE, .emissive_texture = TL_NO_TEXTURE,
+                               .occlusion_texture = TL_NO_TEXTURE};
+    t->mat[0] = plain;
+    t->mat[1] = plain;
+    t->mat[0].albedo[0] = t->mat[0].albedo[1] = t->mat[0].albedo[2] = 0.7f;
+    t->mat[0].specular[0] = t->mat[0].specular[1] = t->mat[0].specular[2] = 0.04f;
+    t->mat[0].gloss = 0.25f;
+    snprintf(t->mat[0].name, sizeof t->mat[0].name, "wall");
+    t->mat[1].albedo[0] = 0.8f;
+    t->mat[1].albedo[1] = 0.2f;
+    t->mat[1].albedo[2] = 0.1f;
+    t->mat[1].specular[0] = t->mat[1].specular[1] = t->mat[1].specular[2] = 0.05f;
+    t->mat[1].gloss = 0.8f;
+    snprintf(t->mat[1].name, sizeof t->mat[1].name, "box");
     t->s.vertices = t->v;
     t->s.vertex_count = nv;
     t->s.indices = t->idx;

@@ -504,10 +504,10 @@ static void scene_bad_arguments(void)
     TL_CHECK_EQ_U(tl_scene_create_default(NULL, NULL), TL_ERROR_INVALID_ARGUMENT);
     TL_CHECK_EQ_U(tl_scene_create_default(&(tl_default_scene_desc){0}, NULL), TL_ERROR_INVALID_ARGUMENT);
     tl_scene_destroy(NULL);
-    tl_scene_features_get(NULL, NULL);
-    tl_scene_features f;
+    tl_scene_features(NULL, NULL);
+    tl_scene_feature_set f;
     memset(&f, 0xff, sizeof f);
-    tl_scene_features_get(NULL, &f);
+    tl_scene_features(NULL, &f);
     TL_CHECK(f.point_lights == 0 && f.triangle_count == 0 && f.has_textures == 0 && f.object_count == 0);
 }
 
@@ -515,8 +515,8 @@ static void scene_features(void)
 {
     tl_scene *s = make(NULL);
     if (!s) return;
-    tl_scene_features f;
-    tl_scene_features_get(s, &f);
+    tl_scene_feature_set f;
+    tl_scene_features(s, &f);
     TL_CHECK_EQ_U(f.point_lights, 64);
     TL_CHECK_EQ_U(f.spot_lights, 8);
     TL_CHECK_EQ_U(f.directional_lights, 1);
@@ -532,7 +532,7 @@ static void scene_features(void)
 
     s = make(&(tl_default_scene_desc){.no_directional = 1, .point_lights = 16, .spot_lights = 5, .detail = 1});
     if (!s) return;
-    tl_scene_features_get(s, &f);
+    tl_scene_features(s, &f);
     TL_CHECK_EQ_U(f.point_lights, 16);
     TL_CHECK_EQ_U(f.spot_lights, 5);
     TL_CHECK_EQ_U(f.directional_lights, 0);
@@ -550,7 +550,7 @@ static void scene_features(void)
     tl_light lights[2] = {{.type = TL_LIGHT_DEFAULT, .radius = 1}, {.type = TL_LIGHT_SPOT, .radius = 1}};
     tl_scene hand = {.indices = idx, .index_count = 3, .objects = objs, .object_count = 1, .materials = mats,
                      .material_count = 2, .lights = lights, .light_count = 2};
-    tl_scene_features_get(&hand, &f);
+    tl_scene_features(&hand, &f);
     TL_CHECK_EQ_U(f.point_lights, 1);
     TL_CHECK_EQ_U(f.spot_lights, 1);
     TL_CHECK(f.has_textures == 0 && f.has_alpha_mask == 1 && f.has_alpha_blend == 0);

@@ -36,6 +36,25 @@ typedef enum tl_result {
     TL_RESULT_COUNT_
 } tl_result;
 
+/** Optional allocator; a zeroed one means malloc/free. */
+typedef struct tl_allocator {
+    void *(*alloc)(size_t size, void *user); /**< returns NULL on failure */
+    void (*free)(void *ptr, void *user);
+    void *user;
+} tl_allocator;
+
+typedef enum tl_log_level {
+    TL_LOG_ERROR = 1, /**< the call fails; the message names the file, element or limit */
+    TL_LOG_WARNING,   /**< a fallback was used (a missing texture became a flat colour, ...) */
+    TL_LOG_INFO
+} tl_log_level;
+
+/** Optional logger: receives one line per message (no trailing newline). A zeroed logger is silent. */
+typedef struct tl_logger {
+    void (*fn)(void *user, tl_log_level level, const char *message);
+    void *user;
+} tl_logger;
+
 /** A static, human-readable description of a result code (never NULL). */
 TL_API const char *tl_result_string(tl_result result);
 

@@ -10,13 +10,6 @@
 extern "C" {
 #endif
 
-/** Optional allocator; a zeroed one means malloc/free. */
-typedef struct tl_allocator {
-    void *(*alloc)(size_t size, void *user); /**< returns NULL on failure */
-    void (*free)(void *ptr, void *user);
-    void *user;
-} tl_allocator;
-
 /** Interleaved vertex: 48 bytes. */
 typedef struct tl_vertex {
     float position[3];
@@ -36,15 +29,33 @@ typedef struct tl_texture {
 
 #define TL_NO_TEXTURE UINT32_MAX
 
-/** The renderer's material: Lambert diffuse + normalised Blinn-Phong/GGX specular. */
+/**
+ * The renderer's material: Lambert diffuse + normalised Blinn-Phong specular (docs/renderer.md).
+ * Textures are indices into the scene's textures or TL_NO_TEXTURE. Colour textures (albedo,
+ * emissive) hold sRGB-encoded values; data textures (normal, metallic-roughness, occlusion) linear.
+ *
+ * With TL_MATERIAL_METALLIC_ROUGHNESS the material is glTF's metallic-roughness model, converted
+ * per pixel by the one function of docs/gltf.md: base = albedo * albedo texture,
+ * metal = metallic * mr.b, rough = roughness * mr.g; diffuse = base * (1 - metal),
+ * specular = mix(0.04, base, metal), gloss = 1 - rough. Without the flag albedo, specular and gloss
+ * are used as they are (the loader has already converted constant factors).
+ */
 typedef struct tl_material {
-    float albedo[3];          /**< linear diffuse colour (multiplied by the texture, if any) */
+    float albedo[3];          /**< linear diffuse colour (glTF: base colour), times the texture */
     float specular[3];        /**< linear specular colour (F0); all zero = no specular */
     float gloss;              /**< [0,1], see tl_gloss_to_specular_power */
-    float emissive[3];        /**< linear emitted radiance */
+    float emissive[3];        /**< linear emitted radiance, times the emissive texture */
+    float alpha;              /**< opacity for ALPHA_MASK / ALPHA_BLEND, times the albedo texture's alpha */
     float alpha_cutoff;       /**< alpha-test threshold (alpha mode MASK) */
-    uint32_t albedo_texture;  /**< index into textures, or TL_NO_TEXTURE */
+    float metallic;           /**< TL_MATERIAL_METALLIC_ROUGHNESS only */
+    float roughness;          /**< TL_MATERIAL_METALLIC_ROUGHNESS only */
+    float normal_scale;       /**< scales the normal map's xy (glTF normalTexture.scale); 0 = 1 */
+    float occlusion_strength; /**< glTF occlusionTexture.strength, scales the ambient term; 0 = 1 */
+    uint32_t albedo_texture;  /**< RGBA: colour, alpha; or TL_NO_TEXTURE */
     uint32_t normal_texture;  /**< tangent-space normal map, or TL_NO_TEXTURE */
+    uint32_t metallic_roughness_texture; /**< G roughness, B metallic (glTF), or TL_NO_TEXTURE */
+    uint32_t emissive_texture;  /**< or TL_NO_TEXTURE */
+    uint32_t occlusion_texture; /**< R ambient occlusion, or TL_NO_TEXTURE */
     uint32_t flags;           /**< TL_MATERIAL_* */
     char name[64];
 } tl_material;
@@ -52,6 +63,7 @@ typedef struct tl_material {
 #define TL_MATERIAL_DOUBLE_SIDED 1u
 #define TL_MATERIAL_ALPHA_MASK 2u
 #define TL_MATERIAL_ALPHA_BLEND 4u
+#define TL_MATERIAL_METALLIC_ROUGHNESS 8u
 
 /** A drawable object: a range of the scene's index buffer with one material and a world transform. */
 typedef struct tl_object {
@@ -116,22 +128,27 @@ typedef struct tl_scene {
     tl_allocator allocator;
 } tl_scene;
 
-/** What a scene uses, for the frame planner (DESIGN.md section 4). */
-typedef struct tl_scene_features {
+/** What a scene uses, for the frame planner (DESIGN.md section 4). Only materials that some
+ *  non-empty object draws with count. */
+typedef struct tl_scene_feature_set {
     size_t point_lights;
     size_t spot_lights;
     size_t directional_lights;
-    int has_specular;     /**< some material has non-zero specular */
+    int has_specular;     /**< some material has non-zero specular (or is metallic-roughness) */
     int has_textures;     /**< some material samples a texture (UVs needed) */
     int has_normal_maps;  /**< tangents needed */
     int has_emissive;
     int has_alpha_mask;
     int has_alpha_blend;
+    int has_metallic_roughness; /**< per-pixel metallic-roughness conversion needed */
+    int has_occlusion;    /**< some material has an occlusion texture */
+    int has_double_sided;
     size_t triangle_count;
     size_t object_count;
-} tl_scene_features;
+} tl_scene_feature_set;
 
-TL_API void tl_scene_features_get(const tl_scene *scene, tl_scene_features *out);
+/** Fills *out with what `scene` uses; a NULL scene gives all zeros. */
+TL_API void tl_scene_features(const tl_scene *scene, tl_scene_feature_set *out);
 
 /** Parameters of the built-in scene; zero means the default. */
 typedef struct tl_default_scene_desc {

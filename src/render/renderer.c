@@ -61,9 +61,11 @@ struct tl_renderer {
     tl__timer timers[TL_PASS_COUNT];
 };
 
-static const char *const tl__pass_names[TL_PASS_COUNT] = {"gbuffer", "lights", "material", "tonemap", "fxaa"};
+static const char *const tl__pass_names[TL_PASS_COUNT] = {"depth-prepass", "gbuffer", "lights", "material",
+                                                          "forward", "transparent", "tonemap", "fxaa"};
 static const char *const tl__target_names[TL_TARGET_COUNT] = {
-    "depth", "rt0", "rt1", "light.diffuse", "light.specular", "hdr", "ldr", "output"};
+    "depth", "rt0", "rt1", "light.diffuse", "light.specular", "fat.position", "fat.normal", "fat.albedo",
+    "fat.material", "hdr", "ldr", "output"};
 
 const char *tl_pass_name(tl_pass pass) { return (unsigned)pass < TL_PASS_COUNT ? tl__pass_names[pass] : "unknown"; }
 const char *tl_target_name(tl_target_id t) { return (unsigned)t < TL_TARGET_COUNT ? tl__target_names[t] : "unknown"; }

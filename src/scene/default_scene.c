@@ -622,6 +622,10 @@ tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **
         mat->alpha_cutoff = 0.5f;
         mat->albedo_texture = def->texture >= 0 ? (uint32_t)def->texture : TL_NO_TEXTURE;
         mat->normal_texture = TL_NO_TEXTURE;
+        mat->metallic_roughness_texture = TL_NO_TEXTURE;
+        mat->emissive_texture = TL_NO_TEXTURE;
+        mat->occlusion_texture = TL_NO_TEXTURE;
+        mat->alpha = 1.0f;
         strncpy(mat->name, def->name, sizeof(mat->name) - 1);
     }
 

@@ -41,10 +41,10 @@ void tl_scene_destroy(tl_scene *scene)
 
 static int tl__nonzero3(const float v[3]) { return v[0] > 0.0f || v[1] > 0.0f || v[2] > 0.0f; }
 
-void tl_scene_features_get(const tl_scene *scene, tl_scene_features *out)
+void tl_scene_features(const tl_scene *scene, tl_scene_feature_set *out)
 {
     if (!out) return;
-    *out = (tl_scene_features){0};
+    *out = (tl_scene_feature_set){0};
     if (!scene) return;
 
     for (size_t i = 0; i < scene->light_count && scene->lights; i++) {
@@ -63,14 +63,21 @@ void tl_scene_features_get(const tl_scene *scene, tl_scene_features *out)
         const tl_object *o = &scene->objects[i];
         if (o->index_count == 0 || o->material >= scene->material_count || !scene->materials) continue;
         const tl_material *m = &scene->materials[o->material];
-        if (tl__nonzero3(m->specular)) out->has_specular = 1;
-        if (m->albedo_texture != TL_NO_TEXTURE && m->albedo_texture < scene->texture_count)
+        size_t nt = scene->textures ? scene->texture_count : 0;
+        int mr = (m->flags & TL_MATERIAL_METALLIC_ROUGHNESS) != 0;
+        if (tl__nonzero3(m->specular) || mr) out->has_specular = 1;
+        if (mr && m->metallic_roughness_texture < nt) out->has_metallic_roughness = 1;
+        if (m->albedo_texture < nt || m->emissive_texture < nt || m->occlusion_texture < nt ||
+            (mr && m->metallic_roughness_texture < nt))
             out->has_textures = 1;
-        if (m->normal_texture != TL_NO_TEXTURE && m->normal_texture < scene->texture_count) {
+        if (m->occlusion_texture < nt) out->has_occlusion = 1;
+        if (m->flags & TL_MATERIAL_DOUBLE_SIDED) out->has_double_sided = 1;
+        if (m->normal_texture < nt) {
             out->has_textures = 1;
             out->has_normal_maps = 1;
         }
-        if (tl__nonzero3(m->emissive)) out->has_emissive = 1;
+        if (tl__nonzero3(m->emissive) && (m->emissive_texture == TL_NO_TEXTURE || m->emissive_texture < nt))
+            out->has_emissive = 1;
         if (m->flags & TL_MATERIAL_ALPHA_MASK) out->has_alpha_mask = 1;
         if (m->flags & TL_MATERIAL_ALPHA_BLEND) out->has_alpha_blend = 1;
     }
