@@ -14,7 +14,8 @@
 static const char *const usage =
     "usage: thinlight-render SCENE|default -o OUT.png|OUT.exr [options]\n"
     "  --size WxH            image size (default 1280x720)\n"
-    "  --mode MODE           thin-lpp (default)\n"
+    "  --mode MODE           thin-lpp (default), thin-deferred, fat or forward\n"
+    "  --no-depth-prepass    forward mode without its depth pre-pass\n"
     "  --lights N            point lights of the built-in scene (default 64)\n"
     "  --spots N             spot lights (default lights/8)\n"
     "  --no-directional      leave out the directional light\n"
@@ -26,7 +27,7 @@ static const char *const usage =
     "  --exposure E          exposure before tone mapping (default 1)\n"
     "  --frames N            render N frames and report the last (default 1)\n"
     "  --stats               print per-pass GPU times and target bytes\n"
-    "  --print-plan          print the frame's passes and targets\n"
+    "  --print-plan          print the frame plan: passes, inputs, outputs, targets, programs\n"
     "  --dump-targets DIR    write every intermediate target as EXR into DIR\n"
     "  --help                this text\n"
     "An .exr output holds the HDR image before tone mapping; .png the final image.\n";
@@ -58,26 +59,19 @@ static const char *ends_with(const char *s, const char *suffix)
     return n >= m && strcmp(s + n - m, suffix) == 0 ? s + n - m : NULL;
 }
 
-static void print_plan(const tl_renderer_desc *d, const tl_frame_stats *st, const tl_scene *scene)
+static void print_plan(tl_renderer *r, const tl_frame_stats *st, const tl_scene *scene)
 {
-    size_t px = (size_t)d->width * d->height;
-    printf("frame plan (thin-lpp, %ux%u)\n", d->width, d->height);
-    printf("  1 gbuffer   reads: mesh                       writes: depth, rt0\n");
-    printf("  2 lights    reads: depth, rt0                 writes: light.diffuse%s\n",
-           d->light_buffer != TL_LIGHT_BUFFER_COMPACT ? ", light.specular" : " (A = specular luminance)");
-    printf("              draws: %u point (sphere volumes), %u spot (cone volumes), %u directional (full screen)\n",
+    tl_frame_plan plan;
+    if (tl_renderer_get_plan(r, &plan) != TL_OK) return;
+    size_t need = tl_frame_plan_format(&plan, NULL, 0);
+    char *text = malloc(need + 1);
+    if (!text) return;
+    tl_frame_plan_format(&plan, text, need + 1);
+    fputs(text, stdout);
+    free(text);
+    printf("light volumes drawn: %u point (spheres), %u spot (cones), %u directional (full screen)\n",
            st->lights_drawn[TL_LIGHT_POINT], st->lights_drawn[TL_LIGHT_SPOT], st->lights_drawn[TL_LIGHT_DIRECTIONAL]);
-    printf("  3 material  reads: light buffer, materials    writes: hdr (depth EQUAL)\n");
-    printf("  4 tonemap   reads: hdr                        writes: ldr (luma in alpha)\n");
-    printf("  5 fxaa      reads: ldr                        writes: output\n");
-    printf("  targets:\n");
-    for (int t = 0; t < TL_TARGET_COUNT; t++)
-        if (st->target_bytes[t])
-            printf("    %-15s %6.2f B/px %8.2f MiB\n", tl_target_name((tl_target_id)t), (double)st->target_bytes[t] / (double)px,
-                   (double)st->target_bytes[t] / 1048576.0);
-    printf("  G-buffer + light buffer: %.2f B/px; all targets: %.2f B/px\n",
-           (double)(st->gbuffer_bytes + st->light_buffer_bytes) / (double)px, (double)st->total_target_bytes / (double)px);
-    printf("  scene: %zu objects, %zu triangles, %zu lights\n", scene->object_count, scene->index_count / 3,
+    printf("scene: %zu objects, %zu triangles, %zu lights\n", scene->object_count, scene->index_count / 3,
            scene->light_count);
 }
 
@@ -93,8 +87,9 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         fprintf(stderr, "thinlight-render: out of memory\n");
         return 1;
     }
-    static const char *const names[TL_TARGET_COUNT] = {"depth", "rt0_normal_gloss", "rt1_albedo", "light_diffuse",
-                                                       "light_specular", "hdr", "ldr", "output"};
+    static const char *const names[TL_TARGET_COUNT] = {
+        "depth",        "rt0_normal_gloss", "rt1_albedo", "light_diffuse", "light_specular", "fat_position",
+        "fat_normal",   "fat_albedo",       "fat_material", "hdr",         "ldr",            "output"};
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         if (tl_renderer_read_target(r, (tl_target_id)t, buf, n) != TL_OK) continue; /* not allocated */
         char path[4096], err[512];
@@ -128,6 +123,8 @@ int main(int argc, char **argv)
             stats = 1;
         } else if (!strcmp(a, "--print-plan")) {
             plan = 1;
+        } else if (!strcmp(a, "--no-depth-prepass")) {
+            rd.forward_no_depth_prepass = 1;
         } else if (!strcmp(a, "--no-directional")) {
             sd.no_directional = 1;
         } else if (a[0] == '-' && strcmp(a, "-") != 0) {
@@ -146,10 +143,8 @@ int main(int argc, char **argv)
                 rd.width = w;
                 rd.height = h;
             } else if (!strcmp(a, "--mode")) {
-                if (strcmp(v, "thin-lpp") != 0) {
-                    fprintf(stderr, "thinlight-render: mode '%s' is not available yet (thin-lpp is)\n", v);
-                    return strcmp(v, "thin-deferred") && strcmp(v, "fat") && strcmp(v, "forward") ? 2 : 1;
-                }
+                if (tl_render_mode_from_name(v, &rd.mode) != TL_OK)
+                    return bad_usage("--mode wants thin-lpp, thin-deferred, fat or forward", v);
             } else if (!strcmp(a, "--lights")) {
                 if (!parse_u32(v, &sd.point_lights)) return bad_usage("--lights wants a count", v);
                 zero_points = sd.point_lights == 0;
@@ -261,12 +256,18 @@ int main(int argc, char **argv)
         }
     }
     if (frames > 1) fprintf(stderr, "\n");
-    if (!rc && plan) print_plan(&rd, &st, scene);
+    if (!rc && plan) print_plan(r, &st, scene);
     if (!rc && stats) {
         size_t px = (size_t)rd.width * rd.height;
         printf("%ux%u, %zu lights, %u objects drawn, %u draw calls\n", rd.width, rd.height, scene->light_count,
                st.objects_drawn, st.draw_calls);
-        for (int p = 0; p < TL_PASS_COUNT; p++) printf("  %-9s %8.2f ms\n", tl_pass_name((tl_pass)p), st.pass_ms[p]);
+        tl_frame_plan fp;
+        if (tl_renderer_get_plan(r, &fp) == TL_OK)
+            for (size_t i = 0; i < fp.pass_count; i++) {
+                tl_pass p = fp.passes[i].pass;
+                printf("  %-13s %8.2f ms %10llu fragments %8.2f MB moved (estimate)\n", tl_pass_name(p), st.pass_ms[p],
+                       (unsigned long long)st.pass_fragments[p], st.pass_bytes[p] * 1e-6);
+            }
         printf("  %-9s %8.2f ms GPU, %.2f ms wall\n", "frame", st.gpu_ms, st.cpu_ms);
         for (int t = 0; t < TL_TARGET_COUNT; t++)
             if (st.target_bytes[t])

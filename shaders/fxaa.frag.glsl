@@ -26,7 +26,7 @@ float tl_luma_at(vec2 uv, vec2 d) { return textureLod(u_ldr, uv + d * u_rcp_size
 
 void main()
 {
-    vec2 uv = gl_FragCoord.xy * u_rcp_size;
+    vec2 uv = v_uv; // not gl_FragCoord: the output may be a viewport inside a caller framebuffer
     vec4 center = textureLod(u_ldr, uv, 0.0);
     float lm = center.a;
     float ln = tl_luma_at(uv, vec2(0.0, 1.0)), ls = tl_luma_at(uv, vec2(0.0, -1.0));

@@ -1,21 +1,68 @@
-// Pass 1: thin G-buffer. RT0 = octahedral view-space normal + gloss (codec.glsl).
+// Pass 1: G-buffer. Outputs by permutation: TL_OUT_RT0 (octahedral normal + gloss), TL_OUT_RT1
+// (Y, checkerboard chroma, specular intensity), TL_OUT_FAT (full-float reference layout), TL_OUT_HDR
+// (deferred modes: emissive + ambient, which the light pass adds to). TL_DEPTH_ONLY writes depth.
 #include "codec.glsl"
+#include "lighting.glsl"
+#include "material.glsl"
 
-in vec3 v_normal;
-in vec2 v_uv;
-uniform float u_gloss;
-layout(location = 0) out vec4 o_rt0;
+uniform vec3 u_ambient;
+
+#ifdef TL_OUT_RT0
+layout(location = TL_OUT_RT0) out vec4 o_rt0;
+#endif
+#ifdef TL_OUT_RT1
+layout(location = TL_OUT_RT1) out vec4 o_rt1;
+#endif
+#ifdef TL_OUT_FAT
+layout(location = 0) out vec4 o_position;
+layout(location = 1) out vec4 o_normal;
+layout(location = 2) out vec4 o_albedo;
+#ifdef TL_OUT_FAT_MATERIAL
+layout(location = 3) out vec4 o_material;
+#endif
+#endif
+#ifdef TL_OUT_HDR
+layout(location = TL_OUT_HDR) out vec4 o_hdr;
+#endif
+
+float tl_linear_to_srgb1(float c)
+{
+    c = clamp(c, 0.0, 1.0);
+    return c <= 0.0031308 ? c * 12.92 : 1.055 * pow(c, 1.0 / 2.4) - 0.055;
+}
 
 void main()
 {
-    vec3 n = v_normal;
-    if (!gl_FrontFacing) n = -n; // double-sided surfaces face the viewer
+    tl_surface s = tl_material_surface();
+    if (tl_material_masked(s)) discard;
+#if defined(TL_OUT_RT0) || defined(TL_OUT_FAT)
+    vec3 n = tl_material_normal();
+#endif
+#ifdef TL_OUT_RT0
 #ifdef TL_RT0_RGB10A2
-    uint t = tl_rt0_encode_rgb10a2(n, u_gloss, 0u);
+    uint t = tl_rt0_encode_rgb10a2(n, s.gloss, 0u);
     o_rt0 = vec4(float(t & 1023u), float((t >> 10) & 1023u), float((t >> 20) & 1023u), float(t >> 30)) /
             vec4(1023.0, 1023.0, 1023.0, 3.0);
 #else
-    uvec4 b = tl_rt0_encode_rgba8(n, u_gloss);
-    o_rt0 = vec4(b) / 255.0;
+    o_rt0 = vec4(tl_rt0_encode_rgba8(n, s.gloss)) / 255.0;
+#endif
+#endif
+#ifdef TL_OUT_RT1
+    // albedo as sRGB-encoded YCbCr (the codec's domain); specular as sqrt of its luminance
+    vec3 srgb = vec3(tl_linear_to_srgb1(s.albedo.r), tl_linear_to_srgb1(s.albedo.g), tl_linear_to_srgb1(s.albedo.b));
+    uvec2 yc = tl_albedo_encode_pixel(1u, srgb, uvec2(gl_FragCoord.xy));
+    uint spec = tl_unorm8(sqrt(clamp(tl_luminance(s.specular), 0.0, 1.0)));
+    o_rt1 = vec4(float(yc.x), float(yc.y), float(spec), 0.0) / 255.0;
+#endif
+#ifdef TL_OUT_FAT
+    o_position = vec4(v_view_position, 1.0);
+    o_normal = vec4(n, s.gloss);
+    o_albedo = vec4(s.albedo, 1.0);
+#ifdef TL_OUT_FAT_MATERIAL
+    o_material = vec4(s.specular, 0.0);
+#endif
+#endif
+#ifdef TL_OUT_HDR
+    o_hdr = vec4(min(s.albedo * u_ambient * s.occlusion + s.emissive, vec3(65504.0)), 1.0);
 #endif
 }

@@ -1,8 +1,15 @@
-// Reading the thin G-buffer back in the light pass: depth -> view position, RT0 -> normal, gloss.
+// Reading the G-buffer back in the light pass. Thin: depth -> view position (view-ray method),
+// RT0 -> normal and gloss, RT1 -> albedo (edge-aware chroma reconstruction) and specular. Fat:
+// everything read as stored.
 #include "codec.glsl"
 
 uniform sampler2D u_depth;
 uniform sampler2D u_rt0;
+uniform sampler2D u_rt1;
+uniform sampler2D u_fat_position;
+uniform sampler2D u_fat_normal;
+uniform sampler2D u_fat_albedo;
+uniform sampler2D u_fat_material;
 uniform vec4 u_depth_params; // a = m[10], b = m[14], c = m[11], reversed (0/1)
 uniform vec4 u_ray_params;   // m[0], m[5], m[8], m[9]
 uniform vec2 u_inv_size;
@@ -29,4 +36,57 @@ bool tl_gbuffer_read(ivec2 px, out vec3 p, out vec3 n, out float gloss)
     n = ng.xyz;
     gloss = ng.w;
     return true;
+}
+
+float tl_srgb_to_linear1(float c)
+{
+    return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
+}
+
+// RT1: the pixel's luma and own chroma, the missing chroma from the 4 neighbours (which store it)
+// with the codec's edge-aware weights; neighbours outside the image are mirrored back in, as in
+// tl_albedo_reconstruct. Specular is stored as sqrt of its luminance (grey F0).
+void tl_rt1_read(ivec2 px, out vec3 albedo, out vec3 specular)
+{
+    ivec2 size = textureSize(u_rt1, 0);
+    uvec4 c = tl_unorm8_bytes(texelFetch(u_rt1, px, 0));
+    ivec2 offs[4] = ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1));
+    ivec4 nl = ivec4(0), nc = ivec4(0);
+    int count = 0;
+    for (int i = 0; i < 4; i++) {
+        ivec2 q = px + offs[i];
+        if (q.x < 0) q.x = 1;
+        if (q.y < 0) q.y = 1;
+        if (q.x >= size.x) q.x = size.x - 2;
+        if (q.y >= size.y) q.y = size.y - 2;
+        if (q.x < 0 || q.y < 0) continue;
+        uvec4 b = tl_unorm8_bytes(texelFetch(u_rt1, q, 0));
+        nl[count] = int(b.x);
+        nc[count] = int(b.y);
+        count++;
+    }
+    float missing = tl_albedo_edge_chroma(int(c.x), nl, nc, count);
+    float own = float(c.y) / 255.0;
+    bool even = tl_chroma_parity(uvec2(px)) == 0u;
+    vec3 srgb = tl_luma_chroma_to_rgb(1u, vec3(float(c.x) / 255.0, even ? own : missing, even ? missing : own));
+    albedo = vec3(tl_srgb_to_linear1(srgb.r), tl_srgb_to_linear1(srgb.g), tl_srgb_to_linear1(srgb.b));
+    float s = float(c.z) / 255.0;
+    specular = vec3(s * s);
+}
+
+bool tl_fat_read(ivec2 px, out vec3 p, out vec3 n, out float gloss, out vec3 albedo, out vec3 specular)
+{
+    vec4 pos = texelFetch(u_fat_position, px, 0);
+    p = pos.xyz;
+    vec4 ng = texelFetch(u_fat_normal, px, 0);
+    float l2 = dot(ng.xyz, ng.xyz);
+    n = l2 > 0.0 ? ng.xyz * inversesqrt(l2) : vec3(0.0, 0.0, 1.0);
+    gloss = ng.w;
+    albedo = texelFetch(u_fat_albedo, px, 0).rgb;
+#ifdef TL_SPECULAR_NONE
+    specular = vec3(0.0);
+#else
+    specular = texelFetch(u_fat_material, px, 0).rgb;
+#endif
+    return pos.w > 0.5;
 }

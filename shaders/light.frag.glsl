@@ -1,4 +1,6 @@
-// Pass 2: light accumulation into the FP16 light buffer (additive blending).
+// Pass 2: one light volume's fragments (additive blending). TL_LIGHT_ACCUM (thin-lpp) sums light
+// into the FP16 light buffer; TL_LIGHT_SHADE_THIN / TL_LIGHT_SHADE_FAT (deferred modes) read the
+// material from the G-buffer and add shaded radiance to HDR.
 #include "gbuffer_decode.glsl"
 #include "lighting.glsl"
 
@@ -7,25 +9,48 @@ flat in vec3 f_color;
 flat in vec4 f_direction_cos_outer;
 flat in float f_cos_inner;
 
+#ifdef TL_LIGHT_ACCUM
 layout(location = 0) out vec4 o_diffuse;
 #ifdef TL_SPECULAR_EXACT
 layout(location = 1) out vec4 o_specular;
 #endif
+#else
+layout(location = 0) out vec4 o_color;
+#endif
 
 void main()
 {
+    ivec2 px = ivec2(gl_FragCoord.xy);
     vec3 p, n;
     float gloss;
-    if (!tl_gbuffer_read(ivec2(gl_FragCoord.xy), p, n, gloss)) discard;
+#ifdef TL_LIGHT_SHADE_FAT
+    vec3 albedo, spec_color;
+    if (!tl_fat_read(px, p, n, gloss, albedo, spec_color)) discard;
+#else
+    if (!tl_gbuffer_read(px, p, n, gloss)) discard;
+#endif
     vec3 v = normalize(-p);
     vec2 t = tl_light_terms(TL_LIGHT_TYPE, p, n, v, tl_gloss_to_specular_power(gloss), f_position_radius.xyz,
                             f_position_radius.w, f_direction_cos_outer.xyz, f_cos_inner, f_direction_cos_outer.w);
     vec3 diffuse = f_color * t.x;
     vec3 specular = f_color * t.y;
-#ifdef TL_SPECULAR_EXACT
+#ifdef TL_LIGHT_ACCUM
+#if defined(TL_SPECULAR_EXACT)
     o_diffuse = vec4(diffuse, 0.0);
     o_specular = vec4(specular, 0.0);
-#else
+#elif defined(TL_SPECULAR_COMPACT)
     o_diffuse = vec4(diffuse, tl_luminance(specular));
+#else
+    o_diffuse = vec4(diffuse, 0.0);
+#endif
+#else
+#ifdef TL_LIGHT_SHADE_THIN
+    vec3 albedo, spec_color;
+    tl_rt1_read(px, albedo, spec_color);
+#endif
+#ifdef TL_SPECULAR_NONE
+    spec_color = vec3(0.0);
+#endif
+    o_color = vec4(min(albedo * diffuse + spec_color * specular, vec3(65504.0)), 0.0);
 #endif
 }

@@ -1,15 +1,10 @@
-// Pass 3: the second geometry pass applies materials to the accumulated light (depth EQUAL).
+// Pass 3 (thin-lpp): the second geometry pass applies materials to the accumulated light
+// (depth EQUAL). TL_NO_LIGHTS: no light buffer, ambient and emissive only.
 #include "lighting.glsl"
-
-in vec3 v_normal;
-in vec2 v_uv;
+#include "material.glsl"
 
 uniform sampler2D u_light_diffuse;
 uniform sampler2D u_light_specular;
-uniform sampler2D u_albedo_texture;
-uniform vec3 u_albedo;
-uniform vec3 u_specular;
-uniform vec3 u_emissive;
 uniform vec3 u_ambient;
 
 layout(location = 0) out vec4 o_color;
@@ -22,21 +17,21 @@ vec3 tl_finite(vec3 c) // FP16 sums of many bright lights can reach Inf: keep ta
 
 void main()
 {
+    tl_surface s = tl_material_surface();
+    if (tl_material_masked(s)) discard;
+    vec3 diffuse = vec3(0.0), specular = vec3(0.0);
+#ifndef TL_NO_LIGHTS
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 ld = texelFetch(u_light_diffuse, px, 0);
-    vec3 diffuse = tl_finite(ld.rgb);
-#ifdef TL_SPECULAR_EXACT
-    vec3 specular = tl_finite(texelFetch(u_light_specular, px, 0).rgb);
-#else
+    diffuse = tl_finite(ld.rgb);
+#if defined(TL_SPECULAR_EXACT)
+    specular = tl_finite(texelFetch(u_light_specular, px, 0).rgb);
+#elif defined(TL_SPECULAR_COMPACT)
     // Compact layout: specular colour follows the diffuse light's chromaticity.
     float lum = tl_luminance(diffuse);
-    vec3 specular = lum > 1e-8 ? diffuse * (min(ld.a, 65504.0) / lum) : vec3(0.0);
+    specular = lum > 1e-8 ? diffuse * (min(ld.a, 65504.0) / lum) : vec3(0.0);
 #endif
-    vec3 albedo = u_albedo;
-#ifdef TL_HAS_UV
-    vec3 t = texture(u_albedo_texture, v_uv).rgb; // sRGB texture: decoded to linear by the sampler
-    albedo *= t;
 #endif
-    vec3 c = albedo * (diffuse + u_ambient) + u_specular * specular + u_emissive;
+    vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + s.specular * specular + s.emissive;
     o_color = vec4(min(c, vec3(65504.0)), 1.0);
 }

@@ -17,7 +17,7 @@ float tl_encode_srgb(float c)
 
 void main()
 {
-    vec3 hdr = max(texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb, vec3(0.0)) * u_exposure;
+    vec3 hdr = max(textureLod(u_hdr, v_uv, 0.0).rgb, vec3(0.0)) * u_exposure;
     vec3 l = tl_aces(hdr);
     vec3 s = vec3(tl_encode_srgb(l.r), tl_encode_srgb(l.g), tl_encode_srgb(l.b));
     o_ldr = vec4(s, dot(s, vec3(0.299, 0.587, 0.114)));

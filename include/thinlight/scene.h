@@ -142,6 +142,7 @@ typedef struct tl_scene_feature_set {
     int has_alpha_blend;
     int has_metallic_roughness; /**< per-pixel metallic-roughness conversion needed */
     int has_occlusion;    /**< some material has an occlusion texture */
+    int has_emissive_texture; /**< some emissive material has an emissive texture */
     int has_double_sided;
     size_t triangle_count;
     size_t object_count;

@@ -1,0 +1,113 @@
+// Material evaluation shared by every geometry pass (G-buffer, material, forward, transparent).
+// Permutations (frame plan): TL_HAS_UV, TL_NORMAL_MAP, TL_MR_TEXTURE, TL_EMISSIVE_TEXTURE,
+// TL_OCCLUSION, TL_ALPHA_MASK; per-material switches are uniforms (u_texture_mask, u_material_flags).
+
+#ifndef TL_MATERIAL_GLSL
+#define TL_MATERIAL_GLSL
+
+uniform vec3 u_albedo;
+uniform vec3 u_specular;
+uniform float u_gloss;
+uniform vec3 u_emissive;
+uniform float u_alpha;
+uniform float u_alpha_cutoff;
+uniform float u_metallic;
+uniform float u_roughness;
+uniform float u_normal_scale;
+uniform float u_occlusion_strength;
+uniform int u_material_flags; // TL_MATERIAL_* of scene.h
+uniform int u_texture_mask;   // 1 albedo, 2 normal, 4 metallic-roughness, 8 emissive, 16 occlusion
+uniform sampler2D u_albedo_texture;    // unit 2, sRGB
+uniform sampler2D u_normal_texture;    // unit 3
+uniform sampler2D u_mr_texture;        // unit 4
+uniform sampler2D u_emissive_texture;  // unit 5, sRGB
+uniform sampler2D u_occlusion_texture; // unit 6
+
+in vec3 v_normal;
+in vec2 v_uv;
+in vec4 v_tangent;
+in vec3 v_view_position;
+
+struct tl_surface {
+    vec3 albedo;   // linear diffuse colour
+    vec3 specular; // F0
+    float gloss;
+    vec3 emissive;
+    float alpha;
+    float occlusion; // scales the ambient term
+};
+
+// The metallic-roughness conversion of scene.h / docs/gltf.md, per pixel.
+tl_surface tl_material_surface()
+{
+    tl_surface s;
+    vec4 base = vec4(u_albedo, u_alpha);
+#ifdef TL_HAS_UV
+    if ((u_texture_mask & 1) != 0) base *= texture(u_albedo_texture, v_uv);
+#endif
+    s.albedo = base.rgb;
+    s.alpha = base.a;
+    s.specular = u_specular;
+    s.gloss = u_gloss;
+#ifdef TL_MR_TEXTURE
+    if ((u_material_flags & 8) != 0) {
+        float metal = u_metallic, rough = u_roughness;
+        if ((u_texture_mask & 4) != 0) {
+            vec4 mr = texture(u_mr_texture, v_uv);
+            metal *= mr.b;
+            rough *= mr.g;
+        }
+        metal = clamp(metal, 0.0, 1.0);
+        s.specular = mix(vec3(0.04), base.rgb, metal);
+        s.albedo = base.rgb * (1.0 - metal);
+        s.gloss = clamp(1.0 - rough, 0.0, 1.0);
+    }
+#endif
+    s.emissive = u_emissive;
+#ifdef TL_EMISSIVE_TEXTURE
+    if ((u_texture_mask & 8) != 0) s.emissive *= texture(u_emissive_texture, v_uv).rgb;
+#endif
+    s.occlusion = 1.0;
+#ifdef TL_OCCLUSION
+    if ((u_texture_mask & 16) != 0)
+        s.occlusion = 1.0 + u_occlusion_strength * (texture(u_occlusion_texture, v_uv).r - 1.0);
+#endif
+    return s;
+}
+
+// Alpha test of MASK materials; true when the fragment is to be discarded.
+bool tl_material_masked(tl_surface s)
+{
+#ifdef TL_ALPHA_MASK
+    return (u_material_flags & 2) != 0 && s.alpha < u_alpha_cutoff;
+#else
+    return false;
+#endif
+}
+
+// View-space shading normal: the interpolated normal facing the viewer, perturbed by the normal map.
+vec3 tl_material_normal()
+{
+    vec3 n = v_normal;
+    float len2 = dot(n, n);
+    n = len2 > 1e-30 ? n * inversesqrt(len2) : vec3(0.0, 0.0, 1.0);
+    if (!gl_FrontFacing) n = -n; // double-sided surfaces face the viewer
+#ifdef TL_NORMAL_MAP
+    if ((u_texture_mask & 2) != 0) {
+        vec3 t = v_tangent.xyz - n * dot(n, v_tangent.xyz);
+        float tl2 = dot(t, t);
+        if (tl2 > 1e-20) {
+            t *= inversesqrt(tl2);
+            vec3 b = cross(n, t) * (v_tangent.w < 0.0 ? -1.0 : 1.0);
+            vec3 m = texture(u_normal_texture, v_uv).xyz * 2.0 - 1.0;
+            m.xy *= u_normal_scale;
+            vec3 p = t * m.x + b * m.y + n * m.z;
+            float pl2 = dot(p, p);
+            if (pl2 > 1e-20) n = p * inversesqrt(pl2);
+        }
+    }
+#endif
+    return n;
+}
+
+#endif
