@@ -15,17 +15,21 @@ uniform vec4 u_ray_params;   // m[0], m[5], m[8], m[9]
 uniform vec2 u_inv_size;
 uniform float u_clear_depth;
 
-// False for background pixels (depth at the clear value).
-bool tl_gbuffer_read(ivec2 px, out vec3 p, out vec3 n, out float gloss)
+// The view-space position from depth; false for background pixels (depth at the clear value).
+bool tl_gbuffer_position(ivec2 px, out vec3 p)
 {
     float d = texelFetch(u_depth, px, 0).r;
     p = vec3(0.0);
-    n = vec3(0.0, 0.0, 1.0);
-    gloss = 0.0;
     if (d == u_clear_depth) return false;
     float z = tl_depth_linearize(d, u_depth_params.x, u_depth_params.y, u_depth_params.z, u_depth_params.w > 0.5);
     vec2 ndc = (vec2(px) + 0.5) * u_inv_size * 2.0 - 1.0;
     p = tl_view_position(z, ndc, u_ray_params);
+    return true;
+}
+
+// RT0 -> view-space normal and gloss.
+void tl_gbuffer_normal_gloss(ivec2 px, out vec3 n, out float gloss)
+{
     vec4 t = texelFetch(u_rt0, px, 0);
 #ifdef TL_RT0_RGB10A2
     uvec4 q = uvec4(t * vec4(1023.0, 1023.0, 1023.0, 3.0) + 0.5);
@@ -35,7 +39,6 @@ bool tl_gbuffer_read(ivec2 px, out vec3 p, out vec3 n, out float gloss)
 #endif
     n = ng.xyz;
     gloss = ng.w;
-    return true;
 }
 
 float tl_srgb_to_linear1(float c)
@@ -74,10 +77,15 @@ void tl_rt1_read(ivec2 px, out vec3 albedo, out vec3 specular)
     specular = vec3(s * s);
 }
 
-bool tl_fat_read(ivec2 px, out vec3 p, out vec3 n, out float gloss, out vec3 albedo, out vec3 specular)
+bool tl_fat_position(ivec2 px, out vec3 p)
 {
     vec4 pos = texelFetch(u_fat_position, px, 0);
     p = pos.xyz;
+    return pos.w > 0.5;
+}
+
+void tl_fat_surface(ivec2 px, out vec3 n, out float gloss, out vec3 albedo, out vec3 specular)
+{
     vec4 ng = texelFetch(u_fat_normal, px, 0);
     float l2 = dot(ng.xyz, ng.xyz);
     n = l2 > 0.0 ? ng.xyz * inversesqrt(l2) : vec3(0.0, 0.0, 1.0);
@@ -88,5 +96,4 @@ bool tl_fat_read(ivec2 px, out vec3 p, out vec3 n, out float gloss, out vec3 alb
 #else
     specular = texelFetch(u_fat_material, px, 0).rgb;
 #endif
-    return pos.w > 0.5;
 }

@@ -25,9 +25,24 @@ void main()
     float gloss;
 #ifdef TL_LIGHT_SHADE_FAT
     vec3 albedo, spec_color;
-    if (!tl_fat_read(px, p, n, gloss, albedo, spec_color)) discard;
+    if (!tl_fat_position(px, p)) discard;
 #else
-    if (!tl_gbuffer_read(px, p, n, gloss)) discard;
+    if (!tl_gbuffer_position(px, p)) discard;
+#endif
+#if TL_LIGHT_TYPE != 3
+    // Out of the light's range (the volume is only a bound): skip the surface fetch and decode,
+    // and the blend, where the light adds exactly zero.
+    vec3 to_light = f_position_radius.xyz - p;
+    float d2 = dot(to_light, to_light);
+    if (d2 >= f_position_radius.w * f_position_radius.w) discard;
+#if TL_LIGHT_TYPE == 2
+    if (d2 > 0.0 && dot(-to_light, f_direction_cos_outer.xyz) <= f_direction_cos_outer.w * sqrt(d2)) discard;
+#endif
+#endif
+#ifdef TL_LIGHT_SHADE_FAT
+    tl_fat_surface(px, n, gloss, albedo, spec_color);
+#else
+    tl_gbuffer_normal_gloss(px, n, gloss);
 #endif
     vec3 v = normalize(-p);
     vec2 t = tl_light_terms(TL_LIGHT_TYPE, p, n, v, tl_gloss_to_specular_power(gloss), f_position_radius.xyz,
