@@ -5,6 +5,7 @@ if(TARGET thinlight AND THINLIGHT_WITH_OSMESA)
     plan_fat_layout_44_bytes
     plan_format_and_bad_input
     plan_allocations_match_renderer
+    plan_saving_same_image
     modes_match_fat_default_scene
     modes_match_fat_many_lights
     modes_transparent_materials

@@ -406,7 +406,48 @@ static void render_to_caller_framebuffer(void)
     tl_scene_destroy(s);
 }
 
+/* What planning saves: a scene without specular materials and without spot lights, planned and
+ * unplanned (tl_renderer_desc.no_planning): fewer bytes, fewer programs, the same image. */
+static void plan_saving_same_image(void)
+{
+    if (!ensure_context()) { tl_test_failures++; return; }
+    tl_scene *s = NULL;
+    TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 16, .detail = 1}, &s) == TL_OK);
+    if (!s) return;
+    for (size_t m = 0; m < s->material_count; m++) memset(s->materials[m].specular, 0, sizeof(float) * 3);
+    size_t kept = 0;
+    for (size_t i = 0; i < s->light_count; i++)
+        if (s->lights[i].type != TL_LIGHT_SPOT) s->lights[kept++] = s->lights[i];
+    s->light_count = kept;
+    const uint32_t w = 128, h = 72;
+    size_t n = (size_t)w * h * 4;
+    uint8_t *img[2] = {malloc(n), malloc(n)};
+    tl_frame_stats st[2];
+    for (int unplanned = 0; unplanned < 2; unplanned++) {
+        tl_renderer *r = NULL;
+        tl_renderer_desc d = {.width = w, .height = h, .get_proc_address = get_proc, .get_proc_address_user = g_ctx,
+                              .no_planning = unplanned};
+        TL_CHECK(tl_renderer_create(&d, &r, NULL, 0) == TL_OK);
+        if (!r) continue;
+        TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);
+        TL_CHECK(tl_renderer_render(r, NULL, &st[unplanned]) == TL_OK);
+        TL_CHECK(tl_renderer_read_output(r, img[unplanned], n) == TL_OK);
+        tl_renderer_destroy(r);
+    }
+    TL_CHECK_EQ_U(st[0].target_bytes[TL_TARGET_LIGHT_SPECULAR], 0);
+    TL_CHECK_EQ_U(st[1].target_bytes[TL_TARGET_LIGHT_SPECULAR], (size_t)8 * w * h);
+    TL_CHECK(st[0].total_target_bytes + (size_t)8 * w * h == st[1].total_target_bytes);
+    TL_CHECK(st[0].programs_compiled < st[1].programs_compiled);
+    size_t differ = 0;
+    for (size_t i = 0; i < n; i++) differ += img[0][i] != img[1][i];
+    TL_CHECK_EQ_U(differ, 0);
+    free(img[0]);
+    free(img[1]);
+    tl_scene_destroy(s);
+}
+
 static const tl_test_case cases[] = {
+    {"plan_saving_same_image", plan_saving_same_image},
     {"plan_rules_exhaustive", plan_rules_exhaustive},
     {"plan_fat_layout_44_bytes", plan_fat_layout_44_bytes},
     {"plan_format_and_bad_input", plan_format_and_bad_input},

@@ -83,6 +83,9 @@ typedef struct tl_renderer_desc {
     float fxaa_subpix;                 /**< default 0.75; a negative value means 0 */
     float exposure;                    /**< default 1; multiplies HDR colour before tone mapping */
     int forward_no_depth_prepass;      /**< forward mode: 1 leaves out the depth pre-pass (default: on) */
+    int no_planning;                   /**< 1: plan for every feature whatever the scene uses (all light
+                                            types, specular, textures, normal maps, alpha): shows what
+                                            planning saves */
     int fullscreen_lights;             /**< 1: shade point and spot lights over the whole screen instead
                                             of drawing their volumes (the reference the volume tests
                                             compare against; costs every light the full screen) */

@@ -189,8 +189,11 @@ tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *o
         snprintf(r->error, sizeof r->error, "renderer: FXAA buffers of %zu bytes are too small (%zu needed)", size, need);
         return TL_ERROR_LIMIT;
     }
-    if (!r->fbo_tonemap_ldr || !r->prog[TL_PASS_FXAA])
-        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: FXAA is off in this renderer");
+    if (!r->fbo_tonemap_ldr) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: FXAA is off in this renderer");
+    if (!r->prog[TL_PASS_FXAA] || !r->prog_luma) {
+        tl_result pres = tl__plan_programs(r);
+        if (pres != TL_OK) return pres;
+    }
     while (gl->GetError() != GL_NO_ERROR) {}
     /* the image goes into HDR-sized scratch (the output target), luma is added into LDR */
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
