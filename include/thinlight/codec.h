@@ -1,7 +1,12 @@
-/* thinlight codec: every encoding of the thin G-buffer, in pure C (no GL, no allocation, no global
- * state). This is the single source of truth; shaders/codec.glsl mirrors it line for line.
+/**
+ * @file thinlight/codec.h
+ * @brief Every encoding of the thin G-buffer, in pure C (no GL, no allocation, no global state).
  *
- * Conventions
+ * This is the single source of truth; shaders/codec.glsl mirrors it line for line and the parity
+ * tests demand identical bits. Link thinlight::codec (libthinlight-codec) alone to use it without
+ * any GL dependency; libthinlight contains it too.
+ *
+ * Conventions:
  * - Scalar functions take and return single values; batch functions (suffix _n) loop over caller
  *   arrays and give bit-identical results to the scalar ones.
  * - Bit budgets outside a function's documented range are clamped into it.
@@ -20,8 +25,9 @@ extern "C" {
  * Unit vectors
  * ------------------------------------------------------------------------------------------- */
 
-/** Smallest and largest bits per component of the octahedral and other 2-component encodings. */
+/** Smallest bits per component of the octahedral and other 2-component encodings. */
 #define TL_OCT_MIN_BITS 8u
+/** Largest bits per component of the octahedral and other 2-component encodings. */
 #define TL_OCT_MAX_BITS 16u
 
 /**
@@ -52,9 +58,11 @@ TL_API uint32_t tl_oct_encode_precise(const float n[3], uint32_t bits);
 /** Decodes an octahedral code into a unit vector. */
 TL_API void tl_oct_decode(uint32_t code, uint32_t bits, float n[3]);
 
-/** Batch forms: `n` holds `count` xyz triples, `codes` `count` codes. */
+/** Batch tl_oct_encode: `n` holds `count` xyz triples, `codes` receives `count` codes. */
 TL_API void tl_oct_encode_n(const float *n, uint32_t *codes, size_t count, uint32_t bits);
+/** Batch tl_oct_encode_precise: `n` holds `count` xyz triples, `codes` receives `count` codes. */
 TL_API void tl_oct_encode_precise_n(const float *n, uint32_t *codes, size_t count, uint32_t bits);
+/** Batch tl_oct_decode: `codes` holds `count` codes, `n` receives `count` xyz triples. */
 TL_API void tl_oct_decode_n(const uint32_t *codes, float *n, size_t count, uint32_t bits);
 
 /** Other 2-component unit-vector encodings, kept for comparison in the codec report. */
@@ -66,16 +74,19 @@ typedef enum tl_normal_encoding {
     TL_NORMAL_LAMBERT,         /**< Lambert azimuthal equal-area ("spheremap"); full sphere */
     TL_NORMAL_STEREOGRAPHIC,   /**< stereographic from the south pole; upper hemisphere only,
                                     lower-hemisphere inputs are clamped to the equator */
-    TL_NORMAL_ENCODING_COUNT_
+    TL_NORMAL_ENCODING_COUNT_  /**< number of values (not an encoding) */
 } tl_normal_encoding;
 
 /** Stable short name of an encoding ("oct", "oct-precise", "spherical", ...). */
 TL_API const char *tl_normal_encoding_name(tl_normal_encoding encoding);
 /** Encodes with any of the encodings above; same code layout as tl_oct_encode. */
 TL_API uint32_t tl_normal_encode(tl_normal_encoding encoding, const float n[3], uint32_t bits);
+/** Decodes a code of tl_normal_encode into a unit vector. */
 TL_API void tl_normal_decode(tl_normal_encoding encoding, uint32_t code, uint32_t bits, float n[3]);
+/** Batch tl_normal_encode: `count` xyz triples to `count` codes. */
 TL_API void tl_normal_encode_n(tl_normal_encoding encoding, const float *n, uint32_t *codes,
                                size_t count, uint32_t bits);
+/** Batch tl_normal_decode: `count` codes to `count` xyz triples. */
 TL_API void tl_normal_decode_n(tl_normal_encoding encoding, const uint32_t *codes, float *n,
                                size_t count, uint32_t bits);
 
@@ -83,7 +94,7 @@ TL_API void tl_normal_decode_n(tl_normal_encoding encoding, const uint32_t *code
  * Gloss
  * ------------------------------------------------------------------------------------------- */
 
-/** Gloss 0 is the roughest surface; gloss 1 the smoothest. */
+/* Gloss 0 is the roughest surface; gloss 1 the smoothest. */
 #define TL_GLOSS_MIN_POWER 2.0f    /**< Blinn-Phong exponent at gloss 0 */
 #define TL_GLOSS_MAX_POWER 4096.0f /**< Blinn-Phong exponent at gloss 1 */
 
@@ -103,6 +114,7 @@ TL_API float tl_gloss_to_ggx_alpha(float gloss);
 TL_API float tl_ggx_alpha_to_gloss(float alpha);
 /** Unsigned-normalised quantisation of gloss to `bits` (1..16): round(clamp(g) * (2^bits - 1)). */
 TL_API uint32_t tl_gloss_encode(float gloss, uint32_t bits);
+/** Inverse of tl_gloss_encode: code / (2^bits - 1), codes above 2^bits - 1 clamped. */
 TL_API float tl_gloss_decode(uint32_t code, uint32_t bits);
 
 /* ---------------------------------------------------------------------------------------------
@@ -115,8 +127,11 @@ TL_API float tl_gloss_decode(uint32_t code, uint32_t bits);
  * The texel is returned as bytes R, G, B, A.
  */
 TL_API void tl_rt0_encode_rgba8(const float n[3], float gloss, uint8_t texel[4]);
+/** Decodes an RGBA8 RT0 texel into a unit normal and gloss. */
 TL_API void tl_rt0_decode_rgba8(const uint8_t texel[4], float n[3], float *gloss);
+/** Batch tl_rt0_encode_rgba8: `count` xyz triples and glosses to `count` * 4 bytes. */
 TL_API void tl_rt0_encode_rgba8_n(const float *n, const float *gloss, uint8_t *texels, size_t count);
+/** Batch tl_rt0_decode_rgba8: `count` * 4 bytes to `count` xyz triples and glosses. */
 TL_API void tl_rt0_decode_rgba8_n(const uint8_t *texels, float *n, float *gloss, size_t count);
 
 /**
@@ -125,32 +140,39 @@ TL_API void tl_rt0_decode_rgba8_n(const uint8_t *texels, float *n, float *gloss,
  *   bits 0-9 u, 10-19 v, 20-29 gloss10, 30-31 flags.
  */
 TL_API uint32_t tl_rt0_encode_rgb10a2(const float n[3], float gloss, uint32_t flags);
+/** Decodes an RGB10A2 RT0 texel into a unit normal, gloss and the 2 flag bits. */
 TL_API void tl_rt0_decode_rgb10a2(uint32_t texel, float n[3], float *gloss, uint32_t *flags);
 
 /* ---------------------------------------------------------------------------------------------
  * Albedo: luma + checkerboarded chroma
  * ------------------------------------------------------------------------------------------- */
 
+/** How albedo is split into luma and two chroma channels. */
 typedef enum tl_color_space {
     TL_COLOR_SPACE_DEFAULT = 0, /**< = TL_COLOR_SPACE_YCBCR */
     TL_COLOR_SPACE_YCBCR,       /**< BT.601 full range: Y, Cb, Cr with 0.5 chroma offset */
     TL_COLOR_SPACE_YCOCG,       /**< Y = R/4 + G/2 + B/4, Co = (R - B)/2, Cg = G/2 - (R + B)/4 */
-    TL_COLOR_SPACE_COUNT_
+    TL_COLOR_SPACE_COUNT_       /**< number of values (not a colour space) */
 } tl_color_space;
 
+/** How the chroma a pixel does not store is rebuilt from its neighbours. */
 typedef enum tl_chroma_filter {
     TL_CHROMA_FILTER_DEFAULT = 0, /**< = TL_CHROMA_FILTER_EDGE */
     TL_CHROMA_FILTER_NEAREST,     /**< the left neighbour (or the first in-image neighbour) */
     TL_CHROMA_FILTER_BILINEAR,    /**< mean of the in-image 4-neighbours */
     TL_CHROMA_FILTER_EDGE,        /**< luma-similarity weights; the most similar neighbour when
                                        no neighbour is similar */
-    TL_CHROMA_FILTER_COUNT_
+    TL_CHROMA_FILTER_COUNT_       /**< number of values (not a filter) */
 } tl_chroma_filter;
 
 /** Luma difference (in [0,1] units) beyond which the edge filter ignores a neighbour. */
 #define TL_CHROMA_EDGE_THRESHOLD (30.0f / 255.0f)
 
+/** Stable short name of a colour space ("ycbcr", "ycocg"; DEFAULT gives its value's name,
+ *  "unknown" for values out of range). */
 TL_API const char *tl_color_space_name(tl_color_space space);
+/** Stable short name of a chroma filter ("nearest", "bilinear", "edge"; DEFAULT gives its
+ *  value's name, "unknown" for values out of range). */
 TL_API const char *tl_chroma_filter_name(tl_chroma_filter filter);
 
 /**
@@ -159,6 +181,7 @@ TL_API const char *tl_chroma_filter_name(tl_chroma_filter filter);
  * counts as 0. The inverse clamps its RGB output to [0,1].
  */
 TL_API void tl_rgb_to_luma_chroma(tl_color_space space, const float rgb[3], float ycc[3]);
+/** Inverse of tl_rgb_to_luma_chroma; the RGB output is clamped to [0,1]. */
 TL_API void tl_luma_chroma_to_rgb(tl_color_space space, const float ycc[3], float rgb[3]);
 
 /** Which chroma a pixel stores: 0 (Cb or Co) when (x + y) is even, 1 (Cr or Cg) when odd. */
@@ -189,21 +212,25 @@ TL_API float tl_albedo_missing_chroma(tl_chroma_filter filter, const uint8_t *yc
 
 /** sRGB transfer function (IEC 61966-2-1), exact piecewise form; input clamped to [0,1]. */
 TL_API float tl_srgb_to_linear(float c);
+/** Inverse sRGB transfer function (IEC 61966-2-1), exact piecewise form; input clamped to [0,1]. */
 TL_API float tl_linear_to_srgb(float c);
 
 /* ---------------------------------------------------------------------------------------------
  * Depth and position
  * ------------------------------------------------------------------------------------------- */
 
+/** How depth is stored, and which clip-space convention the projection uses. */
 typedef enum tl_depth_format {
     TL_DEPTH_FORMAT_DEFAULT = 0,   /**< = TL_DEPTH_FORMAT_D24 */
     TL_DEPTH_FORMAT_D24,           /**< 24-bit unorm window depth, GL [-1,1] clip range */
     TL_DEPTH_FORMAT_D32F,          /**< float window depth, GL [-1,1] clip range */
     TL_DEPTH_FORMAT_D32F_REVERSED, /**< float, reversed Z with a [0,1] clip range
                                         (glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE)) */
-    TL_DEPTH_FORMAT_COUNT_
+    TL_DEPTH_FORMAT_COUNT_         /**< number of values (not a format) */
 } tl_depth_format;
 
+/** Stable short name of a depth format ("d24", "d32f", "d32f-reversed"; DEFAULT gives its
+ *  value's name, "unknown" for values out of range). */
 TL_API const char *tl_depth_format_name(tl_depth_format format);
 
 /** A symmetric or off-centre perspective projection. far <= 0 or Inf means an infinite far plane. */
@@ -229,9 +256,14 @@ TL_API float tl_depth_window_from_distance(const tl_projection *proj, float dist
 /** Quantises a window depth for storage: D24 rounds to 24 bits (returned as code / (2^24 - 1)),
  *  D32F formats return it unchanged. NaN gives 1 (far) for standard, 0 for reversed Z. */
 TL_API float tl_depth_quantize(tl_depth_format format, float window_depth);
+/** 24-bit unorm code of a window depth: round(clamp(d, 0, 1) * (2^24 - 1)); NaN gives the far
+ *  plane's code. */
 TL_API uint32_t tl_depth_encode_d24(float window_depth);
+/** Window depth of a 24-bit code: code / (2^24 - 1), codes above 2^24 - 1 clamped. */
 TL_API float tl_depth_decode_d24(uint32_t code);
+/** Batch tl_depth_encode_d24 over `count` values. */
 TL_API void tl_depth_encode_d24_n(const float *window_depth, uint32_t *codes, size_t count);
+/** Batch tl_depth_decode_d24 over `count` values. */
 TL_API void tl_depth_decode_d24_n(const uint32_t *codes, float *window_depth, size_t count);
 
 /**
@@ -248,6 +280,8 @@ TL_API float tl_depth_linearize(const tl_projection *proj, float window_depth);
  */
 TL_API void tl_view_position_from_depth(const tl_projection *proj, float x_ndc, float y_ndc,
                                         float window_depth, float pos[3]);
+/** Batch tl_view_position_from_depth: `ndc_xy` holds `count` (x, y) pairs, `window_depth`
+ *  `count` depths, and `pos` receives `count` xyz triples. */
 TL_API void tl_view_position_from_depth_n(const tl_projection *proj, const float *ndc_xy,
                                           const float *window_depth, float *pos, size_t count);
 
@@ -255,6 +289,7 @@ TL_API void tl_view_position_from_depth_n(const tl_projection *proj, const float
  * Half float (light buffer)
  * ------------------------------------------------------------------------------------------- */
 
+/** Largest finite binary16 value; tl_half_from_float saturates to it. */
 #define TL_HALF_MAX 65504.0f
 
 /**
@@ -263,8 +298,11 @@ TL_API void tl_view_position_from_depth_n(const tl_projection *proj, const float
  * no Inf or NaN is ever stored in the light buffer.
  */
 TL_API uint16_t tl_half_from_float(float f);
+/** Float from IEEE binary16, exact (denormals included; Inf and NaN as stored). */
 TL_API float tl_half_to_float(uint16_t h);
+/** Batch tl_half_from_float over `count` values. */
 TL_API void tl_half_from_float_n(const float *f, uint16_t *h, size_t count);
+/** Batch tl_half_to_float over `count` values. */
 TL_API void tl_half_to_float_n(const uint16_t *h, float *f, size_t count);
 
 #ifdef __cplusplus

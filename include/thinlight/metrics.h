@@ -1,5 +1,10 @@
-/* thinlight metrics: error measures for vectors, colours and images, and running statistics.
- * Pure C: no GL, no allocation, no global state. Used by the tests, the reports and the demo. */
+/**
+ * @file thinlight/metrics.h
+ * @brief Error measures for vectors, colours and images, and running statistics.
+ *
+ * Pure C: no GL, no allocation, no global state (part of thinlight::codec). Used by the tests,
+ * the reports and the demo.
+ */
 #ifndef THINLIGHT_METRICS_H
 #define THINLIGHT_METRICS_H
 
@@ -45,21 +50,26 @@ TL_API double tl_relative_error(double a, double ref);
  * about 1.1 %) and are clamped to [min, max] of the values seen. */
 #define TL_STATS_OCTAVE_MIN (-64)  /**< smallest bin edge is 2^-64; smaller values (and 0) go in bin 0 */
 #define TL_STATS_OCTAVE_MAX 64     /**< largest bin edge is 2^64; larger values go in the last bin */
-#define TL_STATS_BINS_PER_OCTAVE 64
+#define TL_STATS_BINS_PER_OCTAVE 64 /**< histogram resolution: bins per doubling */
+/** Number of histogram bins: the log-spaced ones plus one below and one above. */
 #define TL_STATS_BINS ((TL_STATS_OCTAVE_MAX - TL_STATS_OCTAVE_MIN) * TL_STATS_BINS_PER_OCTAVE + 2)
 
+/** Running statistics of non-negative values; zero-initialised it is empty and ready (no
+ *  allocation: the histogram is inside, about 64 KiB). */
 typedef struct tl_stats {
-    uint64_t count;
-    uint64_t rejected;
-    double sum;
-    double min;
-    double max;
-    uint64_t bins[TL_STATS_BINS];
+    uint64_t count;               /**< values accepted */
+    uint64_t rejected;            /**< negative and NaN values seen (otherwise ignored) */
+    double sum;                   /**< sum of the accepted values */
+    double min;                   /**< smallest accepted value (0 when empty) */
+    double max;                   /**< largest accepted value (0 when empty) */
+    uint64_t bins[TL_STATS_BINS]; /**< log-spaced histogram of the accepted values */
 } tl_stats;
 
 /** Resets to empty (every field 0); a zero-initialised tl_stats is equally empty and ready. */
 TL_API void tl_stats_reset(tl_stats *s);
+/** Adds one value (negative or NaN: counted in `rejected` only). */
 TL_API void tl_stats_add(tl_stats *s, double value);
+/** Adds `count` values, as tl_stats_add one by one. */
 TL_API void tl_stats_add_n(tl_stats *s, const double *values, size_t count);
 /** Folds `other` into `s`. */
 TL_API void tl_stats_merge(tl_stats *s, const tl_stats *other);

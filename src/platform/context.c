@@ -37,6 +37,8 @@ static tl__context_config tl__context_desc_defaults(const tl_context_desc *desc)
         .debug = desc->debug,
         .visible = desc->visible,
         .title = desc->title ? desc->title : "thinlight",
+        .allocator = desc->allocator,
+        .logger = desc->logger,
     };
     return c;
 }
@@ -72,39 +74,52 @@ static void tl__read_strings(tl_context *ctx)
     }
 }
 
+/* Records why tl_context_create failed (thread-local) and hands it to the desc's logger. */
+#if defined(__GNUC__)
+__attribute__((format(printf, 3, 4)))
+#endif
+static tl_result tl__create_failed(const tl_context_desc *desc, tl_result r, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(tl__create_error, sizeof tl__create_error, fmt, ap);
+    va_end(ap);
+    if (desc && desc->logger.fn) desc->logger.fn(desc->logger.user, TL_LOG_ERROR, tl__create_error);
+    return r;
+}
+
+/* Hands a failure of a call on `ctx` (already in ctx->error) to its logger. */
+static inline tl_result tl__context_failed(tl_context *ctx, tl_result r)
+{
+    if (r != TL_OK && ctx->logger.fn) ctx->logger.fn(ctx->logger.user, TL_LOG_ERROR, ctx->error);
+    return r;
+}
+
 tl_result tl_context_create(const tl_context_desc *desc, tl_context **out)
 {
     tl__create_error[0] = '\0';
     if (out) *out = NULL;
-    if (!out) {
-        snprintf(tl__create_error, sizeof tl__create_error, "tl_context_create: NULL output");
-        return TL_ERROR_INVALID_ARGUMENT;
-    }
+    if (!out) return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: NULL output");
+    if (desc && !desc->allocator.alloc != !desc->allocator.free)
+        return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT,
+                                 "tl_context_create: the allocator needs both alloc and free, or neither");
     tl__context_config cfg = tl__context_desc_defaults(desc);
-    if ((unsigned)cfg.backend >= TL_CONTEXT_BACKEND_COUNT_) {
-        snprintf(tl__create_error, sizeof tl__create_error,
-                 "tl_context_create: unknown back end %d", (int)cfg.backend);
-        return TL_ERROR_INVALID_ARGUMENT;
-    }
+    if ((unsigned)cfg.backend >= TL_CONTEXT_BACKEND_COUNT_)
+        return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: unknown back end %d",
+                                 (int)cfg.backend);
     if (cfg.major < 3 || (cfg.major == 3 && cfg.minor < 3) || cfg.minor < 0 || cfg.major > 4 ||
-        cfg.minor > 9) {
-        snprintf(tl__create_error, sizeof tl__create_error,
-                 "tl_context_create: OpenGL %d.%d requested, core profiles are 3.3 to 4.6",
-                 cfg.major, cfg.minor);
-        return TL_ERROR_INVALID_ARGUMENT;
-    }
-    if (cfg.width > 65536 || cfg.height > 65536) {
-        snprintf(tl__create_error, sizeof tl__create_error,
-                 "tl_context_create: %ux%u is beyond any back end's limit", (unsigned)cfg.width,
-                 (unsigned)cfg.height);
-        return TL_ERROR_LIMIT;
-    }
+        cfg.minor > 9)
+        return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT,
+                                 "tl_context_create: OpenGL %d.%d requested, core profiles are 3.3 to 4.6",
+                                 cfg.major, cfg.minor);
+    if (cfg.width > 65536 || cfg.height > 65536)
+        return tl__create_failed(desc, TL_ERROR_LIMIT, "tl_context_create: %ux%u is beyond any back end's limit",
+                                 (unsigned)cfg.width, (unsigned)cfg.height);
 
-    tl_context *ctx = calloc(1, sizeof *ctx);
-    if (!ctx) {
-        snprintf(tl__create_error, sizeof tl__create_error, "tl_context_create: out of memory");
-        return TL_ERROR_OUT_OF_MEMORY;
-    }
+    tl_context *ctx = tl__alloc_zeroed(&cfg.allocator, sizeof *ctx);
+    if (!ctx) return tl__create_failed(desc, TL_ERROR_OUT_OF_MEMORY, "tl_context_create: out of memory");
+    ctx->allocator = cfg.allocator;
+    ctx->logger = cfg.logger;
     ctx->backend = cfg.backend;
     ctx->width = cfg.width;
     ctx->height = cfg.height;
@@ -130,10 +145,10 @@ tl_result tl_context_create(const tl_context_desc *desc, tl_context **out)
     default: break;
     }
     if (r != TL_OK) {
-        snprintf(tl__create_error, sizeof tl__create_error, "%s: %s",
-                 tl__backend_name(cfg.backend), ctx->error);
-        free(ctx);
-        return r;
+        char ctx_error[sizeof ctx->error];
+        memcpy(ctx_error, ctx->error, sizeof ctx_error);
+        tl__free(&cfg.allocator, ctx);
+        return tl__create_failed(desc, r, "%s: %s", tl__backend_name(cfg.backend), ctx_error);
     }
     tl__read_strings(ctx);
     *out = ctx;
@@ -154,10 +169,10 @@ tl_result tl_context_make_current(tl_context *ctx)
     ctx->error[0] = '\0';
     switch (ctx->backend) {
 #if defined(TL_HAVE_OSMESA)
-    case TL_CONTEXT_BACKEND_OSMESA: return tl__osmesa_make_current(ctx);
+    case TL_CONTEXT_BACKEND_OSMESA: return tl__context_failed(ctx, tl__osmesa_make_current(ctx));
 #endif
 #if defined(TL_HAVE_GLFW)
-    case TL_CONTEXT_BACKEND_GLFW: return tl__glfw_make_current(ctx);
+    case TL_CONTEXT_BACKEND_GLFW: return tl__context_failed(ctx, tl__glfw_make_current(ctx));
 #endif
     default: return TL_ERROR_UNSUPPORTED;
     }
@@ -182,7 +197,7 @@ tl_result tl_context_swap(tl_context *ctx)
     if (!ctx) return TL_ERROR_INVALID_ARGUMENT;
     ctx->error[0] = '\0';
 #if defined(TL_HAVE_GLFW)
-    if (ctx->backend == TL_CONTEXT_BACKEND_GLFW) return tl__glfw_swap(ctx);
+    if (ctx->backend == TL_CONTEXT_BACKEND_GLFW) return tl__context_failed(ctx, tl__glfw_swap(ctx));
 #endif
     return TL_OK; /* OSMesa renders straight into its buffer */
 }
@@ -199,7 +214,13 @@ void tl_context_destroy(tl_context *ctx)
 #endif
     default: break;
     }
-    free(ctx);
+    tl_allocator allocator = ctx->allocator;
+    tl__free(&allocator, ctx);
+}
+
+tl_gl_proc tl_context_proc_loader(void *ctx, const char *name)
+{
+    return tl_context_get_proc_address(ctx, name);
 }
 
 const char *tl_context_last_error(const tl_context *ctx)

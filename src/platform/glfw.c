@@ -55,7 +55,7 @@ tl_result tl__glfw_create(tl_context *ctx, const tl__context_config *cfg)
         tl__context_error(ctx, "could not create the mutex guarding glfwInit");
         return TL_ERROR_OUT_OF_MEMORY;
     }
-    tl__glfw *g = calloc(1, sizeof *g);
+    tl__glfw *g = tl__alloc_zeroed(&ctx->allocator, sizeof *g);
     if (!g) {
         tl__context_error(ctx, "out of memory");
         return TL_ERROR_OUT_OF_MEMORY;
@@ -65,7 +65,7 @@ tl_result tl__glfw_create(tl_context *ctx, const tl__context_config *cfg)
     if (tl__glfw_users == 0 && !glfwInit()) {
         tl__context_error(ctx, "glfwInit failed: %s", tl__glfw_error());
         mtx_unlock(&tl__glfw_lock);
-        free(g);
+        tl__free(&ctx->allocator, g);
         return TL_ERROR_GL;
     }
     tl__glfw_users++;
@@ -90,7 +90,7 @@ tl_result tl__glfw_create(tl_context *ctx, const tl__context_config *cfg)
                           first);
         if (--tl__glfw_users == 0) glfwTerminate();
         mtx_unlock(&tl__glfw_lock);
-        free(g);
+        tl__free(&ctx->allocator, g);
         return TL_ERROR_GL;
     }
     mtx_unlock(&tl__glfw_lock);
@@ -151,7 +151,7 @@ void tl__glfw_destroy(tl_context *ctx)
     if (!g) return;
     if (glfwGetCurrentContext() == g->window) glfwMakeContextCurrent(NULL);
     glfwDestroyWindow(g->window);
-    free(g);
+    tl__free(&ctx->allocator, g);
     ctx->impl = NULL;
     mtx_lock(&tl__glfw_lock);
     if (--tl__glfw_users == 0) glfwTerminate();

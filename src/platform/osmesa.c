@@ -1,4 +1,4 @@
-/* OSMesa back end: an off-screen core-profile context (llvmpipe) current on a malloc'd RGBA8
+/* OSMesa back end: an off-screen core-profile context (llvmpipe) current on an RGBA8
  * buffer. No display, no window system. */
 #include <stdlib.h>
 
@@ -29,7 +29,7 @@ static OSMesaContext tl__osmesa_try(int major, int minor)
 tl_result tl__osmesa_create(tl_context *ctx, const tl__context_config *cfg)
 {
     static const int fallbacks[][2] = TL__CONTEXT_FALLBACKS;
-    tl__osmesa *o = calloc(1, sizeof *o);
+    tl__osmesa *o = tl__alloc_zeroed(&ctx->allocator, sizeof *o);
     if (!o) {
         tl__context_error(ctx, "out of memory");
         return TL_ERROR_OUT_OF_MEMORY;
@@ -54,7 +54,7 @@ tl_result tl__osmesa_create(tl_context *ctx, const tl__context_config *cfg)
                               "OSMesaCreateContextAttribs refused OpenGL %d.%d core and every "
                               "core version down to 3.3 (is this Mesa built with llvmpipe?)",
                               cfg->major, cfg->minor);
-        free(o);
+        tl__free(&ctx->allocator, o);
         return TL_ERROR_GL;
     }
 
@@ -66,15 +66,15 @@ tl_result tl__osmesa_create(tl_context *ctx, const tl__context_config *cfg)
         tl__context_error(ctx, "%ux%u exceeds the OSMesa maximum of %dx%d", (unsigned)cfg->width,
                           (unsigned)cfg->height, (int)max_w, (int)max_h);
         OSMesaDestroyContext(o->context);
-        free(o);
+        tl__free(&ctx->allocator, o);
         return TL_ERROR_LIMIT;
     }
-    o->buffer = malloc((size_t)cfg->width * cfg->height * 4u);
+    o->buffer = tl__alloc(&ctx->allocator, (size_t)cfg->width * cfg->height * 4u);
     if (!o->buffer) {
         tl__context_error(ctx, "out of memory for a %ux%u RGBA8 buffer", (unsigned)cfg->width,
                           (unsigned)cfg->height);
         OSMesaDestroyContext(o->context);
-        free(o);
+        tl__free(&ctx->allocator, o);
         return TL_ERROR_OUT_OF_MEMORY;
     }
     if (!OSMesaMakeCurrent(o->context, o->buffer, GL_UNSIGNED_BYTE, (GLsizei)cfg->width,
@@ -82,8 +82,8 @@ tl_result tl__osmesa_create(tl_context *ctx, const tl__context_config *cfg)
         tl__context_error(ctx, "OSMesaMakeCurrent failed for a %ux%u RGBA8 buffer",
                           (unsigned)cfg->width, (unsigned)cfg->height);
         OSMesaDestroyContext(o->context);
-        free(o->buffer);
-        free(o);
+        tl__free(&ctx->allocator, o->buffer);
+        tl__free(&ctx->allocator, o);
         return TL_ERROR_GL;
     }
     ctx->impl = o;
@@ -120,7 +120,7 @@ void tl__osmesa_destroy(tl_context *ctx)
     if (!o) return;
     if (OSMesaGetCurrentContext() == o->context) OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
     OSMesaDestroyContext(o->context);
-    free(o->buffer);
-    free(o);
+    tl__free(&ctx->allocator, o->buffer);
+    tl__free(&ctx->allocator, o);
     ctx->impl = NULL;
 }

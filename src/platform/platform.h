@@ -4,6 +4,8 @@
 
 #include <stdarg.h>
 #include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
 
 #include "thinlight/context.h"
 
@@ -15,6 +17,8 @@ struct tl_context {
     char version[128];      /* GL_VERSION */
     char error[512];        /* last failure on this context */
     void *impl;             /* back-end state */
+    tl_allocator allocator; /* from the desc; zeroed: malloc/free */
+    tl_logger logger;       /* from the desc; zeroed: silent */
 };
 
 /* Descriptor with defaults resolved (tl__context_desc_defaults). */
@@ -24,6 +28,8 @@ typedef struct tl__context_config {
     int major, minor;
     bool exact_version, debug, visible;
     const char *title;
+    tl_allocator allocator;
+    tl_logger logger;
 } tl__context_config;
 
 /* Core versions tried, best first, after the requested one (unless exact_version). */
@@ -38,6 +44,26 @@ static inline void tl__context_error(tl_context *ctx, const char *fmt, ...)
     va_start(ap, fmt);
     vsnprintf(ctx->error, sizeof ctx->error, fmt, ap);
     va_end(ap);
+}
+
+/* Allocation through an allocator (zeroed: malloc/free). tl__alloc_zeroed clears the memory. */
+static inline void *tl__alloc(const tl_allocator *a, size_t size)
+{
+    return a->alloc ? a->alloc(size, a->user) : malloc(size);
+}
+static inline void *tl__alloc_zeroed(const tl_allocator *a, size_t size)
+{
+    void *p = tl__alloc(a, size);
+    if (p) memset(p, 0, size);
+    return p;
+}
+static inline void tl__free(const tl_allocator *a, void *ptr)
+{
+    if (!ptr) return;
+    if (a->free)
+        a->free(ptr, a->user);
+    else
+        free(ptr);
 }
 
 /* Each back end: create fills ctx->impl, major/minor and makes the context current; on failure it
