@@ -1,6 +1,9 @@
-/* thinlight scene: what the renderer draws. A plain CPU-side description (arrays and counts, as
- * cgltf does) that the built-in generator and the glTF loader both fill; the renderer uploads it.
- * Everything a scene owns is freed by tl_scene_destroy. */
+/**
+ * @file thinlight/scene.h
+ * @brief What the renderer draws: a plain CPU-side description (arrays and counts, as cgltf
+ * does) that the built-in generator and the glTF loader both fill; the renderer uploads it.
+ * Everything a scene owns is freed by tl_scene_destroy().
+ */
 #ifndef THINLIGHT_SCENE_H
 #define THINLIGHT_SCENE_H
 
@@ -12,21 +15,22 @@ extern "C" {
 
 /** Interleaved vertex: 48 bytes. */
 typedef struct tl_vertex {
-    float position[3];
-    float normal[3];
-    float uv[2];
+    float position[3]; /**< object space */
+    float normal[3];   /**< object space, unit */
+    float uv[2];       /**< texture coordinates, (0,0) at the image's top-left (glTF) */
     float tangent[4]; /**< xyz unit tangent along +u, w = +-1 with bitangent = w * cross(normal, xyz)
                            along +v; may be zero when the object has no normal map */
 } tl_vertex;
 
 /** An RGBA8 texture; albedo textures hold sRGB-encoded colour. */
 typedef struct tl_texture {
-    uint32_t width;
-    uint32_t height;
+    uint32_t width;  /**< pixels, 1..16384 */
+    uint32_t height; /**< pixels, 1..16384 */
     uint8_t *rgba; /**< width * height * 4 bytes, rows top to bottom */
-    char name[64];
+    char name[64];   /**< for debug labels and messages, NUL-terminated */
 } tl_texture;
 
+/** A texture index meaning "no texture". */
 #define TL_NO_TEXTURE UINT32_MAX
 
 /**
@@ -57,30 +61,35 @@ typedef struct tl_material {
     uint32_t emissive_texture;  /**< or TL_NO_TEXTURE */
     uint32_t occlusion_texture; /**< R ambient occlusion, or TL_NO_TEXTURE */
     uint32_t flags;           /**< TL_MATERIAL_* */
-    char name[64];
+    char name[64];            /**< for messages, NUL-terminated */
 } tl_material;
 
+/** Material flag: no back-face culling; back faces are shaded with the flipped normal. */
 #define TL_MATERIAL_DOUBLE_SIDED 1u
+/** Material flag: alpha test against alpha_cutoff (opaque passes discard below it). */
 #define TL_MATERIAL_ALPHA_MASK 2u
+/** Material flag: alpha-blended, drawn forward-lit after the opaque frame, far to near. */
 #define TL_MATERIAL_ALPHA_BLEND 4u
+/** Material flag: glTF metallic-roughness, converted per pixel (see tl_material). */
 #define TL_MATERIAL_METALLIC_ROUGHNESS 8u
 
 /** A drawable object: a range of the scene's index buffer with one material and a world transform. */
 typedef struct tl_object {
-    uint32_t first_index;
-    uint32_t index_count;
-    uint32_t material;
+    uint32_t first_index;  /**< first index in tl_scene.indices */
+    uint32_t index_count;  /**< a multiple of 3 */
+    uint32_t material;     /**< index into tl_scene.materials */
     float transform[16];   /**< column-major object-to-world */
-    float bounds_min[3];   /**< world-space axis-aligned bounds */
-    float bounds_max[3];
+    float bounds_min[3];   /**< world-space axis-aligned bounds (culling, light lists) */
+    float bounds_max[3];   /**< world-space axis-aligned bounds */
 } tl_object;
 
+/** Kinds of light; each is drawn as its own instanced light volume. */
 typedef enum tl_light_type {
     TL_LIGHT_DEFAULT = 0, /**< = TL_LIGHT_POINT */
-    TL_LIGHT_POINT,
-    TL_LIGHT_SPOT,
-    TL_LIGHT_DIRECTIONAL,
-    TL_LIGHT_TYPE_COUNT_
+    TL_LIGHT_POINT,       /**< sphere of influence of `radius` */
+    TL_LIGHT_SPOT,        /**< cone of length `radius` between cos_inner and cos_outer */
+    TL_LIGHT_DIRECTIONAL, /**< no position, no range: a full-screen pass */
+    TL_LIGHT_TYPE_COUNT_  /**< number of values */
 } tl_light_type;
 
 /**
@@ -90,7 +99,7 @@ typedef enum tl_light_type {
  * the fields a type does not use at zero.
  */
 typedef struct tl_light {
-    tl_light_type type;
+    tl_light_type type;  /**< point, spot or directional */
     float position[3];   /**< world space (point, spot) */
     float direction[3];  /**< unit, the direction light travels (spot, directional) */
     float color[3];      /**< linear colour times intensity */
@@ -99,53 +108,55 @@ typedef struct tl_light {
     float cos_outer;     /**< spot: zero outside this cone; cos_outer < cos_inner */
 } tl_light;
 
+/** A perspective camera looking from position at target. */
 typedef struct tl_camera {
-    float position[3];
-    float target[3];
-    float up[3];
-    float fov_y;  /**< radians */
-    float near_z;
+    float position[3]; /**< world space eye */
+    float target[3];   /**< a world-space point the camera looks at */
+    float up[3];       /**< world-space up; zero = +Y */
+    float fov_y;  /**< vertical field of view in radians; <= 0 = 60 degrees */
+    float near_z; /**< near plane distance; <= 0 = 0.1 */
     float far_z;  /**< <= 0 or Inf: infinite far plane */
 } tl_camera;
 
+/** A scene: every array is owned by the scene and freed by tl_scene_destroy() with `allocator`. */
 typedef struct tl_scene {
-    tl_vertex *vertices;
-    size_t vertex_count;
-    uint32_t *indices;   /**< triangles, 3 per face */
-    size_t index_count;
-    tl_object *objects;
-    size_t object_count;
-    tl_material *materials;
-    size_t material_count;
-    tl_texture *textures;
-    size_t texture_count;
-    tl_light *lights;
-    size_t light_count;
-    tl_camera camera;
-    float ambient[3];     /**< linear ambient radiance */
-    float bounds_min[3];
-    float bounds_max[3];
-    tl_allocator allocator;
+    tl_vertex *vertices;      /**< vertex_count vertices */
+    size_t vertex_count;      /**< at most 2^32 - 1 */
+    uint32_t *indices;        /**< triangles, 3 per face */
+    size_t index_count;       /**< a multiple of 3 */
+    tl_object *objects;       /**< object_count objects */
+    size_t object_count;      /**< number of objects */
+    tl_material *materials;   /**< material_count materials */
+    size_t material_count;    /**< number of materials */
+    tl_texture *textures;     /**< texture_count textures */
+    size_t texture_count;     /**< number of textures */
+    tl_light *lights;         /**< light_count lights */
+    size_t light_count;       /**< number of lights */
+    tl_camera camera;         /**< the default view (tl_renderer_render with a NULL camera) */
+    float ambient[3];         /**< linear ambient radiance */
+    float bounds_min[3];      /**< world-space bounds of all objects */
+    float bounds_max[3];      /**< world-space bounds of all objects */
+    tl_allocator allocator;   /**< what allocated the arrays; zeroed: malloc/free */
 } tl_scene;
 
 /** What a scene uses, for the frame planner (DESIGN.md section 4). Only materials that some
  *  non-empty object draws with count. */
 typedef struct tl_scene_feature_set {
-    size_t point_lights;
-    size_t spot_lights;
-    size_t directional_lights;
+    size_t point_lights;       /**< number of point lights */
+    size_t spot_lights;        /**< number of spot lights */
+    size_t directional_lights; /**< number of directional lights */
     int has_specular;     /**< some material has non-zero specular (or is metallic-roughness) */
     int has_textures;     /**< some material samples a texture (UVs needed) */
     int has_normal_maps;  /**< tangents needed */
-    int has_emissive;
-    int has_alpha_mask;
-    int has_alpha_blend;
+    int has_emissive;     /**< some material emits light */
+    int has_alpha_mask;   /**< alpha-tested materials */
+    int has_alpha_blend;  /**< alpha-blended materials (a transparent pass) */
     int has_metallic_roughness; /**< per-pixel metallic-roughness conversion needed */
     int has_occlusion;    /**< some material has an occlusion texture */
     int has_emissive_texture; /**< some emissive material has an emissive texture */
-    int has_double_sided;
-    size_t triangle_count;
-    size_t object_count;
+    int has_double_sided; /**< some material is double-sided */
+    size_t triangle_count; /**< triangles in the index buffer */
+    size_t object_count;   /**< objects in the scene */
 } tl_scene_feature_set;
 
 /** Fills *out with what `scene` uses; a NULL scene gives all zeros. */
