@@ -47,14 +47,17 @@ void main()
     vec3 v = normalize(-p);
     vec2 t = tl_light_terms(TL_LIGHT_TYPE, p, n, v, tl_gloss_to_specular_power(gloss), f_position_radius.xyz,
                             f_position_radius.w, f_direction_cos_outer.xyz, f_cos_inner, f_direction_cos_outer.w);
-    vec3 diffuse = f_color * t.x;
-    vec3 specular = f_color * t.y;
+    // One light's output never exceeds the FP16 maximum, whatever its colour (an Inf would poison
+    // every later sum); sums past it are the readers' job (material.frag, tonemap.frag).
+    const vec3 fp16_max = vec3(65504.0);
+    vec3 diffuse = min(f_color * t.x, fp16_max);
+    vec3 specular = min(f_color * t.y, fp16_max);
 #ifdef TL_LIGHT_ACCUM
 #if defined(TL_SPECULAR_EXACT)
     o_diffuse = vec4(diffuse, 0.0);
     o_specular = vec4(specular, 0.0);
 #elif defined(TL_SPECULAR_COMPACT)
-    o_diffuse = vec4(diffuse, tl_luminance(specular));
+    o_diffuse = vec4(diffuse, min(tl_luminance(specular), 65504.0));
 #else
     o_diffuse = vec4(diffuse, 0.0);
 #endif

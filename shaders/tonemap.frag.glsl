@@ -17,7 +17,11 @@ float tl_encode_srgb(float c)
 
 void main()
 {
-    vec3 hdr = max(textureLod(u_hdr, v_uv, 0.0).rgb, vec3(0.0)) * u_exposure;
+    // Blended FP16 sums can overflow to Inf on hardware that rounds to nearest: Inf is the
+    // brightest value, NaN (Inf - Inf never happens here, but be safe) is black.
+    vec3 c = textureLod(u_hdr, v_uv, 0.0).rgb;
+    c = vec3(isnan(c.r) ? 0.0 : c.r, isnan(c.g) ? 0.0 : c.g, isnan(c.b) ? 0.0 : c.b);
+    vec3 hdr = clamp(c, vec3(0.0), vec3(65504.0)) * u_exposure;
     vec3 l = tl_aces(hdr);
     vec3 s = vec3(tl_encode_srgb(l.r), tl_encode_srgb(l.g), tl_encode_srgb(l.b));
     o_ldr = vec4(s, dot(s, vec3(0.299, 0.587, 0.114)));

@@ -63,9 +63,10 @@ unsigned tl__target_format(const tl_renderer_desc *d, tl_target_id id)
     int rev = d->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
     switch (id) {
     case TL_TARGET_DEPTH:
-        /* fat is the full-float reference: D32F; the thin modes need stencil beside depth */
-        if (d->mode == TL_MODE_FAT) return GL_DEPTH_COMPONENT32F;
-        return rev || d->depth_format == TL_DEPTH_FORMAT_D32F ? GL_DEPTH32F_STENCIL8 : GL_DEPTH24_STENCIL8;
+        /* fat is the full-float reference: D32F. No pass uses stencil, so float depth carries
+         * none (D32F_S8 would cost 8 B/px); D24 comes packed with its stencil byte. */
+        if (d->mode == TL_MODE_FAT || rev || d->depth_format == TL_DEPTH_FORMAT_D32F) return GL_DEPTH_COMPONENT32F;
+        return GL_DEPTH24_STENCIL8;
     case TL_TARGET_RT0: return d->rt0 == TL_RT0_RGB10A2 ? GL_RGB10_A2 : GL_RGBA8;
     case TL_TARGET_RT1: return GL_RGBA8;
     case TL_TARGET_LIGHT_DIFFUSE:
