@@ -1,0 +1,83 @@
+// The scene's camera: the first perspective camera node of the scene, or else one that frames the
+// scene's bounds (tl_camera has no orthographic projection, so orthographic cameras fall back).
+#include <cmath>
+
+#include "gltf_internal.h"
+#include "gltf_math.h"
+
+namespace tl_gltf {
+namespace {
+
+const double pi = 3.14159265358979323846;
+
+// From the front, right and above (glTF: +Z front, +Y up), 60 degrees vertically, far enough that
+// the bounding sphere fits the vertical field of view with 5% to spare.
+void framing_camera(const float bmin[3], const float bmax[3], tl_camera *out)
+{
+    double c[3], r;
+    scene_frame(bmin, bmax, c, &r);
+    double fov = pi / 3.0;
+    double dist = 1.05 * r / std::sin(0.5 * fov);
+    double dir[3] = {0.5, 0.4, 1.0};
+    normalize3(dir);
+    *out = tl_camera{};
+    for (int k = 0; k < 3; k++) {
+        out->position[k] = to_float(c[k] + dir[k] * dist);
+        out->target[k] = to_float(c[k]);
+    }
+    out->up[1] = 1.0f;
+    out->fov_y = (float)fov;
+    out->near_z = to_float(0.5 * (dist - r)); // the sphere starts at dist - r > 0
+    out->far_z = to_float(2.0 * (dist + r));
+}
+
+} // namespace
+
+void make_camera(const context &c, const tinygltf::Model &m, const scene_graph &g, const float bmin[3],
+                 const float bmax[3], tl_camera *out)
+{
+    framing_camera(bmin, bmax, out);
+    if (g.camera_node < 0) return;
+    int ci = m.nodes[(size_t)g.camera_node].camera;
+    const tinygltf::Camera &cam = m.cameras[(size_t)ci];
+    const std::string name = element("cameras", (size_t)ci);
+    if (cam.type != "perspective") {
+        warn(c, name + ": type \"" + cam.type + "\" is not supported; using a camera that frames the scene");
+        return;
+    }
+    const tinygltf::PerspectiveCamera &p = cam.perspective;
+    if (!(p.yfov > 0.0 && p.yfov < pi) || !(p.znear > 0.0) || !fits_float(p.znear)) {
+        warn(c, name + ": yfov or znear out of range; using a camera that frames the scene");
+        return;
+    }
+    const double origin[3] = {0, 0, 0}, minus_z[3] = {0, 0, -1}, plus_y[3] = {0, 1, 0};
+    double pos[3], fwd[3], up[3];
+    mat_point(g.camera_world, origin, pos);
+    mat_dir(g.camera_world, minus_z, fwd);
+    mat_dir(g.camera_world, plus_y, up);
+    if (!normalize3(fwd) || !normalize3(up)) {
+        warn(c, element("nodes", (size_t)g.camera_node) + ": degenerate camera transform; using a camera that frames the scene");
+        return;
+    }
+    // The target only gives the direction; put it at the scene centre's depth, so that tools
+    // orbiting around the target orbit around something sensible.
+    double depth = 0.0;
+    for (int k = 0; k < 3; k++) depth += (0.5 * ((double)bmin[k] + bmax[k]) - pos[k]) * fwd[k];
+    if (!(depth > p.znear)) depth = 1.0;
+    for (int k = 0; k < 3; k++) {
+        out->position[k] = (float)pos[k];
+        out->target[k] = to_float(pos[k] + fwd[k] * depth);
+        out->up[k] = (float)up[k];
+    }
+    out->fov_y = (float)p.yfov;
+    out->near_z = (float)p.znear;
+    // glTF: zfar absent (tinygltf: 0) means an infinite projection.
+    if (p.zfar > p.znear && fits_float(p.zfar)) {
+        out->far_z = (float)p.zfar;
+    } else {
+        if (p.zfar != 0.0) warn(c, name + ": zfar <= znear; using an infinite far plane");
+        out->far_z = 0.0f;
+    }
+}
+
+} // namespace tl_gltf

@@ -1,0 +1,228 @@
+// Private to the glTF adapter (src/io/gltf_*.cpp): the load context, failures, allocation through
+// the caller's allocator, and the steps gltf_load.cpp runs in order. C++ never leaves src/io.
+#ifndef TL_GLTF_INTERNAL_H
+#define TL_GLTF_INTERNAL_H
+
+#include <tiny_gltf.h>
+
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "thinlight/io.h"
+
+namespace tl_gltf {
+
+// ---- context and messages (gltf_context.cpp) ------------------------------------------------
+
+// Everything one load needs; options are resolved (no zero "defaults" left).
+struct context {
+    tl_allocator alloc{};           // both functions set
+    tl_logger logger{};
+    std::string path;               // as the caller gave it; prefixes every message
+    std::string base_dir;           // directory of `path` ("" = current), for relative URIs
+    tl_gltf_normals normals = TL_GLTF_NORMALS_FLAT;
+    size_t max_texture_pixels = 0;
+    size_t max_triangles = 0;
+    uint32_t scene_number = 0;
+    uint32_t extra_lights = 0;
+    uint64_t seed = 1;
+    bool default_lights = true;
+    // Set by the file callbacks, so that a failed tinygltf load can be told apart as I/O.
+    bool io_failed = false;
+    std::string io_detail;
+};
+
+// A failure: thrown anywhere inside the adapter, turned into a tl_result and one message line at
+// the C boundary. `message` is "element: what", without the file name.
+struct failure {
+    tl_result result;
+    std::string message;
+};
+
+[[noreturn]] void fail(tl_result result, const std::string &message);
+// Logs "path: message" as a warning (one line; embedded newlines are split into lines).
+void warn(const context &c, const std::string &message);
+
+// "meshes[2].primitives[0]" style element names.
+std::string element(const char *array, size_t index);
+// `file` relative to directory `dir` ("" = the current directory).
+std::string join_path(const std::string &dir, const std::string &file);
+
+// ---- allocation through the caller's allocator ---------------------------------------------
+
+// count * size bytes (overflow-checked); throws failure{TL_ERROR_OUT_OF_MEMORY} naming `what`.
+void *alloc_bytes(const context &c, size_t count, size_t size, const char *what);
+void free_bytes(const context &c, void *ptr);
+
+// A standard allocator over the context's allocator, so temporary vectors count as the caller's
+// allocations too; failure throws std::bad_alloc, which the C boundary reports as out of memory.
+template <class T> struct stl_allocator {
+    using value_type = T;
+    const context *c;
+    explicit stl_allocator(const context *ctx) noexcept : c(ctx) {}
+    template <class U> stl_allocator(const stl_allocator<U> &o) noexcept : c(o.c) {}
+    T *allocate(size_t n)
+    {
+        if (n > std::numeric_limits<size_t>::max() / sizeof(T)) throw std::bad_alloc();
+        size_t bytes = n * sizeof(T);
+        void *p = c->alloc.alloc(bytes != 0 ? bytes : 1, c->alloc.user);
+        if (!p) throw std::bad_alloc();
+        return static_cast<T *>(p);
+    }
+    void deallocate(T *p, size_t) noexcept { c->alloc.free(p, c->alloc.user); }
+    template <class U> bool operator==(const stl_allocator<U> &o) const noexcept { return c == o.c; }
+    template <class U> bool operator!=(const stl_allocator<U> &o) const noexcept { return c != o.c; }
+};
+
+template <class T> using vec = std::vector<T, stl_allocator<T>>;
+template <class T> vec<T> make_vec(const context &c) { return vec<T>(stl_allocator<T>(&c)); }
+
+// ---- parsing (gltf_parse.cpp) ---------------------------------------------------------------
+
+// Reads c.path (.gltf or .glb by content) into `model`; buffers are loaded, images are kept
+// encoded (decoded later, only when a material uses them). Throws failure.
+void parse_file(context &c, tinygltf::Model *model);
+
+// ---- accessors (gltf_accessor.cpp) ----------------------------------------------------------
+
+// A validated accessor: every element lies inside its buffer.
+struct accessor_view {
+    int index = -1;               // into model.accessors
+    const unsigned char *data = nullptr; // first element; nullptr: no bufferView, all zeros
+    size_t count = 0;
+    size_t stride = 0;
+    int component_type = 0;
+    int components = 0;
+    bool normalized = false;
+};
+
+// Validates model.accessors[index] for `role` (e.g. "meshes[0].primitives[1] POSITION"):
+// `type` is TINYGLTF_TYPE_*; `indices` restricts components to unsigned 8/16/32-bit. Throws.
+accessor_view get_accessor(const tinygltf::Model &m, int index, int type, bool indices, const std::string &role);
+// Element i as floats (normalised integers mapped to [0,1] or [-1,1]); writes view.components.
+void read_floats(const accessor_view &v, size_t i, float *out);
+uint32_t read_index(const accessor_view &v, size_t i);
+
+// ---- scene graph (gltf_nodes.cpp) -----------------------------------------------------------
+
+struct mesh_instance {
+    int node;
+    int mesh;
+    double world[16]; // column-major
+};
+struct light_instance {
+    int node;
+    int light;
+    double world[16];
+};
+struct scene_graph {
+    explicit scene_graph(const context &c) : meshes(make_vec<mesh_instance>(c)), lights(make_vec<light_instance>(c)) {}
+    vec<mesh_instance> meshes;
+    vec<light_instance> lights;
+    int camera_node = -1; // first camera node in depth-first order
+    double camera_world[16] = {0};
+};
+
+// Picks the scene (options.scene_number), checks the node graph (references, one parent, no
+// cycles) and walks it depth-first, composing world transforms. Throws.
+void walk_scene(const context &c, const tinygltf::Model &m, scene_graph *g);
+
+// ---- images and textures (gltf_image.cpp, gltf_texture.cpp) ---------------------------------
+
+// RGBA8 pixels owned through the context's allocator.
+struct decoded_image {
+    uint32_t width = 0, height = 0;
+    uint8_t *rgba = nullptr;
+};
+// Decodes an encoded image (PNG, JPEG, ... whatever OpenImageIO reads) from memory or a file.
+// Returns false with `why` set when the data cannot be decoded (the caller warns and falls back);
+// throws failure for TL_ERROR_LIMIT (c.max_texture_pixels) and out of memory.
+bool decode_image_memory(const context &c, const unsigned char *data, size_t size, const std::string &mime,
+                         const std::string &what, decoded_image *out, std::string *why);
+bool decode_image_file(const context &c, const std::string &file, const std::string &what, decoded_image *out,
+                       std::string *why);
+
+// The scene's textures while loading: owns their pixels until handed to the scene.
+struct texture_table {
+    explicit texture_table(const context &ctx)
+        : c(&ctx), textures(make_vec<tl_texture>(ctx)), image_slot(make_vec<uint32_t>(ctx))
+    {
+    }
+    ~texture_table();
+    texture_table(const texture_table &) = delete;
+    texture_table &operator=(const texture_table &) = delete;
+    const context *c;
+    vec<tl_texture> textures;
+    vec<uint32_t> image_slot; // per glTF image: index into textures, TL_NO_TEXTURE, or unset
+};
+constexpr uint32_t image_unset = TL_NO_TEXTURE - 1;
+
+// The scene texture for glTF texture `index` (decoded once per image), or TL_NO_TEXTURE after a
+// warning naming `what` when the image is missing or undecodable. Throws on bad references and
+// limits.
+uint32_t texture_for(const context &c, const tinygltf::Model &m, texture_table *t, int index, const std::string &what);
+
+// ---- materials (gltf_material.cpp) ----------------------------------------------------------
+
+// glTF material (or -1, the default material) to tl_material; textures are decoded into `t`.
+tl_material convert_material(const context &c, const tinygltf::Model &m, int index, texture_table *t);
+
+// ---- meshes (gltf_mesh.cpp, gltf_normals.cpp) -----------------------------------------------
+
+// One glTF primitive's slice of the scene's vertex and index arrays (shared by every instance).
+struct primitive_plan {
+    int mesh = -1, primitive = -1;
+    bool skipped = false;       // not triangles, or no POSITION: warned, no object
+    bool indexed = false;
+    bool has_normals = false;
+    bool has_uvs = false;
+    bool has_tangents = false;
+    bool unweld = false;        // flat normals to generate on an indexed primitive
+    bool needs_tangents = false; // the material has a normal map
+    int gltf_material = -1;
+    uint32_t material = 0;      // scene material index
+    size_t first_vertex = 0, vertex_count = 0;
+    size_t first_index = 0, index_count = 0;
+    // A copy of the indices with every triangle reversed, for instances under a mirroring
+    // transform (glTF: a negative determinant flips the winding).
+    bool mirrored = false;
+    size_t mirrored_first_index = 0;
+};
+
+// Validates the primitive's accessors and fills counts (not offsets). Throws.
+void plan_primitive(const context &c, const tinygltf::Model &m, int mesh, int primitive, primitive_plan *p);
+// Fills vertices[p.first_vertex ...] and indices[p.first_index ...] (global indices). Throws.
+void build_primitive(const context &c, const tinygltf::Model &m, const primitive_plan &p, tl_vertex *vertices,
+                     uint32_t *indices);
+
+// Normal and tangent generation on one primitive (`idx` are local indices, 3 per triangle).
+void flat_normals(tl_vertex *v, size_t vertex_count); // vertices unshared: 3 per triangle
+void smooth_normals(const tl_vertex *v, size_t vertex_count, const uint32_t *idx, size_t index_count, float *out);
+// Replaces non-finite or zero-length normals by smooth ones; normalises the rest. Returns how
+// many were replaced.
+size_t repair_normals(const context &c, tl_vertex *v, size_t vertex_count, const uint32_t *idx, size_t index_count);
+void generate_tangents(const context &c, tl_vertex *v, size_t vertex_count, const uint32_t *idx, size_t index_count);
+// Keeps given tangents usable: orthonormal to the normal, w = +-1. Returns how many were bad
+// (zero or non-finite); the caller regenerates them all when any was.
+size_t fix_tangents(tl_vertex *v, size_t vertex_count);
+// Any unit vector orthogonal to unit n.
+void orthogonal(const float n[3], float out[3]);
+
+// ---- lights and camera (gltf_lights.cpp, gltf_camera.cpp) -----------------------------------
+
+void convert_lights(const context &c, const tinygltf::Model &m, const scene_graph &g, vec<tl_light> *out);
+void default_rig(const float bmin[3], const float bmax[3], vec<tl_light> *out);
+void extra_lights(const context &c, const float bmin[3], const float bmax[3], vec<tl_light> *out);
+void make_camera(const context &c, const tinygltf::Model &m, const scene_graph &g, const float bmin[3],
+                 const float bmax[3], tl_camera *out);
+
+// Linear ambient radiance of every loaded scene (docs/gltf.md).
+constexpr float ambient = 0.03f;
+
+} // namespace tl_gltf
+
+#endif

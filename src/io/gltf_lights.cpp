@@ -1,0 +1,174 @@
+// KHR_lights_punctual to tl_light, the default rig for files without lights, and the seeded extra
+// lights. The renderer's light colours have pi folded in (docs/renderer.md: diffuse radiance =
+// albedo * colour * attenuation * N.L), so a glTF intensity I (candela, or lux for directional
+// lights) becomes colour * I / pi: the radiance glTF's own Lambert term albedo / pi * I / d^2
+// gives. The numbers are documented in docs/gltf.md.
+#include <cmath>
+
+#include "gltf_internal.h"
+#include "gltf_math.h"
+
+namespace tl_gltf {
+namespace {
+
+const double pi = 3.14159265358979323846;
+
+// Without a glTF range, the radius is where colour / d^2 falls to this (1/256 of a white
+// surface's radiance under a unit light: below one 8-bit step).
+const double range_threshold = 1.0 / 256.0;
+
+float auto_radius(const float color[3])
+{
+    double peak = std::fmax(color[0], std::fmax(color[1], color[2]));
+    double r = std::sqrt(peak / range_threshold);
+    return (float)std::fmax(r, 1e-3);
+}
+
+// splitmix64, as the built-in scene uses: same seed, same lights, on every platform.
+struct rng {
+    uint64_t s;
+    uint64_t next()
+    {
+        uint64_t z = (s += 0x9E3779B97F4A7C15ull);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+        return z ^ (z >> 31);
+    }
+    double unit() { return (double)(next() >> 11) * 0x1.0p-53; }
+};
+
+} // namespace
+
+void convert_lights(const context &c, const tinygltf::Model &m, const scene_graph &g, vec<tl_light> *out)
+{
+    for (const light_instance &li : g.lights) {
+        const tinygltf::Light &L = m.lights[(size_t)li.light];
+        const std::string name = "KHR_lights_punctual.lights[" + std::to_string(li.light) + "]";
+        tl_light l = {};
+        if (L.type == "point") {
+            l.type = TL_LIGHT_POINT;
+        } else if (L.type == "spot") {
+            l.type = TL_LIGHT_SPOT;
+        } else if (L.type == "directional") {
+            l.type = TL_LIGHT_DIRECTIONAL;
+        } else {
+            warn(c, name + ": unknown type \"" + L.type + "\"; skipped");
+            continue;
+        }
+        if (!std::isfinite(L.intensity) || L.intensity < 0.0) {
+            warn(c, name + ": intensity is negative or not finite; skipped");
+            continue;
+        }
+        double rgb[3] = {1, 1, 1};
+        if (L.color.size() == 3) {
+            for (int k = 0; k < 3; k++) rgb[k] = std::isfinite(L.color[(size_t)k]) ? std::fmax(L.color[(size_t)k], 0.0) : 1.0;
+        } else if (!L.color.empty()) {
+            warn(c, name + ": color needs 3 numbers; using white");
+        }
+        double col[3];
+        for (int k = 0; k < 3; k++) col[k] = rgb[k] * L.intensity / pi;
+        if (!fits_float(col[0]) || !fits_float(col[1]) || !fits_float(col[2])) {
+            warn(c, name + ": intensity overflows single precision; skipped");
+            continue;
+        }
+        for (int k = 0; k < 3; k++) l.color[k] = (float)col[k];
+
+        const double origin[3] = {0, 0, 0}, minus_z[3] = {0, 0, -1};
+        double pos[3], dir[3];
+        mat_point(li.world, origin, pos);
+        mat_dir(li.world, minus_z, dir);
+        if (l.type != TL_LIGHT_POINT) {
+            if (!normalize3(dir)) {
+                warn(c, element("nodes", (size_t)li.node) + ": light direction is degenerate (zero scale); skipped");
+                continue;
+            }
+            for (int k = 0; k < 3; k++) l.direction[k] = (float)dir[k];
+        }
+        if (l.type != TL_LIGHT_DIRECTIONAL) {
+            for (int k = 0; k < 3; k++) l.position[k] = (float)pos[k];
+            if (L.range > 0.0 && fits_float(L.range)) {
+                l.radius = (float)L.range;
+            } else {
+                if (L.range != 0.0) warn(c, name + ": invalid range; derived from the intensity");
+                l.radius = auto_radius(l.color);
+            }
+        }
+        if (l.type == TL_LIGHT_SPOT) {
+            // glTF: 0 <= inner < outer <= pi/2; keep the renderer's cos_outer < cos_inner true.
+            double outer = L.spot.outerConeAngle, inner = L.spot.innerConeAngle;
+            if (!(outer > 0.0 && outer <= pi / 2 && inner >= 0.0 && inner < outer)) {
+                warn(c, name + ": cone angles outside 0 <= inner < outer <= pi/2; clamped");
+                outer = std::isfinite(outer) ? std::fmin(std::fmax(outer, 1e-3), pi / 2) : pi / 4;
+                inner = std::isfinite(inner) ? std::fmin(std::fmax(inner, 0.0), outer * 0.999) : 0.0;
+            }
+            l.cos_inner = (float)std::cos(inner);
+            l.cos_outer = (float)std::cos(outer);
+            if (!(l.cos_outer < l.cos_inner)) l.cos_outer = std::nextafter(l.cos_inner, -1.0f);
+        }
+        out->push_back(l);
+    }
+}
+
+void default_rig(const float bmin[3], const float bmax[3], vec<tl_light> *out)
+{
+    double c[3], r;
+    scene_frame(bmin, bmax, c, &r);
+    // A warm key light from above, front right (glTF's front is +Z, up +Y)...
+    tl_light key = {};
+    key.type = TL_LIGHT_DIRECTIONAL;
+    double d[3] = {-0.4, -1.0, -0.6};
+    normalize3(d);
+    for (int k = 0; k < 3; k++) key.direction[k] = (float)d[k];
+    key.color[0] = 1.0f;
+    key.color[1] = 0.95f;
+    key.color[2] = 0.88f;
+    out->push_back(key);
+    // ...and four fill lights on a ring 1.5 half-diagonals out, half that above the centre, each
+    // giving about 0.15 at the centre (before the window), alternately cool and warm.
+    double ring = 1.5 * r;
+    for (int i = 0; i < 4; i++) {
+        double a = pi / 4 + i * pi / 2;
+        tl_light p = {};
+        p.type = TL_LIGHT_POINT;
+        p.position[0] = to_float(c[0] + ring * std::cos(a));
+        p.position[1] = to_float(c[1] + 0.5 * ring);
+        p.position[2] = to_float(c[2] + ring * std::sin(a));
+        double dist2 = ring * ring * 1.25;
+        float k = (float)(0.15 * dist2);
+        p.color[0] = k * (i % 2 ? 1.0f : 0.85f);
+        p.color[1] = k * 0.95f;
+        p.color[2] = k * (i % 2 ? 0.85f : 1.0f);
+        p.radius = (float)(2.5 * ring);
+        out->push_back(p);
+    }
+}
+
+void extra_lights(const context &c, const float bmin[3], const float bmax[3], vec<tl_light> *out)
+{
+    double centre[3], r;
+    scene_frame(bmin, bmax, centre, &r);
+    // Each axis at least a tenth of the diagonal wide, so that a flat scene (a floor) still gets
+    // lights above it rather than in it.
+    double lo[3], hi[3];
+    for (int k = 0; k < 3; k++) {
+        double half = std::fmax(0.5 * ((double)bmax[k] - bmin[k]), 0.1 * r);
+        lo[k] = centre[k] - half;
+        hi[k] = centre[k] + half;
+    }
+    rng g{c.seed};
+    double radius = 0.5 * r; // a quarter of the diagonal
+    for (uint32_t i = 0; i < c.extra_lights; i++) {
+        tl_light l = {};
+        l.type = TL_LIGHT_POINT;
+        for (int k = 0; k < 3; k++) l.position[k] = to_float(lo[k] + (hi[k] - lo[k]) * g.unit());
+        // A random colour with its largest channel 1, times 0.1 radius^2: about 0.35 at half the
+        // radius.
+        double rgb[3] = {0.25 + 0.75 * g.unit(), 0.25 + 0.75 * g.unit(), 0.25 + 0.75 * g.unit()};
+        double peak = std::fmax(rgb[0], std::fmax(rgb[1], rgb[2]));
+        for (int k = 0; k < 3; k++) l.color[k] = (float)(rgb[k] / peak * 0.1 * radius * radius);
+        l.radius = (float)radius;
+        out->push_back(l);
+    }
+}
+
+} // namespace tl_gltf
