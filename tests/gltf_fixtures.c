@@ -461,7 +461,7 @@ int tlf_write_textured_boxes(const char *dir, const char *name, tlf_storage stor
     const float origin[3] = {0, 0, 0};
     make_box(&m, origin, 0.5f);
     add_mesh(&d, &m); /* accessors 0..3 */
-    make_quad(&m, 0.0f, 0.5f, 0.0f, 0.5f);
+    make_quad(&m, 0.0f, 0.55f, 0.0f, 0.5f); /* a lid just above the box: coplanar faces would z-fight */
     add_mesh(&d, &m); /* accessors 4..7 */
     doc_image(&d, "albedo.png", "image/png");
     doc_image(&d, "normal.png", "image/png");

@@ -4,6 +4,7 @@
 #include "tl_test.h"
 
 #include "thinlight/context.h"
+#include "thinlight/io.h"
 #include "thinlight/metrics.h"
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
@@ -446,7 +447,70 @@ static void plan_saving_same_image(void)
     tl_scene_destroy(s);
 }
 
+#ifdef TL_TEST_GLTF
+#include "gltf_fixtures.h"
+
+/* The generated glTF test scenes (textures and a node hierarchy; several materials with alpha
+ * MASK, BLEND and double-sided; punctual lights of every type) render through every mode like fat
+ * does, and each gets its own plan. */
+static void modes_match_fat_gltf_scenes(void)
+{
+    if (!ensure_context()) { tl_test_failures++; return; }
+    const char *dir = TL_TEST_WORK_DIR "/modes_gltf";
+    TL_CHECK(tl_test_write_gltf_scenes(dir) == 0);
+    static const char *const files[] = {"textured_boxes.gltf", "materials.glb", "lights.gltf"};
+    char plans[3][2048];
+    for (int f = 0; f < 3; f++) {
+        char path[512], err[512] = "";
+        snprintf(path, sizeof path, "%s/%s", dir, files[f]);
+        tl_scene *s = NULL;
+        tl_gltf_options go = {.extra_lights = 8, .error = err, .error_size = sizeof err};
+        TL_CHECK(tl_scene_load_gltf(path, &go, &s) == TL_OK);
+        if (!s) {
+            fprintf(stderr, "%s\n", err);
+            continue;
+        }
+        const uint32_t w = 240, h = 136;
+        size_t n = (size_t)w * h * 4;
+        frame_images fat = {0}, img = {0};
+        tl_frame_stats st;
+        TL_CHECK(render_mode(s, TL_MODE_FAT, w, h, &fat, &st));
+        double mean = 0;
+        for (size_t i = 0; i < n; i++) mean += fat.ldr[i] / 255.0;
+        TL_CHECK(mean / (double)n > 0.05); /* lit, not black */
+        const double bound[TL_MODE_COUNT_] = {0, 50.0, 40.0, 999.0, 50.0};
+        for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++) {
+            if (mode == TL_MODE_FAT) continue;
+            TL_CHECK(render_mode(s, (tl_render_mode)mode, w, h, &img, &st));
+            tl_image_error e;
+            TL_CHECK(tl_image_compare_u8(img.ldr, fat.ldr, n, &e) == TL_OK);
+            printf("%-20s %-13s vs fat: LDR PSNR %.2f dB (max %.0f)\n", files[f],
+                   tl_render_mode_name((tl_render_mode)mode), e.psnr_db, e.max_abs);
+            TL_CHECK(e.psnr_db >= bound[mode]);
+            TL_CHECK(count_nonfinite(img.hdr, n) == 0);
+            free(img.ldr);
+            free(img.hdr);
+        }
+        tl_scene_feature_set fs;
+        tl_scene_features(s, &fs);
+        tl_frame_plan p;
+        TL_CHECK(tl_frame_plan_build(&(tl_renderer_desc){.width = w, .height = h}, &fs, &p) == TL_OK);
+        tl_frame_plan_format(&p, plans[f], sizeof plans[f]);
+        free(fat.ldr);
+        free(fat.hdr);
+        tl_scene_destroy(s);
+    }
+    /* different scenes, different plans */
+    TL_CHECK(strcmp(plans[0], plans[1]) != 0 && strcmp(plans[1], plans[2]) != 0 && strcmp(plans[0], plans[2]) != 0);
+    TL_CHECK(strstr(plans[1], "transparent") != NULL && strstr(plans[0], "transparent") == NULL);
+    TL_CHECK(strstr(plans[2], "lights.spot") != NULL);
+}
+#endif
+
 static const tl_test_case cases[] = {
+#ifdef TL_TEST_GLTF
+    {"modes_match_fat_gltf_scenes", modes_match_fat_gltf_scenes},
+#endif
     {"plan_saving_same_image", plan_saving_same_image},
     {"plan_rules_exhaustive", plan_rules_exhaustive},
     {"plan_fat_layout_44_bytes", plan_fat_layout_44_bytes},
