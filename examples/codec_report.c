@@ -11,17 +11,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <sys/types.h>
-#include <sys/wait.h>
 #include <time.h>
-#include <unistd.h>
 
 #include "thinlight/codec.h"
 #include "thinlight/metrics.h"
 #include "thinlight/version.h"
 
 #include "test_images.h"
+#include "tool_util.h"
 
 #ifndef TL_REPORT_COMPILER
 #define TL_REPORT_COMPILER "unknown compiler"
@@ -93,8 +90,7 @@ typedef struct record {
 typedef struct report {
     record records[MAX_RECORDS];
     size_t count;
-    size_t total; /* planned, for the progress bar */
-    int tty;
+    tl_tool_progress progress;
     size_t elements; /* per timed run */
     size_t repeats;
     uint32_t image_size;
@@ -109,154 +105,13 @@ typedef struct report {
  * Small utilities
  * ------------------------------------------------------------------------------------------- */
 
-static void fail_line(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fputs(TOOL ": ", stderr);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
-    va_end(ap);
-}
+#define fail_line(...) tl_tool_fail(TOOL, __VA_ARGS__)
 
 static void *xcalloc(size_t count, size_t size)
 {
     void *p = calloc(count ? count : 1, size ? size : 1);
     if (!p) fail_line("out of memory (%zu x %zu bytes)", count, size);
     return p;
-}
-
-static char *str_printf(const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    int n = vsnprintf(NULL, 0, fmt, ap);
-    va_end(ap);
-    if (n < 0) return NULL;
-    char *s = malloc((size_t)n + 1);
-    if (!s) {
-        fail_line("out of memory");
-        return NULL;
-    }
-    va_start(ap, fmt);
-    vsnprintf(s, (size_t)n + 1, fmt, ap);
-    va_end(ap);
-    return s;
-}
-
-/* Directory part of a path ("." when there is none); caller frees. */
-static char *dir_of(const char *path)
-{
-    const char *slash = strrchr(path, '/');
-    if (!slash) return str_printf(".");
-    if (slash == path) return str_printf("/");
-    return str_printf("%.*s", (int)(slash - path), path);
-}
-
-/* mkdir -p; 0 on success, else errno. */
-static int make_dirs(const char *path)
-{
-    char *p = str_printf("%s", path);
-    if (!p) return ENOMEM;
-    int err = 0;
-    for (char *s = p + 1;; s++) {
-        if (*s != '/' && *s != '\0') continue;
-        char c = *s;
-        *s = '\0';
-        if (mkdir(p, 0777) != 0 && errno != EEXIST) err = errno;
-        *s = c;
-        if (err || c == '\0') break;
-    }
-    struct stat st;
-    if (!err && (stat(p, &st) != 0 || !S_ISDIR(st.st_mode))) err = ENOTDIR;
-    free(p);
-    return err;
-}
-
-/* Outputs go to PATH.tmp.PID and are renamed over PATH once complete. */
-static char *temp_name(const char *path) { return str_printf("%s.tmp.%ld", path, (long)getpid()); }
-
-/* Checks that a file can be created at `path` (its directory exists and is writable) without
- * touching `path` itself. 0 on success, else errno. */
-static int probe_writable(const char *path)
-{
-    char *tmp = temp_name(path);
-    if (!tmp) return ENOMEM;
-    FILE *f = fopen(tmp, "wb");
-    int err = f ? 0 : errno;
-    if (f) {
-        fclose(f);
-        remove(tmp);
-    }
-    free(tmp);
-    return err;
-}
-
-typedef int (*write_fn)(FILE *f, const void *ctx);
-
-/* Writes through `fn` into a temporary file and renames it over `path`; prints one line and
- * returns nonzero on failure, leaving `path` untouched. */
-static int write_atomic(const char *path, write_fn fn, const void *ctx)
-{
-    char *tmp = temp_name(path);
-    if (!tmp) return 1;
-    FILE *f = fopen(tmp, "wb");
-    if (!f) {
-        fail_line("cannot write '%s': %s", path, strerror(errno));
-        free(tmp);
-        return 1;
-    }
-    int bad = fn(f, ctx) != 0;
-    bad |= ferror(f) != 0;
-    bad |= fclose(f) != 0;
-    if (bad || rename(tmp, path) != 0) {
-        fail_line("cannot write '%s': %s", path, errno ? strerror(errno) : "write error");
-        remove(tmp);
-        free(tmp);
-        return 1;
-    }
-    free(tmp);
-    return 0;
-}
-
-/* Whole file into a NUL-terminated buffer; NULL (errno set) on failure. */
-static char *read_file(const char *path, size_t *size)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    size_t cap = 1 << 16, len = 0;
-    char *buf = malloc(cap);
-    while (buf) {
-        len += fread(buf + len, 1, cap - 1 - len, f);
-        if (ferror(f)) {
-            free(buf);
-            buf = NULL;
-            errno = EIO;
-            break;
-        }
-        if (feof(f)) break;
-        char *grown = realloc(buf, cap * 2);
-        if (!grown) {
-            free(buf);
-            buf = NULL;
-            errno = ENOMEM;
-            break;
-        }
-        buf = grown;
-        cap *= 2;
-    }
-    fclose(f);
-    if (!buf) return NULL;
-    buf[len] = '\0';
-    if (size) *size = len;
-    return buf;
-}
-
-static int write_bytes(FILE *f, const void *ctx)
-{
-    const char *const *span = ctx; /* [begin, end) */
-    size_t n = (size_t)(span[1] - span[0]);
-    return fwrite(span[0], 1, n, f) != n;
 }
 
 static double now_ns(void)
@@ -288,34 +143,6 @@ static double rand01(uint64_t *state) { return (double)(splitmix64(state) >> 11)
  * Machine description
  * ------------------------------------------------------------------------------------------- */
 
-static void describe_machine(report *r)
-{
-    snprintf(r->cpu, sizeof r->cpu, "unknown CPU");
-    r->cores = 0;
-    FILE *f = fopen("/proc/cpuinfo", "r");
-    if (f) {
-        char line[512];
-        int have_model = 0;
-        while (fgets(line, sizeof line, f)) {
-            if (strncmp(line, "processor", 9) == 0) r->cores++;
-            if (!have_model && strncmp(line, "model name", 10) == 0) {
-                const char *v = strchr(line, ':');
-                if (!v) continue;
-                v++;
-                while (*v == ' ' || *v == '\t') v++;
-                size_t n = strcspn(v, "\r\n");
-                snprintf(r->cpu, sizeof r->cpu, "%.*s", (int)n, v);
-                have_model = 1;
-            }
-        }
-        fclose(f);
-    }
-    if (r->cores == 0) {
-        long n = sysconf(_SC_NPROCESSORS_ONLN);
-        r->cores = n > 0 ? (size_t)n : 1;
-    }
-}
-
 static const char *build_flags(void)
 {
     const char *s = TL_REPORT_FLAGS;
@@ -327,26 +154,6 @@ static const char *build_flags(void)
  * Progress
  * ------------------------------------------------------------------------------------------- */
 
-static void progress(const report *r, const char *name)
-{
-    enum { WIDTH = 20 };
-    size_t done = r->count, filled = r->total ? done * WIDTH / r->total : WIDTH;
-    char bar[WIDTH + 1];
-    for (size_t i = 0; i < WIDTH; i++) bar[i] = i < filled ? '#' : ' ';
-    bar[WIDTH] = '\0';
-    if (r->tty)
-        fprintf(stderr, "\r[%s] %zu/%zu %-28s", bar, done, r->total, name);
-    else
-        fprintf(stderr, "[%s] %zu/%zu %s\n", bar, done, r->total, name);
-    fflush(stderr);
-}
-
-static void progress_done(const report *r)
-{
-    progress(r, "done");
-    if (r->tty) fputc('\n', stderr);
-}
-
 static record *begin_record(report *r, record_kind kind, uint32_t bits, const char *fmt, ...)
 {
     record *rec = &r->records[r->count];
@@ -357,7 +164,7 @@ static record *begin_record(report *r, record_kind kind, uint32_t bits, const ch
     va_end(ap);
     rec->kind = kind;
     rec->bits = bits;
-    progress(r, rec->name);
+    tl_tool_progress_update(&r->progress, r->count, rec->name, 1);
     tl_stats_reset(r->stats);
     return rec;
 }
@@ -789,76 +596,58 @@ static void print_table(const report *r)
     fflush(stdout);
 }
 
-static void json_string(FILE *f, const char *s)
-{
-    fputc('"', f);
-    for (; *s; s++) {
-        unsigned char c = (unsigned char)*s;
-        if (c == '"' || c == '\\') fprintf(f, "\\%c", c);
-        else if (c < 0x20) fprintf(f, "\\u%04x", c);
-        else fputc(c, f);
-    }
-    fputc('"', f);
-}
-
-static void json_number(FILE *f, double v)
-{
-    if (isfinite(v)) fprintf(f, "%.9g", v);
-    else fputs("null", f);
-}
-
 static int write_json(FILE *f, const void *ctx)
 {
     const report *r = ctx;
     char machine[192];
     snprintf(machine, sizeof machine, "%s, %zu cores", r->cpu, r->cores);
     fputs("{\n  \"tool\": \"" TOOL "\",\n  \"version\": ", f);
-    json_string(f, tl_version_string());
+    tl_tool_json_string(f, tl_version_string());
     fputs(",\n  \"machine\": ", f);
-    json_string(f, machine);
+    tl_tool_json_string(f, machine);
     fputs(",\n  \"cpu\": ", f);
-    json_string(f, r->cpu);
+    tl_tool_json_string(f, r->cpu);
     fprintf(f, ",\n  \"cores\": %zu,\n  \"compiler\": ", r->cores);
-    json_string(f, TL_REPORT_COMPILER);
+    tl_tool_json_string(f, TL_REPORT_COMPILER);
     fputs(",\n  \"flags\": ", f);
-    json_string(f, build_flags());
+    tl_tool_json_string(f, build_flags());
     fputs(",\n  \"build_type\": ", f);
-    json_string(f, TL_REPORT_BUILD_TYPE);
+    tl_tool_json_string(f, TL_REPORT_BUILD_TYPE);
     fprintf(f, ",\n  \"quick\": %s,\n  \"elements_per_run\": %zu,\n  \"repeats\": %zu,\n  \"variants\": [",
             r->quick ? "true" : "false", r->elements, r->repeats);
     for (size_t i = 0; i < r->count; i++) {
         const record *rec = &r->records[i];
         fputs(i ? ",\n    {" : "\n    {", f);
         fputs("\"name\": ", f);
-        json_string(f, rec->name);
+        tl_tool_json_string(f, rec->name);
         fprintf(f, ", \"kind\": \"%s\", \"bits\": %u, \"error_unit\": \"%s\",\n     \"mean_error\": ",
                 kind_names[rec->kind], (unsigned)rec->bits, kind_units[rec->kind]);
-        json_number(f, rec->mean_error);
+        tl_tool_json_number(f, rec->mean_error);
         fputs(", \"p99_error\": ", f);
-        json_number(f, rec->p99_error);
+        tl_tool_json_number(f, rec->p99_error);
         fputs(", \"max_error\": ", f);
-        json_number(f, rec->max_error);
+        tl_tool_json_number(f, rec->max_error);
         fputs(", \"ns_encode\": ", f);
-        json_number(f, rec->ns_encode);
+        tl_tool_json_number(f, rec->ns_encode);
         fputs(", \"ns_decode\": ", f);
-        json_number(f, rec->ns_decode);
+        tl_tool_json_number(f, rec->ns_decode);
         if (rec->kind == KIND_ALBEDO) {
             fputs(",\n     \"psnr_db\": ", f);
-            json_number(f, rec->psnr_db);
+            tl_tool_json_number(f, rec->psnr_db);
             fputs(", \"ciede2000_mean\": ", f);
-            json_number(f, rec->ciede2000_mean);
+            tl_tool_json_number(f, rec->ciede2000_mean);
             fputs(", \"per_image\": {", f);
             for (size_t im = 0; im < TL_TEST_IMAGE_COUNT; im++) {
                 fprintf(f, "%s\"%s\": {\"p99_error\": ", im ? ", " : "", tl_test_image_name((tl_test_image)im));
-                json_number(f, rec->image_p99[im]);
+                tl_tool_json_number(f, rec->image_p99[im]);
                 fputs(", \"max_error\": ", f);
-                json_number(f, rec->image_max[im]);
+                tl_tool_json_number(f, rec->image_max[im]);
                 fputc('}', f);
             }
             fputc('}', f);
         }
         fputs(",\n     \"note\": ", f);
-        json_string(f, rec->note);
+        tl_tool_json_string(f, rec->note);
         fputc('}', f);
     }
     fputs("\n  ]\n}\n", f);
@@ -890,7 +679,6 @@ typedef struct plot_layout {
     const report *r;
     plot_panel panels[KIND_COUNT];
     plot_label labels[MAX_RECORDS];
-    const char *png_tmp; /* base name, gnuplot runs inside DIR */
 } plot_layout;
 
 static double plot_floor(double v) { return v > 1e-12 ? v : 1e-12; }
@@ -997,7 +785,7 @@ static void plot_number(FILE *f, double v)
 
 static int write_plot_data(FILE *f, const void *ctx)
 {
-    const plot_layout *L = ctx;
+    const plot_layout *L = ((const tl_tool_plot *)ctx)->user;
     const report *r = L->r;
     fputs("# one block per kind: x=ns_encode+ns_decode p99 mean max family label_x label_y lead_x lead_y name\n", f);
     for (int k = 0; k < KIND_COUNT; k++) {
@@ -1029,7 +817,8 @@ static int write_plot_script(FILE *f, const void *ctx)
 {
     static const char *const colours[] = {"#7b3294", "#1a9850", "#e66101", "#8c510a", "#d7191c", "#2166ac",
                                           "#d7191c", "#1a9850", "#7b3294", "#2166ac", "#0571b0"};
-    const plot_layout *L = ctx;
+    const tl_tool_plot *plot = ctx;
+    const plot_layout *L = plot->user;
     const report *r = L->r;
     fprintf(f,
             "# Generated by " TOOL ": codec error against encode + decode time, one panel per kind.\n"
@@ -1046,7 +835,7 @@ static int write_plot_script(FILE *f, const void *ctx)
             "set grid xtics ytics\n"
             "set key off\n"
             "set xlabel 'ns per element, encode + decode (median of runs)'\n",
-            L->png_tmp, r->cpu, r->cores, TL_REPORT_COMPILER, build_flags());
+            plot->png_tmp, r->cpu, r->cores, TL_REPORT_COMPILER, build_flags());
     for (size_t c = 0; c < sizeof colours / sizeof colours[0]; c++)
         fprintf(f, "set linetype %zu lc rgb '%s' pt 7 ps 1.2 lw 1.2\n", c + 1, colours[c]);
     for (int k = 0; k < KIND_COUNT; k++) {
@@ -1065,76 +854,16 @@ static int write_plot_script(FILE *f, const void *ctx)
     return 0;
 }
 
-static int gnuplot_available(void)
-{
-    const char *path = getenv("PATH");
-    if (!path) path = "/usr/bin:/bin";
-    while (*path) {
-        size_t n = strcspn(path, ":");
-        char *exe = str_printf("%.*s/gnuplot", (int)n, n ? path : ".");
-        int ok = exe && access(exe, X_OK) == 0;
-        free(exe);
-        if (ok) return 1;
-        path += n;
-        if (*path == ':') path++;
-    }
-    return 0;
-}
-
 /* Writes DIR/codec_error_vs_time.{dat,gp} and runs gnuplot inside DIR to make the PNG. */
 static int make_plot(const report *r, const char *dir)
 {
-    int err = 1;
-    char *dat = str_printf("%s/" PLOT_NAME ".dat", dir);
-    char *gp = str_printf("%s/" PLOT_NAME ".gp", dir);
-    char *png = str_printf("%s/" PLOT_NAME ".png", dir);
-    char *png_tmp_base = str_printf(PLOT_NAME ".png.tmp.%ld", (long)getpid());
-    char *png_tmp = png_tmp_base ? str_printf("%s/%s", dir, png_tmp_base) : NULL;
     plot_layout *layout = xcalloc(1, sizeof *layout);
-    if (!dat || !gp || !png || !png_tmp || !layout) goto done;
+    if (!layout) return 1;
     layout->r = r;
-    layout->png_tmp = png_tmp_base;
     layout_plot(layout);
-    if (write_atomic(dat, write_plot_data, layout) || write_atomic(gp, write_plot_script, layout)) goto done;
-
-    fflush(NULL);
-    pid_t pid = fork();
-    if (pid < 0) {
-        fail_line("cannot start gnuplot: %s", strerror(errno));
-        goto done;
-    }
-    if (pid == 0) {
-        if (chdir(dir) == 0) execlp("gnuplot", "gnuplot", PLOT_NAME ".gp", (char *)NULL);
-        _exit(127);
-    }
-    int status = 0;
-    while (waitpid(pid, &status, 0) < 0) {
-        if (errno != EINTR) {
-            fail_line("waiting for gnuplot: %s", strerror(errno));
-            goto done;
-        }
-    }
-    struct stat st;
-    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0 || stat(png_tmp, &st) != 0 || st.st_size == 0) {
-        fail_line("gnuplot failed (status %d) on %s", WIFEXITED(status) ? WEXITSTATUS(status) : -1, gp);
-        remove(png_tmp);
-        goto done;
-    }
-    if ((size_t)st.st_size > PLOT_MAX_BYTES)
-        fprintf(stderr, TOOL ": warning: %s is %ld KiB (over %u KiB)\n", png, (long)(st.st_size / 1024),
-                PLOT_MAX_BYTES / 1024);
-    if (rename(png_tmp, png) != 0) {
-        fail_line("cannot write '%s': %s", png, strerror(errno));
-        remove(png_tmp);
-        goto done;
-    }
-    err = 0;
-done:
-    free(dat);
-    free(gp);
-    free(png);
-    free(png_tmp_base);
-    free(png_tmp);
+    tl_tool_plot p = {.tool = TOOL, .dir = dir, .name = PLOT_NAME, .data = write_plot_data,
+                      .script = write_plot_script, .user = layout, .max_bytes = PLOT_MAX_BYTES};
+    int err = tl_tool_make_plot(&p);
     free(layout);
     return err;
 }
@@ -1214,18 +943,9 @@ static int write_doc(FILE *f, const void *ctx)
     return 0;
 }
 
-/* Finds the markers; returns nonzero (with one line) when they are missing or out of order. */
 static int doc_split(const char *path, const char *text, size_t *keep_head, const char **tail)
 {
-    const char *b = strstr(text, DOC_BEGIN);
-    const char *e = b ? strstr(b + strlen(DOC_BEGIN), DOC_END) : NULL;
-    if (!b || !e) {
-        fail_line("%s: markers %s ... %s not found (add them where the tables belong)", path, DOC_BEGIN, DOC_END);
-        return 1;
-    }
-    *keep_head = (size_t)(b - text) + strlen(DOC_BEGIN);
-    *tail = e;
-    return 0;
+    return tl_tool_doc_split(TOOL, path, text, DOC_BEGIN, DOC_END, keep_head, tail);
 }
 
 /* ---------------------------------------------------------------------------------------------
@@ -1272,29 +992,29 @@ static int parse_args(int argc, char **argv, options *o)
 static int check_outputs(const options *o, char **doc_text)
 {
     int e;
-    if (o->out && (e = make_dirs(o->out)) != 0) {
+    if (o->out && (e = tl_tool_make_dirs(o->out)) != 0) {
         fail_line("cannot create output directory '%s': %s", o->out, strerror(e));
         return 1;
     }
     if (o->out) {
-        char *probe = str_printf("%s/" PLOT_NAME ".png", o->out);
-        e = probe ? probe_writable(probe) : ENOMEM;
+        char *probe = tl_tool_strf("%s/" PLOT_NAME ".png", o->out);
+        e = probe ? tl_tool_probe_writable(probe) : ENOMEM;
         free(probe);
         if (e) {
             fail_line("cannot write into output directory '%s': %s", o->out, strerror(e));
             return 1;
         }
     }
-    if (o->json && (e = probe_writable(o->json)) != 0) {
+    if (o->json && (e = tl_tool_probe_writable(o->json)) != 0) {
         fail_line("cannot write '%s': %s", o->json, strerror(e));
         return 1;
     }
-    if (!o->no_plot && !gnuplot_available()) {
+    if (!o->no_plot && !tl_tool_have_gnuplot()) {
         fail_line("gnuplot not found on PATH (install gnuplot-nox, or pass --no-plot)");
         return 1;
     }
     if (o->doc) {
-        *doc_text = read_file(o->doc, NULL);
+        *doc_text = tl_tool_read_file(o->doc, NULL);
         if (!*doc_text) {
             fail_line("cannot read '%s': %s", o->doc, strerror(errno));
             return 1;
@@ -1302,13 +1022,13 @@ static int check_outputs(const options *o, char **doc_text)
         size_t head;
         const char *tail;
         if (doc_split(o->doc, *doc_text, &head, &tail)) return 1;
-        if ((e = probe_writable(o->doc)) != 0) {
+        if ((e = tl_tool_probe_writable(o->doc)) != 0) {
             fail_line("cannot write '%s': %s", o->doc, strerror(e));
             return 1;
         }
         if (!o->no_plot) {
-            char *dir = dir_of(o->doc), *img = dir ? str_printf("%s/img", dir) : NULL;
-            e = img ? make_dirs(img) : ENOMEM;
+            char *dir = tl_tool_dir_of(o->doc), *img = dir ? tl_tool_strf("%s/img", dir) : NULL;
+            e = img ? tl_tool_make_dirs(img) : ENOMEM;
             if (e) fail_line("cannot create image directory '%s': %s", img ? img : "img", strerror(e));
             free(dir);
             free(img);
@@ -1324,26 +1044,15 @@ static int update_doc(const report *r, const options *o, const char *text)
     if (doc_split(o->doc, text, &d.keep_head, &d.tail)) return 1;
     int err = 0;
     if (!o->no_plot) {
-        char *dir = dir_of(o->doc);
-        char *src = str_printf("%s/" PLOT_NAME ".png", o->out);
-        char *dst = dir ? str_printf("%s/img/" PLOT_NAME ".png", dir) : NULL;
-        size_t size = 0;
-        char *png = src ? read_file(src, &size) : NULL;
-        if (!png) {
-            fail_line("cannot read '%s': %s", src ? src : PLOT_NAME ".png", strerror(errno));
-            err = 1;
-        } else if (dst) {
-            const char *span[2] = {png, png + size};
-            err = write_atomic(dst, write_bytes, span);
-        } else {
-            err = 1;
-        }
-        free(png);
+        char *dir = tl_tool_dir_of(o->doc);
+        char *src = tl_tool_strf("%s/" PLOT_NAME ".png", o->out);
+        char *dst = dir ? tl_tool_strf("%s/img/" PLOT_NAME ".png", dir) : NULL;
+        err = src && dst ? tl_tool_copy_file(TOOL, src, dst) : 1;
         free(dir);
         free(src);
         free(dst);
     }
-    return err || write_atomic(o->doc, write_doc, &d);
+    return err || tl_tool_write_atomic(TOOL, o->doc, write_doc, &d);
 }
 
 int main(int argc, char **argv)
@@ -1366,9 +1075,8 @@ int main(int argc, char **argv)
     r->elements = o.quick ? 200000 : 1000000;
     r->repeats = o.quick ? 3 : 7;
     r->image_size = o.quick ? 200 : 512;
-    r->total = VARIANT_COUNT;
-    r->tty = isatty(fileno(stderr));
-    describe_machine(r);
+    tl_tool_progress_begin(&r->progress, VARIANT_COUNT);
+    tl_tool_machine(r->cpu, sizeof r->cpu, &r->cores);
     r->stats = xcalloc(1, sizeof *r->stats);
     int alloc_failed = !r->stats;
     for (size_t i = 0; i < TL_TEST_IMAGE_COUNT; i++) {
@@ -1378,10 +1086,10 @@ int main(int argc, char **argv)
     if (alloc_failed) goto done;
 
     if (run_normals(r) || run_albedo(r) || run_depth(r) || run_gloss(r)) goto done;
-    progress_done(r);
+    tl_tool_progress_end(&r->progress);
 
     print_table(r);
-    if (o.json && write_atomic(o.json, write_json, r)) goto done;
+    if (o.json && tl_tool_write_atomic(TOOL, o.json, write_json, r)) goto done;
     if (!o.no_plot && make_plot(r, o.out)) goto done;
     if (o.doc && update_doc(r, &o, doc_text)) goto done;
     rc = 0;

@@ -1,0 +1,292 @@
+/* thinlight-bench: the memory and bandwidth comparison of the four render modes (DESIGN.md
+ * section 6). This file holds the command line and the order of the work; see bench.h. */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench.h"
+#include "tool_util.h"
+
+static const char usage_text[] =
+    "usage: " BENCH_TOOL " [--scene default|FILE.gltf] [--size WxH[,WxH...]] [--lights N,N,...]\n"
+    "                       [--modes MODE,...] [--frames N] [--warmup N] [--json OUT.json] [--out DIR]\n"
+    "                       [--quick] [--doc FILE.md] [--seed S] [--no-plot] [--help]\n"
+    "\n"
+    "Renders the same frames in every mode and compares what they store (bytes per pixel of the\n"
+    "targets each plan allocates), move (the renderer's bytes-moved estimate), cost (GPU time) and\n"
+    "lose (error of the final and HDR images against the fat G-buffer's, the precision reference).\n"
+    "\n"
+    "  --scene S        'default' (the built-in crypt, default) or a glTF file\n"
+    "  --size LIST      image sizes, e.g. 1280x720,1920x1080 (default 1280x720; 1..16384 per side)\n"
+    "  --lights LIST    local lights per frame, point + spot with 1 in 8 a spot light, plus the scene's\n"
+    "                   directional light (default 8,16,32,64,128,256,512,1024; 0..4096)\n"
+    "  --modes LIST     thin-lpp, thin-deferred, fat, forward (default all four); fat is rendered\n"
+    "                   as the error reference even when not listed\n"
+    "  --frames N       timed frames per measurement (default 7; medians and p90 over them)\n"
+    "  --warmup N       untimed frames before them (default 2)\n"
+    "  --json FILE      write one record per (mode, lights, size)\n"
+    "  --out DIR        write final images, heat maps of |mode - fat| (at the largest light count)\n"
+    "                   and the plots (gnuplot) into DIR\n"
+    "  --quick          a short sweep: 640x360, lights 8,64,256, 3 frames after 1 warm-up\n"
+    "                   (options given explicitly still apply)\n"
+    "  --doc FILE       replace the text between " BENCH_DOC_BEGIN " and " BENCH_DOC_END "\n"
+    "                   in FILE with the tables, and copy the plots to img/ beside it (needs --out\n"
+    "                   unless --no-plot)\n"
+    "  --seed S         seed of the light layout (default 1)\n"
+    "  --no-plot        do not run gnuplot\n"
+    "  --help           this text\n"
+    "\n"
+    "Exit status: 0 success, 1 bad input (an unreadable scene, an unwritable path), 2 bad usage.\n";
+
+static const uint32_t bench__default_lights[] = {8, 16, 32, 64, 128, 256, 512, 1024};
+static const uint32_t bench__quick_lights[] = {8, 64, 256};
+
+static int bench__usage(const char *fmt, const char *arg)
+{
+    fprintf(stderr, BENCH_TOOL ": ");
+    fprintf(stderr, fmt, arg);
+    fputs(" (see --help)\n", stderr);
+    return BENCH_EXIT_BAD_USAGE;
+}
+
+static int bench__parse_u64(const char *s, uint64_t max, uint64_t *out)
+{
+    char *end;
+    if (!s || *s < '0' || *s > '9') return 0;
+    errno = 0;
+    unsigned long long v = strtoull(s, &end, 10);
+    if (errno || *end || v > max) return 0;
+    *out = v;
+    return 1;
+}
+
+static int bench__cmp_u32(const void *a, const void *b)
+{
+    uint32_t x = *(const uint32_t *)a, y = *(const uint32_t *)b;
+    return (x > y) - (x < y);
+}
+
+/* Copies `arg` into buf and splits it at commas into items (at most max); 0 after a usage line
+ * for an empty item, too many items or too long a list. */
+static size_t bench__list(const char *option, const char *what, const char *arg, char *buf, size_t size, char **items,
+                          size_t max)
+{
+    size_t n = 0;
+    if (strlen(arg) < size) {
+        strcpy(buf, arg);
+        for (char *s = buf;; s++) {
+            char *comma = strchr(s, ',');
+            if (comma) *comma = '\0';
+            if (!*s || n == max) {
+                n = 0;
+                break;
+            }
+            items[n++] = s;
+            if (!comma) break;
+            s = comma;
+        }
+    }
+    if (!n)
+        fprintf(stderr, BENCH_TOOL ": %s wants up to %zu comma-separated %s, got '%s' (see --help)\n", option, max,
+                what, arg);
+    return n;
+}
+
+static int bench__parse_lights(const char *arg, bench_options *o)
+{
+    char buf[512], *items[BENCH_MAX_LIGHT_COUNTS];
+    size_t n = bench__list("--lights", "counts", arg, buf, sizeof buf, items, BENCH_MAX_LIGHT_COUNTS);
+    if (!n) return BENCH_EXIT_BAD_USAGE;
+    for (size_t i = 0; i < n; i++) {
+        uint64_t v;
+        if (!bench__parse_u64(items[i], UINT32_MAX, &v)) return bench__usage("--lights: '%s' is not a count", items[i]);
+        if (v > BENCH_MAX_LIGHTS) {
+            fprintf(stderr, BENCH_TOOL ": --lights: %s lights is more than a sweep may use (at most %u)\n", items[i],
+                    BENCH_MAX_LIGHTS);
+            return BENCH_EXIT_BAD_USAGE;
+        }
+        o->lights[i] = (uint32_t)v;
+    }
+    qsort(o->lights, n, sizeof o->lights[0], bench__cmp_u32);
+    o->light_count = 0;
+    for (size_t i = 0; i < n; i++)
+        if (!o->light_count || o->lights[o->light_count - 1] != o->lights[i]) o->lights[o->light_count++] = o->lights[i];
+    return 0;
+}
+
+static int bench__parse_sizes(const char *arg, bench_options *o)
+{
+    char buf[512], *items[BENCH_MAX_SIZES];
+    size_t n = bench__list("--size", "WxH", arg, buf, sizeof buf, items, BENCH_MAX_SIZES);
+    if (!n) return BENCH_EXIT_BAD_USAGE;
+    for (size_t i = 0; i < n; i++) {
+        char *x = strchr(items[i], 'x');
+        uint64_t w, h;
+        if (!x) return bench__usage("--size: '%s' is not WxH", items[i]);
+        *x = '\0';
+        int ok = bench__parse_u64(items[i], UINT32_MAX, &w) && bench__parse_u64(x + 1, UINT32_MAX, &h);
+        *x = 'x';
+        if (!ok) return bench__usage("--size: '%s' is not WxH", items[i]);
+        if (!w || !h || w > BENCH_MAX_SIDE || h > BENCH_MAX_SIDE) {
+            fprintf(stderr, BENCH_TOOL ": --size: %s is out of range (1..%u pixels per side)\n", items[i],
+                    BENCH_MAX_SIDE);
+            return BENCH_EXIT_BAD_USAGE;
+        }
+        o->sizes[i] = (bench_size){(uint32_t)w, (uint32_t)h};
+    }
+    o->size_count = n;
+    return 0;
+}
+
+static int bench__parse_modes(const char *arg, bench_options *o)
+{
+    char buf[256], *items[2 * BENCH_MODES]; /* repeats are dropped */
+    size_t n = bench__list("--modes", "modes", arg, buf, sizeof buf, items, 2 * BENCH_MODES);
+    if (!n) return BENCH_EXIT_BAD_USAGE;
+    o->mode_count = 0;
+    for (size_t i = 0; i < n; i++) {
+        tl_render_mode m;
+        if (strcmp(items[i], "default") == 0 || tl_render_mode_from_name(items[i], &m) != TL_OK)
+            return bench__usage("--modes: unknown mode '%s' (thin-lpp, thin-deferred, fat, forward)", items[i]);
+        if (!bench_mode_requested(o, m)) o->modes[o->mode_count++] = m;
+    }
+    return 0;
+}
+
+static int bench__parse_args(int argc, char **argv, bench_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->scene = "default";
+    const char *sizes = NULL, *lights = NULL, *modes = NULL, *frames = NULL, *warmup = NULL, *seed = NULL;
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        const char **value = NULL;
+        if (!strcmp(a, "--help") || !strcmp(a, "-h")) o->help = 1;
+        else if (!strcmp(a, "--quick")) o->quick = 1;
+        else if (!strcmp(a, "--no-plot")) o->no_plot = 1;
+        else if (!strcmp(a, "--scene")) value = &o->scene;
+        else if (!strcmp(a, "--size")) value = &sizes;
+        else if (!strcmp(a, "--lights")) value = &lights;
+        else if (!strcmp(a, "--modes")) value = &modes;
+        else if (!strcmp(a, "--frames")) value = &frames;
+        else if (!strcmp(a, "--warmup")) value = &warmup;
+        else if (!strcmp(a, "--seed")) value = &seed;
+        else if (!strcmp(a, "--json")) value = &o->json;
+        else if (!strcmp(a, "--out")) value = &o->out;
+        else if (!strcmp(a, "--doc")) value = &o->doc;
+        else return bench__usage(a[0] == '-' ? "unknown option '%s'" : "unexpected argument '%s'", a);
+        if (value) {
+            if (i + 1 >= argc || argv[i + 1][0] == '\0') return bench__usage("%s needs a value", a);
+            *value = argv[++i];
+        }
+    }
+    if (o->help) return 0;
+    int rc;
+    if ((rc = bench__parse_sizes(sizes ? sizes : o->quick ? "640x360" : "1280x720", o))) return rc;
+    if (lights) {
+        if ((rc = bench__parse_lights(lights, o))) return rc;
+    } else {
+        const uint32_t *l = o->quick ? bench__quick_lights : bench__default_lights;
+        o->light_count = o->quick ? 3 : 8;
+        memcpy(o->lights, l, o->light_count * sizeof *l);
+    }
+    if ((rc = bench__parse_modes(modes ? modes : "thin-lpp,thin-deferred,fat,forward", o))) return rc;
+    uint64_t v;
+    if (frames && (!bench__parse_u64(frames, BENCH_MAX_FRAMES, &v) || v == 0))
+        return bench__usage("--frames wants 1..1000, got '%s'", frames);
+    o->frames = frames ? (uint32_t)v : o->quick ? 3 : 7;
+    if (warmup && !bench__parse_u64(warmup, BENCH_MAX_FRAMES, &v))
+        return bench__usage("--warmup wants 0..1000, got '%s'", warmup);
+    o->warmup = warmup ? (uint32_t)v : o->quick ? 1 : 2;
+    if (seed && !bench__parse_u64(seed, UINT64_MAX, &o->seed)) return bench__usage("--seed wants a number, got '%s'", seed);
+    if (!seed) o->seed = 1;
+    if (o->doc && !o->out && !o->no_plot) return bench__usage("--doc %s needs --out DIR for the plots (or --no-plot)", o->doc);
+    return 0;
+}
+
+/* Everything that can fail for bad input is checked before the sweep; nothing is created unless
+ * every check passes. */
+static int bench__check_outputs(bench_options *o, char **doc_text)
+{
+    int e;
+    if (o->json && (e = tl_tool_probe_writable(o->json)) != 0) {
+        tl_tool_fail(BENCH_TOOL, "cannot write '%s': %s", o->json, strerror(e));
+        return 1;
+    }
+    if (o->doc) {
+        *doc_text = tl_tool_read_file(o->doc, NULL);
+        if (!*doc_text) {
+            tl_tool_fail(BENCH_TOOL, "cannot read '%s': %s", o->doc, strerror(errno));
+            return 1;
+        }
+        size_t head;
+        const char *tail;
+        if (tl_tool_doc_split(BENCH_TOOL, o->doc, *doc_text, BENCH_DOC_BEGIN, BENCH_DOC_END, &head, &tail)) return 1;
+        if ((e = tl_tool_probe_writable(o->doc)) != 0) {
+            tl_tool_fail(BENCH_TOOL, "cannot write '%s': %s", o->doc, strerror(e));
+            return 1;
+        }
+    }
+    if (o->out && !o->no_plot && !tl_tool_have_gnuplot()) {
+        fprintf(stderr, BENCH_TOOL ": warning: gnuplot not found on PATH, no plots (install gnuplot-nox)\n");
+        o->no_plot = 1;
+    }
+    if (o->out) {
+        if ((e = tl_tool_make_dirs(o->out)) != 0) {
+            tl_tool_fail(BENCH_TOOL, "cannot create output directory '%s': %s", o->out, strerror(e));
+            return 1;
+        }
+        char *probe = tl_tool_strf("%s/bench_probe.png", o->out);
+        e = probe ? tl_tool_probe_writable(probe) : ENOMEM;
+        free(probe);
+        if (e) {
+            tl_tool_fail(BENCH_TOOL, "cannot write into output directory '%s': %s", o->out, strerror(e));
+            return 1;
+        }
+    }
+    if (o->doc && !o->no_plot) {
+        char *dir = tl_tool_dir_of(o->doc), *img = dir ? tl_tool_strf("%s/img", dir) : NULL;
+        e = img ? tl_tool_make_dirs(img) : ENOMEM;
+        if (e) tl_tool_fail(BENCH_TOOL, "cannot create image directory '%s': %s", img ? img : "img", strerror(e));
+        free(dir);
+        free(img);
+        if (e) return 1;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    bench_run *run = calloc(1, sizeof *run);
+    if (!run) {
+        tl_tool_fail(BENCH_TOOL, "out of memory");
+        return BENCH_EXIT_BAD_INPUT;
+    }
+    int rc = bench__parse_args(argc, argv, &run->opt);
+    if (rc || run->opt.help) {
+        if (!rc) fputs(usage_text, stdout);
+        free(run);
+        return rc;
+    }
+    bench_options *opt = &run->opt;
+    char *doc_text = NULL;
+    bench_scene *scene = NULL;
+    rc = BENCH_EXIT_BAD_INPUT;
+    if (bench_scene_open(opt, &scene, run) || bench__check_outputs(opt, &doc_text)) goto done;
+    tl_tool_machine(run->cpu, sizeof run->cpu, &run->cores);
+    if (bench_sweep(run, scene) || bench_planning_compare(run, scene)) goto done;
+    int plot_failed = opt->out && !opt->no_plot && bench_plots(run);
+    bench_print_table(run);
+    if (opt->json && bench_write_json(run, opt->json)) goto done;
+    if (opt->doc && bench_update_doc(run, doc_text)) goto done;
+    rc = plot_failed ? BENCH_EXIT_BAD_INPUT : 0;
+done:
+    bench_scene_close(scene);
+    free(doc_text);
+    for (size_t i = 0; i < run->record_count; i++) free(run->records[i].frame_ms);
+    free(run->records);
+    free(run->images);
+    free(run);
+    return rc;
+}

@@ -1,0 +1,170 @@
+/* thinlight-bench: what the thin G-buffer saves in memory and bandwidth, what it costs in time and
+ * what it loses in image quality, against the fat G-buffer and forward shading (DESIGN.md
+ * section 6). Shared between bench.c (command line), bench_sweep.c (the measurements),
+ * bench_scene.c (scene and lights), bench_report.c (table, JSON, doc), bench_plot.c (gnuplot) and
+ * bench_images.c (final images and error heat maps). */
+#ifndef TL_BENCH_H
+#define TL_BENCH_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "thinlight/metrics.h"
+#include "thinlight/renderer.h"
+#include "thinlight/scene.h"
+
+#define BENCH_TOOL "thinlight-bench"
+#define BENCH_EXIT_BAD_INPUT 1
+#define BENCH_EXIT_BAD_USAGE 2
+
+#define BENCH_MAX_LIGHTS 4096u      /* local lights per frame */
+#define BENCH_MAX_SIDE 16384u       /* pixels per side */
+#define BENCH_MAX_LIGHT_COUNTS 32u
+#define BENCH_MAX_SIZES 8u
+#define BENCH_MAX_FRAMES 1000u
+#define BENCH_MODES (TL_MODE_COUNT_ - 1) /* every mode but DEFAULT */
+#define BENCH_REFERENCE TL_MODE_FAT
+#define BENCH_PNG_MAX_BYTES (300u * 1024u)
+/* Heat maps show |mode - fat| of the final image, largest RGB channel, 0..HEAT_SCALE 8-bit steps. */
+#define BENCH_HEAT_SCALE 16u
+
+#define BENCH_DOC_BEGIN "<!-- bench:begin -->"
+#define BENCH_DOC_END "<!-- bench:end -->"
+
+typedef struct bench_size {
+    uint32_t width, height;
+} bench_size;
+
+typedef struct bench_options {
+    const char *scene;        /* "default" or a glTF file */
+    bench_size sizes[BENCH_MAX_SIZES];
+    size_t size_count;
+    uint32_t lights[BENCH_MAX_LIGHT_COUNTS]; /* ascending, no repeats */
+    size_t light_count;
+    tl_render_mode modes[BENCH_MODES];       /* as asked, no repeats */
+    size_t mode_count;
+    uint32_t frames, warmup;
+    uint64_t seed;
+    const char *json, *out, *doc;
+    int quick, no_plot, help;
+} bench_options;
+
+/* One (mode, lights, size): medians over the timed frames, sizes from the plan, errors against the
+ * fat image of the same frame. */
+typedef struct bench_record {
+    tl_render_mode mode;
+    int requested;                 /* in --modes (fat may be rendered only as the reference) */
+    uint32_t lights;               /* local lights: point + spot */
+    uint32_t point_lights, spot_lights, directional_lights;
+    uint32_t width, height, frames;
+    double ms_median, ms_p90;      /* GPU time of the frame (sum of the pass timers) */
+    double *frame_ms;              /* each timed frame's, in order (frames interleaved across modes); may be NULL */
+    double wall_ms_median, wall_ms_p90;
+    uint32_t passes;               /* bits (1u << tl_pass) of the plan's passes */
+    double pass_ms[TL_PASS_COUNT]; /* median per pass */
+    double pass_bytes[TL_PASS_COUNT];
+    uint64_t pass_fragments[TL_PASS_COUNT];
+    double bytes_moved;            /* per frame, the renderer's estimate */
+    uint32_t target_bpp[TL_TARGET_COUNT]; /* bytes per pixel each allocated target takes */
+    uint32_t bytes_per_pixel;      /* sum of target_bpp */
+    uint32_t gbuffer_bytes_per_pixel; /* depth + G-buffer + light buffer */
+    uint64_t light_fragments[TL_LIGHT_TYPE_COUNT_];
+    uint64_t covered_pixels;       /* sum of light_fragments */
+    uint32_t lights_drawn[TL_LIGHT_TYPE_COUNT_];
+    uint64_t forward_light_pairs;
+    uint32_t draw_calls, objects_drawn;
+    double lighting_ms;            /* the pass that applies the lights: lights (deferred), forward */
+    tl_image_error ldr;            /* final image vs fat, RGB in 8-bit steps */
+    tl_image_error hdr;            /* HDR target vs fat, RGB, peak = fat's largest value */
+    double hdr_peak;
+    uint64_t nan_pixels;           /* pixels with a NaN or Inf channel in the HDR target */
+} bench_record;
+
+typedef enum bench_image_kind {
+    BENCH_IMAGE_FINAL,    /* a mode's final image */
+    BENCH_IMAGE_HEAT,     /* |mode - fat| */
+    BENCH_IMAGE_HEAT_DOC  /* the same, block maxima at most 640 wide, for the doc */
+} bench_image_kind;
+
+typedef struct bench_image_file {
+    char path[512];
+    bench_image_kind kind;
+    tl_render_mode mode;
+    uint32_t lights, width, height;
+} bench_image_file;
+
+/* What planning saves for one mode (the plan against tl_renderer_desc.no_planning), for the scene
+ * with the largest light count. */
+typedef struct bench_planning {
+    tl_render_mode mode;
+    uint32_t bytes_per_pixel, unplanned_bytes_per_pixel;
+    size_t programs, unplanned_programs;
+    size_t passes, unplanned_passes;
+} bench_planning;
+
+typedef struct bench_run {
+    bench_options opt;
+    bench_record *records;         /* size-major, then lights, then modes in render order */
+    size_t record_count, record_capacity;
+    char gl_renderer[128], gl_version[128];
+    char cpu[128];
+    size_t cores;
+    char scene_name[256];
+    char light_definition[256];    /* what "N lights" means for this scene */
+    size_t scene_triangles, scene_objects, scene_file_lights;
+    double seconds;                /* the whole sweep */
+    double load_start, load_end;   /* 1-minute load average before and after it (NaN: unknown) */
+    int timers_ok;                 /* GPU timer queries answered (otherwise ms = wall clock) */
+    bench_image_file *images;
+    size_t image_count, image_capacity;
+    int plots_made;
+    bench_planning planning[BENCH_MODES];
+    size_t planning_count;
+} bench_run;
+
+/* bench_scene.c: the geometry of the sweep (built-in crypt or glTF file) and its lights for N. */
+typedef struct bench_scene bench_scene;
+/* 0, or BENCH_EXIT_BAD_INPUT after one line on stderr (an unreadable or invalid scene). */
+int bench_scene_open(const bench_options *opt, bench_scene **out, bench_run *run);
+const tl_scene *bench_scene_get(const bench_scene *s);
+/* The lights of a frame with `n` local lights; the array is owned by the scene until the next call. */
+int bench_scene_lights(bench_scene *s, uint32_t n, const tl_light **lights, size_t *count);
+void bench_scene_close(bench_scene *s);
+
+/* bench_sweep.c: renders everything and fills run->records (and the images under --out). */
+int bench_sweep(bench_run *run, bench_scene *scene);
+/* The modes rendered, in order: fat first (the reference), then the requested ones. */
+size_t bench_render_modes(const bench_options *opt, tl_render_mode *modes);
+int bench_mode_requested(const bench_options *opt, tl_render_mode mode);
+/* The record of (mode, lights, size), or NULL. */
+const bench_record *bench_find(const bench_run *run, tl_render_mode mode, uint32_t lights, bench_size size);
+
+/* Derived figures shared by the table, JSON and doc. */
+/* How many times faster `a` is than `b`: the median over the timed frames of b's frame time over
+ * a's frame rendered right before or after it (robust to a machine busy with other work), or the
+ * ratio of the medians when the frame times are missing. */
+double bench_speedup(const bench_record *a, const bench_record *b);
+double bench_per_light_ms(const bench_record *r);          /* lighting_ms / lights; NaN for 0 lights */
+double bench_ms_per_mpixel_covered(const bench_record *r); /* lighting_ms / covered Mpx; NaN when none */
+double bench_mib_at(const bench_record *r, uint32_t w, uint32_t h); /* plan bytes at another size */
+uint32_t bench_light_buffer_bpp(const bench_record *r);    /* light.diffuse + light.specular */
+
+/* bench_plan.c: fills run->planning for every rendered mode (pure: no GL). */
+int bench_planning_compare(bench_run *run, bench_scene *scene);
+
+/* bench_images.c */
+int bench_images_write(bench_run *run, const bench_record *rec, const uint8_t *ldr, const uint8_t *ref_ldr,
+                       int final_image, int heat_map);
+
+/* bench_report.c */
+void bench_print_table(const bench_run *run);
+int bench_write_json(const bench_run *run, const char *path);
+/* Replaces the region between the markers in opt.doc; copies the plots into img/ beside it. */
+int bench_update_doc(const bench_run *run, const char *doc_text);
+
+/* bench_plot.c: the three plots into opt.out. */
+int bench_plots(bench_run *run);
+#define BENCH_PLOT_COUNT 3
+extern const char *const bench_plot_names[BENCH_PLOT_COUNT];
+
+#endif

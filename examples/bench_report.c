@@ -1,0 +1,585 @@
+/* What the sweep found, three ways: a one-screen table on stdout, the JSON records (DESIGN.md
+ * section 6) and the generated section of docs/bandwidth.md. The summary lines are made once and
+ * shared by the table and the doc. */
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench.h"
+#include "thinlight/version.h"
+#include "tool_util.h"
+
+#define BENCH__SUMMARY_MAX 24
+#define BENCH__LINE 512
+
+typedef struct bench__summary {
+    char lines[BENCH__SUMMARY_MAX][BENCH__LINE];
+    size_t count;
+} bench__summary;
+
+static void bench__say(bench__summary *s, const char *fmt, ...) TL_TOOL_PRINTF(2, 3);
+static void bench__say(bench__summary *s, const char *fmt, ...)
+{
+    if (s->count == BENCH__SUMMARY_MAX) return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(s->lines[s->count++], BENCH__LINE, fmt, ap);
+    va_end(ap);
+}
+
+/* Appends to a line being built. */
+static void bench__add(char *line, const char *fmt, ...) TL_TOOL_PRINTF(2, 3);
+static void bench__add(char *line, const char *fmt, ...)
+{
+    size_t n = strlen(line);
+    if (n + 1 >= BENCH__LINE) return;
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line + n, BENCH__LINE - n, fmt, ap);
+    va_end(ap);
+}
+
+/* The mode the summary speaks for: thin-lpp when measured, else the first other mode. */
+static tl_render_mode bench__subject(const bench_options *opt)
+{
+    if (bench_mode_requested(opt, TL_MODE_THIN_LPP)) return TL_MODE_THIN_LPP;
+    for (size_t i = 0; i < opt->mode_count; i++)
+        if (opt->modes[i] != BENCH_REFERENCE) return opt->modes[i];
+    return BENCH_REFERENCE;
+}
+
+static uint32_t bench__gbuffer_only_bpp(const bench_record *r)
+{
+    return r->gbuffer_bytes_per_pixel - bench_light_buffer_bpp(r);
+}
+
+static void bench__summarise(const bench_run *run, bench__summary *s)
+{
+    const bench_options *opt = &run->opt;
+    tl_render_mode subject = bench__subject(opt);
+    const char *sname = tl_render_mode_name(subject);
+    uint32_t largest = opt->lights[opt->light_count - 1];
+    tl_render_mode modes[BENCH_MODES];
+    size_t mode_count = bench_render_modes(opt, modes);
+    for (size_t si = 0; si < opt->size_count; si++) {
+        bench_size size = opt->sizes[si];
+        char at[32] = "";
+        if (opt->size_count > 1) snprintf(at, sizeof at, "%ux%u: ", size.width, size.height);
+        const bench_record *fat = bench_find(run, BENCH_REFERENCE, largest, size);
+        const bench_record *sub = bench_find(run, subject, largest, size);
+        if (!fat || !sub) continue;
+        if (subject != BENCH_REFERENCE && fat->gbuffer_bytes_per_pixel)
+            bench__say(s,
+                       "%s%s stores %u B/px in depth + G-buffer + light buffer = %.0f%% of fat's %u B/px "
+                       "(depth + G-buffer alone: %u vs %u B/px = %.0f%%); all targets %u vs %u B/px",
+                       at, sname, sub->gbuffer_bytes_per_pixel,
+                       100.0 * sub->gbuffer_bytes_per_pixel / fat->gbuffer_bytes_per_pixel,
+                       fat->gbuffer_bytes_per_pixel, bench__gbuffer_only_bpp(sub), bench__gbuffer_only_bpp(fat),
+                       bench__gbuffer_only_bpp(fat) ? 100.0 * bench__gbuffer_only_bpp(sub) / bench__gbuffer_only_bpp(fat) : 0.0,
+                       sub->bytes_per_pixel, fat->bytes_per_pixel);
+        /* speed-ups at every count >= 64 (the largest alone when there is none) */
+        for (size_t m = 0; subject != BENCH_REFERENCE && m < mode_count; m++) {
+            tl_render_mode other = modes[m];
+            if (other == subject || (other != BENCH_REFERENCE && other != TL_MODE_FORWARD)) continue;
+            char line[BENCH__LINE];
+            snprintf(line, sizeof line, "%s%s speed-up over %s (its frame time / %s's, median over frames):", at, sname,
+                     tl_render_mode_name(other), sname);
+            int any = 0;
+            for (size_t li = 0; li < opt->light_count; li++) {
+                uint32_t n = opt->lights[li];
+                if (n < 64 && n != largest) continue;
+                const bench_record *a = bench_find(run, subject, n, size), *b = bench_find(run, other, n, size);
+                if (!a || !b || !(a->ms_median > 0.0)) continue;
+                bench__add(line, "%s %.2fx at %u", any ? "," : "", bench_speedup(a, b), n);
+                any = 1;
+            }
+            if (any) bench__say(s, "%s lights", line);
+        }
+        /* the worst image quality of each mode */
+        char line[BENCH__LINE];
+        snprintf(line, sizeof line, "%slowest PSNR of the final image against fat:", at);
+        int any = 0;
+        uint64_t nans = 0;
+        for (size_t m = 0; m < mode_count; m++) {
+            const bench_record *worst = NULL;
+            for (size_t li = 0; li < opt->light_count; li++) {
+                const bench_record *r = bench_find(run, modes[m], opt->lights[li], size);
+                if (!r) continue;
+                nans += r->nan_pixels;
+                if (modes[m] != BENCH_REFERENCE && (!worst || r->ldr.psnr_db < worst->ldr.psnr_db)) worst = r;
+            }
+            if (!worst) continue;
+            bench__add(line, "%s %s %.1f dB (max error %.0f steps, at %u lights)", any ? ";" : "",
+                       tl_render_mode_name(modes[m]), worst->ldr.psnr_db, worst->ldr.max_abs, worst->lights);
+            any = 1;
+        }
+        if (any) bench__say(s, "%s", line);
+        bench__say(s, "%s%s", at, nans ? "NaN or Inf pixels in some HDR image: see the NaN column"
+                                       : "no NaN or Inf in any mode's HDR image");
+    }
+}
+
+static void bench__planning(const bench_run *run, bench__summary *s)
+{
+    char line[BENCH__LINE];
+    snprintf(line, sizeof line, "what planning saves (the plan against no_planning, %u lights):",
+             run->opt.lights[run->opt.light_count - 1]);
+    for (size_t i = 0; i < run->planning_count; i++) {
+        const bench_planning *p = &run->planning[i];
+        bench__add(line, "%s %s %u of %u B/px, %zu of %zu programs", i ? ";" : "", tl_render_mode_name(p->mode),
+                   p->bytes_per_pixel, p->unplanned_bytes_per_pixel, p->programs, p->unplanned_programs);
+    }
+    if (run->planning_count) bench__say(s, "%s", line);
+}
+
+static void bench__outputs(const bench_run *run, bench__summary *s)
+{
+    const bench_options *opt = &run->opt;
+    if (opt->json) bench__say(s, "JSON records: %s", opt->json);
+    if (opt->out) {
+        size_t count[3] = {0, 0, 0};
+        for (size_t i = 0; i < run->image_count; i++) count[run->images[i].kind]++;
+        bench__say(s,
+                   "images in %s: %zu final images and %zu heat maps of |mode - fat| at %u lights "
+                   "(bench_heat_*: largest RGB difference, 0 to %u 8-bit steps on a square-root ramp)",
+                   opt->out, count[BENCH_IMAGE_FINAL], count[BENCH_IMAGE_HEAT], opt->lights[opt->light_count - 1],
+                   BENCH_HEAT_SCALE);
+        if (run->plots_made)
+            bench__say(s, "plots: %s/{%s,%s,%s}.png", opt->out, bench_plot_names[0], bench_plot_names[1],
+                       bench_plot_names[2]);
+    }
+}
+
+/* ---- stdout --------------------------------------------------------------------------------- */
+
+static void bench__fmt(char *buf, size_t size, const char *fmt, double v)
+{
+    if (isfinite(v)) snprintf(buf, size, fmt, v);
+    else snprintf(buf, size, "-");
+}
+
+void bench_print_table(const bench_run *run)
+{
+    const bench_options *opt = &run->opt;
+    tl_render_mode modes[BENCH_MODES];
+    size_t mode_count = bench_render_modes(opt, modes);
+    char sizes[160] = "";
+    for (size_t si = 0; si < opt->size_count; si++)
+        snprintf(sizes + strlen(sizes), sizeof sizes - strlen(sizes), "%s%ux%u", si ? ", " : "", opt->sizes[si].width,
+                 opt->sizes[si].height);
+    printf("thinlight-bench %s: %s (%zu triangles, %zu objects) at %s, %u timed frames after %u warm-up, seed %llu\n",
+           tl_version_string(), run->scene_name, run->scene_triangles, run->scene_objects, sizes, opt->frames,
+           opt->warmup, (unsigned long long)opt->seed);
+    printf("GL: %s, %s; CPU: %s, %zu cores, load average %.1f before, %.1f after; sweep took %.0f s\n",
+           run->gl_renderer, run->gl_version, run->cpu, run->cores, run->load_start, run->load_end, run->seconds);
+    printf("%s\n", run->light_definition);
+    printf("ms = %s per frame (median, p90); ms/light = lighting pass / lights; cov Mpx = pixels inside light volumes;\n"
+           "B/px = all targets the plan allocates; MiB moved = the renderer's bytes-moved estimate per frame;\n"
+           "PSNR and max err (8-bit steps) of the final image against fat of the same frame; NaN = HDR pixels\n",
+           run->timers_ok ? "GPU time (timer queries)" : "wall clock (no GPU timers)");
+    for (size_t si = 0; si < opt->size_count; si++) {
+        bench_size size = opt->sizes[si];
+        printf("\n%ux%u\n%-14s %6s %8s %8s %9s %7s %5s %9s %9s %7s %7s %4s\n", size.width, size.height, "mode",
+               "lights", "ms med", "ms p90", "ms/light", "cov Mpx", "B/px", "MiB@1080p", "MiB moved", "PSNR dB",
+               "max err", "NaN");
+        for (size_t m = 0; m < mode_count; m++) {
+            if (m) putchar('\n');
+            for (size_t li = 0; li < opt->light_count; li++) {
+                const bench_record *r = bench_find(run, modes[m], opt->lights[li], size);
+                if (!r) continue;
+                char label[32], pl[16], cov[16], psnr[16], maxe[16];
+                snprintf(label, sizeof label, "%s%s", tl_render_mode_name(r->mode),
+                         r->mode == BENCH_REFERENCE ? " (ref)" : "");
+                bench__fmt(pl, sizeof pl, "%.4f", bench_per_light_ms(r));
+                bench__fmt(cov, sizeof cov, "%.2f", r->covered_pixels ? (double)r->covered_pixels * 1e-6 : NAN);
+                bench__fmt(psnr, sizeof psnr, "%.1f", r->mode == BENCH_REFERENCE ? NAN : r->ldr.psnr_db);
+                bench__fmt(maxe, sizeof maxe, "%.0f", r->mode == BENCH_REFERENCE ? NAN : r->ldr.max_abs);
+                printf("%-14s %6u %8.2f %8.2f %9s %7s %5u %9.1f %9.1f %7s %7s %4llu\n", label, r->lights, r->ms_median,
+                       r->ms_p90, pl, cov, r->bytes_per_pixel, bench_mib_at(r, 1920, 1080), r->bytes_moved / 1048576.0,
+                       psnr, maxe, (unsigned long long)r->nan_pixels);
+            }
+        }
+    }
+    bench__summary s = {0};
+    bench__summarise(run, &s);
+    bench__planning(run, &s);
+    bench__outputs(run, &s);
+    putchar('\n');
+    for (size_t i = 0; i < s.count; i++) printf("%s\n", s.lines[i]);
+    fflush(stdout);
+}
+
+/* ---- JSON ----------------------------------------------------------------------------------- */
+
+static const char *bench__light_type_name(int t)
+{
+    return t == TL_LIGHT_POINT ? "point" : t == TL_LIGHT_SPOT ? "spot" : "directional";
+}
+
+static void bench__json_record(tl_tool_json *j, const bench_record *r)
+{
+    tl_tool_json_object(j, NULL, 0);
+    tl_tool_json_str(j, "mode", tl_render_mode_name(r->mode));
+    tl_tool_json_bool(j, "reference", r->mode == BENCH_REFERENCE);
+    tl_tool_json_uint(j, "lights", r->lights);
+    tl_tool_json_uint(j, "point_lights", r->point_lights);
+    tl_tool_json_uint(j, "spot_lights", r->spot_lights);
+    tl_tool_json_uint(j, "directional_lights", r->directional_lights);
+    tl_tool_json_uint(j, "width", r->width);
+    tl_tool_json_uint(j, "height", r->height);
+    tl_tool_json_uint(j, "frames", r->frames);
+    tl_tool_json_num(j, "ms_median", r->ms_median);
+    tl_tool_json_num(j, "ms_p90", r->ms_p90);
+    tl_tool_json_array(j, "frame_ms", 1);
+    for (uint32_t f = 0; r->frame_ms && f < r->frames; f++) tl_tool_json_num(j, NULL, r->frame_ms[f]);
+    tl_tool_json_close(j, ']');
+    tl_tool_json_num(j, "wall_ms_median", r->wall_ms_median);
+    tl_tool_json_num(j, "wall_ms_p90", r->wall_ms_p90);
+    tl_tool_json_object(j, "pass_ms", 1);
+    for (int p = 0; p < TL_PASS_COUNT; p++)
+        if (r->passes & (1u << p)) tl_tool_json_num(j, tl_pass_name((tl_pass)p), r->pass_ms[p]);
+    tl_tool_json_close(j, '}');
+    tl_tool_json_object(j, "pass_bytes", 1);
+    for (int p = 0; p < TL_PASS_COUNT; p++)
+        if (r->passes & (1u << p)) tl_tool_json_num(j, tl_pass_name((tl_pass)p), r->pass_bytes[p]);
+    tl_tool_json_close(j, '}');
+    tl_tool_json_object(j, "pass_fragments", 1);
+    for (int p = 0; p < TL_PASS_COUNT; p++)
+        if (r->passes & (1u << p)) tl_tool_json_uint(j, tl_pass_name((tl_pass)p), r->pass_fragments[p]);
+    tl_tool_json_close(j, '}');
+    tl_tool_json_uint(j, "bytes_per_pixel", r->bytes_per_pixel);
+    tl_tool_json_object(j, "targets", 1);
+    for (int t = 0; t < TL_TARGET_COUNT; t++)
+        if (r->target_bpp[t]) tl_tool_json_uint(j, tl_target_name((tl_target_id)t), r->target_bpp[t]);
+    tl_tool_json_close(j, '}');
+    tl_tool_json_uint(j, "gbuffer_bytes_per_pixel", r->gbuffer_bytes_per_pixel);
+    tl_tool_json_uint(j, "light_buffer_bytes_per_pixel", bench_light_buffer_bpp(r));
+    tl_tool_json_object(j, "mib_at", 1);
+    static const uint32_t at[3][2] = {{1280, 720}, {1920, 1080}, {3840, 2160}};
+    for (int i = 0; i < 3; i++) {
+        char key[24];
+        snprintf(key, sizeof key, "%ux%u", at[i][0], at[i][1]);
+        tl_tool_json_num(j, key, bench_mib_at(r, at[i][0], at[i][1]));
+    }
+    tl_tool_json_close(j, '}');
+    tl_tool_json_num(j, "bytes_per_frame_estimate", r->bytes_moved);
+    tl_tool_json_uint(j, "covered_pixels", r->covered_pixels);
+    tl_tool_json_object(j, "light_fragments", 1);
+    for (int t = TL_LIGHT_POINT; t < TL_LIGHT_TYPE_COUNT_; t++)
+        tl_tool_json_uint(j, bench__light_type_name(t), r->light_fragments[t]);
+    tl_tool_json_close(j, '}');
+    tl_tool_json_object(j, "lights_drawn", 1);
+    for (int t = TL_LIGHT_POINT; t < TL_LIGHT_TYPE_COUNT_; t++)
+        tl_tool_json_uint(j, bench__light_type_name(t), r->lights_drawn[t]);
+    tl_tool_json_close(j, '}');
+    tl_tool_json_num(j, "lighting_ms", r->lighting_ms);
+    tl_tool_json_num(j, "per_light_ms", bench_per_light_ms(r));
+    tl_tool_json_num(j, "ms_per_mpixel_covered", bench_ms_per_mpixel_covered(r));
+    tl_tool_json_uint(j, "forward_light_pairs", r->forward_light_pairs);
+    tl_tool_json_uint(j, "draw_calls", r->draw_calls);
+    tl_tool_json_uint(j, "objects_drawn", r->objects_drawn);
+    tl_tool_json_num(j, "psnr_db", r->ldr.psnr_db);
+    tl_tool_json_num(j, "max_abs_error", r->ldr.max_abs);
+    tl_tool_json_num(j, "mean_abs_error", r->ldr.mean_abs);
+    tl_tool_json_num(j, "hdr_psnr_db", r->hdr.psnr_db);
+    tl_tool_json_num(j, "hdr_max_abs_error", r->hdr.max_abs);
+    tl_tool_json_num(j, "hdr_mean_abs_error", r->hdr.mean_abs);
+    tl_tool_json_num(j, "hdr_peak", r->hdr_peak);
+    tl_tool_json_uint(j, "nan_pixels", r->nan_pixels);
+    tl_tool_json_close(j, '}');
+}
+
+static int bench__write_json(FILE *f, const void *ctx)
+{
+    const bench_run *run = ctx;
+    const bench_options *opt = &run->opt;
+    tl_tool_json j;
+    tl_tool_json_begin(&j, f);
+    tl_tool_json_object(&j, NULL, 0);
+    tl_tool_json_str(&j, "tool", BENCH_TOOL);
+    tl_tool_json_str(&j, "version", tl_version_string());
+    tl_tool_json_str(&j, "scene", opt->scene);
+    tl_tool_json_str(&j, "scene_name", run->scene_name);
+    tl_tool_json_uint(&j, "scene_triangles", run->scene_triangles);
+    tl_tool_json_uint(&j, "scene_objects", run->scene_objects);
+    tl_tool_json_str(&j, "lights_definition", run->light_definition);
+    tl_tool_json_str(&j, "gl_renderer", run->gl_renderer);
+    tl_tool_json_str(&j, "gl_version", run->gl_version);
+    char machine[192];
+    snprintf(machine, sizeof machine, "%s, %zu cores", run->cpu, run->cores);
+    tl_tool_json_str(&j, "machine", machine);
+    tl_tool_json_uint(&j, "cores", run->cores);
+    tl_tool_json_uint(&j, "frames", opt->frames);
+    tl_tool_json_uint(&j, "warmup", opt->warmup);
+    tl_tool_json_uint(&j, "seed", opt->seed);
+    tl_tool_json_bool(&j, "quick", opt->quick);
+    tl_tool_json_str(&j, "timing", run->timers_ok ? "gpu timer queries" : "wall clock");
+    tl_tool_json_str(&j, "error_reference", tl_render_mode_name(BENCH_REFERENCE));
+    tl_tool_json_str(&j, "error_units",
+                     "psnr_db, max_abs_error, mean_abs_error: final image, RGB, 8-bit steps (peak 255); hdr_*: HDR "
+                     "target, RGB, linear radiance, PSNR relative to hdr_peak (the reference's largest value); "
+                     "999 dB = identical");
+    tl_tool_json_num(&j, "seconds", run->seconds);
+    tl_tool_json_array(&j, "load_average", 1);
+    tl_tool_json_num(&j, NULL, run->load_start);
+    tl_tool_json_num(&j, NULL, run->load_end);
+    tl_tool_json_close(&j, ']');
+    tl_tool_json_array(&j, "sizes", 1);
+    for (size_t i = 0; i < opt->size_count; i++) {
+        tl_tool_json_array(&j, NULL, 1);
+        tl_tool_json_uint(&j, NULL, opt->sizes[i].width);
+        tl_tool_json_uint(&j, NULL, opt->sizes[i].height);
+        tl_tool_json_close(&j, ']');
+    }
+    tl_tool_json_close(&j, ']');
+    tl_tool_json_array(&j, "light_counts", 1);
+    for (size_t i = 0; i < opt->light_count; i++) tl_tool_json_uint(&j, NULL, opt->lights[i]);
+    tl_tool_json_close(&j, ']');
+    tl_tool_json_array(&j, "modes", 1);
+    for (size_t i = 0; i < opt->mode_count; i++) tl_tool_json_str(&j, NULL, tl_render_mode_name(opt->modes[i]));
+    tl_tool_json_close(&j, ']');
+    for (int requested = 1; requested >= 0; requested--) {
+        tl_tool_json_array(&j, requested ? "records" : "reference_records", 0);
+        for (size_t i = 0; i < run->record_count; i++)
+            if (run->records[i].requested == requested) bench__json_record(&j, &run->records[i]);
+        tl_tool_json_close(&j, ']');
+    }
+    tl_tool_json_array(&j, "planning", 0);
+    for (size_t i = 0; i < run->planning_count; i++) {
+        const bench_planning *p = &run->planning[i];
+        tl_tool_json_object(&j, NULL, 1);
+        tl_tool_json_str(&j, "mode", tl_render_mode_name(p->mode));
+        tl_tool_json_uint(&j, "bytes_per_pixel", p->bytes_per_pixel);
+        tl_tool_json_uint(&j, "unplanned_bytes_per_pixel", p->unplanned_bytes_per_pixel);
+        tl_tool_json_uint(&j, "programs", p->programs);
+        tl_tool_json_uint(&j, "unplanned_programs", p->unplanned_programs);
+        tl_tool_json_uint(&j, "passes", p->passes);
+        tl_tool_json_uint(&j, "unplanned_passes", p->unplanned_passes);
+        tl_tool_json_close(&j, '}');
+    }
+    tl_tool_json_close(&j, ']');
+    tl_tool_json_array(&j, "images", 0);
+    for (size_t i = 0; i < run->image_count; i++) {
+        const bench_image_file *im = &run->images[i];
+        tl_tool_json_object(&j, NULL, 1);
+        tl_tool_json_str(&j, "path", im->path);
+        static const char *const kinds[3] = {"final", "heat", "heat-doc"};
+        tl_tool_json_str(&j, "kind", kinds[im->kind]);
+        tl_tool_json_str(&j, "mode", tl_render_mode_name(im->mode));
+        tl_tool_json_uint(&j, "lights", im->lights);
+        tl_tool_json_close(&j, '}');
+    }
+    tl_tool_json_close(&j, ']');
+    tl_tool_json_close(&j, '}');
+    tl_tool_json_end(&j);
+    return 0;
+}
+
+int bench_write_json(const bench_run *run, const char *path)
+{
+    return tl_tool_write_atomic(BENCH_TOOL, path, bench__write_json, run);
+}
+
+/* ---- docs/bandwidth.md ---------------------------------------------------------------------- */
+
+typedef struct bench__doc {
+    const bench_run *run;
+    const char *text;
+    size_t head;
+    const char *tail;
+    tl_render_mode heat[BENCH_MODES]; /* heat maps copied to img/bench_heat_<mode>.png */
+    size_t heat_count;
+} bench__doc;
+
+static void bench__md_number(FILE *f, const char *fmt, double v)
+{
+    fputs(" | ", f);
+    if (isfinite(v)) fprintf(f, fmt, v);
+    else fputs("–", f);
+}
+
+static void bench__md_table(FILE *f, const bench_run *run, bench_size size)
+{
+    const bench_options *opt = &run->opt;
+    tl_render_mode modes[BENCH_MODES];
+    size_t mode_count = bench_render_modes(opt, modes);
+    fprintf(f, "\n#### %ux%u\n\n", size.width, size.height);
+    fputs("| mode | lights | ms median | ms p90 | ms / light | covered Mpx | B/px | MiB @1080p | MiB moved / frame | "
+          "PSNR dB | max err | NaN |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+          f);
+    for (size_t m = 0; m < mode_count; m++)
+        for (size_t li = 0; li < opt->light_count; li++) {
+            const bench_record *r = bench_find(run, modes[m], opt->lights[li], size);
+            if (!r) continue;
+            int ref = r->mode == BENCH_REFERENCE;
+            fprintf(f, "| `%s`%s | %u", tl_render_mode_name(r->mode), ref ? " (reference)" : "", r->lights);
+            bench__md_number(f, "%.2f", r->ms_median);
+            bench__md_number(f, "%.2f", r->ms_p90);
+            bench__md_number(f, "%.4f", bench_per_light_ms(r));
+            bench__md_number(f, "%.2f", r->covered_pixels ? (double)r->covered_pixels * 1e-6 : NAN);
+            fprintf(f, " | %u", r->bytes_per_pixel);
+            bench__md_number(f, "%.1f", bench_mib_at(r, 1920, 1080));
+            bench__md_number(f, "%.1f", r->bytes_moved / 1048576.0);
+            bench__md_number(f, "%.1f", ref ? NAN : r->ldr.psnr_db);
+            bench__md_number(f, "%.0f", ref ? NAN : r->ldr.max_abs);
+            fprintf(f, " | %llu |\n", (unsigned long long)r->nan_pixels);
+        }
+}
+
+/* Targets per mode (largest light count, first size): what the bytes per pixel are made of. */
+static void bench__md_targets(FILE *f, const bench_run *run)
+{
+    const bench_options *opt = &run->opt;
+    tl_render_mode modes[BENCH_MODES];
+    size_t mode_count = bench_render_modes(opt, modes);
+    fputs("\nTargets each mode's plan allocates, bytes per pixel:\n\n| mode |", f);
+    uint32_t used = 0;
+    for (size_t m = 0; m < mode_count; m++) {
+        const bench_record *r = bench_find(run, modes[m], opt->lights[opt->light_count - 1], opt->sizes[0]);
+        for (int t = 0; r && t < TL_TARGET_COUNT; t++)
+            if (r->target_bpp[t]) used |= 1u << t;
+    }
+    for (int t = 0; t < TL_TARGET_COUNT; t++)
+        if (used & (1u << t)) fprintf(f, " %s |", tl_target_name((tl_target_id)t));
+    fputs(" total | depth + G-buffer + light buffer |\n|---|", f);
+    for (int t = 0; t < TL_TARGET_COUNT; t++)
+        if (used & (1u << t)) fputs("---:|", f);
+    fputs("---:|---:|\n", f);
+    for (size_t m = 0; m < mode_count; m++) {
+        const bench_record *r = bench_find(run, modes[m], opt->lights[opt->light_count - 1], opt->sizes[0]);
+        if (!r) continue;
+        fprintf(f, "| `%s` |", tl_render_mode_name(r->mode));
+        for (int t = 0; t < TL_TARGET_COUNT; t++)
+            if (used & (1u << t)) r->target_bpp[t] ? fprintf(f, " %u |", r->target_bpp[t]) : fputs(" |", f);
+        fprintf(f, " %u | %u |\n", r->bytes_per_pixel, r->gbuffer_bytes_per_pixel);
+    }
+}
+
+/* Where each mode's time goes at the largest light count (first size). */
+static void bench__md_passes(FILE *f, const bench_run *run)
+{
+    const bench_options *opt = &run->opt;
+    tl_render_mode modes[BENCH_MODES];
+    size_t mode_count = bench_render_modes(opt, modes);
+    uint32_t n = opt->lights[opt->light_count - 1], used = 0;
+    for (size_t m = 0; m < mode_count; m++) {
+        const bench_record *r = bench_find(run, modes[m], n, opt->sizes[0]);
+        if (r) used |= r->passes;
+    }
+    fprintf(f, "\nGPU time per pass at %u lights, ms (median; MiB moved by the estimate in brackets):\n\n| mode |", n);
+    for (int p = 0; p < TL_PASS_COUNT; p++)
+        if (used & (1u << p)) fprintf(f, " %s |", tl_pass_name((tl_pass)p));
+    fputs(" frame |\n|---|", f);
+    for (int p = 0; p < TL_PASS_COUNT; p++)
+        if (used & (1u << p)) fputs("---:|", f);
+    fputs("---:|\n", f);
+    for (size_t m = 0; m < mode_count; m++) {
+        const bench_record *r = bench_find(run, modes[m], n, opt->sizes[0]);
+        if (!r) continue;
+        fprintf(f, "| `%s` |", tl_render_mode_name(r->mode));
+        for (int p = 0; p < TL_PASS_COUNT; p++) {
+            if (!(used & (1u << p))) continue;
+            if (r->passes & (1u << p)) fprintf(f, " %.1f (%.0f) |", r->pass_ms[p], r->pass_bytes[p] / 1048576.0);
+            else fputs(" |", f);
+        }
+        fprintf(f, " %.1f (%.0f) |\n", r->ms_median, r->bytes_moved / 1048576.0);
+    }
+}
+
+static int bench__write_doc(FILE *f, const void *ctx)
+{
+    const bench__doc *d = ctx;
+    const bench_run *run = d->run;
+    const bench_options *opt = &run->opt;
+    fwrite(d->text, 1, d->head, f);
+    fprintf(f, "\n<!-- Generated by %s; edit the tool, not this section. -->\n\n", BENCH_TOOL);
+    fprintf(f, "Scene: %s (%zu triangles, %zu objects); %u timed frames after %u warm-up, seed %llu%s. ",
+            run->scene_name, run->scene_triangles, run->scene_objects, opt->frames, opt->warmup,
+            (unsigned long long)opt->seed, opt->quick ? " (--quick)" : "");
+    fprintf(f, "GL: %s, %s, on %s (%zu cores; 1-minute load average %.1f before the sweep, %.1f after); the sweep "
+               "took %.0f s. ",
+            run->gl_renderer, run->gl_version, run->cpu, run->cores, run->load_start, run->load_end, run->seconds);
+    fprintf(f, "Times are %s. %s. PSNR and max err (8-bit steps) compare the final image with fat's.\n",
+            run->timers_ok ? "GPU timer queries summed over the passes" : "wall clock (GPU timers unavailable)",
+            run->light_definition);
+    for (size_t si = 0; si < opt->size_count; si++) bench__md_table(f, run, opt->sizes[si]);
+    bench__md_passes(f, run);
+    bench__md_targets(f, run);
+    bench__summary s = {0};
+    bench__summarise(run, &s);
+    bench__planning(run, &s);
+    fputs("\n", f);
+    for (size_t i = 0; i < s.count; i++) fprintf(f, "- %s\n", s.lines[i]);
+    if (d->heat_count) {
+        fprintf(f, "\nHeat maps of |mode - fat| at %ux%u with %u lights: the largest RGB difference in 8-bit steps "
+                   "(black: none; the legend strip runs from 0 to %u steps, ticks every step), the largest of each "
+                   "%ux%u block%s.\n\n",
+                opt->sizes[0].width, opt->sizes[0].height, opt->lights[opt->light_count - 1], BENCH_HEAT_SCALE,
+                (opt->sizes[0].width + 639) / 640, (opt->sizes[0].width + 639) / 640,
+                opt->sizes[0].width > 640 ? " of pixels" : " (full size)");
+        for (size_t i = 0; i < d->heat_count; i++)
+            fprintf(f, "![%s against fat](img/bench_heat_%s.png)\n", tl_render_mode_name(d->heat[i]),
+                    tl_render_mode_name(d->heat[i]));
+    }
+    if (run->plots_made) {
+        fputs("\n", f);
+        for (int i = 0; i < BENCH_PLOT_COUNT; i++) fprintf(f, "![%s](img/%s.png)\n", bench_plot_names[i], bench_plot_names[i]);
+    } else {
+        fputs("\n(The plots were not regenerated: the run had --no-plot or no gnuplot.)\n", f);
+    }
+    fputc('\n', f);
+    fputs(d->tail, f);
+    return 0;
+}
+
+/* Copies the doc-sized heat maps of the first size into img/ (those within the size limit). */
+static int bench__doc_heat_maps(const bench_run *run, const char *dir, bench__doc *d)
+{
+    for (size_t i = 0; i < run->image_count; i++) {
+        const bench_image_file *im = &run->images[i];
+        if (im->kind != BENCH_IMAGE_HEAT_DOC || im->width != run->opt.sizes[0].width ||
+            im->height != run->opt.sizes[0].height || d->heat_count == BENCH_MODES)
+            continue;
+        size_t size = 0;
+        char *data = tl_tool_read_file(im->path, &size);
+        free(data);
+        if (size > BENCH_PNG_MAX_BYTES) {
+            fprintf(stderr, BENCH_TOOL ": warning: %s is %zu KiB, over %u KiB: left out of the doc\n", im->path,
+                    size / 1024, BENCH_PNG_MAX_BYTES / 1024);
+            continue;
+        }
+        char *dst = tl_tool_strf("%s/img/bench_heat_%s.png", dir, tl_render_mode_name(im->mode));
+        int err = !dst || tl_tool_copy_file(BENCH_TOOL, im->path, dst);
+        free(dst);
+        if (err) return 1;
+        d->heat[d->heat_count++] = im->mode;
+    }
+    return 0;
+}
+
+int bench_update_doc(const bench_run *run, const char *doc_text)
+{
+    const char *path = run->opt.doc;
+    bench__doc d = {run, doc_text, 0, NULL, {0}, 0};
+    if (tl_tool_doc_split(BENCH_TOOL, path, doc_text, BENCH_DOC_BEGIN, BENCH_DOC_END, &d.head, &d.tail)) return 1;
+    char *dir = tl_tool_dir_of(path);
+    int err = !dir;
+    for (int i = 0; !err && run->plots_made && i < BENCH_PLOT_COUNT; i++) {
+        char *src = tl_tool_strf("%s/%s.png", run->opt.out, bench_plot_names[i]);
+        char *dst = tl_tool_strf("%s/img/%s.png", dir, bench_plot_names[i]);
+        err = src && dst ? tl_tool_copy_file(BENCH_TOOL, src, dst) : 1;
+        free(src);
+        free(dst);
+    }
+    if (!err && run->image_count) {
+        char *img = tl_tool_strf("%s/img", dir);
+        int e = img ? tl_tool_make_dirs(img) : 1;
+        if (e) tl_tool_fail(BENCH_TOOL, "cannot create '%s'", img ? img : "img");
+        free(img);
+        err = e || bench__doc_heat_maps(run, dir, &d);
+    }
+    free(dir);
+    return err || tl_tool_write_atomic(BENCH_TOOL, path, bench__write_doc, &d);
+}

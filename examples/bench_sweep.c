@@ -1,0 +1,431 @@
+/* The measurements: for every size and every light count, warm-up frames, then timed frames of
+ * every mode in turn (fat, the reference, first): interleaving the modes frame by frame makes
+ * every mode see the same share of whatever else the machine is doing. Then medians of the GPU
+ * timers and the wall clock, the plan's targets, the renderer's fragment and byte counts, and the
+ * error of the final and HDR images against fat's images of the same frame. */
+#define _DEFAULT_SOURCE /* sysconf(_SC_PHYS_PAGES) */
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "bench.h"
+#include "thinlight/context.h"
+#include "tool_util.h"
+
+static void bench__median_p90(double *v, size_t n, double *median, double *p90);
+
+size_t bench_render_modes(const bench_options *opt, tl_render_mode *modes)
+{
+    size_t n = 0;
+    modes[n++] = BENCH_REFERENCE;
+    for (size_t i = 0; i < opt->mode_count; i++)
+        if (opt->modes[i] != BENCH_REFERENCE) modes[n++] = opt->modes[i];
+    return n;
+}
+
+int bench_mode_requested(const bench_options *opt, tl_render_mode mode)
+{
+    for (size_t i = 0; i < opt->mode_count; i++)
+        if (opt->modes[i] == mode) return 1;
+    return 0;
+}
+
+const bench_record *bench_find(const bench_run *run, tl_render_mode mode, uint32_t lights, bench_size size)
+{
+    for (size_t i = 0; i < run->record_count; i++) {
+        const bench_record *r = &run->records[i];
+        if (r->mode == mode && r->lights == lights && r->width == size.width && r->height == size.height) return r;
+    }
+    return NULL;
+}
+
+double bench_speedup(const bench_record *a, const bench_record *b)
+{
+    double ratios[BENCH_MAX_FRAMES], unused, median;
+    if (!a->frame_ms || !b->frame_ms || a->frames != b->frames || !a->frames) return b->ms_median / a->ms_median;
+    for (uint32_t f = 0; f < a->frames; f++) ratios[f] = b->frame_ms[f] / a->frame_ms[f];
+    bench__median_p90(ratios, a->frames, &median, &unused);
+    return median;
+}
+
+double bench_per_light_ms(const bench_record *r) { return r->lights ? r->lighting_ms / r->lights : NAN; }
+
+double bench_ms_per_mpixel_covered(const bench_record *r)
+{
+    return r->covered_pixels ? r->lighting_ms / ((double)r->covered_pixels * 1e-6) : NAN;
+}
+
+double bench_mib_at(const bench_record *r, uint32_t w, uint32_t h)
+{
+    return (double)r->bytes_per_pixel * (double)w * (double)h / 1048576.0;
+}
+
+uint32_t bench_light_buffer_bpp(const bench_record *r)
+{
+    return r->target_bpp[TL_TARGET_LIGHT_DIFFUSE] + r->target_bpp[TL_TARGET_LIGHT_SPECULAR];
+}
+
+/* ---- statistics over the timed frames ------------------------------------------------------- */
+
+static int bench__cmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Median and 90th percentile (nearest rank) of v[0..n); sorts v. */
+static void bench__median_p90(double *v, size_t n, double *median, double *p90)
+{
+    qsort(v, n, sizeof *v, bench__cmp);
+    *median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+    size_t rank = (size_t)ceil(0.9 * (double)n);
+    *p90 = v[rank ? rank - 1 : 0];
+}
+
+/* ---- one (mode, lights, size) ---------------------------------------------------------------- */
+
+typedef struct bench__frame_buffers {
+    size_t pixels;
+    uint8_t *ldr, *ref_ldr;      /* RGB after compaction */
+    float *hdr, *ref_hdr;        /* RGB after compaction */
+} bench__frame_buffers;
+
+/* One mode's timed frames: gpu[f], wall[f], pass[p * frames + f], and the last frame's stats. */
+typedef struct bench__samples {
+    double *gpu, *wall, *pass;
+    tl_frame_stats last;
+} bench__samples;
+
+/* RGBA to RGB in place. */
+static void bench__rgb_u8(uint8_t *p, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++) p[3 * i + c] = p[4 * i + c];
+}
+
+static uint64_t bench__rgb_f32(float *p, size_t n)
+{
+    uint64_t bad = 0;
+    for (size_t i = 0; i < n; i++) {
+        bad += !(isfinite(p[4 * i]) && isfinite(p[4 * i + 1]) && isfinite(p[4 * i + 2]) && isfinite(p[4 * i + 3]));
+        for (int c = 0; c < 3; c++) p[3 * i + c] = p[4 * i + c];
+    }
+    return bad;
+}
+
+static double bench__peak(const float *rgb, size_t count)
+{
+    double peak = 0.0;
+    for (size_t i = 0; i < count; i++)
+        if (isfinite(rgb[i]) && rgb[i] > peak) peak = rgb[i];
+    return peak > 0.0 ? peak : 1.0;
+}
+
+/* Plan figures: targets from what the renderer allocated, passes and the technique's bytes from
+ * the plan (when the renderer can give it). */
+static void bench__plan_figures(tl_renderer *r, const tl_frame_stats *st, size_t pixels, bench_record *rec)
+{
+    for (int t = 0; t < TL_TARGET_COUNT; t++) {
+        rec->target_bpp[t] = (uint32_t)((st->target_bytes[t] + pixels / 2) / pixels);
+        rec->bytes_per_pixel += rec->target_bpp[t];
+    }
+    tl_frame_plan plan;
+    if (tl_renderer_get_plan(r, &plan) == TL_OK) {
+        for (size_t i = 0; i < plan.pass_count && i < TL_PASS_COUNT; i++) rec->passes |= 1u << plan.passes[i].pass;
+        rec->gbuffer_bytes_per_pixel = plan.gbuffer_bytes_per_pixel;
+        for (int t = 0; t < TL_TARGET_COUNT; t++)
+            if (plan.target_bytes_per_pixel[t] != rec->target_bpp[t])
+                fprintf(stderr, BENCH_TOOL ": warning: %s %s: the plan says %u B/px, the renderer allocated %u B/px\n",
+                        tl_render_mode_name(rec->mode), tl_target_name((tl_target_id)t), plan.target_bytes_per_pixel[t],
+                        rec->target_bpp[t]);
+    } else {
+        for (int p = 0; p < TL_PASS_COUNT; p++)
+            if (st->pass_ms[p] > 0.0) rec->passes |= 1u << p;
+        rec->gbuffer_bytes_per_pixel = (uint32_t)((st->gbuffer_bytes + st->light_buffer_bytes + pixels / 2) / pixels);
+    }
+}
+
+/* Frame f of a mode (f < warmup: not timed). */
+static int bench__frame(bench_run *run, tl_renderer *r, const bench_record *rec, bench__samples *smp, uint32_t f)
+{
+    const bench_options *opt = &run->opt;
+    tl_frame_stats *st = &smp->last;
+    if (tl_renderer_render(r, NULL, st) != TL_OK) {
+        tl_tool_fail(BENCH_TOOL, "%s at %ux%u with %u lights: %s", tl_render_mode_name(rec->mode), rec->width,
+                     rec->height, rec->lights, tl_renderer_last_error(r));
+        return 1;
+    }
+    if (f < opt->warmup) return 0;
+    uint32_t k = f - opt->warmup, frames = opt->frames;
+    int timed = st->gpu_ms > 0.0;
+    if (!timed) run->timers_ok = 0;
+    smp->gpu[k] = timed ? st->gpu_ms : st->cpu_ms;
+    smp->wall[k] = st->cpu_ms;
+    for (int p = 0; p < TL_PASS_COUNT; p++) smp->pass[p * frames + k] = st->pass_ms[p] > 0.0 ? st->pass_ms[p] : 0.0;
+    return 0;
+}
+
+/* Medians over the timed frames; counts, byte estimates and sizes from the last frame (they do not
+ * change from frame to frame). */
+static void bench__summarise_frames(const bench_options *opt, tl_renderer *r, bench__samples *smp, size_t pixels,
+                                    bench_record *rec)
+{
+    uint32_t frames = opt->frames;
+    const tl_frame_stats *st = &smp->last;
+    rec->frame_ms = malloc(frames * sizeof *rec->frame_ms);
+    if (rec->frame_ms) memcpy(rec->frame_ms, smp->gpu, frames * sizeof *rec->frame_ms);
+    bench__median_p90(smp->gpu, frames, &rec->ms_median, &rec->ms_p90);
+    bench__median_p90(smp->wall, frames, &rec->wall_ms_median, &rec->wall_ms_p90);
+    double unused;
+    for (int p = 0; p < TL_PASS_COUNT; p++) bench__median_p90(smp->pass + p * frames, frames, &rec->pass_ms[p], &unused);
+    for (int p = 0; p < TL_PASS_COUNT; p++) {
+        rec->pass_bytes[p] = st->pass_bytes[p];
+        rec->pass_fragments[p] = st->pass_fragments[p];
+    }
+    rec->bytes_moved = st->bytes_moved;
+    for (int t = 0; t < TL_LIGHT_TYPE_COUNT_; t++) {
+        rec->light_fragments[t] = st->light_fragments[t];
+        rec->covered_pixels += st->light_fragments[t];
+        rec->lights_drawn[t] = st->lights_drawn[t];
+    }
+    rec->forward_light_pairs = st->forward_light_pairs;
+    rec->draw_calls = st->draw_calls;
+    rec->objects_drawn = st->objects_drawn;
+    bench__plan_figures(r, st, pixels, rec);
+    rec->lighting_ms = rec->pass_ms[rec->mode == TL_MODE_FORWARD ? TL_PASS_FORWARD : TL_PASS_LIGHTS];
+}
+
+/* Reads the frame's images (into the reference buffers for fat) and measures the error. */
+static int bench__images(tl_renderer *r, bench_record *rec, bench__frame_buffers *fb)
+{
+    int ref = rec->mode == BENCH_REFERENCE;
+    uint8_t *ldr = ref ? fb->ref_ldr : fb->ldr;
+    float *hdr = ref ? fb->ref_hdr : fb->hdr;
+    size_t n = fb->pixels;
+    if (tl_renderer_read_output(r, ldr, n * 4) != TL_OK ||
+        tl_renderer_read_target(r, TL_TARGET_HDR, hdr, n * 4) != TL_OK) {
+        tl_tool_fail(BENCH_TOOL, "%s: reading the images: %s", tl_render_mode_name(rec->mode),
+                     tl_renderer_last_error(r));
+        return 1;
+    }
+    bench__rgb_u8(ldr, n);
+    rec->nan_pixels = bench__rgb_f32(hdr, n);
+    rec->hdr_peak = bench__peak(fb->ref_hdr, n * 3);
+    tl_image_compare_u8(ldr, fb->ref_ldr, n * 3, &rec->ldr);
+    tl_image_compare(hdr, fb->ref_hdr, n * 3, rec->hdr_peak, &rec->hdr);
+    return 0;
+}
+
+static bench_record *bench__append(bench_run *run)
+{
+    if (run->record_count == run->record_capacity) {
+        size_t cap = run->record_capacity ? 2 * run->record_capacity : 64;
+        bench_record *grown = realloc(run->records, cap * sizeof *grown);
+        if (!grown) return NULL;
+        run->records = grown;
+        run->record_capacity = cap;
+    }
+    bench_record *rec = &run->records[run->record_count++];
+    memset(rec, 0, sizeof *rec);
+    return rec;
+}
+
+static tl_gl_function bench__get_proc(void *user, const char *name)
+{
+    return (tl_gl_function)tl_context_get_proc_address((tl_context *)user, name);
+}
+
+/* ---- the sweep ------------------------------------------------------------------------------ */
+
+typedef struct bench__size_state {
+    tl_renderer *renderers[BENCH_MODES];
+    bench__samples samples[BENCH_MODES];
+    double *sample_memory;
+    bench__frame_buffers fb;
+} bench__size_state;
+
+static void bench__size_release(bench__size_state *s, size_t modes)
+{
+    for (size_t m = 0; m < modes; m++) tl_renderer_destroy(s->renderers[m]);
+    free(s->fb.ldr);
+    free(s->fb.ref_ldr);
+    free(s->fb.hdr);
+    free(s->fb.ref_hdr);
+    free(s->sample_memory);
+    memset(s, 0, sizeof *s);
+}
+
+static int bench__size_setup(bench_run *run, tl_context *ctx, const tl_scene *scene, bench_size size,
+                             const tl_render_mode *modes, size_t mode_count, bench__size_state *s)
+{
+    memset(s, 0, sizeof *s);
+    size_t n = (size_t)size.width * size.height;
+    s->fb.pixels = n;
+    s->fb.ldr = malloc(n * 4);
+    s->fb.ref_ldr = malloc(n * 4);
+    s->fb.hdr = malloc(n * 4 * sizeof(float));
+    s->fb.ref_hdr = malloc(n * 4 * sizeof(float));
+    size_t per_mode = (2 + TL_PASS_COUNT) * (size_t)run->opt.frames;
+    s->sample_memory = malloc(mode_count * per_mode * sizeof(double));
+    for (size_t m = 0; s->sample_memory && m < mode_count; m++) {
+        bench__samples *smp = &s->samples[m];
+        smp->gpu = s->sample_memory + m * per_mode;
+        smp->wall = smp->gpu + run->opt.frames;
+        smp->pass = smp->wall + run->opt.frames;
+    }
+    if (!s->fb.ldr || !s->fb.ref_ldr || !s->fb.hdr || !s->fb.ref_hdr || !s->sample_memory) {
+        tl_tool_fail(BENCH_TOOL, "out of memory for %ux%u images", size.width, size.height);
+        return 1;
+    }
+    for (size_t m = 0; m < mode_count; m++) {
+        tl_renderer_desc desc = {.mode = modes[m], .width = size.width, .height = size.height,
+                                 .get_proc_address = bench__get_proc, .get_proc_address_user = ctx};
+        char err[512];
+        if (tl_renderer_create(&desc, &s->renderers[m], err, sizeof err) != TL_OK) {
+            tl_tool_fail(BENCH_TOOL, "%s at %ux%u: %s", tl_render_mode_name(modes[m]), size.width, size.height, err);
+            return 1;
+        }
+        if (tl_renderer_set_scene(s->renderers[m], scene) != TL_OK) {
+            tl_tool_fail(BENCH_TOOL, "%s: %s", tl_render_mode_name(modes[m]), tl_renderer_last_error(s->renderers[m]));
+            return 1;
+        }
+    }
+    return 0;
+}
+
+static void bench__count_types(const tl_light *lights, size_t count, bench_record *rec)
+{
+    for (size_t i = 0; i < count; i++) {
+        tl_light_type t = lights[i].type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : lights[i].type;
+        rec->point_lights += t == TL_LIGHT_POINT;
+        rec->spot_lights += t == TL_LIGHT_SPOT;
+        rec->directional_lights += t == TL_LIGHT_DIRECTIONAL;
+    }
+}
+
+/* One light count at one size: every mode's frames interleaved, then each mode's record. */
+static int bench__sweep_lights(bench_run *run, bench__size_state *s, const tl_render_mode *modes, size_t mode_count,
+                               bench_size size, uint32_t n, bench_scene *scene, tl_tool_progress *progress,
+                               uint64_t *done)
+{
+    const bench_options *opt = &run->opt;
+    const tl_light *lights;
+    size_t count;
+    if (bench_scene_lights(scene, n, &lights, &count)) return 1;
+    for (size_t m = 0; m < mode_count; m++)
+        if (!bench__append(run)) {
+            tl_tool_fail(BENCH_TOOL, "out of memory");
+            return 1;
+        }
+    bench_record *recs = &run->records[run->record_count - mode_count]; /* in the modes' order */
+    for (size_t m = 0; m < mode_count; m++) {
+        bench_record *rec = &recs[m];
+        rec->mode = modes[m];
+        rec->requested = bench_mode_requested(opt, modes[m]);
+        rec->lights = n;
+        rec->width = size.width;
+        rec->height = size.height;
+        rec->frames = opt->frames;
+        bench__count_types(lights, count, rec);
+        if (tl_renderer_set_lights(s->renderers[m], lights, count) != TL_OK) {
+            tl_tool_fail(BENCH_TOOL, "%s: %s", tl_render_mode_name(modes[m]), tl_renderer_last_error(s->renderers[m]));
+            return 1;
+        }
+    }
+    uint32_t total = opt->warmup + opt->frames;
+    char label[96];
+    for (uint32_t f = 0; f < total; f++) {
+        snprintf(label, sizeof label, "%ux%u, %u lights, frame %u/%u of %zu modes", size.width, size.height, n, f + 1,
+                 total, mode_count);
+        tl_tool_progress_update(progress, *done, label, f == 0);
+        for (size_t m = 0; m < mode_count; m++, ++*done)
+            if (bench__frame(run, s->renderers[m], &recs[m], &s->samples[m], f)) return 1;
+    }
+    for (size_t m = 0; m < mode_count; m++) {
+        bench_record *rec = &recs[m];
+        bench__summarise_frames(opt, s->renderers[m], &s->samples[m], s->fb.pixels, rec);
+        if (bench__images(s->renderers[m], rec, &s->fb)) return 1;
+        if (opt->out && n == opt->lights[opt->light_count - 1] &&
+            bench_images_write(run, rec, rec->mode == BENCH_REFERENCE ? s->fb.ref_ldr : s->fb.ldr, s->fb.ref_ldr, 1,
+                               rec->mode != BENCH_REFERENCE))
+            return 1;
+    }
+    return 0;
+}
+
+static int bench__sweep_size(bench_run *run, tl_context *ctx, bench_scene *scene, bench_size size,
+                             tl_tool_progress *progress, uint64_t *done)
+{
+    const bench_options *opt = &run->opt;
+    tl_render_mode modes[BENCH_MODES];
+    size_t mode_count = bench_render_modes(opt, modes);
+    bench__size_state s;
+    int err = bench__size_setup(run, ctx, bench_scene_get(scene), size, modes, mode_count, &s);
+    for (size_t li = 0; !err && li < opt->light_count; li++)
+        err = bench__sweep_lights(run, &s, modes, mode_count, size, opt->lights[li], scene, progress, done);
+    bench__size_release(&s, mode_count);
+    return err;
+}
+
+/* Refuses sizes whose renderers and images would not fit in memory (rather than being killed
+ * halfway): every mode's plan for the scene plus the bench's own four images (40 B/px). */
+static int bench__check_memory(const bench_options *opt, const tl_scene *scene)
+{
+    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || page <= 0) return 0;
+    double available = (double)pages * (double)page * 0.75;
+    tl_scene_feature_set features;
+    tl_scene_features(scene, &features);
+    tl_render_mode modes[BENCH_MODES];
+    size_t mode_count = bench_render_modes(opt, modes);
+    for (size_t si = 0; si < opt->size_count; si++) {
+        bench_size size = opt->sizes[si];
+        double bpp = 40.0;
+        for (size_t m = 0; m < mode_count; m++) {
+            tl_frame_plan plan;
+            tl_renderer_desc desc = {.mode = modes[m], .width = size.width, .height = size.height};
+            if (tl_frame_plan_build(&desc, &features, &plan) == TL_OK) bpp += plan.bytes_per_pixel;
+        }
+        double need = bpp * size.width * size.height;
+        if (need > available) {
+            tl_tool_fail(BENCH_TOOL, "%ux%u needs about %.1f GiB for %zu renderers and the images, more than 3/4 of "
+                                     "this machine's %.1f GiB",
+                         size.width, size.height, need / 1073741824.0, mode_count, available / 0.75 / 1073741824.0);
+            return 1;
+        }
+    }
+    return 0;
+}
+
+int bench_sweep(bench_run *run, bench_scene *scene)
+{
+    const bench_options *opt = &run->opt;
+    if (bench__check_memory(opt, bench_scene_get(scene))) return 1;
+    tl_context *ctx = NULL;
+    if (tl_context_create(&(tl_context_desc){.width = 64, .height = 64}, &ctx) != TL_OK) {
+        tl_tool_fail(BENCH_TOOL, "no GL context: %s", tl_context_last_error(NULL));
+        return 1;
+    }
+    snprintf(run->gl_renderer, sizeof run->gl_renderer, "%s", tl_context_renderer_string(ctx));
+    snprintf(run->gl_version, sizeof run->gl_version, "%s", tl_context_version_string(ctx));
+    tl_render_mode modes[BENCH_MODES];
+    uint64_t total = (uint64_t)opt->size_count * opt->light_count * bench_render_modes(opt, modes) *
+                     (opt->warmup + opt->frames);
+    tl_tool_progress progress;
+    tl_tool_progress_begin(&progress, total);
+    run->timers_ok = 1;
+    uint64_t done = 0;
+    int err = 0;
+    double t0 = tl_tool_now_ms();
+    run->load_start = tl_tool_load_average();
+    for (size_t si = 0; !err && si < opt->size_count; si++)
+        err = bench__sweep_size(run, ctx, scene, opt->sizes[si], &progress, &done);
+    run->seconds = (tl_tool_now_ms() - t0) * 1e-3;
+    run->load_end = tl_tool_load_average();
+    tl_tool_progress_end(&progress);
+    tl_context_destroy(ctx);
+    return err;
+}
