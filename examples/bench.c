@@ -210,6 +210,15 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
 static int bench__check_outputs(bench_options *o, char **doc_text)
 {
     int e;
+    if (o->json) { /* like --out, the JSON's directory is created when missing */
+        char *dir = tl_tool_dir_of(o->json);
+        e = dir ? tl_tool_make_dirs(dir) : ENOMEM;
+        free(dir);
+        if (e) {
+            tl_tool_fail(BENCH_TOOL, "cannot write '%s': %s", o->json, strerror(e));
+            return 1;
+        }
+    }
     if (o->json && (e = tl_tool_probe_writable(o->json)) != 0) {
         tl_tool_fail(BENCH_TOOL, "cannot write '%s': %s", o->json, strerror(e));
         return 1;

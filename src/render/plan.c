@@ -119,7 +119,15 @@ tl_result tl_frame_plan_build(const tl_renderer_desc *desc, const tl_scene_featu
     tl_renderer_desc d;
     tl_result res = tl__renderer_desc_resolve(desc, &d);
     if (res != TL_OK) return res;
-    const tl_scene_feature_set *f = features;
+    tl_scene_feature_set all = *features;
+    if (d.no_planning) { /* plan for every feature, as a renderer without a planner would */
+        all.point_lights += !all.point_lights;
+        all.spot_lights += !all.spot_lights;
+        all.directional_lights += !all.directional_lights;
+        all.has_specular = all.has_textures = all.has_normal_maps = all.has_emissive = all.has_alpha_mask = 1;
+        all.has_metallic_roughness = all.has_occlusion = all.has_emissive_texture = 1;
+    }
+    const tl_scene_feature_set *f = &all;
     memset(plan, 0, sizeof *plan);
     plan->mode = d.mode;
     plan->width = d.width;

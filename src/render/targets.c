@@ -55,15 +55,7 @@ tl_result tl__plan_targets(tl_renderer *r)
 tl_result tl__replan(tl_renderer *r)
 {
     tl_frame_plan plan;
-    tl_scene_feature_set f = r->features;
-    if (r->desc.no_planning) {
-        f.point_lights += !f.point_lights;
-        f.spot_lights += !f.spot_lights;
-        f.directional_lights += !f.directional_lights;
-        f.has_specular = f.has_textures = f.has_normal_maps = f.has_emissive = f.has_alpha_mask = 1;
-        f.has_metallic_roughness = f.has_occlusion = f.has_emissive_texture = 1;
-    }
-    tl_result res = tl_frame_plan_build(&r->desc, &f, &plan);
+    tl_result res = tl_frame_plan_build(&r->desc, &r->features, &plan);
     if (res != TL_OK) return tl__fail(r, res, "renderer: planning the frame failed");
     int same_targets = r->plan.pass_count && plan.targets == r->plan.targets && plan.pass_count == r->plan.pass_count &&
                        memcmp(plan.passes, r->plan.passes, sizeof plan.passes) == 0;
