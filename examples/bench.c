@@ -284,7 +284,8 @@ int main(int argc, char **argv)
     rc = BENCH_EXIT_BAD_INPUT;
     if (bench_scene_open(opt, &scene, run) || bench__check_outputs(opt, &doc_text)) goto done;
     tl_tool_machine(run->cpu, sizeof run->cpu, &run->cores);
-    if (bench_sweep(run, scene) || bench_planning_compare(run, scene)) goto done;
+    /* the plans first: the sweep times each planned mode against its no_planning renderer */
+    if (bench_planning_compare(run, scene) || bench_sweep(run, scene)) goto done;
     int plot_failed = opt->out && !opt->no_plot && bench_plots(run);
     bench_print_table(run);
     if (opt->json && bench_write_json(run, opt->json)) goto done;

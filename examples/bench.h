@@ -100,6 +100,9 @@ typedef struct bench_planning {
     uint32_t bytes_per_pixel, unplanned_bytes_per_pixel;
     size_t programs, unplanned_programs;
     size_t passes, unplanned_passes;
+    /* Median frame time (GPU timers, else wall clock) at the first size of a planned renderer and of
+     * one with no_planning, their frames interleaved; NaN until bench_sweep measures them. */
+    double planned_ms, unplanned_ms;
 } bench_planning;
 
 typedef struct bench_run {
@@ -131,7 +134,8 @@ const tl_scene *bench_scene_get(const bench_scene *s);
 int bench_scene_lights(bench_scene *s, uint32_t n, const tl_light **lights, size_t *count);
 void bench_scene_close(bench_scene *s);
 
-/* bench_sweep.c: renders everything and fills run->records (and the images under --out). */
+/* bench_sweep.c: renders everything and fills run->records (and the images under --out), then
+ * times run->planning's modes planned and unplanned (so bench_planning_compare comes first). */
 int bench_sweep(bench_run *run, bench_scene *scene);
 /* The modes rendered, in order: fat first (the reference), then the requested ones. */
 size_t bench_render_modes(const bench_options *opt, tl_render_mode *modes);
@@ -149,7 +153,7 @@ double bench_ms_per_mpixel_covered(const bench_record *r); /* lighting_ms / cove
 double bench_mib_at(const bench_record *r, uint32_t w, uint32_t h); /* plan bytes at another size */
 uint32_t bench_light_buffer_bpp(const bench_record *r);    /* light.diffuse + light.specular */
 
-/* bench_plan.c: fills run->planning for every rendered mode (pure: no GL). */
+/* bench_plan.c: fills run->planning for every rendered mode (pure: no GL; the times stay NaN). */
 int bench_planning_compare(bench_run *run, bench_scene *scene);
 
 /* bench_images.c */

@@ -1,6 +1,7 @@
 /* What the frame planner saves (DESIGN.md section 4): each mode's plan for the scene against the
  * plan the renderer makes with tl_renderer_desc.no_planning (every feature planned for, whatever
- * the scene uses). Pure: tl_frame_plan_build needs no GL. */
+ * the scene uses). Pure: tl_frame_plan_build needs no GL; bench_sweep adds the frame times. */
+#include <math.h>
 #include <string.h>
 
 #include "bench.h"
@@ -39,6 +40,8 @@ int bench_planning_compare(bench_run *run, bench_scene *scene)
             .unplanned_programs = full.program_count,
             .passes = plan.pass_count,
             .unplanned_passes = full.pass_count,
+            .planned_ms = NAN,
+            .unplanned_ms = NAN,
         };
     }
     return 0;

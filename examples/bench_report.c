@@ -124,12 +124,15 @@ static void bench__summarise(const bench_run *run, bench__summary *s)
 static void bench__planning(const bench_run *run, bench__summary *s)
 {
     char line[BENCH__LINE];
-    snprintf(line, sizeof line, "what planning saves (the plan against no_planning, %u lights):",
-             run->opt.lights[run->opt.light_count - 1]);
+    snprintf(line, sizeof line,
+             "what planning saves (the plan against no_planning, %u lights; ms: median frame at %ux%u):",
+             run->opt.lights[run->opt.light_count - 1], run->opt.sizes[0].width, run->opt.sizes[0].height);
     for (size_t i = 0; i < run->planning_count; i++) {
         const bench_planning *p = &run->planning[i];
         bench__add(line, "%s %s %u of %u B/px, %zu of %zu programs", i ? ";" : "", tl_render_mode_name(p->mode),
                    p->bytes_per_pixel, p->unplanned_bytes_per_pixel, p->programs, p->unplanned_programs);
+        if (isfinite(p->planned_ms) && isfinite(p->unplanned_ms))
+            bench__add(line, ", %.1f of %.1f ms", p->planned_ms, p->unplanned_ms);
     }
     if (run->planning_count) bench__say(s, "%s", line);
 }
@@ -357,6 +360,8 @@ static int bench__write_json(FILE *f, const void *ctx)
         tl_tool_json_uint(&j, "unplanned_programs", p->unplanned_programs);
         tl_tool_json_uint(&j, "passes", p->passes);
         tl_tool_json_uint(&j, "unplanned_passes", p->unplanned_passes);
+        tl_tool_json_num(&j, "planned_ms", p->planned_ms);
+        tl_tool_json_num(&j, "unplanned_ms", p->unplanned_ms);
         tl_tool_json_close(&j, '}');
     }
     tl_tool_json_close(&j, ']');

@@ -2,7 +2,8 @@
  * every mode in turn (fat, the reference, first): interleaving the modes frame by frame makes
  * every mode see the same share of whatever else the machine is doing. Then medians of the GPU
  * timers and the wall clock, the plan's targets, the renderer's fragment and byte counts, and the
- * error of the final and HDR images against fat's images of the same frame. */
+ * error of the final and HDR images against fat's images of the same frame. Last, what planning
+ * saves in time: each mode planned against tl_renderer_desc.no_planning, on the same context. */
 #define _DEFAULT_SOURCE /* sysconf(_SC_PHYS_PAGES) */
 
 #include <math.h>
@@ -400,6 +401,73 @@ static int bench__check_memory(const bench_options *opt, const tl_scene *scene)
     return 0;
 }
 
+/* What planning saves in time: each mode of run->planning rendered at the first size with the
+ * largest light count by a planned renderer and by one with tl_renderer_desc.no_planning, the two
+ * taking turns frame by frame (which one goes first alternates), after the same warm-up; medians
+ * of the frame time (GPU timers, else the wall clock). */
+static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *scene, tl_tool_progress *progress,
+                                 uint64_t *done)
+{
+    const bench_options *opt = &run->opt;
+    bench_size size = opt->sizes[0];
+    uint32_t n = opt->lights[opt->light_count - 1], total = opt->warmup + opt->frames;
+    const tl_light *lights;
+    size_t count;
+    if (!run->planning_count) return 0;
+    if (bench_scene_lights(scene, n, &lights, &count)) return 1;
+    double *ms = malloc(2 * (size_t)opt->frames * sizeof *ms); /* planned, then unplanned */
+    if (!ms) {
+        tl_tool_fail(BENCH_TOOL, "out of memory");
+        return 1;
+    }
+    int err = 0;
+    for (size_t i = 0; !err && i < run->planning_count; i++) {
+        bench_planning *p = &run->planning[i];
+        const char *name = tl_render_mode_name(p->mode);
+        tl_renderer *r[2] = {NULL, NULL};
+        for (int k = 0; !err && k < 2; k++) {
+            tl_renderer_desc desc = {.mode = p->mode, .width = size.width, .height = size.height, .no_planning = k,
+                                     .get_proc_address = bench__get_proc, .get_proc_address_user = ctx};
+            char msg[512];
+            if (tl_renderer_create(&desc, &r[k], msg, sizeof msg) != TL_OK) {
+                tl_tool_fail(BENCH_TOOL, "%s%s at %ux%u: %s", name, k ? " (no_planning)" : "", size.width, size.height,
+                             msg);
+                err = 1;
+            } else if (tl_renderer_set_scene(r[k], bench_scene_get(scene)) != TL_OK ||
+                       tl_renderer_set_lights(r[k], lights, count) != TL_OK) {
+                tl_tool_fail(BENCH_TOOL, "%s%s: %s", name, k ? " (no_planning)" : "", tl_renderer_last_error(r[k]));
+                err = 1;
+            }
+        }
+        char label[96];
+        for (uint32_t f = 0; !err && f < total; f++) {
+            snprintf(label, sizeof label, "planning: %s, %u lights, frame %u/%u", name, n, f + 1, total);
+            tl_tool_progress_update(progress, *done, label, f == 0);
+            for (int j = 0; !err && j < 2; j++, ++*done) {
+                int k = (int)((f + (uint32_t)j) % 2);
+                tl_frame_stats st;
+                if (tl_renderer_render(r[k], NULL, &st) != TL_OK) {
+                    tl_tool_fail(BENCH_TOOL, "%s%s at %ux%u with %u lights: %s", name, k ? " (no_planning)" : "",
+                                 size.width, size.height, n, tl_renderer_last_error(r[k]));
+                    err = 1;
+                } else if (f >= opt->warmup) {
+                    if (!(st.gpu_ms > 0.0)) run->timers_ok = 0;
+                    ms[(size_t)k * opt->frames + (f - opt->warmup)] = st.gpu_ms > 0.0 ? st.gpu_ms : st.cpu_ms;
+                }
+            }
+        }
+        if (!err) {
+            double unused;
+            bench__median_p90(ms, opt->frames, &p->planned_ms, &unused);
+            bench__median_p90(ms + opt->frames, opt->frames, &p->unplanned_ms, &unused);
+        }
+        tl_renderer_destroy(r[0]);
+        tl_renderer_destroy(r[1]);
+    }
+    free(ms);
+    return err;
+}
+
 int bench_sweep(bench_run *run, bench_scene *scene)
 {
     const bench_options *opt = &run->opt;
@@ -413,7 +481,8 @@ int bench_sweep(bench_run *run, bench_scene *scene)
     snprintf(run->gl_version, sizeof run->gl_version, "%s", tl_context_version_string(ctx));
     tl_render_mode modes[BENCH_MODES];
     uint64_t total = (uint64_t)opt->size_count * opt->light_count * bench_render_modes(opt, modes) *
-                     (opt->warmup + opt->frames);
+                     (opt->warmup + opt->frames) +
+                     (uint64_t)run->planning_count * 2 * (opt->warmup + opt->frames);
     tl_tool_progress progress;
     tl_tool_progress_begin(&progress, total);
     run->timers_ok = 1;
@@ -423,6 +492,7 @@ int bench_sweep(bench_run *run, bench_scene *scene)
     run->load_start = tl_tool_load_average();
     for (size_t si = 0; !err && si < opt->size_count; si++)
         err = bench__sweep_size(run, ctx, scene, opt->sizes[si], &progress, &done);
+    if (!err) err = bench__planning_times(run, ctx, scene, &progress, &done);
     run->seconds = (tl_tool_now_ms() - t0) * 1e-3;
     run->load_end = tl_tool_load_average();
     tl_tool_progress_end(&progress);

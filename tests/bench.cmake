@@ -106,6 +106,21 @@ if(CMAKE_SCRIPT_MODE_FILE)
       message(FATAL_ERROR "${nref} reference records, expected ${nl} (fat at each light count)")
     endif()
 
+    # what planning saves: bytes, programs and the frame time planned and unplanned, per mode
+    string(JSON nplan LENGTH "${json}" planning)
+    if(nplan LESS nm)
+      message(FATAL_ERROR "${nplan} planning entries, expected at least ${nm}")
+    endif()
+    math(EXPR last_plan "${nplan} - 1")
+    foreach(i RANGE ${last_plan})
+      foreach(key planned_ms unplanned_ms)
+        json_get(NUMBER "planning ${i}" planning ${i} ${key})
+        if(NOT value GREATER 0)
+          message(FATAL_ERROR "planning ${i}: ${key} = ${value}, expected a time > 0")
+        endif()
+      endforeach()
+    endforeach()
+
     set(numbers lights width height frames ms_median ms_p90 wall_ms_median wall_ms_p90 bytes_per_pixel
         gbuffer_bytes_per_pixel bytes_per_frame_estimate psnr_db max_abs_error mean_abs_error hdr_psnr_db
         hdr_max_abs_error hdr_mean_abs_error nan_pixels covered_pixels forward_light_pairs)
