@@ -234,11 +234,6 @@ static bench_record *bench__append(bench_run *run)
     return rec;
 }
 
-static tl_gl_function bench__get_proc(void *user, const char *name)
-{
-    return (tl_gl_function)tl_context_get_proc_address((tl_context *)user, name);
-}
-
 /* ---- the sweep ------------------------------------------------------------------------------ */
 
 typedef struct bench__size_state {
@@ -283,7 +278,7 @@ static int bench__size_setup(bench_run *run, tl_context *ctx, const tl_scene *sc
     }
     for (size_t m = 0; m < mode_count; m++) {
         tl_renderer_desc desc = {.mode = modes[m], .width = size.width, .height = size.height,
-                                 .get_proc_address = bench__get_proc, .get_proc_address_user = ctx};
+                                 .get_proc_address = tl_context_proc_loader, .get_proc_address_user = ctx};
         char err[512];
         if (tl_renderer_create(&desc, &s->renderers[m], err, sizeof err) != TL_OK) {
             tl_tool_fail(BENCH_TOOL, "%s at %ux%u: %s", tl_render_mode_name(modes[m]), size.width, size.height, err);
@@ -427,7 +422,7 @@ static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *s
         tl_renderer *r[2] = {NULL, NULL};
         for (int k = 0; !err && k < 2; k++) {
             tl_renderer_desc desc = {.mode = p->mode, .width = size.width, .height = size.height, .no_planning = k,
-                                     .get_proc_address = bench__get_proc, .get_proc_address_user = ctx};
+                                     .get_proc_address = tl_context_proc_loader, .get_proc_address_user = ctx};
             char msg[512];
             if (tl_renderer_create(&desc, &r[k], msg, sizeof msg) != TL_OK) {
                 tl_tool_fail(BENCH_TOOL, "%s%s at %ux%u: %s", name, k ? " (no_planning)" : "", size.width, size.height,

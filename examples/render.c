@@ -49,11 +49,6 @@ static int parse_u32(const char *s, uint32_t *out)
     return 1;
 }
 
-static tl_gl_function get_proc(void *user, const char *name)
-{
-    return (tl_gl_function)tl_context_get_proc_address((tl_context *)user, name);
-}
-
 static const char *ends_with(const char *s, const char *suffix)
 {
     size_t n = strlen(s), m = strlen(suffix);
@@ -242,7 +237,7 @@ int main(int argc, char **argv)
         tl_scene_destroy(scene);
         return 1;
     }
-    rd.get_proc_address = get_proc;
+    rd.get_proc_address = tl_context_proc_loader;
     rd.get_proc_address_user = ctx;
     tl_renderer *r = NULL;
     char err[4096];

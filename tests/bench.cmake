@@ -9,25 +9,7 @@
 if(CMAKE_SCRIPT_MODE_FILE)
   cmake_minimum_required(VERSION 3.25)
 
-  function(run_tool)
-    execute_process(COMMAND ${TOOL} ${ARGN} RESULT_VARIABLE r OUTPUT_VARIABLE o ERROR_VARIABLE e)
-    set(rc "${r}" PARENT_SCOPE)
-    set(out "${o}" PARENT_SCOPE)
-    set(err "${e}" PARENT_SCOPE)
-  endfunction()
-
-  # Fails unless the run exited with `expected`; failures (1 and 2) must say why in one line.
-  function(expect_exit expected what)
-    if(NOT rc STREQUAL "${expected}")
-      message(FATAL_ERROR "${what}: exit status '${rc}', expected ${expected}\nstdout:\n${out}\nstderr:\n${err}")
-    endif()
-    if(expected GREATER 0)
-      string(STRIP "${err}" e)
-      if(e STREQUAL "" OR e MATCHES "\n")
-        message(FATAL_ERROR "${what}: expected one line on stderr, got:\n${err}")
-      endif()
-    endif()
-  endfunction()
+  include(${CMAKE_CURRENT_LIST_DIR}/cli_checks.cmake)
 
   # Fails when WORK holds anything but the names in ARGN.
   function(expect_only what)

@@ -7,24 +7,7 @@
 if(CMAKE_SCRIPT_MODE_FILE)
   cmake_minimum_required(VERSION 3.25)
 
-  # Runs the tool with ARGN; sets rc, out and err in the caller.
-  function(run_tool)
-    execute_process(COMMAND ${TOOL} ${ARGN} RESULT_VARIABLE r OUTPUT_VARIABLE o ERROR_VARIABLE e)
-    set(rc "${r}" PARENT_SCOPE)
-    set(out "${o}" PARENT_SCOPE)
-    set(err "${e}" PARENT_SCOPE)
-  endfunction()
-
-  # Fails unless the run exited with `expected` and said so in one line naming the problem.
-  function(expect_exit expected what)
-    if(NOT rc STREQUAL "${expected}")
-      message(FATAL_ERROR "${what}: exit status '${rc}', expected ${expected}\nstderr:\n${err}")
-    endif()
-    string(STRIP "${err}" e)
-    if(e STREQUAL "" OR e MATCHES "\n")
-      message(FATAL_ERROR "${what}: expected one line on stderr, got:\n${err}")
-    endif()
-  endfunction()
+  include(${CMAKE_CURRENT_LIST_DIR}/cli_checks.cmake)
 
   file(REMOVE_RECURSE "${WORK}")
   file(MAKE_DIRECTORY "${WORK}")

@@ -11,22 +11,7 @@
 
 #define BIT(t) (1u << (t))
 
-static tl_context *g_ctx;
-
-static tl_gl_function get_proc(void *user, const char *name)
-{
-    return (tl_gl_function)tl_context_get_proc_address((tl_context *)user, name);
-}
-
-static int ensure_context(void)
-{
-    if (g_ctx) return 1;
-    if (tl_context_create(&(tl_context_desc){.width = 64, .height = 64}, &g_ctx) != TL_OK) {
-        fprintf(stderr, "no GL context: %s\n", tl_context_last_error(NULL));
-        return 0;
-    }
-    return 1;
-}
+#include "render_fixture.h"
 
 static int has_pass(const tl_frame_plan *p, tl_pass pass)
 {
@@ -168,7 +153,7 @@ static tl_renderer *make_renderer(tl_render_mode mode, uint32_t w, uint32_t h)
 {
     tl_renderer *r = NULL;
     char err[1024];
-    tl_renderer_desc d = {.mode = mode, .width = w, .height = h, .get_proc_address = get_proc,
+    tl_renderer_desc d = {.mode = mode, .width = w, .height = h, .get_proc_address = tl_context_proc_loader,
                           .get_proc_address_user = g_ctx};
     if (tl_renderer_create(&d, &r, err, sizeof err) != TL_OK) fprintf(stderr, "renderer: %s\n", err);
     return r;
@@ -426,7 +411,8 @@ static void plan_saving_same_image(void)
     tl_frame_stats st[2];
     for (int unplanned = 0; unplanned < 2; unplanned++) {
         tl_renderer *r = NULL;
-        tl_renderer_desc d = {.width = w, .height = h, .get_proc_address = get_proc, .get_proc_address_user = g_ctx,
+        tl_renderer_desc d = {.width = w, .height = h, .get_proc_address = tl_context_proc_loader,
+                              .get_proc_address_user = g_ctx,
                               .no_planning = unplanned};
         TL_CHECK(tl_renderer_create(&d, &r, NULL, 0) == TL_OK);
         if (!r) continue;

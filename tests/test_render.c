@@ -6,22 +6,7 @@
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
 
-static tl_context *g_ctx;
-
-static tl_gl_function get_proc(void *user, const char *name)
-{
-    return (tl_gl_function)tl_context_get_proc_address((tl_context *)user, name);
-}
-
-static int ensure_context(void)
-{
-    if (g_ctx) return 1;
-    if (tl_context_create(&(tl_context_desc){.width = 64, .height = 64}, &g_ctx) != TL_OK) {
-        fprintf(stderr, "no GL context: %s\n", tl_context_last_error(NULL));
-        return 0;
-    }
-    return 1;
-}
+#include "render_fixture.h"
 
 /* ---- a closed room (inward faces) with a box in it --------------------------------------- */
 
@@ -110,7 +95,7 @@ static void build_room(test_scene *t)
 static tl_renderer *make_renderer(uint32_t w, uint32_t h, tl_depth_format depth, int fullscreen, tl_fxaa_preset fxaa)
 {
     tl_renderer_desc d = {.width = w, .height = h, .depth_format = depth, .fullscreen_lights = fullscreen,
-                          .fxaa = fxaa, .get_proc_address = get_proc, .get_proc_address_user = g_ctx};
+                          .fxaa = fxaa, .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx};
     tl_renderer *r = NULL;
     char err[4096];
     if (tl_renderer_create(&d, &r, err, sizeof err) != TL_OK) fprintf(stderr, "renderer: %s\n", err);
@@ -498,7 +483,7 @@ static void renderer_bad_input(void)
     tl_renderer *r = NULL;
     char err[512];
     TL_CHECK(tl_renderer_create(NULL, &r, err, sizeof err) == TL_ERROR_INVALID_ARGUMENT && !r);
-    tl_renderer_desc d = {.width = 100000, .height = 10, .get_proc_address = get_proc, .get_proc_address_user = g_ctx};
+    tl_renderer_desc d = {.width = 100000, .height = 10, .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx};
     TL_CHECK(tl_renderer_create(&d, &r, err, sizeof err) == TL_ERROR_LIMIT && !r && err[0]);
     r = make_renderer(32, 32, TL_DEPTH_FORMAT_D24, 0, TL_FXAA_OFF);
     TL_CHECK(r != NULL);

@@ -24,22 +24,7 @@
 
 /* ---- context, renderer -------------------------------------------------------------------- */
 
-static tl_context *g_ctx;
-
-static tl_gl_function get_proc(void *user, const char *name)
-{
-    return (tl_gl_function)tl_context_get_proc_address((tl_context *)user, name);
-}
-
-static int ensure_context(void)
-{
-    if (g_ctx) return 1;
-    if (tl_context_create(&(tl_context_desc){.width = 64, .height = 64}, &g_ctx) != TL_OK) {
-        fprintf(stderr, "no GL context: %s\n", tl_context_last_error(NULL));
-        return 0;
-    }
-    return 1;
-}
+#include "render_fixture.h"
 
 /* The render modes the key cases (FP16 limits, 10^4 lights, 1x1, empty scene) run in; the other
  * cases check the thin light buffer, which only thin-lpp has. */
@@ -48,7 +33,7 @@ static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, 
 
 static tl_renderer *make_renderer(tl_renderer_desc d)
 {
-    d.get_proc_address = get_proc;
+    d.get_proc_address = tl_context_proc_loader;
     d.get_proc_address_user = g_ctx;
     if (!d.fxaa) d.fxaa = TL_FXAA_OFF;
     tl_renderer *r = NULL;
@@ -1138,7 +1123,7 @@ static void stability_largest_target(void)
         run_free(&u);
         /* one pixel more */
         tl_renderer_desc d = {.width = axis ? 8 : max + 1, .height = axis ? max + 1 : 8,
-                              .get_proc_address = get_proc, .get_proc_address_user = g_ctx};
+                              .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx};
         tl_renderer *r = NULL;
         char err[512] = "";
         tl_result res = tl_renderer_create(&d, &r, err, sizeof err);

@@ -1,0 +1,31 @@
+# Helpers for the command-line contract checkers (codec_report.cmake, render_cli.cmake,
+# bench.cmake) when they run as `cmake -P` scripts; they include this file. Included by
+# tests/CMakeLists.txt in configure mode, it does nothing.
+if(NOT CMAKE_SCRIPT_MODE_FILE)
+  return()
+endif()
+
+# Runs ${TOOL} with ARGN; sets rc, out and err in the caller.
+function(run_tool)
+  execute_process(COMMAND ${TOOL} ${ARGN} RESULT_VARIABLE r OUTPUT_VARIABLE o ERROR_VARIABLE e)
+  set(rc "${r}" PARENT_SCOPE)
+  set(out "${o}" PARENT_SCOPE)
+  set(err "${e}" PARENT_SCOPE)
+endfunction()
+
+# Fails unless the run exited with `expected`; for the exit codes in ONE_LINE_EXITS (default 1
+# and 2) stderr must be one line saying why.
+function(expect_exit expected what)
+  if(NOT rc STREQUAL "${expected}")
+    message(FATAL_ERROR "${what}: exit status '${rc}', expected ${expected}\nstdout:\n${out}\nstderr:\n${err}")
+  endif()
+  if(NOT DEFINED ONE_LINE_EXITS)
+    set(ONE_LINE_EXITS 1 2)
+  endif()
+  if(expected IN_LIST ONE_LINE_EXITS)
+    string(STRIP "${err}" e)
+    if(e STREQUAL "" OR e MATCHES "\n")
+      message(FATAL_ERROR "${what}: expected one line on stderr, got:\n${err}")
+    endif()
+  endif()
+endfunction()
