@@ -75,6 +75,10 @@ tl_result tl__forward_lists(tl_renderer *r, const tl__view *v, uint64_t *pairs)
         fl->direction_cos_outer[3] = type == TL_LIGHT_SPOT ? l->cos_outer : -1.0f;
         fl->cos_inner[0] = type == TL_LIGHT_SPOT ? l->cos_inner : 1.0f;
         fl->cos_inner[1] = fl->cos_inner[2] = fl->cos_inner[3] = 0.0f;
+        r->fwd_spheres[nvis][0] = c[0];
+        r->fwd_spheres[nvis][1] = c[1];
+        r->fwd_spheres[nvis][2] = c[2];
+        r->fwd_spheres[nvis][3] = type == TL_LIGHT_DIRECTIONAL ? -1.0f : rad;
         r->fwd_visible[nvis++] = (uint32_t)i;
     }
     /* lists: count first, then fill, into one index array */
@@ -83,14 +87,8 @@ tl_result tl__forward_lists(tl_renderer *r, const tl__view *v, uint64_t *pairs)
         const tl_object *ob = &r->objects[o];
         uint32_t n = 0;
         for (size_t j = 0; j < nvis; j++) {
-            const tl_light *l = &r->lights[r->fwd_visible[j]];
-            if (l->type == TL_LIGHT_DIRECTIONAL) {
-                n++;
-                continue;
-            }
-            float c[3], rad;
-            tl__light_sphere(l, c, &rad);
-            n += (uint32_t)tl__sphere_box(c, rad, ob->bounds_min, ob->bounds_max);
+            const float *sp = r->fwd_spheres[j];
+            n += (uint32_t)(sp[3] < 0.0f || tl__sphere_box(sp, sp[3], ob->bounds_min, ob->bounds_max));
         }
         r->fwd_first[o] = (uint32_t)total;
         r->fwd_count[o] = n;
@@ -109,11 +107,8 @@ tl_result tl__forward_lists(tl_renderer *r, const tl__view *v, uint64_t *pairs)
         const tl_object *ob = &r->objects[o];
         uint32_t *dst = r->fwd_indices + r->fwd_first[o];
         for (size_t j = 0; j < nvis; j++) {
-            const tl_light *l = &r->lights[r->fwd_visible[j]];
-            float c[3], rad;
-            tl__light_sphere(l, c, &rad);
-            if (l->type == TL_LIGHT_DIRECTIONAL || tl__sphere_box(c, rad, ob->bounds_min, ob->bounds_max))
-                *dst++ = (uint32_t)j;
+            const float *sp = r->fwd_spheres[j];
+            if (sp[3] < 0.0f || tl__sphere_box(sp, sp[3], ob->bounds_min, ob->bounds_max)) *dst++ = (uint32_t)j;
         }
     }
     *pairs = total;

@@ -96,6 +96,7 @@ struct tl_renderer {
     /* forward lists: visible lights (view space) and per-object index ranges */
     tl__forward_light *fwd_lights;
     uint32_t *fwd_visible;   /* scene light index of each forward light */
+    float (*fwd_spheres)[4]; /* world-space bounding sphere of each forward light; radius < 0: reaches everything */
     uint32_t *fwd_indices;
     size_t fwd_index_capacity;
     uint32_t *fwd_first, *fwd_count; /* per object */

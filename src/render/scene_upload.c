@@ -26,6 +26,7 @@ void tl__release_scene(tl_renderer *r)
     tl__free(&r->alloc, r->draw_keys);
     tl__free(&r->alloc, r->fwd_lights);
     tl__free(&r->alloc, r->fwd_visible);
+    tl__free(&r->alloc, r->fwd_spheres);
     tl__free(&r->alloc, r->fwd_first);
     tl__free(&r->alloc, r->fwd_count);
     r->vao_scene = r->vbo_scene = r->ibo_scene = 0;
@@ -38,6 +39,7 @@ void tl__release_scene(tl_renderer *r)
     r->draw_keys = NULL;
     r->fwd_lights = NULL;
     r->fwd_visible = r->fwd_first = r->fwd_count = NULL;
+    r->fwd_spheres = NULL;
     r->texture_count = r->object_count = r->material_count = r->light_count = r->scene_index_count = 0;
     r->has_scene = 0;
 }
@@ -85,11 +87,13 @@ tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t 
     tl__instance *inst = (tl__instance *)tl__alloc(&r->alloc, n * sizeof *inst);
     tl__forward_light *fl = (tl__forward_light *)tl__alloc(&r->alloc, n * sizeof *fl);
     uint32_t *vis = (uint32_t *)tl__alloc(&r->alloc, n * sizeof *vis);
-    if (!copy || !inst || !fl || !vis) {
+    float(*sph)[4] = (float(*)[4])tl__alloc(&r->alloc, n * sizeof *sph);
+    if (!copy || !inst || !fl || !vis || !sph) {
         tl__free(&r->alloc, copy);
         tl__free(&r->alloc, inst);
         tl__free(&r->alloc, fl);
         tl__free(&r->alloc, vis);
+        tl__free(&r->alloc, sph);
         return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for %zu lights", count);
     }
     if (count) memcpy(copy, lights, count * sizeof *copy);
@@ -97,10 +101,12 @@ tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t 
     tl__free(&r->alloc, r->instances);
     tl__free(&r->alloc, r->fwd_lights);
     tl__free(&r->alloc, r->fwd_visible);
+    tl__free(&r->alloc, r->fwd_spheres);
     r->lights = copy;
     r->instances = inst;
     r->fwd_lights = fl;
     r->fwd_visible = vis;
+    r->fwd_spheres = sph;
     r->light_count = count;
     if (!r->has_scene) return TL_OK;
     /* light types decide passes and programs: re-plan when they change */
