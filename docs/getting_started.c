@@ -7,6 +7,12 @@
 #include <thinlight/renderer.h>
 #include <thinlight/scene.h>
 
+/* A tl_logger: keeps the last error line in a caller's buffer of 256 bytes. */
+static void keep_error(void *user, tl_log_level level, const char *message)
+{
+    if (level == TL_LOG_ERROR) snprintf((char *)user, 256, "%s", message);
+}
+
 int main(int argc, char **argv)
 {
     const char *path = argc > 1 ? argv[1] : "crypt.png";
@@ -21,15 +27,16 @@ int main(int argc, char **argv)
     tl_result r = tl_context_create(&(tl_context_desc){.width = width, .height = height}, &ctx);
     if (r != TL_OK) snprintf(error, sizeof error, "%s", tl_context_last_error(NULL));
     if (r == TL_OK) r = tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 32}, &scene);
-    if (r == TL_OK)
+    if (r == TL_OK) /* a failing create reports through the logger: there is no renderer to ask */
         r = tl_renderer_create(&(tl_renderer_desc){.width = width, .height = height,
                                                    .get_proc_address = tl_context_proc_loader,
-                                                   .get_proc_address_user = ctx},
-                               &renderer, error, sizeof error);
+                                                   .get_proc_address_user = ctx,
+                                                   .logger = {keep_error, error}},
+                               &renderer);
     if (r == TL_OK) r = tl_renderer_set_scene(renderer, scene); /* upload; the scene may go now */
     if (r == TL_OK) r = tl_renderer_render(renderer, NULL, NULL); /* NULL: the scene's camera */
-    if (r == TL_OK) r = rgba ? tl_renderer_read_output(renderer, rgba, (size_t)width * height * 4)
-                             : TL_ERROR_OUT_OF_MEMORY;
+    size_t size = (size_t)width * height * 4; /* bytes; tl_renderer_read_output(renderer, NULL, &size) asks */
+    if (r == TL_OK) r = rgba ? tl_renderer_read_output(renderer, rgba, &size) : TL_ERROR_OUT_OF_MEMORY;
     if (r != TL_OK && renderer) snprintf(error, sizeof error, "%s", tl_renderer_last_error(renderer));
     if (r == TL_OK) {
         tl_image_desc image = {.width = width, .height = height, .channels = 4, .bottom_up = 1};

@@ -59,14 +59,17 @@ typedef struct bench_record {
     uint32_t width, height, frames;
     double ms_median, ms_p90;      /* GPU time of the frame (sum of the pass timers) */
     double *frame_ms;              /* each timed frame's, in order (frames interleaved across modes); may be NULL */
-    double wall_ms_median, wall_ms_p90;
+    double wall_ms_median, wall_ms_p90; /* render call to GPU done */
     uint32_t passes;               /* bits (1u << tl_pass) of the plan's passes */
     double pass_ms[TL_PASS_COUNT]; /* median per pass */
     double pass_bytes[TL_PASS_COUNT];
     uint64_t pass_fragments[TL_PASS_COUNT];
     double bytes_moved;            /* per frame, the renderer's estimate */
     uint32_t target_bpp[TL_TARGET_COUNT]; /* bytes per pixel each allocated target takes */
-    uint32_t bytes_per_pixel;      /* sum of target_bpp */
+    uint32_t bytes_per_pixel;      /* memory the targets actually occupy (targets with disjoint
+                                      lifetimes share it): the memory figure */
+    uint32_t bytes_per_pixel_sum;  /* sum of target_bpp (as if every target had its own memory) */
+    double cpu_ms_median;          /* CPU time the render call spends issuing commands */
     uint32_t gbuffer_bytes_per_pixel; /* depth + G-buffer + light buffer */
     uint64_t light_fragments[TL_LIGHT_TYPE_COUNT_];
     uint64_t covered_pixels;       /* sum of light_fragments */

@@ -73,12 +73,13 @@ static void bench__summarise(const bench_run *run, bench__summary *s)
         if (subject != BENCH_REFERENCE && fat->gbuffer_bytes_per_pixel)
             bench__say(s,
                        "%s%s stores %u B/px in depth + G-buffer + light buffer = %.0f%% of fat's %u B/px "
-                       "(depth + G-buffer alone: %u vs %u B/px = %.0f%%); all targets %u vs %u B/px",
+                       "(depth + G-buffer alone: %u vs %u B/px = %.0f%%); all targets allocate %u vs %u B/px "
+                       "(sums %u vs %u: targets with disjoint lifetimes share memory)",
                        at, sname, sub->gbuffer_bytes_per_pixel,
                        100.0 * sub->gbuffer_bytes_per_pixel / fat->gbuffer_bytes_per_pixel,
                        fat->gbuffer_bytes_per_pixel, bench__gbuffer_only_bpp(sub), bench__gbuffer_only_bpp(fat),
                        bench__gbuffer_only_bpp(fat) ? 100.0 * bench__gbuffer_only_bpp(sub) / bench__gbuffer_only_bpp(fat) : 0.0,
-                       sub->bytes_per_pixel, fat->bytes_per_pixel);
+                       sub->bytes_per_pixel, fat->bytes_per_pixel, sub->bytes_per_pixel_sum, fat->bytes_per_pixel_sum);
         /* speed-ups at every count >= 64 (the largest alone when there is none) */
         for (size_t m = 0; subject != BENCH_REFERENCE && m < mode_count; m++) {
             tl_render_mode other = modes[m];
@@ -179,13 +180,14 @@ void bench_print_table(const bench_run *run)
            run->gl_renderer, run->gl_version, run->cpu, run->cores, run->load_start, run->load_end, run->seconds);
     printf("%s\n", run->light_definition);
     printf("ms = %s per frame (median, p90); ms/light = lighting pass / lights; cov Mpx = pixels inside light volumes;\n"
-           "B/px = all targets the plan allocates; MiB moved = the renderer's bytes-moved estimate per frame;\n"
+           "B/px = memory the targets occupy (shared where lifetimes allow; sum = as if each had its own);\n"
+           "MiB moved = the renderer's bytes-moved estimate per frame;\n"
            "PSNR and max err (8-bit steps) of the final image against fat of the same frame; NaN = HDR pixels\n",
            run->timers_ok ? "GPU time (timer queries)" : "wall clock (no GPU timers)");
     for (size_t si = 0; si < opt->size_count; si++) {
         bench_size size = opt->sizes[si];
-        printf("\n%ux%u\n%-14s %6s %8s %8s %9s %7s %5s %9s %9s %7s %7s %4s\n", size.width, size.height, "mode",
-               "lights", "ms med", "ms p90", "ms/light", "cov Mpx", "B/px", "MiB@1080p", "MiB moved", "PSNR dB",
+        printf("\n%ux%u\n%-14s %6s %8s %8s %9s %7s %5s %4s %9s %9s %7s %7s %4s\n", size.width, size.height, "mode",
+               "lights", "ms med", "ms p90", "ms/light", "cov Mpx", "B/px", "sum", "MiB@1080p", "MiB moved", "PSNR dB",
                "max err", "NaN");
         for (size_t m = 0; m < mode_count; m++) {
             if (m) putchar('\n');
@@ -199,9 +201,10 @@ void bench_print_table(const bench_run *run)
                 bench__fmt(cov, sizeof cov, "%.2f", r->covered_pixels ? (double)r->covered_pixels * 1e-6 : NAN);
                 bench__fmt(psnr, sizeof psnr, "%.1f", r->mode == BENCH_REFERENCE ? NAN : r->ldr.psnr_db);
                 bench__fmt(maxe, sizeof maxe, "%.0f", r->mode == BENCH_REFERENCE ? NAN : r->ldr.max_abs);
-                printf("%-14s %6u %8.2f %8.2f %9s %7s %5u %9.1f %9.1f %7s %7s %4llu\n", label, r->lights, r->ms_median,
-                       r->ms_p90, pl, cov, r->bytes_per_pixel, bench_mib_at(r, 1920, 1080), r->bytes_moved / 1048576.0,
-                       psnr, maxe, (unsigned long long)r->nan_pixels);
+                printf("%-14s %6u %8.2f %8.2f %9s %7s %5u %4u %9.1f %9.1f %7s %7s %4llu\n", label, r->lights,
+                       r->ms_median, r->ms_p90, pl, cov, r->bytes_per_pixel, r->bytes_per_pixel_sum,
+                       bench_mib_at(r, 1920, 1080), r->bytes_moved / 1048576.0, psnr, maxe,
+                       (unsigned long long)r->nan_pixels);
             }
         }
     }
@@ -253,6 +256,8 @@ static void bench__json_record(tl_tool_json *j, const bench_record *r)
         if (r->passes & (1u << p)) tl_tool_json_uint(j, tl_pass_name((tl_pass)p), r->pass_fragments[p]);
     tl_tool_json_close(j, '}');
     tl_tool_json_uint(j, "bytes_per_pixel", r->bytes_per_pixel);
+    tl_tool_json_uint(j, "bytes_per_pixel_sum", r->bytes_per_pixel_sum);
+    tl_tool_json_num(j, "cpu_ms_median", r->cpu_ms_median);
     tl_tool_json_object(j, "targets", 1);
     for (int t = 0; t < TL_TARGET_COUNT; t++)
         if (r->target_bpp[t]) tl_tool_json_uint(j, tl_target_name((tl_target_id)t), r->target_bpp[t]);
@@ -411,7 +416,7 @@ static void bench__md_table(FILE *f, const bench_run *run, bench_size size)
     tl_render_mode modes[BENCH_MODES];
     size_t mode_count = bench_render_modes(opt, modes);
     fprintf(f, "\n#### %ux%u\n\n", size.width, size.height);
-    fputs("| mode | lights | ms median | ms p90 | ms / light | covered Mpx | B/px | MiB @1080p | MiB moved / frame | "
+    fputs("| mode | lights | ms median | ms p90 | ms / light | covered Mpx | B/px (sum) | MiB @1080p | MiB moved / frame | "
           "PSNR dB | max err | NaN |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
           f);
     for (size_t m = 0; m < mode_count; m++)
@@ -424,7 +429,7 @@ static void bench__md_table(FILE *f, const bench_run *run, bench_size size)
             bench__md_number(f, "%.2f", r->ms_p90);
             bench__md_number(f, "%.4f", bench_per_light_ms(r));
             bench__md_number(f, "%.2f", r->covered_pixels ? (double)r->covered_pixels * 1e-6 : NAN);
-            fprintf(f, " | %u", r->bytes_per_pixel);
+            fprintf(f, " | %u (%u)", r->bytes_per_pixel, r->bytes_per_pixel_sum);
             bench__md_number(f, "%.1f", bench_mib_at(r, 1920, 1080));
             bench__md_number(f, "%.1f", r->bytes_moved / 1048576.0);
             bench__md_number(f, "%.1f", ref ? NAN : r->ldr.psnr_db);
@@ -448,17 +453,17 @@ static void bench__md_targets(FILE *f, const bench_run *run)
     }
     for (int t = 0; t < TL_TARGET_COUNT; t++)
         if (used & (1u << t)) fprintf(f, " %s |", tl_target_name((tl_target_id)t));
-    fputs(" total | depth + G-buffer + light buffer |\n|---|", f);
+    fputs(" sum | allocated | depth + G-buffer + light buffer |\n|---|", f);
     for (int t = 0; t < TL_TARGET_COUNT; t++)
         if (used & (1u << t)) fputs("---:|", f);
-    fputs("---:|---:|\n", f);
+    fputs("---:|---:|---:|\n", f);
     for (size_t m = 0; m < mode_count; m++) {
         const bench_record *r = bench_find(run, modes[m], opt->lights[opt->light_count - 1], opt->sizes[0]);
         if (!r) continue;
         fprintf(f, "| `%s` |", tl_render_mode_name(r->mode));
         for (int t = 0; t < TL_TARGET_COUNT; t++)
             if (used & (1u << t)) r->target_bpp[t] ? fprintf(f, " %u |", r->target_bpp[t]) : fputs(" |", f);
-        fprintf(f, " %u | %u |\n", r->bytes_per_pixel, r->gbuffer_bytes_per_pixel);
+        fprintf(f, " %u | %u | %u |\n", r->bytes_per_pixel_sum, r->bytes_per_pixel, r->gbuffer_bytes_per_pixel);
     }
 }
 

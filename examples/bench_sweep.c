@@ -14,6 +14,7 @@
 
 #include "bench.h"
 #include "thinlight/context.h"
+#include "tool_log.h"
 #include "tool_util.h"
 
 static void bench__median_p90(double *v, size_t n, double *median, double *p90);
@@ -96,7 +97,7 @@ typedef struct bench__frame_buffers {
 
 /* One mode's timed frames: gpu[f], wall[f], pass[p * frames + f], and the last frame's stats. */
 typedef struct bench__samples {
-    double *gpu, *wall, *pass;
+    double *gpu, *wall, *cpu, *pass;
     tl_frame_stats last;
 } bench__samples;
 
@@ -131,8 +132,9 @@ static void bench__plan_figures(tl_renderer *r, const tl_frame_stats *st, size_t
 {
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         rec->target_bpp[t] = (uint32_t)((st->target_bytes[t] + pixels / 2) / pixels);
-        rec->bytes_per_pixel += rec->target_bpp[t];
+        rec->bytes_per_pixel_sum += rec->target_bpp[t];
     }
+    rec->bytes_per_pixel = (uint32_t)((st->allocated_target_bytes + pixels / 2) / pixels);
     tl_frame_plan plan;
     if (tl_renderer_get_plan(r, &plan) == TL_OK) {
         for (size_t i = 0; i < plan.pass_count && i < TL_PASS_COUNT; i++) rec->passes |= 1u << plan.passes[i].pass;
@@ -163,8 +165,9 @@ static int bench__frame(bench_run *run, tl_renderer *r, const bench_record *rec,
     uint32_t k = f - opt->warmup, frames = opt->frames;
     int timed = st->gpu_ms > 0.0;
     if (!timed) run->timers_ok = 0;
-    smp->gpu[k] = timed ? st->gpu_ms : st->cpu_ms;
-    smp->wall[k] = st->cpu_ms;
+    smp->gpu[k] = timed ? st->gpu_ms : st->wall_ms;
+    smp->wall[k] = st->wall_ms;
+    smp->cpu[k] = st->cpu_ms;
     for (int p = 0; p < TL_PASS_COUNT; p++) smp->pass[p * frames + k] = st->pass_ms[p] > 0.0 ? st->pass_ms[p] : 0.0;
     return 0;
 }
@@ -181,6 +184,7 @@ static void bench__summarise_frames(const bench_options *opt, tl_renderer *r, be
     bench__median_p90(smp->gpu, frames, &rec->ms_median, &rec->ms_p90);
     bench__median_p90(smp->wall, frames, &rec->wall_ms_median, &rec->wall_ms_p90);
     double unused;
+    bench__median_p90(smp->cpu, frames, &rec->cpu_ms_median, &unused);
     for (int p = 0; p < TL_PASS_COUNT; p++) bench__median_p90(smp->pass + p * frames, frames, &rec->pass_ms[p], &unused);
     for (int p = 0; p < TL_PASS_COUNT; p++) {
         rec->pass_bytes[p] = st->pass_bytes[p];
@@ -206,8 +210,8 @@ static int bench__images(tl_renderer *r, bench_record *rec, bench__frame_buffers
     uint8_t *ldr = ref ? fb->ref_ldr : fb->ldr;
     float *hdr = ref ? fb->ref_hdr : fb->hdr;
     size_t n = fb->pixels;
-    if (tl_renderer_read_output(r, ldr, n * 4) != TL_OK ||
-        tl_renderer_read_target(r, TL_TARGET_HDR, hdr, n * 4) != TL_OK) {
+    if (tl_renderer_read_output(r, ldr, &(size_t){n * 4}) != TL_OK ||
+        tl_renderer_read_target(r, TL_TARGET_HDR, hdr, &(size_t){n * 4 * sizeof(float)}) != TL_OK) {
         tl_tool_fail(BENCH_TOOL, "%s: reading the images: %s", tl_render_mode_name(rec->mode),
                      tl_renderer_last_error(r));
         return 1;
@@ -264,13 +268,14 @@ static int bench__size_setup(bench_run *run, tl_context *ctx, const tl_scene *sc
     s->fb.ref_ldr = malloc(n * 4);
     s->fb.hdr = malloc(n * 4 * sizeof(float));
     s->fb.ref_hdr = malloc(n * 4 * sizeof(float));
-    size_t per_mode = (2 + TL_PASS_COUNT) * (size_t)run->opt.frames;
+    size_t per_mode = (3 + TL_PASS_COUNT) * (size_t)run->opt.frames;
     s->sample_memory = malloc(mode_count * per_mode * sizeof(double));
     for (size_t m = 0; s->sample_memory && m < mode_count; m++) {
         bench__samples *smp = &s->samples[m];
         smp->gpu = s->sample_memory + m * per_mode;
         smp->wall = smp->gpu + run->opt.frames;
-        smp->pass = smp->wall + run->opt.frames;
+        smp->cpu = smp->wall + run->opt.frames;
+        smp->pass = smp->cpu + run->opt.frames;
     }
     if (!s->fb.ldr || !s->fb.ref_ldr || !s->fb.hdr || !s->fb.ref_hdr || !s->sample_memory) {
         tl_tool_fail(BENCH_TOOL, "out of memory for %ux%u images", size.width, size.height);
@@ -278,12 +283,10 @@ static int bench__size_setup(bench_run *run, tl_context *ctx, const tl_scene *sc
     }
     for (size_t m = 0; m < mode_count; m++) {
         tl_renderer_desc desc = {.mode = modes[m], .width = size.width, .height = size.height,
-                                 .get_proc_address = tl_context_proc_loader, .get_proc_address_user = ctx};
-        char err[512];
-        if (tl_renderer_create(&desc, &s->renderers[m], err, sizeof err) != TL_OK) {
-            tl_tool_fail(BENCH_TOOL, "%s at %ux%u: %s", tl_render_mode_name(modes[m]), size.width, size.height, err);
-            return 1;
-        }
+                                 .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR), .synchronous_stats = 1,
+                                 .get_proc_address = tl_context_proc_loader, .get_proc_address_user = ctx,
+                                 .logger = tl_tool_logger(BENCH_TOOL)};
+        if (tl_renderer_create(&desc, &s->renderers[m]) != TL_OK) return 1; /* the logger said why */
         if (tl_renderer_set_scene(s->renderers[m], scene) != TL_OK) {
             tl_tool_fail(BENCH_TOOL, "%s: %s", tl_render_mode_name(modes[m]), tl_renderer_last_error(s->renderers[m]));
             return 1;
@@ -422,12 +425,10 @@ static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *s
         tl_renderer *r[2] = {NULL, NULL};
         for (int k = 0; !err && k < 2; k++) {
             tl_renderer_desc desc = {.mode = p->mode, .width = size.width, .height = size.height, .no_planning = k,
-                                     .get_proc_address = tl_context_proc_loader, .get_proc_address_user = ctx};
-            char msg[512];
-            if (tl_renderer_create(&desc, &r[k], msg, sizeof msg) != TL_OK) {
-                tl_tool_fail(BENCH_TOOL, "%s%s at %ux%u: %s", name, k ? " (no_planning)" : "", size.width, size.height,
-                             msg);
-                err = 1;
+                                     .synchronous_stats = 1, .get_proc_address = tl_context_proc_loader,
+                                     .get_proc_address_user = ctx, .logger = tl_tool_logger(BENCH_TOOL)};
+            if (tl_renderer_create(&desc, &r[k]) != TL_OK) {
+                err = 1; /* the logger said why */
             } else if (tl_renderer_set_scene(r[k], bench_scene_get(scene)) != TL_OK ||
                        tl_renderer_set_lights(r[k], lights, count) != TL_OK) {
                 tl_tool_fail(BENCH_TOOL, "%s%s: %s", name, k ? " (no_planning)" : "", tl_renderer_last_error(r[k]));
@@ -447,7 +448,7 @@ static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *s
                     err = 1;
                 } else if (f >= opt->warmup) {
                     if (!(st.gpu_ms > 0.0)) run->timers_ok = 0;
-                    ms[(size_t)k * opt->frames + (f - opt->warmup)] = st.gpu_ms > 0.0 ? st.gpu_ms : st.cpu_ms;
+                    ms[(size_t)k * opt->frames + (f - opt->warmup)] = st.gpu_ms > 0.0 ? st.gpu_ms : st.wall_ms;
                 }
             }
         }

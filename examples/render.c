@@ -9,6 +9,7 @@
 #include "thinlight/context.h"
 #include "thinlight/io.h"
 #include "thinlight/renderer.h"
+#include "tool_log.h"
 #include "thinlight/scene.h"
 
 static const char *const usage =
@@ -87,7 +88,8 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         "depth",        "rt0_normal_gloss", "rt1_albedo", "light_diffuse", "light_specular", "fat_position",
         "fat_normal",   "fat_albedo",       "fat_material", "hdr",         "ldr",            "output"};
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
-        if (tl_renderer_read_target(r, (tl_target_id)t, buf, n) != TL_OK) continue; /* not allocated */
+        size_t size = n * sizeof *buf;
+        if (tl_renderer_read_target(r, (tl_target_id)t, buf, &size) != TL_OK) continue; /* not allocated */
         char path[4096], err[512];
         snprintf(path, sizeof path, "%s/%s.exr", dir, names[t]);
         tl_image_desc id = {w, h, 4, TL_PIXEL_F32, 1};
@@ -239,14 +241,14 @@ int main(int argc, char **argv)
     }
     rd.get_proc_address = tl_context_proc_loader;
     rd.get_proc_address_user = ctx;
+    rd.logger = tl_tool_logger("thinlight-render");
+    rd.synchronous_stats = stats || plan; /* their figures describe the frame just rendered */
+    if (dump) rd.keep_targets = TL_TARGETS_ALL;
+    if (hdr_out) rd.keep_targets |= TL_TARGET_BIT(TL_TARGET_HDR);
     tl_renderer *r = NULL;
     char err[4096];
-    res = tl_renderer_create(&rd, &r, err, sizeof err);
-    int rc = 0;
-    if (res != TL_OK) {
-        fprintf(stderr, "thinlight-render: %s\n", err);
-        rc = 1;
-    }
+    res = tl_renderer_create(&rd, &r);
+    int rc = res != TL_OK; /* the logger said why */
     if (!rc && (res = tl_renderer_set_scene(r, scene)) != TL_OK) {
         fprintf(stderr, "thinlight-render: %s\n", tl_renderer_last_error(r));
         rc = 1;
@@ -273,14 +275,16 @@ int main(int argc, char **argv)
                 printf("  %-13s %8.2f ms %10llu fragments %8.2f MB moved (estimate)\n", tl_pass_name(p), st.pass_ms[p],
                        (unsigned long long)st.pass_fragments[p], st.pass_bytes[p] * 1e-6);
             }
-        printf("  %-9s %8.2f ms GPU, %.2f ms wall\n", "frame", st.gpu_ms, st.cpu_ms);
+        printf("  %-9s %8.2f ms GPU, %.2f ms wall (%.2f ms issuing commands)\n", "frame", st.gpu_ms, st.wall_ms,
+               st.cpu_ms);
         for (int t = 0; t < TL_TARGET_COUNT; t++)
             if (st.target_bytes[t])
                 printf("  %-15s %5.1f B/px %8.2f MiB\n", tl_target_name((tl_target_id)t),
                        (double)st.target_bytes[t] / (double)px, (double)st.target_bytes[t] / 1048576.0);
-        printf("  G-buffer %.1f B/px + light buffer %.1f B/px; all targets %.1f B/px\n",
+        printf("  G-buffer %.1f B/px + light buffer %.1f B/px; all targets %.1f B/px, allocated %.1f B/px "
+               "(targets with disjoint lifetimes share memory)\n",
                (double)st.gbuffer_bytes / (double)px, (double)st.light_buffer_bytes / (double)px,
-               (double)st.total_target_bytes / (double)px);
+               (double)st.total_target_bytes / (double)px, (double)st.allocated_target_bytes / (double)px);
     }
     if (!rc) {
         size_t n = (size_t)rd.width * rd.height * 4;
@@ -289,8 +293,8 @@ int main(int argc, char **argv)
         if (!pixels) {
             fprintf(stderr, "thinlight-render: out of memory\n");
             rc = 1;
-        } else if ((hdr_out ? tl_renderer_read_target(r, TL_TARGET_HDR, pixels, n)
-                            : tl_renderer_read_output(r, pixels, n)) != TL_OK) {
+        } else if ((hdr_out ? tl_renderer_read_target(r, TL_TARGET_HDR, pixels, &(size_t){n * sizeof(float)})
+                            : tl_renderer_read_output(r, pixels, &(size_t){n})) != TL_OK) {
             fprintf(stderr, "thinlight-render: %s\n", tl_renderer_last_error(r));
             rc = 1;
         } else if (tl_image_write(out, &id, pixels, err, sizeof err) != TL_OK) {

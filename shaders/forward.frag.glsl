@@ -2,8 +2,10 @@
 // evaluates the lights in its object's list (built on the CPU per frame, lights whose range
 // reaches the object's bounds). TL_DEPTH_ONLY: the depth pre-pass. TL_TRANSPARENT: alpha out.
 #include "codec.glsl"
+#include "frame.glsl"
 #include "lighting.glsl"
 #include "material.glsl"
+#include "object.glsl"
 
 #ifndef TL_DEPTH_ONLY
 struct tl_forward_light {
@@ -12,13 +14,10 @@ struct tl_forward_light {
     vec4 direction_cos_outer;  // view space
     vec4 cos_inner;
 };
-layout(std430, binding = 0) readonly buffer tl_light_buffer { tl_forward_light tl_lights[]; };
-layout(std430, binding = 1) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
-uniform uint u_light_first;
-uniform uint u_light_count;
-uniform vec3 u_ambient;
+layout(std430, binding = TL_SSBO_FORWARD_LIGHTS) readonly buffer tl_light_buffer { tl_forward_light tl_lights[]; };
+layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
 
-layout(location = 0) out vec4 o_color;
+layout(location = TL_OUT_HDR) out vec4 o_color;
 #endif
 
 void main()
@@ -31,8 +30,9 @@ void main()
     vec3 v = normalize(-p);
     float power = tl_gloss_to_specular_power(s.gloss);
     vec3 diffuse = vec3(0.0), specular = vec3(0.0);
-    for (uint i = 0u; i < u_light_count; i++) {
-        tl_forward_light l = tl_lights[tl_light_indices[u_light_first + i]];
+    uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
+    for (uint i = 0u; i < count; i++) {
+        tl_forward_light l = tl_lights[tl_light_indices[first + i]];
         vec2 t = tl_light_terms(int(l.color_type.w), p, n, v, power, l.position_radius.xyz, l.position_radius.w,
                                 l.direction_cos_outer.xyz, l.cos_inner.x, l.direction_cos_outer.w);
         diffuse += l.color_type.rgb * t.x;

@@ -3,12 +3,14 @@
 // resample across the edge at the estimated position. Reads gamma-encoded luma from alpha and
 // writes alpha = 1. Written for this project from the published description of the algorithm.
 in vec2 v_uv;
-uniform sampler2D u_ldr; // bilinear filtering
-uniform vec2 u_rcp_size;
-uniform float u_edge_threshold;
-uniform float u_edge_threshold_min;
-uniform float u_subpix;
-layout(location = 0) out vec4 o_color;
+#include "frame.glsl"
+
+layout(binding = TL_UNIT_LDR) uniform sampler2D u_ldr; // bilinear filtering
+#define u_rcp_size u_inv_size
+#define u_edge_threshold u_fxaa_edge_threshold
+#define u_edge_threshold_min u_fxaa_edge_threshold_min
+#define u_subpix u_fxaa_subpix
+layout(location = TL_OUT_OUTPUT) out vec4 o_color;
 
 #ifndef TL_FXAA_STEPS
 #define TL_FXAA_STEPS 12

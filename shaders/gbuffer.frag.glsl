@@ -1,11 +1,11 @@
-// Pass 1: G-buffer. Outputs by permutation: TL_OUT_RT0 (octahedral normal + gloss), TL_OUT_RT1
-// (Y, checkerboard chroma, specular intensity), TL_OUT_FAT (full-float reference layout), TL_OUT_HDR
-// (deferred modes: emissive + ambient, which the light pass adds to). TL_DEPTH_ONLY writes depth.
+// Pass 1: G-buffer. The plan defines TL_OUT_<TARGET>=<location> for each target the pass writes:
+// RT0 (octahedral normal + gloss), RT1 (Y, checkerboard chroma, specular intensity), the FAT_*
+// full-float reference layout, HDR (deferred modes: emissive + ambient, which the light pass adds
+// to). TL_DEPTH_ONLY writes depth.
 #include "codec.glsl"
+#include "frame.glsl"
 #include "lighting.glsl"
 #include "material.glsl"
-
-uniform vec3 u_ambient;
 
 #ifdef TL_OUT_RT0
 layout(location = TL_OUT_RT0) out vec4 o_rt0;
@@ -13,12 +13,13 @@ layout(location = TL_OUT_RT0) out vec4 o_rt0;
 #ifdef TL_OUT_RT1
 layout(location = TL_OUT_RT1) out vec4 o_rt1;
 #endif
-#ifdef TL_OUT_FAT
-layout(location = 0) out vec4 o_position;
-layout(location = 1) out vec4 o_normal;
-layout(location = 2) out vec4 o_albedo;
+#ifdef TL_OUT_FAT_POSITION
+#define TL_OUT_FAT
+layout(location = TL_OUT_FAT_POSITION) out vec4 o_position;
+layout(location = TL_OUT_FAT_NORMAL) out vec4 o_normal;
+layout(location = TL_OUT_FAT_ALBEDO) out vec4 o_albedo;
 #ifdef TL_OUT_FAT_MATERIAL
-layout(location = 3) out vec4 o_material;
+layout(location = TL_OUT_FAT_MATERIAL) out vec4 o_material;
 #endif
 #endif
 #ifdef TL_OUT_HDR

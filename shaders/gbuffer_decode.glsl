@@ -2,18 +2,15 @@
 // RT0 -> normal and gloss, RT1 -> albedo (edge-aware chroma reconstruction) and specular. Fat:
 // everything read as stored.
 #include "codec.glsl"
+#include "frame.glsl"
 
-uniform sampler2D u_depth;
-uniform sampler2D u_rt0;
-uniform sampler2D u_rt1;
-uniform sampler2D u_fat_position;
-uniform sampler2D u_fat_normal;
-uniform sampler2D u_fat_albedo;
-uniform sampler2D u_fat_material;
-uniform vec4 u_depth_params; // a = m[10], b = m[14], c = m[11], reversed (0/1)
-uniform vec4 u_ray_params;   // m[0], m[5], m[8], m[9]
-uniform vec2 u_inv_size;
-uniform float u_clear_depth;
+layout(binding = TL_UNIT_DEPTH) uniform sampler2D u_depth;
+layout(binding = TL_UNIT_RT0) uniform sampler2D u_rt0;
+layout(binding = TL_UNIT_RT1) uniform sampler2D u_rt1;
+layout(binding = TL_UNIT_FAT_POSITION) uniform sampler2D u_fat_position;
+layout(binding = TL_UNIT_FAT_NORMAL) uniform sampler2D u_fat_normal;
+layout(binding = TL_UNIT_FAT_ALBEDO) uniform sampler2D u_fat_albedo;
+layout(binding = TL_UNIT_FAT_MATERIAL) uniform sampler2D u_fat_material;
 
 // The view-space position from depth; false for background pixels (depth at the clear value).
 bool tl_gbuffer_position(ivec2 px, out vec3 p)

@@ -10,12 +10,12 @@ flat in vec4 f_direction_cos_outer;
 flat in float f_cos_inner;
 
 #ifdef TL_LIGHT_ACCUM
-layout(location = 0) out vec4 o_diffuse;
+layout(location = TL_OUT_LIGHT_DIFFUSE) out vec4 o_diffuse;
 #ifdef TL_SPECULAR_EXACT
-layout(location = 1) out vec4 o_specular;
+layout(location = TL_OUT_LIGHT_SPECULAR) out vec4 o_specular;
 #endif
 #else
-layout(location = 0) out vec4 o_color;
+layout(location = TL_OUT_HDR) out vec4 o_color;
 #endif
 
 void main()

@@ -1,5 +1,6 @@
 // Pass 2: light volumes. One instanced draw per light type: TL_LIGHT_TYPE 1 point (sphere),
 // 2 spot (cone), 3 directional (full-screen triangle). Per-instance data in view space.
+#include "frame.glsl"
 #include "fullscreen.glsl"
 
 layout(location = 0) in vec3 a_position;           // unit volume mesh (sphere or cone)
@@ -7,9 +8,6 @@ layout(location = 1) in vec4 i_position_radius;    // world
 layout(location = 2) in vec4 i_color;
 layout(location = 3) in vec4 i_direction_cos_outer; // world direction light travels
 layout(location = 4) in float i_cos_inner;
-
-uniform mat4 u_view;
-uniform mat4 u_view_proj;
 
 flat out vec4 f_position_radius; // view space
 flat out vec3 f_color;

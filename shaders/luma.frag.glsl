@@ -1,7 +1,7 @@
 // Adds gamma-encoded luma in alpha to a caller image, so FXAA can run on it.
 in vec2 v_uv;
-uniform sampler2D u_image;
-layout(location = 0) out vec4 o_color;
+layout(binding = TL_UNIT_OUTPUT) uniform sampler2D u_image; // the caller's image, uploaded into the output
+layout(location = TL_OUT_LDR) out vec4 o_color;
 
 void main()
 {

@@ -1,13 +1,13 @@
 // Pass 3 (thin-lpp): the second geometry pass applies materials to the accumulated light
 // (depth EQUAL). TL_NO_LIGHTS: no light buffer, ambient and emissive only.
+#include "frame.glsl"
 #include "lighting.glsl"
 #include "material.glsl"
 
-uniform sampler2D u_light_diffuse;
-uniform sampler2D u_light_specular;
-uniform vec3 u_ambient;
+layout(binding = TL_UNIT_LIGHT_DIFFUSE) uniform sampler2D u_light_diffuse;
+layout(binding = TL_UNIT_LIGHT_SPECULAR) uniform sampler2D u_light_specular;
 
-layout(location = 0) out vec4 o_color;
+layout(location = TL_OUT_HDR) out vec4 o_color;
 
 vec3 tl_finite(vec3 c) // FP16 sums of many bright lights can reach Inf: keep targets finite
 {

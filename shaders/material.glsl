@@ -5,28 +5,33 @@
 #ifndef TL_MATERIAL_GLSL
 #define TL_MATERIAL_GLSL
 
-uniform vec3 u_albedo;
-uniform vec3 u_specular;
-uniform float u_gloss;
-uniform vec3 u_emissive;
-uniform float u_alpha;
-uniform float u_alpha_cutoff;
-uniform float u_metallic;
-uniform float u_roughness;
-uniform float u_normal_scale;
-uniform float u_occlusion_strength;
-uniform int u_material_flags; // TL_MATERIAL_* of scene.h
-uniform int u_texture_mask;   // 1 albedo, 2 normal, 4 metallic-roughness, 8 emissive, 16 occlusion
-uniform sampler2D u_albedo_texture;    // unit 2, sRGB
-uniform sampler2D u_normal_texture;    // unit 3
-uniform sampler2D u_mr_texture;        // unit 4
-uniform sampler2D u_emissive_texture;  // unit 5, sRGB
-uniform sampler2D u_occlusion_texture; // unit 6
+// One std140 record per material (tl__material_ubo in src/render/renderer_internal.h), bound as a
+// range of the scene's material buffer when the material changes.
+layout(std140, binding = TL_UBO_MATERIAL) uniform tl_material_block {
+    vec3 u_albedo;
+    float u_gloss;
+    vec3 u_specular;
+    float u_alpha;
+    vec3 u_emissive;
+    float u_alpha_cutoff;
+    float u_metallic;
+    float u_roughness;
+    float u_normal_scale;
+    float u_occlusion_strength;
+    int u_material_flags; // TL_MATERIAL_* of scene.h
+    int u_texture_mask;   // 1 albedo, 2 normal, 4 metallic-roughness, 8 emissive, 16 occlusion
+};
+layout(binding = TL_UNIT_ALBEDO_TEXTURE) uniform sampler2D u_albedo_texture;       // sRGB
+layout(binding = TL_UNIT_NORMAL_TEXTURE) uniform sampler2D u_normal_texture;
+layout(binding = TL_UNIT_MR_TEXTURE) uniform sampler2D u_mr_texture;
+layout(binding = TL_UNIT_EMISSIVE_TEXTURE) uniform sampler2D u_emissive_texture;   // sRGB
+layout(binding = TL_UNIT_OCCLUSION_TEXTURE) uniform sampler2D u_occlusion_texture;
 
 in vec3 v_normal;
 in vec2 v_uv;
 in vec4 v_tangent;
 in vec3 v_view_position;
+flat in uint v_object;
 
 struct tl_surface {
     vec3 albedo;   // linear diffuse colour

@@ -1,9 +1,14 @@
 // Pass 4: exposure, ACES-fitted tone curve (Narkowicz 2015) in linear space, sRGB encoding, and
 // gamma-encoded luma in alpha for FXAA.
+#include "frame.glsl"
+
 in vec2 v_uv;
-uniform sampler2D u_hdr;
-uniform float u_exposure;
-layout(location = 0) out vec4 o_ldr;
+layout(binding = TL_UNIT_HDR) uniform sampler2D u_hdr;
+#ifdef TL_OUT_LDR
+layout(location = TL_OUT_LDR) out vec4 o_ldr;
+#else
+layout(location = TL_OUT_OUTPUT) out vec4 o_ldr; // FXAA off: straight into the output
+#endif
 
 vec3 tl_aces(vec3 x)
 {

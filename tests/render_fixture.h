@@ -9,6 +9,14 @@
 
 static tl_context *g_ctx;
 
+/* Renderer and context failures, one line each on stderr. */
+static void tl_test_log(void *user, tl_log_level level, const char *message)
+{
+    (void)user;
+    if (level != TL_LOG_INFO) fprintf(stderr, "%s: %s\n", level == TL_LOG_ERROR ? "error" : "warning", message);
+}
+static const tl_logger tl_test_logger = {tl_test_log, NULL};
+
 static int ensure_context(void)
 {
     if (g_ctx) return 1;

@@ -152,10 +152,11 @@ static void plan_format_and_bad_input(void)
 static tl_renderer *make_renderer(tl_render_mode mode, uint32_t w, uint32_t h)
 {
     tl_renderer *r = NULL;
-    char err[1024];
-    tl_renderer_desc d = {.mode = mode, .width = w, .height = h, .get_proc_address = tl_context_proc_loader,
-                          .get_proc_address_user = g_ctx};
-    if (tl_renderer_create(&d, &r, err, sizeof err) != TL_OK) fprintf(stderr, "renderer: %s\n", err);
+    /* every target kept readable, statistics of the frame just rendered */
+    tl_renderer_desc d = {.mode = mode, .width = w, .height = h, .keep_targets = TL_TARGETS_ALL, .synchronous_stats = 1,
+                          .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
+                          .logger = tl_test_logger};
+    tl_renderer_create(&d, &r);
     return r;
 }
 
@@ -185,7 +186,7 @@ static void plan_allocations_match_renderer(void)
         TL_CHECK_EQ_U(st.total_target_bytes, sum);
         for (int t = 0; t < TL_TARGET_COUNT; t++) {
             float probe[4 * 96 * 64];
-            tl_result rr = tl_renderer_read_target(r, (tl_target_id)t, probe, sizeof probe / sizeof probe[0]);
+            tl_result rr = tl_renderer_read_target(r, (tl_target_id)t, probe, &(size_t){sizeof probe});
             TL_CHECK((rr == TL_OK) == ((p.targets & BIT(t)) != 0));
         }
         /* timed passes are exactly the plan's */
@@ -228,7 +229,8 @@ static int render_mode(const tl_scene *s, tl_render_mode mode, uint32_t w, uint3
     out->ldr = malloc(n);
     out->hdr = malloc(n * sizeof(float));
     int ok = tl_renderer_set_scene(r, s) == TL_OK && tl_renderer_render(r, NULL, st) == TL_OK &&
-             tl_renderer_read_output(r, out->ldr, n) == TL_OK && tl_renderer_read_target(r, TL_TARGET_HDR, out->hdr, n) == TL_OK;
+             tl_renderer_read_output(r, out->ldr, &(size_t){n}) == TL_OK &&
+             tl_renderer_read_target(r, TL_TARGET_HDR, out->hdr, &(size_t){n * sizeof(float)}) == TL_OK;
     if (!ok) fprintf(stderr, "%s: %s\n", tl_render_mode_name(mode), tl_renderer_last_error(r));
     tl_renderer_destroy(r);
     return ok;
@@ -340,7 +342,7 @@ static void render_to_caller_framebuffer(void)
     TL_CHECK(r && tl_renderer_set_scene(r, s) == TL_OK && tl_renderer_render(r, NULL, NULL) == TL_OK);
     if (!r) return;
     uint8_t *own = malloc((size_t)w * h * 4), *theirs = malloc((size_t)W * H * 4);
-    TL_CHECK(tl_renderer_read_output(r, own, (size_t)w * h * 4) == TL_OK);
+    TL_CHECK(tl_renderer_read_output(r, own, &(size_t){(size_t)w * h * 4}) == TL_OK);
 
     /* a caller framebuffer, made through the context's own GL entry points */
     typedef void (*create_tex_t)(unsigned, int, unsigned *);
@@ -412,13 +414,13 @@ static void plan_saving_same_image(void)
     for (int unplanned = 0; unplanned < 2; unplanned++) {
         tl_renderer *r = NULL;
         tl_renderer_desc d = {.width = w, .height = h, .get_proc_address = tl_context_proc_loader,
-                              .get_proc_address_user = g_ctx,
+                              .get_proc_address_user = g_ctx, .synchronous_stats = 1,
                               .no_planning = unplanned};
-        TL_CHECK(tl_renderer_create(&d, &r, NULL, 0) == TL_OK);
+        TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
         if (!r) continue;
         TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);
         TL_CHECK(tl_renderer_render(r, NULL, &st[unplanned]) == TL_OK);
-        TL_CHECK(tl_renderer_read_output(r, img[unplanned], n) == TL_OK);
+        TL_CHECK(tl_renderer_read_output(r, img[unplanned], &(size_t){n}) == TL_OK);
         tl_renderer_destroy(r);
     }
     TL_CHECK_EQ_U(st[0].target_bytes[TL_TARGET_LIGHT_SPECULAR], 0);

@@ -95,10 +95,11 @@ static void build_room(test_scene *t)
 static tl_renderer *make_renderer(uint32_t w, uint32_t h, tl_depth_format depth, int fullscreen, tl_fxaa_preset fxaa)
 {
     tl_renderer_desc d = {.width = w, .height = h, .depth_format = depth, .fullscreen_lights = fullscreen,
-                          .fxaa = fxaa, .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx};
+                          .fxaa = fxaa, .keep_targets = TL_TARGETS_ALL, .synchronous_stats = 1,
+                          .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
+                          .logger = tl_test_logger};
     tl_renderer *r = NULL;
-    char err[4096];
-    if (tl_renderer_create(&d, &r, err, sizeof err) != TL_OK) fprintf(stderr, "renderer: %s\n", err);
+    tl_renderer_create(&d, &r);
     return r;
 }
 
@@ -123,8 +124,8 @@ static void compare_volumes(test_scene *t, const tl_camera *cam, tl_depth_format
     float *a = malloc(n * sizeof *a), *b = malloc(n * sizeof *b);
     const tl_target_id ids[2] = {TL_TARGET_LIGHT_DIFFUSE, TL_TARGET_LIGHT_SPECULAR};
     for (int k = 0; k < 2; k++) {
-        TL_CHECK(tl_renderer_read_target(vol, ids[k], a, n) == TL_OK);
-        TL_CHECK(tl_renderer_read_target(ref, ids[k], b, n) == TL_OK);
+        TL_CHECK(tl_renderer_read_target(vol, ids[k], a, &(size_t){n * sizeof *a}) == TL_OK);
+        TL_CHECK(tl_renderer_read_target(ref, ids[k], b, &(size_t){n * sizeof *b}) == TL_OK);
         double max_rel = 0.0, sum = 0.0;
         size_t lit = 0, bad = 0;
         for (size_t i = 0; i < n; i++) {
@@ -221,7 +222,7 @@ static void light_volume_many_types(void)
     TL_CHECK_EQ_U(st.lights_drawn[TL_LIGHT_POINT], 2);
     TL_CHECK_EQ_U(st.lights_drawn[TL_LIGHT_SPOT], 1);
     TL_CHECK_EQ_U(st.lights_drawn[TL_LIGHT_DIRECTIONAL], 1);
-    TL_CHECK_EQ_U(st.draw_calls, 2u * st.objects_drawn + 3u);
+    TL_CHECK_EQ_U(st.draw_calls, 2u * st.objects_drawn + 3u + 1u); /* G-buffer, material; 3 light types; tone map */
     tl_renderer_destroy(r);
 }
 
@@ -248,7 +249,7 @@ static void fxaa_reduces_edge_gradient(void)
     TL_CHECK(tl_renderer_render(off, &cam, NULL) == TL_OK && tl_renderer_render(on, &cam, NULL) == TL_OK);
     size_t n = (size_t)w * h * 4;
     uint8_t *a = malloc(n), *b = malloc(n);
-    TL_CHECK(tl_renderer_read_output(off, a, n) == TL_OK && tl_renderer_read_output(on, b, n) == TL_OK);
+    TL_CHECK(tl_renderer_read_output(off, a, &(size_t){n}) == TL_OK && tl_renderer_read_output(on, b, &(size_t){n}) == TL_OK);
     /* hard edges: neighbour luma steps above 0.2 in the aliased image */
     double ga = 0, gb = 0, flat_change = 0;
     size_t edges = 0, flats = 0;
@@ -295,7 +296,7 @@ static void fxaa_flat_and_text_pattern_bounded(void)
     size_t n = (size_t)w * h * 4;
     uint8_t *img = malloc(n), *out = malloc(n);
     for (size_t i = 0; i < n; i += 4) img[i] = 120, img[i + 1] = 140, img[i + 2] = 90, img[i + 3] = 255;
-    TL_CHECK(tl_renderer_apply_fxaa(r, img, out, n) == TL_OK);
+    TL_CHECK(tl_renderer_apply_fxaa(r, img, out, &(size_t){n}) == TL_OK);
     int flat_max = 0;
     for (size_t i = 0; i < n; i++)
         if (i % 4 != 3) flat_max = abs((int)out[i] - (int)img[i]) > flat_max ? abs((int)out[i] - (int)img[i]) : flat_max;
@@ -317,7 +318,7 @@ static void fxaa_flat_and_text_pattern_bounded(void)
             img[i] = img[i + 1] = img[i + 2] = v;
             img[i + 3] = 255;
         }
-    TL_CHECK(tl_renderer_apply_fxaa(r, img, out, n) == TL_OK);
+    TL_CHECK(tl_renderer_apply_fxaa(r, img, out, &(size_t){n}) == TL_OK);
     double mean = 0, ink_out = 0, paper_out = 0;
     size_t ink = 0, outside = 0;
     for (uint32_t y = 0; y < h; y++)
@@ -361,7 +362,7 @@ static void fxaa_flat_and_text_pattern_bounded(void)
 
 static int all_finite(tl_renderer *r, tl_target_id id, float *buf, size_t n, size_t *bad)
 {
-    if (tl_renderer_read_target(r, id, buf, n) != TL_OK) return 0; /* not allocated */
+    if (tl_renderer_read_target(r, id, buf, &(size_t){n * sizeof *buf}) != TL_OK) return 0; /* not allocated */
     for (size_t i = 0; i < n; i++)
         if (!isfinite(buf[i])) (*bad)++;
     return 1;
@@ -398,7 +399,7 @@ static void default_scene_image_sanity(void)
     TL_CHECK(checked >= 6);
     /* a non-trivial histogram of the final image */
     uint8_t *img = malloc(n);
-    TL_CHECK(tl_renderer_read_output(r, img, n) == TL_OK);
+    TL_CHECK(tl_renderer_read_output(r, img, &(size_t){n}) == TL_OK);
     size_t hist[256] = {0}, black = 0, white = 0;
     double mean = 0;
     for (size_t i = 0; i < n; i += 4) {
@@ -422,15 +423,16 @@ static void default_scene_image_sanity(void)
 
     /* removing every light leaves only ambient and emissive: the plan drops the light pass, the
      * light buffer and RT0 (nothing reads them), and no HDR pixel gets brighter */
-    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_HDR, before, n) == TL_OK);
+    const size_t nf = n * sizeof(float);
+    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_HDR, before, &(size_t){nf}) == TL_OK);
     TL_CHECK(tl_renderer_set_lights(r, NULL, 0) == TL_OK);
     TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
-    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_LIGHT_DIFFUSE, buf, n) == TL_ERROR_INVALID_ARGUMENT);
-    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_RT0, buf, n) == TL_ERROR_INVALID_ARGUMENT);
+    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_LIGHT_DIFFUSE, buf, &(size_t){nf}) == TL_ERROR_INVALID_ARGUMENT);
+    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_RT0, buf, &(size_t){nf}) == TL_ERROR_INVALID_ARGUMENT);
     tl_frame_plan plan;
     TL_CHECK(tl_renderer_get_plan(r, &plan) == TL_OK);
     for (size_t i = 0; i < plan.pass_count; i++) TL_CHECK(plan.passes[i].pass != TL_PASS_LIGHTS);
-    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_HDR, after, n) == TL_OK);
+    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_HDR, after, &(size_t){nf}) == TL_OK);
     double sum_before = 0, sum_after = 0;
     size_t brighter = 0;
     for (size_t i = 0; i < n; i++) {
@@ -455,7 +457,7 @@ static void default_scene_image_sanity(void)
                                           {0, -1, 0}, {40, 40, 40}, 8.0f, 0, 0};
     TL_CHECK(tl_renderer_set_lights(r, more, scene->light_count + 1) == TL_OK);
     TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
-    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_HDR, after, n) == TL_OK);
+    TL_CHECK(tl_renderer_read_target(r, TL_TARGET_HDR, after, &(size_t){nf}) == TL_OK);
     size_t darker = 0, lit = 0;
     for (size_t i = 0; i < n; i++) {
         if (i % 4 == 3) continue;
@@ -476,15 +478,22 @@ static void default_scene_image_sanity(void)
 
 /* ---- bad input --------------------------------------------------------------------------- */
 
+static void capture_log(void *user, tl_log_level level, const char *message)
+{
+    if (level == TL_LOG_ERROR) snprintf((char *)user, 512, "%s", message);
+}
+
 static void renderer_bad_input(void)
 {
     TL_CHECK(ensure_context());
     if (!g_ctx) return;
     tl_renderer *r = NULL;
-    char err[512];
-    TL_CHECK(tl_renderer_create(NULL, &r, err, sizeof err) == TL_ERROR_INVALID_ARGUMENT && !r);
-    tl_renderer_desc d = {.width = 100000, .height = 10, .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx};
-    TL_CHECK(tl_renderer_create(&d, &r, err, sizeof err) == TL_ERROR_LIMIT && !r && err[0]);
+    char err[512] = "";
+    TL_CHECK(tl_renderer_create(NULL, &r) == TL_ERROR_INVALID_ARGUMENT && !r);
+    /* a failing create has no object: its message goes to the descriptor's logger */
+    tl_renderer_desc d = {.width = 100000, .height = 10, .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
+                          .logger = {capture_log, err}};
+    TL_CHECK(tl_renderer_create(&d, &r) == TL_ERROR_LIMIT && !r && strstr(err, "100000"));
     r = make_renderer(32, 32, TL_DEPTH_FORMAT_D24, 0, TL_FXAA_OFF);
     TL_CHECK(r != NULL);
     if (!r) return;

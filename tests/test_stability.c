@@ -31,16 +31,23 @@
 static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
 #define MODE_COUNT (sizeof modes / sizeof modes[0])
 
+static void capture_error(void *user, tl_log_level level, const char *message)
+{
+    if (level == TL_LOG_ERROR) snprintf((char *)user, 512, "%s", message);
+}
+
 static tl_renderer *make_renderer(tl_renderer_desc d)
 {
     d.get_proc_address = tl_context_proc_loader;
     d.get_proc_address_user = g_ctx;
+    d.keep_targets = TL_TARGETS_ALL; /* every target is read back */
+    d.synchronous_stats = 1;
+    d.logger = tl_test_logger;
     if (!d.fxaa) d.fxaa = TL_FXAA_OFF;
     tl_renderer *r = NULL;
-    char err[4096];
-    tl_result res = tl_renderer_create(&d, &r, err, sizeof err);
-    if (res != TL_OK) fprintf(stderr, "  tl_renderer_create %ux%u mode %s: %s\n", d.width, d.height,
-                              tl_render_mode_name(d.mode), err);
+    tl_result res = tl_renderer_create(&d, &r);
+    if (res != TL_OK) fprintf(stderr, "  tl_renderer_create %ux%u mode %s failed\n", d.width, d.height,
+                              tl_render_mode_name(d.mode));
     return r;
 }
 
@@ -158,7 +165,7 @@ static float *read_target(tl_renderer *r, tl_target_id id)
     tl_renderer_get_size(r, &w, &h);
     size_t n = (size_t)w * h * 4;
     float *buf = malloc(n * sizeof *buf);
-    if (buf && tl_renderer_read_target(r, id, buf, n) == TL_OK) return buf;
+    if (buf && tl_renderer_read_target(r, id, buf, &(size_t){n * sizeof *buf}) == TL_OK) return buf;
     free(buf);
     return NULL;
 }
@@ -184,7 +191,7 @@ static size_t count_nonfinite_all_targets(tl_renderer *r, const char *label, siz
     float *buf = malloc(n * sizeof *buf);
     *bad_total = 0;
     for (int t = 0; buf && t < TL_TARGET_COUNT; t++) {
-        if (tl_renderer_read_target(r, (tl_target_id)t, buf, n) != TL_OK) continue;
+        if (tl_renderer_read_target(r, (tl_target_id)t, buf, &(size_t){n * sizeof *buf}) != TL_OK) continue;
         targets++;
         size_t bad = 0, first = 0;
         for (size_t i = 0; i < n; i++)
@@ -929,7 +936,7 @@ static void stability_intensity_fp16_max(void)
                 if (bad) fprintf(stderr, "  RENDERER BUG (DESIGN 5: no NaN or Inf in any target): %s\n", label);
                 TL_CHECK_EQ_U(bad, 0);
                 uint8_t *img = malloc((size_t)W * W * 4);
-                TL_CHECK(tl_renderer_read_output(u.r, img, (size_t)W * W * 4) == TL_OK);
+                TL_CHECK(tl_renderer_read_output(u.r, img, &(size_t){(size_t)W * W * 4}) == TL_OK);
                 size_t i = ((size_t)(W / 2) * W + W / 2) * 4;
                 double hdr_max = 0.0, light_max = 0.0;
                 for (size_t k = 0; k < (size_t)W * W * 4; k++)
@@ -1019,7 +1026,7 @@ static void stability_empty_scene(void)
             }
             check_all_targets_finite(&u, label);
             uint8_t *img = malloc((size_t)64 * 64 * 4);
-            TL_CHECK(tl_renderer_read_output(u.r, img, (size_t)64 * 64 * 4) == TL_OK);
+            TL_CHECK(tl_renderer_read_output(u.r, img, &(size_t){(size_t)64 * 64 * 4}) == TL_OK);
             size_t lit = 0;
             for (size_t i = 0; i < (size_t)64 * 64 * 4; i++)
                 if (i % 4 != 3) lit += img[i] != 0 || u.f.hdr[i] != 0.0f;
@@ -1067,7 +1074,8 @@ static void stability_1x1_target(void)
         if (run_scene(&fx, (tl_renderer_desc){.mode = modes[mi], .width = 1, .height = 1, .fxaa = TL_FXAA_39}, &m.s,
                       "1x1 FXAA")) {
             uint8_t a[4], b[4];
-            TL_CHECK(tl_renderer_read_output(one.r, a, 4) == TL_OK && tl_renderer_read_output(fx.r, b, 4) == TL_OK);
+            TL_CHECK(tl_renderer_read_output(one.r, a, &(size_t){4}) == TL_OK &&
+                     tl_renderer_read_output(fx.r, b, &(size_t){4}) == TL_OK);
             printf("  %s: output (%u, %u, %u) without FXAA, (%u, %u, %u) with\n", label, a[0], a[1], a[2], b[0], b[1],
                    b[2]);
             for (int ch = 0; ch < 3; ch++) TL_CHECK(abs((int)a[ch] - (int)b[ch]) <= 1);
@@ -1122,11 +1130,12 @@ static void stability_largest_target(void)
         TL_CHECK(c.lit > 1000);
         run_free(&u);
         /* one pixel more */
-        tl_renderer_desc d = {.width = axis ? 8 : max + 1, .height = axis ? max + 1 : 8,
-                              .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx};
-        tl_renderer *r = NULL;
         char err[512] = "";
-        tl_result res = tl_renderer_create(&d, &r, err, sizeof err);
+        tl_renderer_desc d = {.width = axis ? 8 : max + 1, .height = axis ? max + 1 : 8,
+                              .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
+                              .logger = {capture_error, err}};
+        tl_renderer *r = NULL;
+        tl_result res = tl_renderer_create(&d, &r);
         printf("  %ux%u: %s, \"%s\"\n", d.width, d.height, tl_result_string(res), err);
         TL_CHECK(res == TL_ERROR_LIMIT && r == NULL && strlen(err) > 10);
         tl_renderer_destroy(r);

@@ -11,8 +11,10 @@
  *   tl_renderer_create(&(tl_renderer_desc){ .width = 1280, .height = 720,
  *                                           .get_proc_address = my_loader }, &r);
  *   tl_renderer_set_scene(r, scene);
- *   tl_renderer_render(r, NULL, &stats);
- *   tl_renderer_read_output(r, rgba, size);
+ *   tl_renderer_render(r, NULL, NULL);
+ *   size_t size = 0;
+ *   tl_renderer_read_output(r, NULL, &size);   // asks for the size: width * height * 4
+ *   tl_renderer_read_output(r, rgba, &size);
  * @endcode
  */
 #ifndef THINLIGHT_RENDERER_H
@@ -76,6 +78,11 @@ typedef void (*tl_gl_function)(void);
 /** Loader for GL entry points, e.g. tl_context_proc_loader or a wrapper of glfwGetProcAddress. */
 typedef tl_gl_function (*tl_get_proc_address_fn)(void *user, const char *name);
 
+/** Bits of tl_target_id, for tl_renderer_desc.keep_targets and the plan's read/write sets. */
+#define TL_TARGET_BIT(target) (1u << (target))
+/** Every target (tl_renderer_desc.keep_targets): each gets memory of its own. */
+#define TL_TARGETS_ALL 0xFFFFFFFFu
+
 /** Options of tl_renderer_create(); every zeroed field means its default. */
 typedef struct tl_renderer_desc {
     tl_render_mode mode;               /**< default thin-lpp */
@@ -96,6 +103,16 @@ typedef struct tl_renderer_desc {
     int fullscreen_lights;             /**< 1: shade point and spot lights over the whole screen instead
                                             of drawing their volumes (the reference the volume tests
                                             compare against; costs every light the full screen) */
+    /** Targets (TL_TARGET_BIT bits, or TL_TARGETS_ALL) the caller reads back after a frame with
+     *  tl_renderer_read_target: those the plan has get memory of their own (keeping does not
+     *  make the plan produce a target nothing needs). Other targets whose lifetimes in the frame
+     *  do not overlap share memory, so reading one that a later pass overwrote fails with
+     *  TL_ERROR_INVALID_ARGUMENT. The output is always kept. Default 0. */
+    uint32_t keep_targets;
+    /** 1: every tl_renderer_render waits for the GPU (glFinish) and reads its queries at once, so
+     *  its statistics describe that frame, as tl_renderer_wait does. Default 0: statistics come
+     *  from a small ring of queries read a few frames later, and a frame never waits. */
+    int synchronous_stats;
     tl_get_proc_address_fn get_proc_address; /**< required */
     void *get_proc_address_user;       /**< passed to get_proc_address */
     tl_allocator allocator;            /**< zeroed: malloc/free; every allocation of the renderer */
@@ -110,14 +127,14 @@ typedef enum tl_pass {
     TL_PASS_MATERIAL,      /**< thin-lpp second geometry pass, depth EQUAL */
     TL_PASS_FORWARD,       /**< forward shading with per-object light lists */
     TL_PASS_TRANSPARENT,   /**< alpha-blended materials, forward-lit after the opaque frame */
-    TL_PASS_TONEMAP,
-    TL_PASS_FXAA,          /**< or a copy when FXAA is off */
-    TL_PASS_COUNT          /**< number of values */
+    TL_PASS_TONEMAP,       /**< exposure, tone curve, sRGB encoding */
+    TL_PASS_FXAA,          /**< FXAA, when it is on */
+    TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
 /** Render targets the renderer may allocate. */
 typedef enum tl_target_id {
-    TL_TARGET_DEPTH,          /**< D24S8, or D32F(S8) reversed; fat: D32F */
+    TL_TARGET_DEPTH,          /**< D24S8, or D32F reversed; fat: D32F */
     TL_TARGET_RT0,            /**< octahedral normal + gloss */
     TL_TARGET_RT1,            /**< Y, checkerboard chroma, specular intensity, flags (thin-deferred) */
     TL_TARGET_LIGHT_DIFFUSE,  /**< light buffer (thin-lpp) */
@@ -143,31 +160,60 @@ typedef enum tl_target_id {
 
 /** Capacity of tl_frame_plan.programs. */
 #define TL_PLAN_MAX_PROGRAMS 48
+/** Application passes a renderer holds at most (tl_renderer_add_pass). */
+#define TL_MAX_APP_PASSES 8
+/** Capacity of tl_frame_plan.passes: every built-in pass plus the application passes. */
+#define TL_PLAN_MAX_PASSES (TL_PASS_COUNT + TL_MAX_APP_PASSES)
 
-/** One pass of a plan: the targets it reads and writes, as bits (1u << tl_target_id). */
+/** One pass of a plan; target sets are TL_TARGET_BIT bits. */
 typedef struct tl_plan_pass {
-    tl_pass pass;     /**< which pass */
-    uint32_t reads;   /**< targets sampled or depth-tested against */
+    tl_pass pass;     /**< which pass; TL_PASS_COUNT for an application pass */
+    char name[32];    /**< tl_pass_name, or the application pass's name */
+    uint32_t reads;   /**< targets sampled, depth-tested against or blended onto */
     uint32_t writes;  /**< targets rendered to */
+    uint32_t clears;  /**< targets cleared when the pass starts (colour 0, depth to the far value) */
 } tl_plan_pass;
+
+/** Where a target lives in the frame and which memory it uses. */
+typedef struct tl_plan_target {
+    uint32_t format;          /**< GL internal format; 0 = not allocated */
+    uint32_t bytes_per_pixel; /**< 0 = not allocated */
+    uint32_t first_pass;      /**< index in tl_frame_plan.passes of its first writer */
+    uint32_t last_pass;       /**< index of its last reader; pass_count when it must survive the
+                                   frame (the output, kept targets) */
+    uint32_t block;           /**< index in tl_frame_plan.blocks of the memory it uses */
+} tl_plan_target;
+
+/** One allocation that targets with disjoint lifetimes and view-compatible formats share
+ *  (texture views of one immutable texture). */
+typedef struct tl_plan_block {
+    uint32_t bytes_per_pixel; /**< size of the allocation per pixel */
+    uint32_t targets;         /**< the targets it backs (TL_TARGET_BIT bits) */
+} tl_plan_block;
 
 /** A shader permutation the plan needs: the program's name and its preprocessor defines. */
 typedef struct tl_plan_program {
     tl_pass pass;      /**< the pass that runs it */
+    uint32_t slot;     /**< which of the pass's programs (lights: 0 point, 1 spot, 2 directional) */
     char name[32];     /**< e.g. "gbuffer", "lights.point" */
-    char defines[160]; /**< space-separated NAME or NAME=VALUE switches */
+    char defines[256]; /**< space-separated NAME or NAME=VALUE switches */
 } tl_plan_program;
 
-/** What a frame allocates, runs and compiles (DESIGN.md section 4). */
+/** What a frame allocates, runs and compiles (DESIGN.md section 4): the frame graph. */
 typedef struct tl_frame_plan {
     tl_render_mode mode;                         /**< the mode planned for */
     uint32_t width;                              /**< target width in pixels */
     uint32_t height;                             /**< target height in pixels */
     size_t pass_count;                           /**< entries used in passes */
-    tl_plan_pass passes[TL_PASS_COUNT];          /**< in execution order */
-    uint32_t targets;                            /**< allocated targets, bits (1u << tl_target_id) */
+    tl_plan_pass passes[TL_PLAN_MAX_PASSES];     /**< in execution order; passes nobody reads are culled */
+    uint32_t targets;                            /**< allocated targets (TL_TARGET_BIT bits) */
     uint32_t target_bytes_per_pixel[TL_TARGET_COUNT]; /**< 0 = not allocated */
+    tl_plan_target target_info[TL_TARGET_COUNT]; /**< lifetime and memory of each allocated target */
+    size_t block_count;                          /**< entries used in blocks */
+    tl_plan_block blocks[TL_TARGET_COUNT];       /**< the allocations behind the targets */
     uint32_t bytes_per_pixel;                    /**< sum over allocated targets */
+    uint32_t allocated_bytes_per_pixel;          /**< sum over blocks: the memory actually allocated */
+    uint32_t peak_live_bytes_per_pixel;          /**< most bytes live during one pass (a lower bound) */
     uint32_t gbuffer_bytes_per_pixel;            /**< depth + G-buffer + light buffer (what the technique stores) */
     uint32_t vertex_attributes;                  /**< TL_ATTRIBUTE_* bound by the geometry passes */
     uint32_t light_types;                        /**< bits (1u << tl_light_type) drawn by the light pass */
@@ -177,28 +223,37 @@ typedef struct tl_frame_plan {
 
 /**
  * Plans a frame for `desc` (defaults resolved as tl_renderer_create does) and a scene with
- * `features`. Pure: no GL, no allocation. TL_ERROR_INVALID_ARGUMENT for NULL pointers or an option
- * out of range.
+ * `features`: selects the passes from the pass table, culls those whose outputs nobody reads,
+ * gives every target a lifetime and lets targets share memory. Pure: no GL, no allocation.
+ * TL_ERROR_INVALID_ARGUMENT for NULL pointers or an option out of range.
  */
 TL_API tl_result tl_frame_plan_build(const tl_renderer_desc *desc, const tl_scene_feature_set *features,
                                      tl_frame_plan *plan);
-/** Writes the plan as text (passes with inputs and outputs, targets with bytes per pixel,
- *  attributes, programs). Returns the length it needs without the NUL, like snprintf. */
+/** Writes the plan as text (passes with inputs, outputs and clears, targets with bytes per pixel,
+ *  lifetimes and memory, attributes, programs). Returns the length it needs without the NUL,
+ *  like snprintf; a NULL buffer asks for it. */
 TL_API size_t tl_frame_plan_format(const tl_frame_plan *plan, char *buffer, size_t size);
 
-/** What one frame cost and allocated (tl_renderer_render). */
+/** What one frame cost and allocated (tl_renderer_render, tl_renderer_wait). */
 typedef struct tl_frame_stats {
+    uint64_t frame;                     /**< which frame these figures describe (1 = the first
+                                             rendered); 0 when no frame's queries are ready yet */
+    int gpu_valid;                      /**< 1 when the GPU figures (pass_ms, fragments, bytes) are
+                                             from that frame's queries */
     double pass_ms[TL_PASS_COUNT];      /**< GPU time per pass (timer queries); 0 for passes not in the
                                              plan, -1 when unavailable */
+    double app_pass_ms[TL_MAX_APP_PASSES]; /**< GPU time of each application pass, in the order added */
     uint64_t pass_fragments[TL_PASS_COUNT]; /**< fragments that passed the depth test (samples-passed query) */
     double pass_bytes[TL_PASS_COUNT];   /**< estimate of bytes moved per pass (docs/bandwidth.md) */
     double bytes_moved;                 /**< sum of pass_bytes */
     double gpu_ms;                      /**< sum of pass_ms */
-    double cpu_ms;                      /**< wall clock of the render call incl. glFinish */
+    double cpu_ms;                      /**< CPU time the render call spent issuing commands (never waits) */
+    double wall_ms;                     /**< render call start to GPU done; synchronous statistics only, else 0 */
     size_t target_bytes[TL_TARGET_COUNT]; /**< bytes each allocated target occupies; 0 = not allocated */
     size_t gbuffer_bytes;               /**< depth + RT0 + RT1 + FAT_* */
     size_t light_buffer_bytes;          /**< LIGHT_DIFFUSE + LIGHT_SPECULAR */
     size_t total_target_bytes;          /**< sum of target_bytes */
+    size_t allocated_target_bytes;      /**< memory the targets actually occupy (shared blocks once) */
     uint32_t objects_drawn;             /**< after frustum culling, per geometry pass */
     uint32_t lights_drawn[TL_LIGHT_TYPE_COUNT_]; /**< instances per light type after culling */
     uint64_t light_fragments[TL_LIGHT_TYPE_COUNT_]; /**< pixels covered by each type's light volumes
@@ -213,10 +268,9 @@ TL_API const char *tl_pass_name(tl_pass pass);
 /** "depth", "rt0", "light.diffuse", ... ("unknown" out of range). */
 TL_API const char *tl_target_name(tl_target_id target);
 
-/** Creates the renderer in the current context. On failure *out is NULL and, when `error` is
- *  non-NULL, a message naming the problem is written there (error_size bytes, NUL-terminated). */
-TL_API tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out, char *error,
-                                    size_t error_size);
+/** Creates the renderer in the current context. On failure *out is NULL and the message naming
+ *  the problem goes to desc->logger (there is no object to ask). */
+TL_API tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out);
 /** Frees every GL object and allocation of the renderer (in its context, which must be current); NULL is ignored. */
 TL_API void tl_renderer_destroy(tl_renderer *r);
 /** The last failure's message on this renderer ("" when none). */
@@ -228,13 +282,21 @@ TL_API const char *tl_renderer_last_error(const tl_renderer *r);
 TL_API tl_result tl_renderer_set_scene(tl_renderer *r, const tl_scene *scene);
 /** Replaces the lights only (same scene geometry); re-plans when the light types change. */
 TL_API tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t count);
+/** Changes the target size (a resized window): re-plans and reallocates the targets. */
+TL_API tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height);
 
 /** The current plan; TL_ERROR_INVALID_ARGUMENT before a scene is set. */
 TL_API tl_result tl_renderer_get_plan(const tl_renderer *r, tl_frame_plan *plan);
 
-/** Renders one frame with `camera` (NULL: the scene's) into the renderer's own targets and waits
- *  for it; stats may be NULL. */
+/** Renders one frame with `camera` (NULL: the scene's) into the renderer's own targets. It does
+ *  not wait for the GPU unless tl_renderer_desc.synchronous_stats is set. `stats` may be NULL (the
+ *  frame then issues no queries); otherwise it receives the newest frame whose queries are ready
+ *  (stats->frame says which; CPU figures are of that frame too). */
 TL_API tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_frame_stats *stats);
+/** Waits until the GPU has finished every frame rendered so far (glFinish), reads their queries
+ *  and, when `stats` is non-NULL, gives the last frame's statistics. Also reports GL errors the
+ *  frames raised (TL_ERROR_GL). */
+TL_API tl_result tl_renderer_wait(tl_renderer *r, tl_frame_stats *stats);
 
 /** A framebuffer owned by the caller (GL name; 0 is the context's default framebuffer). */
 typedef struct tl_render_output {
@@ -245,28 +307,89 @@ typedef struct tl_render_output {
     uint32_t height;        /**< 0: the renderer's height */
 } tl_render_output;
 
-/** Renders one frame like tl_renderer_render, with the last pass writing into `output`. The
- *  renderer's own output target is not written (tl_renderer_read_output reads the last frame
- *  rendered with tl_renderer_render). The caller's framebuffer binding is restored to 0. */
+/**
+ * Renders one frame like tl_renderer_render, with the pass that writes the output writing into
+ * `output` instead. The renderer's own output target is not written (tl_renderer_read_output
+ * reads the last frame rendered with tl_renderer_render).
+ *
+ * The GL state it leaves, as after tl_renderer_render: framebuffer 0 bound for drawing and
+ * reading, program 0, vertex array 0, no texture or sampler on the units it used, no uniform or
+ * storage buffer on the binding points it used (0..3); blending, depth test, face culling,
+ * depth clamp, scissor and stencil tests off; depth mask and colour mask on; clip control
+ * (GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE); the viewport is the output rectangle (render_to) or
+ * the renderer's size (render). Other state is not touched.
+ */
 TL_API tl_result tl_renderer_render_to(tl_renderer *r, const tl_camera *camera, const tl_render_output *output,
                                        tl_frame_stats *stats);
+
+/** The view of the frame being rendered, as an application pass sees it (column-major matrices,
+ *  view space looks down -Z). */
+typedef struct tl_view_info {
+    float view[16];       /**< world to view */
+    float projection[16]; /**< view to clip (tl_projection_perspective for the depth format) */
+    float view_projection[16]; /**< projection * view */
+    float eye[3];         /**< camera position, world space */
+    float near_z;         /**< near plane distance */
+    float far_z;          /**< far plane distance; 0 for an infinite far plane */
+    int reversed_z;       /**< 1 with TL_DEPTH_FORMAT_D32F_REVERSED (clip control [0,1], depth 1 = near) */
+    uint32_t width;       /**< target size in pixels */
+    uint32_t height;      /**< target size in pixels */
+} tl_view_info;
+
+/** What an application pass receives. */
+typedef struct tl_app_pass_context {
+    const tl_view_info *view;              /**< the frame's view */
+    uint32_t textures[TL_TARGET_COUNT];    /**< GL texture names of the targets it declared as reads (0 otherwise) */
+    uint32_t framebuffer;                  /**< bound for drawing, with its declared writes attached
+                                                as colour attachments in tl_target_id order (and the
+                                                depth target, read-only, when it reads depth); the
+                                                viewport covers the targets */
+} tl_app_pass_context;
+
+/** An application pass's work. GL state on entry is the state tl_renderer_render_to promises on
+ *  return, with `framebuffer` bound; the pass may change any state but must not delete the
+ *  renderer's objects or write targets it did not declare. */
+typedef void (*tl_app_pass_fn)(void *user, const tl_app_pass_context *ctx);
+
+/** An application pass: inserted into every frame at a named point of the pass table. */
+typedef struct tl_app_pass_desc {
+    const char *name;   /**< unique among the renderer's application passes; 1..31 characters */
+    const char *after;  /**< run right after this built-in pass ("lights", ...); or */
+    const char *before; /**< right before this one ("tonemap", ...); exactly one of the two. A pass
+                             that the plan leaves out still marks the place */
+    uint32_t reads;     /**< targets it samples (TL_TARGET_BIT bits); they live until the pass */
+    uint32_t writes;    /**< TL_TARGET_BIT(TL_TARGET_HDR) and/or TL_TARGET_BIT(TL_TARGET_OUTPUT) */
+    tl_app_pass_fn execute; /**< required */
+    void *user;         /**< passed to execute */
+} tl_app_pass_desc;
+
+/** Adds an application pass and re-plans. TL_ERROR_INVALID_ARGUMENT for a missing or duplicate
+ *  name, an unknown anchor, reads or writes it may not declare; TL_ERROR_LIMIT beyond
+ *  TL_MAX_APP_PASSES. */
+TL_API tl_result tl_renderer_add_pass(tl_renderer *r, const tl_app_pass_desc *desc);
+/** Removes the application pass `name` and re-plans; TL_ERROR_INVALID_ARGUMENT if there is none. */
+TL_API tl_result tl_renderer_remove_pass(tl_renderer *r, const char *name);
 
 /**
  * Runs the renderer's FXAA pass (with its preset and thresholds) on a caller image: RGBA8
  * gamma-encoded, width x height of the renderer, rows bottom to top; luma is computed from RGB.
- * `out` receives the result (alpha 255). Useful to anti-alias an image rendered elsewhere.
+ * `out` receives the result (alpha 255). *size is the size in bytes of each buffer; a NULL `out`
+ * asks for the size needed (written to *size). Useful to anti-alias an image rendered elsewhere.
  */
-TL_API tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *out, size_t size);
+TL_API tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *out, size_t *size);
 
-/** Reads the final LDR image as RGBA8, rows bottom to top (GL order); size >= w*h*4. */
-TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t size);
+/** Reads the final LDR image as RGBA8, rows bottom to top (GL order). *size is the buffer's size
+ *  in bytes and receives the bytes written; a NULL `rgba` asks for the size needed. */
+TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *size);
 /**
  * Reads a target as floats, 4 per pixel, rows bottom to top: DEPTH gives (window depth, linear
  * view distance, 0, 1); RT0 the decoded normal (view space) and gloss; RT1 its raw channels in
- * [0,1]; LIGHT_*, FAT_* and HDR their RGBA; LDR and OUTPUT their colour in [0,1].
- * TL_ERROR_INVALID_ARGUMENT for a target the plan did not allocate.
+ * [0,1]; LIGHT_*, FAT_* and HDR their RGBA; LDR and OUTPUT their colour in [0,1]. *size is the
+ * buffer's size in bytes and receives the bytes written; a NULL `rgba` asks for the size needed.
+ * TL_ERROR_INVALID_ARGUMENT for a target the plan did not allocate, or one whose memory a later
+ * pass of the frame reused (list it in tl_renderer_desc.keep_targets to read it).
  */
-TL_API tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id target, float *rgba, size_t count);
+TL_API tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id target, float *rgba, size_t *size);
 /** The renderer's target size (0 x 0 for NULL); either pointer may be NULL. */
 TL_API void tl_renderer_get_size(const tl_renderer *r, uint32_t *width, uint32_t *height);
 

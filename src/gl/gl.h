@@ -109,6 +109,10 @@ typedef struct tl__format_info {
 const tl__format_info *tl__format_lookup(GLenum internal_format);
 /* Bytes per pixel from the table, 0 for unknown formats. */
 size_t tl__format_bytes_per_pixel(GLenum internal_format);
+/* The texture-view compatibility class of a colour format (GL 4.5 table 8.22: uncompressed colour
+ * formats of the same size share a class), as its size in bits; 0 for depth and stencil formats
+ * and unknown ones, which share memory with nothing. */
+unsigned tl__format_view_class(GLenum internal_format);
 
 typedef struct tl__target_desc {
     const char *label;      /* glObjectLabel of the texture, e.g. "gbuffer.rt0" */
@@ -127,6 +131,11 @@ typedef struct tl__target {
  * TL_ERROR_GL when the storage could not be allocated. `out` is zeroed on failure. */
 tl_result tl__target_create(const GladGLContext *gl, const tl__target_desc *desc, tl__target *out,
                             char *msg, size_t msg_size);
+/* A texture view (glTextureView) of `storage`'s level 0 with a view-compatible format: same size,
+ * same memory. TL_ERROR_INVALID_ARGUMENT for formats of different view classes. The view
+ * accounts for no bytes of its own (bytes = 0); the storage does. */
+tl_result tl__target_create_view(const GladGLContext *gl, const tl__target *storage, GLenum internal_format,
+                                 const char *label, tl__target *out, char *msg, size_t msg_size);
 /* Deletes the texture and zeroes `t`; a zeroed target is fine. */
 void tl__target_destroy(const GladGLContext *gl, tl__target *t);
 

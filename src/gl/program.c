@@ -6,7 +6,7 @@
 #include "msg.h"
 #include "shader_table.h"
 
-#define TL__MAX_PIECES 512
+#define TL__MAX_PIECES 1024
 #define TL__MAX_LINE_DIRECTIVES 128
 #define TL__MAX_INCLUDE_DEPTH 8
 #define TL__MAX_INCLUDED 64

@@ -58,6 +58,12 @@ size_t tl__format_bytes_per_pixel(GLenum internal_format)
     return f ? f->bytes_per_pixel : 0;
 }
 
+unsigned tl__format_view_class(GLenum internal_format)
+{
+    const tl__format_info *f = tl__format_lookup(internal_format);
+    return f && f->kind == TL__FORMAT_COLOR ? 8u * f->bytes_per_pixel : 0u;
+}
+
 tl_result tl__target_create(const GladGLContext *gl, const tl__target_desc *desc, tl__target *out,
                             char *msg, size_t msg_size)
 {
@@ -120,6 +126,33 @@ tl_result tl__target_create(const GladGLContext *gl, const tl__target_desc *desc
     out->width = desc->width;
     out->height = desc->height;
     out->bytes = pixels * f->bytes_per_pixel;
+    return TL_OK;
+}
+
+tl_result tl__target_create_view(const GladGLContext *gl, const tl__target *storage, GLenum internal_format,
+                                 const char *label, tl__target *out, char *msg, size_t msg_size)
+{
+    tl__msg(msg, msg_size, "%s", "");
+    memset(out, 0, sizeof *out);
+    unsigned cls = tl__format_view_class(internal_format);
+    if (!storage || !storage->texture || !cls || cls != tl__format_view_class(storage->internal_format)) {
+        tl__msg(msg, msg_size, "view \"%s\": format 0x%04x cannot view the storage's 0x%04x", label ? label : "",
+                (unsigned)internal_format, storage ? (unsigned)storage->internal_format : 0u);
+        return TL_ERROR_INVALID_ARGUMENT;
+    }
+    GLuint tex = 0;
+    gl->GenTextures(1, &tex); /* a view needs a name that was never bound: not glCreateTextures */
+    gl->TextureView(tex, GL_TEXTURE_2D, storage->texture, internal_format, 0, 1, 0, 1);
+    gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    tl__gl_label(gl, GL_TEXTURE, tex, label);
+    out->texture = tex;
+    out->internal_format = internal_format;
+    out->width = storage->width;
+    out->height = storage->height;
+    out->bytes = 0;
     return TL_OK;
 }
 

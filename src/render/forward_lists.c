@@ -33,22 +33,9 @@ static void tl__light_sphere(const tl_light *l, float c[3], float *radius)
     }
 }
 
-static tl_result tl__ensure_buffer(tl_renderer *r, GLuint *buf, size_t *capacity, size_t bytes)
+/* Visible lights (view space) with their world-space bounding spheres; returns how many. */
+static size_t tl__forward_visible(tl_renderer *r, const tl__view *v)
 {
-    const GladGLContext *gl = &r->gl;
-    if (bytes <= *capacity && *buf) return TL_OK;
-    size_t cap = *capacity ? *capacity : 4096;
-    while (cap < bytes) cap *= 2;
-    if (*buf) gl->DeleteBuffers(1, buf);
-    gl->CreateBuffers(1, buf);
-    gl->NamedBufferStorage(*buf, (GLsizeiptr)cap, NULL, GL_DYNAMIC_STORAGE_BIT);
-    *capacity = cap;
-    return TL_OK;
-}
-
-tl_result tl__forward_lists(tl_renderer *r, const tl__view *v, uint64_t *pairs)
-{
-    const GladGLContext *gl = &r->gl;
     size_t nvis = 0;
     for (size_t i = 0; i < r->light_count; i++) {
         const tl_light *l = &r->lights[i];
@@ -59,9 +46,8 @@ tl_result tl__forward_lists(tl_renderer *r, const tl__view *v, uint64_t *pairs)
             continue;
         tl__forward_light *fl = &r->fwd_lights[nvis];
         const float *m = v->view.m;
-        for (int k = 0; k < 3; k++) {
+        for (int k = 0; k < 3; k++)
             fl->position_radius[k] = m[k] * l->position[0] + m[4 + k] * l->position[1] + m[8 + k] * l->position[2] + m[12 + k];
-        }
         fl->position_radius[3] = l->radius;
         float dir[3] = {l->direction[0], l->direction[1], l->direction[2]};
         tl__vec3_normalize(dir);
@@ -75,21 +61,26 @@ tl_result tl__forward_lists(tl_renderer *r, const tl__view *v, uint64_t *pairs)
         fl->direction_cos_outer[3] = type == TL_LIGHT_SPOT ? l->cos_outer : -1.0f;
         fl->cos_inner[0] = type == TL_LIGHT_SPOT ? l->cos_inner : 1.0f;
         fl->cos_inner[1] = fl->cos_inner[2] = fl->cos_inner[3] = 0.0f;
-        r->fwd_spheres[nvis][0] = c[0];
-        r->fwd_spheres[nvis][1] = c[1];
-        r->fwd_spheres[nvis][2] = c[2];
+        memcpy(r->fwd_spheres[nvis], c, sizeof c);
         r->fwd_spheres[nvis][3] = type == TL_LIGHT_DIRECTIONAL ? -1.0f : rad;
         r->fwd_visible[nvis++] = (uint32_t)i;
     }
+    return nvis;
+}
+
+static int tl__reaches(const float *sphere, const tl_object *o)
+{
+    return sphere[3] < 0.0f || tl__sphere_box(sphere, sphere[3], o->bounds_min, o->bounds_max);
+}
+
+tl_result tl__forward_prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec)
+{
+    size_t nvis = tl__forward_visible(r, v);
     /* lists: count first, then fill, into one index array */
     size_t total = 0;
     for (size_t o = 0; o < r->object_count; o++) {
-        const tl_object *ob = &r->objects[o];
         uint32_t n = 0;
-        for (size_t j = 0; j < nvis; j++) {
-            const float *sp = r->fwd_spheres[j];
-            n += (uint32_t)(sp[3] < 0.0f || tl__sphere_box(sp, sp[3], ob->bounds_min, ob->bounds_max));
-        }
+        for (size_t j = 0; j < nvis; j++) n += (uint32_t)tl__reaches(r->fwd_spheres[j], &r->objects[o]);
         r->fwd_first[o] = (uint32_t)total;
         r->fwd_count[o] = n;
         total += n;
@@ -97,26 +88,38 @@ tl_result tl__forward_lists(tl_renderer *r, const tl__view *v, uint64_t *pairs)
     if (total > r->fwd_index_capacity) {
         size_t cap = r->fwd_index_capacity ? r->fwd_index_capacity : 1024;
         while (cap < total) cap *= 2;
-        uint32_t *n = (uint32_t *)tl__alloc(&r->alloc, cap * sizeof *n);
+        uint32_t *n = (uint32_t *)tl__alloc_array(&r->alloc, cap, sizeof *n);
         if (!n) return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for %zu forward light indices", total);
         tl__free(&r->alloc, r->fwd_indices);
         r->fwd_indices = n;
         r->fwd_index_capacity = cap;
     }
     for (size_t o = 0; o < r->object_count; o++) {
-        const tl_object *ob = &r->objects[o];
         uint32_t *dst = r->fwd_indices + r->fwd_first[o];
-        for (size_t j = 0; j < nvis; j++) {
-            const float *sp = r->fwd_spheres[j];
-            if (sp[3] < 0.0f || tl__sphere_box(sp, sp[3], ob->bounds_min, ob->bounds_max)) *dst++ = (uint32_t)j;
-        }
+        for (size_t j = 0; j < nvis; j++)
+            if (tl__reaches(r->fwd_spheres[j], &r->objects[o])) *dst++ = (uint32_t)j;
     }
-    *pairs = total;
-    tl__ensure_buffer(r, &r->ssbo_lights, &r->ssbo_lights_capacity, (nvis ? nvis : 1) * sizeof(tl__forward_light));
-    tl__ensure_buffer(r, &r->ssbo_indices, &r->ssbo_indices_capacity, (total ? total : 1) * sizeof(uint32_t));
-    if (nvis) gl->NamedBufferSubData(r->ssbo_lights, 0, (GLsizeiptr)(nvis * sizeof(tl__forward_light)), r->fwd_lights);
-    if (total) gl->NamedBufferSubData(r->ssbo_indices, 0, (GLsizeiptr)(total * sizeof(uint32_t)), r->fwd_indices);
-    gl->BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, r->ssbo_lights);
-    gl->BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, r->ssbo_indices);
+    r->fwd_light_count = nvis;
+    r->fwd_index_count = total;
+    rec->st.forward_light_pairs = total;
+    rec->stream_bytes += (nvis + 1) * sizeof(tl__forward_light) + (total + 1) * sizeof(uint32_t) + 2 * r->ssbo_align;
     return TL_OK;
+}
+
+/* Lights and lists into the frame's stream, bound to the forward shader's storage blocks. */
+void tl__forward_upload(tl_renderer *r)
+{
+    const GladGLContext *gl = &r->gl;
+    size_t nl = r->fwd_light_count ? r->fwd_light_count : 1, ni = r->fwd_index_count ? r->fwd_index_count : 1;
+    size_t lo = 0, io = 0;
+    void *l = tl__stream_reserve(&r->stream, nl * sizeof(tl__forward_light), r->ssbo_align, &lo);
+    void *i = tl__stream_reserve(&r->stream, ni * sizeof(uint32_t), r->ssbo_align, &io);
+    if (!l || !i) return;
+    if (r->fwd_light_count) memcpy(l, r->fwd_lights, r->fwd_light_count * sizeof(tl__forward_light));
+    else memset(l, 0, sizeof(tl__forward_light));
+    if (r->fwd_index_count) memcpy(i, r->fwd_indices, r->fwd_index_count * sizeof(uint32_t));
+    else memset(i, 0, sizeof(uint32_t));
+    tl__stream_bind_range(gl, &r->stream, GL_SHADER_STORAGE_BUFFER, TL__SSBO_FORWARD_LIGHTS, lo,
+                          nl * sizeof(tl__forward_light));
+    tl__stream_bind_range(gl, &r->stream, GL_SHADER_STORAGE_BUFFER, TL__SSBO_FORWARD_INDICES, io, ni * sizeof(uint32_t));
 }

@@ -1,8 +1,14 @@
-/* Low-poly light volumes that contain the true light shapes: a UV sphere scaled by the inverse of
- * its inradius, and a cone whose base polygon is scaled by 1 / cos(pi / segments). */
+/* Light volumes: low-poly meshes that contain the true light shapes (a UV sphere scaled by the
+ * inverse of its inradius, a cone whose base polygon is scaled by 1 / cos(pi / segments)), their
+ * vertex arrays, and each frame's instances: the visible lights by type, those the camera is
+ * outside of first (drawn by their front faces), then those that contain the camera or cross the
+ * near plane (back faces). */
 #include <math.h>
+#include <stddef.h>
+#include <string.h>
 
 #include "light_volumes.h"
+#include "renderer_internal.h"
 
 static float tl__plane_distance(const float *a, const float *b, const float *c)
 {
@@ -70,4 +76,119 @@ void tl__cone_volume(tl__volume_mesh *m)
     }
     m->vertex_count = nv;
     m->index_count = ni;
+}
+
+void tl__light_volumes_create(tl_renderer *r)
+{
+    const GladGLContext *gl = &r->gl;
+    tl__volume_mesh mesh;
+    for (int v = 0; v < 2; v++) {
+        if (v == 0) tl__sphere_volume(&mesh);
+        else tl__cone_volume(&mesh);
+        gl->CreateBuffers(1, &r->vbo_volume[v]);
+        gl->NamedBufferStorage(r->vbo_volume[v], (GLsizeiptr)(mesh.vertex_count * 12u), mesh.vertices, 0);
+        gl->CreateBuffers(1, &r->ibo_volume[v]);
+        gl->NamedBufferStorage(r->ibo_volume[v], (GLsizeiptr)(mesh.index_count * 4u), mesh.indices, 0);
+        tl__gl_label(gl, GL_BUFFER, r->vbo_volume[v], v ? "buffer.volume.cone" : "buffer.volume.sphere");
+        r->volume_index_count[v] = mesh.index_count;
+    }
+    gl->CreateVertexArrays(TL__LIGHT_KINDS, r->vao_light);
+    static const char *const names[TL__LIGHT_KINDS] = {"vao.lights.point", "vao.lights.spot", "vao.lights.directional"};
+    const GLuint offs[4] = {offsetof(tl__instance, position_radius), offsetof(tl__instance, color),
+                            offsetof(tl__instance, direction_cos_outer), offsetof(tl__instance, cos_inner)};
+    for (int k = 0; k < TL__LIGHT_KINDS; k++) {
+        GLuint vao = r->vao_light[k];
+        if (k < 2) {
+            gl->VertexArrayVertexBuffer(vao, 0, r->vbo_volume[k], 0, 12);
+            gl->VertexArrayElementBuffer(vao, r->ibo_volume[k]);
+            gl->EnableVertexArrayAttrib(vao, 0);
+            gl->VertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
+            gl->VertexArrayAttribBinding(vao, 0, 0);
+        }
+        gl->VertexArrayBindingDivisor(vao, 1, 1);
+        for (GLuint a = 0; a < 4; a++) {
+            gl->EnableVertexArrayAttrib(vao, a + 1);
+            gl->VertexArrayAttribFormat(vao, a + 1, a == 3 ? 1 : 4, GL_FLOAT, GL_FALSE, offs[a]);
+            gl->VertexArrayAttribBinding(vao, a + 1, 1);
+        }
+        tl__gl_label(gl, GL_VERTEX_ARRAY, vao, names[k]);
+    }
+}
+
+void tl__light_volumes_destroy(tl_renderer *r)
+{
+    const GladGLContext *gl = &r->gl;
+    if (r->vao_light[0]) gl->DeleteVertexArrays(TL__LIGHT_KINDS, r->vao_light);
+    if (r->vbo_volume[0]) gl->DeleteBuffers(2, r->vbo_volume);
+    if (r->ibo_volume[0]) gl->DeleteBuffers(2, r->ibo_volume);
+    memset(r->vao_light, 0, sizeof r->vao_light);
+    memset(r->vbo_volume, 0, sizeof r->vbo_volume);
+    memset(r->ibo_volume, 0, sizeof r->ibo_volume);
+}
+
+/* -1: culled; 0: the camera is inside or the near plane may cut it; 1: outside (front faces). */
+static int tl__light_side(const tl_renderer *r, const tl__view *v, const tl_light *l, int type)
+{
+    if (type == TL_LIGHT_DIRECTIONAL) return 0;
+    if (l->radius <= 0.0f || !tl__sphere_visible((float(*)[4])v->planes, l->position, l->radius * 1.2f)) return -1;
+    /* bounding sphere of the volume mesh (sphere: < 1.2 r; cone: apex to base rim) */
+    float co = l->cos_outer > 0.05f ? l->cos_outer : 0.05f;
+    float bound = type == TL_LIGHT_SPOT ? l->radius * 1.2f / co : l->radius * 1.2f;
+    float d2 = 0.0f;
+    for (int a = 0; a < 3; a++) d2 += (l->position[a] - v->eye[a]) * (l->position[a] - v->eye[a]);
+    float margin = bound + 4.0f * v->near_z;
+    return !r->desc.fullscreen_lights && d2 > margin * margin;
+}
+
+static void tl__instance_fill(const tl_light *l, int type, tl__instance *in)
+{
+    float dir[3] = {l->direction[0], l->direction[1], l->direction[2]};
+    tl__vec3_normalize(dir);
+    if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f) dir[1] = -1.0f;
+    memcpy(in->position_radius, l->position, sizeof(float) * 3);
+    in->position_radius[3] = l->radius;
+    memcpy(in->color, l->color, sizeof(float) * 3);
+    in->color[3] = 0.0f;
+    memcpy(in->direction_cos_outer, dir, sizeof dir);
+    in->direction_cos_outer[3] = type == TL_LIGHT_SPOT ? l->cos_outer : -1.0f;
+    in->cos_inner = type == TL_LIGHT_SPOT ? l->cos_inner : 1.0f;
+}
+
+tl_result tl__lights_prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec)
+{
+    size_t n = 0;
+    for (int k = 0; k < TL__LIGHT_KINDS; k++) {
+        r->instance_base[k] = n;
+        r->instance_count[k] = r->instance_outside[k] = 0;
+        for (int pass = 0; pass < 2; pass++)
+            for (size_t i = 0; i < r->light_count; i++) {
+                const tl_light *l = &r->lights[i];
+                int type = l->type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : (int)l->type;
+                if (type - 1 != k) continue;
+                int side = tl__light_side(r, v, l, type);
+                if (side < 0 || side != (pass == 0)) continue;
+                tl__instance_fill(l, type, &r->instances[n++]);
+                r->instance_count[k]++;
+                r->instance_outside[k] += (size_t)side;
+            }
+        rec->st.lights_drawn[k + 1] = (uint32_t)r->instance_count[k];
+    }
+    rec->stream_bytes += n * sizeof(tl__instance) + 16;
+    return TL_OK;
+}
+
+void tl__lights_upload(tl_renderer *r)
+{
+    const GladGLContext *gl = &r->gl;
+    size_t total = 0;
+    for (int k = 0; k < TL__LIGHT_KINDS; k++) total += r->instance_count[k];
+    size_t offset = 0;
+    uint8_t *dst = total ? (uint8_t *)tl__stream_reserve(&r->stream, total * sizeof(tl__instance), 16, &offset) : NULL;
+    if (!dst) return;
+    memcpy(dst, r->instances, total * sizeof(tl__instance));
+    for (int k = 0; k < TL__LIGHT_KINDS; k++)
+        if (r->instance_count[k])
+            gl->VertexArrayVertexBuffer(r->vao_light[k], 1, r->stream.buffer,
+                                        (GLintptr)(offset + r->instance_base[k] * sizeof(tl__instance)),
+                                        sizeof(tl__instance));
 }

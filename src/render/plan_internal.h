@@ -1,15 +1,20 @@
-/* Private planner helpers shared by plan.c and the renderer. */
+/* Private planner entry points shared by plan.c and the renderer. */
 #ifndef TL_RENDER_PLAN_INTERNAL_H
 #define TL_RENDER_PLAN_INTERNAL_H
 
-#include "thinlight/renderer.h"
+#include "pass.h"
 
 #define TL__MAX_SIZE 16384u
 
 /* Resolves zeroed fields to their defaults; TL_ERROR_INVALID_ARGUMENT for an enum out of range,
- * TL_ERROR_LIMIT for a size over TL__MAX_SIZE. */
+ * TL_ERROR_LIMIT for a size of 0 after defaults or over TL__MAX_SIZE (desc.c). */
 tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc *out);
-/* The GL internal format of a target in a (resolved) configuration. */
-unsigned tl__target_format(const tl_renderer_desc *d, tl_target_id id);
+
+/* The whole plan, with the application passes (plan.c). Pure: no GL, no allocation. */
+tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_set *features,
+                         const tl__app_pass *apps, size_t app_count, tl__plan *plan);
+
+/* Index in tl__pass_table of the built-in pass named `name`, -1 for none (pass_table.c). */
+int tl__pass_table_find(const char *name);
 
 #endif

@@ -1,52 +1,76 @@
 /* Shader permutations: compiled on first use and cached for the renderer's life, keyed by the
- * shader files and the plan's #defines, so re-planning for another scene compiles only what is new. */
+ * shader files and the plan's #defines, so re-planning for another scene compiles only what is new.
+ * Every program gets the binding points of bindings.h and the targets' texture units as #defines,
+ * so the shaders declare `layout(binding = TL_UNIT_RT0)` and no frame sets a sampler or looks up
+ * a uniform. */
 #include <stdio.h>
 #include <string.h>
 
 #include "renderer_internal.h"
+#include "targets.h"
 
-#define TL__MAX_DEFINES 24
+#define TL__MAX_DEFINES 64
+
+#define TL__BINDING_STRING(name, value) "TL_" #name "=" #value,
+static const char *const tl__binding_defines[] = {TL__BINDING_LIST(TL__BINDING_STRING)};
+#define TL__BINDING_DEFINE_COUNT (sizeof tl__binding_defines / sizeof tl__binding_defines[0])
+
+/* Splits the space-separated `defines` (copied into buf) after the fixed binding defines. */
+static size_t tl__define_list(const char *defines, char *buf, size_t buf_size, char units[][32], const char **out)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < TL__BINDING_DEFINE_COUNT; i++) out[n++] = tl__binding_defines[i];
+    for (int t = 0; t < TL_TARGET_COUNT; t++) {
+        snprintf(units[t], 32, "TL_UNIT_%s=%d", tl__targets[t].macro, t);
+        out[n++] = units[t];
+    }
+    snprintf(buf, buf_size, "%s", defines);
+    for (char *c = buf; *c && n < TL__MAX_DEFINES;) { /* strtok keeps hidden state: split by hand */
+        while (*c == ' ') *c++ = '\0';
+        if (!*c) break;
+        out[n++] = c;
+        while (*c && *c != ' ') c++;
+    }
+    return n;
+}
+
+static tl_result tl__cache_grow(tl_renderer *r)
+{
+    if (r->cache_count < r->cache_capacity) return TL_OK;
+    size_t cap = r->cache_capacity ? r->cache_capacity * 2 : 16;
+    tl__program_entry *n = (tl__program_entry *)tl__alloc_array(&r->alloc, cap, sizeof *n);
+    if (!n) return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for the program cache");
+    if (r->cache_count) memcpy(n, r->cache, r->cache_count * sizeof *n);
+    tl__free(&r->alloc, r->cache);
+    r->cache = n;
+    r->cache_capacity = cap;
+    return TL_OK;
+}
 
 tl_result tl__program_get(tl_renderer *r, const char *label, const char *vs, const char *fs, const char *defines,
                           GLuint *out)
 {
-    char key[256];
+    char key[512];
     snprintf(key, sizeof key, "%s|%s|%s", vs, fs, defines);
     for (size_t i = 0; i < r->cache_count; i++)
         if (strcmp(r->cache[i].key, key) == 0) {
             *out = r->cache[i].program;
             return TL_OK;
         }
-    if (r->cache_count == r->cache_capacity) {
-        size_t cap = r->cache_capacity ? r->cache_capacity * 2 : 16;
-        tl__program_entry *n = (tl__program_entry *)tl__alloc(&r->alloc, cap * sizeof *n);
-        if (!n) return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for the program cache");
-        if (r->cache_count) memcpy(n, r->cache, r->cache_count * sizeof *n);
-        tl__free(&r->alloc, r->cache);
-        r->cache = n;
-        r->cache_capacity = cap;
-    }
-    /* split the space-separated defines */
-    char buf[256];
-    snprintf(buf, sizeof buf, "%s", defines);
+    tl_result res = tl__cache_grow(r);
+    if (res != TL_OK) return res;
+    char buf[512], units[TL_TARGET_COUNT][32];
     const char *defs[TL__MAX_DEFINES];
-    size_t nd = 0;
-    for (char *c = buf; *c && nd < TL__MAX_DEFINES;) { /* strtok keeps hidden state: split by hand */
-        while (*c == ' ') *c++ = '\0';
-        if (!*c) break;
-        defs[nd++] = c;
-        while (*c && *c != ' ') c++;
-    }
     tl__program_desc pd = {0};
     pd.label = label;
     pd.stages[0] = (tl__shader_stage){GL_VERTEX_SHADER, vs, NULL};
     pd.stages[1] = (tl__shader_stage){GL_FRAGMENT_SHADER, fs, NULL};
     pd.defines = defs;
-    pd.define_count = nd;
+    pd.define_count = tl__define_list(defines, buf, sizeof buf, units, defs);
     char log[2048];
     GLuint p = 0;
-    tl_result res = tl__program_build(&r->gl, &pd, &p, log, sizeof log);
-    if (res != TL_OK) return tl__fail(r, res, "program %.64s (%.128s): %.2047s", label, defines, log);
+    res = tl__program_build(&r->gl, &pd, &p, log, sizeof log);
+    if (res != TL_OK) return tl__fail(r, res, "program %.64s (%.128s): %.700s", label, defines, log);
     tl__program_entry *e = &r->cache[r->cache_count++];
     snprintf(e->key, sizeof e->key, "%s", key);
     e->program = p;
@@ -61,42 +85,4 @@ void tl__program_cache_destroy(tl_renderer *r)
     tl__free(&r->alloc, r->cache);
     r->cache = NULL;
     r->cache_count = r->cache_capacity = 0;
-}
-
-tl_result tl__plan_programs(tl_renderer *r)
-{
-    memset(r->prog, 0, sizeof r->prog);
-    memset(r->prog_light, 0, sizeof r->prog_light);
-    for (size_t i = 0; i < r->plan.program_count; i++) {
-        const tl_plan_program *pp = &r->plan.programs[i];
-        const char *vs = "gbuffer.vert.glsl", *fs = NULL;
-        GLuint *slot = &r->prog[pp->pass];
-        switch (pp->pass) {
-        case TL_PASS_DEPTH_PREPASS:
-        case TL_PASS_FORWARD:
-        case TL_PASS_TRANSPARENT: fs = "forward.frag.glsl"; break;
-        case TL_PASS_GBUFFER: fs = "gbuffer.frag.glsl"; break;
-        case TL_PASS_MATERIAL: fs = "material.frag.glsl"; break;
-        case TL_PASS_LIGHTS:
-            vs = "light.vert.glsl";
-            fs = "light.frag.glsl";
-            if (strstr(pp->defines, "TL_LIGHT_TYPE=1")) slot = &r->prog_light[0];
-            else if (strstr(pp->defines, "TL_LIGHT_TYPE=2")) slot = &r->prog_light[1];
-            else slot = &r->prog_light[2];
-            break;
-        case TL_PASS_TONEMAP:
-            vs = "fullscreen.vert.glsl";
-            fs = "tonemap.frag.glsl";
-            break;
-        case TL_PASS_FXAA:
-            vs = "fullscreen.vert.glsl";
-            fs = "fxaa.frag.glsl";
-            break;
-        case TL_PASS_COUNT: break;
-        }
-        if (!fs) continue;
-        tl_result res = tl__program_get(r, pp->name, vs, fs, pp->defines, slot);
-        if (res != TL_OK) return res;
-    }
-    return tl__program_get(r, "luma", "fullscreen.vert.glsl", "luma.frag.glsl", "", &r->prog_luma);
 }

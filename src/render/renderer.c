@@ -1,30 +1,14 @@
-/* The renderer object: creation in the caller's context, plan access, read-back and the FXAA
- * entry point. Scene upload is in scene_upload.c, the frame in frame.c, planning in plan.c. */
-#include <stdarg.h>
+/* The renderer's public entry points: creation in the caller's context, scenes and lights,
+ * application passes, re-planning, frames. The work is in the files below: plan.c (what a frame
+ * is), graph.c (its GL objects), frame.c (running it), scene_upload.c, readback.c. */
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
-#include "light_volumes.h"
+#include "plan_internal.h"
 #include "renderer_internal.h"
+#include "scene_upload.h"
 
-static void *tl__default_alloc(size_t size, void *user) { (void)user; return malloc(size); }
-static void tl__default_free(void *p, void *user) { (void)user; free(p); }
-
-void *tl__alloc(const tl_allocator *a, size_t size) { return size ? a->alloc(size, a->user) : NULL; }
-void tl__free(const tl_allocator *a, void *p) { if (p) a->free(p, a->user); }
-
-tl_result tl__fail(tl_renderer *r, tl_result res, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(r->error, sizeof r->error, fmt, ap);
-    va_end(ap);
-    if (r->desc.logger.fn) r->desc.logger.fn(r->desc.logger.user, TL_LOG_ERROR, r->error);
-    return res;
-}
-
-const char *tl_renderer_last_error(const tl_renderer *r) { return r ? r->error : "no renderer"; }
+const char *tl_renderer_last_error(const tl_renderer *r) { return r ? r->log.last_error : "no renderer"; }
 
 void tl_renderer_get_size(const tl_renderer *r, uint32_t *w, uint32_t *h)
 {
@@ -35,48 +19,28 @@ void tl_renderer_get_size(const tl_renderer *r, uint32_t *w, uint32_t *h)
 tl_result tl_renderer_get_plan(const tl_renderer *r, tl_frame_plan *plan)
 {
     if (!r || !plan || !r->has_scene) return TL_ERROR_INVALID_ARGUMENT;
-    *plan = r->plan;
+    *plan = r->plan.pub;
     return TL_OK;
 }
 
-/* ---- light volumes -------------------------------------------------------------------------- */
-
-static void tl__create_light_vaos(tl_renderer *r)
+/* Re-plans from the options, the scene's features and the application passes; compiles the new
+ * plan's GL objects when it differs (never per frame). */
+static tl_result tl__replan(tl_renderer *r)
 {
-    const GladGLContext *gl = &r->gl;
-    tl__volume_mesh mesh;
-    for (int v = 0; v < 2; v++) {
-        if (v == 0) tl__sphere_volume(&mesh); else tl__cone_volume(&mesh);
-        gl->CreateBuffers(1, &r->vbo_volume[v]);
-        gl->NamedBufferStorage(r->vbo_volume[v], (GLsizeiptr)(mesh.vertex_count * 12u), mesh.vertices, 0);
-        gl->CreateBuffers(1, &r->ibo_volume[v]);
-        gl->NamedBufferStorage(r->ibo_volume[v], (GLsizeiptr)(mesh.index_count * 4u), mesh.indices, 0);
-        r->volume_index_count[v] = mesh.index_count;
+    tl__plan plan;
+    tl_result res = tl__plan_build(&r->desc, &r->features, r->apps, r->app_count, &plan);
+    if (res != TL_OK) return tl__fail(r, res, "renderer: planning the frame failed");
+    int same = r->pass_count && memcmp(&plan, &r->plan, sizeof plan) == 0;
+    if (!same) {
+        tl__queries_drain(r); /* the ring's frames refer to the old passes */
+        r->plan = plan;
+        res = tl__graph_compile(r);
+    } else if (r->has_scene && !r->programs_ready) {
+        res = tl__graph_programs(r);
     }
-    gl->CreateBuffers(TL__LIGHT_KINDS, r->vbo_instances);
-    gl->CreateVertexArrays(TL__LIGHT_KINDS, r->vao_light);
-    for (int k = 0; k < TL__LIGHT_KINDS; k++) {
-        GLuint vao = r->vao_light[k];
-        if (k < 2) {
-            gl->VertexArrayVertexBuffer(vao, 0, r->vbo_volume[k], 0, 12);
-            gl->VertexArrayElementBuffer(vao, r->ibo_volume[k]);
-            gl->EnableVertexArrayAttrib(vao, 0);
-            gl->VertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, 0);
-            gl->VertexArrayAttribBinding(vao, 0, 0);
-        }
-        gl->VertexArrayBindingDivisor(vao, 1, 1);
-        const GLuint offs[4] = {offsetof(tl__instance, position_radius), offsetof(tl__instance, color),
-                                offsetof(tl__instance, direction_cos_outer), offsetof(tl__instance, cos_inner)};
-        for (GLuint a = 0; a < 4; a++) {
-            gl->EnableVertexArrayAttrib(vao, a + 1);
-            gl->VertexArrayAttribFormat(vao, a + 1, a == 3 ? 1 : 4, GL_FLOAT, GL_FALSE, offs[a]);
-            gl->VertexArrayAttribBinding(vao, a + 1, 1);
-        }
-        static const char *const names[TL__LIGHT_KINDS] = {"vao.lights.point", "vao.lights.spot", "vao.lights.directional"};
-        tl__gl_label(gl, GL_VERTEX_ARRAY, vao, names[k]);
-    }
-    gl->CreateVertexArrays(1, &r->vao_empty);
-    tl__gl_label(gl, GL_VERTEX_ARRAY, r->vao_empty, "vao.fullscreen");
+    if (res != TL_OK) return res;
+    tl__scene_vao(r);
+    return TL_OK;
 }
 
 /* ---- create / destroy ----------------------------------------------------------------------- */
@@ -87,68 +51,68 @@ static GLADapiproc tl__load_thunk(void *user, const char *name)
     return (GLADapiproc)r->desc.get_proc_address(r->desc.get_proc_address_user, name);
 }
 
-tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out, char *error, size_t error_size)
+static tl_result tl__create_objects(tl_renderer *r)
 {
-    if (error && error_size) error[0] = '\0';
+    const GladGLContext *gl = &r->gl;
+    GLint max_size = 0, ubo_align = 0, ssbo_align = 0;
+    gl->GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    if ((GLint)r->desc.width > max_size || (GLint)r->desc.height > max_size)
+        return tl__fail(r, TL_ERROR_LIMIT, "renderer: %ux%u exceeds GL_MAX_TEXTURE_SIZE %d", r->desc.width,
+                        r->desc.height, max_size);
+    gl->GetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &ubo_align);
+    gl->GetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &ssbo_align);
+    r->ubo_align = ubo_align > 16 ? (size_t)ubo_align : 16;
+    r->ssbo_align = ssbo_align > 16 ? (size_t)ssbo_align : 16;
+    r->state.reversed = r->desc.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
+    tl__light_volumes_create(r);
+    gl->CreateVertexArrays(1, &r->vao_empty);
+    tl__gl_label(gl, GL_VERTEX_ARRAY, r->vao_empty, "vao.fullscreen");
+    gl->CreateSamplers(1, &r->sampler_linear);
+    gl->SamplerParameteri(r->sampler_linear, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl->SamplerParameteri(r->sampler_linear, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->SamplerParameteri(r->sampler_linear, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->SamplerParameteri(r->sampler_linear, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    tl__queries_create(r);
+    /* until a scene arrives: the plan of an empty scene (tone map and FXAA targets) */
+    tl_result res = tl__replan(r);
+    GLenum e = gl->GetError();
+    if (res == TL_OK && e != GL_NO_ERROR)
+        res = tl__fail(r, TL_ERROR_GL, "renderer: %s while creating resources", tl__gl_error_string(e));
+    return res;
+}
+
+tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out)
+{
     if (!out) return TL_ERROR_INVALID_ARGUMENT;
     *out = NULL;
-    if (!desc || !desc->get_proc_address) {
-        if (error && error_size) snprintf(error, error_size, "renderer: a descriptor with get_proc_address is required");
-        return TL_ERROR_INVALID_ARGUMENT;
-    }
-    tl_allocator a = desc->allocator;
-    if (!a.alloc || !a.free) {
-        a.alloc = tl__default_alloc;
-        a.free = tl__default_free;
-    }
+    if (!desc || !desc->get_proc_address)
+        return tl__logger_fail(desc ? &desc->logger : NULL, TL_ERROR_INVALID_ARGUMENT,
+                               "renderer: a descriptor with get_proc_address is required");
+    tl_allocator a;
+    if (tl__allocator_resolve(&desc->allocator, &a) != TL_OK)
+        return tl__logger_fail(&desc->logger, TL_ERROR_INVALID_ARGUMENT,
+                               "renderer: the allocator needs both alloc and free");
     tl_renderer_desc d;
     tl_result res = tl__renderer_desc_resolve(desc, &d);
-    if (res != TL_OK) {
-        char msg[160];
-        snprintf(msg, sizeof msg, "renderer: size %ux%u or an option is out of range (at most %u per side)", d.width,
-                 d.height, TL__MAX_SIZE);
-        if (error && error_size) snprintf(error, error_size, "%s", msg);
-        if (d.logger.fn) d.logger.fn(d.logger.user, TL_LOG_ERROR, msg);
-        return res;
-    }
-    tl_renderer *r = (tl_renderer *)tl__alloc(&a, sizeof *r);
-    if (!r) return TL_ERROR_OUT_OF_MEMORY;
-    memset(r, 0, sizeof *r);
+    if (res != TL_OK)
+        return tl__logger_fail(&desc->logger, res, "renderer: size %ux%u or an option is out of range (at most %u per side)",
+                               d.width, d.height, TL__MAX_SIZE);
+    tl_renderer *r = (tl_renderer *)tl__calloc(&a, 1, sizeof *r);
+    if (!r) return tl__logger_fail(&desc->logger, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory");
     r->alloc = a;
     r->desc = d;
     r->desc.allocator = a;
+    r->log.logger = d.logger;
     char msg[512];
     res = tl__gl_load(&r->gl, tl__load_thunk, r, msg, sizeof msg);
     if (res != TL_OK) {
-        tl__fail(r, res, "renderer: %s", msg);
-    } else {
-        GLint max_size = 0;
-        r->gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-        if ((GLint)d.width > max_size || (GLint)d.height > max_size)
-            res = tl__fail(r, TL_ERROR_LIMIT, "renderer: %ux%u exceeds GL_MAX_TEXTURE_SIZE %d", d.width, d.height,
-                           max_size);
+        tl__logger_fail(&d.logger, res, "renderer: %s", msg);
+        tl__free(&a, r);
+        return res;
     }
-    if (res == TL_OK) {
-        tl__create_light_vaos(r);
-        r->gl.CreateSamplers(1, &r->sampler_linear);
-        r->gl.SamplerParameteri(r->sampler_linear, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        r->gl.SamplerParameteri(r->sampler_linear, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        r->gl.SamplerParameteri(r->sampler_linear, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        r->gl.SamplerParameteri(r->sampler_linear, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-        for (int p = 0; p < TL_PASS_COUNT; p++) tl__timer_create(&r->gl, tl_pass_name((tl_pass)p), &r->timers[p]);
-        r->gl.GenQueries(TL_PASS_COUNT, r->queries);
-        r->gl.GenQueries(TL__LIGHT_KINDS, r->light_queries);
-        /* until a scene arrives: the plan of an empty scene (tone map and FXAA targets) */
-        res = tl__replan(r);
-    }
-    if (res == TL_OK) {
-        GLenum e = r->gl.GetError();
-        if (e != GL_NO_ERROR)
-            res = tl__fail(r, TL_ERROR_GL, "renderer: %s while creating resources", tl__gl_error_string(e));
-    }
+    res = tl__create_objects(r);
     if (res != TL_OK) {
-        if (error && error_size) snprintf(error, error_size, "%s", r->error);
-        if (r->gl.DeleteProgram) tl_renderer_destroy(r); else tl__free(&a, r);
+        tl_renderer_destroy(r); /* the message went to the logger with tl__fail */
         return res;
     }
     *out = r;
@@ -159,131 +123,161 @@ void tl_renderer_destroy(tl_renderer *r)
 {
     if (!r) return;
     const GladGLContext *gl = &r->gl;
-    tl__release_scene(r);
-    tl__targets_destroy(r);
+    tl__scene_release(r);
+    tl__lights_release(r);
+    tl__graph_release(r);
     tl__program_cache_destroy(r);
-    if (r->vao_light[0]) gl->DeleteVertexArrays(TL__LIGHT_KINDS, r->vao_light);
+    tl__light_volumes_destroy(r);
+    tl__queries_destroy(r);
+    tl__stream_destroy(gl, &r->stream);
     if (r->vao_empty) gl->DeleteVertexArrays(1, &r->vao_empty);
-    if (r->vbo_instances[0]) gl->DeleteBuffers(TL__LIGHT_KINDS, r->vbo_instances);
-    if (r->vbo_volume[0]) gl->DeleteBuffers(2, r->vbo_volume);
-    if (r->ibo_volume[0]) gl->DeleteBuffers(2, r->ibo_volume);
-    if (r->ssbo_lights) gl->DeleteBuffers(1, &r->ssbo_lights);
-    if (r->ssbo_indices) gl->DeleteBuffers(1, &r->ssbo_indices);
     if (r->sampler_linear) gl->DeleteSamplers(1, &r->sampler_linear);
-    if (r->queries[0]) gl->DeleteQueries(TL_PASS_COUNT, r->queries);
-    if (r->light_queries[0]) gl->DeleteQueries(TL__LIGHT_KINDS, r->light_queries);
-    for (int p = 0; p < TL_PASS_COUNT; p++) tl__timer_destroy(gl, &r->timers[p]);
-    tl__free(&r->alloc, r->fwd_indices);
     tl_allocator a = r->alloc;
     tl__free(&a, r);
 }
 
-/* ---- readback ------------------------------------------------------------------------------- */
+/* ---- scene, lights, size -------------------------------------------------------------------- */
 
-tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *out, size_t size)
+tl_result tl_renderer_set_scene(tl_renderer *r, const tl_scene *s)
 {
-    if (!r || !rgba || !out) return TL_ERROR_INVALID_ARGUMENT;
-    const GladGLContext *gl = &r->gl;
-    size_t need = (size_t)r->desc.width * r->desc.height * 4;
-    if (size < need) {
-        snprintf(r->error, sizeof r->error, "renderer: FXAA buffers of %zu bytes are too small (%zu needed)", size, need);
-        return TL_ERROR_LIMIT;
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    if (!s) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: no scene");
+    tl_result res = tl__scene_validate(r, s);
+    size_t kinds[TL__LIGHT_KINDS];
+    if (res == TL_OK) res = tl__lights_store(r, s->lights, s->light_count, kinds);
+    if (res != TL_OK) return res;
+    tl__queries_drain(r);
+    tl__scene_release(r);
+    if ((res = tl__scene_upload(r, s)) != TL_OK) return res;
+    r->has_scene = 1;
+    r->programs_ready = 0;
+    if ((res = tl__replan(r)) != TL_OK) {
+        r->has_scene = 0;
+        return res;
     }
-    if (!r->fbo_tonemap_ldr) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: FXAA is off in this renderer");
-    if (!r->prog[TL_PASS_FXAA] || !r->prog_luma) {
-        tl_result pres = tl__plan_programs(r);
-        if (pres != TL_OK) return pres;
-    }
-    while (gl->GetError() != GL_NO_ERROR) {}
-    /* the image goes into HDR-sized scratch (the output target), luma is added into LDR */
-    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    gl->TextureSubImage2D(r->targets[TL_TARGET_OUTPUT].texture, 0, 0, 0, (GLsizei)r->desc.width,
-                          (GLsizei)r->desc.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-    gl->Viewport(0, 0, (GLsizei)r->desc.width, (GLsizei)r->desc.height);
-    gl->Disable(GL_DEPTH_TEST);
-    gl->Disable(GL_BLEND);
-    gl->Disable(GL_CULL_FACE);
-    gl->BindFramebuffer(GL_FRAMEBUFFER, r->fbo_tonemap_ldr);
-    gl->UseProgram(r->prog_luma);
-    gl->BindVertexArray(r->vao_empty);
-    gl->BindTextureUnit(0, r->targets[TL_TARGET_OUTPUT].texture);
-    gl->ProgramUniform1i(r->prog_luma, gl->GetUniformLocation(r->prog_luma, "u_image"), 0);
-    gl->DrawArrays(GL_TRIANGLES, 0, 3);
-    tl__fxaa_image(r);
-    gl->BindVertexArray(0);
-    gl->UseProgram(0);
-    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
-    tl_result res = tl_renderer_read_output(r, out, size);
-    GLenum e = gl->GetError();
-    if (res == TL_OK && e != GL_NO_ERROR) {
-        snprintf(r->error, sizeof r->error, "renderer: %s in FXAA", tl__gl_error_string(e));
-        return TL_ERROR_GL;
-    }
-    return res;
+    GLenum e = r->gl.GetError();
+    if (e != GL_NO_ERROR)
+        return tl__fail(r, TL_ERROR_GL, "renderer: %s while uploading the scene", tl__gl_error_string(e));
+    return TL_OK;
 }
 
-tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t size)
+tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t count)
 {
-    if (!r || !rgba) return TL_ERROR_INVALID_ARGUMENT;
-    char msg[256];
-    tl_result res = tl__target_read(&r->gl, &r->targets[TL_TARGET_OUTPUT], GL_RGBA, GL_UNSIGNED_BYTE, rgba, size, msg,
-                                    sizeof msg);
-    if (res != TL_OK) snprintf(r->error, sizeof r->error, "renderer: reading the output: %s", msg);
-    return res;
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    size_t kinds[TL__LIGHT_KINDS];
+    tl_result res = tl__lights_store(r, lights, count, kinds);
+    if (res != TL_OK || !r->has_scene) return res;
+    tl_scene_feature_set *f = &r->features;
+    int changed = (f->point_lights > 0) != (kinds[0] > 0) || (f->spot_lights > 0) != (kinds[1] > 0) ||
+                  (f->directional_lights > 0) != (kinds[2] > 0);
+    f->point_lights = kinds[0];
+    f->spot_lights = kinds[1];
+    f->directional_lights = kinds[2];
+    /* light types decide passes and programs: re-plan when they change */
+    return changed ? tl__replan(r) : TL_OK;
 }
 
-tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id id, float *rgba, size_t count)
+tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height)
 {
-    if (!r || !rgba || (unsigned)id >= TL_TARGET_COUNT || !r->targets[id].texture) return TL_ERROR_INVALID_ARGUMENT;
-    size_t n = (size_t)r->desc.width * r->desc.height;
-    if (count < n * 4) {
-        snprintf(r->error, sizeof r->error, "renderer: buffer of %zu floats is too small (%zu needed)", count, n * 4);
-        return TL_ERROR_LIMIT;
-    }
-    char msg[256];
-    tl_result res;
-    if (id == TL_TARGET_DEPTH) {
-        /* depth into the upper quarter of the buffer, then spread out */
-        float *d = rgba + n * 3;
-        res = tl__target_read(&r->gl, &r->targets[id], GL_DEPTH_COMPONENT, GL_FLOAT, d, n * sizeof(float), msg, sizeof msg);
-        if (res == TL_OK) {
-            tl_projection pr;
-            float fov = r->camera.fov_y > 0.0f ? r->camera.fov_y : 1.0471976f;
-            tl_projection_perspective(r->desc.depth_format, fov, (float)r->desc.width / (float)r->desc.height,
-                                      r->camera.near_z > 0.0f ? r->camera.near_z : 0.1f, r->camera.far_z, &pr);
-            for (size_t i = 0; i < n; i++) {
-                float dv = d[i];
-                float lin = -tl_depth_linearize(&pr, dv);
-                rgba[4 * i + 0] = dv;
-                rgba[4 * i + 1] = lin;
-                rgba[4 * i + 2] = 0.0f;
-                rgba[4 * i + 3] = 1.0f;
-            }
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_renderer_desc d = r->desc;
+    d.width = width;
+    d.height = height;
+    GLint max_size = 0;
+    r->gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    if (!width || !height || width > TL__MAX_SIZE || height > TL__MAX_SIZE || (GLint)width > max_size ||
+        (GLint)height > max_size)
+        return tl__fail(r, width && height ? TL_ERROR_LIMIT : TL_ERROR_INVALID_ARGUMENT,
+                        "renderer: size %ux%u outside 1..%d", width, height,
+                        max_size < (GLint)TL__MAX_SIZE ? max_size : (int)TL__MAX_SIZE);
+    if (width == r->desc.width && height == r->desc.height) return TL_OK;
+    r->desc = d;
+    return tl__replan(r);
+}
+
+/* ---- application passes ---------------------------------------------------------------------- */
+
+static tl_result tl__app_check(tl_renderer *r, const tl_app_pass_desc *d, int *anchor)
+{
+    const uint32_t writable = TL_TARGET_BIT(TL_TARGET_HDR) | TL_TARGET_BIT(TL_TARGET_OUTPUT);
+    const uint32_t all = TL_TARGET_BIT(TL_TARGET_COUNT) - 1u;
+    if (!d->name || !d->name[0] || strlen(d->name) > 31 || !d->execute)
+        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: an application pass needs a name (1..31 characters) and execute");
+    for (size_t i = 0; i < r->app_count; i++)
+        if (strcmp(r->apps[i].name, d->name) == 0)
+            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: an application pass \"%s\" exists already", d->name);
+    if (r->app_count == TL_MAX_APP_PASSES)
+        return tl__fail(r, TL_ERROR_LIMIT, "renderer: at most %d application passes", TL_MAX_APP_PASSES);
+    if (!d->writes || (d->writes & ~writable) || (d->reads & ~all) || (d->reads & d->writes))
+        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
+                        "renderer: application pass \"%s\" may write only hdr and output, and not read what it writes", d->name);
+    if (!d->after == !d->before)
+        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: application pass \"%s\" needs exactly one of after and before",
+                        d->name);
+    *anchor = tl__pass_table_find(d->after ? d->after : d->before);
+    if (*anchor < 0)
+        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: application pass \"%s\": no pass \"%s\"", d->name,
+                        d->after ? d->after : d->before);
+    return TL_OK;
+}
+
+tl_result tl_renderer_add_pass(tl_renderer *r, const tl_app_pass_desc *desc)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    if (!desc) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: no application pass");
+    int anchor = -1;
+    tl_result res = tl__app_check(r, desc, &anchor);
+    if (res != TL_OK) return res;
+    tl__app_pass *a = &r->apps[r->app_count++];
+    memset(a, 0, sizeof *a);
+    a->desc = *desc;
+    snprintf(a->name, sizeof a->name, "%s", desc->name);
+    a->desc.name = a->name;
+    a->desc.after = a->desc.before = NULL;
+    a->anchor = anchor;
+    a->after = desc->after != NULL;
+    return tl__replan(r);
+}
+
+tl_result tl_renderer_remove_pass(tl_renderer *r, const char *name)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    for (size_t i = 0; name && i < r->app_count; i++)
+        if (strcmp(r->apps[i].name, name) == 0) {
+            memmove(&r->apps[i], &r->apps[i + 1], (r->app_count - i - 1) * sizeof r->apps[0]);
+            r->app_count--;
+            for (size_t k = i; k < r->app_count; k++) r->apps[k].desc.name = r->apps[k].name;
+            return tl__replan(r);
         }
-    } else if (id == TL_TARGET_RT0) {
-        uint8_t *bytes = (uint8_t *)tl__alloc(&r->alloc, n * 4);
-        if (!bytes) return TL_ERROR_OUT_OF_MEMORY;
-        int ten = r->desc.rt0 == TL_RT0_RGB10A2;
-        res = tl__target_read(&r->gl, &r->targets[id], GL_RGBA, ten ? GL_UNSIGNED_INT_2_10_10_10_REV : GL_UNSIGNED_BYTE,
-                              bytes, n * 4, msg, sizeof msg);
-        for (size_t i = 0; res == TL_OK && i < n; i++) {
-            float nv[3], g;
-            if (ten) {
-                uint32_t t;
-                memcpy(&t, bytes + 4 * i, 4);
-                tl_rt0_decode_rgb10a2(t, nv, &g, NULL);
-            } else {
-                tl_rt0_decode_rgba8(bytes + 4 * i, nv, &g);
-            }
-            rgba[4 * i + 0] = nv[0];
-            rgba[4 * i + 1] = nv[1];
-            rgba[4 * i + 2] = nv[2];
-            rgba[4 * i + 3] = g;
-        }
-        tl__free(&r->alloc, bytes);
-    } else {
-        res = tl__target_read(&r->gl, &r->targets[id], GL_RGBA, GL_FLOAT, rgba, count * sizeof(float), msg, sizeof msg);
-    }
-    if (res != TL_OK) tl__fail(r, res, "renderer: reading %s: %s", tl_target_name(id), msg);
-    return res;
+    return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: no application pass \"%s\"", name ? name : "(null)");
+}
+
+/* ---- frames ---------------------------------------------------------------------------------- */
+
+static tl_result tl__need_scene(tl_renderer *r)
+{
+    if (r->has_scene) return TL_OK;
+    return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: no scene (call tl_renderer_set_scene first)");
+}
+
+tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_frame_stats *stats)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__need_scene(r);
+    return res == TL_OK ? tl__frame(r, camera, NULL, stats) : res;
+}
+
+tl_result tl_renderer_render_to(tl_renderer *r, const tl_camera *camera, const tl_render_output *output,
+                                tl_frame_stats *stats)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    if (!output) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: render_to needs an output");
+    tl_result res = tl__need_scene(r);
+    return res == TL_OK ? tl__frame(r, camera, output, stats) : res;
+}
+
+tl_result tl_renderer_wait(tl_renderer *r, tl_frame_stats *stats)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    return tl__frame_wait(r, stats);
 }

@@ -1,17 +1,24 @@
-/* The renderer's private state, shared by the files of src/render. */
+/* The renderer's private state, shared by the files of src/render. Helpers live below their
+ * users: renderer.c (public entry points) uses graph.c, frame.c, readback.c, scene_upload.c;
+ * frame.c runs the compiled passes through the pass table; the passes use draw.c,
+ * light_volumes.c and forward_lists.c; everything uses src/core and src/gl. */
 #ifndef TL_RENDER_RENDERER_INTERNAL_H
 #define TL_RENDER_RENDERER_INTERNAL_H
 
+#include "bindings.h"
+#include "core/alloc.h"
+#include "core/log.h"
 #include "gl/gl.h"
+#include "gl/state.h"
+#include "gl/stream.h"
 #include "math3d.h"
-#include "plan_internal.h"
+#include "pass.h"
 #include "thinlight/renderer.h"
 
 enum { TL__LIGHT_KINDS = 3 }; /* point, spot, directional: index = type - 1 */
+#define TL__QUERY_RING 4      /* frames whose queries may be in flight */
 
-/* Texture units of the geometry passes (material.glsl). */
-enum { TL__UNIT_ALBEDO = 2, TL__UNIT_NORMAL, TL__UNIT_MR, TL__UNIT_EMISSIVE, TL__UNIT_OCCLUSION, TL__MATERIAL_TEXTURES = 5 };
-
+/* One light volume instance (light.vert attributes 1..4), world space. */
 typedef struct tl__instance {
     float position_radius[4];
     float color[4];
@@ -27,118 +34,212 @@ typedef struct tl__forward_light {
     float cos_inner[4];
 } tl__forward_light;
 
+/* std140 block tl_frame_block of shaders/frame.glsl. */
+typedef struct tl__frame_ubo {
+    float view[16], proj[16], view_proj[16];
+    float depth_params[4]; /* a = m[10], b = m[14], c = m[11], reversed */
+    float ray_params[4];   /* m[0], m[5], m[8], m[9] */
+    float ambient[3], clear_depth;
+    float inv_size[2], exposure, fxaa_subpix;
+    float fxaa_edge_threshold, fxaa_edge_threshold_min, pad[2];
+} tl__frame_ubo;
+
+/* std430 element of tl_object_buffer (shaders/object.glsl). */
+typedef struct tl__object_gpu {
+    float model[16];
+    float normal_view[12]; /* mat3: three columns of vec4 */
+    uint32_t light_first, light_count, pad[2];
+} tl__object_gpu;
+
+/* std140 block tl_material_block of shaders/material.glsl. */
+typedef struct tl__material_ubo {
+    float albedo[3], gloss;
+    float specular[3], alpha;
+    float emissive[3], alpha_cutoff;
+    float metallic, roughness, normal_scale, occlusion_strength;
+    int32_t flags, texture_mask, pad[2];
+} tl__material_ubo;
+
 typedef struct tl__gpu_material {
-    tl_material m;
+    uint32_t flags;
     GLuint textures[TL__MATERIAL_TEXTURES]; /* albedo, normal, mr, emissive, occlusion; 0 = none */
-    int texture_mask;
 } tl__gpu_material;
 
 typedef struct tl__program_entry {
-    char key[256];
+    char key[512];
     GLuint program;
 } tl__program_entry;
 
-typedef struct tl__view {
+struct tl__view {
     tl__mat4 view, proj, view_proj;
     tl_projection projection;
     float planes[5][4];
     float clear_depth;
     float eye[3];
     float near_z;
-} tl__view;
+    tl_view_info info;
+};
+
+/* A pass of the current plan as GL objects (graph.c). */
+struct tl__compiled_pass {
+    const tl__pass_def *def; /* NULL: application pass */
+    int app;                 /* application pass index, -1 for built-in ones */
+    const tl_plan_pass *plan;
+    const tl__pass_decl *decl;
+    GLuint fbo;
+    GLuint programs[TL__PASS_MAX_PROGRAMS];
+    uint8_t clear_locations[TL__FRAMEBUFFER_MAX_COLORS];
+    uint8_t clear_count;
+    uint8_t clear_depth;
+    uint8_t bind_count;
+    uint8_t units[TL_TARGET_COUNT];
+    GLuint textures[TL_TARGET_COUNT];
+    uint8_t writes_output;
+};
+
+/* What the CPU knows about a frame (the GPU's figures arrive with its queries). */
+struct tl__frame_record {
+    tl_frame_stats st;
+    size_t indices[TL_PLAN_MAX_PASSES];   /* scene indices drawn per pass (vertex fetch) */
+    size_t instances[TL_PLAN_MAX_PASSES]; /* light instances drawn per pass */
+    size_t stream_bytes;                  /* per-frame data the prepare steps will upload */
+};
+
+typedef struct tl__query_slot {
+    GLuint time[TL_PLAN_MAX_PASSES][2];
+    GLuint samples[TL_PLAN_MAX_PASSES][TL__PASS_MAX_QUERIES];
+    int pending;
+    tl__frame_record rec;
+} tl__query_slot;
 
 struct tl_renderer {
     tl_allocator alloc;
+    tl__log log;
     tl_renderer_desc desc; /* defaults resolved */
     GladGLContext gl;
-    char error[4096];
+    tl__state state;
+    size_t ubo_align, ssbo_align;
 
-    tl_frame_plan plan;
+    /* the plan and its GL objects (graph.c) */
+    tl__plan plan;
     tl_scene_feature_set features;
-    tl__target targets[TL_TARGET_COUNT];
-    GLuint fbo[TL_PASS_COUNT];
-    GLuint fbo_tonemap_ldr; /* LDR only, for tl_renderer_apply_fxaa */
+    tl__target targets[TL_TARGET_COUNT]; /* textures or views of blocks */
+    tl__target blocks[TL_TARGET_COUNT];  /* storage of blocks shared by several targets */
+    tl__compiled_pass passes[TL_PLAN_MAX_PASSES];
+    size_t pass_count;
+    int programs_ready;
+    tl__compiled_pass luma;  /* tl_renderer_apply_fxaa's first pass (with FXAA on) */
+    tl__pass_decl luma_decl;
+    tl_plan_pass luma_plan;
+    tl__app_pass apps[TL_MAX_APP_PASSES];
+    size_t app_count;
 
-    /* programs of the current plan, owned by the cache */
-    GLuint prog[TL_PASS_COUNT];
-    GLuint prog_light[TL__LIGHT_KINDS];
-    GLuint prog_luma;
+    /* programs, cached by sources and defines for the renderer's life (programs.c) */
     tl__program_entry *cache;
     size_t cache_count, cache_capacity;
     uint32_t programs_compiled;
-
     GLuint sampler_linear;
 
-    GLuint vao_scene, vbo_scene, ibo_scene;
-    size_t scene_index_count;
+    /* the scene (scene_upload.c) */
+    GLuint vao_scene, vbo_scene, ibo_scene, vbo_object_ids, ubo_materials;
+    size_t material_stride;
     tl_object *objects;
     size_t object_count;
     tl__gpu_material *materials;
     size_t material_count;
     GLuint *tex_srgb, *tex_linear; /* per scene texture, created on first use by a material */
     size_t texture_count;
-    uint32_t *draw_order; /* scratch: object indices (transparent objects sorted far to near) */
-    float *draw_keys;
+    uint32_t *visible;   /* per frame: opaque objects in scene order, then transparent far to near */
+    float *draw_keys;    /* scratch for sorting transparent objects */
+    size_t visible_opaque, visible_transparent;
     tl_camera camera;
     float ambient[3];
     int has_scene;
 
+    /* lights (light_volumes.c) */
     tl_light *lights;
     size_t light_count;
-    tl__instance *instances; /* scratch for culled instances */
-    GLuint vbo_instances[TL__LIGHT_KINDS];
-    size_t instance_capacity[TL__LIGHT_KINDS];
+    tl__instance *instances;  /* per frame: the visible lights by type, outside volumes first */
+    size_t instance_base[TL__LIGHT_KINDS], instance_count[TL__LIGHT_KINDS], instance_outside[TL__LIGHT_KINDS];
     GLuint vao_light[TL__LIGHT_KINDS];
     GLuint vao_empty;
     GLuint vbo_volume[2], ibo_volume[2];
     uint32_t volume_index_count[2];
 
-    /* forward lists: visible lights (view space) and per-object index ranges */
+    /* forward lists (forward_lists.c): visible lights (view space) and per-object index ranges */
     tl__forward_light *fwd_lights;
     uint32_t *fwd_visible;   /* scene light index of each forward light */
     float (*fwd_spheres)[4]; /* world-space bounding sphere of each forward light; radius < 0: reaches everything */
     uint32_t *fwd_indices;
-    size_t fwd_index_capacity;
+    size_t fwd_index_capacity, fwd_light_count, fwd_index_count;
     uint32_t *fwd_first, *fwd_count; /* per object */
-    GLuint ssbo_lights, ssbo_indices;
-    size_t ssbo_lights_capacity, ssbo_indices_capacity;
 
-    tl__timer timers[TL_PASS_COUNT];
-    GLuint queries[TL_PASS_COUNT];
-    GLuint light_queries[TL__LIGHT_KINDS];
+    /* per frame */
+    tl__stream stream;
+    uint64_t frame_index;
+    double frame_start_ms;
+    tl__query_slot ring[TL__QUERY_RING];
+    int timestamps;        /* GL_TIMESTAMP queries work in this context */
+    GLint timestamp_bits;
+    tl__frame_record last; /* the last frame's CPU figures */
+    int last_measured;     /* the last frame issued queries (into ring[last_slot]) */
+    unsigned last_slot;
 };
 
-void *tl__alloc(const tl_allocator *a, size_t size);
-void tl__free(const tl_allocator *a, void *p);
-/* Records a message in r->error and sends it to the logger; returns res. */
-tl_result tl__fail(tl_renderer *r, tl_result res, const char *fmt, ...)
-#if defined(__GNUC__)
-    __attribute__((format(printf, 3, 4)))
-#endif
-    ;
+/* Records the message as the renderer's last error, logs it, returns res. */
+#define tl__fail(r, res, ...) tl__log_fail(&(r)->log, (res), __VA_ARGS__)
 
-/* programs.c: permutations built on demand and cached by (vertex, fragment, defines). */
+/* ---- the files of src/render, lowest first ---------------------------------------------------- */
+
+/* programs.c: permutations built on demand, cached by (vertex, fragment, defines). */
 tl_result tl__program_get(tl_renderer *r, const char *label, const char *vs, const char *fs, const char *defines,
                           GLuint *out);
 void tl__program_cache_destroy(tl_renderer *r);
-/* Builds every program the plan names. */
-tl_result tl__plan_programs(tl_renderer *r);
 
-/* targets.c: the plan's targets and one framebuffer per pass. */
-tl_result tl__plan_targets(tl_renderer *r);
-void tl__targets_destroy(tl_renderer *r);
-/* Re-plans from r->features; reallocates targets and programs when the plan changed. */
-tl_result tl__replan(tl_renderer *r);
+/* view.c: the camera's matrices and frustum; the per-frame uniform block. */
+tl_result tl__view_setup(tl_renderer *r, const tl_camera *c, tl__view *v);
+void tl__frame_ubo_fill(const tl_renderer *r, const tl__view *v, tl__frame_ubo *u);
+/* Only what full-screen post passes read (sizes, exposure, FXAA), for work outside a frame. */
+void tl__frame_ubo_post(const tl_renderer *r, tl__frame_ubo *u);
 
-/* scene_upload.c */
-void tl__release_scene(tl_renderer *r);
-tl_result tl__scene_vao(tl_renderer *r);
+/* draw.c: visible objects once per frame, their per-object data, drawing them in a pass. */
+typedef enum tl__draw_set { TL__DRAW_OPAQUE, TL__DRAW_TRANSPARENT } tl__draw_set;
+void tl__visibility(tl_renderer *r, const tl__view *v, tl__frame_record *rec);
+void tl__objects_fill(const tl_renderer *r, const tl__view *v, int with_lists, tl__object_gpu *out);
+void tl__draw_objects(tl_renderer *r, const tl__pass_ctx *ctx, tl__draw_set set);
 
-/* forward_lists.c: per-object light lists of the visible lights. */
-tl_result tl__forward_lists(tl_renderer *r, const tl__view *v, uint64_t *pairs);
+/* light_volumes.c: volume meshes, per-frame instances (the light pass's prepare and upload). */
+void tl__light_volumes_create(tl_renderer *r);
+void tl__light_volumes_destroy(tl_renderer *r);
+tl_result tl__lights_prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec);
+void tl__lights_upload(tl_renderer *r);
 
-/* frame.c */
-void tl__fxaa_image(tl_renderer *r); /* LDR -> OUTPUT */
-tl_result tl__setup_view(tl_renderer *r, const tl_camera *c, tl__view *v);
+/* forward_lists.c: per-object light lists of the visible lights (forward and transparent). */
+tl_result tl__forward_prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec);
+void tl__forward_upload(tl_renderer *r);
+
+/* stats.c: the query ring and the bytes-moved estimate. */
+double tl__now_ms(void);
+void tl__queries_create(tl_renderer *r);
+void tl__queries_destroy(tl_renderer *r);
+/* The ring slot for `frame`, read first (blocking) if it still holds an unread frame. */
+tl__query_slot *tl__queries_slot(tl_renderer *r, uint64_t frame);
+/* Reads every slot whose results are ready; the newest read frame's statistics in *out (0: none). */
+int tl__queries_newest(tl_renderer *r, tl_frame_stats *out);
+/* Reads every pending slot, waiting for the GPU (before the plan changes, when the caller waits). */
+void tl__queries_drain(tl_renderer *r);
+
+/* graph.c: the compile step: targets (shared memory as texture views), framebuffers, clears,
+ * texture bindings and programs of the current plan. */
+tl_result tl__graph_compile(tl_renderer *r);
+tl_result tl__graph_programs(tl_renderer *r);
+void tl__graph_release(tl_renderer *r);
+
+/* frame.c: one frame through the compiled passes; one pass on its own (apply_fxaa). */
+tl_result tl__frame(tl_renderer *r, const tl_camera *camera, const tl_render_output *out, tl_frame_stats *stats);
+/* Waits for every frame, reads their queries, reports GL errors (the public wait). */
+tl_result tl__frame_wait(tl_renderer *r, tl_frame_stats *stats);
+void tl__run_pass(tl_renderer *r, const tl__compiled_pass *cp, tl__frame_record *rec, size_t index,
+                  const tl_render_output *out);
 
 #endif

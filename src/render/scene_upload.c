@@ -1,53 +1,55 @@
-/* Scene upload: validation, geometry buffers, textures (sRGB or linear by use), materials, lights;
- * then the frame is planned from the scene's features. */
+/* Scene upload: validation, geometry buffers, the per-object instance ids, textures (sRGB or linear
+ * by use), the materials' uniform blocks, lights. The renderer plans the frame afterwards. */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "renderer_internal.h"
+#include "scene_upload.h"
 
-void tl__release_scene(tl_renderer *r)
+void tl__scene_release(tl_renderer *r)
 {
     const GladGLContext *gl = &r->gl;
+    GLuint buffers[4] = {r->vbo_scene, r->ibo_scene, r->vbo_object_ids, r->ubo_materials};
+    for (int i = 0; i < 4; i++)
+        if (buffers[i]) gl->DeleteBuffers(1, &buffers[i]);
     if (r->vao_scene) gl->DeleteVertexArrays(1, &r->vao_scene);
-    if (r->vbo_scene) gl->DeleteBuffers(1, &r->vbo_scene);
-    if (r->ibo_scene) gl->DeleteBuffers(1, &r->ibo_scene);
     for (size_t i = 0; i < r->texture_count; i++) {
         if (r->tex_srgb && r->tex_srgb[i]) gl->DeleteTextures(1, &r->tex_srgb[i]);
         if (r->tex_linear && r->tex_linear[i]) gl->DeleteTextures(1, &r->tex_linear[i]);
     }
-    tl__free(&r->alloc, r->tex_srgb);
-    tl__free(&r->alloc, r->tex_linear);
-    tl__free(&r->alloc, r->objects);
-    tl__free(&r->alloc, r->materials);
-    tl__free(&r->alloc, r->lights);
-    tl__free(&r->alloc, r->instances);
-    tl__free(&r->alloc, r->draw_order);
-    tl__free(&r->alloc, r->draw_keys);
-    tl__free(&r->alloc, r->fwd_lights);
-    tl__free(&r->alloc, r->fwd_visible);
-    tl__free(&r->alloc, r->fwd_spheres);
-    tl__free(&r->alloc, r->fwd_first);
-    tl__free(&r->alloc, r->fwd_count);
-    r->vao_scene = r->vbo_scene = r->ibo_scene = 0;
+    void *arrays[] = {r->tex_srgb, r->tex_linear, r->objects, r->materials, r->visible, r->draw_keys, r->fwd_first,
+                      r->fwd_count};
+    for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) tl__free(&r->alloc, arrays[i]);
+    r->vao_scene = r->vbo_scene = r->ibo_scene = r->vbo_object_ids = r->ubo_materials = 0;
     r->tex_srgb = r->tex_linear = NULL;
     r->objects = NULL;
     r->materials = NULL;
-    r->lights = NULL;
-    r->instances = NULL;
-    r->draw_order = NULL;
+    r->visible = NULL;
     r->draw_keys = NULL;
-    r->fwd_lights = NULL;
-    r->fwd_visible = r->fwd_first = r->fwd_count = NULL;
-    r->fwd_spheres = NULL;
-    r->texture_count = r->object_count = r->material_count = r->light_count = r->scene_index_count = 0;
+    r->fwd_first = r->fwd_count = NULL;
+    r->texture_count = r->object_count = r->material_count = 0;
     r->has_scene = 0;
 }
 
-/* The vertex array binds only the attributes the plan needs. */
-tl_result tl__scene_vao(tl_renderer *r)
+void tl__lights_release(tl_renderer *r)
 {
-    if (!r->vbo_scene) return TL_OK;
+    void *arrays[] = {r->lights, r->instances, r->fwd_lights, r->fwd_visible, r->fwd_spheres, r->fwd_indices};
+    for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) tl__free(&r->alloc, arrays[i]);
+    r->lights = NULL;
+    r->instances = NULL;
+    r->fwd_lights = NULL;
+    r->fwd_visible = NULL;
+    r->fwd_spheres = NULL;
+    r->fwd_indices = NULL;
+    r->fwd_index_capacity = r->light_count = 0;
+}
+
+/* The vertex array binds only the attributes the plan needs, plus the object id (location 4, one
+ * per instance: draw i uses base instance i). */
+void tl__scene_vao(tl_renderer *r)
+{
+    if (!r->vbo_scene) return;
     const GladGLContext *gl = &r->gl;
     if (r->vao_scene) gl->DeleteVertexArrays(1, &r->vao_scene);
     gl->CreateVertexArrays(1, &r->vao_scene);
@@ -57,22 +59,25 @@ tl_result tl__scene_vao(tl_renderer *r)
                             offsetof(tl_vertex, tangent)};
     const GLint sizes[4] = {3, 3, 2, 4};
     for (GLuint a = 0; a < 4; a++) {
-        if (!(r->plan.vertex_attributes & (1u << a))) continue;
+        if (!(r->plan.pub.vertex_attributes & (1u << a))) continue;
         gl->EnableVertexArrayAttrib(r->vao_scene, a);
         gl->VertexArrayAttribFormat(r->vao_scene, a, sizes[a], GL_FLOAT, GL_FALSE, offs[a]);
         gl->VertexArrayAttribBinding(r->vao_scene, a, 0);
     }
+    gl->VertexArrayVertexBuffer(r->vao_scene, 1, r->vbo_object_ids, 0, sizeof(uint32_t));
+    gl->VertexArrayBindingDivisor(r->vao_scene, 1, 1);
+    gl->EnableVertexArrayAttrib(r->vao_scene, 4);
+    gl->VertexArrayAttribIFormat(r->vao_scene, 4, 1, GL_UNSIGNED_INT, 0);
+    gl->VertexArrayAttribBinding(r->vao_scene, 4, 1);
     tl__gl_label(gl, GL_VERTEX_ARRAY, r->vao_scene, "vao.scene");
-    return TL_OK;
 }
 
-tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t count)
+tl_result tl__lights_store(tl_renderer *r, const tl_light *lights, size_t count, size_t kinds[TL__LIGHT_KINDS])
 {
-    if (!r) return TL_ERROR_INVALID_ARGUMENT;
     if (count && !lights) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: %zu lights but no array", count);
     if (count > (size_t)1 << 20)
         return tl__fail(r, TL_ERROR_LIMIT, "renderer: %zu lights exceed the limit of %u", count, 1u << 20);
-    size_t kinds[TL__LIGHT_KINDS] = {0};
+    memset(kinds, 0, TL__LIGHT_KINDS * sizeof kinds[0]);
     for (size_t i = 0; i < count; i++) {
         const tl_light *l = &lights[i];
         int bad = (unsigned)l->type >= TL_LIGHT_TYPE_COUNT_;
@@ -80,43 +85,49 @@ tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t 
             bad |= !isfinite(l->position[k]) || !isfinite(l->direction[k]) || !isfinite(l->color[k]);
         if (l->type != TL_LIGHT_DIRECTIONAL) bad |= !(l->radius >= 0.0f) || !isfinite(l->radius);
         if (bad) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: light %zu has a non-finite or invalid field", i);
-        if (!bad) kinds[(l->type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : l->type) - 1]++;
+        kinds[(l->type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : l->type) - 1]++;
     }
     size_t n = count ? count : 1;
-    tl_light *copy = (tl_light *)tl__alloc(&r->alloc, n * sizeof *copy);
-    tl__instance *inst = (tl__instance *)tl__alloc(&r->alloc, n * sizeof *inst);
-    tl__forward_light *fl = (tl__forward_light *)tl__alloc(&r->alloc, n * sizeof *fl);
-    uint32_t *vis = (uint32_t *)tl__alloc(&r->alloc, n * sizeof *vis);
-    float(*sph)[4] = (float(*)[4])tl__alloc(&r->alloc, n * sizeof *sph);
+    tl_light *copy = (tl_light *)tl__alloc_array(&r->alloc, n, sizeof *copy);
+    tl__instance *inst = (tl__instance *)tl__alloc_array(&r->alloc, n, sizeof *inst);
+    tl__forward_light *fl = (tl__forward_light *)tl__alloc_array(&r->alloc, n, sizeof *fl);
+    uint32_t *vis = (uint32_t *)tl__alloc_array(&r->alloc, n, sizeof *vis);
+    float(*sph)[4] = (float(*)[4])tl__alloc_array(&r->alloc, n, sizeof *sph);
     if (!copy || !inst || !fl || !vis || !sph) {
-        tl__free(&r->alloc, copy);
-        tl__free(&r->alloc, inst);
-        tl__free(&r->alloc, fl);
-        tl__free(&r->alloc, vis);
-        tl__free(&r->alloc, sph);
+        void *arrays[] = {copy, inst, fl, vis, sph};
+        for (size_t i = 0; i < 5; i++) tl__free(&r->alloc, arrays[i]);
         return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for %zu lights", count);
     }
     if (count) memcpy(copy, lights, count * sizeof *copy);
-    tl__free(&r->alloc, r->lights);
-    tl__free(&r->alloc, r->instances);
-    tl__free(&r->alloc, r->fwd_lights);
-    tl__free(&r->alloc, r->fwd_visible);
-    tl__free(&r->alloc, r->fwd_spheres);
+    tl__lights_release(r);
     r->lights = copy;
     r->instances = inst;
     r->fwd_lights = fl;
     r->fwd_visible = vis;
     r->fwd_spheres = sph;
     r->light_count = count;
-    if (!r->has_scene) return TL_OK;
-    /* light types decide passes and programs: re-plan when they change */
-    if (r->features.point_lights != kinds[0] || r->features.spot_lights != kinds[1] ||
-        r->features.directional_lights != kinds[2]) {
-        int had[3] = {r->features.point_lights > 0, r->features.spot_lights > 0, r->features.directional_lights > 0};
-        r->features.point_lights = kinds[0];
-        r->features.spot_lights = kinds[1];
-        r->features.directional_lights = kinds[2];
-        if (had[0] != (kinds[0] > 0) || had[1] != (kinds[1] > 0) || had[2] != (kinds[2] > 0)) return tl__replan(r);
+    return TL_OK;
+}
+
+tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s)
+{
+    if ((s->vertex_count && !s->vertices) || (s->index_count && !s->indices) || (s->object_count && !s->objects) ||
+        (s->material_count && !s->materials) || (s->texture_count && !s->textures) || s->index_count % 3 ||
+        s->vertex_count > UINT32_MAX || s->index_count > ((size_t)1 << 31) / 4)
+        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: inconsistent scene arrays");
+    for (size_t i = 0; i < s->index_count; i++)
+        if (s->indices[i] >= s->vertex_count)
+            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: index %zu (%u) is out of range (%zu vertices)", i,
+                            s->indices[i], s->vertex_count);
+    for (size_t i = 0; i < s->vertex_count; i++)
+        for (int k = 0; k < 3; k++)
+            if (!isfinite(s->vertices[i].position[k]))
+                return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: vertex %zu has a non-finite position", i);
+    for (size_t i = 0; i < s->object_count; i++) {
+        const tl_object *o = &s->objects[i];
+        if ((size_t)o->first_index + o->index_count > s->index_count || o->material >= s->material_count)
+            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
+                            "renderer: object %zu has an index range or material out of range", i);
     }
     return TL_OK;
 }
@@ -151,87 +162,99 @@ static GLuint tl__material_texture(tl_renderer *r, const tl_scene *s, uint32_t i
     return *slot;
 }
 
-tl_result tl_renderer_set_scene(tl_renderer *r, const tl_scene *s)
+static void tl__material_record(const tl_material *m, int texture_mask, tl__material_ubo *u)
 {
-    if (!r) return TL_ERROR_INVALID_ARGUMENT;
-    if (!s) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: no scene");
-    if ((s->vertex_count && !s->vertices) || (s->index_count && !s->indices) || (s->object_count && !s->objects) ||
-        (s->material_count && !s->materials) || (s->texture_count && !s->textures) || s->index_count % 3 ||
-        s->vertex_count > UINT32_MAX || s->index_count > ((size_t)1 << 31) / 4)
-        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: inconsistent scene arrays");
-    for (size_t i = 0; i < s->index_count; i++)
-        if (s->indices[i] >= s->vertex_count)
-            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: index %zu (%u) is out of range (%zu vertices)", i,
-                            s->indices[i], s->vertex_count);
-    for (size_t i = 0; i < s->vertex_count; i++)
-        for (int k = 0; k < 3; k++)
-            if (!isfinite(s->vertices[i].position[k]))
-                return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: vertex %zu has a non-finite position", i);
-    for (size_t i = 0; i < s->object_count; i++) {
-        const tl_object *o = &s->objects[i];
-        if ((size_t)o->first_index + o->index_count > s->index_count || o->material >= s->material_count)
-            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
-                            "renderer: object %zu has an index range or material out of range", i);
+    memset(u, 0, sizeof *u);
+    memcpy(u->albedo, m->albedo, sizeof u->albedo);
+    memcpy(u->specular, m->specular, sizeof u->specular);
+    memcpy(u->emissive, m->emissive, sizeof u->emissive);
+    u->gloss = m->gloss;
+    u->alpha = (m->flags & (TL_MATERIAL_ALPHA_MASK | TL_MATERIAL_ALPHA_BLEND)) ? m->alpha : 1.0f;
+    u->alpha_cutoff = m->alpha_cutoff;
+    u->metallic = m->metallic;
+    u->roughness = m->roughness;
+    u->normal_scale = m->normal_scale != 0.0f ? m->normal_scale : 1.0f;
+    u->occlusion_strength = m->occlusion_strength != 0.0f ? m->occlusion_strength : 1.0f;
+    u->flags = (int32_t)m->flags;
+    u->texture_mask = texture_mask;
+}
+
+/* Textures and one std140 record per material, in one immutable uniform buffer. */
+static tl_result tl__upload_materials(tl_renderer *r, const tl_scene *s)
+{
+    size_t n = s->material_count ? s->material_count : 1;
+    r->material_stride = (sizeof(tl__material_ubo) + r->ubo_align - 1) / r->ubo_align * r->ubo_align;
+    uint8_t *records = (uint8_t *)tl__calloc(&r->alloc, n, r->material_stride);
+    if (!records) return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for %zu materials", n);
+    for (size_t i = 0; i < s->material_count; i++) {
+        const tl_material *m = &s->materials[i];
+        const uint32_t idx[TL__MATERIAL_TEXTURES] = {m->albedo_texture, m->normal_texture,
+                                                     m->metallic_roughness_texture, m->emissive_texture,
+                                                     m->occlusion_texture};
+        const int srgb[TL__MATERIAL_TEXTURES] = {1, 0, 0, 1, 0};
+        int mask = 0;
+        r->materials[i].flags = m->flags;
+        for (int k = 0; k < TL__MATERIAL_TEXTURES; k++) {
+            /* a missing or unreadable texture leaves the flat factor (a warning is the loader's job) */
+            r->materials[i].textures[k] = tl__material_texture(r, s, idx[k], srgb[k]);
+            if (r->materials[i].textures[k]) mask |= 1 << k;
+        }
+        tl__material_record(m, mask, (tl__material_ubo *)(records + i * r->material_stride));
     }
-    tl__release_scene(r);
     const GladGLContext *gl = &r->gl;
-    tl_result res = tl_renderer_set_lights(r, s->lights, s->light_count);
-    if (res != TL_OK) return res;
-    size_t no = s->object_count ? s->object_count : 1;
-    r->objects = (tl_object *)tl__alloc(&r->alloc, no * sizeof *r->objects);
-    r->materials = (tl__gpu_material *)tl__alloc(&r->alloc, (s->material_count ? s->material_count : 1) *
-                                                                sizeof *r->materials);
-    r->tex_srgb = (GLuint *)tl__alloc(&r->alloc, (s->texture_count ? s->texture_count : 1) * sizeof(GLuint));
-    r->tex_linear = (GLuint *)tl__alloc(&r->alloc, (s->texture_count ? s->texture_count : 1) * sizeof(GLuint));
-    r->draw_order = (uint32_t *)tl__alloc(&r->alloc, no * sizeof(uint32_t));
-    r->draw_keys = (float *)tl__alloc(&r->alloc, no * sizeof(float));
-    r->fwd_first = (uint32_t *)tl__alloc(&r->alloc, no * sizeof(uint32_t));
-    r->fwd_count = (uint32_t *)tl__alloc(&r->alloc, no * sizeof(uint32_t));
-    if (!r->objects || !r->materials || !r->tex_srgb || !r->tex_linear || !r->draw_order || !r->draw_keys ||
-        !r->fwd_first || !r->fwd_count) {
-        tl__release_scene(r);
+    gl->CreateBuffers(1, &r->ubo_materials);
+    gl->NamedBufferStorage(r->ubo_materials, (GLsizeiptr)(n * r->material_stride), records, 0);
+    tl__gl_label(gl, GL_BUFFER, r->ubo_materials, "buffer.materials");
+    tl__free(&r->alloc, records);
+    r->material_count = s->material_count;
+    return TL_OK;
+}
+
+static GLuint tl__static_buffer(const GladGLContext *gl, size_t bytes, const void *data, const char *label)
+{
+    GLuint b = 0;
+    gl->CreateBuffers(1, &b);
+    gl->NamedBufferStorage(b, (GLsizeiptr)(bytes ? bytes : 16), bytes ? data : NULL, 0);
+    tl__gl_label(gl, GL_BUFFER, b, label);
+    return b;
+}
+
+tl_result tl__scene_upload(tl_renderer *r, const tl_scene *s)
+{
+    size_t no = s->object_count ? s->object_count : 1, nt = s->texture_count ? s->texture_count : 1;
+    r->objects = (tl_object *)tl__alloc_array(&r->alloc, no, sizeof *r->objects);
+    r->materials = (tl__gpu_material *)tl__calloc(&r->alloc, s->material_count ? s->material_count : 1,
+                                                  sizeof *r->materials);
+    r->tex_srgb = (GLuint *)tl__calloc(&r->alloc, nt, sizeof(GLuint));
+    r->tex_linear = (GLuint *)tl__calloc(&r->alloc, nt, sizeof(GLuint));
+    r->visible = (uint32_t *)tl__alloc_array(&r->alloc, no, sizeof(uint32_t));
+    r->draw_keys = (float *)tl__alloc_array(&r->alloc, no, sizeof(float));
+    r->fwd_first = (uint32_t *)tl__calloc(&r->alloc, no, sizeof(uint32_t));
+    r->fwd_count = (uint32_t *)tl__calloc(&r->alloc, no, sizeof(uint32_t));
+    uint32_t *ids = (uint32_t *)tl__alloc_array(&r->alloc, no, sizeof(uint32_t));
+    if (!r->objects || !r->materials || !r->tex_srgb || !r->tex_linear || !r->visible || !r->draw_keys ||
+        !r->fwd_first || !r->fwd_count || !ids) {
+        tl__free(&r->alloc, ids);
+        tl__scene_release(r);
         return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for the scene");
     }
     if (s->object_count) memcpy(r->objects, s->objects, s->object_count * sizeof *r->objects);
     r->object_count = s->object_count;
     r->texture_count = s->texture_count;
-    memset(r->tex_srgb, 0, (s->texture_count ? s->texture_count : 1) * sizeof(GLuint));
-    memset(r->tex_linear, 0, (s->texture_count ? s->texture_count : 1) * sizeof(GLuint));
-    for (size_t i = 0; i < s->material_count; i++) {
-        tl__gpu_material *gm = &r->materials[i];
-        const tl_material *m = &s->materials[i];
-        gm->m = *m;
-        if (gm->m.normal_scale == 0.0f) gm->m.normal_scale = 1.0f;
-        if (gm->m.occlusion_strength == 0.0f) gm->m.occlusion_strength = 1.0f;
-        const uint32_t idx[TL__MATERIAL_TEXTURES] = {m->albedo_texture, m->normal_texture,
-                                                     m->metallic_roughness_texture, m->emissive_texture,
-                                                     m->occlusion_texture};
-        const int srgb[TL__MATERIAL_TEXTURES] = {1, 0, 0, 1, 0};
-        gm->texture_mask = 0;
-        for (int k = 0; k < TL__MATERIAL_TEXTURES; k++) {
-            /* a missing or unreadable texture leaves the flat factor (a warning is the loader's job) */
-            gm->textures[k] = tl__material_texture(r, s, idx[k], srgb[k]);
-            if (gm->textures[k]) gm->texture_mask |= 1 << k;
-        }
+    tl_result res = tl__upload_materials(r, s);
+    if (res != TL_OK) {
+        tl__free(&r->alloc, ids);
+        tl__scene_release(r);
+        return res;
     }
-    r->material_count = s->material_count;
-    r->scene_index_count = s->index_count;
-    gl->CreateBuffers(1, &r->vbo_scene);
-    gl->NamedBufferStorage(r->vbo_scene, (GLsizeiptr)(s->vertex_count ? s->vertex_count * sizeof(tl_vertex) : 16),
-                           s->vertex_count ? (const void *)s->vertices : NULL, 0);
-    gl->CreateBuffers(1, &r->ibo_scene);
-    gl->NamedBufferStorage(r->ibo_scene, (GLsizeiptr)(s->index_count ? s->index_count * 4u : 16),
-                           s->index_count ? (const void *)s->indices : NULL, 0);
+    const GladGLContext *gl = &r->gl;
+    for (size_t i = 0; i < no; i++) ids[i] = (uint32_t)i;
+    r->vbo_scene = tl__static_buffer(gl, s->vertex_count * sizeof(tl_vertex), s->vertices, "buffer.vertices");
+    r->ibo_scene = tl__static_buffer(gl, s->index_count * 4u, s->indices, "buffer.indices");
+    r->vbo_object_ids = tl__static_buffer(gl, no * sizeof(uint32_t), ids, "buffer.object_ids");
+    tl__free(&r->alloc, ids);
     r->camera = s->camera;
     memcpy(r->ambient, s->ambient, sizeof r->ambient);
     tl_scene_features(s, &r->features);
-    r->has_scene = 1;
-    if ((res = tl__replan(r)) != TL_OK) {
-        r->has_scene = 0;
-        return res;
-    }
-    GLenum e = gl->GetError();
-    if (e != GL_NO_ERROR)
-        return tl__fail(r, TL_ERROR_GL, "renderer: %s while uploading the scene", tl__gl_error_string(e));
     return TL_OK;
 }

@@ -1,67 +1,35 @@
-/* The plan's render targets and one framebuffer per pass, made from the passes' declared outputs
- * (colour attachments in tl_target_id order, which the shaders' output locations follow). */
-#include <stdio.h>
-#include <string.h>
+/* The target table (targets.h). */
+#include "targets.h"
 
-#include "renderer_internal.h"
+#include "gl/gl.h"
 
-void tl__targets_destroy(tl_renderer *r)
+const tl__target_def tl__targets[TL_TARGET_COUNT] = {
+    [TL_TARGET_DEPTH] = {"depth", "DEPTH", 0, 1},
+    [TL_TARGET_RT0] = {"rt0", "RT0", 0, 1},
+    [TL_TARGET_RT1] = {"rt1", "RT1", GL_RGBA8, 1},
+    [TL_TARGET_LIGHT_DIFFUSE] = {"light.diffuse", "LIGHT_DIFFUSE", GL_RGBA16F, 1},
+    [TL_TARGET_LIGHT_SPECULAR] = {"light.specular", "LIGHT_SPECULAR", GL_RGBA16F, 1},
+    [TL_TARGET_FAT_POSITION] = {"fat.position", "FAT_POSITION", GL_RGBA32F, 1},
+    [TL_TARGET_FAT_NORMAL] = {"fat.normal", "FAT_NORMAL", GL_RGBA16F, 1},
+    [TL_TARGET_FAT_ALBEDO] = {"fat.albedo", "FAT_ALBEDO", GL_RGBA16F, 1},
+    [TL_TARGET_FAT_MATERIAL] = {"fat.material", "FAT_MATERIAL", GL_RGBA16F, 1},
+    [TL_TARGET_HDR] = {"hdr", "HDR", GL_RGBA16F, 0},
+    [TL_TARGET_LDR] = {"ldr", "LDR", GL_RGBA8, 0},
+    [TL_TARGET_OUTPUT] = {"output", "OUTPUT", GL_RGBA8, 0},
+};
+
+const char *tl_target_name(tl_target_id t) { return (unsigned)t < TL_TARGET_COUNT ? tl__targets[t].name : "unknown"; }
+
+uint32_t tl__target_format(const tl_renderer_desc *d, tl_target_id id)
 {
-    const GladGLContext *gl = &r->gl;
-    for (int p = 0; p < TL_PASS_COUNT; p++) tl__framebuffer_destroy(gl, &r->fbo[p]);
-    tl__framebuffer_destroy(gl, &r->fbo_tonemap_ldr);
-    for (int t = 0; t < TL_TARGET_COUNT; t++) tl__target_destroy(gl, &r->targets[t]);
-}
-
-static tl_result tl__fbo(tl_renderer *r, const char *label, uint32_t writes, GLuint *out)
-{
-    const tl__target *c[TL__FRAMEBUFFER_MAX_COLORS];
-    size_t n = 0;
-    for (int t = 0; t < TL_TARGET_COUNT && n < TL__FRAMEBUFFER_MAX_COLORS; t++)
-        if (t != TL_TARGET_DEPTH && (writes & (1u << t))) c[n++] = &r->targets[t];
-    char msg[256];
-    tl_result res = tl__framebuffer_create(&r->gl, label, c, n, (writes & 1u) ? &r->targets[TL_TARGET_DEPTH] : NULL,
-                                           out, msg, sizeof msg);
-    if (res != TL_OK) return tl__fail(r, res, "framebuffer %s: %s", label, msg);
-    return TL_OK;
-}
-
-tl_result tl__plan_targets(tl_renderer *r)
-{
-    tl__targets_destroy(r);
-    for (int t = 0; t < TL_TARGET_COUNT; t++) {
-        if (!(r->plan.targets & (1u << t))) continue;
-        char label[64], msg[256];
-        snprintf(label, sizeof label, "target.%s", tl_target_name((tl_target_id)t));
-        tl__target_desc td = {label, tl__target_format(&r->desc, (tl_target_id)t), r->desc.width, r->desc.height};
-        tl_result res = tl__target_create(&r->gl, &td, &r->targets[t], msg, sizeof msg);
-        if (res != TL_OK) return tl__fail(r, res, "%s: %s", label, msg);
+    if ((unsigned)id >= TL_TARGET_COUNT) return 0;
+    if (id == TL_TARGET_DEPTH) {
+        /* fat is the full-float reference: D32F. No pass uses stencil, so float depth carries
+         * none (D32F_S8 would cost 8 B/px); D24 comes packed with its stencil byte. */
+        int f32 = d->mode == TL_MODE_FAT || d->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ||
+                  d->depth_format == TL_DEPTH_FORMAT_D32F;
+        return f32 ? GL_DEPTH_COMPONENT32F : GL_DEPTH24_STENCIL8;
     }
-    for (size_t i = 0; i < r->plan.pass_count; i++) {
-        const tl_plan_pass *pp = &r->plan.passes[i];
-        char label[64];
-        snprintf(label, sizeof label, "fbo.%s", tl_pass_name(pp->pass));
-        uint32_t writes = pp->writes;
-        /* passes that test against depth attach it even when they only read it */
-        if (pp->pass != TL_PASS_TONEMAP && pp->pass != TL_PASS_FXAA) writes |= 1u << TL_TARGET_DEPTH;
-        tl_result res = tl__fbo(r, label, writes, &r->fbo[pp->pass]);
-        if (res != TL_OK) return res;
-    }
-    if (r->plan.targets & (1u << TL_TARGET_LDR))
-        return tl__fbo(r, "fbo.ldr", 1u << TL_TARGET_LDR, &r->fbo_tonemap_ldr);
-    return TL_OK;
-}
-
-tl_result tl__replan(tl_renderer *r)
-{
-    tl_frame_plan plan;
-    tl_result res = tl_frame_plan_build(&r->desc, &r->features, &plan);
-    if (res != TL_OK) return tl__fail(r, res, "renderer: planning the frame failed");
-    int same_targets = r->plan.pass_count && plan.targets == r->plan.targets && plan.pass_count == r->plan.pass_count &&
-                       memcmp(plan.passes, r->plan.passes, sizeof plan.passes) == 0;
-    r->plan = plan;
-    if (!same_targets && (res = tl__plan_targets(r)) != TL_OK) return res;
-    /* programs are compiled once a scene says which are needed (apply_fxaa compiles its own) */
-    if (r->has_scene && (res = tl__plan_programs(r)) != TL_OK) return res;
-    return tl__scene_vao(r);
+    if (id == TL_TARGET_RT0) return d->rt0 == TL_RT0_RGB10A2 ? GL_RGB10_A2 : GL_RGBA8;
+    return tl__targets[id].format;
 }

@@ -73,6 +73,11 @@ static int check_context_allocator_and_logger(void)
     return ok;
 }
 
+static void keep_error(void *user, tl_log_level level, const char *message)
+{
+    if (level == TL_LOG_ERROR) snprintf((char *)user, 256, "%s", message);
+}
+
 int main(void)
 {
     tl_context *ctx = NULL;
@@ -91,13 +96,15 @@ int main(void)
     res = tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 8, .detail = 1}, &scene);
     if (res == TL_OK)
         res = tl_renderer_create(&(tl_renderer_desc){.width = W, .height = H,
+                                                     .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
                                                      .get_proc_address = tl_context_proc_loader,
-                                                     .get_proc_address_user = ctx},
-                                 &r, error, sizeof error);
+                                                     .get_proc_address_user = ctx,
+                                                     .logger = {keep_error, error}},
+                                 &r);
     if (res == TL_OK) res = tl_renderer_set_scene(r, scene);
     if (res == TL_OK) res = tl_renderer_render(r, NULL, NULL);
-    if (res == TL_OK) res = tl_renderer_read_output(r, rgba, sizeof rgba);
-    if (res == TL_OK) res = tl_renderer_read_target(r, TL_TARGET_HDR, hdr, sizeof hdr / sizeof hdr[0]);
+    if (res == TL_OK) res = tl_renderer_read_output(r, rgba, &(size_t){sizeof rgba});
+    if (res == TL_OK) res = tl_renderer_read_target(r, TL_TARGET_HDR, hdr, &(size_t){sizeof hdr});
     if (res != TL_OK) {
         fprintf(stderr, "render: %s: %s\n", tl_result_string(res), r ? tl_renderer_last_error(r) : error);
     } else {

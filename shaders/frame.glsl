@@ -1,0 +1,22 @@
+// Per-frame and per-view data of every pass: one std140 uniform block at a fixed binding, written
+// once per frame (tl__frame_ubo in src/render/renderer_internal.h mirrors it member for member).
+
+#ifndef TL_FRAME_GLSL
+#define TL_FRAME_GLSL
+
+layout(std140, binding = TL_UBO_FRAME) uniform tl_frame_block {
+    mat4 u_view;
+    mat4 u_proj;
+    mat4 u_view_proj;
+    vec4 u_depth_params;  // a = m[10], b = m[14], c = m[11], reversed (0/1)
+    vec4 u_ray_params;    // m[0], m[5], m[8], m[9]
+    vec3 u_ambient;       // linear ambient radiance
+    float u_clear_depth;  // the depth of background pixels
+    vec2 u_inv_size;      // 1 / target size
+    float u_exposure;
+    float u_fxaa_subpix;
+    float u_fxaa_edge_threshold;
+    float u_fxaa_edge_threshold_min;
+};
+
+#endif

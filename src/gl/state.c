@@ -1,0 +1,132 @@
+/* The GL state cache (state.h). */
+#include "gl/state.h"
+
+#include <string.h>
+
+void tl__state_invalidate(tl__state *s)
+{
+    int reversed = s->reversed;
+    memset(s, 0, sizeof *s);
+    s->reversed = reversed;
+}
+
+static GLenum tl__depth_func(tl__depth_test t, int reversed)
+{
+    switch (t) {
+    case TL__DEPTH_LESS: return reversed ? GL_GREATER : GL_LESS;
+    case TL__DEPTH_EQUAL: return GL_EQUAL;
+    case TL__DEPTH_LEQUAL: return reversed ? GL_GEQUAL : GL_LEQUAL;
+    case TL__DEPTH_GEQUAL: return reversed ? GL_LEQUAL : GL_GEQUAL;
+    case TL__DEPTH_OFF: break;
+    }
+    return GL_ALWAYS;
+}
+
+static void tl__enable(const GladGLContext *gl, GLenum cap, int on)
+{
+    if (on) gl->Enable(cap);
+    else gl->Disable(cap);
+}
+
+static void tl__apply_depth(const GladGLContext *gl, const tl__state *s, const tl__pipeline *p, int all)
+{
+    if (all || (p->depth_test != 0) != (s->p.depth_test != 0)) tl__enable(gl, GL_DEPTH_TEST, p->depth_test != 0);
+    if (p->depth_test && (all || p->depth_test != s->p.depth_test))
+        gl->DepthFunc(tl__depth_func((tl__depth_test)p->depth_test, s->reversed));
+    if (all || p->depth_write != s->p.depth_write) gl->DepthMask(p->depth_write ? GL_TRUE : GL_FALSE);
+    if (all || p->depth_clamp != s->p.depth_clamp) tl__enable(gl, GL_DEPTH_CLAMP, p->depth_clamp);
+    if (all || p->clip_zero_one != s->p.clip_zero_one)
+        gl->ClipControl(GL_LOWER_LEFT, p->clip_zero_one ? GL_ZERO_TO_ONE : GL_NEGATIVE_ONE_TO_ONE);
+}
+
+static void tl__apply_blend(const GladGLContext *gl, const tl__state *s, const tl__pipeline *p, int all)
+{
+    if (all || (p->blend != 0) != (s->p.blend != 0)) tl__enable(gl, GL_BLEND, p->blend != 0);
+    if (p->blend && (all || p->blend != s->p.blend)) {
+        if (p->blend == TL__BLEND_ADD) gl->BlendFunc(GL_ONE, GL_ONE);
+        else gl->BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+        gl->BlendEquation(GL_FUNC_ADD);
+    }
+    if (all || p->color_write != s->p.color_write) {
+        GLboolean c = p->color_write ? GL_TRUE : GL_FALSE;
+        gl->ColorMask(c, c, c, c);
+    }
+}
+
+void tl__state_cull(const GladGLContext *gl, tl__state *s, tl__cull cull)
+{
+    if (s->known && cull == s->p.cull) return;
+    tl__enable(gl, GL_CULL_FACE, cull != TL__CULL_OFF);
+    if (cull != TL__CULL_OFF && (!s->known || s->p.cull != cull)) gl->CullFace(cull == TL__CULL_FRONT ? GL_FRONT : GL_BACK);
+    s->p.cull = (uint8_t)cull;
+}
+
+void tl__state_apply(const GladGLContext *gl, tl__state *s, const tl__pipeline *p)
+{
+    int all = !s->known;
+    tl__apply_depth(gl, s, p, all);
+    tl__apply_blend(gl, s, p, all);
+    if (all) {
+        gl->Disable(GL_SCISSOR_TEST);
+        gl->Disable(GL_STENCIL_TEST);
+    }
+    tl__state_cull(gl, s, (tl__cull)p->cull);
+    s->p = *p;
+    if (all) { /* bindings are unknown too */
+        s->program = s->vertex_array = s->framebuffer = (GLuint)-1;
+        s->viewport[2] = -1;
+    }
+    s->known = 1;
+}
+
+void tl__state_program(const GladGLContext *gl, tl__state *s, GLuint program)
+{
+    if (s->known && s->program == program) return;
+    gl->UseProgram(program);
+    s->program = program;
+}
+
+void tl__state_vertex_array(const GladGLContext *gl, tl__state *s, GLuint vao)
+{
+    if (s->known && s->vertex_array == vao) return;
+    gl->BindVertexArray(vao);
+    s->vertex_array = vao;
+}
+
+void tl__state_framebuffer(const GladGLContext *gl, tl__state *s, GLuint fbo)
+{
+    if (s->known && s->framebuffer == fbo) return;
+    gl->BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    s->framebuffer = fbo;
+}
+
+void tl__state_viewport(const GladGLContext *gl, tl__state *s, GLint x, GLint y, GLsizei w, GLsizei h)
+{
+    if (s->known && s->viewport[0] == x && s->viewport[1] == y && s->viewport[2] == w && s->viewport[3] == h) return;
+    gl->Viewport(x, y, w, h);
+    s->viewport[0] = x;
+    s->viewport[1] = y;
+    s->viewport[2] = w;
+    s->viewport[3] = h;
+}
+
+void tl__state_reset(const GladGLContext *gl, tl__state *s, GLuint units, GLuint buffers)
+{
+    gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl->UseProgram(0);
+    gl->BindVertexArray(0);
+    if (units) {
+        gl->BindTextures(0, (GLsizei)units, NULL);
+        gl->BindSamplers(0, (GLsizei)units, NULL);
+    }
+    if (buffers) {
+        gl->BindBuffersBase(GL_UNIFORM_BUFFER, 0, (GLsizei)buffers, NULL);
+        gl->BindBuffersBase(GL_SHADER_STORAGE_BUFFER, 0, (GLsizei)buffers, NULL);
+    }
+    const GLenum caps[] = {GL_BLEND, GL_DEPTH_TEST, GL_CULL_FACE, GL_DEPTH_CLAMP, GL_SCISSOR_TEST, GL_STENCIL_TEST};
+    for (size_t i = 0; i < sizeof caps / sizeof caps[0]; i++) gl->Disable(caps[i]);
+    gl->DepthMask(GL_TRUE);
+    gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    gl->ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+    tl__state_invalidate(s);
+}

@@ -1,0 +1,29 @@
+/* Fixed binding points of every program (GLSL `layout(binding = N)`): set once in the shaders, so
+ * no frame looks up or sets a uniform location or a sampler unit. The same list becomes #defines
+ * in front of every shader (programs.c), so C and GLSL cannot disagree. A target sampled by a
+ * pass is bound to texture unit TL_UNIT_<TARGET> = its tl_target_id (targets.c). */
+#ifndef TL_RENDER_BINDINGS_H
+#define TL_RENDER_BINDINGS_H
+
+#define TL__BINDING_LIST(X)                                                                       \
+    X(UBO_FRAME, 0)              /* per frame and view: matrices, depth, sizes, post parameters */ \
+    X(UBO_MATERIAL, 1)           /* per material: one std140 record, bound as a range */          \
+    X(SSBO_OBJECTS, 0)           /* per object: model and normal matrices, forward light range */ \
+    X(SSBO_FORWARD_LIGHTS, 1)    /* forward: the visible lights, view space */                    \
+    X(SSBO_FORWARD_INDICES, 2)   /* forward: per-object light index lists */                      \
+    X(UNIT_ALBEDO_TEXTURE, 16)   /* material textures (units below 16 are the targets') */        \
+    X(UNIT_NORMAL_TEXTURE, 17)                                                                    \
+    X(UNIT_MR_TEXTURE, 18)                                                                        \
+    X(UNIT_EMISSIVE_TEXTURE, 19)                                                                  \
+    X(UNIT_OCCLUSION_TEXTURE, 20)
+
+enum {
+#define TL__BINDING_ENUM(name, value) TL__##name = value,
+    TL__BINDING_LIST(TL__BINDING_ENUM)
+#undef TL__BINDING_ENUM
+    TL__MATERIAL_TEXTURES = 5,
+    TL__TEXTURE_UNITS_USED = 21, /* units the renderer may bind: 0 .. 20 */
+    TL__BUFFER_BINDINGS_USED = 3 /* uniform and storage binding points it may bind: 0 .. 2 */
+};
+
+#endif

@@ -1,0 +1,138 @@
+/* The compile step of the frame graph: runs when the plan changes, never per frame. It allocates
+ * each memory block of the plan (one texture; several targets with disjoint lifetimes see it
+ * through texture views of their own formats), makes one framebuffer per pass from its declared
+ * writes (colour attachments in tl_target_id order, the order of the shaders' TL_OUT_* locations),
+ * and records each pass's clears and the texture units of the targets it samples (unit = target
+ * id, as bindings.h promises the shaders). */
+#include <stdio.h>
+#include <string.h>
+
+#include "renderer_internal.h"
+#include "targets.h"
+
+void tl__graph_release(tl_renderer *r)
+{
+    const GladGLContext *gl = &r->gl;
+    for (size_t i = 0; i < r->pass_count; i++) tl__framebuffer_destroy(gl, &r->passes[i].fbo);
+    tl__framebuffer_destroy(gl, &r->luma.fbo);
+    for (int t = 0; t < TL_TARGET_COUNT; t++) {
+        tl__target_destroy(gl, &r->targets[t]);
+        tl__target_destroy(gl, &r->blocks[t]);
+    }
+    memset(r->passes, 0, sizeof r->passes);
+    memset(&r->luma, 0, sizeof r->luma);
+    r->pass_count = 0;
+    r->programs_ready = 0;
+}
+
+static tl_result tl__graph_block(tl_renderer *r, size_t b)
+{
+    const tl_frame_plan *p = &r->plan.pub;
+    const tl_plan_block *blk = &p->blocks[b];
+    char label[64], msg[256];
+    int first = -1, members = 0;
+    for (int t = 0; t < TL_TARGET_COUNT; t++)
+        if (blk->targets & TL_TARGET_BIT(t)) {
+            if (first < 0) first = t;
+            members++;
+        }
+    tl__target_desc td = {label, p->target_info[first].format, p->width, p->height};
+    tl_result res;
+    if (members == 1) { /* memory of its own: the target is the texture */
+        snprintf(label, sizeof label, "target.%s", tl_target_name((tl_target_id)first));
+        res = tl__target_create(&r->gl, &td, &r->targets[first], msg, sizeof msg);
+        if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
+        return TL_OK;
+    }
+    snprintf(label, sizeof label, "memory.%ubit.%zu", tl__format_view_class(td.internal_format), b);
+    res = tl__target_create(&r->gl, &td, &r->blocks[b], msg, sizeof msg);
+    for (int t = 0; res == TL_OK && t < TL_TARGET_COUNT; t++)
+        if (blk->targets & TL_TARGET_BIT(t)) {
+            snprintf(label, sizeof label, "target.%s", tl_target_name((tl_target_id)t));
+            res = tl__target_create_view(&r->gl, &r->blocks[b], p->target_info[t].format, label, &r->targets[t], msg,
+                                         sizeof msg);
+        }
+    if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
+    return TL_OK;
+}
+
+/* Framebuffer, clears and texture bindings of one pass. */
+static tl_result tl__graph_pass(tl_renderer *r, tl__compiled_pass *cp, const tl_plan_pass *pp, const tl__pass_decl *d)
+{
+    const tl__target *colors[TL__FRAMEBUFFER_MAX_COLORS];
+    size_t n = 0;
+    cp->plan = pp;
+    cp->decl = d;
+    for (int t = 0; t < TL_TARGET_COUNT && n < TL__FRAMEBUFFER_MAX_COLORS; t++) {
+        if (t == TL_TARGET_DEPTH || !(d->writes & TL_TARGET_BIT(t))) continue;
+        if (d->clears & TL_TARGET_BIT(t)) cp->clear_locations[cp->clear_count++] = (uint8_t)n;
+        colors[n++] = &r->targets[t];
+    }
+    cp->clear_depth = (d->clears & TL_TARGET_BIT(TL_TARGET_DEPTH)) != 0;
+    cp->writes_output = (d->writes & TL_TARGET_BIT(TL_TARGET_OUTPUT)) != 0;
+    for (int t = 0; t < TL_TARGET_COUNT; t++)
+        if (d->samples & TL_TARGET_BIT(t)) {
+            cp->units[cp->bind_count] = (uint8_t)t;
+            cp->textures[cp->bind_count++] = r->targets[t].texture;
+        }
+    char label[64], msg[256];
+    snprintf(label, sizeof label, "fbo.%s", pp->name);
+    const tl__target *depth = d->attach_depth ? &r->targets[TL_TARGET_DEPTH] : NULL;
+    tl_result res = tl__framebuffer_create(&r->gl, label, colors, n, depth, &cp->fbo, msg, sizeof msg);
+    if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
+    return TL_OK;
+}
+
+tl_result tl__graph_programs(tl_renderer *r)
+{
+    const tl_frame_plan *p = &r->plan.pub;
+    for (size_t k = 0; k < p->program_count; k++) {
+        const tl_plan_program *pr = &p->programs[k];
+        for (size_t i = 0; i < r->pass_count; i++) {
+            tl__compiled_pass *cp = &r->passes[i];
+            if (!cp->def || cp->def->id != pr->pass) continue;
+            const tl__program_src *src = &cp->def->programs[pr->slot];
+            tl_result res = tl__program_get(r, pr->name, src->vs, src->fs, pr->defines, &cp->programs[pr->slot]);
+            if (res != TL_OK) return res;
+        }
+    }
+    r->programs_ready = 1;
+    return TL_OK;
+}
+
+/* apply_fxaa's luma pass: the caller's image (in OUTPUT) into LDR. */
+static tl_result tl__graph_luma(tl_renderer *r)
+{
+    if (!r->targets[TL_TARGET_LDR].texture) return TL_OK;
+    tl__plan_input in;
+    memset(&in, 0, sizeof in);
+    memset(&r->luma_decl, 0, sizeof r->luma_decl);
+    tl__pass_luma.declare(&in, &r->luma_decl);
+    memset(&r->luma_plan, 0, sizeof r->luma_plan);
+    r->luma_plan.pass = TL_PASS_COUNT;
+    snprintf(r->luma_plan.name, sizeof r->luma_plan.name, "%s", tl__pass_luma.name);
+    r->luma_plan.reads = r->luma_decl.reads;
+    r->luma_plan.writes = r->luma_decl.writes;
+    r->luma.def = &tl__pass_luma;
+    r->luma.app = -1;
+    return tl__graph_pass(r, &r->luma, &r->luma_plan, &r->luma_decl);
+}
+
+tl_result tl__graph_compile(tl_renderer *r)
+{
+    tl__graph_release(r);
+    const tl__plan *plan = &r->plan;
+    tl_result res = TL_OK;
+    for (size_t b = 0; res == TL_OK && b < plan->pub.block_count; b++) res = tl__graph_block(r, b);
+    for (size_t i = 0; res == TL_OK && i < plan->pub.pass_count; i++) {
+        tl__compiled_pass *cp = &r->passes[i];
+        cp->def = plan->def[i];
+        cp->app = plan->app[i];
+        res = tl__graph_pass(r, cp, &plan->pub.passes[i], &plan->decl[i]);
+        r->pass_count = i + 1;
+    }
+    if (res == TL_OK) res = tl__graph_luma(r);
+    /* programs are compiled once a scene says which are needed (apply_fxaa compiles its own) */
+    if (res == TL_OK && r->has_scene) res = tl__graph_programs(r);
+    return res;
+}

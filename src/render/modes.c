@@ -1,0 +1,37 @@
+/* The render modes as one table (pass.h): how each lays out its G-buffer and light pass. Adding a
+ * mode means adding a row here and its name. */
+#include <string.h>
+
+#include "pass.h"
+
+#define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
+#define TL__FAT (TL__B(FAT_POSITION) | TL__B(FAT_NORMAL) | TL__B(FAT_ALBEDO) | TL__B(FAT_MATERIAL))
+
+const tl__mode_def tl__modes[TL_MODE_COUNT_] = {
+    [TL_MODE_DEFAULT] = {"thin-lpp", TL__B(RT0), TL__B(DEPTH) | TL__B(RT0), TL__B(DEPTH) | TL__B(RT0),
+                         TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR), "TL_LIGHT_ACCUM", 1, 0},
+    [TL_MODE_THIN_LPP] = {"thin-lpp", TL__B(RT0), TL__B(DEPTH) | TL__B(RT0), TL__B(DEPTH) | TL__B(RT0),
+                          TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR), "TL_LIGHT_ACCUM", 1, 0},
+    /* emissive and ambient go straight to HDR in the G-buffer pass; lights add to it */
+    [TL_MODE_THIN_DEFERRED] = {"thin-deferred", TL__B(RT0) | TL__B(RT1) | TL__B(HDR),
+                               TL__B(DEPTH) | TL__B(RT0) | TL__B(RT1), TL__B(DEPTH) | TL__B(RT0) | TL__B(RT1),
+                               TL__B(HDR), "TL_LIGHT_SHADE_THIN", 0, 0},
+    [TL_MODE_FAT] = {"fat", TL__FAT | TL__B(HDR), TL__B(DEPTH) | TL__FAT, TL__FAT, TL__B(HDR), "TL_LIGHT_SHADE_FAT", 0, 0},
+    [TL_MODE_FORWARD] = {"forward", 0, 0, 0, 0, "", 0, 1},
+};
+
+const char *tl_render_mode_name(tl_render_mode mode)
+{
+    return (unsigned)mode < TL_MODE_COUNT_ ? tl__modes[mode].name : "unknown";
+}
+
+tl_result tl_render_mode_from_name(const char *name, tl_render_mode *mode)
+{
+    if (!name || !mode) return TL_ERROR_INVALID_ARGUMENT;
+    for (int m = TL_MODE_THIN_LPP; m < TL_MODE_COUNT_; m++)
+        if (strcmp(name, tl__modes[m].name) == 0) {
+            *mode = (tl_render_mode)m;
+            return TL_OK;
+        }
+    return TL_ERROR_INVALID_ARGUMENT;
+}

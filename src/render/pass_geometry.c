@@ -1,0 +1,169 @@
+/* The geometry passes of the table: depth pre-pass, G-buffer, material (the light pre-pass's
+ * second geometry pass), forward and transparent. Each declares its targets and state for a mode
+ * (the mode table says what the G-buffer holds) and draws the visible objects. */
+#include <stdio.h>
+
+#include "renderer_internal.h"
+
+#define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
+
+static const tl__pipeline tl__opaque = {.depth_test = TL__DEPTH_LESS, .depth_write = 1, .color_write = 1,
+                                        .cull = TL__CULL_BACK};
+
+static tl__pipeline tl__geometry_state(const tl__plan_input *in, tl__depth_test test, int write, tl__blend blend)
+{
+    tl__pipeline p = tl__opaque;
+    p.depth_test = (uint8_t)test;
+    p.depth_write = (uint8_t)write;
+    p.blend = (uint8_t)blend;
+    p.clip_zero_one = in->d.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
+    return p;
+}
+
+static void tl__draw_opaque(tl_renderer *r, const tl__pass_ctx *ctx) { tl__draw_objects(r, ctx, TL__DRAW_OPAQUE); }
+
+/* ---- depth pre-pass (forward) ---------------------------------------------------------------- */
+
+static void tl__prepass_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    if (!in->mode->forward || in->d.forward_no_depth_prepass) return;
+    d->writes = d->clears = TL__B(DEPTH);
+    d->attach_depth = 1;
+    d->state = tl__geometry_state(in, TL__DEPTH_LESS, 1, TL__BLEND_OFF);
+    d->state.color_write = 0;
+}
+
+static void tl__prepass_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+{
+    (void)d;
+    out->used[0] = 1;
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_DEPTH_ONLY%s", in->f.has_alpha_mask ? in->material_defines : "");
+}
+
+const tl__pass_def tl__pass_depth_prepass = {
+    .id = TL_PASS_DEPTH_PREPASS,
+    .name = "depth-prepass",
+    .programs = {{"depth-prepass", "gbuffer.vert.glsl", "forward.frag.glsl"}},
+    .declare = tl__prepass_declare,
+    .permute = tl__prepass_permute,
+    .execute = tl__draw_opaque,
+};
+
+/* ---- G-buffer -------------------------------------------------------------------------------- */
+
+static void tl__gbuffer_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    if (in->mode->forward) return;
+    d->writes = d->clears = TL__B(DEPTH) | in->mode->gbuffer_writes;
+    d->optional = in->mode->gbuffer_writes & ~TL__B(HDR); /* kept when the light pass reads them */
+    d->attach_depth = 1;
+    d->state = tl__geometry_state(in, TL__DEPTH_LESS, 1, TL__BLEND_OFF);
+}
+
+static void tl__gbuffer_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+{
+    out->used[0] = 1;
+    int colour = (d->writes & ~TL__B(DEPTH)) != 0;
+    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", !colour ? "TL_DEPTH_ONLY"
+                                                        : (d->writes & TL__B(RT0)) ? in->rt0_define : "",
+             in->material_defines);
+}
+
+const tl__pass_def tl__pass_gbuffer = {
+    .id = TL_PASS_GBUFFER,
+    .name = "gbuffer",
+    .programs = {{"gbuffer", "gbuffer.vert.glsl", "gbuffer.frag.glsl"}},
+    .declare = tl__gbuffer_declare,
+    .permute = tl__gbuffer_permute,
+    .execute = tl__draw_opaque,
+};
+
+/* ---- material: the light pre-pass's second geometry pass ------------------------------------- */
+
+static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    if (!in->mode->material_pass) return;
+    d->writes = d->clears = TL__B(HDR);
+    d->samples = TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR); /* those the light pass writes */
+    d->reads = d->samples | TL__B(DEPTH);
+    d->attach_depth = 1;
+    d->state = tl__geometry_state(in, TL__DEPTH_EQUAL, 0, TL__BLEND_OFF);
+}
+
+static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+{
+    out->used[0] = 1;
+    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",
+             in->material_defines);
+}
+
+const tl__pass_def tl__pass_material = {
+    .id = TL_PASS_MATERIAL,
+    .name = "material",
+    .programs = {{"material", "gbuffer.vert.glsl", "material.frag.glsl"}},
+    .declare = tl__material_declare,
+    .permute = tl__material_permute,
+    .execute = tl__draw_opaque,
+};
+
+/* ---- forward, and transparent objects in every mode ------------------------------------------ */
+
+static void tl__forward_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    if (!in->mode->forward) return;
+    int prepass = !in->d.forward_no_depth_prepass;
+    d->writes = d->clears = TL__B(HDR) | (prepass ? 0u : TL__B(DEPTH));
+    d->reads = prepass ? TL__B(DEPTH) : 0u;
+    d->attach_depth = 1;
+    d->state = tl__geometry_state(in, prepass ? TL__DEPTH_EQUAL : TL__DEPTH_LESS, !prepass, TL__BLEND_OFF);
+}
+
+static void tl__forward_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+{
+    (void)d;
+    out->used[0] = 1;
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_FORWARD %s%s", in->spec_define, in->material_defines);
+}
+
+const tl__pass_def tl__pass_forward = {
+    .id = TL_PASS_FORWARD,
+    .name = "forward",
+    .programs = {{"forward", "gbuffer.vert.glsl", "forward.frag.glsl"}},
+    .declare = tl__forward_declare,
+    .permute = tl__forward_permute,
+    .prepare = tl__forward_prepare,
+    .upload = tl__forward_upload,
+    .execute = tl__draw_opaque,
+};
+
+static void tl__transparent_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    if (!in->f.has_alpha_blend) return;
+    d->writes = TL__B(HDR);
+    d->reads = TL__B(DEPTH) | TL__B(HDR); /* blended onto */
+    d->attach_depth = 1;
+    d->state = tl__geometry_state(in, TL__DEPTH_LESS, 0, TL__BLEND_ALPHA);
+}
+
+static void tl__transparent_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+{
+    (void)d;
+    out->used[0] = 1;
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_FORWARD TL_TRANSPARENT %s%s", in->spec_define, in->material_defines);
+}
+
+static void tl__draw_transparent(tl_renderer *r, const tl__pass_ctx *ctx)
+{
+    tl__draw_objects(r, ctx, TL__DRAW_TRANSPARENT);
+}
+
+const tl__pass_def tl__pass_transparent = {
+    .id = TL_PASS_TRANSPARENT,
+    .name = "transparent",
+    .programs = {{"transparent", "gbuffer.vert.glsl", "forward.frag.glsl"}},
+    .declare = tl__transparent_declare,
+    .permute = tl__transparent_permute,
+    .prepare = tl__forward_prepare,
+    .upload = tl__forward_upload,
+    .execute = tl__draw_transparent,
+};

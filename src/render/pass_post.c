@@ -1,0 +1,105 @@
+/* Full-screen passes: tone mapping (into LDR for FXAA, or straight into the output), FXAA, and the
+ * luma pass that prepares a caller's image for tl_renderer_apply_fxaa. */
+#include <stdio.h>
+
+#include "renderer_internal.h"
+
+#define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
+
+static const tl__pipeline tl__fullscreen = {.color_write = 1, .depth_write = 1};
+
+static void tl__draw_fullscreen(tl_renderer *r, const tl__pass_ctx *ctx)
+{
+    const GladGLContext *gl = &r->gl;
+    tl__state_program(gl, &r->state, ctx->cp->programs[0]);
+    tl__state_vertex_array(gl, &r->state, r->vao_empty);
+    gl->DrawArrays(GL_TRIANGLES, 0, 3);
+    ctx->rec->st.draw_calls++;
+}
+
+static void tl__one_program(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+{
+    (void)in;
+    (void)d;
+    out->used[0] = 1;
+}
+
+/* ---- tone map -------------------------------------------------------------------------------- */
+
+static void tl__tonemap_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    d->reads = d->samples = TL__B(HDR);
+    d->writes = in->d.fxaa != TL_FXAA_OFF ? TL__B(LDR) : TL__B(OUTPUT);
+    d->state = tl__fullscreen;
+}
+
+/* Into a caller's framebuffer of another size the image is resampled: linear filtering then. */
+static void tl__tonemap_execute(tl_renderer *r, const tl__pass_ctx *ctx)
+{
+    if (ctx->to_caller) r->gl.BindSampler(TL_TARGET_HDR, r->sampler_linear);
+    tl__draw_fullscreen(r, ctx);
+    if (ctx->to_caller) r->gl.BindSampler(TL_TARGET_HDR, 0);
+}
+
+const tl__pass_def tl__pass_tonemap = {
+    .id = TL_PASS_TONEMAP,
+    .name = "tonemap",
+    .programs = {{"tonemap", "fullscreen.vert.glsl", "tonemap.frag.glsl"}},
+    .declare = tl__tonemap_declare,
+    .permute = tl__one_program,
+    .execute = tl__tonemap_execute,
+};
+
+/* ---- FXAA ------------------------------------------------------------------------------------ */
+
+static void tl__fxaa_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    if (in->d.fxaa == TL_FXAA_OFF) return;
+    d->reads = d->samples = TL__B(LDR);
+    d->writes = TL__B(OUTPUT);
+    d->state = tl__fullscreen;
+}
+
+static void tl__fxaa_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+{
+    (void)d;
+    out->used[0] = 1;
+    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", in->d.fxaa == TL_FXAA_12 ? "TL_FXAA_STEPS=5" : "TL_FXAA_STEPS=12",
+             in->d.fxaa == TL_FXAA_39 ? " TL_FXAA_FINE" : "");
+}
+
+/* FXAA samples between texels: linear filtering always. */
+static void tl__fxaa_execute(tl_renderer *r, const tl__pass_ctx *ctx)
+{
+    r->gl.BindSampler(TL_TARGET_LDR, r->sampler_linear);
+    tl__draw_fullscreen(r, ctx);
+    r->gl.BindSampler(TL_TARGET_LDR, 0);
+}
+
+const tl__pass_def tl__pass_fxaa = {
+    .id = TL_PASS_FXAA,
+    .name = "fxaa",
+    .programs = {{"fxaa", "fullscreen.vert.glsl", "fxaa.frag.glsl"}},
+    .declare = tl__fxaa_declare,
+    .permute = tl__fxaa_permute,
+    .execute = tl__fxaa_execute,
+};
+
+/* ---- luma (tl_renderer_apply_fxaa): the caller's image, uploaded into OUTPUT, gets its luma ---- */
+
+static void tl__luma_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    (void)in;
+    d->reads = d->samples = TL__B(OUTPUT);
+    d->writes = TL__B(LDR);
+    d->state = tl__fullscreen;
+}
+
+const tl__pass_def tl__pass_luma = {
+    .id = TL_PASS_COUNT,
+    .name = "luma",
+    .programs = {{"luma", "fullscreen.vert.glsl", "luma.frag.glsl"}},
+    .declare = tl__luma_declare,
+    .permute = tl__one_program,
+    .execute = tl__draw_fullscreen,
+};

@@ -1,0 +1,23 @@
+/* The pass table: every built-in pass in execution order (DESIGN.md section 2). A new pass is one
+ * entry here plus its definition (declare, permute, execute) in a pass_*.c file; the planner,
+ * the compile step, the frame and the statistics derive everything else from it. */
+#include <string.h>
+
+#include "pass.h"
+
+extern const tl__pass_def tl__pass_depth_prepass, tl__pass_gbuffer, tl__pass_lights, tl__pass_material,
+    tl__pass_forward, tl__pass_transparent, tl__pass_tonemap, tl__pass_fxaa;
+
+const tl__pass_def *const tl__pass_table[TL_PASS_COUNT] = {
+    &tl__pass_depth_prepass, &tl__pass_gbuffer, &tl__pass_lights, &tl__pass_material,
+    &tl__pass_forward,       &tl__pass_transparent, &tl__pass_tonemap, &tl__pass_fxaa,
+};
+
+const char *tl_pass_name(tl_pass pass) { return (unsigned)pass < TL_PASS_COUNT ? tl__pass_table[pass]->name : "unknown"; }
+
+int tl__pass_table_find(const char *name)
+{
+    for (int i = 0; name && i < TL_PASS_COUNT; i++)
+        if (strcmp(tl__pass_table[i]->name, name) == 0) return i;
+    return -1;
+}

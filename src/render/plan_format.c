@@ -1,0 +1,91 @@
+/* The plan as text (--print-plan): the compiled pass table with each pass's reads, writes and
+ * clears, every target's lifetime and memory, the shared blocks, attributes and programs. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "gl/gl.h"
+#include "thinlight/renderer.h"
+
+typedef struct tl__out {
+    char *buf;
+    size_t size, len;
+} tl__out;
+
+static void tl__printf(tl__out *o, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    char *dst = o->len < o->size ? o->buf + o->len : NULL;
+    int n = vsnprintf(dst, dst ? o->size - o->len : 0, fmt, ap);
+    va_end(ap);
+    if (n > 0) o->len += (size_t)n;
+}
+
+static void tl__print_targets(tl__out *o, uint32_t bits)
+{
+    if (!bits) {
+        tl__printf(o, "-");
+        return;
+    }
+    const char *sep = "";
+    for (int i = 0; i < TL_TARGET_COUNT; i++)
+        if (bits & TL_TARGET_BIT(i)) {
+            tl__printf(o, "%s%s", sep, tl_target_name((tl_target_id)i));
+            sep = ", ";
+        }
+}
+
+static void tl__print_passes(tl__out *o, const tl_frame_plan *p)
+{
+    tl__printf(o, "passes:\n");
+    for (size_t i = 0; i < p->pass_count; i++) {
+        const tl_plan_pass *pp = &p->passes[i];
+        tl__printf(o, "  %zu %-13s reads ", i + 1, pp->name);
+        tl__print_targets(o, pp->reads);
+        tl__printf(o, "; writes ");
+        tl__print_targets(o, pp->writes);
+        if (pp->clears) {
+            tl__printf(o, "; clears ");
+            tl__print_targets(o, pp->clears);
+        }
+        tl__printf(o, "%s\n", pp->pass == TL_PASS_COUNT ? " (application)" : "");
+    }
+}
+
+static void tl__print_targets_table(tl__out *o, const tl_frame_plan *p)
+{
+    tl__printf(o, "targets (bytes per pixel, lifetime in passes, memory block):\n");
+    for (int i = 0; i < TL_TARGET_COUNT; i++) {
+        const tl_plan_target *t = &p->target_info[i];
+        if (!t->bytes_per_pixel) continue;
+        char last[16];
+        if (t->last_pass >= p->pass_count) snprintf(last, sizeof last, "end");
+        else snprintf(last, sizeof last, "%u", t->last_pass + 1);
+        tl__printf(o, "  %-15s %2u  %u..%-3s  block %u%s\n", tl_target_name((tl_target_id)i), t->bytes_per_pixel,
+                   t->first_pass + 1, last, t->block,
+                   (p->blocks[t->block].targets & ~TL_TARGET_BIT(i)) ? " (shared)" : "");
+    }
+    tl__printf(o, "  %-15s %2u (G-buffer and light buffer: %u)\n", "sum", p->bytes_per_pixel, p->gbuffer_bytes_per_pixel);
+    tl__printf(o, "  %-15s %2u in %zu blocks (most live at once: %u)\n", "allocated", p->allocated_bytes_per_pixel,
+               p->block_count, p->peak_live_bytes_per_pixel);
+}
+
+size_t tl_frame_plan_format(const tl_frame_plan *p, char *buffer, size_t size)
+{
+    tl__out o = {buffer, buffer ? size : 0, 0};
+    if (buffer && size) buffer[0] = '\0';
+    if (!p) return 0;
+    tl__printf(&o, "frame plan: mode %s, %ux%u\n", tl_render_mode_name(p->mode), p->width, p->height);
+    tl__print_passes(&o, p);
+    tl__print_targets_table(&o, p);
+    tl__printf(&o, "vertex attributes: position, normal%s%s\n", p->vertex_attributes & TL_ATTRIBUTE_UV ? ", uv" : "",
+               p->vertex_attributes & TL_ATTRIBUTE_TANGENT ? ", tangent" : "");
+    tl__printf(&o, "light volumes:%s%s%s%s\n", p->light_types & (1u << TL_LIGHT_POINT) ? " point" : "",
+               p->light_types & (1u << TL_LIGHT_SPOT) ? " spot" : "",
+               p->light_types & (1u << TL_LIGHT_DIRECTIONAL) ? " directional" : "", p->light_types ? "" : " none");
+    tl__printf(&o, "programs:\n");
+    for (size_t i = 0; i < p->program_count; i++)
+        tl__printf(&o, "  %-19s %s\n", p->programs[i].name, p->programs[i].defines[0] ? p->programs[i].defines : "-");
+    return o.len;
+}

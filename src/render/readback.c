@@ -1,0 +1,156 @@
+/* Reading targets back, and FXAA on a caller's image through the frame's own passes (the luma
+ * pass, then the compiled FXAA pass). Every readback takes its buffer size in bytes; a NULL buffer
+ * asks for the size. */
+#include <stdio.h>
+#include <string.h>
+
+#include "renderer_internal.h"
+
+/* The size protocol shared by every readback: *size gets `need`; a NULL buffer only asks, a buffer
+ * smaller than `need` is TL_ERROR_LIMIT. Returns 1 when the caller should go on and read. */
+static int tl__size_check(tl_renderer *r, const void *dst, size_t *size, size_t need, const char *what, tl_result *res)
+{
+    *res = TL_OK;
+    if (!size) {
+        *res = tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: reading %s needs a size", what);
+        return 0;
+    }
+    size_t have = *size;
+    *size = need;
+    if (!dst) return 0;
+    if (have < need) {
+        *res = tl__fail(r, TL_ERROR_LIMIT, "renderer: reading %s needs %zu bytes, the buffer has %zu", what, need, have);
+        return 0;
+    }
+    return 1;
+}
+
+/* A target that shares its memory with one written later in the frame holds that one's pixels. */
+static tl_result tl__readable(tl_renderer *r, tl_target_id id)
+{
+    if ((unsigned)id >= TL_TARGET_COUNT || !r->targets[id].texture)
+        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: target %s is not in the plan", tl_target_name(id));
+    if (r->plan.shared & TL_TARGET_BIT(id))
+        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
+                        "renderer: target %s shares its memory with a target written later in the frame; list it in "
+                        "tl_renderer_desc.keep_targets to read it",
+                        tl_target_name(id));
+    return TL_OK;
+}
+
+tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *size)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res;
+    if (!tl__size_check(r, rgba, size, (size_t)r->desc.width * r->desc.height * 4, "the output", &res)) return res;
+    char msg[256];
+    res = tl__target_read(&r->gl, &r->targets[TL_TARGET_OUTPUT], GL_RGBA, GL_UNSIGNED_BYTE, rgba, *size, msg, sizeof msg);
+    if (res != TL_OK) return tl__fail(r, res, "renderer: reading the output: %s", msg);
+    return TL_OK;
+}
+
+/* Depth into the upper quarter of the buffer, then spread out as (window depth, distance, 0, 1). */
+static tl_result tl__read_depth(tl_renderer *r, float *rgba, size_t n, char *msg, size_t msg_size)
+{
+    float *d = rgba + n * 3;
+    tl_result res = tl__target_read(&r->gl, &r->targets[TL_TARGET_DEPTH], GL_DEPTH_COMPONENT, GL_FLOAT, d,
+                                    n * sizeof(float), msg, msg_size);
+    if (res != TL_OK) return res;
+    tl_projection pr;
+    float fov = r->camera.fov_y > 0.0f ? r->camera.fov_y : 1.0471976f;
+    tl_projection_perspective(r->desc.depth_format, fov, (float)r->desc.width / (float)r->desc.height,
+                              r->camera.near_z > 0.0f ? r->camera.near_z : 0.1f, r->camera.far_z, &pr);
+    for (size_t i = 0; i < n; i++) {
+        float dv = d[i];
+        rgba[4 * i + 0] = dv;
+        rgba[4 * i + 1] = -tl_depth_linearize(&pr, dv);
+        rgba[4 * i + 2] = 0.0f;
+        rgba[4 * i + 3] = 1.0f;
+    }
+    return TL_OK;
+}
+
+/* RT0 decoded on the CPU with the codec: normal and gloss. */
+static tl_result tl__read_rt0(tl_renderer *r, float *rgba, size_t n, char *msg, size_t msg_size)
+{
+    uint8_t *bytes = (uint8_t *)tl__alloc_array(&r->alloc, n, 4);
+    if (!bytes) return TL_ERROR_OUT_OF_MEMORY;
+    int ten = r->desc.rt0 == TL_RT0_RGB10A2;
+    tl_result res = tl__target_read(&r->gl, &r->targets[TL_TARGET_RT0], GL_RGBA,
+                                    ten ? GL_UNSIGNED_INT_2_10_10_10_REV : GL_UNSIGNED_BYTE, bytes, n * 4, msg, msg_size);
+    for (size_t i = 0; res == TL_OK && i < n; i++) {
+        float nv[3], g;
+        if (ten) {
+            uint32_t t;
+            memcpy(&t, bytes + 4 * i, 4);
+            tl_rt0_decode_rgb10a2(t, nv, &g, NULL);
+        } else {
+            tl_rt0_decode_rgba8(bytes + 4 * i, nv, &g);
+        }
+        memcpy(&rgba[4 * i], nv, sizeof nv);
+        rgba[4 * i + 3] = g;
+    }
+    tl__free(&r->alloc, bytes);
+    return res;
+}
+
+tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id id, float *rgba, size_t *size)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__readable(r, id);
+    if (res != TL_OK) return res;
+    size_t n = (size_t)r->desc.width * r->desc.height;
+    if (!tl__size_check(r, rgba, size, n * 4 * sizeof(float), tl_target_name(id), &res)) return res;
+    char msg[256] = "";
+    if (id == TL_TARGET_DEPTH) res = tl__read_depth(r, rgba, n, msg, sizeof msg);
+    else if (id == TL_TARGET_RT0) res = tl__read_rt0(r, rgba, n, msg, sizeof msg);
+    else res = tl__target_read(&r->gl, &r->targets[id], GL_RGBA, GL_FLOAT, rgba, *size, msg, sizeof msg);
+    if (res != TL_OK) return tl__fail(r, res, "renderer: reading %s: %s", tl_target_name(id), msg);
+    return TL_OK;
+}
+
+static const tl__compiled_pass *tl__fxaa_pass(const tl_renderer *r, size_t *index)
+{
+    for (size_t i = 0; i < r->pass_count; i++)
+        if (r->passes[i].def && r->passes[i].def->id == TL_PASS_FXAA) {
+            *index = i;
+            return &r->passes[i];
+        }
+    return NULL;
+}
+
+tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *out, size_t *size)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res;
+    if (!tl__size_check(r, out, size, (size_t)r->desc.width * r->desc.height * 4, "the FXAA image", &res)) return res;
+    if (!rgba) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: apply_fxaa needs an input image");
+    size_t fxaa_index = 0;
+    const tl__compiled_pass *fxaa = tl__fxaa_pass(r, &fxaa_index);
+    if (!fxaa || !r->luma.fbo) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: FXAA is off in this renderer");
+    if (!r->programs_ready && (res = tl__graph_programs(r)) != TL_OK) return res;
+    if (!r->luma.programs[0] && (res = tl__program_get(r, "luma", tl__pass_luma.programs[0].vs, tl__pass_luma.programs[0].fs,
+                                                       "TL_OUT_LDR=0", &r->luma.programs[0])) != TL_OK)
+        return res;
+    const GladGLContext *gl = &r->gl;
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl->TextureSubImage2D(r->targets[TL_TARGET_OUTPUT].texture, 0, 0, 0, (GLsizei)r->desc.width,
+                          (GLsizei)r->desc.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    size_t offset = 0;
+    if (tl__stream_begin(gl, &r->stream, sizeof(tl__frame_ubo) + r->ubo_align, "buffer.frame") != TL_OK)
+        return tl__fail(r, TL_ERROR_GL, "renderer: could not map the per-frame buffer");
+    tl__frame_ubo *u = (tl__frame_ubo *)tl__stream_reserve(&r->stream, sizeof *u, r->ubo_align, &offset);
+    tl__frame_ubo_post(r, u);
+    tl__stream_bind_range(gl, &r->stream, GL_UNIFORM_BUFFER, TL__UBO_FRAME, offset, sizeof *u);
+    tl__frame_record rec;
+    memset(&rec, 0, sizeof rec);
+    tl__state_invalidate(&r->state);
+    tl__run_pass(r, &r->luma, &rec, 0, NULL);
+    tl__run_pass(r, fxaa, &rec, fxaa_index, NULL);
+    tl__state_reset(gl, &r->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED);
+    tl__stream_end(gl, &r->stream);
+    res = tl_renderer_read_output(r, out, size);
+    GLenum e = gl->GetError();
+    if (res == TL_OK && e != GL_NO_ERROR) return tl__fail(r, TL_ERROR_GL, "renderer: %s in FXAA", tl__gl_error_string(e));
+    return res;
+}

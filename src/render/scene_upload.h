@@ -1,0 +1,18 @@
+/* Scene and light upload (scene_upload.c), used by the public entry points in renderer.c. */
+#ifndef TL_RENDER_SCENE_UPLOAD_H
+#define TL_RENDER_SCENE_UPLOAD_H
+
+#include "plan_internal.h"
+#include "renderer_internal.h"
+
+tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s);
+/* Objects, materials, textures and geometry buffers; the scene's features into r->features. */
+tl_result tl__scene_upload(tl_renderer *r, const tl_scene *s);
+void tl__scene_release(tl_renderer *r);
+/* The scene's vertex array for the current plan's attributes. */
+void tl__scene_vao(tl_renderer *r);
+/* Validates and copies the lights (with per-frame scratch for them); counts them per type. */
+tl_result tl__lights_store(tl_renderer *r, const tl_light *lights, size_t count, size_t kinds[TL__LIGHT_KINDS]);
+void tl__lights_release(tl_renderer *r);
+
+#endif

@@ -1,0 +1,166 @@
+/* Frame statistics without waiting: each measured frame's timer and samples-passed queries go into
+ * a slot of a small ring and are read when they are ready, a few frames later; only
+ * waiting for the frames (or synchronous statistics) blocks. The bytes-moved estimate of
+ * docs/bandwidth.md is derived from each pass's declared targets and state, not per pass kind. */
+#define _POSIX_C_SOURCE 199309L
+#include <string.h>
+#include <time.h>
+
+#include "renderer_internal.h"
+
+double tl__now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
+}
+
+void tl__queries_create(tl_renderer *r)
+{
+    const GladGLContext *gl = &r->gl;
+    GLint bits = 0;
+    gl->GetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &bits);
+    r->timestamps = bits > 0;
+    r->timestamp_bits = bits;
+    for (int s = 0; s < TL__QUERY_RING; s++) {
+        tl__query_slot *q = &r->ring[s];
+        if (r->timestamps) gl->CreateQueries(GL_TIMESTAMP, 2 * TL_PLAN_MAX_PASSES, &q->time[0][0]);
+        gl->CreateQueries(GL_SAMPLES_PASSED, TL__PASS_MAX_QUERIES * TL_PLAN_MAX_PASSES, &q->samples[0][0]);
+    }
+}
+
+void tl__queries_destroy(tl_renderer *r)
+{
+    const GladGLContext *gl = &r->gl;
+    for (int s = 0; s < TL__QUERY_RING; s++) {
+        tl__query_slot *q = &r->ring[s];
+        if (q->time[0][0]) gl->DeleteQueries(2 * TL_PLAN_MAX_PASSES, &q->time[0][0]);
+        if (q->samples[0][0]) gl->DeleteQueries(TL__PASS_MAX_QUERIES * TL_PLAN_MAX_PASSES, &q->samples[0][0]);
+    }
+    memset(r->ring, 0, sizeof r->ring);
+}
+
+/* ---- bytes moved ----------------------------------------------------------------------------- */
+
+static double tl__bpp(const tl_frame_plan *p, uint32_t bits)
+{
+    double b = 0.0;
+    for (int t = 0; t < TL_TARGET_COUNT; t++)
+        if (bits & TL_TARGET_BIT(t)) b += p->target_bytes_per_pixel[t];
+    return b;
+}
+
+static uint32_t tl__attribute_bytes(uint32_t attrs)
+{
+    return ((attrs & TL_ATTRIBUTE_POSITION) ? 12u : 0u) + ((attrs & TL_ATTRIBUTE_NORMAL) ? 12u : 0u) +
+           ((attrs & TL_ATTRIBUTE_UV) ? 8u : 0u) + ((attrs & TL_ATTRIBUTE_TANGENT) ? 16u : 0u) + 4u /* object id */;
+}
+
+/* Clears (every pixel of each cleared target) + per fragment that passed the depth test: the depth
+ * test's read (when depth is not also sampled) and write, the sampled targets (a 5-texel cross for
+ * neighbourhood reads), the colour writes (twice when blended: read and write) + vertex fetch
+ * (indices drawn x (4 + attribute bytes)) + light instances (52 B each). Texture and constant
+ * reads of materials are left out (caches absorb them). */
+static double tl__pass_bytes(const tl_frame_plan *p, const tl__pass_decl *d, double frags, size_t indices,
+                             size_t instances)
+{
+    const uint32_t depth_bit = TL_TARGET_BIT(TL_TARGET_DEPTH);
+    double pixels = (double)p->width * p->height, depth = p->target_bytes_per_pixel[TL_TARGET_DEPTH];
+    double per_frag = tl__bpp(p, d->samples) + 4.0 * tl__bpp(p, d->neighbourhood);
+    if (d->state.depth_test && !(d->samples & depth_bit)) per_frag += depth;
+    if (d->state.depth_write && (d->writes & depth_bit)) per_frag += depth;
+    per_frag += tl__bpp(p, d->writes & ~depth_bit) * (d->state.blend ? 2.0 : 1.0);
+    return pixels * tl__bpp(p, d->clears) + frags * per_frag +
+           (double)indices * (4.0 + tl__attribute_bytes(p->vertex_attributes)) + (double)instances * sizeof(tl__instance);
+}
+
+/* ---- reading a slot ---------------------------------------------------------------------------- */
+
+static int tl__slot_ready(const tl_renderer *r, const tl__query_slot *q)
+{
+    const GladGLContext *gl = &r->gl;
+    size_t n = r->pass_count;
+    if (!n) return 1;
+    GLuint a = GL_TRUE, b = GL_TRUE;
+    if (r->timestamps) gl->GetQueryObjectuiv(q->time[n - 1][1], GL_QUERY_RESULT_AVAILABLE, &a);
+    gl->GetQueryObjectuiv(q->samples[n - 1][0], GL_QUERY_RESULT_AVAILABLE, &b);
+    return a && b;
+}
+
+static uint64_t tl__pass_queries(const tl_renderer *r, const tl__query_slot *q, size_t i, uint64_t *results)
+{
+    const tl__compiled_pass *cp = &r->passes[i];
+    size_t nq = cp->def && cp->def->query_count ? cp->def->query_count : 1;
+    uint64_t sum = 0;
+    for (size_t k = 0; k < nq; k++) {
+        GLuint64 v = 0;
+        r->gl.GetQueryObjectui64v(q->samples[i][k], GL_QUERY_RESULT, &v);
+        results[k] = v;
+        sum += v;
+    }
+    return sum;
+}
+
+static double tl__pass_ms(const tl_renderer *r, const tl__query_slot *q, size_t i)
+{
+    if (!r->timestamps) return -1.0;
+    GLuint64 begin = 0, end = 0;
+    r->gl.GetQueryObjectui64v(q->time[i][0], GL_QUERY_RESULT, &begin);
+    r->gl.GetQueryObjectui64v(q->time[i][1], GL_QUERY_RESULT, &end);
+    GLuint64 mask = r->timestamp_bits >= 64 ? ~(GLuint64)0 : (((GLuint64)1 << r->timestamp_bits) - 1);
+    return (double)((end - begin) & mask) * 1e-6;
+}
+
+/* Reads a pending slot's results into its record (blocking when they are not ready). */
+static void tl__slot_read(tl_renderer *r, tl__query_slot *q)
+{
+    tl_frame_stats *st = &q->rec.st;
+    const tl_frame_plan *p = &r->plan.pub;
+    for (size_t i = 0; i < r->pass_count; i++) {
+        const tl__compiled_pass *cp = &r->passes[i];
+        uint64_t results[TL__PASS_MAX_QUERIES] = {0};
+        uint64_t frags = tl__pass_queries(r, q, i, results);
+        if (cp->def && cp->def->collect) cp->def->collect(results, st);
+        double ms = tl__pass_ms(r, q, i), bytes = tl__pass_bytes(p, cp->decl, (double)frags, q->rec.indices[i],
+                                                                   q->rec.instances[i]);
+        if (cp->app >= 0) {
+            st->app_pass_ms[cp->app] = ms;
+        } else {
+            st->pass_ms[cp->def->id] = ms;
+            st->pass_fragments[cp->def->id] = frags;
+            st->pass_bytes[cp->def->id] = bytes;
+        }
+        if (ms > 0.0) st->gpu_ms += ms;
+        st->bytes_moved += bytes;
+    }
+    st->gpu_valid = 1;
+    q->pending = 0;
+}
+
+/* ---- the ring ---------------------------------------------------------------------------------- */
+
+tl__query_slot *tl__queries_slot(tl_renderer *r, uint64_t frame)
+{
+    tl__query_slot *q = &r->ring[frame % TL__QUERY_RING];
+    if (q->pending) tl__slot_read(r, q); /* a whole ring behind: the oldest frame must be read now */
+    return q;
+}
+
+int tl__queries_newest(tl_renderer *r, tl_frame_stats *out)
+{
+    tl__query_slot *best = NULL;
+    for (int s = 0; s < TL__QUERY_RING; s++) {
+        tl__query_slot *q = &r->ring[s];
+        if (q->pending && tl__slot_ready(r, q)) tl__slot_read(r, q);
+        if (!q->pending && q->rec.st.gpu_valid && (!best || q->rec.st.frame > best->rec.st.frame)) best = q;
+    }
+    if (!best) return 0;
+    *out = best->rec.st;
+    return 1;
+}
+
+void tl__queries_drain(tl_renderer *r)
+{
+    for (int s = 0; s < TL__QUERY_RING; s++)
+        if (r->ring[s].pending) tl__slot_read(r, &r->ring[s]);
+}

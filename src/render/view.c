@@ -1,0 +1,83 @@
+/* The view of a frame: matrices, frustum planes and the per-frame uniform block (frame.glsl). */
+#include <math.h>
+#include <string.h>
+
+#include "renderer_internal.h"
+
+static int tl__reversed(const tl_renderer *r) { return r->desc.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED; }
+
+static void tl__view_info(const tl_renderer *r, const tl_camera *c, tl__view *v)
+{
+    tl_view_info *i = &v->info;
+    memcpy(i->view, v->view.m, sizeof i->view);
+    memcpy(i->projection, v->proj.m, sizeof i->projection);
+    memcpy(i->view_projection, v->view_proj.m, sizeof i->view_projection);
+    memcpy(i->eye, v->eye, sizeof i->eye);
+    i->near_z = v->near_z;
+    i->far_z = c->far_z > 0.0f && isfinite(c->far_z) ? c->far_z : 0.0f;
+    i->reversed_z = tl__reversed(r);
+    i->width = r->desc.width;
+    i->height = r->desc.height;
+}
+
+tl_result tl__view_setup(tl_renderer *r, const tl_camera *c, tl__view *v)
+{
+    float up[3] = {c->up[0], c->up[1], c->up[2]};
+    if (up[0] == 0.0f && up[1] == 0.0f && up[2] == 0.0f) up[1] = 1.0f;
+    float fov = c->fov_y > 0.0f ? c->fov_y : 1.0471976f;
+    float near_z = c->near_z > 0.0f ? c->near_z : 0.1f;
+    tl_result res = tl_projection_perspective(r->desc.depth_format, fov, (float)r->desc.width / (float)r->desc.height,
+                                              near_z, c->far_z, &v->projection);
+    if (res != TL_OK)
+        return tl__fail(r, res, "renderer: invalid camera (fov %g, near %g, far %g)", (double)c->fov_y,
+                        (double)c->near_z, (double)c->far_z);
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(c->position[k]) || !isfinite(c->target[k]))
+            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: camera position or target is not finite");
+    v->view = tl__mat4_look_at(c->position, c->target, up);
+    memcpy(v->proj.m, v->projection.m, sizeof v->proj.m);
+    v->view_proj = tl__mat4_mul(&v->proj, &v->view);
+    tl__frustum_planes(&v->view_proj, v->planes);
+    if (tl__reversed(r)) { /* [0,1] clip: the near plane is w - z >= 0 */
+        const float *m = v->view_proj.m;
+        for (int i = 0; i < 4; i++) v->planes[4][i] = m[i * 4 + 3] - m[i * 4 + 2];
+        float l = sqrtf(v->planes[4][0] * v->planes[4][0] + v->planes[4][1] * v->planes[4][1] +
+                        v->planes[4][2] * v->planes[4][2]);
+        for (int i = 0; i < 4; i++) v->planes[4][i] /= l;
+    }
+    v->clear_depth = tl__reversed(r) ? 0.0f : 1.0f;
+    memcpy(v->eye, c->position, sizeof v->eye);
+    v->near_z = near_z;
+    tl__view_info(r, c, v);
+    return TL_OK;
+}
+
+void tl__frame_ubo_post(const tl_renderer *r, tl__frame_ubo *u)
+{
+    memset(u, 0, sizeof *u);
+    u->inv_size[0] = 1.0f / (float)r->desc.width;
+    u->inv_size[1] = 1.0f / (float)r->desc.height;
+    u->exposure = r->desc.exposure;
+    u->fxaa_subpix = r->desc.fxaa_subpix;
+    u->fxaa_edge_threshold = r->desc.fxaa_edge_threshold;
+    u->fxaa_edge_threshold_min = r->desc.fxaa_edge_threshold_min;
+}
+
+void tl__frame_ubo_fill(const tl_renderer *r, const tl__view *v, tl__frame_ubo *u)
+{
+    tl__frame_ubo_post(r, u);
+    memcpy(u->view, v->view.m, sizeof u->view);
+    memcpy(u->proj, v->proj.m, sizeof u->proj);
+    memcpy(u->view_proj, v->view_proj.m, sizeof u->view_proj);
+    const float *m = v->projection.m;
+    u->depth_params[0] = m[10];
+    u->depth_params[1] = m[14];
+    u->depth_params[2] = m[11];
+    u->depth_params[3] = tl__reversed(r) ? 1.0f : 0.0f;
+    u->ray_params[0] = m[0];
+    u->ray_params[1] = m[5];
+    u->ray_params[2] = m[8];
+    u->ray_params[3] = m[9];
+    memcpy(u->ambient, r->ambient, sizeof u->ambient);
+    u->clear_depth = v->clear_depth;
+}
