@@ -162,8 +162,10 @@ static void tl__lifetimes(tl__plan *p, const tl_renderer_desc *d, uint32_t sinks
 }
 
 /* Greedy interval sharing, targets in order of first use: a target joins a block of its view
- * class whose last member ended before it starts. Depth and kept targets get blocks of their own. */
-static void tl__share_memory(tl__plan *p, uint32_t kept)
+ * class whose last member ended before it starts. Depth shares with nothing. Kept targets live to
+ * the end of the frame, so no target joins their block after them (they may reuse the memory of
+ * targets that died before they start: those are the ones a readback refuses). */
+static void tl__share_memory(tl__plan *p)
 {
     tl_frame_plan *fp = &p->pub;
     uint32_t block_end[TL_TARGET_COUNT], block_class[TL_TARGET_COUNT];
@@ -171,7 +173,7 @@ static void tl__share_memory(tl__plan *p, uint32_t kept)
         for (int t = 0; t < TL_TARGET_COUNT; t++) {
             tl_plan_target *ti = &fp->target_info[t];
             if (!ti->bytes_per_pixel || ti->first_pass != step) continue;
-            unsigned cls = (kept & TL__BIT(t)) ? 0u : tl__format_view_class(ti->format);
+            unsigned cls = tl__format_view_class(ti->format);
             size_t b = fp->block_count;
             for (size_t k = 0; cls && k < fp->block_count; k++)
                 if (block_class[k] == cls && block_end[k] < ti->first_pass) {
@@ -248,7 +250,7 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     tl__select(&in, apps, app_count, p);
     tl__cull_passes(p, TL__BIT(TL_TARGET_OUTPUT));
     tl__lifetimes(p, &d, kept);
-    tl__share_memory(p, kept);
+    tl__share_memory(p);
     tl__programs(&in, p);
     p->pub.vertex_attributes = TL_ATTRIBUTE_POSITION | TL_ATTRIBUTE_NORMAL;
     if (in.f.has_textures) p->pub.vertex_attributes |= TL_ATTRIBUTE_UV;
