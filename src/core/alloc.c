@@ -28,22 +28,29 @@ tl_result tl__allocator_resolve(const tl_allocator *in, tl_allocator *out)
     return TL_OK;
 }
 
-void *tl__alloc(const tl_allocator *a, size_t size) { return size ? a->alloc(size, a->user) : NULL; }
+void *tl__alloc(const tl_allocator *a, size_t size)
+{
+    if (!size) size = 1;
+    return a && a->alloc ? a->alloc(size, a->user) : malloc(size);
+}
 
 void *tl__alloc_array(const tl_allocator *a, size_t count, size_t size)
 {
-    if (!count || !size || count > SIZE_MAX / size) return NULL;
+    if (size && count > SIZE_MAX / size) return NULL;
     return tl__alloc(a, count * size);
 }
 
 void *tl__calloc(const tl_allocator *a, size_t count, size_t size)
 {
     void *p = tl__alloc_array(a, count, size);
-    if (p) memset(p, 0, count * size);
+    size_t bytes = count * size;
+    if (p) memset(p, 0, bytes ? bytes : 1);
     return p;
 }
 
 void tl__free(const tl_allocator *a, void *ptr)
 {
-    if (ptr) a->free(ptr, a->user);
+    if (!ptr) return;
+    if (a && a->free) a->free(ptr, a->user);
+    else free(ptr);
 }

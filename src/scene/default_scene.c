@@ -565,29 +565,29 @@ tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **
     if (counter.vertex_count > UINT32_MAX || counter.index_count > UINT32_MAX) return TL_ERROR_LIMIT;
     size_t light_count = (size_t)d.point_lights + d.spot_lights + (d.no_directional ? 0 : 1);
 
-    tl_scene *scene = tl__scene_alloc(a, 1, sizeof(tl_scene));
+    tl_scene *scene = tl__alloc_array(a, 1, sizeof(tl_scene));
     if (!scene) return TL_ERROR_OUT_OF_MEMORY;
     memset(scene, 0, sizeof(*scene));
     scene->allocator = d.allocator;
 
-    scene->vertices = tl__scene_alloc(a, counter.vertex_count, sizeof(tl_vertex));
-    scene->indices = scene->vertices ? tl__scene_alloc(a, counter.index_count, sizeof(uint32_t)) : NULL;
-    scene->objects = scene->indices ? tl__scene_alloc(a, counter.object_count, sizeof(tl_object)) : NULL;
-    scene->materials = scene->objects ? tl__scene_alloc(a, TL__M_COUNT, sizeof(tl_material)) : NULL;
-    scene->textures = scene->materials ? tl__scene_alloc(a, TL__TEX_COUNT, sizeof(tl_texture)) : NULL;
+    scene->vertices = tl__alloc_array(a, counter.vertex_count, sizeof(tl_vertex));
+    scene->indices = scene->vertices ? tl__alloc_array(a, counter.index_count, sizeof(uint32_t)) : NULL;
+    scene->objects = scene->indices ? tl__alloc_array(a, counter.object_count, sizeof(tl_object)) : NULL;
+    scene->materials = scene->objects ? tl__alloc_array(a, TL__M_COUNT, sizeof(tl_material)) : NULL;
+    scene->textures = scene->materials ? tl__alloc_array(a, TL__TEX_COUNT, sizeof(tl_texture)) : NULL;
     if (!scene->textures) goto out_of_memory;
     memset(scene->textures, 0, TL__TEX_COUNT * sizeof(tl_texture));
     scene->texture_count = TL__TEX_COUNT;
     for (int t = 0; t < TL__TEX_COUNT; t++) {
         tl_texture *tex = &scene->textures[t];
         uint32_t size = tl__texture_size(t);
-        tex->rgba = tl__scene_alloc(a, (size_t)size * size, 4);
+        tex->rgba = tl__alloc_array(a, (size_t)size * size, 4);
         if (!tex->rgba) goto out_of_memory;
         tex->width = tex->height = size;
         strncpy(tex->name, tl__texture_name(t), sizeof(tex->name) - 1);
         tl__texture_generate(t, tex->rgba);
     }
-    scene->lights = tl__scene_alloc(a, light_count, sizeof(tl_light));
+    scene->lights = tl__alloc_array(a, light_count, sizeof(tl_light));
     if (!scene->lights) goto out_of_memory;
 
     /* pass 2: write */

@@ -2,41 +2,23 @@
  * the frame planner reads. */
 #include <stdlib.h>
 
+#include "core/alloc.h"
 #include "scene_internal.h"
-
-void *tl__scene_alloc(const tl_allocator *a, size_t count, size_t size)
-{
-    if (size != 0 && count > SIZE_MAX / size) return NULL;
-    size_t bytes = count * size;
-    if (bytes == 0) bytes = 1; /* a valid, unique pointer for empty arrays */
-    if (a && a->alloc) return a->alloc(bytes, a->user);
-    return malloc(bytes);
-}
-
-void tl__scene_free(const tl_allocator *a, void *ptr)
-{
-    if (!ptr) return;
-    if (a && a->free) {
-        a->free(ptr, a->user);
-    } else {
-        free(ptr);
-    }
-}
 
 void tl_scene_destroy(tl_scene *scene)
 {
     if (!scene) return;
     tl_allocator a = scene->allocator; /* the struct itself goes last */
     if (scene->textures) {
-        for (size_t i = 0; i < scene->texture_count; i++) tl__scene_free(&a, scene->textures[i].rgba);
+        for (size_t i = 0; i < scene->texture_count; i++) tl__free(&a, scene->textures[i].rgba);
     }
-    tl__scene_free(&a, scene->textures);
-    tl__scene_free(&a, scene->vertices);
-    tl__scene_free(&a, scene->indices);
-    tl__scene_free(&a, scene->objects);
-    tl__scene_free(&a, scene->materials);
-    tl__scene_free(&a, scene->lights);
-    tl__scene_free(&a, scene);
+    tl__free(&a, scene->textures);
+    tl__free(&a, scene->vertices);
+    tl__free(&a, scene->indices);
+    tl__free(&a, scene->objects);
+    tl__free(&a, scene->materials);
+    tl__free(&a, scene->lights);
+    tl__free(&a, scene);
 }
 
 static int tl__nonzero3(const float v[3]) { return v[0] > 0.0f || v[1] > 0.0f || v[2] > 0.0f; }

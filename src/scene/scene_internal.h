@@ -9,13 +9,8 @@
 
 #include "thinlight/scene.h"
 
-/* ---- allocation (scene.c) ------------------------------------------------------------------ */
-
-/* Allocates `count * size` bytes (overflow-checked) with `a` (zeroed allocator: malloc); NULL on
- * failure or when the product overflows. The memory is not cleared. */
-void *tl__scene_alloc(const tl_allocator *a, size_t count, size_t size);
-/* Frees memory from tl__scene_alloc with the same allocator; NULL is ignored. */
-void tl__scene_free(const tl_allocator *a, void *ptr);
+/* Allocation: src/core/alloc.h (through the scene's allocator, zeroed = malloc/free). */
+#include "core/alloc.h"
 
 /* ---- deterministic random numbers (splitmix64) ---------------------------------------------- */
 
