@@ -25,6 +25,10 @@ static const char *const usage =
     "  --depth FMT           d24 (default) or d32f-reversed\n"
     "  --rt0 FMT             rgba8 (default: oct 2x12 + gloss 8) or rgb10a2\n"
     "  --light-buffer L      exact (default: diffuse + specular RGBA16F) or compact (one RGBA16F)\n"
+    "  --light-format F      rgba16f (default) or r11g11b10f (light buffer storage; exact layout)\n"
+    "  --light-strategy S    auto (default), volumes or tiled\n"
+    "  --tile-size T         tiled: 8, 16 (default) or 32 pixels\n"
+    "  --tiled-shading K     tiled: fragment (default) or compute\n"
     "  --fxaa P              off, 12, 29 (default) or 39\n"
     "  --exposure E          exposure before tone mapping (default 1)\n"
     "  --frames N            render N frames and report the last (default 1)\n"
@@ -177,6 +181,20 @@ int main(int argc, char **argv)
                 char *end;
                 rd.exposure = strtof(v, &end);
                 if (*end || !(rd.exposure > 0.0f) || rd.exposure > 1e6f) return bad_usage("--exposure wants a positive number", v);
+            } else if (!strcmp(a, "--light-strategy")) {
+                if (tl_light_strategy_from_name(v, &rd.light_strategy) != TL_OK)
+                    return bad_usage("--light-strategy wants volumes, tiled or auto", v);
+            } else if (!strcmp(a, "--tile-size")) {
+                if (!parse_u32(v, &rd.tile_size) || (rd.tile_size != 8 && rd.tile_size != 16 && rd.tile_size != 32))
+                    return bad_usage("--tile-size wants 8, 16 or 32", v);
+            } else if (!strcmp(a, "--tiled-shading")) {
+                if (!strcmp(v, "fragment")) rd.tiled_shading = TL_TILED_SHADING_FRAGMENT;
+                else if (!strcmp(v, "compute")) rd.tiled_shading = TL_TILED_SHADING_COMPUTE;
+                else return bad_usage("--tiled-shading wants fragment or compute", v);
+            } else if (!strcmp(a, "--light-format")) {
+                if (!strcmp(v, "rgba16f")) rd.light_format = TL_LIGHT_FORMAT_RGBA16F;
+                else if (!strcmp(v, "r11g11b10f")) rd.light_format = TL_LIGHT_FORMAT_R11G11B10F;
+                else return bad_usage("--light-format wants rgba16f or r11g11b10f", v);
             } else if (!strcmp(a, "--dump-targets")) {
                 dump = v;
             } else {

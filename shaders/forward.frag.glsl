@@ -1,6 +1,7 @@
 // Forward shading (forward mode, and alpha-blended materials in every mode): each fragment
 // evaluates the lights in its object's list (built on the CPU per frame, lights whose range
-// reaches the object's bounds). TL_DEPTH_ONLY: the depth pre-pass. TL_TRANSPARENT: alpha out.
+// reaches the object's bounds), or with TL_FORWARD_TILED (Forward+) the directional lights and
+// its tile's list. TL_DEPTH_ONLY: the depth pre-pass. TL_TRANSPARENT: alpha out.
 #include "codec.glsl"
 #include "frame.glsl"
 #include "lighting.glsl"
@@ -8,13 +9,7 @@
 #include "object.glsl"
 
 #ifndef TL_DEPTH_ONLY
-struct tl_forward_light {
-    vec4 position_radius;      // view space
-    vec4 color_type;           // linear colour, type (1 point, 2 spot, 3 directional)
-    vec4 direction_cos_outer;  // view space
-    vec4 cos_inner;
-};
-layout(std430, binding = TL_SSBO_FORWARD_LIGHTS) readonly buffer tl_light_buffer { tl_forward_light tl_lights[]; };
+#include "tiles.glsl" // the lights block (and, for Forward+, the tile lists)
 layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
@@ -30,9 +25,19 @@ void main()
     vec3 v = normalize(-p);
     float power = tl_gloss_to_specular_power(s.gloss);
     vec3 diffuse = vec3(0.0), specular = vec3(0.0);
+#ifdef TL_FORWARD_TILED
+    // Forward+: the directional lights, then the pixel's tile list (every local light on overflow)
+    uvec2 h = tl_tile_headers[tl_tile_index(ivec2(gl_FragCoord.xy))];
+    bool all_local = h.x == TL_TILE_OVERFLOW;
+    uint count = u_light_counts.x + (all_local ? u_light_counts.y : h.y);
+    for (uint k = 0u; k < count; k++) {
+        uint i = k < u_light_counts.x || all_local ? k : tl_tile_entries[h.x + k - u_light_counts.x];
+#else
     uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
-    for (uint i = 0u; i < count; i++) {
-        tl_forward_light l = tl_lights[tl_light_indices[first + i]];
+    for (uint k = 0u; k < count; k++) {
+        uint i = tl_light_indices[first + k];
+#endif
+        tl_light_data l = tl_lights[i];
         vec2 t = tl_light_terms(int(l.color_type.w), p, n, v, power, l.position_radius.xyz, l.position_radius.w,
                                 l.direction_cos_outer.xyz, l.cos_inner.x, l.direction_cos_outer.w);
         diffuse += l.color_type.rgb * t.x;

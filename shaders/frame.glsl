@@ -17,6 +17,8 @@ layout(std140, binding = TL_UBO_FRAME) uniform tl_frame_block {
     float u_fxaa_subpix;
     float u_fxaa_edge_threshold;
     float u_fxaa_edge_threshold_min;
+    uvec4 u_tiles;        // tiled: tile side in pixels, tiles across, tiles down, list entries the buffer holds
+    uvec4 u_light_counts; // visible lights: directional (first in the lights block), local after them
 };
 
 #endif

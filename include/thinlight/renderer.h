@@ -63,6 +63,38 @@ typedef enum tl_light_buffer {
     TL_LIGHT_BUFFER_COUNT_       /**< number of values */
 } tl_light_buffer;
 
+/** How the light pass accumulates lights (DESIGN.md section 2). */
+typedef enum tl_light_strategy {
+    TL_LIGHT_STRATEGY_DEFAULT = 0, /**< "auto": the planner picks per scene (tl_frame_plan.light_strategy says which, and why) */
+    TL_LIGHT_STRATEGY_VOLUMES,     /**< "volumes": instanced spheres, cones and a full-screen triangle, blended per
+                                        light; in forward mode, per-object light lists */
+    TL_LIGHT_STRATEGY_TILED,       /**< "tiled": per-tile depth bounds and light lists (a compute pass), then one pass
+                                        that reads the G-buffer once per pixel and loops over its tile's lights;
+                                        in forward mode, Forward+ (tile lists after the depth pre-pass) */
+    TL_LIGHT_STRATEGY_COUNT_       /**< number of values */
+} tl_light_strategy;
+
+/** "auto", "volumes", "tiled" ("unknown" otherwise). */
+TL_API const char *tl_light_strategy_name(tl_light_strategy strategy);
+/** Parses a name of tl_light_strategy_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_light_strategy_from_name(const char *name, tl_light_strategy *strategy);
+
+/** Which pass shades the tiles of the tiled strategy. */
+typedef enum tl_tiled_shading {
+    TL_TILED_SHADING_DEFAULT = 0, /**< = TL_TILED_SHADING_FRAGMENT (the faster on llvmpipe: docs/frame.md) */
+    TL_TILED_SHADING_FRAGMENT,    /**< a full-screen triangle */
+    TL_TILED_SHADING_COMPUTE,     /**< a compute pass, one invocation per pixel, image stores */
+    TL_TILED_SHADING_COUNT_       /**< number of values */
+} tl_tiled_shading;
+
+/** Storage of the light buffer's targets (thin-lpp). */
+typedef enum tl_light_format {
+    TL_LIGHT_FORMAT_DEFAULT = 0, /**< = TL_LIGHT_FORMAT_RGBA16F */
+    TL_LIGHT_FORMAT_RGBA16F,     /**< 8 B/px per target, FP16 */
+    TL_LIGHT_FORMAT_R11G11B10F,  /**< 4 B/px per target (6- and 5-bit mantissas, no alpha): the exact layout only */
+    TL_LIGHT_FORMAT_COUNT_       /**< number of values */
+} tl_light_format;
+
 /** FXAA 3.11-style quality presets (edge search lengths as in the 12 / 29 / 39 presets). */
 typedef enum tl_fxaa_preset {
     TL_FXAA_DEFAULT = 0, /**< = TL_FXAA_29 */
@@ -91,6 +123,10 @@ typedef struct tl_renderer_desc {
     tl_depth_format depth_format;      /**< default D24 (D24S8); D32F_REVERSED for reversed Z */
     tl_rt0_packing rt0;                /**< default RGBA8 */
     tl_light_buffer light_buffer;      /**< default EXACT */
+    tl_light_format light_format;      /**< default RGBA16F; R11G11B10F needs the EXACT layout */
+    tl_light_strategy light_strategy;  /**< default auto */
+    uint32_t tile_size;                /**< tiled strategy: tile side in pixels, 8, 16 or 32; 0: the default (docs/frame.md) */
+    tl_tiled_shading tiled_shading;    /**< tiled strategy: fragment (default) or compute shading pass */
     tl_fxaa_preset fxaa;               /**< default 29 */
     float fxaa_edge_threshold;         /**< default 0.166 (relative local contrast) */
     float fxaa_edge_threshold_min;     /**< default 0.0833 (absolute, in gamma-encoded luma) */
@@ -123,7 +159,9 @@ typedef struct tl_renderer_desc {
 typedef enum tl_pass {
     TL_PASS_DEPTH_PREPASS, /**< forward: depth only */
     TL_PASS_GBUFFER,       /**< thin or fat G-buffer (deferred modes also write emissive + ambient into HDR) */
+    TL_PASS_LIGHT_CULL,    /**< tiled: per-tile depth bounds and light lists (compute) */
     TL_PASS_LIGHTS,        /**< light volumes: into the light buffer (thin-lpp) or shading into HDR */
+    TL_PASS_LIGHTS_TILED,  /**< tiled: every pixel once, looping over its tile's lights */
     TL_PASS_MATERIAL,      /**< thin-lpp second geometry pass, depth EQUAL */
     TL_PASS_FORWARD,       /**< forward shading with per-object light lists */
     TL_PASS_TRANSPARENT,   /**< alpha-blended materials, forward-lit after the opaque frame */
@@ -146,6 +184,8 @@ typedef enum tl_target_id {
     TL_TARGET_HDR,            /**< RGBA16F linear radiance */
     TL_TARGET_LDR,            /**< RGBA8 tone-mapped, luma in alpha (only with FXAA) */
     TL_TARGET_OUTPUT,         /**< RGBA8 final image */
+    TL_TARGET_LIGHT_LISTS,    /**< tiled: per-tile light lists (a storage buffer; its bytes per pixel are its
+                                   size over the pixels, rounded up) */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -217,6 +257,10 @@ typedef struct tl_frame_plan {
     uint32_t gbuffer_bytes_per_pixel;            /**< depth + G-buffer + light buffer (what the technique stores) */
     uint32_t vertex_attributes;                  /**< TL_ATTRIBUTE_* bound by the geometry passes */
     uint32_t light_types;                        /**< bits (1u << tl_light_type) drawn by the light pass */
+    tl_light_strategy light_strategy;            /**< volumes or tiled (never auto) */
+    char strategy_reason[96];                    /**< why the planner chose it */
+    uint32_t tile_size;                          /**< tiled: tile side in pixels (0 with volumes) */
+    uint32_t tiles_x, tiles_y;                   /**< tiled: tiles across and down */
     size_t program_count;                        /**< entries used in programs */
     tl_plan_program programs[TL_PLAN_MAX_PROGRAMS]; /**< every permutation the frame compiles */
 } tl_frame_plan;
@@ -259,6 +303,11 @@ typedef struct tl_frame_stats {
     uint64_t light_fragments[TL_LIGHT_TYPE_COUNT_]; /**< pixels covered by each type's light volumes
                                                         (fragments shaded in the light pass) */
     uint64_t forward_light_pairs;       /**< forward: sum over drawn objects of the lights in their list */
+    uint64_t light_pairs;               /**< pixel-light pairs the light pass shaded: fragments of the light
+                                             volumes; tiled: pixels x lists of their tiles (from the GPU) */
+    uint32_t tile_overflows;            /**< tiled: tiles whose list did not fit and that looped over every
+                                             visible light instead (none is lost; the lists grow for later frames) */
+    uint64_t light_list_entries;        /**< tiled: entries of all tile lists */
     uint32_t draw_calls;                /**< GL draw calls of the frame */
     uint32_t programs_compiled;         /**< shader programs compiled so far by this renderer (cache misses) */
 } tl_frame_stats;

@@ -110,8 +110,9 @@ void tl__state_viewport(const GladGLContext *gl, tl__state *s, GLint x, GLint y,
     s->viewport[3] = h;
 }
 
-void tl__state_reset(const GladGLContext *gl, tl__state *s, GLuint units, GLuint buffers)
+void tl__state_reset(const GladGLContext *gl, tl__state *s, GLuint units, GLuint buffers, GLuint images)
 {
+    if (images) gl->BindImageTextures(0, (GLsizei)images, NULL);
     gl->BindFramebuffer(GL_FRAMEBUFFER, 0);
     gl->UseProgram(0);
     gl->BindVertexArray(0);

@@ -59,9 +59,10 @@ void tl__state_viewport(const GladGLContext *gl, tl__state *s, GLint x, GLint y,
 void tl__state_cull(const GladGLContext *gl, tl__state *s, tl__cull cull);
 /* The state the renderer promises on return (renderer.h, tl_renderer_render_to): default
  * framebuffer, no program, vertex array, textures or samplers on units [0, units), no buffers
- * on uniform / storage binding points [0, buffers); capabilities off, masks on, default clip
+ * on uniform / storage binding points [0, buffers), no images on image units [0, images);
+ * capabilities off, masks on, default clip
  * control. The viewport is left as it is. */
-void tl__state_reset(const GladGLContext *gl, tl__state *s, GLuint units, GLuint buffers);
+void tl__state_reset(const GladGLContext *gl, tl__state *s, GLuint units, GLuint buffers, GLuint images);
 
 #ifdef __cplusplus
 }

@@ -57,14 +57,22 @@ void tl__stream_bind_range(const GladGLContext *gl, tl__stream *s, GLenum target
                            size_t size)
 {
     gl->BindBufferRange(target, index, s->buffer, (GLintptr)offset, (GLsizeiptr)size);
-    if (s->bind_count < TL__STREAM_MAX_BINDS) s->binds[s->bind_count++] = (tl__stream_bind){target, index, offset, size};
+    if (s->bind_count < TL__STREAM_MAX_BINDS) s->binds[s->bind_count++] = (tl__stream_bind){target, index, 0, offset, size};
+}
+
+void tl__stream_bind_buffer(const GladGLContext *gl, tl__stream *s, GLenum target, GLuint index, GLuint buffer)
+{
+    gl->BindBufferBase(target, index, buffer);
+    if (s->bind_count < TL__STREAM_MAX_BINDS) s->binds[s->bind_count++] = (tl__stream_bind){target, index, buffer, 0, 0};
 }
 
 void tl__stream_rebind(const GladGLContext *gl, const tl__stream *s)
 {
-    for (size_t i = 0; i < s->bind_count; i++)
-        gl->BindBufferRange(s->binds[i].target, s->binds[i].index, s->buffer, (GLintptr)s->binds[i].offset,
-                            (GLsizeiptr)s->binds[i].size);
+    for (size_t i = 0; i < s->bind_count; i++) {
+        const tl__stream_bind *b = &s->binds[i];
+        if (b->buffer) gl->BindBufferBase(b->target, b->index, b->buffer);
+        else gl->BindBufferRange(b->target, b->index, s->buffer, (GLintptr)b->offset, (GLsizeiptr)b->size);
+    }
 }
 
 void *tl__stream_reserve(tl__stream *s, size_t size, size_t align, size_t *offset)

@@ -22,6 +22,7 @@ extern "C" {
 typedef struct tl__stream_bind {
     GLenum target; /* GL_UNIFORM_BUFFER or GL_SHADER_STORAGE_BUFFER */
     GLuint index;
+    GLuint buffer; /* 0: the stream's */
     size_t offset, size;
 } tl__stream_bind;
 
@@ -47,6 +48,8 @@ void *tl__stream_reserve(tl__stream *s, size_t size, size_t align, size_t *offse
 /* Binds a range of the stream to an indexed binding point and remembers it for tl__stream_rebind. */
 void tl__stream_bind_range(const GladGLContext *gl, tl__stream *s, GLenum target, GLuint index, size_t offset,
                            size_t size);
+/* Binds a whole buffer (not the stream's) to an indexed binding point, remembered the same way. */
+void tl__stream_bind_buffer(const GladGLContext *gl, tl__stream *s, GLenum target, GLuint index, GLuint buffer);
 /* Binds this frame's ranges again (after code the renderer does not control ran). */
 void tl__stream_rebind(const GladGLContext *gl, const tl__stream *s);
 /* Fences the current region: the GPU work issued so far reads it. */

@@ -9,8 +9,13 @@
     X(UBO_FRAME, 0)              /* per frame and view: matrices, depth, sizes, post parameters */ \
     X(UBO_MATERIAL, 1)           /* per material: one std140 record, bound as a range */          \
     X(SSBO_OBJECTS, 0)           /* per object: model and normal matrices, forward light range */ \
-    X(SSBO_FORWARD_LIGHTS, 1)    /* forward: the visible lights, view space */                    \
+    X(SSBO_LIGHTS, 1)            /* the visible lights, view space, directional ones first */     \
     X(SSBO_FORWARD_INDICES, 2)   /* forward: per-object light index lists */                      \
+    X(SSBO_TILE_HEADERS, 3)      /* tiled: counters and per-tile (offset, count) */               \
+    X(SSBO_TILE_ENTRIES, 4)      /* tiled: the lists' light indices */                            \
+    X(IMAGE_LIGHT_DIFFUSE, 0)    /* image units of the compute shading pass's writes */           \
+    X(IMAGE_LIGHT_SPECULAR, 1)                                                                    \
+    X(IMAGE_HDR, 2)                                                                               \
     X(UNIT_ALBEDO_TEXTURE, 16)   /* material textures (units below 16 are the targets') */        \
     X(UNIT_NORMAL_TEXTURE, 17)                                                                    \
     X(UNIT_MR_TEXTURE, 18)                                                                        \
@@ -23,7 +28,8 @@ enum {
 #undef TL__BINDING_ENUM
     TL__MATERIAL_TEXTURES = 5,
     TL__TEXTURE_UNITS_USED = 21, /* units the renderer may bind: 0 .. 20 */
-    TL__BUFFER_BINDINGS_USED = 3 /* uniform and storage binding points it may bind: 0 .. 2 */
+    TL__BUFFER_BINDINGS_USED = 5, /* uniform and storage binding points it may bind: 0 .. 4 */
+    TL__IMAGE_UNITS_USED = 3     /* image units it may bind: 0 .. 2 */
 };
 
 #endif

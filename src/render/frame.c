@@ -47,6 +47,14 @@ static void tl__pass_body(tl_renderer *r, const tl__compiled_pass *cp, const tl_
 {
     const GladGLContext *gl = &r->gl;
     GLsizei w = (GLsizei)r->desc.width, h = (GLsizei)r->desc.height;
+    if (cp->decl->compute) { /* no framebuffer, clears or raster state */
+        for (uint8_t k = 0; k < cp->bind_count; k++) gl->BindTextureUnit(cp->units[k], cp->textures[k]);
+        for (uint8_t k = 0; k < cp->image_count; k++)
+            gl->BindImageTexture(cp->image_units[k], cp->image_textures[k], 0, GL_FALSE, 0, GL_READ_WRITE,
+                                 cp->image_formats[k]);
+        cp->def->execute(r, ctx);
+        return;
+    }
     if (ctx->to_caller) {
         tl__state_framebuffer(gl, &r->state, out->framebuffer);
         tl__state_viewport(gl, &r->state, (GLint)out->x, (GLint)out->y, out->width ? (GLsizei)out->width : w,
@@ -124,13 +132,6 @@ static tl_result tl__upload(tl_renderer *r, const tl__view *v, tl__frame_record 
     return TL_OK;
 }
 
-static int tl__has_forward_lists(const tl_renderer *r)
-{
-    for (size_t i = 0; i < r->pass_count; i++)
-        if (r->passes[i].def && r->passes[i].def->prepare == tl__forward_prepare) return 1;
-    return 0;
-}
-
 /* CPU figures every frame reports: what the targets occupy, what has been compiled. */
 static void tl__record_targets(const tl_renderer *r, tl_frame_stats *st)
 {
@@ -152,11 +153,12 @@ static tl_result tl__issue(tl_renderer *r, const tl__view *v, const tl_render_ou
     const GladGLContext *gl = &r->gl;
     tl__visibility(r, v, rec);
     tl_result res = tl__prepare(r, v, rec);
-    if (res == TL_OK) res = tl__upload(r, v, rec, tl__has_forward_lists(r));
+    if (res == TL_OK) res = tl__upload(r, v, rec, r->object_lists);
     if (res != TL_OK) return res;
     tl__state_invalidate(&r->state);
     for (size_t i = 0; i < r->pass_count; i++) tl__run(r, &r->passes[i], rec, i, out, v, slot);
-    tl__state_reset(gl, &r->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED);
+    tl__state_reset(gl, &r->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED,
+                    TL__IMAGE_UNITS_USED);
     if (out) gl->Viewport((GLint)out->x, (GLint)out->y, out->width ? (GLsizei)out->width : (GLsizei)r->desc.width,
                           out->height ? (GLsizei)out->height : (GLsizei)r->desc.height);
     else gl->Viewport(0, 0, (GLsizei)r->desc.width, (GLsizei)r->desc.height);

@@ -13,6 +13,7 @@
 void tl__graph_release(tl_renderer *r)
 {
     const GladGLContext *gl = &r->gl;
+    tl__tiles_release(r);
     for (size_t i = 0; i < r->pass_count; i++) tl__framebuffer_destroy(gl, &r->passes[i].fbo);
     tl__framebuffer_destroy(gl, &r->luma.fbo);
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
@@ -36,6 +37,7 @@ static tl_result tl__graph_block(tl_renderer *r, size_t b)
             if (first < 0) first = t;
             members++;
         }
+    if (tl__targets[first].buffer) return TL_OK; /* storage buffers: tl__tiles_create */
     tl__target_desc td = {label, p->target_info[first].format, p->width, p->height};
     tl_result res;
     if (members == 1) { /* memory of its own: the target is the texture */
@@ -54,6 +56,20 @@ static tl_result tl__graph_block(tl_renderer *r, size_t b)
         }
     if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
     return TL_OK;
+}
+
+/* Image units of a compute pass's writes (bindings.h). */
+static void tl__graph_images(tl_renderer *r, tl__compiled_pass *cp, const tl__pass_decl *d)
+{
+    static const struct { tl_target_id t; uint8_t unit; } map[] = {{TL_TARGET_LIGHT_DIFFUSE, TL__IMAGE_LIGHT_DIFFUSE},
+                                                                   {TL_TARGET_LIGHT_SPECULAR, TL__IMAGE_LIGHT_SPECULAR},
+                                                                   {TL_TARGET_HDR, TL__IMAGE_HDR}};
+    for (size_t k = 0; k < sizeof map / sizeof map[0]; k++)
+        if (d->images & TL_TARGET_BIT(map[k].t)) {
+            cp->image_units[cp->image_count] = map[k].unit;
+            cp->image_textures[cp->image_count] = r->targets[map[k].t].texture;
+            cp->image_formats[cp->image_count++] = r->targets[map[k].t].internal_format;
+        }
 }
 
 /* Framebuffer, clears and texture bindings of one pass. */
@@ -75,6 +91,10 @@ static tl_result tl__graph_pass(tl_renderer *r, tl__compiled_pass *cp, const tl_
             cp->units[cp->bind_count] = (uint8_t)t;
             cp->textures[cp->bind_count++] = r->targets[t].texture;
         }
+    if (d->compute) {
+        tl__graph_images(r, cp, d);
+        return TL_OK;
+    }
     char label[64], msg[256];
     snprintf(label, sizeof label, "fbo.%s", pp->name);
     const tl__target *depth = d->attach_depth ? &r->targets[TL_TARGET_DEPTH] : NULL;
@@ -92,7 +112,7 @@ tl_result tl__graph_programs(tl_renderer *r)
             tl__compiled_pass *cp = &r->passes[i];
             if (!cp->def || cp->def->id != pr->pass) continue;
             const tl__program_src *src = &cp->def->programs[pr->slot];
-            tl_result res = tl__program_get(r, pr->name, src->vs, src->fs, pr->defines, &cp->programs[pr->slot]);
+            tl_result res = tl__program_get(r, pr->name, src, pr->defines, &cp->programs[pr->slot]);
             if (res != TL_OK) return res;
         }
     }
@@ -124,6 +144,13 @@ tl_result tl__graph_compile(tl_renderer *r)
     const tl__plan *plan = &r->plan;
     tl_result res = TL_OK;
     for (size_t b = 0; res == TL_OK && b < plan->pub.block_count; b++) res = tl__graph_block(r, b);
+    if (res == TL_OK && (plan->pub.targets & TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS))) {
+        size_t tiles = (size_t)plan->pub.tiles_x * plan->pub.tiles_y;
+        res = tl__tiles_create(r, plan->pub.tile_size, plan->pub.tiles_x, plan->pub.tiles_y,
+                               tiles * TL__TILE_START_ENTRIES);
+    }
+    r->object_lists = 0;
+    for (size_t i = 0; i < plan->pub.pass_count; i++) r->object_lists |= plan->decl[i].object_lights;
     for (size_t i = 0; res == TL_OK && i < plan->pub.pass_count; i++) {
         tl__compiled_pass *cp = &r->passes[i];
         cp->def = plan->def[i];

@@ -35,3 +35,21 @@ tl_result tl_render_mode_from_name(const char *name, tl_render_mode *mode)
         }
     return TL_ERROR_INVALID_ARGUMENT;
 }
+
+static const char *const tl__strategy_names[TL_LIGHT_STRATEGY_COUNT_] = {"auto", "volumes", "tiled"};
+
+const char *tl_light_strategy_name(tl_light_strategy s)
+{
+    return (unsigned)s < TL_LIGHT_STRATEGY_COUNT_ ? tl__strategy_names[s] : "unknown";
+}
+
+tl_result tl_light_strategy_from_name(const char *name, tl_light_strategy *s)
+{
+    if (!name || !s) return TL_ERROR_INVALID_ARGUMENT;
+    for (int i = 0; i < TL_LIGHT_STRATEGY_COUNT_; i++)
+        if (strcmp(name, tl__strategy_names[i]) == 0) {
+            *s = (tl_light_strategy)i;
+            return TL_OK;
+        }
+    return TL_ERROR_INVALID_ARGUMENT;
+}

@@ -36,6 +36,9 @@ typedef struct tl__plan_input {
     tl_scene_feature_set f;
     const tl__mode_def *mode;
     int lights;                 /* any light to draw */
+    tl_light_strategy strategy; /* volumes or tiled (resolved) */
+    char strategy_reason[96];
+    uint32_t tile_size, tiles_x, tiles_y;
     int spec;                   /* specular materials */
     const char *spec_define;    /* TL_SPECULAR_EXACT, TL_SPECULAR_COMPACT or TL_SPECULAR_NONE */
     const char *rt0_define;     /* TL_RT0_RGBA8 or TL_RT0_RGB10A2 */
@@ -51,6 +54,9 @@ typedef struct tl__pass_decl {
     uint32_t clears;       /* cleared when the pass starts */
     uint32_t neighbourhood; /* samples read as a 5-texel cross per fragment (bytes estimate) */
     uint8_t attach_depth;  /* the depth target is attached (tested or written) */
+    uint8_t compute;       /* a compute pass: no framebuffer, no clears, no raster state */
+    uint8_t object_lights; /* it reads the per-object light lists (forward_lists.c) */
+    uint32_t images;       /* writes bound as images (compute passes) */
     tl__pipeline state;    /* fixed state; a pass may change cull, depth test and clamp per draw */
 } tl__pass_decl;
 
@@ -63,6 +69,7 @@ typedef struct tl__pass_defines {
 typedef struct tl__program_src {
     const char *name; /* NULL ends the list */
     const char *vs, *fs;
+    const char *cs;   /* a compute program instead */
 } tl__program_src;
 
 typedef struct tl__compiled_pass tl__compiled_pass;
@@ -91,10 +98,15 @@ typedef struct tl__pass_def {
     tl_result (*prepare)(tl_renderer *r, const tl__view *v, tl__frame_record *rec);
     void (*upload)(tl_renderer *r);
     void (*execute)(tl_renderer *r, const tl__pass_ctx *ctx);
-    /* optional: files its own queries' results into the stats (query_count of them) */
-    void (*collect)(const uint64_t *results, tl_frame_stats *st);
+    /* optional: files its results into the stats: its own queries' (query_count of them) and
+     * whatever else it measured for that frame */
+    void (*collect)(tl_renderer *r, const uint64_t *results, tl_frame_stats *st);
     uint8_t query_count;
 } tl__pass_def;
+
+/* What the light pass reads and writes in a mode, whichever strategy gathers the lights
+ * (pass_lights.c; the tiled pass uses it too). */
+void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d);
 
 /* The table, in execution order; application passes go between its entries. */
 extern const tl__pass_def *const tl__pass_table[TL_PASS_COUNT];

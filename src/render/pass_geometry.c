@@ -22,11 +22,15 @@ static tl__pipeline tl__geometry_state(const tl__plan_input *in, tl__depth_test 
 
 static void tl__draw_opaque(tl_renderer *r, const tl__pass_ctx *ctx) { tl__draw_objects(r, ctx, TL__DRAW_OPAQUE); }
 
+/* Forward+ (forward with tiled lights): the tiles' depth bounds come from the depth pre-pass. */
+static int tl__forward_plus(const tl__plan_input *in) { return in->lights && in->strategy == TL_LIGHT_STRATEGY_TILED; }
+static int tl__forward_prepass(const tl__plan_input *in) { return !in->d.forward_no_depth_prepass || tl__forward_plus(in); }
+
 /* ---- depth pre-pass (forward) ---------------------------------------------------------------- */
 
 static void tl__prepass_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!in->mode->forward || in->d.forward_no_depth_prepass) return;
+    if (!in->mode->forward || !tl__forward_prepass(in)) return;
     d->writes = d->clears = TL__B(DEPTH);
     d->attach_depth = 1;
     d->state = tl__geometry_state(in, TL__DEPTH_LESS, 1, TL__BLEND_OFF);
@@ -111,18 +115,19 @@ const tl__pass_def tl__pass_material = {
 static void tl__forward_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
     if (!in->mode->forward) return;
-    int prepass = !in->d.forward_no_depth_prepass;
+    int prepass = tl__forward_prepass(in), plus = tl__forward_plus(in);
     d->writes = d->clears = TL__B(HDR) | (prepass ? 0u : TL__B(DEPTH));
-    d->reads = prepass ? TL__B(DEPTH) : 0u;
+    d->reads = (prepass ? TL__B(DEPTH) : 0u) | (plus ? TL__B(LIGHT_LISTS) : 0u);
     d->attach_depth = 1;
+    d->object_lights = !plus;
     d->state = tl__geometry_state(in, prepass ? TL__DEPTH_EQUAL : TL__DEPTH_LESS, !prepass, TL__BLEND_OFF);
 }
 
 static void tl__forward_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
-    (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_FORWARD %s%s", in->spec_define, in->material_defines);
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_FORWARD%s %s%s", (d->reads & TL__B(LIGHT_LISTS)) ? " TL_FORWARD_TILED" : "",
+             in->spec_define, in->material_defines);
 }
 
 const tl__pass_def tl__pass_forward = {
@@ -142,6 +147,7 @@ static void tl__transparent_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->writes = TL__B(HDR);
     d->reads = TL__B(DEPTH) | TL__B(HDR); /* blended onto */
     d->attach_depth = 1;
+    d->object_lights = 1; /* tiles hold lights for the opaque surfaces' depths only */
     d->state = tl__geometry_state(in, TL__DEPTH_LESS, 0, TL__BLEND_ALPHA);
 }
 

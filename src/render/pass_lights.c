@@ -10,10 +10,10 @@
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
-static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
+/* What the light pass reads and writes in this mode, whatever the strategy (the tiled pass too). */
+void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
 {
     const tl__mode_def *m = in->mode;
-    if (!in->lights || m->forward) return;
     uint32_t spec_targets = TL__B(LIGHT_SPECULAR) | TL__B(FAT_MATERIAL);
     int exact_spec = in->spec && in->d.light_buffer == TL_LIGHT_BUFFER_EXACT;
     d->writes = m->light_writes & (exact_spec ? ~0u : ~TL__B(LIGHT_SPECULAR));
@@ -21,7 +21,13 @@ static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->samples = m->light_samples & d->reads;
     d->neighbourhood = d->samples & TL__B(RT1); /* chroma from the four neighbours */
     if (d->writes & TL__B(HDR)) d->reads |= TL__B(HDR); /* shading adds to it */
-    else d->clears = d->writes;
+}
+
+static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    if (!in->lights || in->mode->forward || in->strategy != TL_LIGHT_STRATEGY_VOLUMES) return;
+    tl__light_pass_targets(in, d);
+    if (!(d->writes & TL__B(HDR))) d->clears = d->writes;
     d->attach_depth = 1;
     d->state = (tl__pipeline){.depth_write = 0, .color_write = 1, .blend = TL__BLEND_ADD,
                               .clip_zero_one = in->d.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED};
@@ -90,9 +96,13 @@ static void tl__lights_execute(tl_renderer *r, const tl__pass_ctx *ctx)
     }
 }
 
-static void tl__lights_collect(const uint64_t *results, tl_frame_stats *st)
+static void tl__lights_collect(tl_renderer *r, const uint64_t *results, tl_frame_stats *st)
 {
-    for (int k = 0; k < TL__LIGHT_KINDS; k++) st->light_fragments[k + 1] = results[k];
+    (void)r;
+    for (int k = 0; k < TL__LIGHT_KINDS; k++) {
+        st->light_fragments[k + 1] = results[k];
+        st->light_pairs += results[k];
+    }
 }
 
 const tl__pass_def tl__pass_lights = {

@@ -20,6 +20,29 @@ static void tl__material_defines(const tl_scene_feature_set *f, char *out, size_
              f->has_alpha_mask ? " TL_ALPHA_MASK" : "");
 }
 
+/* Volumes or tiles: forced by the options, else by the number of local lights (docs/frame.md
+ * gives the crossover measured on the crypt and the glTF scenes). */
+static void tl__plan_strategy(tl__plan_input *in)
+{
+    size_t local = in->f.point_lights + in->f.spot_lights;
+    tl_light_strategy s = in->d.light_strategy;
+    if (s != TL_LIGHT_STRATEGY_DEFAULT) {
+        snprintf(in->strategy_reason, sizeof in->strategy_reason, "forced by the options");
+    } else if (local >= TL__TILED_CROSSOVER) {
+        s = TL_LIGHT_STRATEGY_TILED;
+        snprintf(in->strategy_reason, sizeof in->strategy_reason, "auto: %zu local lights >= %u", local,
+                 TL__TILED_CROSSOVER);
+    } else {
+        s = TL_LIGHT_STRATEGY_VOLUMES;
+        snprintf(in->strategy_reason, sizeof in->strategy_reason, "auto: %zu local lights < %u", local,
+                 TL__TILED_CROSSOVER);
+    }
+    in->strategy = s;
+    in->tile_size = in->d.tile_size;
+    in->tiles_x = (in->d.width + in->tile_size - 1) / in->tile_size;
+    in->tiles_y = (in->d.height + in->tile_size - 1) / in->tile_size;
+}
+
 static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_feature_set *features, tl__plan_input *in)
 {
     memset(in, 0, sizeof *in);
@@ -35,6 +58,7 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     }
     in->mode = &tl__modes[d->mode];
     in->lights = f->point_lights + f->spot_lights + f->directional_lights > 0;
+    tl__plan_strategy(in);
     in->spec = f->has_specular != 0;
     in->spec_define = !in->spec                                 ? "TL_SPECULAR_NONE"
                       : d->light_buffer == TL_LIGHT_BUFFER_EXACT ? "TL_SPECULAR_EXACT"
@@ -140,6 +164,10 @@ static void tl__lifetimes(tl__plan *p, const tl_renderer_desc *d, uint32_t sinks
         if (!(fp->targets & TL__BIT(t))) continue;
         ti->format = tl__target_format(d, (tl_target_id)t);
         ti->bytes_per_pixel = (uint32_t)tl__format_bytes_per_pixel(ti->format);
+        if (tl__targets[t].buffer) { /* its size over the pixels, rounded up */
+            size_t px = (size_t)d->width * d->height, bytes = tl__light_lists_bytes((size_t)fp->tiles_x * fp->tiles_y);
+            ti->bytes_per_pixel = (uint32_t)((bytes + px - 1) / px);
+        }
         fp->target_bytes_per_pixel[t] = ti->bytes_per_pixel;
         fp->bytes_per_pixel += ti->bytes_per_pixel;
         if (tl__targets[t].gbuffer) fp->gbuffer_bytes_per_pixel += ti->bytes_per_pixel;
@@ -203,7 +231,7 @@ static void tl__output_defines(uint32_t writes, char *out, size_t size)
     int loc = 0;
     out[0] = '\0';
     for (int t = 0; t < TL_TARGET_COUNT; t++)
-        if (t != TL_TARGET_DEPTH && (writes & TL__BIT(t))) {
+        if (t != TL_TARGET_DEPTH && !tl__targets[t].buffer && (writes & TL__BIT(t))) {
             int n = snprintf(out + len, size - len, "%sTL_OUT_%s=%d", len ? " " : "", tl__targets[t].macro, loc++);
             if (n > 0 && (size_t)n < size - len) len += (size_t)n;
         }
@@ -247,6 +275,13 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     p->pub.height = d.height;
     /* the output is read after the frame; kept targets too, when the plan has them at all */
     uint32_t kept = TL__BIT(TL_TARGET_OUTPUT) | (d.keep_targets & (TL__BIT(TL_TARGET_COUNT) - 1u));
+    p->pub.light_strategy = in.strategy;
+    snprintf(p->pub.strategy_reason, sizeof p->pub.strategy_reason, "%s", in.strategy_reason);
+    if (in.strategy == TL_LIGHT_STRATEGY_TILED) {
+        p->pub.tile_size = in.tile_size;
+        p->pub.tiles_x = in.tiles_x;
+        p->pub.tiles_y = in.tiles_y;
+    }
     tl__select(&in, apps, app_count, p);
     tl__cull_passes(p, TL__BIT(TL_TARGET_OUTPUT));
     tl__lifetimes(p, &d, kept);

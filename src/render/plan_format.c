@@ -81,9 +81,13 @@ size_t tl_frame_plan_format(const tl_frame_plan *p, char *buffer, size_t size)
     tl__print_targets_table(&o, p);
     tl__printf(&o, "vertex attributes: position, normal%s%s\n", p->vertex_attributes & TL_ATTRIBUTE_UV ? ", uv" : "",
                p->vertex_attributes & TL_ATTRIBUTE_TANGENT ? ", tangent" : "");
-    tl__printf(&o, "light volumes:%s%s%s%s\n", p->light_types & (1u << TL_LIGHT_POINT) ? " point" : "",
+    tl__printf(&o, "light types:%s%s%s%s\n", p->light_types & (1u << TL_LIGHT_POINT) ? " point" : "",
                p->light_types & (1u << TL_LIGHT_SPOT) ? " spot" : "",
                p->light_types & (1u << TL_LIGHT_DIRECTIONAL) ? " directional" : "", p->light_types ? "" : " none");
+    tl__printf(&o, "light strategy: %s (%s)", tl_light_strategy_name(p->light_strategy), p->strategy_reason);
+    if (p->light_strategy == TL_LIGHT_STRATEGY_TILED)
+        tl__printf(&o, "; %ux%u-pixel tiles, %u x %u", p->tile_size, p->tile_size, p->tiles_x, p->tiles_y);
+    tl__printf(&o, "\n");
     tl__printf(&o, "programs:\n");
     for (size_t i = 0; i < p->program_count; i++)
         tl__printf(&o, "  %-19s %s\n", p->programs[i].name, p->programs[i].defines[0] ? p->programs[i].defines : "-");

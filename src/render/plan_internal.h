@@ -5,6 +5,10 @@
 #include "pass.h"
 
 #define TL__MAX_SIZE 16384u
+/* Tiled strategy defaults (docs/frame.md gives the measurements behind them): the tile side, and
+ * the number of local lights from which the planner prefers tiles to volumes. */
+#define TL__TILE_SIZE_DEFAULT 16u
+#define TL__TILED_CROSSOVER 32u
 
 /* Resolves zeroed fields to their defaults; TL_ERROR_INVALID_ARGUMENT for an enum out of range,
  * TL_ERROR_LIMIT for a size of 0 after defaults or over TL__MAX_SIZE (desc.c). */

@@ -47,11 +47,12 @@ static tl_result tl__cache_grow(tl_renderer *r)
     return TL_OK;
 }
 
-tl_result tl__program_get(tl_renderer *r, const char *label, const char *vs, const char *fs, const char *defines,
+tl_result tl__program_get(tl_renderer *r, const char *label, const tl__program_src *src, const char *defines,
                           GLuint *out)
 {
     char key[512];
-    snprintf(key, sizeof key, "%s|%s|%s", vs, fs, defines);
+    snprintf(key, sizeof key, "%s|%s|%s|%s", src->vs ? src->vs : "", src->fs ? src->fs : "", src->cs ? src->cs : "",
+             defines);
     for (size_t i = 0; i < r->cache_count; i++)
         if (strcmp(r->cache[i].key, key) == 0) {
             *out = r->cache[i].program;
@@ -63,8 +64,12 @@ tl_result tl__program_get(tl_renderer *r, const char *label, const char *vs, con
     const char *defs[TL__MAX_DEFINES];
     tl__program_desc pd = {0};
     pd.label = label;
-    pd.stages[0] = (tl__shader_stage){GL_VERTEX_SHADER, vs, NULL};
-    pd.stages[1] = (tl__shader_stage){GL_FRAGMENT_SHADER, fs, NULL};
+    if (src->cs) {
+        pd.stages[0] = (tl__shader_stage){GL_COMPUTE_SHADER, src->cs, NULL};
+    } else {
+        pd.stages[0] = (tl__shader_stage){GL_VERTEX_SHADER, src->vs, NULL};
+        pd.stages[1] = (tl__shader_stage){GL_FRAGMENT_SHADER, src->fs, NULL};
+    }
     pd.defines = defs;
     pd.define_count = tl__define_list(defines, buf, sizeof buf, units, defs);
     char log[2048];

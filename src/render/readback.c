@@ -129,8 +129,8 @@ tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *o
     const tl__compiled_pass *fxaa = tl__fxaa_pass(r, &fxaa_index);
     if (!fxaa || !r->luma.fbo) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: FXAA is off in this renderer");
     if (!r->programs_ready && (res = tl__graph_programs(r)) != TL_OK) return res;
-    if (!r->luma.programs[0] && (res = tl__program_get(r, "luma", tl__pass_luma.programs[0].vs, tl__pass_luma.programs[0].fs,
-                                                       "TL_OUT_LDR=0", &r->luma.programs[0])) != TL_OK)
+    if (!r->luma.programs[0] &&
+        (res = tl__program_get(r, "luma", &tl__pass_luma.programs[0], "TL_OUT_LDR=0", &r->luma.programs[0])) != TL_OK)
         return res;
     const GladGLContext *gl = &r->gl;
     gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -147,7 +147,8 @@ tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *o
     tl__state_invalidate(&r->state);
     tl__run_pass(r, &r->luma, &rec, 0, NULL);
     tl__run_pass(r, fxaa, &rec, fxaa_index, NULL);
-    tl__state_reset(gl, &r->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED);
+    tl__state_reset(gl, &r->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED,
+                    TL__IMAGE_UNITS_USED);
     tl__stream_end(gl, &r->stream);
     res = tl_renderer_read_output(r, out, size);
     GLenum e = gl->GetError();

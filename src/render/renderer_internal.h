@@ -42,6 +42,8 @@ typedef struct tl__frame_ubo {
     float ambient[3], clear_depth;
     float inv_size[2], exposure, fxaa_subpix;
     float fxaa_edge_threshold, fxaa_edge_threshold_min, pad[2];
+    uint32_t tiles[4];        /* tile side, tiles across, tiles down, list entries the buffer holds */
+    uint32_t light_counts[4]; /* visible directional lights (first), local lights after them */
 } tl__frame_ubo;
 
 /* std430 element of tl_object_buffer (shaders/object.glsl). */
@@ -94,6 +96,10 @@ struct tl__compiled_pass {
     uint8_t bind_count;
     uint8_t units[TL_TARGET_COUNT];
     GLuint textures[TL_TARGET_COUNT];
+    uint8_t image_count; /* compute passes: targets written as images */
+    uint8_t image_units[TL__IMAGE_UNITS_USED];
+    GLuint image_textures[TL__IMAGE_UNITS_USED];
+    GLenum image_formats[TL__IMAGE_UNITS_USED];
     uint8_t writes_output;
 };
 
@@ -104,6 +110,20 @@ struct tl__frame_record {
     size_t instances[TL_PLAN_MAX_PASSES]; /* light instances drawn per pass */
     size_t stream_bytes;                  /* per-frame data the prepare steps will upload */
 };
+
+/* Tiled light lists (tiles.c): four counters (entries used, tiles that overflowed, shaded pairs as
+ * two 32-bit halves) then (offset, count) per tile; the entries; and a ring of read-back copies of
+ * the counters, read once their fence has passed (never waited for in a frame). */
+typedef struct tl__tiles {
+    GLuint headers, entries;
+    size_t capacity;            /* entries the buffer holds */
+    size_t needed;              /* most entries a finished frame used (read back) */
+    uint32_t size, x, y;        /* tile side in pixels, tiles across and down */
+    GLuint readback;
+    const uint32_t *readback_map;  /* TL__QUERY_RING x 4 counters */
+    GLsync fences[TL__QUERY_RING];
+    uint64_t fence_frame[TL__QUERY_RING];
+} tl__tiles;
 
 typedef struct tl__query_slot {
     GLuint time[TL_PLAN_MAX_PASSES][2];
@@ -131,6 +151,7 @@ struct tl_renderer {
     tl__compiled_pass luma;  /* tl_renderer_apply_fxaa's first pass (with FXAA on) */
     tl__pass_decl luma_decl;
     tl_plan_pass luma_plan;
+    int object_lists;        /* some pass of the plan reads the per-object light lists */
     tl__app_pass apps[TL_MAX_APP_PASSES];
     size_t app_count;
 
@@ -166,13 +187,20 @@ struct tl_renderer {
     GLuint vbo_volume[2], ibo_volume[2];
     uint32_t volume_index_count[2];
 
-    /* forward lists (forward_lists.c): visible lights (view space) and per-object index ranges */
-    tl__forward_light *fwd_lights;
-    uint32_t *fwd_visible;   /* scene light index of each forward light */
-    float (*fwd_spheres)[4]; /* world-space bounding sphere of each forward light; radius < 0: reaches everything */
+    /* the frame's visible lights in view space, directional ones first (light_lists.c): forward,
+     * Forward+ and tiled shading read them */
+    tl__forward_light *view_lights;
+    uint32_t *view_light_index;     /* scene light index of each */
+    float (*view_light_spheres)[4]; /* world-space bounding sphere of each; radius < 0: reaches everything */
+    size_t view_light_count, view_dir_count;
+    uint64_t view_lights_frame, view_lights_uploaded; /* frames they were built and uploaded for */
+    /* forward per-object lists (forward_lists.c) */
     uint32_t *fwd_indices;
-    size_t fwd_index_capacity, fwd_light_count, fwd_index_count;
+    size_t fwd_index_capacity, fwd_index_count;
     uint32_t *fwd_first, *fwd_count; /* per object */
+
+    /* tiled light lists (tiles.c) */
+    tl__tiles tiles;
 
     /* per frame */
     tl__stream stream;
@@ -192,7 +220,7 @@ struct tl_renderer {
 /* ---- the files of src/render, lowest first ---------------------------------------------------- */
 
 /* programs.c: permutations built on demand, cached by (vertex, fragment, defines). */
-tl_result tl__program_get(tl_renderer *r, const char *label, const char *vs, const char *fs, const char *defines,
+tl_result tl__program_get(tl_renderer *r, const char *label, const tl__program_src *src, const char *defines,
                           GLuint *out);
 void tl__program_cache_destroy(tl_renderer *r);
 
@@ -214,9 +242,22 @@ void tl__light_volumes_destroy(tl_renderer *r);
 tl_result tl__lights_prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec);
 void tl__lights_upload(tl_renderer *r);
 
+/* light_lists.c: the frame's visible lights in view space (once per frame, however many passes). */
+void tl__light_sphere(const tl_light *l, float c[3], float *radius);
+void tl__visible_lights(tl_renderer *r, const tl__view *v, tl__frame_record *rec);
+void tl__visible_lights_upload(tl_renderer *r);
+
 /* forward_lists.c: per-object light lists of the visible lights (forward and transparent). */
 tl_result tl__forward_prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec);
 void tl__forward_upload(tl_renderer *r);
+
+/* tiles.c: the tiled light lists' buffers and the light-cull pass's CPU side and dispatch. */
+tl_result tl__tiles_create(tl_renderer *r, uint32_t size, uint32_t x, uint32_t y, size_t capacity);
+void tl__tiles_release(tl_renderer *r);
+tl_result tl__tiles_prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec);
+void tl__tiles_upload(tl_renderer *r);
+void tl__tiles_cull(tl_renderer *r, const tl__pass_ctx *ctx);
+void tl__tiles_collect(tl_renderer *r, const uint64_t *results, tl_frame_stats *st);
 
 /* stats.c: the query ring and the bytes-moved estimate. */
 double tl__now_ms(void);

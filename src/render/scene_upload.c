@@ -34,13 +34,13 @@ void tl__scene_release(tl_renderer *r)
 
 void tl__lights_release(tl_renderer *r)
 {
-    void *arrays[] = {r->lights, r->instances, r->fwd_lights, r->fwd_visible, r->fwd_spheres, r->fwd_indices};
+    void *arrays[] = {r->lights, r->instances, r->view_lights, r->view_light_index, r->view_light_spheres, r->fwd_indices};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) tl__free(&r->alloc, arrays[i]);
     r->lights = NULL;
     r->instances = NULL;
-    r->fwd_lights = NULL;
-    r->fwd_visible = NULL;
-    r->fwd_spheres = NULL;
+    r->view_lights = NULL;
+    r->view_light_index = NULL;
+    r->view_light_spheres = NULL;
     r->fwd_indices = NULL;
     r->fwd_index_capacity = r->light_count = 0;
 }
@@ -102,9 +102,9 @@ tl_result tl__lights_store(tl_renderer *r, const tl_light *lights, size_t count,
     tl__lights_release(r);
     r->lights = copy;
     r->instances = inst;
-    r->fwd_lights = fl;
-    r->fwd_visible = vis;
-    r->fwd_spheres = sph;
+    r->view_lights = fl;
+    r->view_light_index = vis;
+    r->view_light_spheres = sph;
     r->light_count = count;
     return TL_OK;
 }

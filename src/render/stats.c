@@ -120,7 +120,7 @@ static void tl__slot_read(tl_renderer *r, tl__query_slot *q)
         const tl__compiled_pass *cp = &r->passes[i];
         uint64_t results[TL__PASS_MAX_QUERIES] = {0};
         uint64_t frags = tl__pass_queries(r, q, i, results);
-        if (cp->def && cp->def->collect) cp->def->collect(results, st);
+        if (cp->def && cp->def->collect) cp->def->collect(r, results, st);
         double ms = tl__pass_ms(r, q, i), bytes = tl__pass_bytes(p, cp->decl, (double)frags, q->rec.indices[i],
                                                                    q->rec.instances[i]);
         if (cp->app >= 0) {

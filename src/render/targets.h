@@ -12,11 +12,17 @@ typedef struct tl__target_def {
     const char *macro;  /* "RT0": TL_UNIT_RT0 (texture unit = id), TL_OUT_RT0 (colour location) */
     uint32_t format;    /* GL internal format; 0: depends on the options (tl__target_format) */
     uint8_t gbuffer;    /* counts as what the technique stores (G-buffer or light buffer) */
+    uint8_t buffer;     /* a storage buffer, not a texture: no attachment, unit or memory sharing */
 } tl__target_def;
 
 extern const tl__target_def tl__targets[TL_TARGET_COUNT];
 
-/* The GL internal format of a target in a resolved configuration. */
+/* The GL internal format of a target in a resolved configuration (0 for buffers). */
 uint32_t tl__target_format(const tl_renderer_desc *d, tl_target_id id);
+
+/* Tiled light lists: entries each tile starts with (the buffer grows when a frame needs more). */
+#define TL__TILE_START_ENTRIES 32u
+/* Bytes of the light lists for a number of tiles: 4 counters, (offset, count) per tile, entries. */
+size_t tl__light_lists_bytes(size_t tiles);
 
 #endif

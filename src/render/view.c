@@ -80,4 +80,13 @@ void tl__frame_ubo_fill(const tl_renderer *r, const tl__view *v, tl__frame_ubo *
     u->ray_params[3] = m[9];
     memcpy(u->ambient, r->ambient, sizeof u->ambient);
     u->clear_depth = v->clear_depth;
+    const tl__tiles *t = &r->tiles;
+    u->tiles[0] = t->size;
+    u->tiles[1] = t->x;
+    u->tiles[2] = t->y;
+    u->tiles[3] = (uint32_t)t->capacity;
+    if (r->view_lights_frame == r->frame_index) { /* built this frame by a pass that reads them */
+        u->light_counts[0] = (uint32_t)r->view_dir_count;
+        u->light_counts[1] = (uint32_t)(r->view_light_count - r->view_dir_count);
+    }
 }

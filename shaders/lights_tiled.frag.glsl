@@ -1,0 +1,31 @@
+// The tiled light pass as a full-screen triangle: every pixel once (lights_tiled.glsl). Writes the
+// light buffer without blending (background pixels get zero: nothing clears it), or adds the
+// shaded radiance to HDR with one blend per pixel (deferred modes; background pixels discard).
+#include "lights_tiled.glsl"
+
+#ifdef TL_LIGHT_ACCUM
+layout(location = TL_OUT_LIGHT_DIFFUSE) out vec4 o_diffuse;
+#ifdef TL_SPECULAR_EXACT
+layout(location = TL_OUT_LIGHT_SPECULAR) out vec4 o_specular;
+#endif
+#else
+layout(location = TL_OUT_HDR) out vec4 o_color;
+#endif
+
+void main()
+{
+    tl_tiled_result r = tl_tiled_shade(ivec2(gl_FragCoord.xy));
+#ifdef TL_LIGHT_ACCUM
+#if defined(TL_SPECULAR_EXACT)
+    o_diffuse = vec4(r.diffuse, 0.0);
+    o_specular = vec4(r.specular, 0.0);
+#elif defined(TL_SPECULAR_COMPACT)
+    o_diffuse = vec4(r.diffuse, min(tl_luminance(r.specular), 65504.0));
+#else
+    o_diffuse = vec4(r.diffuse, 0.0);
+#endif
+#else
+    if (!r.surface) discard;
+    o_color = vec4(r.diffuse, 0.0);
+#endif
+}

@@ -1,0 +1,75 @@
+// The tiled light pass's work for one pixel: the G-buffer read and decoded once, then the
+// directional lights and the pixel's tile list (every visible local light for a tile whose list
+// overflowed), summed in float and written once. Each light's terms and its clamp are those of
+// the light volumes (light.frag.glsl), so the strategies differ only in summation order and FP16
+// rounding. TL_LIGHT_ACCUM, TL_LIGHT_SHADE_THIN or TL_LIGHT_SHADE_FAT as for the volumes.
+#include "gbuffer_decode.glsl"
+#include "lighting.glsl"
+#include "tiles.glsl"
+
+struct tl_tiled_result {
+    bool surface;   // false: background, nothing to add
+    vec3 diffuse;   // light sum (accumulating modes) or shaded radiance (deferred modes)
+    vec3 specular;
+};
+
+// One light's clamped terms added to the sums; false when it cannot reach p (as the volumes discard).
+void tl_tiled_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float power, inout vec3 diffuse, inout vec3 specular)
+{
+    int type = int(l.color_type.w);
+    if (type != 3) {
+        vec3 to_light = l.position_radius.xyz - p;
+        float d2 = dot(to_light, to_light);
+        if (d2 >= l.position_radius.w * l.position_radius.w) return;
+        if (type == 2 && d2 > 0.0 && dot(-to_light, l.direction_cos_outer.xyz) <= l.direction_cos_outer.w * sqrt(d2)) return;
+    }
+    vec2 t = tl_light_terms(type, p, n, v, power, l.position_radius.xyz, l.position_radius.w,
+                            l.direction_cos_outer.xyz, l.cos_inner.x, l.direction_cos_outer.w);
+    const vec3 fp16_max = vec3(65504.0);
+    diffuse += min(l.color_type.rgb * t.x, fp16_max);
+    specular += min(l.color_type.rgb * t.y, fp16_max);
+}
+
+tl_tiled_result tl_tiled_shade(ivec2 px)
+{
+    tl_tiled_result res;
+    res.surface = false;
+    res.diffuse = res.specular = vec3(0.0);
+    vec3 p, n;
+    float gloss;
+#ifdef TL_LIGHT_SHADE_FAT
+    vec3 albedo, spec_color;
+    if (!tl_fat_position(px, p)) return res;
+    tl_fat_surface(px, n, gloss, albedo, spec_color);
+#else
+    if (!tl_gbuffer_position(px, p)) return res;
+    tl_gbuffer_normal_gloss(px, n, gloss);
+#endif
+    res.surface = true;
+    vec3 v = normalize(-p);
+    float power = tl_gloss_to_specular_power(gloss);
+    vec3 diffuse = vec3(0.0), specular = vec3(0.0);
+    for (uint i = 0u; i < u_light_counts.x; i++) tl_tiled_add(tl_lights[i], p, n, v, power, diffuse, specular);
+    uvec2 h = tl_tile_headers[tl_tile_index(px)];
+    if (h.x != TL_TILE_OVERFLOW) {
+        for (uint k = 0u; k < h.y; k++) tl_tiled_add(tl_lights[tl_tile_entries[h.x + k]], p, n, v, power, diffuse, specular);
+    } else {
+        for (uint i = u_light_counts.x; i < u_light_counts.x + u_light_counts.y; i++)
+            tl_tiled_add(tl_lights[i], p, n, v, power, diffuse, specular);
+    }
+    const vec3 fp16_max = vec3(65504.0);
+#ifdef TL_LIGHT_ACCUM
+    res.diffuse = min(diffuse, fp16_max);
+    res.specular = min(specular, fp16_max);
+#else
+#ifdef TL_LIGHT_SHADE_THIN
+    vec3 albedo, spec_color;
+    tl_rt1_read(px, albedo, spec_color);
+#endif
+#ifdef TL_SPECULAR_NONE
+    spec_color = vec3(0.0);
+#endif
+    res.diffuse = min(albedo * diffuse + spec_color * specular, fp16_max);
+#endif
+    return res;
+}

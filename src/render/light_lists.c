@@ -1,0 +1,84 @@
+/* The frame's visible lights in view space, directional ones first: built once per frame for
+ * whichever passes read them (forward per-object lists, Forward+, tiled shading) and uploaded once
+ * into the frame's stream as the lights storage block. */
+#include <math.h>
+#include <string.h>
+
+#include "renderer_internal.h"
+
+/* Range of a light for culling: the sphere around a point light; the cone's bounding sphere
+ * (centred half-way along the axis) for a spot. Directional: infinite. */
+void tl__light_sphere(const tl_light *l, float c[3], float *radius)
+{
+    memcpy(c, l->position, sizeof(float) * 3);
+    *radius = l->radius;
+    if (l->type == TL_LIGHT_SPOT) {
+        float co = l->cos_outer > 0.05f ? l->cos_outer : 0.05f;
+        float half = 0.5f * l->radius, base = l->radius * sqrtf(1.0f - co * co) / co;
+        float d[3] = {l->direction[0], l->direction[1], l->direction[2]};
+        tl__vec3_normalize(d);
+        for (int k = 0; k < 3; k++) c[k] += d[k] * half;
+        float r2 = sqrtf(half * half + base * base);
+        *radius = r2 < l->radius ? l->radius : r2;
+    }
+}
+
+static void tl__view_light(const tl__view *v, const tl_light *l, int type, tl__forward_light *fl)
+{
+    const float *m = v->view.m;
+    for (int k = 0; k < 3; k++)
+        fl->position_radius[k] = m[k] * l->position[0] + m[4 + k] * l->position[1] + m[8 + k] * l->position[2] + m[12 + k];
+    fl->position_radius[3] = l->radius;
+    float dir[3] = {l->direction[0], l->direction[1], l->direction[2]};
+    tl__vec3_normalize(dir);
+    if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f) dir[1] = -1.0f;
+    float vd[3];
+    for (int k = 0; k < 3; k++) vd[k] = m[k] * dir[0] + m[4 + k] * dir[1] + m[8 + k] * dir[2];
+    tl__vec3_normalize(vd);
+    memcpy(fl->color_type, l->color, sizeof(float) * 3);
+    fl->color_type[3] = (float)type;
+    memcpy(fl->direction_cos_outer, vd, sizeof vd);
+    fl->direction_cos_outer[3] = type == TL_LIGHT_SPOT ? l->cos_outer : -1.0f;
+    fl->cos_inner[0] = type == TL_LIGHT_SPOT ? l->cos_inner : 1.0f;
+    fl->cos_inner[1] = fl->cos_inner[2] = fl->cos_inner[3] = 0.0f;
+}
+
+/* Appends the visible lights of one kind (directional or local); returns the new count. */
+static size_t tl__add_visible(tl_renderer *r, const tl__view *v, int directional, size_t n)
+{
+    for (size_t i = 0; i < r->light_count; i++) {
+        const tl_light *l = &r->lights[i];
+        int type = l->type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : (int)l->type;
+        if ((type == TL_LIGHT_DIRECTIONAL) != directional) continue;
+        float c[3], rad;
+        tl__light_sphere(l, c, &rad);
+        if (!directional && (rad <= 0.0f || !tl__sphere_visible((float(*)[4])v->planes, c, rad))) continue;
+        tl__view_light(v, l, type, &r->view_lights[n]);
+        memcpy(r->view_light_spheres[n], c, sizeof c);
+        r->view_light_spheres[n][3] = directional ? -1.0f : rad;
+        r->view_light_index[n++] = (uint32_t)i;
+    }
+    return n;
+}
+
+void tl__visible_lights(tl_renderer *r, const tl__view *v, tl__frame_record *rec)
+{
+    if (r->view_lights_frame == r->frame_index) return;
+    r->view_dir_count = tl__add_visible(r, v, 1, 0);
+    r->view_light_count = tl__add_visible(r, v, 0, r->view_dir_count);
+    r->view_lights_frame = r->frame_index;
+    rec->stream_bytes += (r->view_light_count + 1) * sizeof(tl__forward_light) + r->ssbo_align;
+}
+
+void tl__visible_lights_upload(tl_renderer *r)
+{
+    if (r->view_lights_uploaded == r->frame_index) return;
+    size_t n = r->view_light_count ? r->view_light_count : 1, offset = 0;
+    void *dst = tl__stream_reserve(&r->stream, n * sizeof(tl__forward_light), r->ssbo_align, &offset);
+    if (!dst) return;
+    if (r->view_light_count) memcpy(dst, r->view_lights, r->view_light_count * sizeof(tl__forward_light));
+    else memset(dst, 0, sizeof(tl__forward_light));
+    tl__stream_bind_range(&r->gl, &r->stream, GL_SHADER_STORAGE_BUFFER, TL__SSBO_LIGHTS, offset,
+                          n * sizeof(tl__forward_light));
+    r->view_lights_uploaded = r->frame_index;
+}

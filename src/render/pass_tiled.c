@@ -1,0 +1,96 @@
+/* The tiled strategy's passes (DESIGN.md section 2): light-cull (a compute pass: per-tile depth
+ * bounds and light lists, tiles.c) and the tiled light pass (every pixel once, looping over its
+ * tile's lights: a full-screen triangle, or a compute pass). The light pass reads and writes what
+ * the volumes' would in the mode, so the strategies differ only in how lights are gathered. */
+#include <stdio.h>
+
+#include "renderer_internal.h"
+
+#define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
+
+static int tl__tiled(const tl__plan_input *in) { return in->lights && in->strategy == TL_LIGHT_STRATEGY_TILED; }
+
+/* ---- light-cull -------------------------------------------------------------------------------- */
+
+static void tl__cull_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    if (!tl__tiled(in)) return;
+    d->reads = d->samples = TL__B(DEPTH);
+    d->writes = TL__B(LIGHT_LISTS);
+    d->compute = 1;
+}
+
+static void tl__cull_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+{
+    (void)in;
+    (void)d;
+    out->used[0] = 1;
+}
+
+const tl__pass_def tl__pass_light_cull = {
+    .id = TL_PASS_LIGHT_CULL,
+    .name = "light-cull",
+    .programs = {{"light-cull", NULL, NULL, "light_cull.comp.glsl"}},
+    .declare = tl__cull_declare,
+    .permute = tl__cull_permute,
+    .prepare = tl__tiles_prepare,
+    .upload = tl__tiles_upload,
+    .execute = tl__tiles_cull,
+    .collect = tl__tiles_collect,
+};
+
+/* ---- the tiled light pass ---------------------------------------------------------------------- */
+
+static int tl__compute_shading(const tl__plan_input *in) { return in->d.tiled_shading == TL_TILED_SHADING_COMPUTE; }
+
+static void tl__tiled_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    if (!tl__tiled(in) || in->mode->forward) return;
+    tl__light_pass_targets(in, d);
+    d->reads |= TL__B(LIGHT_LISTS);
+    int shade = (d->writes & TL__B(HDR)) != 0;
+    if (tl__compute_shading(in)) {
+        d->compute = 1;
+        d->images = d->writes;
+    } else {
+        /* a full-screen triangle writes every pixel of the light buffer: nothing to clear; shading
+         * adds to HDR once per pixel */
+        d->state = (tl__pipeline){.color_write = 1, .blend = (uint8_t)(shade ? TL__BLEND_ADD : TL__BLEND_OFF)};
+    }
+}
+
+static void tl__tiled_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+{
+    int slot = tl__compute_shading(in);
+    const char *image_format = in->d.light_format == TL_LIGHT_FORMAT_R11G11B10F ? "r11f_g11f_b10f" : "rgba16f";
+    out->used[slot] = 1;
+    snprintf(out->slot[slot], sizeof out->slot[slot], "%s%s%s %s%s%s", in->mode->light_define,
+             (d->reads & TL__B(RT0)) ? " " : "", (d->reads & TL__B(RT0)) ? in->rt0_define : "", in->spec_define,
+             slot ? " TL_LIGHT_IMAGE_FORMAT=" : "", slot ? image_format : "");
+}
+
+static void tl__tiled_execute(tl_renderer *r, const tl__pass_ctx *ctx)
+{
+    const GladGLContext *gl = &r->gl;
+    const tl__compiled_pass *cp = ctx->cp;
+    if (cp->programs[0]) { /* fragment */
+        tl__state_program(gl, &r->state, cp->programs[0]);
+        tl__state_vertex_array(gl, &r->state, r->vao_empty);
+        gl->DrawArrays(GL_TRIANGLES, 0, 3);
+        ctx->rec->st.draw_calls++;
+        return;
+    }
+    tl__state_program(gl, &r->state, cp->programs[1]);
+    gl->DispatchCompute((r->desc.width + 7) / 8, (r->desc.height + 7) / 8, 1);
+    gl->MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+}
+
+const tl__pass_def tl__pass_lights_tiled = {
+    .id = TL_PASS_LIGHTS_TILED,
+    .name = "lights-tiled",
+    .programs = {{"lights.tiled", "fullscreen.vert.glsl", "lights_tiled.frag.glsl", NULL},
+                 {"lights.tiled", NULL, NULL, "lights_tiled.comp.glsl"}},
+    .declare = tl__tiled_declare,
+    .permute = tl__tiled_permute,
+    .execute = tl__tiled_execute,
+};

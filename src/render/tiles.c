@@ -1,0 +1,127 @@
+/* Tiled light lists (docs/frame.md, "Tiled light accumulation"): the buffers the light-cull pass
+ * writes, their growth, the read-back of its counters, and the light-cull pass's CPU side and
+ * dispatch. The lists hold as many entries as the buffer has room for; a tile whose list does not
+ * fit loops over every visible light instead (no light is lost), the frame's count of entries is
+ * read back a few frames later without waiting, and the buffer grows for the frames after. */
+#include <string.h>
+
+#include "renderer_internal.h"
+
+#define TL__TILE_HEADER_BYTES(tiles) (16u + 8u * (size_t)(tiles))
+
+static size_t tl__tile_count(const tl__tiles *t) { return (size_t)t->x * t->y; }
+
+void tl__tiles_release(tl_renderer *r)
+{
+    const GladGLContext *gl = &r->gl;
+    tl__tiles *t = &r->tiles;
+    for (int i = 0; i < TL__QUERY_RING; i++)
+        if (t->fences[i]) gl->DeleteSync(t->fences[i]);
+    GLuint buffers[3] = {t->headers, t->entries, t->readback};
+    for (int i = 0; i < 3; i++)
+        if (buffers[i]) gl->DeleteBuffers(1, &buffers[i]);
+    memset(t, 0, sizeof *t);
+}
+
+static tl_result tl__tiles_entries(tl_renderer *r, size_t capacity)
+{
+    const GladGLContext *gl = &r->gl;
+    tl__tiles *t = &r->tiles;
+    if (t->entries) gl->DeleteBuffers(1, &t->entries); /* queued frames keep what they read */
+    gl->CreateBuffers(1, &t->entries);
+    gl->NamedBufferStorage(t->entries, (GLsizeiptr)(capacity * sizeof(uint32_t)), NULL, 0);
+    tl__gl_label(gl, GL_BUFFER, t->entries, "buffer.tiles.entries");
+    t->capacity = capacity;
+    return TL_OK;
+}
+
+/* The buffers for the plan's tiles (graph.c calls this when the plan has light lists). */
+tl_result tl__tiles_create(tl_renderer *r, uint32_t size, uint32_t x, uint32_t y, size_t capacity)
+{
+    const GladGLContext *gl = &r->gl;
+    tl__tiles_release(r);
+    tl__tiles *t = &r->tiles;
+    t->size = size;
+    t->x = x;
+    t->y = y;
+    gl->CreateBuffers(1, &t->headers);
+    gl->NamedBufferStorage(t->headers, (GLsizeiptr)TL__TILE_HEADER_BYTES(tl__tile_count(t)), NULL, GL_DYNAMIC_STORAGE_BIT);
+    tl__gl_label(gl, GL_BUFFER, t->headers, "buffer.tiles.headers");
+    const GLbitfield flags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+    gl->CreateBuffers(1, &t->readback);
+    gl->NamedBufferStorage(t->readback, TL__QUERY_RING * 16, NULL, flags);
+    t->readback_map = (const uint32_t *)gl->MapNamedBufferRange(t->readback, 0, TL__QUERY_RING * 16, flags);
+    tl__gl_label(gl, GL_BUFFER, t->readback, "buffer.tiles.readback");
+    if (!t->readback_map) return tl__fail(r, TL_ERROR_GL, "renderer: could not map the tile counters' read-back");
+    return tl__tiles_entries(r, capacity);
+}
+
+/* Counters of `frame` once the GPU has finished it: 1 with them in out[4], 0 when not (yet). */
+static int tl__tiles_counters(tl_renderer *r, uint64_t frame, int wait, uint32_t out[4])
+{
+    tl__tiles *t = &r->tiles;
+    unsigned s = (unsigned)(frame % TL__QUERY_RING);
+    if (!t->readback_map || t->fence_frame[s] != frame || !t->fences[s]) return 0;
+    GLenum w = r->gl.ClientWaitSync(t->fences[s], wait ? GL_SYNC_FLUSH_COMMANDS_BIT : 0, wait ? 1000000000u : 0);
+    if (w != GL_ALREADY_SIGNALED && w != GL_CONDITION_SATISFIED) return 0;
+    memcpy(out, t->readback_map + 4 * s, 4 * sizeof(uint32_t));
+    return 1;
+}
+
+/* Grows the entries buffer when a finished frame needed more than it holds (checked each frame,
+ * for the frames of the ring that have finished: no waiting). */
+static tl_result tl__tiles_grow(tl_renderer *r)
+{
+    tl__tiles *t = &r->tiles;
+    for (uint64_t f = r->frame_index > TL__QUERY_RING ? r->frame_index - TL__QUERY_RING : 1; f < r->frame_index; f++) {
+        uint32_t c[4];
+        if (tl__tiles_counters(r, f, 0, c) && c[0] > t->needed) t->needed = c[0];
+    }
+    if (t->needed <= t->capacity) return TL_OK;
+    size_t cap = t->capacity;
+    while (cap < t->needed + t->needed / 2) cap *= 2;
+    return tl__tiles_entries(r, cap);
+}
+
+tl_result tl__tiles_prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec)
+{
+    tl__visible_lights(r, v, rec);
+    return tl__tiles_grow(r);
+}
+
+void tl__tiles_upload(tl_renderer *r)
+{
+    const GladGLContext *gl = &r->gl;
+    tl__visible_lights_upload(r);
+    tl__stream_bind_buffer(gl, &r->stream, GL_SHADER_STORAGE_BUFFER, TL__SSBO_TILE_HEADERS, r->tiles.headers);
+    tl__stream_bind_buffer(gl, &r->stream, GL_SHADER_STORAGE_BUFFER, TL__SSBO_TILE_ENTRIES, r->tiles.entries);
+}
+
+/* The light-cull pass: counters cleared, one invocation per tile, the counters copied for the
+ * read-back behind a fence. */
+void tl__tiles_cull(tl_renderer *r, const tl__pass_ctx *ctx)
+{
+    const GladGLContext *gl = &r->gl;
+    tl__tiles *t = &r->tiles;
+    gl->ClearNamedBufferSubData(t->headers, GL_R32UI, 0, 16, GL_RED_INTEGER, GL_UNSIGNED_INT, NULL);
+    gl->MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    tl__state_program(gl, &r->state, ctx->cp->programs[0]);
+    gl->DispatchCompute((t->x + 7) / 8, (t->y + 7) / 8, 1);
+    gl->MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+    unsigned s = (unsigned)(r->frame_index % TL__QUERY_RING);
+    gl->CopyNamedBufferSubData(t->headers, t->readback, 0, (GLintptr)(16 * s), 16);
+    if (t->fences[s]) gl->DeleteSync(t->fences[s]);
+    t->fences[s] = gl->FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    t->fence_frame[s] = r->frame_index;
+    ctx->rec->st.light_list_entries = 0; /* known once the GPU is done (tl__tiles_collect) */
+}
+
+void tl__tiles_collect(tl_renderer *r, const uint64_t *results, tl_frame_stats *st)
+{
+    (void)results;
+    uint32_t c[4];
+    if (!tl__tiles_counters(r, st->frame, 1, c)) return;
+    st->light_list_entries = c[0];
+    st->tile_overflows = c[1];
+    st->light_pairs = ((uint64_t)c[3] << 32) | c[2];
+}
