@@ -259,9 +259,10 @@ static int bench__bytes_script(FILE *f, const void *ctx)
     /* by tl_target_id and by tl_pass */
     static const char *const target_colours[TL_TARGET_COUNT] = {"#4d4d4d", "#1a9850", "#66bd63", "#2166ac",
                                                                 "#67a9cf", "#d7191c", "#f4a582", "#fdae61",
-                                                                "#b2abd2", "#7b3294", "#bababa", "#e0e0e0"};
-    static const char *const pass_colours[TL_PASS_COUNT] = {"#4d4d4d", "#2166ac", "#fdae61", "#1a9850",
-                                                            "#7b3294", "#b2abd2", "#d7191c", "#bababa"};
+                                                                "#b2abd2", "#7b3294", "#bababa", "#e0e0e0",
+                                                                "#8c510a"};
+    static const char *const pass_colours[TL_PASS_COUNT] = {"#4d4d4d", "#2166ac", "#8c510a", "#fdae61", "#f46d43",
+                                                            "#1a9850", "#7b3294", "#b2abd2", "#d7191c", "#bababa"};
     const tl_tool_plot *p = ctx;
     const bench_run *run = p->user;
     tl_render_mode modes[BENCH_MODES];

@@ -439,17 +439,27 @@ static void frame_graph_app_pass_tints_hdr(void)
             TL_CHECK(tl_renderer_read_target(r, TL_TARGET_DEPTH, depth, &size) == TL_OK);
             const float *m = t.view.projection;
             for (size_t i = 0; i < n; i++) {
-                int background = depth[4 * i] == (dz ? 0.0f : 1.0f);
-                /* the read-back depth is the distance along -Z; the pass tints by the ray's length */
-                double nx = ((double)(i % w) + 0.5) / w * 2.0 - 1.0, ny = ((double)(i / w) + 0.5) / h * 2.0 - 1.0;
-                double dx = (nx + m[8]) / m[0], dy = (ny + m[9]) / m[5];
-                double f = background ? 1.0 : exp(-0.05 * depth[4 * i + 1] * sqrt(dx * dx + dy * dy + 1.0));
+                float d = depth[4 * i];
+                int background = d == (dz ? 0.0f : 1.0f);
+                /* the shader's tint at this depth, and at one depth step either side: the texel the
+                 * shader fetched may convert to float a step away from the read-back, and near the
+                 * far plane one D24 step moves the distance by centimetres */
+                double step = dz ? fabs(nextafterf(d, 2.0f) - d) : 0x1.0p-24, lo = 1.0, hi = 0.0;
+                for (int k = -1; k <= 1; k++) {
+                    double dk = d + k * step, zn = dz ? dk : 2.0 * dk - 1.0, z = m[14] / (m[11] * zn - m[10]);
+                    double nx = ((double)(i % w) + 0.5) / w * 2.0 - 1.0, ny = ((double)(i / w) + 0.5) / h * 2.0 - 1.0;
+                    double px = -z * (nx + m[8]) / m[0], py = -z * (ny + m[9]) / m[5];
+                    double fk = background ? 1.0 : exp(-0.05 * sqrt(px * px + py * py + z * z));
+                    lo = fmin(lo, fk);
+                    hi = fmax(hi, fk);
+                }
                 for (int c = 0; c < 3; c++) {
-                    double want = plain[4 * i + c] * f, got = tinted[4 * i + c];
+                    double p0 = plain[4 * i + c], got = tinted[4 * i + c];
                     /* blending into an FP16 target rounds the tint to FP16 and then the product:
                      * two roundings of half an FP16 step (2^-11 relative) each */
-                    if (fabs(got - want) > (0x1.0p-10 + 1e-5) * want + 1e-7) bad++;
-                    dimmed += got < plain[4 * i + c] * 0.999;
+                    double tol = (0x1.0p-10 + 1e-5) * p0 * hi + 1e-7;
+                    if (got < p0 * lo - tol || got > p0 * hi + tol) bad++;
+                    dimmed += got < p0 * 0.999;
                 }
             }
             printf("%s %s: %zu channels dimmed, %zu off the expected tint\n", tl_render_mode_name((tl_render_mode)mode),
