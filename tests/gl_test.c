@@ -12,7 +12,7 @@ typedef tl_gl_fixture gl_env;
 static bool gl_open(gl_env *env) { return tl_gl_fixture_open(env, 64); }
 static void gl_close(gl_env *env) { tl_gl_fixture_close(env); }
 
-static void gl_context_osmesa_core45(void)
+TL_TEST(gl_context_osmesa_core45)
 {
     gl_env env;
     if (!gl_open(&env)) return;
@@ -53,7 +53,7 @@ static void gl_context_osmesa_core45(void)
 }
 
 /* Bad descriptors fail with a result and a message, never a crash. */
-static void gl_context_bad_input(void)
+TL_TEST(gl_context_bad_input)
 {
     tl_context *ctx = (tl_context *)&ctx; /* must be overwritten with NULL */
     TL_CHECK(tl_context_create(NULL, NULL) == TL_ERROR_INVALID_ARGUMENT);
@@ -84,7 +84,7 @@ static const char *const constant_defines[] = {
     "TL_FULLSCREEN_DEPTH 0.5",
 };
 
-static void gl_program_embedded_include(void)
+TL_TEST(gl_program_embedded_include)
 {
     TL_CHECK(tl__shader_source("fullscreen.vert.glsl") != NULL);
     TL_CHECK(tl__shader_source("fullscreen.glsl") != NULL);
@@ -188,7 +188,7 @@ static void gl_program_embedded_include(void)
     gl_close(&env);
 }
 
-static void gl_render_target_bytes(void)
+TL_TEST(gl_render_target_bytes)
 {
     TL_CHECK_EQ_U(tl__format_bytes_per_pixel(GL_RGBA16F), 8);
     TL_CHECK_EQ_U(tl__format_bytes_per_pixel(GL_DEPTH24_STENCIL8), 4);
@@ -310,7 +310,7 @@ static size_t count_mismatches(const float *pixels, const float expect[4])
     return bad;
 }
 
-static void gl_fullscreen_readback(void)
+TL_TEST(gl_fullscreen_readback)
 {
     gl_env env;
     if (!gl_open(&env)) return;
@@ -359,7 +359,7 @@ static void gl_fullscreen_readback(void)
     gl_close(&env);
 }
 
-static void gl_timer_query(void)
+TL_TEST(gl_timer_query)
 {
     gl_env env;
     if (!gl_open(&env)) return;
@@ -411,14 +411,3 @@ static void gl_timer_query(void)
     tl__gl_debug_pop(gl);
     gl_close(&env);
 }
-
-static const tl_test_case cases[] = {
-    {"gl_context_osmesa_core45", gl_context_osmesa_core45},
-    {"gl_context_bad_input", gl_context_bad_input},
-    {"gl_program_embedded_include", gl_program_embedded_include},
-    {"gl_render_target_bytes", gl_render_target_bytes},
-    {"gl_fullscreen_readback", gl_fullscreen_readback},
-    {"gl_timer_query", gl_timer_query},
-};
-
-TL_TEST_MAIN(cases)

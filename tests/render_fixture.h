@@ -1,22 +1,14 @@
 /* Shared by the renderer tests: one lazily created OSMesa context per test process, current for
- * every case; renderers load GL through tl_context_proc_loader with g_ctx as the user pointer. */
+ * every case and destroyed at exit; renderers load GL through tl_context_proc_loader with g_ctx as
+ * the user pointer. */
 #ifndef TL_RENDER_FIXTURE_H
 #define TL_RENDER_FIXTURE_H
 
-#include <stdio.h>
-
 #include "thinlight/context.h"
 
-static tl_context *g_ctx;
+extern tl_context *g_ctx;
 
-static int ensure_context(void)
-{
-    if (g_ctx) return 1;
-    if (tl_context_create(&(tl_context_desc){.width = 64, .height = 64}, &g_ctx) != TL_OK) {
-        fprintf(stderr, "no GL context: %s\n", tl_context_last_error(NULL));
-        return 0;
-    }
-    return 1;
-}
+/* 1 when g_ctx exists (creating it on the first call), 0 after a message on stderr. */
+int ensure_context(void);
 
 #endif

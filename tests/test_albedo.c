@@ -93,7 +93,7 @@ static void all_srgb8(tl_color_space space, all_srgb_result *r)
 }
 
 /* Bounds: the measured figures rounded up (steps are integers; dE to the next 0.05 or 0.5). */
-static void albedo_ycbcr8_all_srgb8_round_trip(void)
+TL_TEST(albedo_ycbcr8_all_srgb8_round_trip)
 {
     all_srgb_result *r = xmalloc(sizeof *r);
     all_srgb8(TL_COLOR_SPACE_YCBCR, r);
@@ -106,7 +106,7 @@ static void albedo_ycbcr8_all_srgb8_round_trip(void)
     free(r);
 }
 
-static void albedo_ycocg8_all_srgb8_round_trip(void)
+TL_TEST(albedo_ycocg8_all_srgb8_round_trip)
 {
     all_srgb_result *r = xmalloc(sizeof *r);
     all_srgb8(TL_COLOR_SPACE_YCOCG, r);
@@ -120,7 +120,7 @@ static void albedo_ycocg8_all_srgb8_round_trip(void)
 }
 
 /* Black, white, greys, primaries and secondaries. */
-static void albedo_black_white_primaries_round_trip(void)
+TL_TEST(albedo_black_white_primaries_round_trip)
 {
     static const int colours[][3] = {
         {0, 0, 0},     {255, 255, 255}, {128, 128, 128}, {255, 0, 0},   {0, 255, 0},
@@ -153,7 +153,7 @@ static void albedo_black_white_primaries_round_trip(void)
     }
 }
 
-static void albedo_checkerboard_parity(void)
+TL_TEST(albedo_checkerboard_parity)
 {
     const uint32_t xs[] = {0, 1, 2, 3, 100, 101, 0x7FFFFFFFu, 0xFFFFFFFEu, 0xFFFFFFFFu};
     for (size_t i = 0; i < sizeof xs / sizeof xs[0]; i++)
@@ -173,7 +173,7 @@ static void albedo_checkerboard_parity(void)
 }
 
 /* tl_albedo_encode_pixel against the formulas of codec.h evaluated in double. */
-static void albedo_encode_pixel_matches_double_reference(void)
+TL_TEST(albedo_encode_pixel_matches_double_reference)
 {
     tl_rng rng = {0xA1BEu};
     const uint32_t count = 1000000u;
@@ -270,8 +270,8 @@ static void check_psnr_table(tl_color_space space)
     free(yc);
 }
 
-static void chroma_psnr_ycbcr_edge_beats_bilinear_beats_nearest(void) { check_psnr_table(TL_COLOR_SPACE_YCBCR); }
-static void chroma_psnr_ycocg_edge_beats_bilinear_beats_nearest(void) { check_psnr_table(TL_COLOR_SPACE_YCOCG); }
+TL_TEST(chroma_psnr_ycbcr_edge_beats_bilinear_beats_nearest) { check_psnr_table(TL_COLOR_SPACE_YCBCR); }
+TL_TEST(chroma_psnr_ycocg_edge_beats_bilinear_beats_nearest) { check_psnr_table(TL_COLOR_SPACE_YCOCG); }
 
 /* The documented reconstruction rules, written out independently: neighbours left, right, up,
  * down; outside ones mirrored (-1 -> 1, n -> n - 2); still outside: dropped. */
@@ -320,7 +320,7 @@ static double ref_missing(tl_chroma_filter filter, const uint8_t *yc, uint32_t w
 
 /* Random images of every small shape, 1x1 and 1-wide ones included: each pixel's missing chroma
  * matches the reference, and tl_albedo_reconstruct uses it. */
-static void chroma_missing_chroma_matches_documented_rules_all_sizes(void)
+TL_TEST(chroma_missing_chroma_matches_documented_rules_all_sizes)
 {
     tl_rng rng = {0xC4A0u};
     double worst = 0.0;
@@ -365,7 +365,7 @@ static void chroma_missing_chroma_matches_documented_rules_all_sizes(void)
 
 /* A 1x1 image: no neighbour, so the missing chroma is neutral 0.5; a pixel whose own chroma is
  * neutral too comes back as a grey of its stored luma. */
-static void chroma_reconstruct_1x1_neutral_chroma(void)
+TL_TEST(chroma_reconstruct_1x1_neutral_chroma)
 {
     for (int s = 0; s < 2; s++)
         for (int f = 0; f < 3; f++) {
@@ -396,7 +396,7 @@ static void chroma_reconstruct_1x1_neutral_chroma(void)
 }
 
 /* 1xN and Nx1: a constant colour reconstructs exactly as it does inside a 2D image. */
-static void chroma_reconstruct_one_pixel_wide_images(void)
+TL_TEST(chroma_reconstruct_one_pixel_wide_images)
 {
     const float colour[3] = {0.8f, 0.3f, 0.1f};
     float img[3 * 64], out[3 * 64], big[3 * 64], big_out[3 * 64];
@@ -417,7 +417,7 @@ static void chroma_reconstruct_one_pixel_wide_images(void)
     printf("  constant colour in 1x2, 2x1, 1x7, 7x1, 1x64, 64x1 images equals the 8x8 interior, all filters\n");
 }
 
-static void chroma_reconstruct_invalid_arguments(void)
+TL_TEST(chroma_reconstruct_invalid_arguments)
 {
     uint8_t yc[8] = {0};
     float rgb[12] = {0};
@@ -473,7 +473,7 @@ static int luma8(tl_color_space space, const float rgb[3])
  * spaces): the edge filter takes each pixel's chroma from its own side only, so every pixel
  * equals its colour's full-chroma 8-bit round trip (with the encoder's own bytes); bilinear
  * bleeds across. */
-static void chroma_hard_edge_no_bleeding(void)
+TL_TEST(chroma_hard_edge_no_bleeding)
 {
     enum { W = 16, H = 8 };
     const float left[3] = {0.95f, 0.2f, 0.1f}, right[3] = {0.05f, 0.05f, 0.6f};
@@ -513,7 +513,7 @@ static void chroma_hard_edge_no_bleeding(void)
  * chroma comes from the grey, the (luma, own chroma, grey chroma) triple falls outside the RGB
  * cube, and the per-channel clamp of tl_luma_chroma_to_rgb shifts the luma; those figures are
  * bounded at what is measured (9 steps YCbCr, 16 YCoCg) so that they cannot get worse. */
-static void chroma_single_pixel_line_keeps_luma(void)
+TL_TEST(chroma_single_pixel_line_keeps_luma)
 {
     enum { W = 17, H = 13 };
     const float grey[3] = {0.5f, 0.5f, 0.5f}, red[3] = {1.0f, 0.0f, 0.0f};
@@ -553,21 +553,3 @@ static void chroma_single_pixel_line_keeps_luma(void)
             }
         }
 }
-
-static const tl_test_case cases[] = {
-    {"albedo_ycbcr8_all_srgb8_round_trip", albedo_ycbcr8_all_srgb8_round_trip},
-    {"albedo_ycocg8_all_srgb8_round_trip", albedo_ycocg8_all_srgb8_round_trip},
-    {"albedo_black_white_primaries_round_trip", albedo_black_white_primaries_round_trip},
-    {"albedo_checkerboard_parity", albedo_checkerboard_parity},
-    {"albedo_encode_pixel_matches_double_reference", albedo_encode_pixel_matches_double_reference},
-    {"chroma_psnr_ycbcr_edge_beats_bilinear_beats_nearest", chroma_psnr_ycbcr_edge_beats_bilinear_beats_nearest},
-    {"chroma_psnr_ycocg_edge_beats_bilinear_beats_nearest", chroma_psnr_ycocg_edge_beats_bilinear_beats_nearest},
-    {"chroma_missing_chroma_matches_documented_rules_all_sizes", chroma_missing_chroma_matches_documented_rules_all_sizes},
-    {"chroma_reconstruct_1x1_neutral_chroma", chroma_reconstruct_1x1_neutral_chroma},
-    {"chroma_reconstruct_one_pixel_wide_images", chroma_reconstruct_one_pixel_wide_images},
-    {"chroma_reconstruct_invalid_arguments", chroma_reconstruct_invalid_arguments},
-    {"chroma_hard_edge_no_bleeding", chroma_hard_edge_no_bleeding},
-    {"chroma_single_pixel_line_keeps_luma", chroma_single_pixel_line_keeps_luma},
-};
-
-TL_TEST_MAIN(cases)

@@ -119,7 +119,7 @@ static void print_table(const depth_table *t, const char *what)
     printf("  reversed-Z bound 4 * 2^-22 = %.4g\n", REVERSED_BOUND);
 }
 
-static void depth_reversed_d32f_relative_error_all_ratios(void)
+TL_TEST(depth_reversed_d32f_relative_error_all_ratios)
 {
     depth_table *t = malloc(sizeof *t);
     TL_CHECK(t != NULL);
@@ -143,7 +143,7 @@ static void depth_reversed_d32f_relative_error_all_ratios(void)
 
 /* Grazing rays: a 172-degree vertical field of view with aspect 4, sampled on the frustum's
  * edges (x_ndc = +-1) and corners, where d_eye is longest (|x| up to 4 tan(86 deg) ~ 57). */
-static void depth_grazing_rays_wide_fov(void)
+TL_TEST(depth_grazing_rays_wide_fov)
 {
     depth_table *t = malloc(sizeof *t);
     TL_CHECK(t != NULL);
@@ -172,7 +172,7 @@ static void depth_grazing_rays_wide_fov(void)
 }
 
 /* Exactly at the near plane and at the far plane, through the centre, edges and corners. */
-static void depth_positions_at_near_and_far_plane(void)
+TL_TEST(depth_positions_at_near_and_far_plane)
 {
     const float xy[][2] = {{0.0f, 0.0f}, {1.0f, 0.0f}, {-1.0f, 1.0f}, {1.0f, -1.0f}, {0.3f, 0.7f}};
     printf("  %-14s %-6s %-14s %-14s %-12s %-12s\n", "format", "far/n", "window(near)", "window(far)", "err near",
@@ -219,7 +219,7 @@ static void depth_positions_at_near_and_far_plane(void)
 
 /* Window depth 0, 1, NaN and other junk: finite linear z (negative) and finite positions, for
  * every format and far plane, at the centre and the frustum's corners. */
-static void depth_special_windows_give_finite_positions(void)
+TL_TEST(depth_special_windows_give_finite_positions)
 {
     const float windows[] = {0.0f, 1.0f, NAN, -NAN, -0.0f, -1.0f, 2.0f, INFINITY, -INFINITY, FLT_TRUE_MIN,
                              nextafterf(1.0f, 0.0f), 0.5f};
@@ -275,7 +275,7 @@ static void depth_special_windows_give_finite_positions(void)
     TL_CHECK(isfinite(tl_depth_linearize(NULL, 0.5f)));
 }
 
-static void depth_projection_rejects_bad_arguments(void)
+TL_TEST(depth_projection_rejects_bad_arguments)
 {
     tl_projection p;
     const float pi = 3.14159265358979f;
@@ -315,7 +315,7 @@ static void depth_projection_rejects_bad_arguments(void)
 }
 
 /* The matrix against its formulas in double: each entry rounded once. */
-static void depth_projection_matrix_matches_double(void)
+TL_TEST(depth_projection_matrix_matches_double)
 {
     const float fovs[] = {0.01f, FOV_Y, 2.0f, 3.1f}, aspects[] = {0.25f, 1.0f, ASPECT, 4.0f};
     double worst = 0.0;
@@ -349,7 +349,7 @@ static void depth_projection_matrix_matches_double(void)
 
 /* Every D24 code: decode then encode gives it back, decoded depths increase strictly, and the
  * batch forms match. */
-static void depth_d24_exhaustive_code_round_trip(void)
+TL_TEST(depth_d24_exhaustive_code_round_trip)
 {
     const uint32_t chunk = 1u << 16;
     uint32_t *codes = malloc(chunk * sizeof *codes), *back = malloc(chunk * sizeof *back);
@@ -397,7 +397,7 @@ static void depth_d24_exhaustive_code_round_trip(void)
 }
 
 /* The batch position function equals the scalar one. */
-static void depth_view_position_batch_matches_scalar(void)
+TL_TEST(depth_view_position_batch_matches_scalar)
 {
     tl_projection p;
     make_projection(TL_DEPTH_FORMAT_D32F_REVERSED, 3, FOV_Y, ASPECT, &p);
@@ -420,16 +420,3 @@ static void depth_view_position_batch_matches_scalar(void)
     tl_view_position_from_depth_n(NULL, ndc, wd, pos, N); /* ignored */
     printf("  tl_view_position_from_depth_n vs scalar, %d positions: %u mismatches\n", N, mismatch);
 }
-
-static const tl_test_case cases[] = {
-    {"depth_reversed_d32f_relative_error_all_ratios", depth_reversed_d32f_relative_error_all_ratios},
-    {"depth_grazing_rays_wide_fov", depth_grazing_rays_wide_fov},
-    {"depth_positions_at_near_and_far_plane", depth_positions_at_near_and_far_plane},
-    {"depth_special_windows_give_finite_positions", depth_special_windows_give_finite_positions},
-    {"depth_projection_rejects_bad_arguments", depth_projection_rejects_bad_arguments},
-    {"depth_projection_matrix_matches_double", depth_projection_matrix_matches_double},
-    {"depth_d24_exhaustive_code_round_trip", depth_d24_exhaustive_code_round_trip},
-    {"depth_view_position_batch_matches_scalar", depth_view_position_batch_matches_scalar},
-};
-
-TL_TEST_MAIN(cases)

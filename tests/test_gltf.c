@@ -207,7 +207,7 @@ static void check_tangents(const tl_scene *s, size_t first, size_t count)
 
 /* ---- good input -------------------------------------------------------------------------- */
 
-static void gltf_textured_boxes_hierarchy(void)
+TL_TEST(gltf_textured_boxes_hierarchy)
 {
     loaded l;
     load(&l, "gltf_textured_boxes_hierarchy", "textured_boxes");
@@ -266,7 +266,7 @@ static void gltf_textured_boxes_hierarchy(void)
     unload(&l);
 }
 
-static void gltf_textured_boxes_materials_textures(void)
+TL_TEST(gltf_textured_boxes_materials_textures)
 {
     loaded l;
     load(&l, "gltf_textured_boxes_materials_textures", "textured_boxes");
@@ -321,7 +321,7 @@ static void gltf_textured_boxes_materials_textures(void)
     unload(&l);
 }
 
-static void gltf_materials_conversion(void)
+TL_TEST(gltf_materials_conversion)
 {
     loaded l;
     load(&l, "gltf_materials_conversion", "materials");
@@ -365,7 +365,7 @@ static void gltf_materials_conversion(void)
     unload(&l);
 }
 
-static void gltf_lights_punctual(void)
+TL_TEST(gltf_lights_punctual)
 {
     loaded l;
     load(&l, "gltf_lights_punctual", "lights");
@@ -403,7 +403,7 @@ static void gltf_lights_punctual(void)
     unload(&l);
 }
 
-static void gltf_index_sizes(void)
+TL_TEST(gltf_index_sizes)
 {
     loaded l;
     load(&l, "gltf_index_sizes", "indices");
@@ -429,7 +429,7 @@ static void gltf_index_sizes(void)
     unload(&l);
 }
 
-static void gltf_normalized_uvs(void)
+TL_TEST(gltf_normalized_uvs)
 {
     loaded l;
     load(&l, "gltf_normalized_uvs", "indices");
@@ -479,7 +479,7 @@ static int scenes_equal(const tl_scene *a, const tl_scene *b)
     return eq;
 }
 
-static void gltf_glb_and_data_uri_equal_gltf(void)
+TL_TEST(gltf_glb_and_data_uri_equal_gltf)
 {
     loaded a, b, c;
     load(&a, "gltf_glb_and_data_uri_equal_gltf", "textured_boxes");
@@ -495,7 +495,7 @@ static void gltf_glb_and_data_uri_equal_gltf(void)
     unload(&c);
 }
 
-static void gltf_generated_normals_tangents(void)
+TL_TEST(gltf_generated_normals_tangents)
 {
     for (int mode = 0; mode < 2; mode++) {
         tl_gltf_options o = {.normals = mode ? TL_GLTF_NORMALS_SMOOTH : TL_GLTF_NORMALS_DEFAULT};
@@ -525,7 +525,7 @@ static void gltf_generated_normals_tangents(void)
     }
 }
 
-static void gltf_default_light_rig(void)
+TL_TEST(gltf_default_light_rig)
 {
     loaded l;
     load(&l, "gltf_default_light_rig", "textured_boxes");
@@ -555,7 +555,7 @@ static void gltf_default_light_rig(void)
     unload(&l);
 }
 
-static void gltf_extra_lights_deterministic(void)
+TL_TEST(gltf_extra_lights_deterministic)
 {
     tl_gltf_options o = {.extra_lights = 100, .seed = 7};
     loaded a, b, c, d;
@@ -593,7 +593,7 @@ static void gltf_extra_lights_deterministic(void)
     unload(&d);
 }
 
-static void gltf_camera_from_file(void)
+TL_TEST(gltf_camera_from_file)
 {
     loaded l;
     load(&l, "gltf_camera_from_file", "camera_zfar");
@@ -617,7 +617,7 @@ static void gltf_camera_from_file(void)
     unload(&l);
 }
 
-static void gltf_multiple_scenes(void)
+TL_TEST(gltf_multiple_scenes)
 {
     tl_gltf_options o = {0};
     float want_x[3] = {4, -1, 4}; /* default ("scene": 1), scene number 1, scene number 2 */
@@ -640,7 +640,7 @@ static void gltf_multiple_scenes(void)
     unload(&l);
 }
 
-static void gltf_mirrored_instance_winding(void)
+TL_TEST(gltf_mirrored_instance_winding)
 {
     /* glTF: a negative determinant flips the winding. The mirrored instance draws a reversed
      * copy of the indices, so its world-space triangles still face their normals (+Y). */
@@ -667,7 +667,7 @@ static void gltf_mirrored_instance_winding(void)
     unload(&l);
 }
 
-static void gltf_test_scenes_written(void)
+TL_TEST(gltf_test_scenes_written)
 {
     char dir[1024];
     case_dir(dir, sizeof dir, "gltf_test_scenes_written");
@@ -688,7 +688,7 @@ static void gltf_test_scenes_written(void)
 
 /* ---- the allocator ------------------------------------------------------------------------- */
 
-static void gltf_allocator_counting(void)
+TL_TEST(gltf_allocator_counting)
 {
     const char *cases[3] = {"textured_boxes", "materials", "lights"};
     for (int c = 0; c < 3; c++) {
@@ -716,10 +716,10 @@ static void gltf_allocator_counting(void)
 
 /* ---- bad input ----------------------------------------------------------------------------- */
 
-static void gltf_malformed_json(void) { expect_failure("gltf_malformed_json", "malformed_json", TL_ERROR_PARSE, NULL); }
-static void gltf_wrong_types(void) { expect_failure("gltf_wrong_types", "wrong_types", TL_ERROR_PARSE, "count"); }
-static void gltf_missing_bin(void) { expect_failure("gltf_missing_bin", "missing_bin", TL_ERROR_IO, "missing_bin.bin"); }
-static void gltf_missing_file(void)
+TL_TEST(gltf_malformed_json) { expect_failure("gltf_malformed_json", "malformed_json", TL_ERROR_PARSE, NULL); }
+TL_TEST(gltf_wrong_types) { expect_failure("gltf_wrong_types", "wrong_types", TL_ERROR_PARSE, "count"); }
+TL_TEST(gltf_missing_bin) { expect_failure("gltf_missing_bin", "missing_bin", TL_ERROR_IO, "missing_bin.bin"); }
+TL_TEST(gltf_missing_file)
 {
     char error[512];
     tl_scene *s = NULL;
@@ -728,7 +728,7 @@ static void gltf_missing_file(void)
     TL_CHECK(s == NULL && strstr(error, "file.gltf") != NULL);
 }
 
-static void gltf_missing_image(void)
+TL_TEST(gltf_missing_image)
 {
     loaded l;
     load(&l, "gltf_missing_image", "missing_image");
@@ -742,50 +742,50 @@ static void gltf_missing_image(void)
     unload(&l);
 }
 
-static void gltf_bufferview_out_of_range(void)
+TL_TEST(gltf_bufferview_out_of_range)
 {
     expect_failure("gltf_bufferview_out_of_range", "bufferview_out_of_range", TL_ERROR_PARSE, "accessors[0]: bufferView 99");
 }
-static void gltf_accessor_past_buffer_view(void)
+TL_TEST(gltf_accessor_past_buffer_view)
 {
     expect_failure("gltf_accessor_past_buffer_view", "accessor_past_view", TL_ERROR_PARSE, "accessors[0]");
 }
-static void gltf_buffer_view_past_buffer(void)
+TL_TEST(gltf_buffer_view_past_buffer)
 {
     expect_failure("gltf_buffer_view_past_buffer", "view_past_buffer", TL_ERROR_PARSE, "bufferViews[1]");
 }
-static void gltf_accessor_reference_out_of_range(void)
+TL_TEST(gltf_accessor_reference_out_of_range)
 {
     expect_failure("gltf_accessor_reference_out_of_range", "accessor_ref_out_of_range", TL_ERROR_PARSE, "accessor 42");
 }
-static void gltf_mesh_reference_out_of_range(void)
+TL_TEST(gltf_mesh_reference_out_of_range)
 {
     expect_failure("gltf_mesh_reference_out_of_range", "mesh_ref_out_of_range", TL_ERROR_PARSE, "nodes[0]: mesh 7");
 }
-static void gltf_vertex_index_out_of_range(void)
+TL_TEST(gltf_vertex_index_out_of_range)
 {
     expect_failure("gltf_vertex_index_out_of_range", "index_out_of_range", TL_ERROR_PARSE, "accessors[1]: index 99");
 }
-static void gltf_node_cycle(void) { expect_failure("gltf_node_cycle", "node_cycle", TL_ERROR_PARSE, "cycle"); }
-static void gltf_node_self_child(void) { expect_failure("gltf_node_self_child", "node_self_child", TL_ERROR_PARSE, "cycle"); }
-static void gltf_node_two_parents(void)
+TL_TEST(gltf_node_cycle) { expect_failure("gltf_node_cycle", "node_cycle", TL_ERROR_PARSE, "cycle"); }
+TL_TEST(gltf_node_self_child) { expect_failure("gltf_node_self_child", "node_self_child", TL_ERROR_PARSE, "cycle"); }
+TL_TEST(gltf_node_two_parents)
 {
     expect_failure("gltf_node_two_parents", "node_two_parents", TL_ERROR_PARSE, "nodes[2]: has two parents");
 }
-static void gltf_node_child_out_of_range(void)
+TL_TEST(gltf_node_child_out_of_range)
 {
     expect_failure("gltf_node_child_out_of_range", "node_child_out_of_range", TL_ERROR_PARSE, "nodes[0]: child 5");
 }
-static void gltf_nan_position(void)
+TL_TEST(gltf_nan_position)
 {
     expect_failure("gltf_nan_position", "nan_position", TL_ERROR_PARSE, "accessors[0]: POSITION element 1 is not finite");
 }
-static void gltf_inf_position(void)
+TL_TEST(gltf_inf_position)
 {
     expect_failure("gltf_inf_position", "inf_position", TL_ERROR_PARSE, "accessors[0]: POSITION element 1 is not finite");
 }
 
-static void gltf_zero_length_normals(void)
+TL_TEST(gltf_zero_length_normals)
 {
     loaded l;
     load(&l, "gltf_zero_length_normals", "zero_normals");
@@ -796,7 +796,7 @@ static void gltf_zero_length_normals(void)
     unload(&l);
 }
 
-static void gltf_texture_unsupported_format(void)
+TL_TEST(gltf_texture_unsupported_format)
 {
     loaded l;
     load(&l, "gltf_texture_unsupported_format", "texture_unsupported");
@@ -809,7 +809,7 @@ static void gltf_texture_unsupported_format(void)
     unload(&l);
 }
 
-static void gltf_texture_jpeg(void)
+TL_TEST(gltf_texture_jpeg)
 {
     loaded l;
     load(&l, "gltf_texture_jpeg", "texture_jpeg");
@@ -827,7 +827,7 @@ static void gltf_texture_jpeg(void)
     unload(&l);
 }
 
-static void gltf_texture_truncated_png(void)
+TL_TEST(gltf_texture_truncated_png)
 {
     loaded l;
     load(&l, "gltf_texture_truncated_png", "texture_truncated_png");
@@ -837,12 +837,12 @@ static void gltf_texture_truncated_png(void)
     unload(&l);
 }
 
-static void gltf_texture_absurd_size(void)
+TL_TEST(gltf_texture_absurd_size)
 {
     expect_failure("gltf_texture_absurd_size", "texture_huge", TL_ERROR_LIMIT, "images[0]: 60000x60000");
 }
 
-static void gltf_texture_pixel_limit_option(void)
+TL_TEST(gltf_texture_pixel_limit_option)
 {
     tl_gltf_options o = {.max_texture_pixels = 15};
     loaded l;
@@ -855,7 +855,7 @@ static void gltf_texture_pixel_limit_option(void)
     unload(&l);
 }
 
-static void gltf_triangle_limit(void)
+TL_TEST(gltf_triangle_limit)
 {
     tl_gltf_options o = {.max_triangles = 37}; /* textured_boxes draws 12 + 12 + 12 + 2 */
     loaded l;
@@ -868,7 +868,7 @@ static void gltf_triangle_limit(void)
     unload(&l);
 }
 
-static void gltf_accessor_without_buffer_view(void)
+TL_TEST(gltf_accessor_without_buffer_view)
 {
     /* glTF: an accessor without a buffer view reads as zeros. 300000 such vertices load (their
      * zero normals are regenerated), but not past 3 vertices per triangle of max_triangles. */
@@ -889,7 +889,7 @@ static void gltf_accessor_without_buffer_view(void)
     unload(&l);
 }
 
-static void gltf_empty_scene(void)
+TL_TEST(gltf_empty_scene)
 {
     /* An empty but valid scene (documented): no objects, a warning, the default rig and a
      * camera around the origin. */
@@ -913,7 +913,7 @@ static void gltf_empty_scene(void)
     }
 }
 
-static void gltf_truncated_glb(void)
+TL_TEST(gltf_truncated_glb)
 {
     char path[1024], cut[1024], dir[1024];
     if (fixture("gltf_truncated_glb", "textured_boxes_glb", path, sizeof path)) return;
@@ -947,17 +947,17 @@ static void gltf_truncated_glb(void)
     free(b);
 }
 
-static void gltf_required_extension_unsupported(void)
+TL_TEST(gltf_required_extension_unsupported)
 {
     expect_failure("gltf_required_extension_unsupported", "required_extension", TL_ERROR_UNSUPPORTED,
                    "KHR_draco_mesh_compression");
 }
-static void gltf_sparse_accessor_unsupported(void)
+TL_TEST(gltf_sparse_accessor_unsupported)
 {
     expect_failure("gltf_sparse_accessor_unsupported", "sparse_accessor", TL_ERROR_UNSUPPORTED, "accessors[0]: sparse");
 }
 
-static void gltf_non_triangle_mode_skipped(void)
+TL_TEST(gltf_non_triangle_mode_skipped)
 {
     loaded l;
     load(&l, "gltf_non_triangle_mode_skipped", "lines_mode");
@@ -967,7 +967,7 @@ static void gltf_non_triangle_mode_skipped(void)
     unload(&l);
 }
 
-static void gltf_bad_arguments(void)
+TL_TEST(gltf_bad_arguments)
 {
     char path[1024];
     if (fixture("gltf_bad_arguments", "quad", path, sizeof path)) return;
@@ -989,7 +989,7 @@ static void gltf_bad_arguments(void)
     tl_scene_destroy(s);
 }
 
-static void gltf_error_message_one_line(void)
+TL_TEST(gltf_error_message_one_line)
 {
     /* Without a logger: the error buffer holds the line; a short buffer is truncated safely. */
     char path[1024];
@@ -1101,63 +1101,10 @@ static void fuzz_bin(const char *test, unsigned long long seed, int rounds)
     free(orig);
 }
 
-static void gltf_fuzz_mutations(void)
+TL_TEST(gltf_fuzz_mutations)
 {
     fuzz_file("gltf_fuzz_mutations", "textured_boxes_glb", "mutated.glb", 1, 600);
     fuzz_file("gltf_fuzz_mutations", "textured_boxes", "mutated.gltf", 2, 600);
     fuzz_file("gltf_fuzz_mutations", "lights", "mutated_lights.gltf", 3, 300);
     fuzz_bin("gltf_fuzz_mutations", 4, 400);
 }
-
-static const tl_test_case cases[] = {
-    {"gltf_textured_boxes_hierarchy", gltf_textured_boxes_hierarchy},
-    {"gltf_textured_boxes_materials_textures", gltf_textured_boxes_materials_textures},
-    {"gltf_materials_conversion", gltf_materials_conversion},
-    {"gltf_lights_punctual", gltf_lights_punctual},
-    {"gltf_index_sizes", gltf_index_sizes},
-    {"gltf_normalized_uvs", gltf_normalized_uvs},
-    {"gltf_glb_and_data_uri_equal_gltf", gltf_glb_and_data_uri_equal_gltf},
-    {"gltf_generated_normals_tangents", gltf_generated_normals_tangents},
-    {"gltf_default_light_rig", gltf_default_light_rig},
-    {"gltf_extra_lights_deterministic", gltf_extra_lights_deterministic},
-    {"gltf_camera_from_file", gltf_camera_from_file},
-    {"gltf_multiple_scenes", gltf_multiple_scenes},
-    {"gltf_mirrored_instance_winding", gltf_mirrored_instance_winding},
-    {"gltf_test_scenes_written", gltf_test_scenes_written},
-    {"gltf_allocator_counting", gltf_allocator_counting},
-    {"gltf_malformed_json", gltf_malformed_json},
-    {"gltf_wrong_types", gltf_wrong_types},
-    {"gltf_missing_bin", gltf_missing_bin},
-    {"gltf_missing_file", gltf_missing_file},
-    {"gltf_missing_image", gltf_missing_image},
-    {"gltf_bufferview_out_of_range", gltf_bufferview_out_of_range},
-    {"gltf_accessor_past_buffer_view", gltf_accessor_past_buffer_view},
-    {"gltf_buffer_view_past_buffer", gltf_buffer_view_past_buffer},
-    {"gltf_accessor_reference_out_of_range", gltf_accessor_reference_out_of_range},
-    {"gltf_mesh_reference_out_of_range", gltf_mesh_reference_out_of_range},
-    {"gltf_vertex_index_out_of_range", gltf_vertex_index_out_of_range},
-    {"gltf_node_cycle", gltf_node_cycle},
-    {"gltf_node_self_child", gltf_node_self_child},
-    {"gltf_node_two_parents", gltf_node_two_parents},
-    {"gltf_node_child_out_of_range", gltf_node_child_out_of_range},
-    {"gltf_nan_position", gltf_nan_position},
-    {"gltf_inf_position", gltf_inf_position},
-    {"gltf_zero_length_normals", gltf_zero_length_normals},
-    {"gltf_texture_unsupported_format", gltf_texture_unsupported_format},
-    {"gltf_texture_jpeg", gltf_texture_jpeg},
-    {"gltf_texture_truncated_png", gltf_texture_truncated_png},
-    {"gltf_texture_absurd_size", gltf_texture_absurd_size},
-    {"gltf_texture_pixel_limit_option", gltf_texture_pixel_limit_option},
-    {"gltf_triangle_limit", gltf_triangle_limit},
-    {"gltf_accessor_without_buffer_view", gltf_accessor_without_buffer_view},
-    {"gltf_empty_scene", gltf_empty_scene},
-    {"gltf_truncated_glb", gltf_truncated_glb},
-    {"gltf_required_extension_unsupported", gltf_required_extension_unsupported},
-    {"gltf_sparse_accessor_unsupported", gltf_sparse_accessor_unsupported},
-    {"gltf_non_triangle_mode_skipped", gltf_non_triangle_mode_skipped},
-    {"gltf_bad_arguments", gltf_bad_arguments},
-    {"gltf_error_message_one_line", gltf_error_message_one_line},
-    {"gltf_fuzz_mutations", gltf_fuzz_mutations},
-};
-
-TL_TEST_MAIN(cases)

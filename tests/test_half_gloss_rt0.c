@@ -69,7 +69,7 @@ static uint16_t half_reference(float f)
 
 /* Every half: to_float is exact (checked against the field formula), and from_float maps it back
  * to itself; NaN halves come back as +0 and Inf halves as +-65504 (saturation). */
-static void half_all_65536_round_trip(void)
+TL_TEST(half_all_65536_round_trip)
 {
     uint32_t identity = 0, nan_to_zero = 0, inf_saturated = 0, bad = 0;
     for (uint32_t i = 0; i < 65536; i++) {
@@ -116,7 +116,7 @@ static void half_all_65536_round_trip(void)
 
 /* Every rounding boundary of the format: each half value, each midpoint between neighbours and
  * one float ULP either side of both, with both signs. */
-static void half_from_float_every_boundary_matches_reference(void)
+TL_TEST(half_from_float_every_boundary_matches_reference)
 {
     build_half_table();
     uint32_t checked = 0, wrong = 0;
@@ -144,7 +144,7 @@ static void half_from_float_every_boundary_matches_reference(void)
 
 /* 10^7 random floats: half of them any bit pattern, half with exponents inside the half range
  * (where rounding actually happens). */
-static void half_from_float_random_matches_reference(void)
+TL_TEST(half_from_float_random_matches_reference)
 {
     build_half_table();
     tl_rng rng = {0x4A1Fu};
@@ -172,7 +172,7 @@ static void half_from_float_random_matches_reference(void)
 }
 
 /* The header's saturating promises, spelled out. */
-static void half_saturation_nan_inf_and_signed_zero(void)
+TL_TEST(half_saturation_nan_inf_and_signed_zero)
 {
     build_half_table();
     static const struct { float f; uint16_t h; } cases[] = {
@@ -210,7 +210,7 @@ static void half_saturation_nan_inf_and_signed_zero(void)
  * rounding of g and of the decoded k / max (2^-24 relative each, i.e. up to max 2^-24 steps). */
 #define HALF_STEP(max) (0.5 + 2.0 * (max) * 0x1.0p-24)
 
-static void gloss_power_endpoints_and_monotonic(void)
+TL_TEST(gloss_power_endpoints_and_monotonic)
 {
     TL_CHECK(tl_gloss_to_specular_power(0.0f) == TL_GLOSS_MIN_POWER);
     TL_CHECK(tl_gloss_to_specular_power(1.0f) == TL_GLOSS_MAX_POWER);
@@ -249,7 +249,7 @@ static void gloss_power_endpoints_and_monotonic(void)
     }
 }
 
-static void gloss_power_and_alpha_round_trips(void)
+TL_TEST(gloss_power_and_alpha_round_trips)
 {
     double worst_pg = 0.0, worst_ag = 0.0, worst_gp = 0.0, worst_ga = 0.0;
     for (uint32_t k = 0; k <= GLOSS_SWEEP; k++) {
@@ -276,7 +276,7 @@ static void gloss_power_and_alpha_round_trips(void)
     TL_CHECK_LE(worst_ag, 1e-5);
 }
 
-static void gloss_bad_inputs_clamp(void)
+TL_TEST(gloss_bad_inputs_clamp)
 {
     const float lo[] = {NAN, -NAN, -1.0f, -INFINITY, -FLT_MIN, -0.0f};
     const float hi[] = {1.0f, 1.5f, 1e30f, INFINITY};
@@ -336,7 +336,7 @@ static void check_gloss_codes(uint32_t bits, uint32_t *worst_code_err, double *w
     }
 }
 
-static void gloss8_exhaustive_encode_decode(void)
+TL_TEST(gloss8_exhaustive_encode_decode)
 {
     uint32_t wc = 0;
     double wv = 0.0;
@@ -346,7 +346,7 @@ static void gloss8_exhaustive_encode_decode(void)
     TL_CHECK_LE(wv, HALF_STEP(255.0));
 }
 
-static void gloss10_exhaustive_encode_decode(void)
+TL_TEST(gloss10_exhaustive_encode_decode)
 {
     uint32_t wc = 0;
     double wv = 0.0;
@@ -357,7 +357,7 @@ static void gloss10_exhaustive_encode_decode(void)
     TL_CHECK_LE(wv, HALF_STEP(1023.0));
 }
 
-static void gloss_all_bits_1_to_16_exhaustive(void)
+TL_TEST(gloss_all_bits_1_to_16_exhaustive)
 {
     uint32_t wc = 0;
     double wv = 0.0;
@@ -373,7 +373,7 @@ static void gloss_all_bits_1_to_16_exhaustive(void)
 
 #define RT0_COUNT 1000000u
 
-static void rt0_rgba8_matches_oct12_precise_and_gloss8(void)
+TL_TEST(rt0_rgba8_matches_oct12_precise_and_gloss8)
 {
     tl_rng rng = {0x27A8u};
     uint32_t normal_mismatch = 0;
@@ -400,7 +400,7 @@ static void rt0_rgba8_matches_oct12_precise_and_gloss8(void)
     TL_CHECK(isfinite(d[0]) && isfinite(d[1]) && isfinite(d[2]));
 }
 
-static void rt0_rgba8_batch_matches_scalar(void)
+TL_TEST(rt0_rgba8_batch_matches_scalar)
 {
     const size_t count = 100003;
     float *n = malloc(3 * count * sizeof *n), *g = malloc(count * sizeof *g), *d = malloc(3 * count * sizeof *d),
@@ -439,7 +439,7 @@ static void rt0_rgba8_batch_matches_scalar(void)
 }
 
 /* R = u[11:4], G = v[11:4], B = u[3:0] << 4 | v[3:0], A = gloss8: built by hand from a code. */
-static void rt0_rgba8_byte_layout(void)
+TL_TEST(rt0_rgba8_byte_layout)
 {
     const uint32_t u = 0xABCu, v = 0x123u, code = u | (v << 12);
     float n[3];
@@ -465,7 +465,7 @@ static void rt0_rgba8_byte_layout(void)
     }
 }
 
-static void rt0_rgb10a2_matches_oct10_precise_gloss10_flags(void)
+TL_TEST(rt0_rgb10a2_matches_oct10_precise_gloss10_flags)
 {
     tl_rng rng = {0x10A2u};
     uint32_t normal_mismatch = 0, flag_mismatch = 0;
@@ -493,7 +493,7 @@ static void rt0_rgb10a2_matches_oct10_precise_gloss10_flags(void)
 }
 
 /* bits 0-9 u, 10-19 v, 20-29 gloss10, 30-31 flags: built by hand. */
-static void rt0_rgb10a2_bit_layout(void)
+TL_TEST(rt0_rgb10a2_bit_layout)
 {
     const uint32_t u = 0x2A5u, v = 0x15Au, gcode = 0x3C3u;
     float n[3];
@@ -514,7 +514,7 @@ static void rt0_rgb10a2_bit_layout(void)
     TL_CHECK_EQ_U(tl_rt0_encode_rgb10a2(n, 0.0f, 7u) >> 30, 3u); /* only 2 flag bits are kept */
 }
 
-static void rt0_extreme_inputs_finite(void)
+TL_TEST(rt0_extreme_inputs_finite)
 {
     const float in[][3] = {{NAN, 0.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, {INFINITY, -INFINITY, 0.0f}, {0.0f, 0.0f, -1.0f},
                            {1e-40f, 0.0f, 0.0f}, {FLT_MAX, FLT_MAX, FLT_MAX}};
@@ -533,24 +533,3 @@ static void rt0_extreme_inputs_finite(void)
     printf("  %zu (normal, gloss) extreme pairs through both layouts: finite normals, gloss in [0, 1]\n",
            (sizeof in / sizeof in[0]) * (sizeof gl / sizeof gl[0]));
 }
-
-static const tl_test_case cases[] = {
-    {"half_all_65536_round_trip", half_all_65536_round_trip},
-    {"half_from_float_every_boundary_matches_reference", half_from_float_every_boundary_matches_reference},
-    {"half_from_float_random_matches_reference", half_from_float_random_matches_reference},
-    {"half_saturation_nan_inf_and_signed_zero", half_saturation_nan_inf_and_signed_zero},
-    {"gloss_power_endpoints_and_monotonic", gloss_power_endpoints_and_monotonic},
-    {"gloss_power_and_alpha_round_trips", gloss_power_and_alpha_round_trips},
-    {"gloss_bad_inputs_clamp", gloss_bad_inputs_clamp},
-    {"gloss8_exhaustive_encode_decode", gloss8_exhaustive_encode_decode},
-    {"gloss10_exhaustive_encode_decode", gloss10_exhaustive_encode_decode},
-    {"gloss_all_bits_1_to_16_exhaustive", gloss_all_bits_1_to_16_exhaustive},
-    {"rt0_rgba8_matches_oct12_precise_and_gloss8", rt0_rgba8_matches_oct12_precise_and_gloss8},
-    {"rt0_rgba8_batch_matches_scalar", rt0_rgba8_batch_matches_scalar},
-    {"rt0_rgba8_byte_layout", rt0_rgba8_byte_layout},
-    {"rt0_rgb10a2_matches_oct10_precise_gloss10_flags", rt0_rgb10a2_matches_oct10_precise_gloss10_flags},
-    {"rt0_rgb10a2_bit_layout", rt0_rgb10a2_bit_layout},
-    {"rt0_extreme_inputs_finite", rt0_extreme_inputs_finite},
-};
-
-TL_TEST_MAIN(cases)

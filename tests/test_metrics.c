@@ -46,7 +46,7 @@ static const double tl__sharma[34][7] = {
     {2.0776, 0.0795, -1.1350, 0.9033, -0.0636, -0.5514, 0.9082},
 };
 
-static void ciede2000_sharma_reference_pairs(void)
+TL_TEST(ciede2000_sharma_reference_pairs)
 {
     for (size_t i = 0; i < 34; i++) {
         const double *r = tl__sharma[i];
@@ -66,7 +66,7 @@ static void ciede2000_sharma_reference_pairs(void)
     TL_CHECK(isnan(tl_ciede2000(lab, nan_lab)));
 }
 
-static void srgb_to_lab_white_black_primaries(void)
+TL_TEST(srgb_to_lab_white_black_primaries)
 {
     double lab[3];
     tl_srgb_to_lab((const double[3]){1.0, 1.0, 1.0}, lab);
@@ -106,7 +106,7 @@ static void srgb_to_lab_white_black_primaries(void)
     tl_srgb_to_lab((const double[3]){1.0, 1.0, 1.0}, NULL); /* must not crash */
 }
 
-static void angle_deg_tiny_and_opposite(void)
+TL_TEST(angle_deg_tiny_and_opposite)
 {
     /* 1e-6 degrees: the exact angle between these float vectors is atan(y), y rounded. */
     float y = (float)tan(1e-6 * 3.14159265358979323846 / 180.0);
@@ -154,7 +154,7 @@ static void angle_deg_tiny_and_opposite(void)
     }
 }
 
-static void image_compare_psnr_known(void)
+TL_TEST(image_compare_psnr_known)
 {
     enum { N = 256 };
     float a[N], b[N];
@@ -218,7 +218,7 @@ static void image_compare_psnr_known(void)
     TL_CHECK(tl_image_compare(a, b, N, NAN, &e) == TL_ERROR_INVALID_ARGUMENT);
 }
 
-static void image_compare_u8_known(void)
+TL_TEST(image_compare_u8_known)
 {
     enum { N = 300 };
     uint8_t a[N], b[N];
@@ -278,7 +278,7 @@ static int tl__cmp_double(const void *x, const void *y)
 static double tl__values[100000];
 static tl_stats tl__s, tl__s2, tl__s3;
 
-static void stats_mean_max_percentile(void)
+TL_TEST(stats_mean_max_percentile)
 {
     enum { N = 100000 };
     const double bin_rel = exp2(1.0 / TL_STATS_BINS_PER_OCTAVE) - 1.0;
@@ -364,7 +364,7 @@ static void stats_mean_max_percentile(void)
     TL_CHECK_EQ_U(a->count, 0);
 }
 
-static void stats_extreme_values(void)
+TL_TEST(stats_extreme_values)
 {
     tl_stats *s = &tl__s;
     tl_stats_reset(s);
@@ -443,14 +443,3 @@ static void stats_extreme_values(void)
     /* Out-of-range p clamps to the ends. */
     TL_CHECK(tl_stats_percentile(s, -1.0) == s->min && tl_stats_percentile(s, 2.0) == s->max);
 }
-
-static const tl_test_case cases[] = {
-    {"ciede2000_sharma_reference_pairs", ciede2000_sharma_reference_pairs},
-    {"srgb_to_lab_white_black_primaries", srgb_to_lab_white_black_primaries},
-    {"angle_deg_tiny_and_opposite", angle_deg_tiny_and_opposite},
-    {"image_compare_psnr_known", image_compare_psnr_known},
-    {"image_compare_u8_known", image_compare_u8_known},
-    {"stats_mean_max_percentile", stats_mean_max_percentile},
-    {"stats_extreme_values", stats_extreme_values},
-};
-TL_TEST_MAIN(cases)

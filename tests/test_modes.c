@@ -30,7 +30,7 @@ static int any_program_has(const tl_frame_plan *p, const char *define)
 /* ---- pure planning ------------------------------------------------------------------------- */
 
 /* Every combination of features, in every mode: the structural rules of DESIGN.md section 4. */
-static void plan_rules_exhaustive(void)
+TL_TEST(plan_rules_exhaustive)
 {
     size_t checked = 0;
     for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++)
@@ -92,7 +92,7 @@ static void plan_rules_exhaustive(void)
     TL_CHECK_EQ_U(checked, 4 * 256);
 }
 
-static void plan_fat_layout_44_bytes(void)
+TL_TEST(plan_fat_layout_44_bytes)
 {
     tl_scene_feature_set f = {.point_lights = 1, .has_specular = 1};
     tl_renderer_desc d = {.mode = TL_MODE_FAT};
@@ -117,7 +117,7 @@ static void plan_fat_layout_44_bytes(void)
     TL_CHECK_EQ_U(p.gbuffer_bytes_per_pixel, 12);
 }
 
-static void plan_format_and_bad_input(void)
+TL_TEST(plan_format_and_bad_input)
 {
     tl_scene_feature_set f = {.point_lights = 3, .directional_lights = 1, .has_specular = 1, .has_textures = 1};
     tl_renderer_desc d = {.mode = TL_MODE_THIN_LPP};
@@ -161,7 +161,7 @@ static tl_renderer *make_renderer(tl_render_mode mode, uint32_t w, uint32_t h)
 
 /* The renderer allocates exactly what its plan lists, for every mode, and the programs it
  * compiles are cached: a second scene with the same features compiles nothing. */
-static void plan_allocations_match_renderer(void)
+TL_TEST(plan_allocations_match_renderer)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
     tl_scene *s = NULL;
@@ -278,19 +278,19 @@ static void compare_modes_to_fat(const tl_default_scene_desc *sd, const char *la
     tl_scene_destroy(s);
 }
 
-static void modes_match_fat_default_scene(void)
+TL_TEST(modes_match_fat_default_scene)
 {
     compare_modes_to_fat(&(tl_default_scene_desc){.point_lights = 64, .detail = 2}, "64 lights");
 }
 
-static void modes_match_fat_many_lights(void)
+TL_TEST(modes_match_fat_many_lights)
 {
     compare_modes_to_fat(&(tl_default_scene_desc){.point_lights = 512, .detail = 1, .seed = 7}, "512 lights");
 }
 
 /* Alpha-blended materials are drawn forward-lit after the opaque frame in every mode: making one
  * material half transparent changes the image, and every mode still agrees with fat. */
-static void modes_transparent_materials(void)
+TL_TEST(modes_transparent_materials)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
     tl_scene *s = NULL;
@@ -329,7 +329,7 @@ static void modes_transparent_materials(void)
 
 /* The final pass can write into the caller's framebuffer: same size gives the same pixels as the
  * renderer's own output; an offset viewport lands where asked and leaves the rest alone. */
-static void render_to_caller_framebuffer(void)
+TL_TEST(render_to_caller_framebuffer)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
     tl_scene *s = NULL;
@@ -394,7 +394,7 @@ static void render_to_caller_framebuffer(void)
 
 /* What planning saves: a scene without specular materials and without spot lights, planned and
  * unplanned (tl_renderer_desc.no_planning): fewer bytes, fewer programs, the same image. */
-static void plan_saving_same_image(void)
+TL_TEST(plan_saving_same_image)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
     tl_scene *s = NULL;
@@ -439,7 +439,7 @@ static void plan_saving_same_image(void)
 /* The generated glTF test scenes (textures and a node hierarchy; several materials with alpha
  * MASK, BLEND and double-sided; punctual lights of every type) render through every mode like fat
  * does, and each gets its own plan. */
-static void modes_match_fat_gltf_scenes(void)
+TL_TEST(modes_match_fat_gltf_scenes)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
     const char *dir = TL_TEST_WORK_DIR "/modes_gltf";
@@ -492,25 +492,3 @@ static void modes_match_fat_gltf_scenes(void)
     TL_CHECK(strstr(plans[2], "lights.spot") != NULL);
 }
 #endif
-
-static const tl_test_case cases[] = {
-#ifdef TL_TEST_GLTF
-    {"modes_match_fat_gltf_scenes", modes_match_fat_gltf_scenes},
-#endif
-    {"plan_saving_same_image", plan_saving_same_image},
-    {"plan_rules_exhaustive", plan_rules_exhaustive},
-    {"plan_fat_layout_44_bytes", plan_fat_layout_44_bytes},
-    {"plan_format_and_bad_input", plan_format_and_bad_input},
-    {"plan_allocations_match_renderer", plan_allocations_match_renderer},
-    {"modes_match_fat_default_scene", modes_match_fat_default_scene},
-    {"modes_match_fat_many_lights", modes_match_fat_many_lights},
-    {"modes_transparent_materials", modes_transparent_materials},
-    {"render_to_caller_framebuffer", render_to_caller_framebuffer},
-};
-
-int main(int argc, char **argv)
-{
-    int rc = tl_test_main(argc, argv, cases, sizeof cases / sizeof cases[0]);
-    if (g_ctx) tl_context_destroy(g_ctx);
-    return rc;
-}

@@ -64,7 +64,7 @@ static void measure_normal(tl_normal_encoding enc, uint32_t bits, const float *n
  * 1. Random-direction error bounds
  * ------------------------------------------------------------------------------------------- */
 
-static void oct12_random_plain_error_bounds(void)
+TL_TEST(oct12_random_plain_error_bounds)
 {
     float *n = random_directions(RANDOM_COUNT, 0x0C7012u);
     tl_stats *s = stats_new();
@@ -77,7 +77,7 @@ static void oct12_random_plain_error_bounds(void)
     free(n);
 }
 
-static void oct12_random_precise_error_bounds(void)
+TL_TEST(oct12_random_precise_error_bounds)
 {
     float *n = random_directions(RANDOM_COUNT, 0x0C7012u);
     tl_stats *plain = stats_new(), *precise = stats_new();
@@ -93,7 +93,7 @@ static void oct12_random_precise_error_bounds(void)
     free(n);
 }
 
-static void oct8_random_plain_max_error(void)
+TL_TEST(oct8_random_plain_max_error)
 {
     float *n = random_directions(RANDOM_COUNT, 0x0C7008u);
     tl_stats *s = stats_new();
@@ -104,7 +104,7 @@ static void oct8_random_plain_max_error(void)
     free(n);
 }
 
-static void oct16_random_plain_max_error(void)
+TL_TEST(oct16_random_plain_max_error)
 {
     float *n = random_directions(RANDOM_COUNT, 0x0C7016u);
     tl_stats *s = stats_new();
@@ -116,7 +116,7 @@ static void oct16_random_plain_max_error(void)
 }
 
 /* The grid spacing halves with every extra bit, so the worst-case error should as well. */
-static void oct_plain_max_error_halves_per_bit(void)
+TL_TEST(oct_plain_max_error_halves_per_bit)
 {
     float *n = random_directions(RANDOM_COUNT, 0x0C70FFu);
     tl_stats *s = stats_new();
@@ -142,7 +142,7 @@ static void oct_plain_max_error_halves_per_bit(void)
 
 /* The precise variant must pick the best of its 4 floor/ceil candidates, judged in double, at
  * unit length and at lengths far from it (exact powers of two, so the direction is unchanged). */
-static void oct_precise_picks_best_candidate_double_reference(void)
+TL_TEST(oct_precise_picks_best_candidate_double_reference)
 {
     const size_t count = 100000;
     const uint32_t budgets[] = {8, 10, 12, 16};
@@ -194,7 +194,7 @@ static void oct_precise_picks_best_candidate_double_reference(void)
 
 /* Plain rounding: the code is the nearest grid point of the projection computed in double,
  * except where the float projection lands within float rounding of a rounding boundary. */
-static void oct_plain_code_matches_double_projection(void)
+TL_TEST(oct_plain_code_matches_double_projection)
 {
     const size_t count = RANDOM_COUNT;
     float *n = random_directions(count, 0x9A1Bu);
@@ -234,7 +234,7 @@ static void oct_plain_code_matches_double_projection(void)
 }
 
 /* Projection without quantisation: unproject(project(n)) is n up to float rounding. */
-static void oct_project_unproject_round_trip_unquantised(void)
+TL_TEST(oct_project_unproject_round_trip_unquantised)
 {
     float *n = random_directions(RANDOM_COUNT, 0x9801u);
     tl_stats *s = stats_new();
@@ -298,10 +298,10 @@ static void check_idempotent_exhaustive(uint32_t bits)
     free(n);
 }
 
-static void oct8_exhaustive_decode_encode_idempotent(void) { check_idempotent_exhaustive(8); }
-static void oct10_exhaustive_decode_encode_idempotent(void) { check_idempotent_exhaustive(10); }
-static void oct12_exhaustive_decode_encode_idempotent(void) { check_idempotent_exhaustive(12); }
-static void oct9_oct11_exhaustive_decode_encode_idempotent(void)
+TL_TEST(oct8_exhaustive_decode_encode_idempotent) { check_idempotent_exhaustive(8); }
+TL_TEST(oct10_exhaustive_decode_encode_idempotent) { check_idempotent_exhaustive(10); }
+TL_TEST(oct12_exhaustive_decode_encode_idempotent) { check_idempotent_exhaustive(12); }
+TL_TEST(oct9_oct11_exhaustive_decode_encode_idempotent)
 {
     check_idempotent_exhaustive(9);
     check_idempotent_exhaustive(11);
@@ -342,7 +342,7 @@ static float *mixed_inputs(size_t count, unsigned long long seed)
     return n;
 }
 
-static void oct_encode_n_matches_scalar_bit_exact(void)
+TL_TEST(oct_encode_n_matches_scalar_bit_exact)
 {
     const size_t count = RANDOM_COUNT + 3; /* not a multiple of 4 */
     float *n = mixed_inputs(count, 0xBA7C4u);
@@ -362,7 +362,7 @@ static void oct_encode_n_matches_scalar_bit_exact(void)
     free(n);
 }
 
-static void oct_encode_precise_n_matches_scalar_bit_exact(void)
+TL_TEST(oct_encode_precise_n_matches_scalar_bit_exact)
 {
     const size_t count = RANDOM_COUNT + 1;
     float *n = mixed_inputs(count, 0xBA7C5u);
@@ -383,7 +383,7 @@ static void oct_encode_precise_n_matches_scalar_bit_exact(void)
     free(n);
 }
 
-static void oct_decode_n_matches_scalar_bit_exact(void)
+TL_TEST(oct_decode_n_matches_scalar_bit_exact)
 {
     const size_t count = RANDOM_COUNT + 2;
     uint32_t *codes = xmalloc(count * sizeof *codes);
@@ -410,7 +410,7 @@ static void oct_decode_n_matches_scalar_bit_exact(void)
 
 /* Every count 0..19 at every offset 0..3, so that bad inputs fall into every lane of the SIMD
  * blocks and into the scalar tail. */
-static void oct_batch_short_counts_and_lanes_match_scalar(void)
+TL_TEST(oct_batch_short_counts_and_lanes_match_scalar)
 {
     float *n = mixed_inputs(64, 0x1A4Eu);
     /* force one bad input per lane position too */
@@ -453,7 +453,7 @@ static void oct_batch_short_counts_and_lanes_match_scalar(void)
     free(n);
 }
 
-static void normal_encode_n_all_encodings_match_scalar(void)
+TL_TEST(normal_encode_n_all_encodings_match_scalar)
 {
     const size_t count = 100003;
     float *n = mixed_inputs(count, 0xA17u);
@@ -483,7 +483,7 @@ static void normal_encode_n_all_encodings_match_scalar(void)
  * 5. Other encodings: finite outputs on extreme inputs, error bounds derived from their grids
  * ------------------------------------------------------------------------------------------- */
 
-static void normal_alt_encodings_extreme_inputs_finite(void)
+TL_TEST(normal_alt_encodings_extreme_inputs_finite)
 {
     static const float in[][3] = {
         {0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, -1.0f}, {-0.0f, -0.0f, -1.0f}, {0.0f, 0.0f, 0.0f},
@@ -538,7 +538,7 @@ static float *random_directions_z(size_t count, unsigned long long seed, double 
 
 /* Bounds are half a grid cell's diagonal mapped through each projection's largest local
  * stretch over the tested region, with 10 % for float evaluation. */
-static void normal_alt12_error_bounds_vs_grid_spacing(void)
+TL_TEST(normal_alt12_error_bounds_vs_grid_spacing)
 {
     const uint32_t bits = 12;
     const double max = (double)((1u << bits) - 1u), slack = 1.10;
@@ -581,7 +581,7 @@ static void normal_alt12_error_bounds_vs_grid_spacing(void)
 
 /* Octahedral precise at 12 bits beats every other encoding's worst case at equal bits, each
  * measured on its own domain (stereographic on the upper hemisphere). */
-static void oct12_precise_beats_alt_encodings_max_error(void)
+TL_TEST(oct12_precise_beats_alt_encodings_max_error)
 {
     const uint32_t bits = 12;
     float *all = random_directions(RANDOM_COUNT, 0xC0FFEEu);
@@ -618,28 +618,3 @@ static void oct12_precise_beats_alt_encodings_max_error(void)
     free(all);
     free(upper);
 }
-
-static const tl_test_case cases[] = {
-    {"oct12_random_plain_error_bounds", oct12_random_plain_error_bounds},
-    {"oct12_random_precise_error_bounds", oct12_random_precise_error_bounds},
-    {"oct8_random_plain_max_error", oct8_random_plain_max_error},
-    {"oct16_random_plain_max_error", oct16_random_plain_max_error},
-    {"oct_plain_max_error_halves_per_bit", oct_plain_max_error_halves_per_bit},
-    {"oct_precise_picks_best_candidate_double_reference", oct_precise_picks_best_candidate_double_reference},
-    {"oct_plain_code_matches_double_projection", oct_plain_code_matches_double_projection},
-    {"oct_project_unproject_round_trip_unquantised", oct_project_unproject_round_trip_unquantised},
-    {"oct8_exhaustive_decode_encode_idempotent", oct8_exhaustive_decode_encode_idempotent},
-    {"oct10_exhaustive_decode_encode_idempotent", oct10_exhaustive_decode_encode_idempotent},
-    {"oct12_exhaustive_decode_encode_idempotent", oct12_exhaustive_decode_encode_idempotent},
-    {"oct9_oct11_exhaustive_decode_encode_idempotent", oct9_oct11_exhaustive_decode_encode_idempotent},
-    {"oct_encode_n_matches_scalar_bit_exact", oct_encode_n_matches_scalar_bit_exact},
-    {"oct_encode_precise_n_matches_scalar_bit_exact", oct_encode_precise_n_matches_scalar_bit_exact},
-    {"oct_decode_n_matches_scalar_bit_exact", oct_decode_n_matches_scalar_bit_exact},
-    {"oct_batch_short_counts_and_lanes_match_scalar", oct_batch_short_counts_and_lanes_match_scalar},
-    {"normal_encode_n_all_encodings_match_scalar", normal_encode_n_all_encodings_match_scalar},
-    {"normal_alt_encodings_extreme_inputs_finite", normal_alt_encodings_extreme_inputs_finite},
-    {"normal_alt12_error_bounds_vs_grid_spacing", normal_alt12_error_bounds_vs_grid_spacing},
-    {"oct12_precise_beats_alt_encodings_max_error", oct12_precise_beats_alt_encodings_max_error},
-};
-
-TL_TEST_MAIN(cases)

@@ -60,7 +60,7 @@ static double check_direction(const char *what, const float in[3], const float e
  * Poles
  * ------------------------------------------------------------------------------------------- */
 
-static void oct_pole_positive_z_round_trip(void)
+TL_TEST(oct_pole_positive_z_round_trip)
 {
     const float pz[3] = {0.0f, 0.0f, 1.0f}, pz_neg0[3] = {-0.0f, -0.0f, 1.0f};
     double e1 = check_direction("+Z", pz, pz), e2 = check_direction("+Z with -0 x, y", pz_neg0, pz);
@@ -74,7 +74,7 @@ static void oct_pole_positive_z_round_trip(void)
     }
 }
 
-static void oct_pole_negative_z_decodes_to_negative_z(void)
+TL_TEST(oct_pole_negative_z_decodes_to_negative_z)
 {
     const float mz[4][3] = {{0.0f, 0.0f, -1.0f}, {-0.0f, 0.0f, -1.0f}, {0.0f, -0.0f, -1.0f}, {-0.0f, -0.0f, -1.0f}};
     const float expect[3] = {0.0f, 0.0f, -1.0f};
@@ -110,7 +110,7 @@ static uint32_t naive_sign_encode12(const float n[3])
     return qu | (qv << 12);
 }
 
-static void oct12_negative_z_needs_sign_not_zero(void)
+TL_TEST(oct12_negative_z_needs_sign_not_zero)
 {
     const float mz[3] = {0.0f, 0.0f, -1.0f};
     float d[3], naive[3];
@@ -172,19 +172,19 @@ static void check_fold(float z_on_fold, uint32_t bits)
     TL_CHECK_EQ_U(near, total);
 }
 
-static void oct12_fold_edge_positive_zero(void)
+TL_TEST(oct12_fold_edge_positive_zero)
 {
     for (uint32_t bits = TL_OCT_MIN_BITS; bits <= TL_OCT_MAX_BITS; bits += 2) check_fold(0.0f, bits);
 }
 
-static void oct12_fold_edge_negative_zero(void)
+TL_TEST(oct12_fold_edge_negative_zero)
 {
     for (uint32_t bits = TL_OCT_MIN_BITS; bits <= TL_OCT_MAX_BITS; bits += 2) check_fold(-0.0f, bits);
 }
 
 /* One ULP (and a few other tiny steps) off the fold on either side: z = +-FLT_TRUE_MIN,
  * +-FLT_MIN, +-2^-24, and x nudged by one ULP, must land on the fold's code or its neighbour. */
-static void oct12_fold_one_ulp_off(void)
+TL_TEST(oct12_fold_one_ulp_off)
 {
     const float dz[] = {FLT_TRUE_MIN, -FLT_TRUE_MIN, FLT_MIN, -FLT_MIN, 0x1.0p-24f, -0x1.0p-24f};
     const uint32_t budgets[] = {8, 12, 16};
@@ -227,7 +227,7 @@ static void oct12_fold_one_ulp_off(void)
  * The square's outer boundary and corners: the mirrored edges must not swap codes
  * ------------------------------------------------------------------------------------------- */
 
-static void oct_square_edges_and_corners_round_trip(void)
+TL_TEST(oct_square_edges_and_corners_round_trip)
 {
     size_t total = 0, bad = 0;
     for (uint32_t bits = TL_OCT_MIN_BITS; bits <= TL_OCT_MAX_BITS; bits++) {
@@ -268,7 +268,7 @@ static void oct_square_edges_and_corners_round_trip(void)
 
 /* Random directions scaled far from unit length: the code must be the unit vector's or a
  * neighbour (scaling rounds the components); exact powers of two must give the same code. */
-static void oct_non_unit_lengths_same_code(void)
+TL_TEST(oct_non_unit_lengths_same_code)
 {
     /* Far from unit length the input is rescaled first (rounding), so only "within 1 code" holds;
      * powers of two from 2^-30 to 2^30 leave every float operation exact up to scale. */
@@ -313,7 +313,7 @@ static void oct_non_unit_lengths_same_code(void)
     TL_CHECK_EQ_U(pow2_equal, pow2_total);
 }
 
-static void oct_zero_vector_encodes_as_positive_z(void)
+TL_TEST(oct_zero_vector_encodes_as_positive_z)
 {
     const float zeros[4][3] = {{0.0f, 0.0f, 0.0f}, {-0.0f, -0.0f, -0.0f}, {0.0f, -0.0f, 0.0f}, {-0.0f, 0.0f, -0.0f}};
     const float pz[3] = {0.0f, 0.0f, 1.0f};
@@ -331,7 +331,7 @@ static void oct_zero_vector_encodes_as_positive_z(void)
 }
 
 /* Denormal components are scaled up exactly, so the direction survives. */
-static void oct_denormal_components_keep_direction(void)
+TL_TEST(oct_denormal_components_keep_direction)
 {
     static const struct { float in[3], dir[3]; int exact; } cases[] = {
         {{1e-40f, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}, 1},
@@ -361,7 +361,7 @@ static void oct_denormal_components_keep_direction(void)
 }
 
 /* Infinite components become +-1, the finite ones 0. */
-static void oct_inf_components_give_their_direction(void)
+TL_TEST(oct_inf_components_give_their_direction)
 {
     static const struct { float in[3], dir[3]; } cases[] = {
         {{INFINITY, 0.0f, 0.0f}, {1.0f, 0.0f, 0.0f}},
@@ -384,7 +384,7 @@ static void oct_inf_components_give_their_direction(void)
 }
 
 /* NaN anywhere gives +Z (header: tl_normal_sanitize). */
-static void oct_nan_components_give_positive_z(void)
+TL_TEST(oct_nan_components_give_positive_z)
 {
     const float qnan = NAN, nnan = -NAN;
     const float in[][3] = {
@@ -413,7 +413,7 @@ static void oct_nan_components_give_positive_z(void)
 }
 
 /* Budgets outside 8..16 are clamped, the same way by encode and decode. */
-static void oct_bits_out_of_range_clamped(void)
+TL_TEST(oct_bits_out_of_range_clamped)
 {
     const uint32_t low[] = {0, 1, 7}, high[] = {17, 32, 0xFFFFFFFFu};
     tl_rng rng = {0xB175u};
@@ -436,7 +436,7 @@ static void oct_bits_out_of_range_clamped(void)
 }
 
 /* Every extreme input at every budget: finite, unit output (the header's promise). */
-static void oct_extreme_inputs_never_nan_or_inf(void)
+TL_TEST(oct_extreme_inputs_never_nan_or_inf)
 {
     const float in[][3] = {
         {0.0f, 0.0f, 1.0f}, {0.0f, 0.0f, -1.0f}, {0.0f, 0.0f, 0.0f}, {-0.0f, -0.0f, -0.0f},
@@ -463,22 +463,3 @@ static void oct_extreme_inputs_never_nan_or_inf(void)
             }
     printf("  %zu (input, budget, encoder) combinations: all codes in range, decodes finite and unit\n", total);
 }
-
-static const tl_test_case cases[] = {
-    {"oct_pole_positive_z_round_trip", oct_pole_positive_z_round_trip},
-    {"oct_pole_negative_z_decodes_to_negative_z", oct_pole_negative_z_decodes_to_negative_z},
-    {"oct12_negative_z_needs_sign_not_zero", oct12_negative_z_needs_sign_not_zero},
-    {"oct12_fold_edge_positive_zero", oct12_fold_edge_positive_zero},
-    {"oct12_fold_edge_negative_zero", oct12_fold_edge_negative_zero},
-    {"oct12_fold_one_ulp_off", oct12_fold_one_ulp_off},
-    {"oct_square_edges_and_corners_round_trip", oct_square_edges_and_corners_round_trip},
-    {"oct_non_unit_lengths_same_code", oct_non_unit_lengths_same_code},
-    {"oct_zero_vector_encodes_as_positive_z", oct_zero_vector_encodes_as_positive_z},
-    {"oct_denormal_components_keep_direction", oct_denormal_components_keep_direction},
-    {"oct_inf_components_give_their_direction", oct_inf_components_give_their_direction},
-    {"oct_nan_components_give_positive_z", oct_nan_components_give_positive_z},
-    {"oct_bits_out_of_range_clamped", oct_bits_out_of_range_clamped},
-    {"oct_extreme_inputs_never_nan_or_inf", oct_extreme_inputs_never_nan_or_inf},
-};
-
-TL_TEST_MAIN(cases)

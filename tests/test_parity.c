@@ -432,14 +432,14 @@ static void parity_oct_random_encode(uint32_t bits, bool precise)
     free(a.v);
 }
 
-static void parity_oct8_encode(void) { parity_oct_random_encode(8, false); }
-static void parity_oct10_encode(void) { parity_oct_random_encode(10, false); }
-static void parity_oct12_encode(void) { parity_oct_random_encode(12, false); }
-static void parity_oct16_encode(void) { parity_oct_random_encode(16, false); }
-static void parity_oct8_encode_precise(void) { parity_oct_random_encode(8, true); }
-static void parity_oct10_encode_precise(void) { parity_oct_random_encode(10, true); }
-static void parity_oct12_encode_precise(void) { parity_oct_random_encode(12, true); }
-static void parity_oct16_encode_precise(void) { parity_oct_random_encode(16, true); }
+TL_TEST(parity_oct8_encode) { parity_oct_random_encode(8, false); }
+TL_TEST(parity_oct10_encode) { parity_oct_random_encode(10, false); }
+TL_TEST(parity_oct12_encode) { parity_oct_random_encode(12, false); }
+TL_TEST(parity_oct16_encode) { parity_oct_random_encode(16, false); }
+TL_TEST(parity_oct8_encode_precise) { parity_oct_random_encode(8, true); }
+TL_TEST(parity_oct10_encode_precise) { parity_oct_random_encode(10, true); }
+TL_TEST(parity_oct12_encode_precise) { parity_oct_random_encode(12, true); }
+TL_TEST(parity_oct16_encode_precise) { parity_oct_random_encode(16, true); }
 
 static void parity_oct_decode_codes(uint32_t bits, const uint32_t *codes, size_t count)
 {
@@ -489,13 +489,13 @@ static void parity_oct_decode(uint32_t bits)
     free(c.v);
 }
 
-static void parity_oct8_decode_all_codes(void) { parity_oct_decode(8); }
-static void parity_oct10_decode_all_codes(void) { parity_oct_decode(10); }
-static void parity_oct12_decode(void) { parity_oct_decode(12); }
-static void parity_oct16_decode(void) { parity_oct_decode(16); }
+TL_TEST(parity_oct8_decode_all_codes) { parity_oct_decode(8); }
+TL_TEST(parity_oct10_decode_all_codes) { parity_oct_decode(10); }
+TL_TEST(parity_oct12_decode) { parity_oct_decode(12); }
+TL_TEST(parity_oct16_decode) { parity_oct_decode(16); }
 
 /* Extreme inputs at every budget, both encoders, and tl_normal_sanitize itself. */
-static void parity_oct_extreme_cases(void)
+TL_TEST(parity_oct_extreme_cases)
 {
     fvec a = {0};
     extreme_normals(&a);
@@ -552,7 +552,7 @@ static void describe_xyzg(size_t i, const void *ctx)
     fprintf(stderr, " for (%a, %a, %a) gloss %a", (double)v[0], (double)v[1], (double)v[2], (double)v[3]);
 }
 
-static void parity_rt0_rgba8(void)
+TL_TEST(parity_rt0_rgba8)
 {
     parity_env env;
     if (!env_open(&env)) return;
@@ -596,7 +596,7 @@ static void parity_rt0_rgba8(void)
     env_close(&env);
 }
 
-static void parity_rt0_rgb10a2(void)
+TL_TEST(parity_rt0_rgb10a2)
 {
     parity_env env;
     if (!env_open(&env)) return;
@@ -688,8 +688,8 @@ static void parity_gloss(uint32_t bits)
     env_close(&env);
 }
 
-static void parity_gloss8(void) { parity_gloss(8); }
-static void parity_gloss10(void) { parity_gloss(10); }
+TL_TEST(parity_gloss8) { parity_gloss(8); }
+TL_TEST(parity_gloss10) { parity_gloss(10); }
 
 /* tl_gloss_to_specular_power is the one function that cannot be bit-identical: C calls glibc's
  * exp2f (about half an ULP, in effect correctly rounded), GLSL calls exp2, which GLSL 4.50
@@ -705,7 +705,7 @@ static void parity_gloss10(void) { parity_gloss(10); }
  * k / 11 that hit an integer exactly) must match exactly. */
 #define GLOSS_POWER_MAX_ULP 4u
 
-static void parity_gloss_specular_power(void)
+TL_TEST(parity_gloss_specular_power)
 {
     parity_env env;
     if (!env_open(&env)) return;
@@ -819,8 +819,8 @@ static void parity_luma_chroma(tl_color_space space)
     env_close(&env);
 }
 
-static void parity_luma_chroma_ycbcr(void) { parity_luma_chroma(TL_COLOR_SPACE_YCBCR); }
-static void parity_luma_chroma_ycocg(void) { parity_luma_chroma(TL_COLOR_SPACE_YCOCG); }
+TL_TEST(parity_luma_chroma_ycbcr) { parity_luma_chroma(TL_COLOR_SPACE_YCBCR); }
+TL_TEST(parity_luma_chroma_ycocg) { parity_luma_chroma(TL_COLOR_SPACE_YCOCG); }
 
 static void parity_albedo(tl_color_space space)
 {
@@ -854,8 +854,8 @@ static void parity_albedo(tl_color_space space)
     env_close(&env);
 }
 
-static void parity_albedo_ycbcr(void) { parity_albedo(TL_COLOR_SPACE_YCBCR); }
-static void parity_albedo_ycocg(void) { parity_albedo(TL_COLOR_SPACE_YCOCG); }
+TL_TEST(parity_albedo_ycbcr) { parity_albedo(TL_COLOR_SPACE_YCBCR); }
+TL_TEST(parity_albedo_ycocg) { parity_albedo(TL_COLOR_SPACE_YCOCG); }
 
 /* Same as the C's neighbour mirroring (albedo.c tl__mirror). */
 static int mirror(int64_t c, uint32_t n, uint32_t *out)
@@ -886,7 +886,7 @@ static void edge_args(uvec *u, const uint8_t *yc, uint32_t w, uint32_t h, uint32
     upush(u, count);
 }
 
-static void parity_albedo_edge_chroma(void)
+TL_TEST(parity_albedo_edge_chroma)
 {
     parity_env env;
     if (!env_open(&env)) return;
@@ -1054,37 +1054,6 @@ static void parity_depth(tl_depth_format format)
     env_close(&env);
 }
 
-static void parity_depth_d24(void) { parity_depth(TL_DEPTH_FORMAT_D24); }
-static void parity_depth_d32f(void) { parity_depth(TL_DEPTH_FORMAT_D32F); }
-static void parity_depth_reversed(void) { parity_depth(TL_DEPTH_FORMAT_D32F_REVERSED); }
-
-static const tl_test_case cases[] = {
-    {"parity_oct8_encode", parity_oct8_encode},
-    {"parity_oct10_encode", parity_oct10_encode},
-    {"parity_oct12_encode", parity_oct12_encode},
-    {"parity_oct16_encode", parity_oct16_encode},
-    {"parity_oct8_encode_precise", parity_oct8_encode_precise},
-    {"parity_oct10_encode_precise", parity_oct10_encode_precise},
-    {"parity_oct12_encode_precise", parity_oct12_encode_precise},
-    {"parity_oct16_encode_precise", parity_oct16_encode_precise},
-    {"parity_oct8_decode_all_codes", parity_oct8_decode_all_codes},
-    {"parity_oct10_decode_all_codes", parity_oct10_decode_all_codes},
-    {"parity_oct12_decode", parity_oct12_decode},
-    {"parity_oct16_decode", parity_oct16_decode},
-    {"parity_oct_extreme_cases", parity_oct_extreme_cases},
-    {"parity_rt0_rgba8", parity_rt0_rgba8},
-    {"parity_rt0_rgb10a2", parity_rt0_rgb10a2},
-    {"parity_gloss8", parity_gloss8},
-    {"parity_gloss10", parity_gloss10},
-    {"parity_gloss_specular_power", parity_gloss_specular_power},
-    {"parity_luma_chroma_ycbcr", parity_luma_chroma_ycbcr},
-    {"parity_luma_chroma_ycocg", parity_luma_chroma_ycocg},
-    {"parity_albedo_ycbcr", parity_albedo_ycbcr},
-    {"parity_albedo_ycocg", parity_albedo_ycocg},
-    {"parity_albedo_edge_chroma", parity_albedo_edge_chroma},
-    {"parity_depth_d24", parity_depth_d24},
-    {"parity_depth_d32f", parity_depth_d32f},
-    {"parity_depth_reversed", parity_depth_reversed},
-};
-
-TL_TEST_MAIN(cases)
+TL_TEST(parity_depth_d24) { parity_depth(TL_DEPTH_FORMAT_D24); }
+TL_TEST(parity_depth_d32f) { parity_depth(TL_DEPTH_FORMAT_D32F); }
+TL_TEST(parity_depth_reversed) { parity_depth(TL_DEPTH_FORMAT_D32F_REVERSED); }

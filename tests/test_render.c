@@ -155,7 +155,7 @@ static void set_point(test_scene *t, float x, float y, float z, float radius)
     t->s.light_count = 1;
 }
 
-static void light_volume_camera_inside(void)
+TL_TEST(light_volume_camera_inside)
 {
     test_scene t;
     build_room(&t);
@@ -164,7 +164,7 @@ static void light_volume_camera_inside(void)
     compare_volumes(&t, NULL, TL_DEPTH_FORMAT_D32F_REVERSED, "camera inside (reversed D32F)");
 }
 
-static void light_volume_crossing_near_plane(void)
+TL_TEST(light_volume_crossing_near_plane)
 {
     test_scene t;
     build_room(&t);
@@ -180,7 +180,7 @@ static void light_volume_crossing_near_plane(void)
     compare_volumes(&t, &cam, TL_DEPTH_FORMAT_D32F_REVERSED, "near plane (reversed D32F)");
 }
 
-static void light_volume_crossing_far_plane(void)
+TL_TEST(light_volume_crossing_far_plane)
 {
     test_scene t;
     build_room(&t);
@@ -192,7 +192,7 @@ static void light_volume_crossing_far_plane(void)
     compare_volumes(&t, &cam, TL_DEPTH_FORMAT_D32F_REVERSED, "far plane (reversed D32F)");
 }
 
-static void light_volume_spot_camera_inside(void)
+TL_TEST(light_volume_spot_camera_inside)
 {
     test_scene t;
     build_room(&t);
@@ -201,7 +201,7 @@ static void light_volume_spot_camera_inside(void)
     compare_volumes(&t, NULL, TL_DEPTH_FORMAT_D24, "spot, camera inside (D24)");
 }
 
-static void light_volume_many_types(void)
+TL_TEST(light_volume_mixed_types_draw_calls)
 {
     test_scene t;
     build_room(&t);
@@ -229,7 +229,7 @@ static void light_volume_many_types(void)
 
 static double luma8(const uint8_t *p) { return (0.299 * p[0] + 0.587 * p[1] + 0.114 * p[2]) / 255.0; }
 
-static void fxaa_reduces_edge_gradient(void)
+TL_TEST(fxaa_reduces_edge_gradient)
 {
     const uint32_t w = 320, h = 180;
     TL_CHECK(ensure_context());
@@ -284,7 +284,7 @@ static void fxaa_reduces_edge_gradient(void)
 }
 
 /* A 1-pixel text-like pattern (dark strokes on a light page) and a flat image through FXAA. */
-static void fxaa_flat_and_text_pattern_bounded(void)
+TL_TEST(fxaa_flat_and_text_pattern_bounded)
 {
     const uint32_t w = 128, h = 64;
     TL_CHECK(ensure_context());
@@ -367,7 +367,7 @@ static int all_finite(tl_renderer *r, tl_target_id id, float *buf, size_t n, siz
     return 1;
 }
 
-static void default_scene_image_sanity(void)
+TL_TEST(default_scene_image_sanity)
 {
     const uint32_t w = 640, h = 360;
     TL_CHECK(ensure_context());
@@ -476,7 +476,7 @@ static void default_scene_image_sanity(void)
 
 /* ---- bad input --------------------------------------------------------------------------- */
 
-static void renderer_bad_input(void)
+TL_TEST(renderer_bad_input)
 {
     TL_CHECK(ensure_context());
     if (!g_ctx) return;
@@ -499,23 +499,4 @@ static void renderer_bad_input(void)
     TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_ERROR_INVALID_ARGUMENT);
     TL_CHECK(strlen(tl_renderer_last_error(r)) > 0);
     tl_renderer_destroy(r);
-}
-
-static const tl_test_case cases[] = {
-    {"light_volume_camera_inside", light_volume_camera_inside},
-    {"light_volume_crossing_near_plane", light_volume_crossing_near_plane},
-    {"light_volume_crossing_far_plane", light_volume_crossing_far_plane},
-    {"light_volume_spot_camera_inside", light_volume_spot_camera_inside},
-    {"light_volume_mixed_types_draw_calls", light_volume_many_types},
-    {"fxaa_reduces_edge_gradient", fxaa_reduces_edge_gradient},
-    {"fxaa_flat_and_text_pattern_bounded", fxaa_flat_and_text_pattern_bounded},
-    {"renderer_bad_input", renderer_bad_input},
-    {"default_scene_image_sanity", default_scene_image_sanity},
-};
-
-int main(int argc, char **argv)
-{
-    int rc = tl_test_main(argc, argv, cases, sizeof cases / sizeof cases[0]);
-    if (g_ctx) tl_context_destroy(g_ctx);
-    return rc;
 }

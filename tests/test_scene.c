@@ -87,7 +87,7 @@ static void c_free(void *ptr, void *user)
 
 /* ---- cases --------------------------------------------------------------------------------- */
 
-static void scene_default_counts(void)
+TL_TEST(scene_default_counts)
 {
     tl_scene *s = make(NULL);
     if (!s) return;
@@ -120,7 +120,7 @@ static void scene_default_counts(void)
     tl_scene_destroy(u);
 }
 
-static void scene_default_detail_levels(void)
+TL_TEST(scene_default_detail_levels)
 {
     size_t prev_tris = 0, objects = 0;
     for (uint32_t detail = 1; detail <= 8; detail++) {
@@ -147,7 +147,7 @@ static void scene_default_detail_levels(void)
     tl_scene_destroy(b);
 }
 
-static void scene_default_deterministic(void)
+TL_TEST(scene_default_deterministic)
 {
     tl_scene *a = make(&(tl_default_scene_desc){.seed = 7, .point_lights = 200});
     tl_scene *b = make(&(tl_default_scene_desc){.seed = 7, .point_lights = 200});
@@ -261,7 +261,7 @@ static void check_geometry(const tl_scene *s)
     TL_CHECK_EQ_U(loose, 0);
 }
 
-static void scene_default_geometry_valid(void)
+TL_TEST(scene_default_geometry_valid)
 {
     static const uint32_t details[] = {1, 4, 8};
     for (size_t i = 0; i < sizeof details / sizeof details[0]; i++) {
@@ -279,7 +279,7 @@ static void scene_default_geometry_valid(void)
 }
 
 /* Closed convex props (single boxes and spheres): every face looks away from the centre. */
-static void scene_default_convex_props_outward(void)
+TL_TEST(scene_default_convex_props_outward)
 {
     tl_scene *s = make(NULL);
     if (!s) return;
@@ -326,7 +326,7 @@ static void scene_default_convex_props_outward(void)
 
 /* Everything stands in the hall, or in a recess (niche, apse) that opens onto it: an object
  * wholly behind the walls must lie inside the bounds of one that reaches the hall. */
-static void scene_default_objects_reachable(void)
+TL_TEST(scene_default_objects_reachable)
 {
     tl_scene *s = make(NULL);
     if (!s) return;
@@ -391,7 +391,7 @@ static void check_lights(const tl_scene *s)
     TL_CHECK_EQ_U(in_column, 0);
 }
 
-static void scene_default_lights_inside(void)
+TL_TEST(scene_default_lights_inside)
 {
     static const uint32_t counts[] = {8, 64, 1024, 4096};
     for (size_t i = 0; i < sizeof counts / sizeof counts[0]; i++) {
@@ -421,7 +421,7 @@ static void scene_default_lights_inside(void)
     }
 }
 
-static void scene_light_count_limit(void)
+TL_TEST(scene_light_count_limit)
 {
     counting c = {.fail_at = SIZE_MAX};
     tl_allocator a = {c_alloc, c_free, &c};
@@ -461,7 +461,7 @@ static void scene_light_count_limit(void)
     }
 }
 
-static void scene_allocator_honoured(void)
+TL_TEST(scene_allocator_honoured)
 {
     counting c = {.fail_at = SIZE_MAX};
     tl_allocator a = {c_alloc, c_free, &c};
@@ -499,7 +499,7 @@ static void scene_allocator_honoured(void)
     TL_CHECK(t == NULL);
 }
 
-static void scene_bad_arguments(void)
+TL_TEST(scene_bad_arguments)
 {
     TL_CHECK_EQ_U(tl_scene_create_default(NULL, NULL), TL_ERROR_INVALID_ARGUMENT);
     TL_CHECK_EQ_U(tl_scene_create_default(&(tl_default_scene_desc){0}, NULL), TL_ERROR_INVALID_ARGUMENT);
@@ -511,7 +511,7 @@ static void scene_bad_arguments(void)
     TL_CHECK(f.point_lights == 0 && f.triangle_count == 0 && f.has_textures == 0 && f.object_count == 0);
 }
 
-static void scene_features(void)
+TL_TEST(scene_features)
 {
     tl_scene *s = make(NULL);
     if (!s) return;
@@ -558,7 +558,7 @@ static void scene_features(void)
     TL_CHECK_EQ_U(f.triangle_count, 1);
 }
 
-static void scene_materials_textures_valid(void)
+TL_TEST(scene_materials_textures_valid)
 {
     tl_scene *s = make(NULL);
     if (!s) return;
@@ -605,7 +605,7 @@ static void scene_materials_textures_valid(void)
     tl_scene_destroy(s);
 }
 
-static void scene_camera_inside(void)
+TL_TEST(scene_camera_inside)
 {
     tl_scene *s = make(NULL);
     if (!s) return;
@@ -638,21 +638,3 @@ static void scene_camera_inside(void)
     TL_CHECK_EQ_U(inside, 0);
     tl_scene_destroy(s);
 }
-
-static const tl_test_case cases[] = {
-    {"scene_default_counts", scene_default_counts},
-    {"scene_default_detail_levels", scene_default_detail_levels},
-    {"scene_default_deterministic", scene_default_deterministic},
-    {"scene_default_geometry_valid", scene_default_geometry_valid},
-    {"scene_default_convex_props_outward", scene_default_convex_props_outward},
-    {"scene_default_objects_reachable", scene_default_objects_reachable},
-    {"scene_default_lights_inside", scene_default_lights_inside},
-    {"scene_light_count_limit", scene_light_count_limit},
-    {"scene_allocator_honoured", scene_allocator_honoured},
-    {"scene_bad_arguments", scene_bad_arguments},
-    {"scene_features", scene_features},
-    {"scene_materials_textures_valid", scene_materials_textures_valid},
-    {"scene_camera_inside", scene_camera_inside},
-};
-
-TL_TEST_MAIN(cases)

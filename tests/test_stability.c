@@ -487,7 +487,7 @@ static void check_all_targets_finite(run *u, const char *label)
 /* Gloss 0 (power 2) and gloss 1 (power 4096) in a rendered frame: RT0 stores both ends exactly,
  * the light buffer matches the model at the G-buffer's samples, the gloss-1 peak is the expected
  * factor above the gloss-0 peak, and no target holds a non-finite value. */
-static void stability_gloss_0_and_1(void)
+TL_TEST(stability_gloss_0_and_1)
 {
     double peak[2] = {0, 0};
     for (int gi = 0; gi < 2; gi++) {
@@ -523,7 +523,7 @@ static void stability_gloss_0_and_1(void)
 /* N.L -> 0: point lights in the wall's plane, a hair in front of it and a hair behind it, and a
  * directional light along the wall. The diffuse term must vanish to within what the encoded
  * normal allows: N.L <= sin(max oct12-precise error 0.0393 deg + depth-step angle). */
-static void stability_grazing_light_n_dot_l(void)
+TL_TEST(stability_grazing_light_n_dot_l)
 {
     const float offsets[3] = {0.0f, 1e-3f, -1e-3f}; /* in the plane, in front, behind */
     for (int o = 0; o < 3; o++) {
@@ -574,7 +574,7 @@ static void stability_grazing_light_n_dot_l(void)
 /* N.V -> 0: a floor seen from 1 m above it out to 110 m, where the view ray of the row next to
  * the horizon meets the floor at 0.5 degrees; lit by a point light far down the floor and a directional
  * light at 0.06 degrees above the horizon (N.L -> 0 as well). */
-static void stability_grazing_view_n_dot_v(void)
+TL_TEST(stability_grazing_view_n_dot_v)
 {
     mini_scene m;
     mini_init(&m, 1.0471976f, 0.1f, 1000.0f);
@@ -609,7 +609,7 @@ static void stability_grazing_view_n_dot_v(void)
  * so a pixel centre lies on the view axis) is below one depth step, far under the falloff's
  * clamp distance 0.01 radius. The light buffer must hold at most colour / (0.01 radius)^2
  * (and at most colour * 4096, the per-light clamp) and match the model everywhere. */
-static void stability_light_at_shaded_point(void)
+TL_TEST(stability_light_at_shaded_point)
 {
     const float radii[2] = {10.0f, 0.5f}; /* peak 1 / 0.1^2 = 100, and 1 / 0.005^2 = 40000 -> clamp 4096 */
     const tl_depth_format formats[2] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
@@ -652,7 +652,7 @@ static void stability_light_at_shaded_point(void)
 /* Radius 0 and radii so small that the falloff underflows: no light, no NaN (attenuation would
  * be 0 / 0 at radius 0). The renderer skips radius <= 0; the frame must equal the frame without
  * those lights, bit for bit. */
-static void stability_light_radius_zero(void)
+TL_TEST(stability_light_radius_zero)
 {
     const float tiny[] = {0.0f, FLT_TRUE_MIN, 1e-30f};
     mini_scene m;
@@ -688,7 +688,7 @@ static void stability_light_radius_zero(void)
  * 1e4, so the attenuation is 1e-8 everywhere and a colour of 2e8 brings it back to ~2), and
  * 1e30 and FLT_MAX, where (0.01 radius)^2 overflows float and the model gives exactly 0. The
  * volume path must match the model and the full-screen path. */
-static void stability_light_radius_huge(void)
+TL_TEST(stability_light_radius_huge)
 {
     const float radii[3] = {1e6f, 1e30f, FLT_MAX};
     for (int ri = 0; ri < 3; ri++) {
@@ -760,7 +760,7 @@ static void wall_sample(const tl_projection *pr, uint32_t x, uint32_t y, uint32_
  * is monotonic), no more than the exact sum, and the fraction of the exact (double) HDR lost is
  * reported: once a term falls below an FP16 step of the running sum it is lost, while forward
  * shading sums in float and rounds to FP16 once (asserted within 2^-10 + 10^4 x 2^-23). */
-static void stability_10k_lights_fp16_accumulation(void)
+TL_TEST(stability_10k_lights_fp16_accumulation)
 {
     enum { N = 10000, W = 16 };
     const double gloss = 0.3, albedo = 0.5, specular = 0.5;
@@ -893,7 +893,7 @@ static void stability_10k_lights_fp16_accumulation(void)
  * frame) must come out white, not black or NaN. llvmpipe stores FP16 rounding toward zero, which
  * saturates at 65504 where round-to-nearest hardware gives Inf (colour x weight > 65520, or a
  * blended sum beyond it): the cases that overflow only there are marked. */
-static void stability_intensity_fp16_max(void)
+TL_TEST(stability_intensity_fp16_max)
 {
     static const struct { float color, dist, radius; int count; const char *what; } cases[] = {
         {65504.0f, 1.0f, 4.0f, 1, "one light 65504 at 1 m"},
@@ -951,7 +951,7 @@ static void stability_intensity_fp16_max(void)
 /* ---- scenes ------------------------------------------------------------------------------- */
 
 /* No lights: the light buffer is zero and HDR is albedo * ambient + emissive, rounded to FP16. */
-static void stability_no_lights(void)
+TL_TEST(stability_no_lights)
 {
     mini_scene m;
     mini_init(&m, 1.0471976f, 0.1f, 100.0f);
@@ -987,7 +987,7 @@ static void stability_no_lights(void)
 
 /* No geometry: a scene with lights but no vertices, indices, objects or materials, and one whose
  * only object has no triangles. Renders to black with every target finite. */
-static void stability_empty_scene(void)
+TL_TEST(stability_empty_scene)
 {
     for (size_t mi = 0; mi < MODE_COUNT; mi++)
         for (int variant = 0; variant < 2; variant++) {
@@ -1035,7 +1035,7 @@ static void stability_empty_scene(void)
  * HDR stores); in thin-deferred to one 8-bit chroma step of RT1 as well (the 1x1 image has no
  * neighbour to take the missing chroma from and gets neutral chroma: about 2 % in linear colour).
  * FXAA on one pixel changes nothing. */
-static void stability_1x1_target(void)
+TL_TEST(stability_1x1_target)
 {
     for (size_t mi = 0; mi < MODE_COUNT; mi++) {
         mini_scene m;
@@ -1084,7 +1084,7 @@ static void stability_1x1_target(void)
  * either axis must be refused with TL_ERROR_LIMIT and a message. */
 typedef void (*get_integerv_fn)(unsigned int pname, int *data);
 
-static void stability_largest_target(void)
+TL_TEST(stability_largest_target)
 {
     TL_CHECK(ensure_context());
     if (!g_ctx) return;
@@ -1137,7 +1137,7 @@ static void stability_largest_target(void)
  * equal vertices) in front of a wall produce no fragment: every target equals the wall-only frame
  * bit for bit. A quad whose vertex normals are zero stores the shading normal's fallback, +Z
  * facing the viewer (shaders/material.glsl), to within the oct12 error. */
-static void stability_degenerate_triangles(void)
+TL_TEST(stability_degenerate_triangles)
 {
     mini_scene m;
     mini_init(&m, 1.0471976f, 0.1f, 100.0f);
@@ -1211,7 +1211,7 @@ static void stability_degenerate_triangles(void)
 /* NaN and Inf in vertex positions and normals. tl_renderer_set_scene may refuse such a scene
  * (TL_ERROR_INVALID_ARGUMENT with a message naming the vertex); if it accepts it, the frame must
  * keep every target finite and still show the valid wall. */
-static void stability_nan_inf_vertices(void)
+TL_TEST(stability_nan_inf_vertices)
 {
     static const struct { int field; float value; const char *what; } cases[] = {
         {0, NAN, "NaN position"}, {0, INFINITY, "+Inf position"}, {0, -INFINITY, "-Inf position"},
@@ -1259,7 +1259,7 @@ static void stability_nan_inf_vertices(void)
 /* Missing textures: a texture without pixels, with a zero or oversized extent, and material
  * texture indices out of range all fall back to the flat material colour: every target equals the
  * frame rendered with TL_NO_TEXTURE, bit for bit. */
-static void stability_missing_textures(void)
+TL_TEST(stability_missing_textures)
 {
     uint8_t *wide = calloc((size_t)20000 * 4, 1);
     mini_scene m;
@@ -1437,7 +1437,7 @@ static depth_stats check_depth(const run *u, const plane_quad *q, size_t count, 
 
 /* Walls exactly at the near plane and just inside the far plane (1 - 2^-12 of it), and at 10^6
  * near distances with an infinite far plane, in D24 and reversed-Z D32F. */
-static void stability_positions_at_near_and_far_plane(void)
+TL_TEST(stability_positions_at_near_and_far_plane)
 {
     static const struct { float near_z, far_z, dist; const char *what; } cases[] = {
         {0.1f, 100.0f, 0.1f, "at the near plane (0.1)"},
@@ -1480,7 +1480,7 @@ static void stability_positions_at_near_and_far_plane(void)
  * horizon and leave the axis by up to 85 degrees at the image edges; positions reconstructed
  * from the stored depth must match the exact intersections within the depth steps that the
  * sloped plane equation costs (4 at these slopes, measured 2), and lighting must match the model. */
-static void stability_grazing_view_rays_positions(void)
+TL_TEST(stability_grazing_view_rays_positions)
 {
     const tl_depth_format formats[2] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
     for (int f = 0; f < 2; f++) {
@@ -1508,31 +1508,4 @@ static void stability_grazing_view_rays_positions(void)
         TL_CHECK_EQ_U(c.bad, 0);
         run_free(&u);
     }
-}
-
-static const tl_test_case cases[] = {
-    {"stability_gloss_0_and_1", stability_gloss_0_and_1},
-    {"stability_grazing_light_n_dot_l", stability_grazing_light_n_dot_l},
-    {"stability_grazing_view_n_dot_v", stability_grazing_view_n_dot_v},
-    {"stability_light_at_shaded_point", stability_light_at_shaded_point},
-    {"stability_light_radius_zero", stability_light_radius_zero},
-    {"stability_light_radius_huge", stability_light_radius_huge},
-    {"stability_10k_lights_fp16_accumulation", stability_10k_lights_fp16_accumulation},
-    {"stability_intensity_fp16_max", stability_intensity_fp16_max},
-    {"stability_no_lights", stability_no_lights},
-    {"stability_empty_scene", stability_empty_scene},
-    {"stability_1x1_target", stability_1x1_target},
-    {"stability_largest_target", stability_largest_target},
-    {"stability_degenerate_triangles", stability_degenerate_triangles},
-    {"stability_nan_inf_vertices", stability_nan_inf_vertices},
-    {"stability_missing_textures", stability_missing_textures},
-    {"stability_positions_at_near_and_far_plane", stability_positions_at_near_and_far_plane},
-    {"stability_grazing_view_rays_positions", stability_grazing_view_rays_positions},
-};
-
-int main(int argc, char **argv)
-{
-    int rc = tl_test_main(argc, argv, cases, sizeof cases / sizeof cases[0]);
-    if (g_ctx) tl_context_destroy(g_ctx);
-    return rc;
 }

@@ -1,5 +1,6 @@
-/* Minimal test harness: one executable holds named cases; ctest runs each case by name
- * (tests/CMakeLists.txt, tl_add_test). A case fails when any TL_CHECK in it fails. */
+/* Minimal test harness: one executable holds named cases, each defined once with TL_TEST(name);
+ * `exe --list` prints them and ctest runs each by name (tests/CMakeLists.txt, tl_add_test). A
+ * case fails when any TL_CHECK in it fails. */
 #ifndef TL_TEST_H
 #define TL_TEST_H
 
@@ -11,7 +12,23 @@
 typedef struct tl_test_case {
     const char *name;
     void (*fn)(void);
+    const char *file; /* where it is defined: cases run and list in source order */
+    int line;
 } tl_test_case;
+
+void tl_test_register(const tl_test_case *c);
+
+/* Defines the test case `name` (its ctest name too) and registers it before main runs:
+ *     TL_TEST(oct12_fold_edge_negative_zero) { TL_CHECK(...); }
+ * A case registered conditionally sits inside an #if. */
+#define TL_TEST(name)                                                                            \
+    static void name(void);                                                                      \
+    __attribute__((constructor)) static void tl__register_##name(void)                           \
+    {                                                                                            \
+        static const tl_test_case tl__case = {#name, name, __FILE__, __LINE__};                  \
+        tl_test_register(&tl__case);                                                             \
+    }                                                                                            \
+    static void name(void)
 
 extern int tl_test_failures;
 
@@ -66,13 +83,5 @@ static inline void tl_rng_direction(tl_rng *r, float v[3])
     v[1] = (float)(s * sin(phi));
     v[2] = (float)z;
 }
-
-int tl_test_main(int argc, char **argv, const tl_test_case *cases, size_t count);
-
-#define TL_TEST_MAIN(cases)                                                                      \
-    int main(int argc, char **argv)                                                              \
-    {                                                                                            \
-        return tl_test_main(argc, argv, cases, sizeof(cases) / sizeof(cases[0]));                \
-    }
 
 #endif
