@@ -9,7 +9,7 @@
 if(CMAKE_SCRIPT_MODE_FILE)
   cmake_minimum_required(VERSION 3.25)
 
-  include(${CMAKE_CURRENT_LIST_DIR}/cli_checks.cmake)
+  include(${CMAKE_CURRENT_LIST_DIR}/../common/cli_checks.cmake)
 
   # Fails when WORK holds anything but the names in ARGN.
   function(expect_only what)
@@ -149,7 +149,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
         message(FATAL_ERROR "${name}: width ${value}")
       endif()
 
-      # the error bounds against fat, as tests/test_modes.c: thin-lpp loses the encoding and FP16
+      # the error bounds against fat, as tests/gl/test_modes.c: thin-lpp loses the encoding and FP16
       # light sums, forward nothing but summation order, thin-deferred also chroma and specular colour
       set(bound_thin-lpp 50)
       set(bound_thin-deferred 45)
@@ -316,7 +316,7 @@ function(tl_add_bench_test name check labels)
     COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:thinlight-bench> -DCHECK=${check}
             -DWORK=${CMAKE_CURRENT_BINARY_DIR}/${name} -P ${CMAKE_CURRENT_FUNCTION_LIST_FILE})
   set_tests_properties(${name} PROPERTIES TIMEOUT 300 LABELS "${labels}" ENVIRONMENT
-    "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_FUNCTION_LIST_DIR}/lsan.supp:print_suppressions=0")
+    "${TL_GL_TEST_ENVIRONMENT}")
 endfunction()
 
 tl_add_bench_test(bench_tiny_sweep_json_errors_bytes tiny_sweep "tools;gl")

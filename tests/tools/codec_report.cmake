@@ -7,7 +7,7 @@
 if(CMAKE_SCRIPT_MODE_FILE)
   cmake_minimum_required(VERSION 3.25)
 
-  include(${CMAKE_CURRENT_LIST_DIR}/cli_checks.cmake)
+  include(${CMAKE_CURRENT_LIST_DIR}/../common/cli_checks.cmake)
 
   file(REMOVE_RECURSE "${WORK}")
   file(MAKE_DIRECTORY "${WORK}")

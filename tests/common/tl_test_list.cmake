@@ -1,10 +1,6 @@
 # Run after each build of a tl_add_test executable (cmake -P, with -DEXE=<executable>
 # -DOUT=<file>): writes the executable's case names, one a line, from `EXE --list` into OUT, which
-# the executable's ctest include file reads (tests/CMakeLists.txt). Included in configure mode
-# (the *.cmake parts are globbed), it does nothing.
-if(NOT CMAKE_SCRIPT_MODE_FILE)
-  return()
-endif()
+# the executable's ctest include file reads (tl_add_test in tests/CMakeLists.txt).
 # Listing is not the test: no leak report of the GL stack loaded with the executable.
 set(ENV{ASAN_OPTIONS} "detect_leaks=0")
 execute_process(COMMAND ${EXE} --list RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

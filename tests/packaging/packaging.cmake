@@ -1,4 +1,4 @@
-# Packaging, ABI and documentation tests (ctest -L packaging, ctest -L docs):
+# Packaging, ABI and documentation tests (ctest -L packaging; the documentation ones also -L docs):
 #
 #   packaging_install                       cmake --install into a scratch prefix (fixture
 #                                           thinlight_installed) and checks the layout, SONAMEs,
@@ -6,7 +6,7 @@
 #   packaging_exports_only_public_api       libthinlight*.so export tl_* API names and nothing else
 #   packaging_every_declared_function_exported   every TL_API function of the installed headers
 #                                           is exported by the library that should hold it
-#   packaging_consumer_cmake_shared         tests/consumer via find_package, shared libraries: the
+#   packaging_consumer_cmake_shared         tests/packaging/consumer via find_package, shared libraries: the
 #                                           codec check, one headless frame, the getting-started PNG
 #   packaging_consumer_cmake_static         the same with thinlight::thinlight_static / codec_static
 #   packaging_consumer_pkgconfig_shared     the same programs built with a plain compiler command
@@ -113,19 +113,19 @@ if(CMAKE_SCRIPT_MODE_FILE)
     set(${var} "${o}" PARENT_SCOPE)
   endfunction()
 
-  # configure_consumer(<build dir> <-D...>...): configures and builds tests/consumer.
+  # configure_consumer(<build dir> <-D...>...): configures and builds tests/packaging/consumer.
   function(configure_consumer dir)
     string(JOIN " " cflags ${warnings} ${sanitize})
     set(cxx_args)
     if(CXX)
       set(cxx_args "-DCMAKE_CXX_COMPILER=${CXX}" "-DCMAKE_CXX_FLAGS=${SANITIZE_FLAGS}")
     endif()
-    run("configure tests/consumer" ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/consumer" -B "${dir}"
+    run("configure tests/packaging/consumer" ${CMAKE_COMMAND} -S "${SOURCE_DIR}/tests/packaging/consumer" -B "${dir}"
       -G "${GENERATOR}" "-DCMAKE_C_COMPILER=${CC}" ${cxx_args}
       "-DCMAKE_BUILD_TYPE=${CONFIG}" "-DCMAKE_C_FLAGS=${cflags}"
       "-DCMAKE_PREFIX_PATH=${PREFIX}" "-DCONSUMER_EXPECTED_VERSION=${VERSION}"
       -DCMAKE_FIND_PACKAGE_NO_PACKAGE_REGISTRY=ON ${ARGN})
-    run("build tests/consumer" ${CMAKE_COMMAND} --build "${dir}")
+    run("build tests/packaging/consumer" ${CMAKE_COMMAND} --build "${dir}")
   endfunction()
 
   # cc(<output> <sources and flags>...): a plain compiler command line.
@@ -302,7 +302,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
       list(TRANSFORM codec_libs REPLACE "^-lthinlight-codec$" "-l:libthinlight-codec.a")
     endif()
     cc("${WORK}/codec_only" ${codec_cflags} "-DEXPECTED_VERSION=\"${VERSION}\""
-      "${SOURCE_DIR}/tests/consumer/codec_only.c" ${codec_libs})
+      "${SOURCE_DIR}/tests/packaging/consumer/codec_only.c" ${codec_libs})
     if(WITH_RENDERER AND WITH_OSMESA)
       pkg(cflags --cflags thinlight)
       pkg(libs ${static_args} --libs thinlight)
@@ -312,7 +312,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
       if(static_args)
         list(TRANSFORM libs REPLACE "^-lthinlight$" "-l:libthinlight.a")
       endif()
-      cc("${WORK}/render_frame" ${cflags} "${SOURCE_DIR}/tests/consumer/render_frame.c" ${libs})
+      cc("${WORK}/render_frame" ${cflags} "${SOURCE_DIR}/tests/packaging/consumer/render_frame.c" ${libs})
       if(WITH_IO)
         cc("${WORK}/getting_started" ${cflags} "${SOURCE_DIR}/docs/getting_started.c" ${libs})
       endif()
@@ -341,7 +341,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
       pkg(libs --libs thinlight-codec)
       separate_arguments(cflags UNIX_COMMAND "${cflags}")
       separate_arguments(libs UNIX_COMMAND "${libs}")
-      cc("${WORK}/codec_only_pc" ${cflags} "${SOURCE_DIR}/tests/consumer/codec_only.c" ${libs})
+      cc("${WORK}/codec_only_pc" ${cflags} "${SOURCE_DIR}/tests/packaging/consumer/codec_only.c" ${libs})
       run_program("${WORK}/codec_only_pc")
       expect_no_graphics("${WORK}/codec_only_pc")
     endif()
@@ -470,7 +470,7 @@ function(tl_add_packaging_test name check)
       -DLIBDIR=${CMAKE_INSTALL_LIBDIR} -DINCLUDEDIR=${CMAKE_INSTALL_INCLUDEDIR}
       -DCC=${CMAKE_C_COMPILER} -DCXX=${TL_PACKAGING_CXX} -DGENERATOR=${CMAKE_GENERATOR}
       -DPKG_CONFIG=${TL_PACKAGING_PKG_CONFIG} "-DSANITIZE_FLAGS=${_tl_sanitize_flags}"
-      -DLSAN_SUPP=${CMAKE_CURRENT_SOURCE_DIR}/lsan.supp
+      -DLSAN_SUPP=${PROJECT_SOURCE_DIR}/tests/common/lsan.supp
       -DWITH_RENDERER=${THINLIGHT_WITH_RENDERER} -DWITH_IO=${THINLIGHT_WITH_IO}
       -DWITH_OSMESA=${THINLIGHT_WITH_OSMESA} -DWITH_GLFW=${THINLIGHT_WITH_GLFW}
       ${P_ARGS}
@@ -516,14 +516,14 @@ set_tests_properties(version_header_library_and_project_agree PROPERTIES LABELS 
 if(TARGET thinlight_io AND THINLIGHT_WITH_OSMESA)
   add_executable(tl_getting_started ${PROJECT_SOURCE_DIR}/docs/getting_started.c)
   target_link_libraries(tl_getting_started PRIVATE thinlight::thinlight thinlight_warnings)
-  tl_add_packaging_test(getting_started_writes_png getting_started LABELS "docs;gl"
+  tl_add_packaging_test(getting_started_writes_png getting_started LABELS "packaging;docs;gl"
     ARGS -DPROGRAM=$<TARGET_FILE:tl_getting_started>)
 endif()
-tl_add_packaging_test(docs_getting_started_matches_source getting_started_doc LABELS docs)
+tl_add_packaging_test(docs_getting_started_matches_source getting_started_doc LABELS "packaging;docs")
 
 if(TARGET thinlight_docs)
   add_test(NAME docs_api_reference
     COMMAND ${CMAKE_COMMAND} --build ${PROJECT_BINARY_DIR} --config $<CONFIG> --target thinlight_docs)
-  set_tests_properties(docs_api_reference PROPERTIES LABELS docs TIMEOUT 300
+  set_tests_properties(docs_api_reference PROPERTIES LABELS "packaging;docs" TIMEOUT 300
     RESOURCE_LOCK thinlight_build_tree)
 endif()

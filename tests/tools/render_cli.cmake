@@ -6,7 +6,7 @@
 if(CMAKE_SCRIPT_MODE_FILE)
   cmake_minimum_required(VERSION 3.25)
   set(ONE_LINE_EXITS 1) # bad usage (2) prints the usage text after its line
-  include(${CMAKE_CURRENT_LIST_DIR}/cli_checks.cmake)
+  include(${CMAKE_CURRENT_LIST_DIR}/../common/cli_checks.cmake)
   function(expect_no_files what)
     file(GLOB left "${WORK}/*")
     if(left)
@@ -101,6 +101,6 @@ if(TARGET thinlight-render)
               "-DMAKE_SCENES=$<$<TARGET_EXISTS:make_gltf_scenes>:$<TARGET_FILE:make_gltf_scenes>>"
               -DWORK=${CMAKE_CURRENT_BINARY_DIR}/render_cli_${check} -P ${CMAKE_CURRENT_LIST_FILE})
     set_tests_properties(render_cli_${check} PROPERTIES LABELS "tools;gl" TIMEOUT 300 ENVIRONMENT
-      "LSAN_OPTIONS=suppressions=${CMAKE_CURRENT_LIST_DIR}/lsan.supp:print_suppressions=0")
+      "${TL_GL_TEST_ENVIRONMENT}")
   endforeach()
 endif()

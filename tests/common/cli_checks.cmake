@@ -1,9 +1,5 @@
-# Helpers for the command-line contract checkers (codec_report.cmake, render_cli.cmake,
-# bench.cmake) when they run as `cmake -P` scripts; they include this file. Included by
-# tests/CMakeLists.txt in configure mode, it does nothing.
-if(NOT CMAKE_SCRIPT_MODE_FILE)
-  return()
-endif()
+# Helpers for the command-line contract checkers (tests/tools, tests/input) when they run as
+# `cmake -P` scripts; they include this file.
 
 # Runs ${TOOL} with ARGN; sets rc, out and err in the caller.
 function(run_tool)

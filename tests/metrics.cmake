@@ -1,1 +1,0 @@
-tl_add_test(test_metrics SOURCES test_metrics.c)
