@@ -1,26 +1,15 @@
 # thinlight-bench (DESIGN.md section 6): a tiny sweep whose JSON must keep the contract (keys,
 # types, one record per (mode, lights)), whose images must stay within each mode's error bound
-# against fat, and whose bytes per pixel must add up; plus the command-line contract: --help exits
-# 0, bad usage 2, bad input 1 with one line and no partial output.
+# against fat, and whose bytes per pixel must add up; --help exits 0. Bad usage (exit 2) and bad
+# input (exit 1 with one line and no partial output) are checked by tests/input/bench_bad_input.cmake.
 #
-# Included by tests/CMakeLists.txt it adds the tests; run with `cmake -P` it is the checker:
+# Included by tests/tools/CMakeLists.txt it adds the tests; run with `cmake -P` it is the checker:
 #   -DTOOL=<thinlight-bench> -DCHECK=<case> -DWORK=<scratch dir>
 
 if(CMAKE_SCRIPT_MODE_FILE)
   cmake_minimum_required(VERSION 3.25)
 
   include(${CMAKE_CURRENT_LIST_DIR}/../common/cli_checks.cmake)
-
-  # Fails when WORK holds anything but the names in ARGN.
-  function(expect_only what)
-    file(GLOB left RELATIVE "${WORK}" "${WORK}/*")
-    foreach(keep IN LISTS ARGN)
-      list(REMOVE_ITEM left "${keep}")
-    endforeach()
-    if(left)
-      message(FATAL_ERROR "${what}: left files behind: ${left}")
-    endif()
-  endfunction()
 
   # Sets `value` to json[path...] and fails unless its type is one of `types` (a ;-list).
   function(json_get types what)
@@ -248,58 +237,6 @@ if(CMAKE_SCRIPT_MODE_FILE)
     endif()
     expect_only("--help")
 
-  elseif(CHECK STREQUAL "bad_usage")
-    set(cases
-      "--no-such-flag" "unknown option"
-      "stray" "unexpected argument"
-      "--lights" "--lights without a value"
-      "--lights;5000" "more than 4096 lights"
-      "--lights;8,,64" "empty item in --lights"
-      "--lights;eight" "not a count"
-      "--size;20000x10" "size over 16384"
-      "--size;0x10" "zero size"
-      "--size;12by3" "malformed size"
-      "--modes;thin-lpp,bogus" "unknown mode"
-      "--frames;0" "zero frames"
-      "--out;${WORK}/out;--lights;-1" "negative light count"
-      "--doc;${WORK}/doc.md" "--doc without --out")
-    list(LENGTH cases n)
-    math(EXPR last "${n} - 1")
-    foreach(i RANGE 0 ${last} 2)
-      math(EXPR j "${i} + 1")
-      list(GET cases ${i} args)
-      list(GET cases ${j} what)
-      run_tool(${args} --json "${WORK}/x.json")
-      expect_exit(2 "${what}")
-    endforeach()
-    expect_only("bad usage")
-
-  elseif(CHECK STREQUAL "bad_input")
-    run_tool(--scene "${WORK}/missing.gltf" --json "${WORK}/x.json" --out "${WORK}/out" --quick)
-    expect_exit(1 "unreadable scene")
-    if(NOT err MATCHES "missing.gltf")
-      message(FATAL_ERROR "the message does not name the scene:\n${err}")
-    endif()
-    expect_only("unreadable scene")
-    file(WRITE "${WORK}/broken.gltf" "{ this is not glTF")
-    run_tool(--scene "${WORK}/broken.gltf" --json "${WORK}/x.json" --out "${WORK}/out" --quick)
-    expect_exit(1 "malformed scene")
-    expect_only("malformed scene" broken.gltf)
-    file(REMOVE "${WORK}/broken.gltf")
-    # a path below a regular file can be created by nobody, root included
-    file(WRITE "${WORK}/file" "")
-    run_tool(--quick --no-plot --json "${WORK}/file/x.json")
-    expect_exit(1 "--json below a regular file")
-    run_tool(--quick --no-plot --out "${WORK}/file/dir")
-    expect_exit(1 "--out below a regular file")
-    file(WRITE "${WORK}/doc.md" "no markers here\n")
-    run_tool(--quick --no-plot --doc "${WORK}/doc.md" --json "${WORK}/x.json")
-    expect_exit(1 "--doc without markers")
-    file(READ "${WORK}/doc.md" doc)
-    if(NOT doc STREQUAL "no markers here\n")
-      message(FATAL_ERROR "--doc without markers changed the file")
-    endif()
-    expect_only("bad input" file doc.md)
   else()
     message(FATAL_ERROR "unknown CHECK '${CHECK}'")
   endif()
@@ -310,17 +247,9 @@ if(NOT TARGET thinlight-bench)
   return()
 endif()
 
-# tl_add_bench_test(NAME CHECK LABELS): one ctest test running the checker above.
-function(tl_add_bench_test name check labels)
-  add_test(NAME ${name}
-    COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:thinlight-bench> -DCHECK=${check}
-            -DWORK=${CMAKE_CURRENT_BINARY_DIR}/${name} -P ${CMAKE_CURRENT_FUNCTION_LIST_FILE})
-  set_tests_properties(${name} PROPERTIES TIMEOUT 300 LABELS "${labels}" ENVIRONMENT
-    "${TL_GL_TEST_ENVIRONMENT}")
-endfunction()
-
-tl_add_bench_test(bench_tiny_sweep_json_errors_bytes tiny_sweep "tools;gl")
-tl_add_bench_test(bench_gltf_scene_seeded_lights gltf_scene "tools;gl")
-tl_add_bench_test(bench_cli_help_exit_0 help tools)
-tl_add_bench_test(bench_cli_bad_usage_exit_2 bad_usage tools)
-tl_add_bench_test(bench_cli_bad_input_exit_1_no_output bad_input tools)
+tl_add_cli_test(bench_tiny_sweep_json_errors_bytes thinlight-bench tiny_sweep LABELS tools gl
+  ENVIRONMENT ${TL_GL_TEST_ENVIRONMENT})
+tl_add_cli_test(bench_gltf_scene_seeded_lights thinlight-bench gltf_scene LABELS tools gl
+  ENVIRONMENT ${TL_GL_TEST_ENVIRONMENT})
+tl_add_cli_test(bench_cli_help_exit_0 thinlight-bench help LABELS tools
+  ENVIRONMENT ${TL_GL_TEST_ENVIRONMENT})

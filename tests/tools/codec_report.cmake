@@ -1,8 +1,9 @@
-# Smoke tests of thinlight-codec-report's command-line contract (DESIGN.md section 6).
+# Smoke test of thinlight-codec-report's command-line contract (DESIGN.md section 6): the JSON
+# report of a --quick run. Bad usage and unwritable outputs: tests/input/codec_report_bad_input.cmake.
 #
-# This one file plays two parts: tests/CMakeLists.txt includes it to add the tests, and each test
-# runs it again with `cmake -P` (CMAKE_SCRIPT_MODE_FILE is then set) as the checker, with
-#   -DTOOL=<path to the tool> -DCHECK=<json_contract|bad_usage|unwritable_out> -DWORK=<scratch dir>
+# This one file plays two parts: tests/tools/CMakeLists.txt includes it to add the test, and the
+# test runs it again with `cmake -P` (CMAKE_SCRIPT_MODE_FILE is then set) as the checker, with
+#   -DTOOL=<path to the tool> -DCHECK=json_contract -DWORK=<scratch dir>
 
 if(CMAKE_SCRIPT_MODE_FILE)
   cmake_minimum_required(VERSION 3.25)
@@ -69,34 +70,6 @@ if(CMAKE_SCRIPT_MODE_FILE)
     if(NOT out MATCHES "oct12-precise")
       message(FATAL_ERROR "the stdout table lacks oct12-precise:\n${out}")
     endif()
-  elseif(CHECK STREQUAL "bad_usage")
-    run_tool(--no-plot --bogus)
-    expect_exit(2 "unknown flag")
-    run_tool(--no-plot --json)
-    expect_exit(2 "--json without a value")
-    run_tool(--quick)
-    expect_exit(2 "no --out and no --no-plot")
-    run_tool(--help)
-    if(NOT rc EQUAL 0 OR NOT out MATCHES "usage:")
-      message(FATAL_ERROR "--help: exit '${rc}', stdout:\n${out}")
-    endif()
-  elseif(CHECK STREQUAL "unwritable_out")
-    # A directory below a regular file can be created by nobody, root included.
-    file(WRITE "${WORK}/file" "")
-    run_tool(--quick --no-plot --out "${WORK}/file/dir")
-    expect_exit(1 "--out below a regular file")
-    if(NOT err MATCHES "file/dir")
-      message(FATAL_ERROR "the message does not name the directory:\n${err}")
-    endif()
-    run_tool(--quick --no-plot --json "${WORK}/file/report.json")
-    expect_exit(1 "--json below a regular file")
-    file(WRITE "${WORK}/doc.md" "no markers here\n")
-    run_tool(--quick --no-plot --doc "${WORK}/doc.md")
-    expect_exit(1 "--doc without markers")
-    file(READ "${WORK}/doc.md" doc)
-    if(NOT doc STREQUAL "no markers here\n")
-      message(FATAL_ERROR "--doc without markers changed the file")
-    endif()
   else()
     message(FATAL_ERROR "unknown CHECK '${CHECK}'")
   endif()
@@ -107,16 +80,5 @@ if(NOT TARGET thinlight-codec-report)
   return()
 endif()
 
-set(TL_CODEC_REPORT_CHECKER ${CMAKE_CURRENT_LIST_FILE})
-
-# tl_add_codec_report_test(NAME CHECK): one ctest test running the checker above.
-function(tl_add_codec_report_test name check)
-  add_test(NAME ${name}
-    COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:thinlight-codec-report> -DCHECK=${check}
-            -DWORK=${CMAKE_CURRENT_BINARY_DIR}/${name} -P ${TL_CODEC_REPORT_CHECKER})
-  set_tests_properties(${name} PROPERTIES TIMEOUT 120 LABELS "tools")
-endfunction()
-
-tl_add_codec_report_test(codec_report_quick_json_contract json_contract)
-tl_add_codec_report_test(codec_report_bad_usage_exit_2 bad_usage)
-tl_add_codec_report_test(codec_report_unwritable_out_exit_1 unwritable_out)
+tl_add_cli_test(codec_report_quick_json_contract thinlight-codec-report json_contract
+  LABELS tools TIMEOUT 120)

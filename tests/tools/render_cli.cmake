@@ -1,18 +1,11 @@
-# thinlight-render's command-line contract (DESIGN.md section 6): exit 0 with an image, 1 on bad
-# input with one line naming the problem and no partial output, 2 on bad usage.
-# Included by tests/CMakeLists.txt it adds the tests; run with `cmake -P` it is the checker:
+# thinlight-render's command-line contract (DESIGN.md section 6): exit 0 with an image (bad input
+# and bad usage: tests/input/render_cli_bad_input.cmake).
+# Included by tests/tools/CMakeLists.txt it adds the tests; run with `cmake -P` it is the checker:
 #   -DTOOL=<thinlight-render> -DCHECK=<case> -DWORK=<scratch dir>
 
 if(CMAKE_SCRIPT_MODE_FILE)
   cmake_minimum_required(VERSION 3.25)
-  set(ONE_LINE_EXITS 1) # bad usage (2) prints the usage text after its line
   include(${CMAKE_CURRENT_LIST_DIR}/../common/cli_checks.cmake)
-  function(expect_no_files what)
-    file(GLOB left "${WORK}/*")
-    if(left)
-      message(FATAL_ERROR "${what}: left files behind: ${left}")
-    endif()
-  endfunction()
   file(REMOVE_RECURSE "${WORK}")
   file(MAKE_DIRECTORY "${WORK}")
 
@@ -60,47 +53,21 @@ if(CMAKE_SCRIPT_MODE_FILE)
     if(NOT materials_plan MATCHES "transparent")
       message(FATAL_ERROR "materials.glb (alpha BLEND) has no transparent pass:\n${materials_plan}")
     endif()
-  elseif(CHECK STREQUAL "bad_usage")
-    run_tool(default -o "${WORK}/x.png" --no-such-flag)
-    expect_exit(2 "unknown flag")
-    run_tool(default -o "${WORK}/x.png" --size 12by3)
-    expect_exit(2 "malformed size")
-    run_tool(default)
-    expect_exit(2 "no output")
-    run_tool()
-    expect_exit(2 "no arguments")
-    expect_no_files("bad usage")
-  elseif(CHECK STREQUAL "bad_input")
-    run_tool("${WORK}/missing.gltf" -o "${WORK}/x.png")
-    expect_exit(1 "scene file")
-    run_tool(default -o "${WORK}/x.png" --size 0x10)
-    expect_exit(1 "zero size")
-    run_tool(default -o "${WORK}/x.png" --size 100000x10)
-    expect_exit(1 "absurd size")
-    run_tool(default -o "${WORK}/x.png" --lights 1000000)
-    expect_exit(1 "absurd light count")
-    run_tool(default -o "${WORK}/x.bmp" --size 32x32)
-    expect_exit(1 "unsupported output type")
-    run_tool(default -o "${WORK}/no/such/dir/x.png" --size 32x32 --lights 8)
-    expect_exit(1 "unwritable output")
-    expect_no_files("bad input")
   else()
     message(FATAL_ERROR "unknown CHECK '${CHECK}'")
   endif()
   return()
 endif()
 
-if(TARGET thinlight-render)
-  set(_tl_render_checks writes_png dump_targets bad_usage bad_input)
-  if(TARGET make_gltf_scenes)
-    list(APPEND _tl_render_checks gltf_plans)
-  endif()
-  foreach(check IN LISTS _tl_render_checks)
-    add_test(NAME render_cli_${check}
-      COMMAND ${CMAKE_COMMAND} -DTOOL=$<TARGET_FILE:thinlight-render> -DCHECK=${check}
-              "-DMAKE_SCENES=$<$<TARGET_EXISTS:make_gltf_scenes>:$<TARGET_FILE:make_gltf_scenes>>"
-              -DWORK=${CMAKE_CURRENT_BINARY_DIR}/render_cli_${check} -P ${CMAKE_CURRENT_LIST_FILE})
-    set_tests_properties(render_cli_${check} PROPERTIES LABELS "tools;gl" TIMEOUT 300 ENVIRONMENT
-      "${TL_GL_TEST_ENVIRONMENT}")
-  endforeach()
+if(NOT TARGET thinlight-render)
+  return()
 endif()
+set(_tl_render_checks writes_png dump_targets)
+if(TARGET make_gltf_scenes)
+  list(APPEND _tl_render_checks gltf_plans)
+endif()
+foreach(check IN LISTS _tl_render_checks)
+  tl_add_cli_test(render_cli_${check} thinlight-render ${check} LABELS tools gl
+    ENVIRONMENT ${TL_GL_TEST_ENVIRONMENT}
+    ARGS "-DMAKE_SCENES=$<$<TARGET_EXISTS:make_gltf_scenes>:$<TARGET_FILE:make_gltf_scenes>>")
+endforeach()
