@@ -1,4 +1,4 @@
-/* What the glTF tests (tests/io, tests/input) share: loading a fixture written by gltf_fixtures.c
+/* What the glTF tests (tests/io, tests/input) share: loading a fixture written by gltf_fixtures.h
  * into TL_GLTF_TEST_DIR/<test name> with a capturing logger and a counting allocator, the checks
  * every load makes, and the invariants of a loaded scene. */
 #ifndef TL_GLTF_CHECKS_H

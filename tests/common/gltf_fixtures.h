@@ -1,6 +1,6 @@
 /* glTF test files, written at run time (nothing binary is committed): the three test scenes other
- * tests and the docs use, and the named good and bad cases of tests/test_gltf.c. Plain C; PNGs go
- * through tl_image_write (thinlight/io.h). */
+ * tests and the docs use (gltf_scenes.c), and the named good and bad cases that tests/io and
+ * tests/input load (gltf_cases.c). Plain C; PNGs go through tl_image_write (thinlight/io.h). */
 #ifndef TL_GLTF_FIXTURES_H
 #define TL_GLTF_FIXTURES_H
 
@@ -35,7 +35,7 @@ int tlf_write_lights(const char *dir, const char *name, tlf_storage storage);
 
 /**
  * Writes the named test case into `dir` and puts the path of the file to load into `path`.
- * Cases: see the table in gltf_fixtures.c (tlf_case_names lists them). Returns 0, or -1 for an
+ * Cases: see gltf_cases.c (tlf_case_names lists them). Returns 0, or -1 for an
  * unknown name or a write failure.
  */
 int tlf_write_case(const char *dir, const char *name, char *path, size_t path_size);

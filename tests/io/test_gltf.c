@@ -1,7 +1,7 @@
 /* glTF loading (tl_scene_load_gltf), no GL: the test scenes against hand-computed transforms,
  * bounds, materials and lights, and the allocator (every allocation freed, failure at every k-th
  * allocation). Bad files and fuzzing are in tests/input. Every file is written at run time by
- * gltf_fixtures.c into TL_GLTF_TEST_DIR/<test name> (gltf_checks.h). */
+ * gltf_fixtures.h into TL_GLTF_TEST_DIR/<test name> (gltf_checks.h). */
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
