@@ -1,5 +1,9 @@
-# Helpers for the command-line contract checkers (tests/tools, tests/input) when they run as
-# `cmake -P` scripts; they include this file.
+# Helpers for the command-line contract checkers (tests/tools, tests/input), `cmake -P` scripts
+# run by the tests that tl_add_cli_test adds (-DTOOL, -DCHECK, -DWORK); they include this file,
+# which starts each check with an empty scratch directory WORK. A checker defines one function
+# check_<name> per check and ends with cli_run_check().
+file(REMOVE_RECURSE "${WORK}")
+file(MAKE_DIRECTORY "${WORK}")
 
 # Runs ${TOOL} with ARGN; sets rc, out and err in the caller.
 function(run_tool)
@@ -35,4 +39,12 @@ function(expect_only what)
   if(left)
     message(FATAL_ERROR "${what}: left files behind: ${left}")
   endif()
+endfunction()
+
+# Runs check_${CHECK}, the function of the check the test named.
+function(cli_run_check)
+  if(NOT COMMAND check_${CHECK})
+    message(FATAL_ERROR "unknown CHECK '${CHECK}'")
+  endif()
+  cmake_language(CALL check_${CHECK})
 endfunction()
