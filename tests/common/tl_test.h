@@ -63,6 +63,15 @@ extern int tl_test_failures;
 
 #define TL_CHECK_FINITE3(v) TL_CHECK(isfinite((v)[0]) && isfinite((v)[1]) && isfinite((v)[2]))
 
+/* Steps of the stored formats, from their bit counts: tolerances are written with these.
+ * A `bits`-bit UNORM stores k / (2^bits - 1): its largest code, and one step is 1 / that
+ * (8 bits: 1/255; D24: 1/16777215). */
+#define TL_UNORM_MAX(bits) ((1ull << (bits)) - 1ull)
+/* FP16 keeps 10 explicit mantissa bits, so adjacent values of one binade are 2^-10 of its
+ * lower end apart: one step is at most 2^-10 of the value, half a step (round to nearest) 2^-11. */
+#define TL_HALF_MANTISSA_BITS 10
+#define TL_HALF_REL_STEP (1.0 / (double)(1u << TL_HALF_MANTISSA_BITS))
+
 /* Deterministic random numbers (splitmix64), so every run sees the same inputs. */
 typedef struct tl_rng { unsigned long long s; } tl_rng;
 static inline unsigned long long tl_rng_u64(tl_rng *r)

@@ -51,7 +51,7 @@ static double exact_linearize(const tl_projection *pr, double w)
 /* One step of the stored depth at window depth w: a D24 code, or a float ULP for D32F. */
 static double depth_step(tl_depth_format f, double w)
 {
-    if (f != TL_DEPTH_FORMAT_D32F_REVERSED && f != TL_DEPTH_FORMAT_D32F) return 1.0 / 16777215.0;
+    if (f != TL_DEPTH_FORMAT_D32F_REVERSED && f != TL_DEPTH_FORMAT_D32F) return 1.0 / TL_UNORM_MAX(24);
     float wf = (float)w;
     return (double)nextafterf(wf, INFINITY) - (double)wf;
 }

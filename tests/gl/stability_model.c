@@ -17,7 +17,7 @@ void pixel_ndc(uint32_t x, uint32_t y, uint32_t w, uint32_t h, float ndc[2])
 static float depth_read_step(tl_depth_format f, float w)
 {
     float ulp = nextafterf(w, INFINITY) - w;
-    if (f == TL_DEPTH_FORMAT_D24 || f == TL_DEPTH_FORMAT_DEFAULT) ulp = fmaxf(ulp, 1.0f / 16777215.0f);
+    if (f == TL_DEPTH_FORMAT_D24 || f == TL_DEPTH_FORMAT_DEFAULT) ulp = fmaxf(ulp, 1.0f / (float)TL_UNORM_MAX(24));
     return ulp;
 }
 
@@ -132,10 +132,11 @@ double half_rz(double v)
 double half_ulp(double v)
 {
     double a = fabs(v);
-    if (a < 0x1.0p-14) return 0x1.0p-24;
+    /* below 2^-14, FP16's smallest normal (exponent bias 15), the subnormals are 2^-14 / 2^10 apart */
+    if (a < 0x1.0p-14) return ldexp(0x1.0p-14, -TL_HALF_MANTISSA_BITS);
     int e;
     frexp(a, &e); /* a in [2^(e-1), 2^e) */
-    return ldexp(1.0, e - 1 - 10);
+    return ldexp(1.0, e - 1 - TL_HALF_MANTISSA_BITS);
 }
 
 /* Compares the light buffer (diffuse RGB, specular RGB) with the sum over `lights` evaluated at

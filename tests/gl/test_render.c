@@ -38,7 +38,7 @@ static void compare_volumes(test_scene *t, const tl_camera *cam, tl_depth_format
             if (i % 4 == 3) continue;
             TL_CHECK(isfinite(a[i]) && isfinite(b[i]));
             double m = fmax(fabs(a[i]), fabs(b[i])), d = fabs((double)a[i] - b[i]);
-            double tol = m * 0x1.0p-11 + 1e-7;
+            double tol = m * (0.5 * TL_HALF_REL_STEP) + 1e-7;
             if (d > tol) bad++;
             if (m > 0) max_rel = fmax(max_rel, d / m);
             if (b[i] > 1e-3) lit++;
@@ -169,10 +169,10 @@ TL_TEST(fxaa_reduces_edge_gradient)
                 gb += fmax(dxb, dyb);
                 edges++;
             }
-            double local = 0; /* flat: the whole 3x3 neighbourhood within 1 step */
+            double local = 0; /* flat: the whole 3x3 neighbourhood within one 8-bit step */
             for (int k = -1; k <= 1; k++)
                 local = fmax(local, fmax(fabs(luma8(a + i) - luma8(a + i + 4 * k)), fabs(luma8(a + i) - luma8(a + i + 4 * (int)w * k))));
-            if (local <= 1.0 / 255.0) {
+            if (local <= 1.0 / TL_UNORM_MAX(8)) {
                 flat_change = fmax(flat_change, fabs(luma8(a + i) - luma8(b + i)));
                 flats++;
             }
@@ -182,7 +182,7 @@ TL_TEST(fxaa_reduces_edge_gradient)
     TL_CHECK(edges > 100);
     TL_CHECK(flats > 1000);
     TL_CHECK_LE(gb / (double)edges, 0.8 * ga / (double)edges); /* edges at least 20 % softer */
-    TL_CHECK_LE(flat_change, 1.5 / 255.0);                      /* flat regions untouched */
+    TL_CHECK_LE(flat_change, 1.5 / TL_UNORM_MAX(8));            /* flat regions untouched: 1.5 8-bit steps */
     for (size_t i = 3; i < n; i += 4) TL_CHECK(b[i] == 255);     /* alpha forced back to 1 */
     free(a);
     free(b);
@@ -344,7 +344,7 @@ TL_TEST(default_scene_image_sanity)
         if (i % 4 == 3) continue;
         sum_before += before[i];
         sum_after += after[i];
-        if (after[i] > before[i] * (1.0 + 0x1.0p-10) + 1e-6) brighter++;
+        if (after[i] > before[i] * (1.0 + TL_HALF_REL_STEP) + 1e-6) brighter++; /* one FP16 step of HDR */
     }
     printf("HDR sum with lights %.1f, without %.1f\n", sum_before, sum_after);
     TL_CHECK(sum_after < 0.5 * sum_before);
@@ -366,7 +366,7 @@ TL_TEST(default_scene_image_sanity)
     size_t darker = 0, lit = 0;
     for (size_t i = 0; i < n; i++) {
         if (i % 4 == 3) continue;
-        if (after[i] < before[i] * (1.0 - 0x1.0p-10) - 1e-6) darker++;
+        if (after[i] < before[i] * (1.0 - TL_HALF_REL_STEP) - 1e-6) darker++;
         if (after[i] > before[i] * 1.05 + 1e-3) lit++;
     }
     printf("extra light: %zu values brighter by > 5 %%, %zu darker\n", lit, darker);

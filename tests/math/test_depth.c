@@ -386,11 +386,12 @@ TL_TEST(depth_d24_exhaustive_code_round_trip)
     double worst = 0.0;
     for (int i = 0; i < 1000000; i++) {
         float d = (float)tl_rng_unit(&rng);
-        double e = fabs((double)tl_depth_quantize(TL_DEPTH_FORMAT_D24, d) - d) * 16777215.0;
+        double e = fabs((double)tl_depth_quantize(TL_DEPTH_FORMAT_D24, d) - d) * TL_UNORM_MAX(24);
         if (e > worst) worst = e;
     }
     printf("  D24 quantisation of 10^6 random depths: max %.6f codes\n", worst);
-    TL_CHECK_LE(worst, 0.5 + 16777215.0 * 0x1.0p-24); /* half a code plus the float rounding of the result */
+    /* half a code plus the float rounding (2^-24 relative) of the result, in codes */
+    TL_CHECK_LE(worst, 0.5 + TL_UNORM_MAX(24) * 0x1.0p-24);
     free(codes);
     free(back);
     free(w);

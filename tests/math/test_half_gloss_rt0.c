@@ -97,7 +97,8 @@ TL_TEST(half_all_65536_round_trip)
     }
     printf("  65536 halves: %u identical after half->float->half, %u NaN -> +0, %u Inf -> +-65504, %u wrong\n",
            identity, nan_to_zero, inf_saturated, bad);
-    TL_CHECK_EQ_U(identity, 65536u - 2u * 1023u - 2u);
+    /* all but the NaNs (2 signs x 2^10 - 1 non-zero mantissas) and the two infinities */
+    TL_CHECK_EQ_U(identity, 65536u - 2u * TL_UNORM_MAX(TL_HALF_MANTISSA_BITS) - 2u);
     TL_CHECK_EQ_U(bad, 0);
     /* batch forms */
     uint16_t all[4096], back[4096];
@@ -208,7 +209,7 @@ TL_TEST(half_saturation_nan_inf_and_signed_zero)
 #define GLOSS_SWEEP (1u << 20)
 /* Worst |decode(encode(g)) - g| in steps of a `max`-code grid: half a step, plus the float
  * rounding of g and of the decoded k / max (2^-24 relative each, i.e. up to max 2^-24 steps). */
-#define HALF_STEP(max) (0.5 + 2.0 * (max) * 0x1.0p-24)
+#define HALF_STEP(max) (0.5 + 2.0 * (double)(max) * 0x1.0p-24)
 
 TL_TEST(gloss_power_endpoints_and_monotonic)
 {
@@ -343,7 +344,7 @@ TL_TEST(gloss8_exhaustive_encode_decode)
     check_gloss_codes(8, &wc, &wv);
     printf("  gloss8: all 256 codes, encode(decode(k)) off by at most %u; decode(encode(g)) within %.6f steps\n", wc, wv);
     TL_CHECK_EQ_U(wc, 0);
-    TL_CHECK_LE(wv, HALF_STEP(255.0));
+    TL_CHECK_LE(wv, HALF_STEP(TL_UNORM_MAX(8)));
 }
 
 TL_TEST(gloss10_exhaustive_encode_decode)
@@ -354,7 +355,7 @@ TL_TEST(gloss10_exhaustive_encode_decode)
     printf("  gloss10: all 1024 codes, encode(decode(k)) off by at most %u; decode(encode(g)) within %.6f steps\n", wc,
            wv);
     TL_CHECK_EQ_U(wc, 0);
-    TL_CHECK_LE(wv, HALF_STEP(1023.0));
+    TL_CHECK_LE(wv, HALF_STEP(TL_UNORM_MAX(10)));
 }
 
 TL_TEST(gloss_all_bits_1_to_16_exhaustive)
@@ -364,7 +365,7 @@ TL_TEST(gloss_all_bits_1_to_16_exhaustive)
     for (uint32_t bits = 1; bits <= 16; bits++) check_gloss_codes(bits, &wc, &wv);
     printf("  gloss 1..16 bits: all codes round-trip (worst %u), decode(encode(g)) within %.6f steps\n", wc, wv);
     TL_CHECK_EQ_U(wc, 0);
-    TL_CHECK_LE(wv, HALF_STEP(65535.0));
+    TL_CHECK_LE(wv, HALF_STEP(TL_UNORM_MAX(16)));
 }
 
 /* ---------------------------------------------------------------------------------------------
@@ -386,13 +387,13 @@ TL_TEST(rt0_rgba8_matches_oct12_precise_and_gloss8)
         tl_rt0_decode_rgba8(t, d, &gd);
         tl_oct_decode(tl_oct_encode_precise(n, 12), 12, ref);
         if (memcmp(d, ref, sizeof d) != 0) normal_mismatch++;
-        double e = fabs((double)gd - g) * 255.0;
+        double e = fabs((double)gd - g) * TL_UNORM_MAX(8); /* in gloss8 steps */
         if (e > worst_gloss) worst_gloss = e;
     }
     printf("  RT0 RGBA8, %u normals: %u decoded normals differ from oct12 precise; gloss error max %.6f steps\n",
            RT0_COUNT, normal_mismatch, worst_gloss);
     TL_CHECK_EQ_U(normal_mismatch, 0);
-    TL_CHECK_LE(worst_gloss, HALF_STEP(255.0));
+    TL_CHECK_LE(worst_gloss, HALF_STEP(TL_UNORM_MAX(8)));
     /* NULL gloss pointer accepted */
     float d[3];
     const uint8_t t[4] = {1, 2, 3, 4};
@@ -479,14 +480,14 @@ TL_TEST(rt0_rgb10a2_matches_oct10_precise_gloss10_flags)
         tl_oct_decode(tl_oct_encode_precise(n, 10), 10, ref);
         if (memcmp(d, ref, sizeof d) != 0) normal_mismatch++;
         if (fd != (flags & 3u)) flag_mismatch++;
-        double e = fabs((double)gd - g) * 1023.0;
+        double e = fabs((double)gd - g) * TL_UNORM_MAX(10); /* in gloss10 steps */
         if (e > worst_gloss) worst_gloss = e;
     }
     printf("  RT0 RGB10A2, %u normals: %u normal mismatches vs oct10 precise, %u flag mismatches, gloss max %.6f steps\n",
            RT0_COUNT, normal_mismatch, flag_mismatch, worst_gloss);
     TL_CHECK_EQ_U(normal_mismatch, 0);
     TL_CHECK_EQ_U(flag_mismatch, 0);
-    TL_CHECK_LE(worst_gloss, HALF_STEP(1023.0));
+    TL_CHECK_LE(worst_gloss, HALF_STEP(TL_UNORM_MAX(10)));
     float d[3];
     tl_rt0_decode_rgb10a2(0xFFFFFFFFu, d, NULL, NULL);
     TL_CHECK(isfinite(d[0]) && isfinite(d[1]) && isfinite(d[2]));
