@@ -260,7 +260,8 @@ typedef struct tl_frame_plan {
     tl_light_strategy light_strategy;            /**< volumes or tiled (never auto) */
     char strategy_reason[96];                    /**< why the planner chose it */
     uint32_t tile_size;                          /**< tiled: tile side in pixels (0 with volumes) */
-    uint32_t tiles_x, tiles_y;                   /**< tiled: tiles across and down */
+    uint32_t tiles_x;                            /**< tiled: tiles across */
+    uint32_t tiles_y;                            /**< tiled: tiles down */
     size_t program_count;                        /**< entries used in programs */
     tl_plan_program programs[TL_PLAN_MAX_PROGRAMS]; /**< every permutation the frame compiles */
 } tl_frame_plan;

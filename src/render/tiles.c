@@ -86,6 +86,8 @@ static tl_result tl__tiles_grow(tl_renderer *r)
 tl_result tl__tiles_prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec)
 {
     tl__visible_lights(r, v, rec);
+    for (size_t i = 0; i < r->view_light_count; i++) /* the lights that reach the view, per type */
+        rec->st.lights_drawn[(int)r->view_lights[i].color_type[3]]++;
     return tl__tiles_grow(r);
 }
 

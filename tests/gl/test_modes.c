@@ -1,0 +1,496 @@
+/* The frame planner (pure) and the four render modes on OSMesa: what each plan allocates, draws and
+ * compiles; every mode's image against the fat full-float reference of the same frame; rendering
+ * into a caller-owned framebuffer. */
+#include "tl_test.h"
+
+#include "thinlight/context.h"
+#include "thinlight/io.h"
+#include "thinlight/metrics.h"
+#include "thinlight/renderer.h"
+#include "thinlight/scene.h"
+
+#define BIT(t) (1u << (t))
+
+#include "render_fixture.h"
+
+static int has_pass(const tl_frame_plan *p, tl_pass pass)
+{
+    for (size_t i = 0; i < p->pass_count; i++)
+        if (p->passes[i].pass == pass) return 1;
+    return 0;
+}
+
+static int any_program_has(const tl_frame_plan *p, const char *define)
+{
+    for (size_t i = 0; i < p->program_count; i++)
+        if (strstr(p->programs[i].defines, define)) return 1;
+    return 0;
+}
+
+/* ---- pure planning ------------------------------------------------------------------------- */
+
+/* Every combination of features, in every mode: the structural rules of DESIGN.md section 4. */
+TL_TEST(plan_rules_exhaustive)
+{
+    size_t checked = 0;
+    for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++)
+        for (unsigned bits = 0; bits < 256; bits++) {
+            tl_scene_feature_set f = {0};
+            f.point_lights = bits & 1;
+            f.spot_lights = (bits >> 1) & 1;
+            f.directional_lights = (bits >> 2) & 1;
+            f.has_specular = (bits >> 3) & 1;
+            f.has_textures = (bits >> 4) & 1;
+            f.has_normal_maps = f.has_textures && ((bits >> 5) & 1);
+            f.has_alpha_blend = (bits >> 6) & 1;
+            f.has_alpha_mask = (bits >> 7) & 1;
+            tl_renderer_desc d = {.mode = (tl_render_mode)mode, .width = 64, .height = 32};
+            tl_frame_plan p;
+            TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
+            int lights = f.point_lights || f.spot_lights || f.directional_lights;
+            /* light types: one program per type present, none for absent ones */
+            TL_CHECK(any_program_has(&p, "TL_LIGHT_TYPE=1") == (mode != TL_MODE_FORWARD && f.point_lights));
+            TL_CHECK(any_program_has(&p, "TL_LIGHT_TYPE=2") == (mode != TL_MODE_FORWARD && f.spot_lights));
+            TL_CHECK(any_program_has(&p, "TL_LIGHT_TYPE=3") == (mode != TL_MODE_FORWARD && f.directional_lights));
+            TL_CHECK(has_pass(&p, TL_PASS_LIGHTS) == (mode != TL_MODE_FORWARD && lights));
+            /* RT1 only in thin-deferred, and only when the light pass reads it */
+            TL_CHECK(((p.targets & BIT(TL_TARGET_RT1)) != 0) == (mode == TL_MODE_THIN_DEFERRED && lights));
+            /* UVs and texture sampling only with textures; tangents only with normal maps */
+            TL_CHECK(((p.vertex_attributes & TL_ATTRIBUTE_UV) != 0) == (f.has_textures != 0));
+            TL_CHECK(((p.vertex_attributes & TL_ATTRIBUTE_TANGENT) != 0) == (f.has_normal_maps != 0));
+            TL_CHECK(any_program_has(&p, "TL_HAS_UV") == (f.has_textures != 0));
+            TL_CHECK(any_program_has(&p, "TL_ALPHA_MASK") == (f.has_alpha_mask != 0));
+            /* no specular accumulation or storage without specular materials */
+            if (!f.has_specular) {
+                TL_CHECK(!(p.targets & (BIT(TL_TARGET_LIGHT_SPECULAR) | BIT(TL_TARGET_FAT_MATERIAL))));
+                TL_CHECK(!any_program_has(&p, "TL_SPECULAR_EXACT") && !any_program_has(&p, "TL_SPECULAR_COMPACT"));
+            }
+            TL_CHECK(has_pass(&p, TL_PASS_TRANSPARENT) == (f.has_alpha_blend != 0));
+            TL_CHECK(has_pass(&p, TL_PASS_MATERIAL) == (mode == TL_MODE_THIN_LPP));
+            TL_CHECK(has_pass(&p, TL_PASS_GBUFFER) == (mode != TL_MODE_FORWARD));
+            TL_CHECK(has_pass(&p, TL_PASS_FORWARD) == (mode == TL_MODE_FORWARD));
+            /* every target read is allocated and written by an earlier pass; every target
+             * allocated is read by some pass or is the output */
+            uint32_t written = 0, read = 0;
+            for (size_t i = 0; i < p.pass_count; i++) {
+                uint32_t reads = p.passes[i].reads & ~BIT(TL_TARGET_DEPTH);
+                TL_CHECK((reads & ~written) == 0);
+                TL_CHECK((p.passes[i].writes & ~p.targets) == 0);
+                written |= p.passes[i].writes;
+                read |= p.passes[i].reads;
+            }
+            TL_CHECK((p.targets & ~(read | BIT(TL_TARGET_OUTPUT) | BIT(TL_TARGET_DEPTH))) == 0);
+            /* bytes per pixel are the sum over allocated targets */
+            uint32_t sum = 0;
+            for (int t = 0; t < TL_TARGET_COUNT; t++) {
+                TL_CHECK((p.target_bytes_per_pixel[t] != 0) == ((p.targets & BIT(t)) != 0));
+                sum += p.target_bytes_per_pixel[t];
+            }
+            TL_CHECK_EQ_U(sum, p.bytes_per_pixel);
+            checked++;
+        }
+    TL_CHECK_EQ_U(checked, 4 * 256);
+}
+
+TL_TEST(plan_fat_layout_44_bytes)
+{
+    tl_scene_feature_set f = {.point_lights = 1, .has_specular = 1};
+    tl_renderer_desc d = {.mode = TL_MODE_FAT};
+    tl_frame_plan p;
+    TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
+    TL_CHECK_EQ_U(p.target_bytes_per_pixel[TL_TARGET_FAT_POSITION], 16);
+    TL_CHECK_EQ_U(p.target_bytes_per_pixel[TL_TARGET_FAT_NORMAL], 8);
+    TL_CHECK_EQ_U(p.target_bytes_per_pixel[TL_TARGET_FAT_ALBEDO], 8);
+    TL_CHECK_EQ_U(p.target_bytes_per_pixel[TL_TARGET_FAT_MATERIAL], 8);
+    TL_CHECK_EQ_U(p.target_bytes_per_pixel[TL_TARGET_DEPTH], 4);
+    TL_CHECK_EQ_U(p.gbuffer_bytes_per_pixel, 44);
+    /* the thin light pre-pass stores depth 4 + RT0 4 + light buffer (8 compact, 16 exact) */
+    d.mode = TL_MODE_THIN_LPP;
+    d.light_buffer = TL_LIGHT_BUFFER_COMPACT;
+    TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
+    TL_CHECK_EQ_U(p.gbuffer_bytes_per_pixel, 16);
+    d.light_buffer = TL_LIGHT_BUFFER_EXACT;
+    TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
+    TL_CHECK_EQ_U(p.gbuffer_bytes_per_pixel, 24);
+    d.mode = TL_MODE_THIN_DEFERRED;
+    TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
+    TL_CHECK_EQ_U(p.gbuffer_bytes_per_pixel, 12);
+}
+
+TL_TEST(plan_format_and_bad_input)
+{
+    tl_scene_feature_set f = {.point_lights = 3, .directional_lights = 1, .has_specular = 1, .has_textures = 1};
+    tl_renderer_desc d = {.mode = TL_MODE_THIN_LPP};
+    tl_frame_plan p;
+    TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
+    size_t need = tl_frame_plan_format(&p, NULL, 0);
+    TL_CHECK(need > 100);
+    char *buf = malloc(need + 1);
+    TL_CHECK(tl_frame_plan_format(&p, buf, need + 1) == need);
+    TL_CHECK(strlen(buf) == need);
+    for (size_t i = 0; i < p.pass_count; i++) TL_CHECK(strstr(buf, tl_pass_name(p.passes[i].pass)) != NULL);
+    TL_CHECK(strstr(buf, "lights.point") && !strstr(buf, "lights.spot"));
+    char small[16];
+    TL_CHECK(tl_frame_plan_format(&p, small, sizeof small) == need); /* truncated, terminated */
+    TL_CHECK(strlen(small) == sizeof small - 1);
+    free(buf);
+    TL_CHECK(tl_frame_plan_build(NULL, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
+    d.mode = (tl_render_mode)99;
+    TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
+    d.mode = TL_MODE_FAT;
+    d.width = 100000;
+    TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_ERROR_LIMIT);
+    tl_render_mode m;
+    TL_CHECK(tl_render_mode_from_name("thin-deferred", &m) == TL_OK && m == TL_MODE_THIN_DEFERRED);
+    TL_CHECK(tl_render_mode_from_name("deferred", &m) == TL_ERROR_INVALID_ARGUMENT);
+    for (int i = TL_MODE_THIN_LPP; i < TL_MODE_COUNT_; i++)
+        TL_CHECK(tl_render_mode_from_name(tl_render_mode_name((tl_render_mode)i), &m) == TL_OK && (int)m == i);
+}
+
+/* ---- GL ------------------------------------------------------------------------------------- */
+
+static tl_renderer *make_renderer(tl_render_mode mode, uint32_t w, uint32_t h)
+{
+    tl_renderer *r = NULL;
+    /* every target kept readable, statistics of the frame just rendered */
+    tl_renderer_desc d = {.mode = mode, .width = w, .height = h, .keep_targets = TL_TARGETS_ALL, .synchronous_stats = 1,
+                          .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
+                          .logger = tl_test_logger};
+    tl_renderer_create(&d, &r);
+    return r;
+}
+
+/* The renderer allocates exactly what its plan lists, for every mode, and the programs it
+ * compiles are cached: a second scene with the same features compiles nothing. */
+TL_TEST(plan_allocations_match_renderer)
+{
+    if (!ensure_context()) { tl_test_failures++; return; }
+    tl_scene *s = NULL;
+    TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 8, .detail = 1}, &s) == TL_OK);
+    if (!s) return;
+    for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++) {
+        tl_renderer *r = make_renderer((tl_render_mode)mode, 96, 64);
+        TL_CHECK(r != NULL);
+        if (!r) continue;
+        TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);
+        tl_frame_stats st;
+        TL_CHECK(tl_renderer_render(r, NULL, &st) == TL_OK);
+        tl_frame_plan p;
+        TL_CHECK(tl_renderer_get_plan(r, &p) == TL_OK);
+        size_t px = 96 * 64, sum = 0;
+        for (int t = 0; t < TL_TARGET_COUNT; t++) {
+            TL_CHECK_EQ_U(st.target_bytes[t], (size_t)p.target_bytes_per_pixel[t] * px);
+            sum += st.target_bytes[t];
+        }
+        TL_CHECK_EQ_U(sum, (size_t)p.bytes_per_pixel * px);
+        TL_CHECK_EQ_U(st.total_target_bytes, sum);
+        for (int t = 0; t < TL_TARGET_COUNT; t++) {
+            float probe[4 * 96 * 64];
+            tl_result rr = tl_renderer_read_target(r, (tl_target_id)t, probe, &(size_t){sizeof probe});
+            TL_CHECK((rr == TL_OK) == ((p.targets & BIT(t)) != 0));
+        }
+        /* timed passes are exactly the plan's */
+        for (int q = 0; q < TL_PASS_COUNT; q++) TL_CHECK((st.pass_ms[q] != 0.0) == has_pass(&p, (tl_pass)q));
+        uint32_t compiled = st.programs_compiled;
+        TL_CHECK(compiled >= p.program_count);
+        TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);
+        TL_CHECK(tl_renderer_render(r, NULL, &st) == TL_OK);
+        TL_CHECK_EQ_U(st.programs_compiled, compiled);
+        /* only point lights: the spot and directional programs are neither planned nor drawn */
+        size_t kept = 0;
+        tl_light *pts = malloc(s->light_count * sizeof *pts);
+        for (size_t i = 0; i < s->light_count; i++)
+            if (s->lights[i].type == TL_LIGHT_POINT) pts[kept++] = s->lights[i];
+        TL_CHECK(tl_renderer_set_lights(r, pts, kept) == TL_OK);
+        TL_CHECK(tl_renderer_render(r, NULL, &st) == TL_OK);
+        TL_CHECK(tl_renderer_get_plan(r, &p) == TL_OK);
+        TL_CHECK(!any_program_has(&p, "TL_LIGHT_TYPE=2") && !any_program_has(&p, "TL_LIGHT_TYPE=3"));
+        TL_CHECK(st.lights_drawn[TL_LIGHT_SPOT] == 0 && st.lights_drawn[TL_LIGHT_DIRECTIONAL] == 0);
+        if (mode != TL_MODE_FORWARD) TL_CHECK(st.light_fragments[TL_LIGHT_POINT] > 0);
+        else TL_CHECK(st.forward_light_pairs > 0);
+        TL_CHECK(st.bytes_moved > 0.0);
+        free(pts);
+        tl_renderer_destroy(r);
+    }
+    tl_scene_destroy(s);
+}
+
+typedef struct frame_images {
+    uint8_t *ldr;
+    float *hdr;
+} frame_images;
+
+static int render_mode(const tl_scene *s, tl_render_mode mode, uint32_t w, uint32_t h, frame_images *out,
+                       tl_frame_stats *st)
+{
+    tl_renderer *r = make_renderer(mode, w, h);
+    if (!r) return 0;
+    size_t n = (size_t)w * h * 4;
+    out->ldr = malloc(n);
+    out->hdr = malloc(n * sizeof(float));
+    int ok = tl_renderer_set_scene(r, s) == TL_OK && tl_renderer_render(r, NULL, st) == TL_OK &&
+             tl_renderer_read_output(r, out->ldr, &(size_t){n}) == TL_OK &&
+             tl_renderer_read_target(r, TL_TARGET_HDR, out->hdr, &(size_t){n * sizeof(float)}) == TL_OK;
+    if (!ok) fprintf(stderr, "%s: %s\n", tl_render_mode_name(mode), tl_renderer_last_error(r));
+    tl_renderer_destroy(r);
+    return ok;
+}
+
+static size_t count_nonfinite(const float *v, size_t n)
+{
+    size_t bad = 0;
+    for (size_t i = 0; i < n; i++) bad += !isfinite(v[i]);
+    return bad;
+}
+
+/* Every mode renders the default scene like fat does. Bounds: thin-lpp loses only the encoding
+ * (oct 2x12 normal, 8-bit gloss, D24 view-ray position) and FP16 light sums: >= 50 dB; forward
+ * evaluates the same model in one pass: >= 50 dB; thin-deferred also loses chroma (checkerboard)
+ * and specular colour (RT1 keeps intensity only): >= 45 dB. */
+static void compare_modes_to_fat(const tl_default_scene_desc *sd, const char *label)
+{
+    if (!ensure_context()) { tl_test_failures++; return; }
+    tl_scene *s = NULL;
+    TL_CHECK(tl_scene_create_default(sd, &s) == TL_OK);
+    if (!s) return;
+    const uint32_t w = 320, h = 180;
+    size_t n = (size_t)w * h * 4;
+    frame_images fat = {0}, img = {0};
+    tl_frame_stats st;
+    TL_CHECK(render_mode(s, TL_MODE_FAT, w, h, &fat, &st));
+    TL_CHECK(count_nonfinite(fat.hdr, n) == 0);
+    const double bound[TL_MODE_COUNT_] = {0, 50.0, 45.0, 999.0, 50.0};
+    for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++) {
+        if (mode == TL_MODE_FAT) continue;
+        TL_CHECK(render_mode(s, (tl_render_mode)mode, w, h, &img, &st));
+        tl_image_error e, eh;
+        TL_CHECK(tl_image_compare_u8(img.ldr, fat.ldr, n, &e) == TL_OK);
+        double peak = 0;
+        for (size_t i = 0; i < n; i++) peak = fat.hdr[i] > peak ? fat.hdr[i] : peak;
+        TL_CHECK(tl_image_compare(img.hdr, fat.hdr, n, peak, &eh) == TL_OK);
+        printf("%s %-13s vs fat: LDR PSNR %.2f dB (max %.0f, mean %.4f), HDR PSNR %.2f dB\n", label,
+               tl_render_mode_name((tl_render_mode)mode), e.psnr_db, e.max_abs, e.mean_abs, eh.psnr_db);
+        TL_CHECK(e.psnr_db >= bound[mode]);
+        TL_CHECK(count_nonfinite(img.hdr, n) == 0);
+        free(img.ldr);
+        free(img.hdr);
+    }
+    free(fat.ldr);
+    free(fat.hdr);
+    tl_scene_destroy(s);
+}
+
+TL_TEST(modes_match_fat_default_scene)
+{
+    compare_modes_to_fat(&(tl_default_scene_desc){.point_lights = 64, .detail = 2}, "64 lights");
+}
+
+TL_TEST(modes_match_fat_many_lights)
+{
+    compare_modes_to_fat(&(tl_default_scene_desc){.point_lights = 512, .detail = 1, .seed = 7}, "512 lights");
+}
+
+/* Alpha-blended materials are drawn forward-lit after the opaque frame in every mode: making one
+ * material half transparent changes the image, and every mode still agrees with fat. */
+TL_TEST(modes_transparent_materials)
+{
+    if (!ensure_context()) { tl_test_failures++; return; }
+    tl_scene *s = NULL;
+    TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 16, .detail = 1}, &s) == TL_OK);
+    if (!s) return;
+    const uint32_t w = 160, h = 90;
+    size_t n = (size_t)w * h * 4;
+    frame_images opaque = {0}, fat = {0}, img = {0};
+    tl_frame_stats st;
+    TL_CHECK(render_mode(s, TL_MODE_FAT, w, h, &opaque, &st));
+    for (size_t m = 0; m < s->material_count; m++) /* every other material: glass and cut-outs */
+        if (m % 2 == 0) {
+            s->materials[m].flags |= TL_MATERIAL_ALPHA_BLEND;
+            s->materials[m].alpha = 0.5f;
+        }
+    TL_CHECK(render_mode(s, TL_MODE_FAT, w, h, &fat, &st));
+    tl_image_error e;
+    TL_CHECK(tl_image_compare_u8(fat.ldr, opaque.ldr, n, &e) == TL_OK);
+    TL_CHECK(e.mean_abs > 1.0); /* visibly different */
+    for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++) {
+        TL_CHECK(render_mode(s, (tl_render_mode)mode, w, h, &img, &st));
+        TL_CHECK(tl_image_compare_u8(img.ldr, fat.ldr, n, &e) == TL_OK);
+        printf("transparent %-13s vs fat: LDR PSNR %.2f dB, %u draw calls\n", tl_render_mode_name((tl_render_mode)mode),
+               e.psnr_db, st.draw_calls);
+        TL_CHECK(e.psnr_db >= 38.0);
+        TL_CHECK(st.pass_ms[TL_PASS_TRANSPARENT] != 0.0);
+        free(img.ldr);
+        free(img.hdr);
+    }
+    free(opaque.ldr);
+    free(opaque.hdr);
+    free(fat.ldr);
+    free(fat.hdr);
+    tl_scene_destroy(s);
+}
+
+/* The final pass can write into the caller's framebuffer: same size gives the same pixels as the
+ * renderer's own output; an offset viewport lands where asked and leaves the rest alone. */
+TL_TEST(render_to_caller_framebuffer)
+{
+    if (!ensure_context()) { tl_test_failures++; return; }
+    tl_scene *s = NULL;
+    TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 8, .detail = 1}, &s) == TL_OK);
+    if (!s) return;
+    const uint32_t w = 64, h = 48, W = 100, H = 80;
+    tl_renderer *r = make_renderer(TL_MODE_THIN_LPP, w, h);
+    TL_CHECK(r && tl_renderer_set_scene(r, s) == TL_OK && tl_renderer_render(r, NULL, NULL) == TL_OK);
+    if (!r) return;
+    uint8_t *own = malloc((size_t)w * h * 4), *theirs = malloc((size_t)W * H * 4);
+    TL_CHECK(tl_renderer_read_output(r, own, &(size_t){(size_t)w * h * 4}) == TL_OK);
+
+    /* a caller framebuffer, made through the context's own GL entry points */
+    typedef void (*create_tex_t)(unsigned, int, unsigned *);
+    typedef void (*create_fb_t)(int, unsigned *);
+    typedef void (*storage_t)(unsigned, int, unsigned, int, int);
+    typedef void (*attach_t)(unsigned, unsigned, unsigned, int);
+    typedef void (*clear_t)(unsigned, unsigned, int, const float *);
+    typedef void (*get_image_t)(unsigned, int, unsigned, unsigned, int, void *);
+    typedef void (*del_t)(int, const unsigned *);
+    create_tex_t create_tex = (create_tex_t)tl_context_get_proc_address(g_ctx, "glCreateTextures");
+    create_fb_t create_fb = (create_fb_t)tl_context_get_proc_address(g_ctx, "glCreateFramebuffers");
+    storage_t storage = (storage_t)tl_context_get_proc_address(g_ctx, "glTextureStorage2D");
+    attach_t attach = (attach_t)tl_context_get_proc_address(g_ctx, "glNamedFramebufferTexture");
+    clear_t clear = (clear_t)tl_context_get_proc_address(g_ctx, "glClearNamedFramebufferfv");
+    get_image_t get_image = (get_image_t)tl_context_get_proc_address(g_ctx, "glGetTextureImage");
+    del_t del_tex = (del_t)tl_context_get_proc_address(g_ctx, "glDeleteTextures");
+    del_t del_fb = (del_t)tl_context_get_proc_address(g_ctx, "glDeleteFramebuffers");
+    TL_CHECK(create_tex && create_fb && storage && attach && clear && get_image && del_tex && del_fb);
+    unsigned tex = 0, fb = 0;
+    create_tex(0x0DE1 /* GL_TEXTURE_2D */, 1, &tex);
+    storage(tex, 1, 0x8058 /* GL_RGBA8 */, (int)W, (int)H);
+    create_fb(1, &fb);
+    attach(fb, 0x8CE0 /* GL_COLOR_ATTACHMENT0 */, tex, 0);
+    const float grey[4] = {0.5f, 0.5f, 0.5f, 1.0f};
+    clear(fb, 0x1800 /* GL_COLOR */, 0, grey);
+    tl_render_output o = {.framebuffer = fb, .x = 10, .y = 20};
+    TL_CHECK(tl_renderer_render_to(r, NULL, &o, NULL) == TL_OK);
+    get_image(tex, 0, 0x1908 /* GL_RGBA */, 0x1401 /* GL_UNSIGNED_BYTE */, (int)(W * H * 4), theirs);
+    size_t diff = 0, outside_changed = 0;
+    for (uint32_t y = 0; y < H; y++)
+        for (uint32_t x = 0; x < W; x++) {
+            const uint8_t *t = theirs + ((size_t)y * W + x) * 4;
+            int in = x >= 10 && x < 10 + w && y >= 20 && y < 20 + h;
+            if (in) {
+                const uint8_t *m = own + ((size_t)(y - 20) * w + (x - 10)) * 4;
+                for (int c = 0; c < 3; c++) diff += abs((int)t[c] - (int)m[c]) > 1;
+            } else {
+                outside_changed += t[0] != 128 && t[0] != 127;
+            }
+        }
+    TL_CHECK_EQ_U(diff, 0);
+    TL_CHECK_EQ_U(outside_changed, 0);
+    TL_CHECK(tl_renderer_render_to(r, NULL, NULL, NULL) == TL_ERROR_INVALID_ARGUMENT);
+    del_fb(1, &fb);
+    del_tex(1, &tex);
+    free(own);
+    free(theirs);
+    tl_renderer_destroy(r);
+    tl_scene_destroy(s);
+}
+
+/* What planning saves: a scene without specular materials and without spot lights, planned and
+ * unplanned (tl_renderer_desc.no_planning): fewer bytes, fewer programs, the same image. */
+TL_TEST(plan_saving_same_image)
+{
+    if (!ensure_context()) { tl_test_failures++; return; }
+    tl_scene *s = NULL;
+    TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 16, .detail = 1}, &s) == TL_OK);
+    if (!s) return;
+    for (size_t m = 0; m < s->material_count; m++) memset(s->materials[m].specular, 0, sizeof(float) * 3);
+    size_t kept = 0;
+    for (size_t i = 0; i < s->light_count; i++)
+        if (s->lights[i].type != TL_LIGHT_SPOT) s->lights[kept++] = s->lights[i];
+    s->light_count = kept;
+    const uint32_t w = 128, h = 72;
+    size_t n = (size_t)w * h * 4;
+    uint8_t *img[2] = {malloc(n), malloc(n)};
+    tl_frame_stats st[2];
+    for (int unplanned = 0; unplanned < 2; unplanned++) {
+        tl_renderer *r = NULL;
+        tl_renderer_desc d = {.width = w, .height = h, .get_proc_address = tl_context_proc_loader,
+                              .get_proc_address_user = g_ctx, .synchronous_stats = 1,
+                              .no_planning = unplanned};
+        TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
+        if (!r) continue;
+        TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);
+        TL_CHECK(tl_renderer_render(r, NULL, &st[unplanned]) == TL_OK);
+        TL_CHECK(tl_renderer_read_output(r, img[unplanned], &(size_t){n}) == TL_OK);
+        tl_renderer_destroy(r);
+    }
+    TL_CHECK_EQ_U(st[0].target_bytes[TL_TARGET_LIGHT_SPECULAR], 0);
+    TL_CHECK_EQ_U(st[1].target_bytes[TL_TARGET_LIGHT_SPECULAR], (size_t)8 * w * h);
+    TL_CHECK(st[0].total_target_bytes + (size_t)8 * w * h == st[1].total_target_bytes);
+    TL_CHECK(st[0].programs_compiled < st[1].programs_compiled);
+    size_t differ = 0;
+    for (size_t i = 0; i < n; i++) differ += img[0][i] != img[1][i];
+    TL_CHECK_EQ_U(differ, 0);
+    free(img[0]);
+    free(img[1]);
+    tl_scene_destroy(s);
+}
+
+#ifdef TL_TEST_GLTF
+#include "gltf_fixtures.h"
+
+/* The generated glTF test scenes (textures and a node hierarchy; several materials with alpha
+ * MASK, BLEND and double-sided; punctual lights of every type) render through every mode like fat
+ * does, and each gets its own plan. */
+TL_TEST(modes_match_fat_gltf_scenes)
+{
+    if (!ensure_context()) { tl_test_failures++; return; }
+    const char *dir = TL_TEST_WORK_DIR "/modes_gltf";
+    TL_CHECK(tl_test_write_gltf_scenes(dir) == 0);
+    static const char *const files[] = {"textured_boxes.gltf", "materials.glb", "lights.gltf"};
+    char plans[3][2048];
+    for (int f = 0; f < 3; f++) {
+        char path[512], err[512] = "";
+        snprintf(path, sizeof path, "%s/%s", dir, files[f]);
+        tl_scene *s = NULL;
+        tl_gltf_options go = {.extra_lights = 8, .error = err, .error_size = sizeof err};
+        TL_CHECK(tl_scene_load_gltf(path, &go, &s) == TL_OK);
+        if (!s) {
+            fprintf(stderr, "%s\n", err);
+            continue;
+        }
+        const uint32_t w = 240, h = 136;
+        size_t n = (size_t)w * h * 4;
+        frame_images fat = {0}, img = {0};
+        tl_frame_stats st;
+        TL_CHECK(render_mode(s, TL_MODE_FAT, w, h, &fat, &st));
+        double mean = 0;
+        for (size_t i = 0; i < n; i++) mean += fat.ldr[i] / 255.0;
+        TL_CHECK(mean / (double)n > 0.05); /* lit, not black */
+        const double bound[TL_MODE_COUNT_] = {0, 50.0, 40.0, 999.0, 50.0};
+        for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++) {
+            if (mode == TL_MODE_FAT) continue;
+            TL_CHECK(render_mode(s, (tl_render_mode)mode, w, h, &img, &st));
+            tl_image_error e;
+            TL_CHECK(tl_image_compare_u8(img.ldr, fat.ldr, n, &e) == TL_OK);
+            printf("%-20s %-13s vs fat: LDR PSNR %.2f dB (max %.0f)\n", files[f],
+                   tl_render_mode_name((tl_render_mode)mode), e.psnr_db, e.max_abs);
+            TL_CHECK(e.psnr_db >= bound[mode]);
+            TL_CHECK(count_nonfinite(img.hdr, n) == 0);
+            free(img.ldr);
+            free(img.hdr);
+        }
+        tl_scene_feature_set fs;
+        tl_scene_features(s, &fs);
+        tl_frame_plan p;
+        TL_CHECK(tl_frame_plan_build(&(tl_renderer_desc){.width = w, .height = h}, &fs, &p) == TL_OK);
+        tl_frame_plan_format(&p, plans[f], sizeof plans[f]);
+        free(fat.ldr);
+        free(fat.hdr);
+        tl_scene_destroy(s);
+    }
+    /* different scenes, different plans */
+    TL_CHECK(strcmp(plans[0], plans[1]) != 0 && strcmp(plans[1], plans[2]) != 0 && strcmp(plans[0], plans[2]) != 0);
+    TL_CHECK(strstr(plans[1], "transparent") != NULL && strstr(plans[0], "transparent") == NULL);
+    TL_CHECK(strstr(plans[2], "lights.spot") != NULL);
+}
+#endif
