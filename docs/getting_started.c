@@ -7,6 +7,12 @@
 #include <thinlight/renderer.h>
 #include <thinlight/scene.h>
 
+/* A create call that fails has no object to ask: its message comes through the logger. */
+static void keep_error(void *error, tl_log_level level, const char *message)
+{
+    if (level == TL_LOG_ERROR) snprintf(error, 256, "%s", message);
+}
+
 int main(int argc, char **argv)
 {
     const char *path = argc > 1 ? argv[1] : "crypt.png";
@@ -18,8 +24,8 @@ int main(int argc, char **argv)
     uint8_t *rgba = malloc((size_t)width * height * 4);
 
     /* An off-screen OpenGL 4.5 context, current on this thread; the renderer draws into it. */
-    tl_result r = tl_context_create(&(tl_context_desc){.width = width, .height = height}, &ctx);
-    if (r != TL_OK) snprintf(error, sizeof error, "%s", tl_context_last_error(NULL));
+    tl_result r = tl_context_create(&(tl_context_desc){.width = width, .height = height,
+                                                       .logger = {keep_error, error}}, &ctx);
     if (r == TL_OK) r = tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 32}, &scene);
     if (r == TL_OK)
         r = tl_renderer_create(&(tl_renderer_desc){.width = width, .height = height,
