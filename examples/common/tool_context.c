@@ -112,12 +112,17 @@ static void tl_tool__print_auto(const tl_egl_device *devices, size_t count)
 
 int tl_tool_list_devices(const char *tool)
 {
-    static tl_egl_device devices[TL_TOOL_MAX_DEVICES];
+    tl_egl_device *devices = calloc(TL_TOOL_MAX_DEVICES, sizeof *devices);
     char why[1024] = "";
     size_t count = 0;
     tl_logger keep = {tl_tool__keep_error, why};
+    if (!devices) {
+        tl_tool_fail(tool, "out of memory");
+        return 1;
+    }
     if (tl_context_egl_devices(devices, TL_TOOL_MAX_DEVICES, &count, &keep) != TL_OK) {
         tl_tool_fail(tool, "no EGL devices: %s", why);
+        free(devices);
         return 1;
     }
     if (count > TL_TOOL_MAX_DEVICES) count = TL_TOOL_MAX_DEVICES;
@@ -130,5 +135,6 @@ int tl_tool_list_devices(const char *tool)
                d->vendor[0] ? d->vendor : "?", d->renderer[0] ? d->renderer : "? (EGL does not say)");
     }
     tl_tool__print_auto(devices, count);
+    free(devices);
     return 0;
 }

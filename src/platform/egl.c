@@ -196,8 +196,11 @@ static tl_result tl__egl_pick_display(tl_context *ctx, const tl__context_config 
         for (EGLint i = 0; chosen < 0 && i < n; i++)
             if (!tl__egl_device_is_software(api, list[i])) chosen = i;
         if (chosen < 0 && cfg->egl_gpu_only) {
-            tl__context_error(ctx, "EGL lists no GPU device (%d device%s, all Mesa's software rasteriser)", (int)n,
-                              n == 1 ? "" : "s");
+            if (!api->platform_device)
+                tl__context_error(ctx, "this EGL has no device platform (EGL_EXT_platform_device)");
+            else
+                tl__context_error(ctx, "EGL lists no GPU device (%d device%s, Mesa's software rasteriser)", (int)n,
+                                  n == 1 ? "" : "s");
             return TL_ERROR_UNSUPPORTED;
         }
     }
