@@ -10,7 +10,8 @@
 #   THINLIGHT_PC_LIBS_PRIVATE  flags for thinlight.pc's Libs.private (libm, threads, the C++ runtime)
 #
 # Imported targets are GLOBAL so that src/ and tests/ see the same ones. Options:
-#   THINLIGHT_WITH_OSMESA, THINLIGHT_WITH_GLFW, THINLIGHT_WITH_IO (each off removes its dependency).
+#   THINLIGHT_WITH_OSMESA, THINLIGHT_WITH_EGL, THINLIGHT_WITH_GLFW, THINLIGHT_WITH_IO (each off
+#   removes its dependency).
 
 include_guard(GLOBAL)
 
@@ -54,6 +55,14 @@ endfunction()
 if(THINLIGHT_WITH_OSMESA)
   thinlight_pkg_dependency(thinlight_osmesa osmesa THINLIGHT_WITH_OSMESA libosmesa6-dev)
   message(STATUS "thinlight: OSMesa back end ${thinlight_osmesa_VERSION}")
+endif()
+
+# EGL: headless contexts on GPU devices (EGL_EXT_platform_device) and Mesa's surfaceless platform.
+# libEGL is the only library it links (glvnd's libEGL.so.1 on Linux); GL itself is loaded through
+# eglGetProcAddress.
+if(THINLIGHT_WITH_EGL)
+  thinlight_pkg_dependency(thinlight_egl egl THINLIGHT_WITH_EGL libegl-dev)
+  message(STATUS "thinlight: EGL back end ${thinlight_egl_VERSION}")
 endif()
 
 # GLFW: windows. Defaults to ON when it can be found (pkg-config first, then its CMake package).

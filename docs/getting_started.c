@@ -24,8 +24,8 @@ int main(int argc, char **argv)
     uint8_t *rgba = malloc((size_t)width * height * 4);
 
     /* An off-screen OpenGL 4.5 context, current on this thread; the renderer draws into it. */
-    tl_result r = tl_context_create(&(tl_context_desc){.width = width, .height = height}, &ctx);
-    if (r != TL_OK) snprintf(error, sizeof error, "%s", tl_context_last_error(NULL));
+    tl_result r = tl_context_create(&(tl_context_desc){.width = width, .height = height,
+                                                       .logger = {keep_error, error}}, &ctx);
     if (r == TL_OK) r = tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 32}, &scene);
     if (r == TL_OK) /* a failing create reports through the logger: there is no renderer to ask */
         r = tl_renderer_create(&(tl_renderer_desc){.width = width, .height = height,

@@ -11,7 +11,8 @@
 static const char usage_text[] =
     "usage: " BENCH_TOOL " [--scene default|FILE.gltf] [--size WxH[,WxH...]] [--lights N,N,...]\n"
     "                       [--modes MODE,...] [--frames N] [--warmup N] [--json OUT.json] [--out DIR]\n"
-    "                       [--quick] [--doc FILE.md] [--seed S] [--no-plot] [--help]\n"
+    "                       [--quick] [--doc FILE.md] [--seed S] [--no-plot] [--context C] [--device N]\n"
+    "                       [--list-devices] [--help]\n"
     "\n"
     "Renders the same frames in every mode and compares what they store (bytes per pixel of the\n"
     "targets each plan allocates), move (the renderer's bytes-moved estimate), cost (GPU time) and\n"
@@ -27,7 +28,7 @@ static const char usage_text[] =
     "  --warmup N       untimed frames before them (default 2)\n"
     "  --json FILE      write one record per (mode, lights, size)\n"
     "  --out DIR        write final images, heat maps of |mode - fat| (at the largest light count)\n"
-    "                   and the plots (gnuplot) into DIR\n"
+    "                   and the plots (gnuplot) into DIR (PNG: needs a build with THINLIGHT_WITH_IO)\n"
     "  --quick          a short sweep: 640x360, lights 8,64,256, 3 frames after 1 warm-up\n"
     "                   (options given explicitly still apply)\n"
     "  --doc FILE       replace the text between " BENCH_DOC_BEGIN " and " BENCH_DOC_END "\n"
@@ -35,7 +36,12 @@ static const char usage_text[] =
     "                   unless --no-plot)\n"
     "  --seed S         seed of the light layout (default 1)\n"
     "  --no-plot        do not run gnuplot\n"
+    TL_TOOL_CONTEXT_HELP
     "  --help           this text\n"
+    "\n"
+    "The context used (back end, platform, GL renderer and version) is printed on stderr and kept in\n"
+    "the JSON. A build without THINLIGHT_WITH_IO (docs/gpu-servers.md) reads no glTF and writes no\n"
+    "image: --scene FILE and --out fail with one line; the table, --json and --doc work.\n"
     "\n"
     "Exit status: 0 success, 1 bad input (an unreadable scene, an unwritable path), 2 bad usage.\n";
 
@@ -159,12 +165,16 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
     memset(o, 0, sizeof *o);
     o->scene = "default";
     const char *sizes = NULL, *lights = NULL, *modes = NULL, *frames = NULL, *warmup = NULL, *seed = NULL;
+    const char *context = NULL, *device = NULL;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char **value = NULL;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) o->help = 1;
         else if (!strcmp(a, "--quick")) o->quick = 1;
         else if (!strcmp(a, "--no-plot")) o->no_plot = 1;
+        else if (!strcmp(a, "--list-devices")) o->list_devices = 1;
+        else if (!strcmp(a, "--context")) value = &context;
+        else if (!strcmp(a, "--device")) value = &device;
         else if (!strcmp(a, "--scene")) value = &o->scene;
         else if (!strcmp(a, "--size")) value = &sizes;
         else if (!strcmp(a, "--lights")) value = &lights;
@@ -181,8 +191,9 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
             *value = argv[++i];
         }
     }
-    if (o->help) return 0;
+    if (o->help || o->list_devices) return 0;
     int rc;
+    if ((rc = tl_tool_context_parse(BENCH_TOOL, context, device, &o->context))) return rc;
     if ((rc = bench__parse_sizes(sizes ? sizes : o->quick ? "640x360" : "1280x720", o))) return rc;
     if (lights) {
         if ((rc = bench__parse_lights(lights, o))) return rc;
@@ -210,6 +221,10 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
 static int bench__check_outputs(bench_options *o, char **doc_text)
 {
     int e;
+    if (o->out && !tl_tool_have_io()) {
+        tl_tool_fail(BENCH_TOOL, "--out %s: %s (--json and the table need nothing)", o->out, tl_tool_no_io_images);
+        return 1;
+    }
     if (o->json) { /* like --out, the JSON's directory is created when missing */
         char *dir = tl_tool_dir_of(o->json);
         e = dir ? tl_tool_make_dirs(dir) : ENOMEM;
@@ -273,8 +288,9 @@ int main(int argc, char **argv)
         return BENCH_EXIT_BAD_INPUT;
     }
     int rc = bench__parse_args(argc, argv, &run->opt);
-    if (rc || run->opt.help) {
-        if (!rc) fputs(usage_text, stdout);
+    if (rc || run->opt.help || run->opt.list_devices) {
+        if (!rc && run->opt.help) fputs(usage_text, stdout);
+        else if (!rc) rc = tl_tool_list_devices(BENCH_TOOL);
         free(run);
         return rc;
     }

@@ -12,6 +12,7 @@
 #include "thinlight/metrics.h"
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
+#include "tool_gl.h"
 
 #define BENCH_TOOL "thinlight-bench"
 #define BENCH_EXIT_BAD_INPUT 1
@@ -46,7 +47,8 @@ typedef struct bench_options {
     uint32_t frames, warmup;
     uint64_t seed;
     const char *json, *out, *doc;
-    int quick, no_plot, help;
+    int quick, no_plot, help, list_devices;
+    tl_tool_context_options context; /* --context, --device */
 } bench_options;
 
 /* One (mode, lights, size): medians over the timed frames, sizes from the plan, errors against the
@@ -113,6 +115,7 @@ typedef struct bench_run {
     bench_record *records;         /* size-major, then lights, then modes in render order */
     size_t record_count, record_capacity;
     char gl_renderer[128], gl_version[128];
+    char context[16], context_platform[256]; /* tl_context_backend_name, tl_context_platform_string */
     char cpu[128];
     size_t cores;
     char scene_name[256];

@@ -176,8 +176,9 @@ void bench_print_table(const bench_run *run)
     printf("thinlight-bench %s: %s (%zu triangles, %zu objects) at %s, %u timed frames after %u warm-up, seed %llu\n",
            tl_version_string(), run->scene_name, run->scene_triangles, run->scene_objects, sizes, opt->frames,
            opt->warmup, (unsigned long long)opt->seed);
-    printf("GL: %s, %s; CPU: %s, %zu cores, load average %.1f before, %.1f after; sweep took %.0f s\n",
-           run->gl_renderer, run->gl_version, run->cpu, run->cores, run->load_start, run->load_end, run->seconds);
+    printf("GL: %s, %s (context %s: %s); CPU: %s, %zu cores, load average %.1f before, %.1f after; sweep took "
+           "%.0f s\n",
+           run->gl_renderer, run->gl_version, run->context, run->context_platform, run->cpu, run->cores, run->load_start, run->load_end, run->seconds);
     printf("%s\n", run->light_definition);
     printf("ms = %s per frame (median, p90); ms/light = lighting pass / lights; cov Mpx = pixels inside light volumes;\n"
            "B/px = memory the targets occupy (shared where lifetimes allow; sum = as if each had its own);\n"
@@ -315,6 +316,8 @@ static int bench__write_json(FILE *f, const void *ctx)
     tl_tool_json_str(&j, "lights_definition", run->light_definition);
     tl_tool_json_str(&j, "gl_renderer", run->gl_renderer);
     tl_tool_json_str(&j, "gl_version", run->gl_version);
+    tl_tool_json_str(&j, "context", run->context);
+    tl_tool_json_str(&j, "context_platform", run->context_platform);
     char machine[192];
     snprintf(machine, sizeof machine, "%s, %zu cores", run->cpu, run->cores);
     tl_tool_json_str(&j, "machine", machine);
@@ -508,9 +511,9 @@ static int bench__write_doc(FILE *f, const void *ctx)
     fprintf(f, "Scene: %s (%zu triangles, %zu objects); %u timed frames after %u warm-up, seed %llu%s. ",
             run->scene_name, run->scene_triangles, run->scene_objects, opt->frames, opt->warmup,
             (unsigned long long)opt->seed, opt->quick ? " (--quick)" : "");
-    fprintf(f, "GL: %s, %s, on %s (%zu cores; 1-minute load average %.1f before the sweep, %.1f after); the sweep "
-               "took %.0f s. ",
-            run->gl_renderer, run->gl_version, run->cpu, run->cores, run->load_start, run->load_end, run->seconds);
+    fprintf(f, "GL: %s, %s (context %s: %s), on %s (%zu cores; 1-minute load average %.1f before the sweep, %.1f "
+               "after); the sweep took %.0f s. ",
+            run->gl_renderer, run->gl_version, run->context, run->context_platform, run->cpu, run->cores, run->load_start, run->load_end, run->seconds);
     fprintf(f, "Times are %s. %s. PSNR and max err (8-bit steps) compare the final image with fat's.\n",
             run->timers_ok ? "GPU timer queries summed over the passes" : "wall clock (GPU timers unavailable)",
             run->light_definition);

@@ -16,7 +16,7 @@
 #include <string.h>
 
 #include "bench.h"
-#include "thinlight/io.h"
+#include "tool_gl.h"
 #include "tool_util.h"
 
 struct bench_scene {
@@ -35,8 +35,7 @@ static int bench__load_file(const bench_options *opt, bench_scene *s)
 {
     char error[512] = "";
     uint32_t largest = opt->lights[opt->light_count - 1];
-    tl_gltf_options o = {.extra_lights = largest, .seed = opt->seed, .error = error, .error_size = sizeof error};
-    tl_result res = tl_scene_load_gltf(opt->scene, &o, &s->scene);
+    tl_result res = tl_tool_load_gltf(opt->scene, largest, opt->seed, &s->scene, error, sizeof error);
     if (res != TL_OK) {
         if (error[0]) tl_tool_fail(BENCH_TOOL, "cannot load scene %s", error);
         else tl_tool_fail(BENCH_TOOL, "cannot load scene '%s': %s", opt->scene, tl_result_string(res));

@@ -469,12 +469,11 @@ int bench_sweep(bench_run *run, bench_scene *scene)
     const bench_options *opt = &run->opt;
     if (bench__check_memory(opt, bench_scene_get(scene))) return 1;
     tl_context *ctx = NULL;
-    if (tl_context_create(&(tl_context_desc){.width = 64, .height = 64}, &ctx) != TL_OK) {
-        tl_tool_fail(BENCH_TOOL, "no GL context: %s", tl_context_last_error(NULL));
-        return 1;
-    }
+    if (tl_tool_context_open(BENCH_TOOL, &opt->context, 64, 64, &ctx)) return 1;
     snprintf(run->gl_renderer, sizeof run->gl_renderer, "%s", tl_context_renderer_string(ctx));
     snprintf(run->gl_version, sizeof run->gl_version, "%s", tl_context_version_string(ctx));
+    snprintf(run->context, sizeof run->context, "%s", tl_context_backend_name(tl_context_get_backend(ctx)));
+    snprintf(run->context_platform, sizeof run->context_platform, "%s", tl_context_platform_string(ctx));
     tl_render_mode modes[BENCH_MODES];
     uint64_t total = (uint64_t)opt->size_count * opt->light_count * bench_render_modes(opt, modes) *
                      (opt->warmup + opt->frames) +

@@ -58,6 +58,9 @@ static const char usage_text[] =
     "                   plot to the img/ directory beside FILE\n"
     "  --help           this text\n"
     "\n"
+    "This tool runs on the CPU only and makes no GL context: unlike the renderer tools it takes no\n"
+    "--context, --device or --list-devices (they are refused as bad usage).\n"
+    "\n"
     "Exit status: 0 success, 1 bad input (an unwritable path, a missing file), 2 bad usage.\n";
 
 /* ---------------------------------------------------------------------------------------------
@@ -969,7 +972,10 @@ static int parse_args(int argc, char **argv, options *o)
         else if (strcmp(a, "--json") == 0) value = &o->json;
         else if (strcmp(a, "--out") == 0) value = &o->out;
         else if (strcmp(a, "--doc") == 0) value = &o->doc;
-        else {
+        else if (!strcmp(a, "--context") || !strcmp(a, "--device") || !strcmp(a, "--list-devices")) {
+            fprintf(stderr, TOOL ": %s: this tool makes no GL context (it runs on the CPU only; see --help)\n", a);
+            return EXIT_BAD_USAGE;
+        } else {
             fprintf(stderr, TOOL ": %s '%s' (see --help)\n", a[0] == '-' ? "unknown option" : "unexpected argument", a);
             return EXIT_BAD_USAGE;
         }

@@ -1,4 +1,5 @@
-/* tl_context: descriptor defaults, back-end dispatch, the strings read at creation. */
+/* tl_context: the back-end table, descriptor defaults, the AUTO order, dispatch, the strings read
+ * at creation. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -19,16 +20,66 @@
 typedef const unsigned char *(TL__GLAPIENTRY *tl__get_string_fn)(unsigned int name);
 typedef void(TL__GLAPIENTRY *tl__get_integerv_fn)(unsigned int name, int *data);
 
-/* Why the last tl_context_create on this thread failed: there is no object to hold it. It is
- * diagnostic text only and changes no behaviour. */
-static _Thread_local char tl__create_error[576]; /* "GLFW: " + tl_context.error */
+#if defined(TL_HAVE_OSMESA)
+#define TL__OSMESA_OPS &tl__osmesa_ops
+#else
+#define TL__OSMESA_OPS NULL
+#endif
+#if defined(TL_HAVE_GLFW)
+#define TL__GLFW_OPS &tl__glfw_ops
+#else
+#define TL__GLFW_OPS NULL
+#endif
+#if defined(TL_HAVE_EGL)
+#define TL__EGL_OPS &tl__egl_ops
+#else
+#define TL__EGL_OPS NULL
+#endif
+
+/* Each back end: its name for the tools, its name in messages, its functions (NULL when not built
+ * into this library) and how to build it. DEFAULT and AUTO are resolved before any use. */
+typedef struct tl__backend_entry {
+    const char *name, *label;
+    const tl__context_ops *ops;
+    const char *how_to_build;
+} tl__backend_entry;
+
+static const tl__backend_entry tl__backends[TL_CONTEXT_BACKEND_COUNT_] = {
+    [TL_CONTEXT_BACKEND_DEFAULT] = {"default", "default", NULL, NULL},
+    [TL_CONTEXT_BACKEND_OSMESA] = {"osmesa", "OSMesa", TL__OSMESA_OPS,
+                                   "configure with -DTHINLIGHT_WITH_OSMESA=ON and libosmesa6-dev"},
+    [TL_CONTEXT_BACKEND_GLFW] = {"glfw", "GLFW", TL__GLFW_OPS, "configure with -DTHINLIGHT_WITH_GLFW=ON and libglfw3-dev"},
+    [TL_CONTEXT_BACKEND_EGL] = {"egl", "EGL", TL__EGL_OPS, "configure with -DTHINLIGHT_WITH_EGL=ON and libegl-dev"},
+    [TL_CONTEXT_BACKEND_AUTO] = {"auto", "auto", NULL, NULL},
+};
+
+/* AUTO, best first: an EGL GPU device, OSMesa, EGL's surfaceless platform. */
+static const struct {
+    tl_context_backend backend;
+    tl_egl_platform egl_platform;
+    bool egl_gpu_only;
+    const char *label;
+} tl__auto_steps[] = {
+    {TL_CONTEXT_BACKEND_EGL, TL_EGL_PLATFORM_DEFAULT, true, "EGL GPU device"},
+    {TL_CONTEXT_BACKEND_OSMESA, TL_EGL_PLATFORM_DEFAULT, false, "OSMesa"},
+    {TL_CONTEXT_BACKEND_EGL, TL_EGL_PLATFORM_SURFACELESS, false, "EGL surfaceless"},
+};
+
+/* DEFAULT: OSMesa when built in, else EGL (headless either way). */
+static tl_context_backend tl__resolve_default(tl_context_backend b)
+{
+    if (b != TL_CONTEXT_BACKEND_DEFAULT) return b;
+    if (!tl__backends[TL_CONTEXT_BACKEND_OSMESA].ops && tl__backends[TL_CONTEXT_BACKEND_EGL].ops)
+        return TL_CONTEXT_BACKEND_EGL;
+    return TL_CONTEXT_BACKEND_OSMESA;
+}
 
 static tl__context_config tl__context_desc_defaults(const tl_context_desc *desc)
 {
     static const tl_context_desc zero = {0};
     if (!desc) desc = &zero;
     tl__context_config c = {
-        .backend = desc->backend ? desc->backend : TL_CONTEXT_BACKEND_OSMESA,
+        .backend = tl__resolve_default(desc->backend),
         .width = desc->width ? desc->width : TL__DEFAULT_WIDTH,
         .height = desc->height ? desc->height : TL__DEFAULT_HEIGHT,
         .major = desc->gl_major ? desc->gl_major : 4,
@@ -37,19 +88,12 @@ static tl__context_config tl__context_desc_defaults(const tl_context_desc *desc)
         .debug = desc->debug,
         .visible = desc->visible,
         .title = desc->title ? desc->title : "thinlight",
+        .egl_platform = desc->egl_platform,
+        .egl_device = desc->egl_device,
         .allocator = desc->allocator,
         .logger = desc->logger,
     };
     return c;
-}
-
-static const char *tl__backend_name(tl_context_backend b)
-{
-    switch (b) {
-    case TL_CONTEXT_BACKEND_OSMESA: return "OSMesa";
-    case TL_CONTEXT_BACKEND_GLFW: return "GLFW";
-    default: return "unknown";
-    }
 }
 
 /* Reads GL_RENDERER, GL_VERSION and the version numbers through the context's own loader. */
@@ -74,17 +118,19 @@ static void tl__read_strings(tl_context *ctx)
     }
 }
 
-/* Records why tl_context_create failed (thread-local) and hands it to the desc's logger. */
+/* Hands why tl_context_create failed to the desc's logger: there is no object to keep it. */
 #if defined(__GNUC__)
 __attribute__((format(printf, 3, 4)))
 #endif
 static tl_result tl__create_failed(const tl_context_desc *desc, tl_result r, const char *fmt, ...)
 {
+    if (!desc || !desc->logger.fn) return r;
+    char message[1024];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(tl__create_error, sizeof tl__create_error, fmt, ap);
+    vsnprintf(message, sizeof message, fmt, ap);
     va_end(ap);
-    if (desc && desc->logger.fn) desc->logger.fn(desc->logger.user, TL_LOG_ERROR, tl__create_error);
+    desc->logger.fn(desc->logger.user, TL_LOG_ERROR, message);
     return r;
 }
 
@@ -95,60 +141,84 @@ static inline tl_result tl__context_failed(tl_context *ctx, tl_result r)
     return r;
 }
 
-tl_result tl_context_create(const tl_context_desc *desc, tl_context **out)
+/* One back end (not DEFAULT or AUTO) into ctx; its message in ctx->error on failure. */
+static tl_result tl__create_with(tl_context *ctx, const tl__context_config *cfg, tl_context_backend backend)
 {
-    tl__create_error[0] = '\0';
-    if (out) *out = NULL;
-    if (!out) return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: NULL output");
+    const tl__backend_entry *b = &tl__backends[backend];
+    ctx->error[0] = '\0';
+    if (!b->ops) {
+        tl__context_error(ctx, "the %s back end is not built into this thinlight (%s)", b->label, b->how_to_build);
+        return TL_ERROR_UNSUPPORTED;
+    }
+    ctx->backend = backend;
+    ctx->ops = b->ops;
+    tl_result r = b->ops->create(ctx, cfg);
+    if (r != TL_OK) ctx->ops = NULL;
+    return r;
+}
+
+/* AUTO: the steps in order until one gives a context; otherwise every step's reason. */
+static tl_result tl__create_auto(tl_context *ctx, const tl__context_config *cfg)
+{
+    char reasons[sizeof ctx->error] = "";
+    size_t used = 0;
+    tl_result r = TL_ERROR_UNSUPPORTED;
+    for (size_t i = 0; i < sizeof tl__auto_steps / sizeof tl__auto_steps[0]; i++) {
+        tl__context_config step = *cfg;
+        step.egl_platform = tl__auto_steps[i].egl_platform;
+        step.egl_gpu_only = tl__auto_steps[i].egl_gpu_only;
+        r = tl__create_with(ctx, &step, tl__auto_steps[i].backend);
+        if (r == TL_OK) return TL_OK;
+        if (used < sizeof reasons)
+            used += (size_t)snprintf(reasons + used, sizeof reasons - used, "%s%s: %s", used ? "; " : "",
+                                     tl__auto_steps[i].label, ctx->error);
+    }
+    memcpy(ctx->error, reasons, sizeof reasons);
+    return r;
+}
+
+/* The descriptor's checks that need no back end; TL_OK or the failure, logged. */
+static tl_result tl__check_desc(const tl_context_desc *desc, const tl__context_config *cfg)
+{
     if (desc && !desc->allocator.alloc != !desc->allocator.free)
         return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT,
                                  "tl_context_create: the allocator needs both alloc and free, or neither");
-    tl__context_config cfg = tl__context_desc_defaults(desc);
-    if ((unsigned)cfg.backend >= TL_CONTEXT_BACKEND_COUNT_)
+    if ((unsigned)cfg->backend >= TL_CONTEXT_BACKEND_COUNT_)
         return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: unknown back end %d",
-                                 (int)cfg.backend);
-    if (cfg.major < 3 || (cfg.major == 3 && cfg.minor < 3) || cfg.minor < 0 || cfg.major > 4 ||
-        cfg.minor > 9)
+                                 (int)cfg->backend);
+    if ((unsigned)cfg->egl_platform >= TL_EGL_PLATFORM_COUNT_)
+        return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: unknown EGL platform %d",
+                                 (int)cfg->egl_platform);
+    if (cfg->major < 3 || (cfg->major == 3 && cfg->minor < 3) || cfg->minor < 0 || cfg->major > 4 ||
+        cfg->minor > 9)
         return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT,
                                  "tl_context_create: OpenGL %d.%d requested, core profiles are 3.3 to 4.6",
-                                 cfg.major, cfg.minor);
-    if (cfg.width > 65536 || cfg.height > 65536)
+                                 cfg->major, cfg->minor);
+    if (cfg->width > 65536 || cfg->height > 65536)
         return tl__create_failed(desc, TL_ERROR_LIMIT, "tl_context_create: %ux%u is beyond any back end's limit",
-                                 (unsigned)cfg.width, (unsigned)cfg.height);
+                                 (unsigned)cfg->width, (unsigned)cfg->height);
+    return TL_OK;
+}
+
+tl_result tl_context_create(const tl_context_desc *desc, tl_context **out)
+{
+    if (out) *out = NULL;
+    if (!out) return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: NULL output");
+    tl__context_config cfg = tl__context_desc_defaults(desc);
+    tl_result r = tl__check_desc(desc, &cfg);
+    if (r != TL_OK) return r;
 
     tl_context *ctx = tl__alloc_zeroed(&cfg.allocator, sizeof *ctx);
     if (!ctx) return tl__create_failed(desc, TL_ERROR_OUT_OF_MEMORY, "tl_context_create: out of memory");
     ctx->allocator = cfg.allocator;
     ctx->logger = cfg.logger;
-    ctx->backend = cfg.backend;
     ctx->width = cfg.width;
     ctx->height = cfg.height;
-
-    tl_result r = TL_ERROR_UNSUPPORTED;
-    switch (cfg.backend) {
-    case TL_CONTEXT_BACKEND_OSMESA:
-#if defined(TL_HAVE_OSMESA)
-        r = tl__osmesa_create(ctx, &cfg);
-#else
-        tl__context_error(ctx, "the OSMesa back end is not built into this thinlight "
-                               "(configure with -DTHINLIGHT_WITH_OSMESA=ON and libosmesa6-dev)");
-#endif
-        break;
-    case TL_CONTEXT_BACKEND_GLFW:
-#if defined(TL_HAVE_GLFW)
-        r = tl__glfw_create(ctx, &cfg);
-#else
-        tl__context_error(ctx, "the GLFW back end is not built into this thinlight "
-                               "(configure with -DTHINLIGHT_WITH_GLFW=ON and libglfw3-dev)");
-#endif
-        break;
-    default: break;
-    }
+    r = cfg.backend == TL_CONTEXT_BACKEND_AUTO ? tl__create_auto(ctx, &cfg) : tl__create_with(ctx, &cfg, cfg.backend);
     if (r != TL_OK) {
-        char ctx_error[sizeof ctx->error];
-        memcpy(ctx_error, ctx->error, sizeof ctx_error);
+        tl__create_failed(desc, r, "%s: %s", tl__backends[cfg.backend].label, ctx->error);
         tl__free(&cfg.allocator, ctx);
-        return tl__create_failed(desc, r, "%s: %s", tl__backend_name(cfg.backend), ctx_error);
+        return r;
     }
     tl__read_strings(ctx);
     *out = ctx;
@@ -158,62 +228,32 @@ tl_result tl_context_create(const tl_context_desc *desc, tl_context **out)
 tl_result tl_context_make_current(tl_context *ctx)
 {
     if (!ctx) {
-#if defined(TL_HAVE_OSMESA)
-        tl__osmesa_release();
-#endif
-#if defined(TL_HAVE_GLFW)
-        tl__glfw_release();
-#endif
+        for (size_t b = 0; b < TL_CONTEXT_BACKEND_COUNT_; b++)
+            if (tl__backends[b].ops) tl__backends[b].ops->release();
         return TL_OK;
     }
     ctx->error[0] = '\0';
-    switch (ctx->backend) {
-#if defined(TL_HAVE_OSMESA)
-    case TL_CONTEXT_BACKEND_OSMESA: return tl__context_failed(ctx, tl__osmesa_make_current(ctx));
-#endif
-#if defined(TL_HAVE_GLFW)
-    case TL_CONTEXT_BACKEND_GLFW: return tl__context_failed(ctx, tl__glfw_make_current(ctx));
-#endif
-    default: return TL_ERROR_UNSUPPORTED;
-    }
+    return tl__context_failed(ctx, ctx->ops->make_current(ctx));
 }
 
 tl_gl_proc tl_context_get_proc_address(tl_context *ctx, const char *name)
 {
     if (!ctx || !name) return NULL;
-    switch (ctx->backend) {
-#if defined(TL_HAVE_OSMESA)
-    case TL_CONTEXT_BACKEND_OSMESA: return tl__osmesa_proc(ctx, name);
-#endif
-#if defined(TL_HAVE_GLFW)
-    case TL_CONTEXT_BACKEND_GLFW: return tl__glfw_proc(ctx, name);
-#endif
-    default: return NULL;
-    }
+    return ctx->ops->proc(ctx, name);
 }
 
 tl_result tl_context_swap(tl_context *ctx)
 {
     if (!ctx) return TL_ERROR_INVALID_ARGUMENT;
     ctx->error[0] = '\0';
-#if defined(TL_HAVE_GLFW)
-    if (ctx->backend == TL_CONTEXT_BACKEND_GLFW) return tl__context_failed(ctx, tl__glfw_swap(ctx));
-#endif
-    return TL_OK; /* OSMesa renders straight into its buffer */
+    /* OSMesa renders straight into its buffer; EGL has no default framebuffer */
+    return ctx->ops->swap ? tl__context_failed(ctx, ctx->ops->swap(ctx)) : TL_OK;
 }
 
 void tl_context_destroy(tl_context *ctx)
 {
     if (!ctx) return;
-    switch (ctx->backend) {
-#if defined(TL_HAVE_OSMESA)
-    case TL_CONTEXT_BACKEND_OSMESA: tl__osmesa_destroy(ctx); break;
-#endif
-#if defined(TL_HAVE_GLFW)
-    case TL_CONTEXT_BACKEND_GLFW: tl__glfw_destroy(ctx); break;
-#endif
-    default: break;
-    }
+    ctx->ops->destroy(ctx);
     tl_allocator allocator = ctx->allocator;
     tl__free(&allocator, ctx);
 }
@@ -223,14 +263,13 @@ tl_gl_proc tl_context_proc_loader(void *ctx, const char *name)
     return tl_context_get_proc_address(ctx, name);
 }
 
-const char *tl_context_last_error(const tl_context *ctx)
-{
-    return ctx ? ctx->error : tl__create_error;
-}
+const char *tl_context_last_error(const tl_context *ctx) { return ctx ? ctx->error : ""; }
 
 const char *tl_context_renderer_string(const tl_context *ctx) { return ctx ? ctx->renderer : ""; }
 
 const char *tl_context_version_string(const tl_context *ctx) { return ctx ? ctx->version : ""; }
+
+const char *tl_context_platform_string(const tl_context *ctx) { return ctx ? ctx->platform : ""; }
 
 void tl_context_gl_version(const tl_context *ctx, int *major, int *minor)
 {
@@ -245,12 +284,53 @@ tl_context_backend tl_context_get_backend(const tl_context *ctx)
 
 void tl_context_get_size(const tl_context *ctx, uint32_t *width, uint32_t *height)
 {
-#if defined(TL_HAVE_GLFW)
-    if (ctx && ctx->backend == TL_CONTEXT_BACKEND_GLFW) {
-        tl__glfw_size(ctx, width, height);
+    if (ctx && ctx->ops->size) {
+        ctx->ops->size(ctx, width, height);
         return;
     }
-#endif
     if (width) *width = ctx ? ctx->width : 0;
     if (height) *height = ctx ? ctx->height : 0;
+}
+
+const char *tl_context_backend_name(tl_context_backend backend)
+{
+    return (unsigned)backend < TL_CONTEXT_BACKEND_COUNT_ ? tl__backends[backend].name : "unknown";
+}
+
+tl_result tl_context_backend_from_name(const char *name, tl_context_backend *backend)
+{
+    for (size_t b = 0; name && backend && b < TL_CONTEXT_BACKEND_COUNT_; b++)
+        if (strcmp(name, tl__backends[b].name) == 0) {
+            *backend = (tl_context_backend)b;
+            return TL_OK;
+        }
+    return TL_ERROR_INVALID_ARGUMENT;
+}
+
+bool tl_context_backend_available(tl_context_backend backend)
+{
+    if (backend == TL_CONTEXT_BACKEND_AUTO)
+        return tl__backends[TL_CONTEXT_BACKEND_OSMESA].ops || tl__backends[TL_CONTEXT_BACKEND_EGL].ops;
+    backend = tl__resolve_default(backend);
+    return (unsigned)backend < TL_CONTEXT_BACKEND_COUNT_ && tl__backends[backend].ops;
+}
+
+tl_result tl_context_egl_devices(tl_egl_device *devices, size_t capacity, size_t *count, const tl_logger *logger)
+{
+    if (!count) {
+        if (logger && logger->fn) logger->fn(logger->user, TL_LOG_ERROR, "tl_context_egl_devices: NULL count");
+        return TL_ERROR_INVALID_ARGUMENT;
+    }
+#if defined(TL_HAVE_EGL)
+    return tl__egl_devices(devices, capacity, count, logger);
+#else
+    (void)devices;
+    (void)capacity;
+    *count = 0;
+    if (logger && logger->fn)
+        logger->fn(logger->user, TL_LOG_ERROR,
+                   "tl_context_egl_devices: the EGL back end is not built into this thinlight (configure with "
+                   "-DTHINLIGHT_WITH_EGL=ON and libegl-dev)");
+    return TL_ERROR_UNSUPPORTED;
+#endif
 }

@@ -47,7 +47,7 @@ static GLFWwindow *tl__glfw_try(const tl__context_config *cfg, int major, int mi
     return glfwCreateWindow((int)cfg->width, (int)cfg->height, cfg->title, NULL, NULL);
 }
 
-tl_result tl__glfw_create(tl_context *ctx, const tl__context_config *cfg)
+static tl_result tl__glfw_create(tl_context *ctx, const tl__context_config *cfg)
 {
     static const int fallbacks[][2] = TL__CONTEXT_FALLBACKS;
     call_once(&tl__glfw_once, tl__glfw_init_lock);
@@ -99,10 +99,11 @@ tl_result tl__glfw_create(tl_context *ctx, const tl__context_config *cfg)
     ctx->impl = g;
     ctx->major = major;
     ctx->minor = minor;
+    snprintf(ctx->platform, sizeof ctx->platform, "GLFW window");
     return TL_OK;
 }
 
-tl_result tl__glfw_make_current(tl_context *ctx)
+static tl_result tl__glfw_make_current(tl_context *ctx)
 {
     tl__glfw *g = ctx->impl;
     glfwMakeContextCurrent(g->window);
@@ -113,7 +114,7 @@ tl_result tl__glfw_make_current(tl_context *ctx)
     return TL_OK;
 }
 
-void tl__glfw_release(void)
+static void tl__glfw_release(void)
 {
     /* Only meaningful while GLFW is initialised by us; the count is read under the lock. */
     call_once(&tl__glfw_once, tl__glfw_init_lock);
@@ -123,20 +124,20 @@ void tl__glfw_release(void)
     mtx_unlock(&tl__glfw_lock);
 }
 
-tl_gl_proc tl__glfw_proc(tl_context *ctx, const char *name)
+static tl_gl_proc tl__glfw_proc(tl_context *ctx, const char *name)
 {
     (void)ctx;
     return (tl_gl_proc)glfwGetProcAddress(name);
 }
 
-tl_result tl__glfw_swap(tl_context *ctx)
+static tl_result tl__glfw_swap(tl_context *ctx)
 {
     tl__glfw *g = ctx->impl;
     glfwSwapBuffers(g->window);
     return TL_OK;
 }
 
-void tl__glfw_size(const tl_context *ctx, uint32_t *width, uint32_t *height)
+static void tl__glfw_size(const tl_context *ctx, uint32_t *width, uint32_t *height)
 {
     const tl__glfw *g = ctx->impl;
     int w = 0, h = 0;
@@ -145,7 +146,7 @@ void tl__glfw_size(const tl_context *ctx, uint32_t *width, uint32_t *height)
     if (height) *height = (uint32_t)(h > 0 ? h : 0);
 }
 
-void tl__glfw_destroy(tl_context *ctx)
+static void tl__glfw_destroy(tl_context *ctx)
 {
     tl__glfw *g = ctx->impl;
     if (!g) return;
@@ -157,3 +158,13 @@ void tl__glfw_destroy(tl_context *ctx)
     if (--tl__glfw_users == 0) glfwTerminate();
     mtx_unlock(&tl__glfw_lock);
 }
+
+const tl__context_ops tl__glfw_ops = {
+    .create = tl__glfw_create,
+    .make_current = tl__glfw_make_current,
+    .release = tl__glfw_release,
+    .proc = tl__glfw_proc,
+    .swap = tl__glfw_swap,
+    .size = tl__glfw_size,
+    .destroy = tl__glfw_destroy,
+};

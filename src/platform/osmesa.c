@@ -26,7 +26,7 @@ static OSMesaContext tl__osmesa_try(int major, int minor)
     return OSMesaCreateContextAttribs(attribs, NULL);
 }
 
-tl_result tl__osmesa_create(tl_context *ctx, const tl__context_config *cfg)
+static tl_result tl__osmesa_create(tl_context *ctx, const tl__context_config *cfg)
 {
     static const int fallbacks[][2] = TL__CONTEXT_FALLBACKS;
     tl__osmesa *o = tl__alloc_zeroed(&ctx->allocator, sizeof *o);
@@ -89,10 +89,11 @@ tl_result tl__osmesa_create(tl_context *ctx, const tl__context_config *cfg)
     ctx->impl = o;
     ctx->major = major;
     ctx->minor = minor;
+    snprintf(ctx->platform, sizeof ctx->platform, "OSMesa");
     return TL_OK;
 }
 
-tl_result tl__osmesa_make_current(tl_context *ctx)
+static tl_result tl__osmesa_make_current(tl_context *ctx)
 {
     tl__osmesa *o = ctx->impl;
     if (!OSMesaMakeCurrent(o->context, o->buffer, GL_UNSIGNED_BYTE, (GLsizei)ctx->width,
@@ -103,18 +104,18 @@ tl_result tl__osmesa_make_current(tl_context *ctx)
     return TL_OK;
 }
 
-void tl__osmesa_release(void)
+static void tl__osmesa_release(void)
 {
     if (OSMesaGetCurrentContext()) OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
 }
 
-tl_gl_proc tl__osmesa_proc(tl_context *ctx, const char *name)
+static tl_gl_proc tl__osmesa_proc(tl_context *ctx, const char *name)
 {
     (void)ctx;
     return (tl_gl_proc)OSMesaGetProcAddress(name);
 }
 
-void tl__osmesa_destroy(tl_context *ctx)
+static void tl__osmesa_destroy(tl_context *ctx)
 {
     tl__osmesa *o = ctx->impl;
     if (!o) return;
@@ -124,3 +125,13 @@ void tl__osmesa_destroy(tl_context *ctx)
     tl__free(&ctx->allocator, o);
     ctx->impl = NULL;
 }
+
+const tl__context_ops tl__osmesa_ops = {
+    .create = tl__osmesa_create,
+    .make_current = tl__osmesa_make_current,
+    .release = tl__osmesa_release,
+    .proc = tl__osmesa_proc,
+    .swap = NULL,
+    .size = NULL,
+    .destroy = tl__osmesa_destroy,
+};

@@ -1,4 +1,4 @@
-/* Private: the context object shared by the back ends (osmesa.c, glfw.c) and context.c. */
+/* Private: the context object shared by the back ends (osmesa.c, egl.c, glfw.c) and context.c. */
 #ifndef TL_PLATFORM_PLATFORM_H
 #define TL_PLATFORM_PLATFORM_H
 
@@ -9,12 +9,16 @@
 
 #include "thinlight/context.h"
 
+typedef struct tl__context_ops tl__context_ops;
+
 struct tl_context {
     tl_context_backend backend;
+    const tl__context_ops *ops; /* the back end's functions */
     uint32_t width, height; /* requested default framebuffer size */
     int major, minor;       /* core version obtained */
     char renderer[128];     /* GL_RENDERER */
     char version[128];      /* GL_VERSION */
+    char platform[256];     /* tl_context_platform_string, written by the back end */
     char error[512];        /* last failure on this context */
     void *impl;             /* back-end state */
     tl_allocator allocator; /* from the desc; zeroed: malloc/free */
@@ -28,6 +32,9 @@ typedef struct tl__context_config {
     int major, minor;
     bool exact_version, debug, visible;
     const char *title;
+    tl_egl_platform egl_platform;
+    uint32_t egl_device;
+    bool egl_gpu_only; /* AUTO's first step: a GPU device or TL_ERROR_UNSUPPORTED, no surfaceless */
     tl_allocator allocator;
     tl_logger logger;
 } tl__context_config;
@@ -66,24 +73,30 @@ static inline void tl__free(const tl_allocator *a, void *ptr)
         free(ptr);
 }
 
-/* Each back end: create fills ctx->impl, major/minor and makes the context current; on failure it
- * leaves ctx->impl NULL, writes ctx->error and cleans up after itself. */
-#if defined(TL_HAVE_OSMESA)
-tl_result tl__osmesa_create(tl_context *ctx, const tl__context_config *cfg);
-tl_result tl__osmesa_make_current(tl_context *ctx);
-void tl__osmesa_release(void);
-tl_gl_proc tl__osmesa_proc(tl_context *ctx, const char *name);
-void tl__osmesa_destroy(tl_context *ctx);
-#endif
+/* One back end. create fills ctx->impl, major/minor and ctx->platform and makes the context
+ * current; on failure it leaves ctx->impl NULL, writes ctx->error and cleans up after itself.
+ * release makes no context of this back end current on the calling thread. swap and size may be
+ * NULL: nothing to present, and the size asked for. */
+struct tl__context_ops {
+    tl_result (*create)(tl_context *ctx, const tl__context_config *cfg);
+    tl_result (*make_current)(tl_context *ctx);
+    void (*release)(void);
+    tl_gl_proc (*proc)(tl_context *ctx, const char *name);
+    tl_result (*swap)(tl_context *ctx);
+    void (*size)(const tl_context *ctx, uint32_t *width, uint32_t *height);
+    void (*destroy)(tl_context *ctx);
+};
 
+#if defined(TL_HAVE_OSMESA)
+extern const tl__context_ops tl__osmesa_ops;
+#endif
 #if defined(TL_HAVE_GLFW)
-tl_result tl__glfw_create(tl_context *ctx, const tl__context_config *cfg);
-tl_result tl__glfw_make_current(tl_context *ctx);
-void tl__glfw_release(void);
-tl_gl_proc tl__glfw_proc(tl_context *ctx, const char *name);
-tl_result tl__glfw_swap(tl_context *ctx);
-void tl__glfw_size(const tl_context *ctx, uint32_t *width, uint32_t *height);
-void tl__glfw_destroy(tl_context *ctx);
+extern const tl__context_ops tl__glfw_ops;
+#endif
+#if defined(TL_HAVE_EGL)
+extern const tl__context_ops tl__egl_ops;
+/* tl_context_egl_devices for a build with EGL; messages go to `logger` (may be NULL). */
+tl_result tl__egl_devices(tl_egl_device *devices, size_t capacity, size_t *count, const tl_logger *logger);
 #endif
 
 #endif

@@ -1,4 +1,5 @@
-/* Shared by the GL tests: a headless OSMesa 4.5 core context with glad loaded through it. */
+/* Shared by the GL tests: a headless 4.5 core context (OSMesa, or the back end THINLIGHT_TEST_CONTEXT
+ * names: context_fixture.h) with glad loaded through it. */
 #ifndef TL_GL_FIXTURE_H
 #define TL_GL_FIXTURE_H
 
@@ -6,6 +7,7 @@
 #include <string.h>
 
 #include "gl/gl.h"
+#include "context_fixture.h"
 #include "thinlight/context.h"
 #include "tl_test.h"
 
@@ -23,8 +25,7 @@ static inline GLADapiproc tl_gl_fixture_load(void *user, const char *name)
 static inline bool tl_gl_fixture_open(tl_gl_fixture *f, uint32_t size)
 {
     memset(f, 0, sizeof *f);
-    tl_result r = tl_context_create(&(tl_context_desc){.width = size, .height = size}, &f->ctx);
-    if (r != TL_OK) fprintf(stderr, "tl_context_create: %s\n", tl_context_last_error(NULL));
+    tl_result r = tl_test_context_create(size, size, &f->ctx);
     TL_CHECK(r == TL_OK);
     if (r != TL_OK) return false;
     char msg[256];

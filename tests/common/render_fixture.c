@@ -1,6 +1,8 @@
 /* The renderer tests' shared context (render_fixture.h). */
 #include "render_fixture.h"
 
+#include "context_fixture.h"
+
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -23,10 +25,7 @@ static void destroy_context(void)
 int ensure_context(void)
 {
     if (g_ctx) return 1;
-    if (tl_context_create(&(tl_context_desc){.width = 64, .height = 64}, &g_ctx) != TL_OK) {
-        fprintf(stderr, "no GL context: %s\n", tl_context_last_error(NULL));
-        return 0;
-    }
+    if (tl_test_context_create(64, 64, &g_ctx) != TL_OK) return 0; /* the reason is printed */
     atexit(destroy_context);
     return 1;
 }

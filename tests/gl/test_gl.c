@@ -17,7 +17,10 @@ TL_TEST(gl_context_osmesa_core45)
     gl_env env;
     if (!gl_open(&env)) return;
     const GladGLContext *gl = &env.gl;
-    TL_CHECK(tl_context_get_backend(env.ctx) == TL_CONTEXT_BACKEND_OSMESA);
+    tl_context_backend expected = TL_CONTEXT_BACKEND_DEFAULT;
+    TL_CHECK(tl_test_context_backend(&expected));
+    if (expected == TL_CONTEXT_BACKEND_DEFAULT) expected = TL_CONTEXT_BACKEND_OSMESA;
+    if (expected != TL_CONTEXT_BACKEND_AUTO) TL_CHECK(tl_context_get_backend(env.ctx) == expected);
     GLint major = 0, minor = 0, mask = 0, max_tex = 0, max_rb = 0, max_draw = 0;
     gl->GetIntegerv(GL_MAJOR_VERSION, &major);
     gl->GetIntegerv(GL_MINOR_VERSION, &minor);

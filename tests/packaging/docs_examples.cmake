@@ -1,7 +1,7 @@
 # Every C example in the public headers (@code ... @endcode) and in README.md and docs/*.md
 # (```c blocks) compiles. A block with a main() is a whole program; any other block is a fragment:
 # its #include lines go to the top and the rest becomes the body of a function that declares the
-# names the fragments share (scene, rgba, my_loader) and returns an int.
+# names the fragments share (scene, rgba, my_loader, my_logger) and returns an int.
 #
 # Included by tests/CMakeLists.txt it adds the test; run with `cmake -P` it is the checker:
 #   -DSOURCE_DIR=<source tree> -DCC=<C compiler> -DWORK=<scratch dir>
@@ -24,6 +24,12 @@ if(CMAKE_SCRIPT_MODE_FILE)
   #include <thinlight/scene.h>
   #include <thinlight/version.h>
   static tl_gl_function my_loader(void *user, const char *name) { (void)user; (void)name; return NULL; }
+static void my_log(void *user, tl_log_level level, const char *message)
+{
+    (void)user;
+    if (level == TL_LOG_ERROR) fprintf(stderr, "%s\n", message);
+}
+static const tl_logger my_logger = {my_log, NULL};
 static tl_scene *scene;
 static uint8_t *rgba;
   ]=])

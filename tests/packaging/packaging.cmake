@@ -18,9 +18,9 @@
 #   packaging_config_version_same_major     find_package(thinlight <major>.<minor>) is found,
 #                                           <major + 1>.0 is not
 #   packaging_codec_only_c_compiler         a separate configure with THINLIGHT_WITH_RENDERER,
-#                                           _IO, _OSMESA, _GLFW off and no C++ compiler builds
+#                                           _IO, _OSMESA, _EGL, _GLFW off and no C++ compiler builds
 #                                           thinlight_codec, which needs libm and libc only
-#   packaging_renderer_without_optional_deps  THINLIGHT_WITH_IO/_OSMESA/_GLFW off: libthinlight
+#   packaging_renderer_without_optional_deps  THINLIGHT_WITH_IO/_OSMESA/_EGL/_GLFW off: libthinlight
 #                                           builds and needs none of their libraries
 #   version_header_library_and_project_agree  TL_VERSION_*, tl_version(), project(VERSION)
 #   getting_started_writes_png              docs/getting_started.c renders and writes a PNG
@@ -369,7 +369,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
   elseif(CHECK STREQUAL "codec_only_c_compiler" OR CHECK STREQUAL "no_optional_deps")
     # A configure of the source tree that must not need what the options turn off. No C++
     # compiler (a path that does not exist) and no pkg-config for the codec alone.
-    set(args -DTHINLIGHT_WITH_IO=OFF -DTHINLIGHT_WITH_OSMESA=OFF -DTHINLIGHT_WITH_GLFW=OFF
+    set(args -DTHINLIGHT_WITH_IO=OFF -DTHINLIGHT_WITH_OSMESA=OFF -DTHINLIGHT_WITH_EGL=OFF -DTHINLIGHT_WITH_GLFW=OFF
       -DTHINLIGHT_BUILD_TESTS=OFF -DTHINLIGHT_BUILD_EXAMPLES=OFF "-DCMAKE_CXX_COMPILER=${WORK}/no-c++")
     if(CHECK STREQUAL "codec_only_c_compiler")
       list(APPEND args -DTHINLIGHT_WITH_RENDERER=OFF "-DPKG_CONFIG_EXECUTABLE=${WORK}/no-pkg-config"

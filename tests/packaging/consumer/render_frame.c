@@ -47,8 +47,7 @@ static int check_context_allocator_and_logger(void)
                             .logger = {count_log, &c}};
     int ok = 1;
     desc.gl_major = 2; /* below 3.3: refused before anything is allocated */
-    if (tl_context_create(&desc, &ctx) != TL_ERROR_INVALID_ARGUMENT || ctx || c.logged != 1 ||
-        strcmp(c.last, tl_context_last_error(NULL)) != 0) {
+    if (tl_context_create(&desc, &ctx) != TL_ERROR_INVALID_ARGUMENT || ctx || c.logged != 1 || !c.last[0]) {
         fprintf(stderr, "a refused version was not reported through the logger\n");
         ok = 0;
     }
@@ -61,7 +60,7 @@ static int check_context_allocator_and_logger(void)
     desc.allocator.free = count_free;
     tl_result r = tl_context_create(&desc, &ctx);
     if (r != TL_OK) {
-        fprintf(stderr, "context with an allocator: %s: %s\n", tl_result_string(r), tl_context_last_error(NULL));
+        fprintf(stderr, "context with an allocator: %s: %s\n", tl_result_string(r), c.last);
         return 0;
     }
     tl_context_destroy(ctx);
@@ -88,9 +87,10 @@ int main(void)
     static float hdr[W * H * 4];
     int ok = 0;
 
-    tl_result res = tl_context_create(&(tl_context_desc){.width = W, .height = H}, &ctx);
+    counts c = {0};
+    tl_result res = tl_context_create(&(tl_context_desc){.width = W, .height = H, .logger = {count_log, &c}}, &ctx);
     if (res != TL_OK) {
-        fprintf(stderr, "context: %s: %s\n", tl_result_string(res), tl_context_last_error(NULL));
+        fprintf(stderr, "context: %s: %s\n", tl_result_string(res), c.last);
         return 1;
     }
     res = tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 8, .detail = 1}, &scene);
