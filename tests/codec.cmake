@@ -40,6 +40,15 @@ tl_add_test(test_oct_extreme SOURCES test_oct_extreme.c LABELS codec TIMEOUT 120
     oct_bits_out_of_range_clamped
     oct_extreme_inputs_never_nan_or_inf)
 
+tl_add_test(test_oct_grid SOURCES test_oct_grid.c LABELS codec TIMEOUT 240
+  CASES
+    oct12_axis_normals_exact
+    oct_axis_normals_exact_every_budget
+    oct_zero_vector_decodes_exactly_positive_z
+    oct_unused_code_decodes_as_top
+    oct_odd_grid_vs_even_grid_error
+    oct_even_grid_exhaustive_decode_encode_idempotent)
+
 tl_add_test(test_half_gloss_rt0 SOURCES test_half_gloss_rt0.c LABELS codec TIMEOUT 120
   CASES
     half_all_65536_round_trip

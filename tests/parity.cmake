@@ -15,6 +15,7 @@ if(TARGET thinlight_platform AND TARGET thinlight_gl AND THINLIGHT_WITH_OSMESA)
     parity_oct12_decode
     parity_oct16_decode
     parity_oct_extreme_cases
+    parity_oct_axes_exact
     parity_rt0_rgba8
     parity_rt0_rgb10a2
     parity_gloss8

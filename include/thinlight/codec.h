@@ -49,7 +49,10 @@ TL_API void tl_oct_unproject(const float p[2], float n[3]);
 
 /**
  * Octahedral code with `bits` per component (TL_OCT_MIN_BITS..TL_OCT_MAX_BITS): u in the low
- * `bits` bits, v in the next `bits` bits. Component value k stands for -1 + 2k / (2^bits - 1).
+ * `bits` bits, v in the next `bits` bits. Each component lies on an odd grid of 2^bits - 1
+ * levels: code k (0..2^bits - 2) stands for -1 + 2k / (2^bits - 2), so code 2^(bits-1) - 1 is
+ * exactly 0 and the ends are exactly -1 and +1; +-X, +-Y, +-Z (and the zero vector, as +Z)
+ * decode exactly. The code 2^bits - 1 is never produced and decodes like 2^bits - 2.
  * Plain rounding to the nearest code of each component.
  */
 TL_API uint32_t tl_oct_encode(const float n[3], uint32_t bits);
@@ -65,7 +68,9 @@ TL_API void tl_oct_encode_precise_n(const float *n, uint32_t *codes, size_t coun
 /** Batch tl_oct_decode: `codes` holds `count` codes, `n` receives `count` xyz triples. */
 TL_API void tl_oct_decode_n(const uint32_t *codes, float *n, size_t count, uint32_t bits);
 
-/** Other 2-component unit-vector encodings, kept for comparison in the codec report. */
+/** Other 2-component unit-vector encodings, kept for comparison in the codec report. Lambert and
+ *  stereographic quantise on the octahedral (odd) grid; spherical on its own unorm grid of
+ *  2^bits levels per component. */
 typedef enum tl_normal_encoding {
     TL_NORMAL_DEFAULT = 0,     /**< = TL_NORMAL_OCT_PRECISE */
     TL_NORMAL_OCT,             /**< octahedral, plain rounding */
@@ -74,6 +79,10 @@ typedef enum tl_normal_encoding {
     TL_NORMAL_LAMBERT,         /**< Lambert azimuthal equal-area ("spheremap"); full sphere */
     TL_NORMAL_STEREOGRAPHIC,   /**< stereographic from the south pole; upper hemisphere only,
                                     lower-hemisphere inputs are clamped to the equator */
+    TL_NORMAL_OCT_EVEN,        /**< octahedral, plain rounding, on the even grid of 2^bits levels
+                                    (k stands for -1 + 2k / (2^bits - 1); no exact 0, so the axes
+                                    and +Z are never exact): the layout before the odd grid */
+    TL_NORMAL_OCT_PRECISE_EVEN, /**< octahedral, best of 4 candidates, on the even grid */
     TL_NORMAL_ENCODING_COUNT_  /**< number of values (not an encoding) */
 } tl_normal_encoding;
 
