@@ -188,6 +188,15 @@ float tl_gloss_to_specular_power(float gloss)
     return exp2(e);
 }
 
+// GGX alpha = max((1 - g)^2, 2^-7), the GGX model's gloss mapping (codec.h); bit-exact with C.
+float tl_gloss_to_ggx_alpha(float gloss)
+{
+    float g = gloss > 0.0 ? (gloss < 1.0 ? gloss : 1.0) : 0.0;
+    precise float r = 1.0 - g;
+    precise float a = r * r;
+    return a > 0.0078125 ? a : 0.0078125;
+}
+
 // ---- RT0 -----------------------------------------------------------------------------------
 
 // RGBA8: R = u[11:4], G = v[11:4], B = u[3:0] << 4 | v[3:0], A = gloss8 (bytes as uint).

@@ -114,12 +114,20 @@ TL_API void tl_normal_decode_n(tl_normal_encoding encoding, const uint32_t *code
 TL_API float tl_gloss_to_specular_power(float gloss);
 /** Inverse of tl_gloss_to_specular_power (power clamped to [2, 4096]). */
 TL_API float tl_specular_power_to_gloss(float power);
+/** Smallest GGX alpha of the gloss mapping, 2^-7: alpha^2 = 2^-14 is FP16's smallest normal number,
+ *  and the peak of the lobe's weight, 1 / (4 alpha^2), equals the renderer's per-light clamp 4096. */
+#define TL_GGX_MIN_ALPHA 0.0078125f
+
 /**
- * GGX alpha (roughness squared in the usual perceptual parameterisation) of the same lobe width:
- * alpha = sqrt(2 / (power + 2)), the Blinn-Phong/Beckmann equivalence. Monotonic decreasing.
+ * The one gloss mapping of the GGX model: alpha = max((1 - gloss)^2, TL_GGX_MIN_ALPHA), i.e. gloss
+ * is one minus the perceptual roughness, so a glTF material (stored as gloss = 1 - roughness)
+ * gets glTF's alpha = roughness^2 (down to roughness sqrt(TL_GGX_MIN_ALPHA) = 0.088; every gloss
+ * above 0.9116 is the smoothest lobe). Gloss is clamped to [0,1]; NaN counts as 0. Monotonic
+ * non-increasing, alpha 1 at gloss 0.
  */
 TL_API float tl_gloss_to_ggx_alpha(float gloss);
-/** Inverse of tl_gloss_to_ggx_alpha. */
+/** Inverse of tl_gloss_to_ggx_alpha over alpha in [TL_GGX_MIN_ALPHA, 1]: 1 - sqrt(alpha), with alpha
+ *  clamped to [0, 1]; NaN means the smoothest (gloss 1). */
 TL_API float tl_ggx_alpha_to_gloss(float alpha);
 /** Unsigned-normalised quantisation of gloss to `bits` (1..16): round(clamp(g) * (2^bits - 1)). */
 TL_API uint32_t tl_gloss_encode(float gloss, uint32_t bits);
