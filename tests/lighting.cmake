@@ -18,6 +18,7 @@ tl_add_test(test_lighting_ref SOURCES ${CMAKE_CURRENT_LIST_DIR}/test_lighting_re
     sphere_representative_point_vs_monte_carlo
     ggx_two_specular_sums_are_exact
     ggx_punctual_diffuse_equals_blinn_phong
+    ggx_metallic_roughness_surface
     ggx_extreme_cases_finite)
 
 add_executable(lighting_doc ${CMAKE_CURRENT_LIST_DIR}/lighting_doc.c)

@@ -214,6 +214,32 @@ static void ggx_punctual_diffuse_equals_blinn_phong(void)
     TL_CHECK_EQ_U(differ, 0);
 }
 
+/* A metal's specular colour is its base colour (no diffuse), a dielectric's F0 0.04; a glTF
+ * roughness r becomes alpha = r^2 through gloss = 1 - r (down to the alpha floor); and a lit
+ * pixel of each behaves accordingly. */
+static void ggx_metallic_roughness_surface(void)
+{
+    const double base[3] = {0.9, 0.6, 0.3}, n[3] = {0.0, 0.0, 1.0}, p[3] = {0.0, 0.0, -2.0}, ambient[3] = {0};
+    tl_ref_surface metal, plastic;
+    tl_ref_surface_metallic_roughness(base, 1.0, 0.5, &metal);
+    tl_ref_surface_metallic_roughness(base, 0.0, 0.5, &plastic);
+    for (int i = 0; i < 3; i++) {
+        TL_CHECK(metal.specular[i] == base[i] && metal.albedo[i] == 0.0);
+        TL_CHECK(fabs(plastic.specular[i] - 0.04) < 1e-15 && plastic.albedo[i] == base[i]);
+    }
+    TL_CHECK(fabs(tl_ref_ggx_alpha(metal.gloss) - 0.25) < 1e-15);
+    TL_CHECK(tl_ref_ggx_alpha(1.0 - 0.05) == TL_REF_GGX_MIN_ALPHA);
+    /* a light at the mirror position of the eye: the metal's highlight is tinted by its base colour */
+    tl_ref_light l = {.type = TL_REF_LIGHT_POINT, .position = {0.0, 0.0, 0.0}, .color = {1.0, 1.0, 1.0}, .range = 20.0};
+    double cm[3], cp[3];
+    tl_ref_shade(TL_REF_MODEL_GGX, &metal, p, n, &l, 1, ambient, cm);
+    tl_ref_shade(TL_REF_MODEL_GGX, &plastic, p, n, &l, 1, ambient, cp);
+    printf("  head-on, roughness 0.5: metal (%.4f %.4f %.4f), dielectric (%.4f %.4f %.4f)\n", cm[0], cm[1], cm[2], cp[0],
+           cp[1], cp[2]);
+    TL_CHECK(fabs(cm[1] / cm[0] - base[1] / base[0]) < 1e-12 && fabs(cm[2] / cm[0] - base[2] / base[0]) < 1e-12);
+    TL_CHECK(cp[0] > cp[1] && cp[1] > cp[2]); /* diffuse base colour plus a white highlight */
+}
+
 static int finite_nonneg(const double *t, int count)
 {
     for (int i = 0; i < count; i++)
@@ -272,6 +298,7 @@ static const tl_test_case cases[] = {
     {"sphere_representative_point_vs_monte_carlo", sphere_representative_point_vs_monte_carlo},
     {"ggx_two_specular_sums_are_exact", ggx_two_specular_sums_are_exact},
     {"ggx_punctual_diffuse_equals_blinn_phong", ggx_punctual_diffuse_equals_blinn_phong},
+    {"ggx_metallic_roughness_surface", ggx_metallic_roughness_surface},
     {"ggx_extreme_cases_finite", ggx_extreme_cases_finite},
 };
 

@@ -20,6 +20,19 @@ static int unit3(const double a[3], double min_len, double out[3])
     return 1;
 }
 
+void tl_ref_surface_metallic_roughness(const double base[3], double metallic, double roughness,
+                                       tl_ref_surface *out)
+{
+    double m = clamp01(metallic);
+    for (int i = 0; i < 3; i++) {
+        out->albedo[i] = base[i] * (1.0 - m);
+        out->specular[i] = 0.04 + (base[i] - 0.04) * m;
+        out->emissive[i] = 0.0;
+    }
+    out->gloss = 1.0 - clamp01(roughness);
+    out->occlusion = 1.0;
+}
+
 /* ---- gloss mappings ---------------------------------------------------------------------------- */
 
 double tl_ref_specular_power(double gloss) { return exp2(1.0 + 11.0 * clamp01(gloss)); }

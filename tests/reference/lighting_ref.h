@@ -51,6 +51,12 @@ typedef struct tl_ref_surface {
     double occlusion;   /* scales the ambient term */
 } tl_ref_surface;
 
+/* glTF's metallic-roughness material as the renderer converts it (docs/gltf.md): albedo = base
+ * (1 - metallic), F0 = mix(0.04, base, metallic), gloss = 1 - roughness (both clamped to [0,1]);
+ * metals take F0 from the base colour. Emissive 0, occlusion 1. */
+void tl_ref_surface_metallic_roughness(const double base[3], double metallic, double roughness,
+                                       tl_ref_surface *out);
+
 /* ---- gloss mappings (codec.h) ---------------------------------------------------------------- */
 
 /* Blinn-Phong exponent 2^(1 + 11 gloss), gloss clamped to [0,1]. */
