@@ -36,8 +36,8 @@
 #define DOC_END "<!-- codec-report:end -->"
 #define PLOT_MAX_BYTES (300u * 1024u)
 #define MAX_RECORDS 64u
-/* normal 19 + albedo 6 + depth 9 + gloss 2 */
-#define VARIANT_COUNT 36u
+/* normal 25 (oct 10, oct even grid 6, others 9) + albedo 6 + depth 9 + gloss 2 */
+#define VARIANT_COUNT 42u
 _Static_assert(VARIANT_COUNT <= MAX_RECORDS, "records array too small");
 #define EXIT_BAD_INPUT 1
 #define EXIT_BAD_USAGE 2
@@ -231,10 +231,29 @@ static void normal_decode(void *ctx)
     else tl_oct_decode_n(j->codes, j->out, j->count, j->bits);
 }
 
-static void measure_normal(report *r, normal_job *j, const char *name, const char *note)
+/* Worst error over the axis directions of the job's domain (+-X, +-Y, +Z, and -Z unless the
+ * inputs are upper-hemisphere only): floors and walls are exactly such normals. */
+static double axis_error(const normal_job *j, int upper_only)
+{
+    static const float axes[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    tl_normal_encoding e = j->method == NORMAL_OCT_PLAIN     ? TL_NORMAL_OCT
+                           : j->method == NORMAL_OCT_PRECISE ? TL_NORMAL_OCT_PRECISE
+                                                             : j->encoding;
+    double worst = 0.0;
+    for (int a = 0; a < (upper_only ? 5 : 6); a++) {
+        float d[3];
+        tl_normal_decode(e, tl_normal_encode(e, axes[a], j->bits), j->bits, d);
+        worst = fmax(worst, tl_angle_deg(axes[a], d));
+    }
+    return worst;
+}
+
+static void measure_normal(report *r, normal_job *j, const char *name, const char *note, int upper_only)
 {
     record *rec = begin_record(r, KIND_NORMAL, 2 * j->bits, "%s", name);
-    snprintf(rec->note, sizeof rec->note, "%s", note);
+    double axes = axis_error(j, upper_only);
+    if (axes == 0.0) snprintf(rec->note, sizeof rec->note, "%s; axes exact", note);
+    else snprintf(rec->note, sizeof rec->note, "%s; axes %.3g deg", note, axes);
     rec->ns_encode = time_per_element(normal_encode, j, j->count, r->repeats);
     rec->ns_decode = time_per_element(normal_decode, j, j->count, r->repeats);
     for (size_t i = 0; i < j->count; i++) tl_stats_add(r->stats, tl_angle_deg(j->in + 3 * i, j->out + 3 * i));
@@ -271,7 +290,17 @@ static int run_normals(report *r)
                                 sphere, codes, out, n};
                 char name[48];
                 snprintf(name, sizeof name, "oct%u%s", (unsigned)oct_bits[b], precise ? "-precise" : "");
-                measure_normal(r, &j, name, precise ? "best of 4 candidates" : "round to nearest");
+                measure_normal(r, &j, name, precise ? "best of 4 candidates" : "round to nearest", 0);
+            }
+        }
+        /* The even grid (2^bits levels, no exact 0) the codec used before the odd one. */
+        for (size_t b = 0; b < sizeof other_bits / sizeof other_bits[0]; b++) {
+            for (int precise = 0; precise < 2; precise++) {
+                normal_job j = {NORMAL_OTHER, precise ? TL_NORMAL_OCT_PRECISE_EVEN : TL_NORMAL_OCT_EVEN,
+                                other_bits[b], sphere, codes, out, n};
+                char name[48];
+                snprintf(name, sizeof name, "oct%u%s-even", (unsigned)other_bits[b], precise ? "-precise" : "");
+                measure_normal(r, &j, name, precise ? "best of 4, even grid" : "round to nearest, even grid", 0);
             }
         }
         for (size_t e = 0; e < sizeof others / sizeof others[0]; e++) {
@@ -281,7 +310,7 @@ static int run_normals(report *r)
                 char name[48];
                 snprintf(name, sizeof name, "%s%u%s", tl_normal_encoding_name(others[e]), (unsigned)other_bits[b],
                          stereo ? "-upper" : "");
-                measure_normal(r, &j, name, stereo ? "upper hemisphere (z >= 0) inputs only" : "full sphere");
+                measure_normal(r, &j, name, stereo ? "upper hemisphere (z >= 0) inputs only" : "full sphere", stereo);
             }
         }
     }
@@ -693,6 +722,7 @@ static int family_of(const record *rec)
     for (int i = 0; i < (int)(sizeof families / sizeof families[0]); i++) {
         size_t n = strlen(families[i]);
         if (strncmp(rec->name, families[i], n) == 0) {
+            if (i == 0 && strstr(rec->name, "even")) return strstr(rec->name, "precise") ? 13 : 12;
             if (i == 0 && strstr(rec->name, "precise")) return 11;
             return i + 1;
         }
@@ -819,7 +849,8 @@ static int write_plot_data(FILE *f, const void *ctx)
 static int write_plot_script(FILE *f, const void *ctx)
 {
     static const char *const colours[] = {"#7b3294", "#1a9850", "#e66101", "#8c510a", "#d7191c", "#2166ac",
-                                          "#d7191c", "#1a9850", "#7b3294", "#2166ac", "#0571b0"};
+                                          "#d7191c", "#1a9850", "#7b3294", "#2166ac", "#0571b0", "#bababa",
+                                          "#878787"};
     const tl_tool_plot *plot = ctx;
     const plot_layout *L = plot->user;
     const report *r = L->r;

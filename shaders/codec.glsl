@@ -73,15 +73,22 @@ vec3 tl_oct_unproject_raw(vec2 p)
     return vec3(u, v, w);
 }
 
-float tl_oct_dequant(uint k, uint maxv, float inv_max)
+// The odd grid of oct_core.h: codes 0..top with top = 2^bits - 2, code k standing for
+// (2k - top) / top; the centre is exactly 0 and the ends exactly -1 and +1.
+uint tl_oct_top(uint bits)
 {
-    precise float f = float(int(2u * k) - int(maxv)) * inv_max;
+    return (1u << bits) - 2u;
+}
+
+float tl_oct_dequant(uint k, uint top, float inv_top)
+{
+    precise float f = float(int(2u * k) - int(top)) * inv_top;
     return f;
 }
 
-uint tl_oct_quant(float p, float half_max)
+uint tl_oct_quant(float p, float half_top)
 {
-    precise float q = (p + 1.0) * half_max;
+    precise float q = (p + 1.0) * half_top;
     precise float r = q + 0.5;
     return uint(int(r));
 }
@@ -95,10 +102,10 @@ vec3 tl_oct_input(vec3 n)
 uint tl_oct_encode(vec3 n, uint bits)
 {
     vec3 v = tl_oct_input(n);
-    uint maxv = (1u << bits) - 1u;
-    float half_max = 0.5 * float(maxv);
+    uint top = tl_oct_top(bits);
+    float half_top = 0.5 * float(top);
     vec2 p = tl_oct_project_raw(v);
-    return tl_oct_quant(p.x, half_max) | (tl_oct_quant(p.y, half_max) << bits);
+    return tl_oct_quant(p.x, half_top) | (tl_oct_quant(p.y, half_top) << bits);
 }
 
 float tl_oct_candidate_error(vec3 n, float cu, float cv)
@@ -116,19 +123,19 @@ float tl_oct_candidate_error(vec3 n, float cu, float cv)
 uint tl_oct_encode_precise(vec3 n, uint bits)
 {
     vec3 v = tl_oct_input(n);
-    uint maxv = (1u << bits) - 1u;
-    float half_max = 0.5 * float(maxv);
-    float inv_max = 1.0 / float(maxv);
+    uint top = tl_oct_top(bits);
+    float half_top = 0.5 * float(top);
+    float inv_top = 1.0 / float(top);
     vec2 p = tl_oct_project_raw(v);
-    precise float qu = (p.x + 1.0) * half_max;
-    precise float qv = (p.y + 1.0) * half_max;
-    uint u0 = min(uint(int(qu)), maxv - 1u);
-    uint v0 = min(uint(int(qv)), maxv - 1u);
+    precise float qu = (p.x + 1.0) * half_top;
+    precise float qv = (p.y + 1.0) * half_top;
+    uint u0 = min(uint(int(qu)), top - 1u);
+    uint v0 = min(uint(int(qv)), top - 1u);
     // Per component, a = the plain-rounded code (always u0 or u0 + 1), b = the other one.
-    uint ua = tl_oct_quant(p.x, half_max), va = tl_oct_quant(p.y, half_max);
+    uint ua = tl_oct_quant(p.x, half_top), va = tl_oct_quant(p.y, half_top);
     uint ub = (2u * u0 + 1u) - ua, vb = (2u * v0 + 1u) - va;
-    float cua = tl_oct_dequant(ua, maxv, inv_max), cub = tl_oct_dequant(ub, maxv, inv_max);
-    float cva = tl_oct_dequant(va, maxv, inv_max), cvb = tl_oct_dequant(vb, maxv, inv_max);
+    float cua = tl_oct_dequant(ua, top, inv_top), cub = tl_oct_dequant(ub, top, inv_top);
+    float cva = tl_oct_dequant(va, top, inv_top), cvb = tl_oct_dequant(vb, top, inv_top);
     // Fixed order, the plain-rounded candidate first; a later one wins only when strictly better
     // (exact ties on the square's outer edge keep the input's zero sign).
     float best = tl_oct_candidate_error(v, cua, cva);
@@ -142,12 +149,14 @@ uint tl_oct_encode_precise(vec3 n, uint bits)
     return bu | (bv << bits);
 }
 
+// Components are clamped to the grid (the unused code 2^bits - 1 decodes as top).
 vec3 tl_oct_decode(uint code, uint bits)
 {
-    uint maxv = (1u << bits) - 1u;
-    float inv_max = 1.0 / float(maxv);
-    float u = tl_oct_dequant(code & maxv, maxv, inv_max);
-    float v = tl_oct_dequant((code >> bits) & maxv, maxv, inv_max);
+    uint mask = (1u << bits) - 1u;
+    uint top = tl_oct_top(bits);
+    float inv_top = 1.0 / float(top);
+    float u = tl_oct_dequant(min(code & mask, top), top, inv_top);
+    float v = tl_oct_dequant(min((code >> bits) & mask, top), top, inv_top);
     vec3 n = tl_oct_unproject_raw(vec2(u, v));
     tl_normalize3(n);
     return n;
@@ -177,6 +186,15 @@ float tl_gloss_to_specular_power(float gloss)
     float g = gloss > 0.0 ? (gloss < 1.0 ? gloss : 1.0) : 0.0;
     precise float e = 1.0 + 11.0 * g;
     return exp2(e);
+}
+
+// GGX alpha = max((1 - g)^2, 2^-7), the GGX model's gloss mapping (codec.h); bit-exact with C.
+float tl_gloss_to_ggx_alpha(float gloss)
+{
+    float g = gloss > 0.0 ? (gloss < 1.0 ? gloss : 1.0) : 0.0;
+    precise float r = 1.0 - g;
+    precise float a = r * r;
+    return a > 0.0078125 ? a : 0.0078125;
 }
 
 // ---- RT0 -----------------------------------------------------------------------------------

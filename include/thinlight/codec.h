@@ -49,7 +49,10 @@ TL_API void tl_oct_unproject(const float p[2], float n[3]);
 
 /**
  * Octahedral code with `bits` per component (TL_OCT_MIN_BITS..TL_OCT_MAX_BITS): u in the low
- * `bits` bits, v in the next `bits` bits. Component value k stands for -1 + 2k / (2^bits - 1).
+ * `bits` bits, v in the next `bits` bits. Each component lies on an odd grid of 2^bits - 1
+ * levels: code k (0..2^bits - 2) stands for -1 + 2k / (2^bits - 2), so code 2^(bits-1) - 1 is
+ * exactly 0 and the ends are exactly -1 and +1; +-X, +-Y, +-Z (and the zero vector, as +Z)
+ * decode exactly. The code 2^bits - 1 is never produced and decodes like 2^bits - 2.
  * Plain rounding to the nearest code of each component.
  */
 TL_API uint32_t tl_oct_encode(const float n[3], uint32_t bits);
@@ -65,7 +68,9 @@ TL_API void tl_oct_encode_precise_n(const float *n, uint32_t *codes, size_t coun
 /** Batch tl_oct_decode: `codes` holds `count` codes, `n` receives `count` xyz triples. */
 TL_API void tl_oct_decode_n(const uint32_t *codes, float *n, size_t count, uint32_t bits);
 
-/** Other 2-component unit-vector encodings, kept for comparison in the codec report. */
+/** Other 2-component unit-vector encodings, kept for comparison in the codec report. Lambert and
+ *  stereographic quantise on the octahedral (odd) grid; spherical on its own unorm grid of
+ *  2^bits levels per component. */
 typedef enum tl_normal_encoding {
     TL_NORMAL_DEFAULT = 0,     /**< = TL_NORMAL_OCT_PRECISE */
     TL_NORMAL_OCT,             /**< octahedral, plain rounding */
@@ -74,6 +79,10 @@ typedef enum tl_normal_encoding {
     TL_NORMAL_LAMBERT,         /**< Lambert azimuthal equal-area ("spheremap"); full sphere */
     TL_NORMAL_STEREOGRAPHIC,   /**< stereographic from the south pole; upper hemisphere only,
                                     lower-hemisphere inputs are clamped to the equator */
+    TL_NORMAL_OCT_EVEN,        /**< octahedral, plain rounding, on the even grid of 2^bits levels
+                                    (k stands for -1 + 2k / (2^bits - 1); no exact 0, so the axes
+                                    and +Z are never exact): the layout before the odd grid */
+    TL_NORMAL_OCT_PRECISE_EVEN, /**< octahedral, best of 4 candidates, on the even grid */
     TL_NORMAL_ENCODING_COUNT_  /**< number of values (not an encoding) */
 } tl_normal_encoding;
 
@@ -105,12 +114,20 @@ TL_API void tl_normal_decode_n(tl_normal_encoding encoding, const uint32_t *code
 TL_API float tl_gloss_to_specular_power(float gloss);
 /** Inverse of tl_gloss_to_specular_power (power clamped to [2, 4096]). */
 TL_API float tl_specular_power_to_gloss(float power);
+/** Smallest GGX alpha of the gloss mapping, 2^-7: alpha^2 = 2^-14 is FP16's smallest normal number,
+ *  and the peak of the lobe's weight, 1 / (4 alpha^2), equals the renderer's per-light clamp 4096. */
+#define TL_GGX_MIN_ALPHA 0.0078125f
+
 /**
- * GGX alpha (roughness squared in the usual perceptual parameterisation) of the same lobe width:
- * alpha = sqrt(2 / (power + 2)), the Blinn-Phong/Beckmann equivalence. Monotonic decreasing.
+ * The one gloss mapping of the GGX model: alpha = max((1 - gloss)^2, TL_GGX_MIN_ALPHA), i.e. gloss
+ * is one minus the perceptual roughness, so a glTF material (stored as gloss = 1 - roughness)
+ * gets glTF's alpha = roughness^2 (down to roughness sqrt(TL_GGX_MIN_ALPHA) = 0.088; every gloss
+ * above 0.9116 is the smoothest lobe). Gloss is clamped to [0,1]; NaN counts as 0. Monotonic
+ * non-increasing, alpha 1 at gloss 0.
  */
 TL_API float tl_gloss_to_ggx_alpha(float gloss);
-/** Inverse of tl_gloss_to_ggx_alpha. */
+/** Inverse of tl_gloss_to_ggx_alpha over alpha in [TL_GGX_MIN_ALPHA, 1]: 1 - sqrt(alpha), with alpha
+ *  clamped to [0, 1]; NaN means the smoothest (gloss 1). */
 TL_API float tl_ggx_alpha_to_gloss(float alpha);
 /** Unsigned-normalised quantisation of gloss to `bits` (1..16): round(clamp(g) * (2^bits - 1)). */
 TL_API uint32_t tl_gloss_encode(float gloss, uint32_t bits);

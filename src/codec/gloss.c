@@ -1,4 +1,4 @@
-/* The one gloss mapping: gloss in [0,1] <-> Blinn-Phong power 2^(1 + 11 g) <-> GGX alpha. */
+/* The gloss mappings: gloss in [0,1] <-> Blinn-Phong power 2^(1 + 11 g), and <-> GGX alpha (1 - g)^2. */
 #include <math.h>
 
 #include "thinlight/codec.h"
@@ -14,14 +14,17 @@ float tl_specular_power_to_gloss(float power)
     return tl__clamp01((log2f(power) - 1.0f) / 11.0f);
 }
 
-float tl_gloss_to_ggx_alpha(float gloss) { return sqrtf(2.0f / (tl_gloss_to_specular_power(gloss) + 2.0f)); }
+float tl_gloss_to_ggx_alpha(float gloss)
+{
+    float r = 1.0f - tl__clamp01(gloss);
+    float a = r * r;
+    return a > TL_GGX_MIN_ALPHA ? a : TL_GGX_MIN_ALPHA;
+}
 
 float tl_ggx_alpha_to_gloss(float alpha)
 {
-    /* alpha = sqrt(2 / (p + 2))  =>  p = 2 / alpha^2 - 2; NaN and alpha <= 0 mean the smoothest */
-    if (!(alpha > 0.0f)) return 1.0f;
-    if (alpha >= 1.0f) return 0.0f;
-    return tl_specular_power_to_gloss(2.0f / (alpha * alpha) - 2.0f);
+    /* alpha = (1 - g)^2  =>  g = 1 - sqrt(alpha); NaN clamps to 0, the smoothest */
+    return 1.0f - sqrtf(tl__clamp01(alpha));
 }
 
 uint32_t tl_gloss_encode(float gloss, uint32_t bits)

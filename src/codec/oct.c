@@ -75,23 +75,35 @@ void tl_oct_unproject(const float p[2], float n[3])
     n[2] = z;
 }
 
-uint32_t tl_oct_encode(const float n[3], uint32_t bits)
+uint32_t tl__oct_encode_grid(const float n[3], uint32_t bits, uint32_t top, int precise)
 {
     float v[3];
     tl__oct_input(n, v);
-    return tl__oct_encode_core(v[0], v[1], v[2], tl__oct_clamp_bits(bits));
+    return precise ? tl__oct_encode_precise_core(v[0], v[1], v[2], bits, top)
+                   : tl__oct_encode_core(v[0], v[1], v[2], bits, top);
+}
+
+void tl__oct_decode_grid(uint32_t code, uint32_t bits, uint32_t top, float n[3])
+{
+    tl__oct_decode_core(code, bits, top, n);
+}
+
+uint32_t tl_oct_encode(const float n[3], uint32_t bits)
+{
+    bits = tl__oct_clamp_bits(bits);
+    return tl__oct_encode_grid(n, bits, tl__oct_top(bits), 0);
 }
 
 uint32_t tl_oct_encode_precise(const float n[3], uint32_t bits)
 {
-    float v[3];
-    tl__oct_input(n, v);
-    return tl__oct_encode_precise_core(v[0], v[1], v[2], tl__oct_clamp_bits(bits));
+    bits = tl__oct_clamp_bits(bits);
+    return tl__oct_encode_grid(n, bits, tl__oct_top(bits), 1);
 }
 
 void tl_oct_decode(uint32_t code, uint32_t bits, float n[3])
 {
-    tl__oct_decode_core(code, tl__oct_clamp_bits(bits), n);
+    bits = tl__oct_clamp_bits(bits);
+    tl__oct_decode_core(code, bits, tl__oct_top(bits), n);
 }
 
 #if TL__OCT_SSE2
@@ -167,9 +179,16 @@ static inline void tl__v_unproject(__m128 u, __m128 v, __m128 *x, __m128 *y, __m
     *z = w;
 }
 
-static inline __m128 tl__v_dequant(__m128i k, __m128i max, __m128 inv_max)
+static inline __m128 tl__v_dequant(__m128i k, __m128i top, __m128 inv_top)
 {
-    return _mm_mul_ps(_mm_cvtepi32_ps(_mm_sub_epi32(_mm_add_epi32(k, k), max)), inv_max);
+    return _mm_mul_ps(_mm_cvtepi32_ps(_mm_sub_epi32(_mm_add_epi32(k, k), top)), inv_top);
+}
+
+/* min(k, top) for non-negative k, without SSE4.1's pminsd */
+static inline __m128i tl__vi_min(__m128i k, __m128i top)
+{
+    __m128i gt = _mm_cmpgt_epi32(k, top);
+    return _mm_or_si128(_mm_and_si128(gt, top), _mm_andnot_si128(gt, k));
 }
 
 static inline __m128 tl__v_error(__m128 x, __m128 y, __m128 z, __m128 cu, __m128 cv)
@@ -184,39 +203,28 @@ static inline __m128 tl__v_error(__m128 x, __m128 y, __m128 z, __m128 cu, __m128
     return _mm_div_ps(e, l);
 }
 
-static void tl__oct_encode_block(const float *n, uint32_t *codes, uint32_t bits, int precise)
+static void tl__oct_encode_block(const float *n, uint32_t *codes, uint32_t bits, uint32_t top, int precise)
 {
     __m128 x, y, z, u, v;
     tl__v_load_xyz(n, &x, &y, &z);
     tl__v_project(x, y, z, &u, &v);
-    uint32_t maxu = (1u << bits) - 1u;
-    __m128 half_max = _mm_set1_ps(0.5f * (float)maxu);
-    __m128 one = _mm_set1_ps(1.0f);
-    __m128i qu = _mm_cvttps_epi32(_mm_mul_ps(_mm_add_ps(u, one), half_max));
-    __m128i qv = _mm_cvttps_epi32(_mm_mul_ps(_mm_add_ps(v, one), half_max));
-    __m128i code;
-    if (!precise) {
-        __m128 h = _mm_set1_ps(0.5f);
-        qu = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(_mm_add_ps(u, one), half_max), h));
-        qv = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(_mm_add_ps(v, one), half_max), h));
-        code = _mm_or_si128(qu, _mm_sll_epi32(qv, _mm_cvtsi32_si128((int)bits)));
-    } else {
-        __m128i max = _mm_set1_epi32((int32_t)maxu), top = _mm_set1_epi32((int32_t)maxu - 1);
+    __m128 half_top = _mm_set1_ps(0.5f * (float)top);
+    __m128 one = _mm_set1_ps(1.0f), h = _mm_set1_ps(0.5f);
+    /* the plain-rounded codes, trunc(q + 0.5) */
+    __m128i ua = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(_mm_add_ps(u, one), half_top), h));
+    __m128i va = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(_mm_add_ps(v, one), half_top), h));
+    __m128i code = _mm_or_si128(ua, _mm_sll_epi32(va, _mm_cvtsi32_si128((int)bits)));
+    if (precise) {
+        __m128i vtop = _mm_set1_epi32((int32_t)top), below = _mm_set1_epi32((int32_t)top - 1);
         __m128i ione = _mm_set1_epi32(1);
-        __m128 inv_max = _mm_set1_ps(1.0f / (float)maxu);
-        /* min(q, max - 1) for non-negative q, without SSE4.1's pminsd */
-        __m128i gt = _mm_cmpgt_epi32(qu, top);
-        __m128i u0 = _mm_or_si128(_mm_and_si128(gt, top), _mm_andnot_si128(gt, qu));
-        gt = _mm_cmpgt_epi32(qv, top);
-        __m128i v0 = _mm_or_si128(_mm_and_si128(gt, top), _mm_andnot_si128(gt, qv));
+        __m128 inv_top = _mm_set1_ps(1.0f / (float)top);
+        __m128i u0 = tl__vi_min(_mm_cvttps_epi32(_mm_mul_ps(_mm_add_ps(u, one), half_top)), below);
+        __m128i v0 = tl__vi_min(_mm_cvttps_epi32(_mm_mul_ps(_mm_add_ps(v, one), half_top)), below);
         /* plain-rounded code first (see tl__oct_encode_precise_core), the other one second */
-        __m128 h = _mm_set1_ps(0.5f);
-        __m128i ua = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(_mm_add_ps(u, one), half_max), h));
-        __m128i va = _mm_cvttps_epi32(_mm_add_ps(_mm_mul_ps(_mm_add_ps(v, one), half_max), h));
         __m128i ub = _mm_sub_epi32(_mm_add_epi32(_mm_add_epi32(u0, u0), ione), ua);
         __m128i vb = _mm_sub_epi32(_mm_add_epi32(_mm_add_epi32(v0, v0), ione), va);
-        __m128 cua = tl__v_dequant(ua, max, inv_max), cub = tl__v_dequant(ub, max, inv_max);
-        __m128 cva = tl__v_dequant(va, max, inv_max), cvb = tl__v_dequant(vb, max, inv_max);
+        __m128 cua = tl__v_dequant(ua, vtop, inv_top), cub = tl__v_dequant(ub, vtop, inv_top);
+        __m128 cva = tl__v_dequant(va, vtop, inv_top), cvb = tl__v_dequant(vb, vtop, inv_top);
         __m128 best = tl__v_error(x, y, z, cua, cva);
         __m128i bu = ua, bv = va;
         __m128 s = tl__v_error(x, y, z, cub, cva);
@@ -238,21 +246,20 @@ static void tl__oct_encode_block(const float *n, uint32_t *codes, uint32_t bits,
     _mm_storeu_si128((__m128i *)(void *)codes, code);
     int bad = tl__v_bad_mask(x, y, z);
     if (bad) {
-        for (int i = 0; i < 4; i++) {
-            if (bad & (1 << i))
-                codes[i] = precise ? tl_oct_encode_precise(n + 3 * i, bits) : tl_oct_encode(n + 3 * i, bits);
-        }
+        for (int i = 0; i < 4; i++)
+            if (bad & (1 << i)) codes[i] = tl__oct_encode_grid(n + 3 * i, bits, top, precise);
     }
 }
 
-static void tl__oct_decode_block(const uint32_t *codes, float *n, uint32_t bits)
+static void tl__oct_decode_block(const uint32_t *codes, float *n, uint32_t bits, uint32_t top)
 {
-    uint32_t maxu = (1u << bits) - 1u;
     __m128i c = _mm_loadu_si128((const __m128i *)(const void *)codes);
-    __m128i max = _mm_set1_epi32((int32_t)maxu);
-    __m128 inv_max = _mm_set1_ps(1.0f / (float)maxu);
-    __m128 u = tl__v_dequant(_mm_and_si128(c, max), max, inv_max);
-    __m128 v = tl__v_dequant(_mm_and_si128(_mm_srl_epi32(c, _mm_cvtsi32_si128((int)bits)), max), max, inv_max);
+    __m128i mask = _mm_set1_epi32((int32_t)((1u << bits) - 1u)), vtop = _mm_set1_epi32((int32_t)top);
+    __m128 inv_top = _mm_set1_ps(1.0f / (float)top);
+    __m128i ku = tl__vi_min(_mm_and_si128(c, mask), vtop);
+    __m128i kv = tl__vi_min(_mm_and_si128(_mm_srl_epi32(c, _mm_cvtsi32_si128((int)bits)), mask), vtop);
+    __m128 u = tl__v_dequant(ku, vtop, inv_top);
+    __m128 v = tl__v_dequant(kv, vtop, inv_top);
     __m128 x, y, z;
     tl__v_unproject(u, v, &x, &y, &z);
     __m128 len2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(x, x), _mm_mul_ps(y, y)), _mm_mul_ps(z, z));
@@ -262,35 +269,40 @@ static void tl__oct_decode_block(const uint32_t *codes, float *n, uint32_t bits)
 
 #endif /* TL__OCT_SSE2 */
 
-static void tl__oct_encode_batch(const float *n, uint32_t *codes, size_t count, uint32_t bits, int precise)
+void tl__oct_encode_grid_n(const float *n, uint32_t *codes, size_t count, uint32_t bits, uint32_t top, int precise)
 {
     if (!n || !codes) return;
-    bits = tl__oct_clamp_bits(bits);
     size_t i = 0;
 #if TL__OCT_SSE2
-    for (; i + 4 <= count; i += 4) tl__oct_encode_block(n + 3 * i, codes + i, bits, precise);
+    for (; i + 4 <= count; i += 4) tl__oct_encode_block(n + 3 * i, codes + i, bits, top, precise);
 #endif
-    for (; i < count; i++)
-        codes[i] = precise ? tl_oct_encode_precise(n + 3 * i, bits) : tl_oct_encode(n + 3 * i, bits);
+    for (; i < count; i++) codes[i] = tl__oct_encode_grid(n + 3 * i, bits, top, precise);
+}
+
+void tl__oct_decode_grid_n(const uint32_t *codes, float *n, size_t count, uint32_t bits, uint32_t top)
+{
+    if (!n || !codes) return;
+    size_t i = 0;
+#if TL__OCT_SSE2
+    for (; i + 4 <= count; i += 4) tl__oct_decode_block(codes + i, n + 3 * i, bits, top);
+#endif
+    for (; i < count; i++) tl__oct_decode_core(codes[i], bits, top, n + 3 * i);
 }
 
 void tl_oct_encode_n(const float *n, uint32_t *codes, size_t count, uint32_t bits)
 {
-    tl__oct_encode_batch(n, codes, count, bits, 0);
+    bits = tl__oct_clamp_bits(bits);
+    tl__oct_encode_grid_n(n, codes, count, bits, tl__oct_top(bits), 0);
 }
 
 void tl_oct_encode_precise_n(const float *n, uint32_t *codes, size_t count, uint32_t bits)
 {
-    tl__oct_encode_batch(n, codes, count, bits, 1);
+    bits = tl__oct_clamp_bits(bits);
+    tl__oct_encode_grid_n(n, codes, count, bits, tl__oct_top(bits), 1);
 }
 
 void tl_oct_decode_n(const uint32_t *codes, float *n, size_t count, uint32_t bits)
 {
-    if (!n || !codes) return;
     bits = tl__oct_clamp_bits(bits);
-    size_t i = 0;
-#if TL__OCT_SSE2
-    for (; i + 4 <= count; i += 4) tl__oct_decode_block(codes + i, n + 3 * i, bits);
-#endif
-    for (; i < count; i++) tl__oct_decode_core(codes[i], bits, n + 3 * i);
+    tl__oct_decode_grid_n(codes, n, count, bits, tl__oct_top(bits));
 }

@@ -14,6 +14,14 @@ static inline uint32_t tl__oct_clamp_bits(uint32_t bits)
     return bits < TL_OCT_MIN_BITS ? TL_OCT_MIN_BITS : bits > TL_OCT_MAX_BITS ? TL_OCT_MAX_BITS : bits;
 }
 
+/* The quantisation grid of a component is codes 0..top, code k standing for (2k - top) / top.
+ * The library's grid is odd (top = 2^bits - 2, 2^bits - 1 levels): its centre code top / 2 is
+ * exactly 0 and its ends exactly -1 and +1, so the axes and poles decode exactly; the code
+ * 2^bits - 1 is unused and decodes as top. The even grid (top = 2^bits - 1, no 0) is kept for
+ * comparison (TL_NORMAL_OCT_EVEN). */
+static inline uint32_t tl__oct_top(uint32_t bits) { return (1u << bits) - 2u; }
+static inline uint32_t tl__oct_top_even(uint32_t bits) { return (1u << bits) - 1u; }
+
 /* Sign-not-zero from the sign bit: -0 gives -1, so the fold keeps -0 and +0 apart and the
  * round trip stays exact on the square's outer edges. */
 static inline float tl__sign_not_zero(float v) { return copysignf(1.0f, v); }
@@ -59,16 +67,18 @@ static inline void tl__oct_unproject_raw(float u, float v, float *x, float *y, f
     *z = w;
 }
 
-/* Component value of code k: (2k - max) / max, as one product with a rounded reciprocal. */
-static inline float tl__oct_dequant(uint32_t k, uint32_t max, float inv_max)
+/* Component value of code k: (2k - top) / top, as one product with a rounded reciprocal. For
+ * every top of the odd grid (2^bits - 2, bits 8..16), top * fl(1 / top) rounds to exactly 1, so
+ * the ends are exactly -1 and +1 (and the centre is 0 * inv = 0). */
+static inline float tl__oct_dequant(uint32_t k, uint32_t top, float inv_top)
 {
-    return (float)((int32_t)(2u * k) - (int32_t)max) * inv_max;
+    return (float)((int32_t)(2u * k) - (int32_t)top) * inv_top;
 }
 
-/* Nearest code for a component in [-1,1]: q = (p + 1) * (max / 2), code = trunc(q + 0.5). */
-static inline uint32_t tl__oct_quant(float p, float half_max)
+/* Nearest code for a component in [-1,1]: q = (p + 1) * (top / 2), code = trunc(q + 0.5). */
+static inline uint32_t tl__oct_quant(float p, float half_top)
 {
-    float q = (p + 1.0f) * half_max;
+    float q = (p + 1.0f) * half_top;
     return (uint32_t)(int32_t)(q + 0.5f);
 }
 
@@ -80,12 +90,18 @@ static inline void tl__normalize3(float *x, float *y, float *z)
     *z *= inv;
 }
 
-static inline void tl__oct_decode_core(uint32_t code, uint32_t bits, float n[3])
+/* A component's code: its `bits` bits, clamped to the grid (the odd grid's unused code). */
+static inline uint32_t tl__oct_component(uint32_t code, uint32_t bits, uint32_t top)
 {
-    uint32_t max = (1u << bits) - 1u;
-    float inv_max = 1.0f / (float)max;
-    float u = tl__oct_dequant(code & max, max, inv_max);
-    float v = tl__oct_dequant((code >> bits) & max, max, inv_max);
+    uint32_t k = code & ((1u << bits) - 1u);
+    return k > top ? top : k;
+}
+
+static inline void tl__oct_decode_core(uint32_t code, uint32_t bits, uint32_t top, float n[3])
+{
+    float inv_top = 1.0f / (float)top;
+    float u = tl__oct_dequant(tl__oct_component(code, bits, top), top, inv_top);
+    float v = tl__oct_dequant(tl__oct_component(code >> bits, bits, top), top, inv_top);
     float x, y, z;
     tl__oct_unproject_raw(u, v, &x, &y, &z);
     tl__normalize3(&x, &y, &z);
@@ -94,13 +110,12 @@ static inline void tl__oct_decode_core(uint32_t code, uint32_t bits, float n[3])
     n[2] = z;
 }
 
-static inline uint32_t tl__oct_encode_core(float x, float y, float z, uint32_t bits)
+static inline uint32_t tl__oct_encode_core(float x, float y, float z, uint32_t bits, uint32_t top)
 {
-    uint32_t max = (1u << bits) - 1u;
-    float half_max = 0.5f * (float)max;
+    float half_top = 0.5f * (float)top;
     float u, v;
     tl__oct_project_raw(x, y, z, &u, &v);
-    return tl__oct_quant(u, half_max) | (tl__oct_quant(v, half_max) << bits);
+    return tl__oct_quant(u, half_top) | (tl__oct_quant(v, half_top) << bits);
 }
 
 /* Error of a candidate code: |n x c|^2 / |c|^2 = |n|^2 sin^2(angle). The sine keeps its relative
@@ -116,22 +131,21 @@ static inline float tl__oct_candidate_error(float x, float y, float z, float cu,
     return e / l;
 }
 
-static inline uint32_t tl__oct_encode_precise_core(float x, float y, float z, uint32_t bits)
+static inline uint32_t tl__oct_encode_precise_core(float x, float y, float z, uint32_t bits, uint32_t top)
 {
-    uint32_t max = (1u << bits) - 1u;
-    float half_max = 0.5f * (float)max;
-    float inv_max = 1.0f / (float)max;
+    float half_top = 0.5f * (float)top;
+    float inv_top = 1.0f / (float)top;
     float u, v;
     tl__oct_project_raw(x, y, z, &u, &v);
-    uint32_t u0 = (uint32_t)(int32_t)((u + 1.0f) * half_max);
-    uint32_t v0 = (uint32_t)(int32_t)((v + 1.0f) * half_max);
-    u0 = u0 > max - 1u ? max - 1u : u0;
-    v0 = v0 > max - 1u ? max - 1u : v0;
+    uint32_t u0 = (uint32_t)(int32_t)((u + 1.0f) * half_top);
+    uint32_t v0 = (uint32_t)(int32_t)((v + 1.0f) * half_top);
+    u0 = u0 > top - 1u ? top - 1u : u0;
+    v0 = v0 > top - 1u ? top - 1u : v0;
     /* Per component, a = the plain-rounded code (always u0 or u0 + 1), b = the other one. */
-    uint32_t ua = tl__oct_quant(u, half_max), va = tl__oct_quant(v, half_max);
+    uint32_t ua = tl__oct_quant(u, half_top), va = tl__oct_quant(v, half_top);
     uint32_t ub = (2u * u0 + 1u) - ua, vb = (2u * v0 + 1u) - va;
-    float cua = tl__oct_dequant(ua, max, inv_max), cub = tl__oct_dequant(ub, max, inv_max);
-    float cva = tl__oct_dequant(va, max, inv_max), cvb = tl__oct_dequant(vb, max, inv_max);
+    float cua = tl__oct_dequant(ua, top, inv_top), cub = tl__oct_dequant(ub, top, inv_top);
+    float cva = tl__oct_dequant(va, top, inv_top), cvb = tl__oct_dequant(vb, top, inv_top);
     /* Candidates in a fixed order, the plain-rounded one first; a later one wins only when
      * strictly better. Exact ties happen where two codes are mirror images of one direction on
      * the square's outer edge (they differ only in a zero's sign); the plain-rounded code keeps
@@ -146,5 +160,13 @@ static inline uint32_t tl__oct_encode_precise_core(float x, float y, float z, ui
     if (e < best) { bu = ub; bv = vb; }
     return bu | (bv << bits);
 }
+
+/* Batch encode and decode on a given grid (oct.c, SSE2 where available); the public batch
+ * functions use the odd grid, normal_alt.c the even one too. */
+void tl__oct_encode_grid_n(const float *n, uint32_t *codes, size_t count, uint32_t bits, uint32_t top, int precise);
+void tl__oct_decode_grid_n(const uint32_t *codes, float *n, size_t count, uint32_t bits, uint32_t top);
+/* Scalar encode and decode on a given grid, any input (sanitised as the public functions do). */
+uint32_t tl__oct_encode_grid(const float n[3], uint32_t bits, uint32_t top, int precise);
+void tl__oct_decode_grid(uint32_t code, uint32_t bits, uint32_t top, float n[3]);
 
 #endif

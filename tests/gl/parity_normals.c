@@ -131,6 +131,45 @@ TL_TEST(parity_oct_extreme_cases)
 
 /* ---- RT0 ------------------------------------------------------------------------------------ */
 
+/* The odd grid in GLSL: the axes (every signed zero) encoded by the shader, both encoders, every
+ * budget, decode in the shader to exactly the axis; -Z to exactly (0, 0, -1). */
+TL_TEST(parity_oct_axes_exact)
+{
+    static const float axes[7][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, 0, 0}};
+    static const float expect[7][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}, {0, 0, 1}};
+    fvec a = {0};
+    for (int k = 0; k < 7; k++)
+        for (int s = 0; s < 8; s++) /* every sign of every zero component */
+            fpush3(&a, axes[k][0] == 0.0f && (s & 1) ? -0.0f : axes[k][0], axes[k][1] == 0.0f && (s & 2) ? -0.0f : axes[k][1],
+                   axes[k][2] == 0.0f && (s & 4) ? -0.0f : axes[k][2]);
+    size_t count = a.n / 3, bad = 0;
+    parity_env env;
+    if (!env_open(&env)) return;
+    uint32_t *codes = xmalloc_u32(count), *dec = xmalloc_u32(3 * count);
+    for (uint32_t bits = TL_OCT_MIN_BITS; bits <= TL_OCT_MAX_BITS; bits++)
+        for (int p = 0; p < 2; p++) {
+            parity_params pp = {.bits = bits};
+            if (!run_op(&env, p ? OP_OCT_ENCODE_PRECISE : OP_OCT_ENCODE, &pp, (uint32_t)count, a.v, a.n, NULL, 0,
+                        codes, count) ||
+                !run_op(&env, OP_OCT_DECODE, &pp, (uint32_t)count, NULL, 0, codes, count, dec, 3 * count))
+                continue;
+            for (size_t i = 0; i < count; i++) {
+                const float *e = expect[i / 8];
+                int ok = u2f(dec[3 * i]) == e[0] && u2f(dec[3 * i + 1]) == e[1] && u2f(dec[3 * i + 2]) == e[2];
+                if (!ok && bad++ < 6)
+                    fprintf(stderr, "oct%u %s: (%g, %g, %g) -> 0x%x -> (%a, %a, %a)\n", bits, p ? "precise" : "plain",
+                            (double)a.v[3 * i], (double)a.v[3 * i + 1], (double)a.v[3 * i + 2], codes[i],
+                            (double)u2f(dec[3 * i]), (double)u2f(dec[3 * i + 1]), (double)u2f(dec[3 * i + 2]));
+            }
+        }
+    printf("%-40s %8zu axis inputs x 9 budgets x 2 encoders, %zu not exact\n", "GLSL oct axes", count, bad);
+    TL_CHECK_EQ_U(bad, 0);
+    free(codes);
+    free(dec);
+    free(a.v);
+    env_close(&env);
+}
+
 /* Random directions with gloss in [-0.25, 1.25], then every extreme normal with a few special
  * glosses (0, 1, out of range, NaN, Inf). */
 static void rt0_inputs(fvec *a, uint64_t seed)
