@@ -363,8 +363,9 @@ typedef struct tl_render_output {
  * reads the last frame rendered with tl_renderer_render).
  *
  * The GL state it leaves, as after tl_renderer_render: framebuffer 0 bound for drawing and
- * reading, program 0, vertex array 0, no texture or sampler on the units it used, no uniform or
- * storage buffer on the binding points it used (0..3); blending, depth test, face culling,
+ * reading, program 0, vertex array 0, no texture or sampler on the units it used (0..20), no
+ * uniform or storage buffer on the binding points it used (0..4), no image on the image units it
+ * used (0..2); blending, depth test, face culling,
  * depth clamp, scissor and stencil tests off; depth mask and colour mask on; clip control
  * (GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE); the viewport is the output rectangle (render_to) or
  * the renderer's size (render). Other state is not touched.
