@@ -10,8 +10,9 @@
 
 static const char usage_text[] =
     "usage: " BENCH_TOOL " [--scene default|FILE.gltf] [--size WxH[,WxH...]] [--lights N,N,...]\n"
-    "                       [--modes MODE,...] [--strategies S,...] [--frames N] [--warmup N]\n"
-    "                       [--json OUT.json] [--out DIR] [--quick] [--doc FILE.md] [--seed S] [--no-plot] [--context C] [--device N]\n"
+    "                       [--modes MODE,...] [--strategies S,...] [--light-formats F,...]\n"
+    "                       [--frames N] [--warmup N] [--json OUT.json] [--out DIR] [--quick]\n"
+    "                       [--doc FILE.md] [--seed S] [--no-plot] [--context C] [--device N]\n"
     "                       [--list-devices] [--help]\n"
     "\n"
     "Renders the same frames in every mode and compares what they store (bytes per pixel of the\n"
@@ -30,6 +31,8 @@ static const char usage_text[] =
     "                   (default volumes,tiled). forward with volumes is per-object light lists\n"
     "                   (\"forward\"), with tiled Forward+ (\"forward+\"); fat of the same strategy\n"
     "                   is each one's error reference\n"
+    "  --light-formats LIST rgba16f (always) and r11g11b10f: thin-lpp/tiled also with the\n"
+    "                   R11G11B10F light buffer (default rgba16f,r11g11b10f)\n"
     "  --json FILE      write one record per (mode, strategy, lights, size)\n"
     "  --out DIR        write final images, heat maps of |mode - fat| (at the largest light count)\n"
     "                   and the plots (gnuplot) into DIR (PNG: needs a build with THINLIGHT_WITH_IO)\n"
@@ -181,11 +184,25 @@ static int bench__parse_strategies(const char *arg, bench_options *o)
     return 0;
 }
 
+static int bench__parse_light_formats(const char *arg, bench_options *o)
+{
+    char buf[128], *items[2 * TL_LIGHT_FORMAT_COUNT_];
+    size_t n = bench__list("--light-formats", "formats", arg, buf, sizeof buf, items, 2 * TL_LIGHT_FORMAT_COUNT_);
+    if (!n) return BENCH_EXIT_BAD_USAGE;
+    o->small_light_buffer = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (!strcmp(items[i], "r11g11b10f")) o->small_light_buffer = 1;
+        else if (strcmp(items[i], "rgba16f"))
+            return bench__usage("--light-formats: unknown light buffer format '%s' (rgba16f, r11g11b10f)", items[i]);
+    }
+    return 0;
+}
+
 static int bench__parse_args(int argc, char **argv, bench_options *o)
 {
     memset(o, 0, sizeof *o);
     o->scene = "default";
-    const char *sizes = NULL, *lights = NULL, *modes = NULL, *strategies = NULL, *frames = NULL, *warmup = NULL, *seed = NULL;
+    const char *sizes = NULL, *lights = NULL, *modes = NULL, *strategies = NULL, *formats = NULL, *frames = NULL, *warmup = NULL, *seed = NULL;
     const char *context = NULL, *device = NULL;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -201,6 +218,7 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
         else if (!strcmp(a, "--lights")) value = &lights;
         else if (!strcmp(a, "--modes")) value = &modes;
         else if (!strcmp(a, "--strategies")) value = &strategies;
+        else if (!strcmp(a, "--light-formats")) value = &formats;
         else if (!strcmp(a, "--frames")) value = &frames;
         else if (!strcmp(a, "--warmup")) value = &warmup;
         else if (!strcmp(a, "--seed")) value = &seed;
@@ -226,6 +244,7 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
     }
     if ((rc = bench__parse_modes(modes ? modes : "thin-lpp,thin-deferred,fat,forward", o))) return rc;
     if ((rc = bench__parse_strategies(strategies ? strategies : "volumes,tiled", o))) return rc;
+    if ((rc = bench__parse_light_formats(formats ? formats : "rgba16f,r11g11b10f", o))) return rc;
     uint64_t v;
     if (frames && (!bench__parse_u64(frames, BENCH_MAX_FRAMES, &v) || v == 0))
         return bench__usage("--frames wants 1..1000, got '%s'", frames);

@@ -25,7 +25,7 @@
 #define BENCH_MAX_FRAMES 1000u
 #define BENCH_MODES (TL_MODE_COUNT_ - 1) /* every mode but DEFAULT */
 #define BENCH_STRATEGIES (TL_LIGHT_STRATEGY_COUNT_) /* auto, volumes, tiled */
-#define BENCH_CONFIGS (BENCH_MODES * BENCH_STRATEGIES)
+#define BENCH_CONFIGS (BENCH_MODES * BENCH_STRATEGIES * 2) /* x 2: the R11G11B10F light buffer */
 #define BENCH_REFERENCE TL_MODE_FAT
 #define BENCH_PNG_MAX_BYTES (300u * 1024u)
 /* Heat maps show |mode - fat| of the final image, largest RGB channel, 0..HEAT_SCALE 8-bit steps. */
@@ -34,16 +34,30 @@
 #define BENCH_DOC_BEGIN "<!-- bench:begin -->"
 #define BENCH_DOC_END "<!-- bench:end -->"
 
-/* What the sweep renders: a mode with a light strategy, as mode + TL_MODE_COUNT_ * strategy. Its
- * name is the mode's with the strategy ("thin-lpp/tiled", "fat/volumes", "thin-lpp/auto"), except
- * forward: "forward" with per-object lists (volumes), "forward+" with tile lists (tiled). */
+/* What the sweep renders: a mode with a light strategy, and for thin-lpp with the tiled strategy
+ * also the R11G11B10F light buffer: mode + TL_MODE_COUNT_ * (strategy + BENCH_STRATEGIES * small).
+ * Its name is the mode's with the strategy ("thin-lpp/tiled", "fat/volumes", "thin-lpp/auto",
+ * "thin-lpp/tiled/r11g11b10f"), except forward: "forward" with per-object lists (volumes),
+ * "forward+" with tile lists (tiled). */
 typedef unsigned bench_config;
 static inline bench_config bench_config_make(tl_render_mode m, tl_light_strategy s)
 {
     return (unsigned)m + (unsigned)TL_MODE_COUNT_ * (unsigned)s;
 }
 static inline tl_render_mode bench_config_mode(bench_config c) { return (tl_render_mode)(c % TL_MODE_COUNT_); }
-static inline tl_light_strategy bench_config_strategy(bench_config c) { return (tl_light_strategy)(c / TL_MODE_COUNT_); }
+static inline tl_light_strategy bench_config_strategy(bench_config c)
+{
+    return (tl_light_strategy)(c / TL_MODE_COUNT_ % BENCH_STRATEGIES);
+}
+/* The light buffer's format: R11G11B10F for the small-buffer variant, else the default. */
+static inline tl_light_format bench_config_light_format(bench_config c)
+{
+    return c / (TL_MODE_COUNT_ * BENCH_STRATEGIES) ? TL_LIGHT_FORMAT_R11G11B10F : TL_LIGHT_FORMAT_DEFAULT;
+}
+static inline bench_config bench_config_small_light_buffer(bench_config c)
+{
+    return c % (TL_MODE_COUNT_ * BENCH_STRATEGIES) + TL_MODE_COUNT_ * BENCH_STRATEGIES;
+}
 const char *bench_config_name(bench_config c);
 /* The name for file names: '/' becomes '-', '+' becomes "-plus". */
 const char *bench_config_slug(bench_config c);
@@ -66,6 +80,7 @@ typedef struct bench_options {
     uint64_t seed;
     const char *json, *out, *doc;
     int quick, no_plot, help, list_devices;
+    int small_light_buffer;   /* also thin-lpp/tiled with an R11G11B10F light buffer (--light-formats) */
     tl_tool_context_options context; /* --context, --device */
 } bench_options;
 

@@ -289,6 +289,8 @@ static void bench__json_record(tl_tool_json *j, const bench_record *r)
     tl_tool_json_str(j, "config", bench_config_name(r->config));
     tl_tool_json_str(j, "strategy_asked", tl_light_strategy_name(bench_config_strategy(r->config)));
     tl_tool_json_str(j, "strategy", tl_light_strategy_name(r->strategy));
+    tl_tool_json_str(j, "light_format", bench_config_light_format(r->config) == TL_LIGHT_FORMAT_R11G11B10F
+                                            ? "r11g11b10f" : "rgba16f");
     tl_tool_json_bool(j, "reference", r->mode == BENCH_REFERENCE);
     tl_tool_json_uint(j, "lights", r->lights);
     tl_tool_json_uint(j, "point_lights", r->point_lights);

@@ -22,6 +22,7 @@ function(check_bad_usage)
     "--modes|thin-lpp,bogus" "unknown mode"
     "--strategies|tiled,clustered" "unknown light strategy"
     "--strategies" "--strategies without a value"
+    "--light-formats|rgba16f,rgb9e5" "unknown light buffer format"
     "--frames|0" "zero frames"
     "--out|${WORK}/out|--lights|-1" "negative light count"
     "--doc|${WORK}/doc.md" "--doc without --out")
