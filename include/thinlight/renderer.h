@@ -292,7 +292,9 @@ typedef struct tl_frame_stats {
     double pass_bytes[TL_PASS_COUNT];   /**< estimate of bytes moved per pass (docs/bandwidth.md) */
     double bytes_moved;                 /**< sum of pass_bytes */
     double gpu_ms;                      /**< sum of pass_ms */
-    double cpu_ms;                      /**< CPU time the render call spent issuing commands (never waits) */
+    double cpu_ms;                      /**< CPU time of the calling thread in the render call, issuing commands
+                                             (thread CPU clock, before any wait for statistics; on llvmpipe it
+                                             includes Mesa's vertex processing and binning, which run there) */
     double wall_ms;                     /**< render call start to GPU done; synchronous statistics only, else 0 */
     size_t target_bytes[TL_TARGET_COUNT]; /**< bytes each allocated target occupies; 0 = not allocated */
     size_t gbuffer_bytes;               /**< depth + RT0 + RT1 + FAT_* */
