@@ -3,7 +3,7 @@
 // radius: AO = sum (1 - A B)^x / n, A = 1 - smoothstep(0, k_d, |p_i - p| - k_b),
 // B = max(0, n . (p_i - p) / |p_i - p|). TL_SSAO_HEMISPHERE: points s_i in the normal-oriented
 // hemisphere, occluded (o_i = 1) when the surface they project to lies in front of them by more
-// than k_b: AO = sum (1 - o_i A_i)^x / n, A_i the same falloff of the surface's distance to p.
+// than k_b and above p's tangent plane by more than 5 degrees: AO = sum (1 - o_i A_i)^x / n, A_i the same falloff of the surface's distance to p.
 // The spiral is rotated per pixel; ssao-blur removes the noise.
 #include "effects.glsl"
 
@@ -40,7 +40,13 @@ float tl_ssao(ivec2 px, vec3 p, vec3 n)
         vec4 c = u_proj * vec4(s, 1.0);
         if (c.w > 0.0) {
             ivec2 qx = ivec2(floor((c.xy / c.w * 0.5 + 0.5) / u_inv_size));
-            if (tl_fx_position(qx, q)) term = tl_ssao_term(p, q, q.z >= s.z + u_ssao.y ? 1.0 : 0.0);
+            // the surface seen there occludes s when it lies in front of s and above p's tangent
+            // plane (by more than 5 degrees: a pixel's surface point is not the one behind s, and
+            // on a grazing plane the two differ by much of a pixel's depth range)
+            if (tl_fx_position(qx, q)) {
+                bool above = dot(n, q - p) > 0.087 * length(q - p);
+                term = tl_ssao_term(p, q, q.z >= s.z + u_ssao.y && above ? 1.0 : 0.0);
+            }
         }
 #else
         ivec2 qx = px + ivec2(round(dir * sqrt(f) * r_px));
