@@ -273,9 +273,14 @@ static int bench__bytes_script(FILE *f, const void *ctx)
     static const char *const target_colours[TL_TARGET_COUNT] = {"#4d4d4d", "#1a9850", "#66bd63", "#2166ac",
                                                                 "#67a9cf", "#d7191c", "#f4a582", "#fdae61",
                                                                 "#b2abd2", "#7b3294", "#bababa", "#e0e0e0",
-                                                                "#8c510a"};
-    static const char *const pass_colours[TL_PASS_COUNT] = {"#4d4d4d", "#2166ac", "#8c510a", "#fdae61", "#f46d43",
-                                                            "#1a9850", "#7b3294", "#b2abd2", "#d7191c", "#bababa"};
+                                                                "#8c510a", "#35978f", "#80cdc1", "#c51b7d"};
+    static const char *const pass_colours[TL_PASS_COUNT] = {
+        [TL_PASS_DEPTH_PREPASS] = "#4d4d4d", [TL_PASS_GBUFFER] = "#2166ac",      [TL_PASS_SSAO] = "#35978f",
+        [TL_PASS_SSAO_BLUR] = "#80cdc1",     [TL_PASS_SSAO_APPLY] = "#01665e",   [TL_PASS_LIGHT_CULL] = "#8c510a",
+        [TL_PASS_LIGHTS] = "#fdae61",        [TL_PASS_LIGHTS_TILED] = "#f46d43", [TL_PASS_MATERIAL] = "#1a9850",
+        [TL_PASS_FORWARD] = "#7b3294",       [TL_PASS_TRANSPARENT] = "#b2abd2",  [TL_PASS_FOG] = "#878787",
+        [TL_PASS_DOF] = "#c51b7d",           [TL_PASS_DOF_APPLY] = "#de77ae",    [TL_PASS_TONEMAP] = "#d7191c",
+        [TL_PASS_FXAA] = "#bababa"};
     const tl_tool_plot *p = ctx;
     const bench_run *run = p->user;
     bench_config modes[BENCH_CONFIGS];
