@@ -132,6 +132,11 @@ typedef struct tl_renderer_desc {
     float fxaa_edge_threshold_min;     /**< default 0.0833 (absolute, in gamma-encoded luma) */
     float fxaa_subpix;                 /**< default 0.75; a negative value means 0 */
     float exposure;                    /**< default 1; multiplies HDR colour before tone mapping */
+    /** Linear ambient radiance added to every mode as albedo * ambient * occlusion (docs/renderer.md).
+     *  All three zero (the default): the scene's tl_scene.ambient (the glTF loader's 0.03, the
+     *  crypt's own). Otherwise it replaces the scene's, and a negative component means exactly 0:
+     *  `.ambient = {-1, -1, -1}` turns the ambient term off. */
+    float ambient[3];
     int forward_no_depth_prepass;      /**< forward mode: 1 leaves out the depth pre-pass (default: on) */
     int no_planning;                   /**< 1: plan for every feature whatever the scene uses (all light
                                             types, specular, textures, normal maps, alpha): shows what

@@ -1,4 +1,6 @@
 /* Renderer options with their defaults resolved (the one place a zeroed field becomes a value). */
+#include <math.h>
+
 #include "plan_internal.h"
 
 tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc *d)
@@ -24,6 +26,8 @@ tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc
         (unsigned)d->fxaa >= TL_FXAA_COUNT_ || (unsigned)d->light_format >= TL_LIGHT_FORMAT_COUNT_ ||
         (unsigned)d->light_strategy >= TL_LIGHT_STRATEGY_COUNT_ || (unsigned)d->tiled_shading >= TL_TILED_SHADING_COUNT_)
         return TL_ERROR_INVALID_ARGUMENT;
+    for (int k = 0; k < 3; k++)
+        if (!isfinite(d->ambient[k])) return TL_ERROR_INVALID_ARGUMENT;
     if (d->tile_size != 8 && d->tile_size != 16 && d->tile_size != 32) return TL_ERROR_INVALID_ARGUMENT;
     /* R11G11B10F has no alpha for the compact layout's specular luminance */
     if (d->light_format == TL_LIGHT_FORMAT_R11G11B10F && d->light_buffer != TL_LIGHT_BUFFER_EXACT)
