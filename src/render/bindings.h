@@ -17,6 +17,7 @@
     X(IMAGE_LIGHT_DIFFUSE, 0)    /* image units of the compute shading pass's writes */           \
     X(IMAGE_LIGHT_SPECULAR, 1)                                                                    \
     X(IMAGE_HDR, 2)                                                                               \
+    X(IMAGE_LIGHT_FRESNEL, 3)                                                                     \
     X(UNIT_ALBEDO_TEXTURE, 16)   /* material textures (units below 16 are the targets') */        \
     X(UNIT_NORMAL_TEXTURE, 17)                                                                    \
     X(UNIT_MR_TEXTURE, 18)                                                                        \
@@ -31,7 +32,7 @@ enum {
     TL__MATERIAL_TEXTURES = 5,
     TL__TEXTURE_UNITS_USED = 21, /* units the renderer may bind: 0 .. 20 */
     TL__BUFFER_BINDINGS_USED = 5, /* uniform and storage binding points it may bind: 0 .. 4 */
-    TL__IMAGE_UNITS_USED = 3     /* image units it may bind: 0 .. 2 */
+    TL__IMAGE_UNITS_USED = 4     /* image units it may bind: 0 .. 3 */
 };
 
 #endif

@@ -17,6 +17,7 @@ const tl__target_def tl__targets[TL_TARGET_COUNT] = {
     [TL_TARGET_LDR] = {"ldr", "LDR", GL_RGBA8, 0},
     [TL_TARGET_OUTPUT] = {"output", "OUTPUT", GL_RGBA8, 0},
     [TL_TARGET_LIGHT_LISTS] = {"light.lists", "LIGHT_LISTS", 0, 1, 1},
+    [TL_TARGET_LIGHT_FRESNEL] = {"light.fresnel", "LIGHT_FRESNEL", GL_RGBA16F, 1},
 };
 
 size_t tl__light_lists_bytes(size_t tiles) { return 16u + 8u * tiles + 4u * TL__TILE_START_ENTRIES * tiles; }
@@ -34,7 +35,8 @@ uint32_t tl__target_format(const tl_renderer_desc *d, tl_target_id id)
         return f32 ? GL_DEPTH_COMPONENT32F : GL_DEPTH24_STENCIL8;
     }
     if (id == TL_TARGET_RT0) return d->rt0 == TL_RT0_RGB10A2 ? GL_RGB10_A2 : GL_RGBA8;
-    if ((id == TL_TARGET_LIGHT_DIFFUSE || id == TL_TARGET_LIGHT_SPECULAR) && d->light_format == TL_LIGHT_FORMAT_R11G11B10F)
+    if ((id == TL_TARGET_LIGHT_DIFFUSE || id == TL_TARGET_LIGHT_SPECULAR || id == TL_TARGET_LIGHT_FRESNEL) &&
+        d->light_format == TL_LIGHT_FORMAT_R11G11B10F)
         return GL_R11F_G11F_B10F;
     return tl__targets[id].format;
 }

@@ -62,13 +62,12 @@ void ggx_scene_build(ggx_scene *g)
     g->mat[0].albedo[0] = g->mat[0].albedo[1] = g->mat[0].albedo[2] = 0.5f;
     g->mat[0].specular[0] = g->mat[0].specular[1] = g->mat[0].specular[2] = 0.04f;
     g->mat[0].gloss = 51.0f / 255.0f; /* roughness 0.8 */
-    g->mat[1] = none;
-    g->mat[1].flags = TL_MATERIAL_METALLIC_ROUGHNESS;
-    g->mat[1].albedo[0] = 1.0f; /* gold */
-    g->mat[1].albedo[1] = 0.766f;
-    g->mat[1].albedo[2] = 0.336f;
-    g->mat[1].metallic = 1.0f;
-    g->mat[1].roughness = 153.0f / 255.0f; /* gloss 102 / 255 */
+    g->mat[1] = none; /* gold metal, converted as the glTF loader converts constant factors */
+    g->mat[1].flags = TL_MATERIAL_MICROFACET;
+    g->mat[1].specular[0] = 1.0f;
+    g->mat[1].specular[1] = 0.766f;
+    g->mat[1].specular[2] = 0.336f;
+    g->mat[1].gloss = 102.0f / 255.0f; /* roughness 0.6 */
     g->lights[0] = (tl_light){TL_LIGHT_POINT, {1.6f, 2.8f, 2.2f}, {0}, {24, 22, 20}, 9.0f, 0, 0};
     g->lights[1] = (tl_light){TL_LIGHT_SPOT, {-2.0f, 3.5f, 1.0f}, {0.5f, -0.8f, -0.2f}, {30, 26, 40}, 8.0f, 0.93f, 0.8f};
     float *d = g->lights[1].direction, l = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);

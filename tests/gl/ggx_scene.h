@@ -28,7 +28,8 @@ typedef struct ggx_scene {
 
 /* Plane [-6,6]^2 at y = 0, sphere of radius 1 at (0, 1.3, 0); a point, a spot and a directional
  * light; camera at (0, 2.6, 5.2) looking at (0, 0.9, 0). Materials: a rough grey dielectric plane
- * and a gold metal sphere (metallic-roughness), glosses that 8 bits store exactly. */
+ * and a gold metal sphere (F0 from the base colour, albedo 0, as the glTF loader converts a metal),
+ * glosses that 8 bits store exactly. */
 void ggx_scene_build(ggx_scene *g);
 
 /* The view matrix of the scene's camera (column-major, as the renderer builds it: right-handed,
