@@ -18,7 +18,7 @@ void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout 
                     inout vec3 fresnel)
 {
     vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
-                              l.cos_inner.x, l.direction_cos_outer.w);
+                              l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
     diffuse += l.color_type.rgb * t.x;
     specular += l.color_type.rgb * t.y;
     fresnel += l.color_type.rgb * t.z;

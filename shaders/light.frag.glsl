@@ -8,6 +8,7 @@ flat in vec4 f_position_radius;
 flat in vec3 f_color;
 flat in vec4 f_direction_cos_outer;
 flat in float f_cos_inner;
+flat in float f_source_radius;
 
 #ifdef TL_LIGHT_ACCUM
 layout(location = TL_OUT_LIGHT_DIFFUSE) out vec4 o_diffuse;
@@ -49,7 +50,7 @@ void main()
 #endif
     vec3 v = normalize(-p);
     vec3 t = tl_light_weights(TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(gloss), f_position_radius, f_direction_cos_outer.xyz,
-                              f_cos_inner, f_direction_cos_outer.w);
+                              f_cos_inner, f_direction_cos_outer.w, f_source_radius);
     // One light's output never exceeds the FP16 maximum, whatever its colour (an Inf would poison
     // every later sum); sums past it are the readers' job (material.frag, tonemap.frag).
     const vec3 fp16_max = vec3(65504.0);

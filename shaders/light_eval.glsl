@@ -21,13 +21,14 @@ float tl_lobe_shape(float gloss)
 #endif
 }
 
-// type: 1 point, 2 spot, 3 directional; position_radius.w is the light's range.
+// type: 1 point, 2 spot, 3 directional; position_radius.w is the light's range; source_radius the
+// emitting sphere's (GGX only: Blinn-Phong lights are punctual).
 vec3 tl_light_weights(int type, vec3 p, vec3 n, vec3 v, float shape, vec4 position_radius, vec3 direction,
-                      float cos_inner, float cos_outer)
+                      float cos_inner, float cos_outer, float source_radius)
 {
 #ifdef TL_GGX
-    return tl_ggx_light_terms(type, p, n, v, shape, position_radius.xyz, position_radius.w, 0.0, direction, cos_inner,
-                              cos_outer);
+    return tl_ggx_light_terms(type, p, n, v, shape, position_radius.xyz, position_radius.w, source_radius, direction,
+                              cos_inner, cos_outer);
 #else
     return vec3(tl_light_terms(type, p, n, v, shape, position_radius.xyz, position_radius.w, direction, cos_inner,
                                cos_outer), 0.0);

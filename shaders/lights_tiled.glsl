@@ -26,7 +26,7 @@ void tl_tiled_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout ve
         if (type == 2 && d2 > 0.0 && dot(-to_light, l.direction_cos_outer.xyz) <= l.direction_cos_outer.w * sqrt(d2)) return;
     }
     vec3 t = tl_light_weights(type, p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz, l.cos_inner.x,
-                              l.direction_cos_outer.w);
+                              l.direction_cos_outer.w, l.cos_inner.y);
     const vec3 fp16_max = vec3(65504.0);
     diffuse += min(l.color_type.rgb * t.x, fp16_max);
     specular += min(l.color_type.rgb * t.y, fp16_max);

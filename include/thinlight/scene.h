@@ -109,6 +109,11 @@ typedef struct tl_light {
     float radius;        /**< range; > 0 for point and spot */
     float cos_inner;     /**< spot: full intensity inside this cone */
     float cos_outer;     /**< spot: zero outside this cone; cos_outer < cos_inner */
+    /** Point and spot lights: the radius of the emitting sphere (GGX lighting only: the sphere's
+     *  irradiance for diffuse, Karis' representative point for specular; docs/lighting.md).
+     *  0 (the default): a punctual light. The window and the cone are measured from the centre,
+     *  so `radius` still bounds everything the light reaches. */
+    float source_radius;
 } tl_light;
 
 /** A perspective camera looking from position at target. */

@@ -83,7 +83,8 @@ tl_result tl__lights_store(tl_renderer *r, const tl_light *lights, size_t count,
         int bad = (unsigned)l->type >= TL_LIGHT_TYPE_COUNT_;
         for (int k = 0; k < 3; k++)
             bad |= !isfinite(l->position[k]) || !isfinite(l->direction[k]) || !isfinite(l->color[k]);
-        if (l->type != TL_LIGHT_DIRECTIONAL) bad |= !(l->radius >= 0.0f) || !isfinite(l->radius);
+        if (l->type != TL_LIGHT_DIRECTIONAL)
+            bad |= !(l->radius >= 0.0f) || !isfinite(l->radius) || !(l->source_radius >= 0.0f) || !isfinite(l->source_radius);
         if (bad) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: light %zu has a non-finite or invalid field", i);
         kinds[(l->type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : l->type) - 1]++;
     }
