@@ -47,7 +47,7 @@ typedef struct tl__plan_input {
      * TL_SPECULAR_NONE, then TL_GGX with GGX, then TL_FRESNEL_SUMS or TL_FRESNEL_NV in thin-lpp */
     char spec_define[48];
     const char *rt0_define;     /* TL_RT0_RGBA8 or TL_RT0_RGB10A2 */
-    char material_defines[128]; /* the geometry passes' material switches (leading space each) */
+    char material_defines[96];  /* the geometry passes' material switches (leading space each) */
 } tl__plan_input;
 
 /* One pass as declared for a plan (target sets are TL_TARGET_BIT bits). */
@@ -67,7 +67,7 @@ typedef struct tl__pass_decl {
 
 /* The defines of each of a pass's programs ("" leaves the slot out). */
 typedef struct tl__pass_defines {
-    char slot[TL__PASS_MAX_PROGRAMS][256];
+    char slot[TL__PASS_MAX_PROGRAMS][192];
     uint8_t used[TL__PASS_MAX_PROGRAMS];
 } tl__pass_defines;
 
