@@ -335,7 +335,9 @@ typedef struct tl_frame_stats {
     double pass_bytes[TL_PASS_COUNT];   /**< estimate of bytes moved per pass (docs/bandwidth.md) */
     double bytes_moved;                 /**< sum of pass_bytes */
     double gpu_ms;                      /**< sum of pass_ms */
-    double cpu_ms;                      /**< CPU time the render call spent issuing commands (never waits) */
+    double cpu_ms;                      /**< CPU time of the calling thread in the render call, issuing commands
+                                             (thread CPU clock, before any wait for statistics; on llvmpipe it
+                                             includes Mesa's vertex processing and binning, which run there) */
     double wall_ms;                     /**< render call start to GPU done; synchronous statistics only, else 0 */
     size_t target_bytes[TL_TARGET_COUNT]; /**< bytes each allocated target occupies; 0 = not allocated */
     size_t gbuffer_bytes;               /**< depth + RT0 + RT1 + FAT_* */
@@ -406,8 +408,9 @@ typedef struct tl_render_output {
  * reads the last frame rendered with tl_renderer_render).
  *
  * The GL state it leaves, as after tl_renderer_render: framebuffer 0 bound for drawing and
- * reading, program 0, vertex array 0, no texture or sampler on the units it used, no uniform or
- * storage buffer on the binding points it used (0..3); blending, depth test, face culling,
+ * reading, program 0, vertex array 0, no texture or sampler on the units it used (0..20), no
+ * uniform or storage buffer on the binding points it used (0..4), no image on the image units it
+ * used (0..2); blending, depth test, face culling,
  * depth clamp, scissor and stencil tests off; depth mask and colour mask on; clip control
  * (GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE); the viewport is the output rectangle (render_to) or
  * the renderer's size (render). Other state is not touched.

@@ -263,6 +263,7 @@ void tl__tiles_collect(tl_renderer *r, const uint64_t *results, tl_frame_stats *
 
 /* stats.c: the query ring and the bytes-moved estimate. */
 double tl__now_ms(void);
+double tl__thread_cpu_ms(void); /* CPU time of the calling thread (CLOCK_THREAD_CPUTIME_ID) */
 void tl__queries_create(tl_renderer *r);
 void tl__queries_destroy(tl_renderer *r);
 /* The ring slot for `frame`, read first (blocking) if it still holds an unread frame. */
