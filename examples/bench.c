@@ -12,7 +12,8 @@ static const char usage_text[] =
     "usage: " BENCH_TOOL " [--scene default|FILE.gltf] [--size WxH[,WxH...]] [--lights N,N,...]\n"
     "                       [--modes MODE,...] [--strategies S,...] [--light-formats F,...]\n"
     "                       [--frames N] [--warmup N] [--json OUT.json] [--out DIR] [--quick]\n"
-    "                       [--doc FILE.md] [--seed S] [--no-plot] [--context C] [--device N]\n"
+    "                       [--doc FILE.md] [--seed S] [--lighting M] [--fresnel F] [--no-plot]\n"
+    "                       [--context C] [--device N]\n"
     "                       [--list-devices] [--help]\n"
     "\n"
     "Renders the same frames in every mode and compares what they store (bytes per pixel of the\n"
@@ -42,6 +43,8 @@ static const char usage_text[] =
     "                   in FILE with the tables, and copy the plots to img/ beside it (needs --out\n"
     "                   unless --no-plot)\n"
     "  --seed S         seed of the light layout (default 1)\n"
+    "  --lighting M     auto (default: ggx for glTF materials, else blinn-phong), blinn-phong or ggx\n"
+    "  --fresnel F      thin-lpp with GGX: two-sums (default, exact) or nv (Schlick with n.v per pixel)\n"
     "  --no-plot        do not run gnuplot\n"
     TL_TOOL_CONTEXT_HELP
     "  --help           this text\n"
@@ -203,7 +206,7 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
     memset(o, 0, sizeof *o);
     o->scene = "default";
     const char *sizes = NULL, *lights = NULL, *modes = NULL, *strategies = NULL, *formats = NULL, *frames = NULL, *warmup = NULL, *seed = NULL;
-    const char *context = NULL, *device = NULL;
+    const char *context = NULL, *device = NULL, *lighting = NULL, *fresnel = NULL;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char **value = NULL;
@@ -222,6 +225,8 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
         else if (!strcmp(a, "--frames")) value = &frames;
         else if (!strcmp(a, "--warmup")) value = &warmup;
         else if (!strcmp(a, "--seed")) value = &seed;
+        else if (!strcmp(a, "--lighting")) value = &lighting;
+        else if (!strcmp(a, "--fresnel")) value = &fresnel;
         else if (!strcmp(a, "--json")) value = &o->json;
         else if (!strcmp(a, "--out")) value = &o->out;
         else if (!strcmp(a, "--doc")) value = &o->doc;
@@ -254,6 +259,10 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
     o->warmup = warmup ? (uint32_t)v : o->quick ? 1 : 2;
     if (seed && !bench__parse_u64(seed, UINT64_MAX, &o->seed)) return bench__usage("--seed wants a number, got '%s'", seed);
     if (!seed) o->seed = 1;
+    if (lighting && tl_lighting_model_from_name(lighting, &o->lighting) != TL_OK)
+        return bench__usage("--lighting wants auto, blinn-phong or ggx, got '%s'", lighting);
+    if (fresnel && tl_fresnel_layout_from_name(fresnel, &o->fresnel) != TL_OK)
+        return bench__usage("--fresnel wants two-sums or nv, got '%s'", fresnel);
     if (o->doc && !o->out && !o->no_plot) return bench__usage("--doc %s needs --out DIR for the plots (or --no-plot)", o->doc);
     return 0;
 }

@@ -82,6 +82,8 @@ typedef struct bench_options {
     int quick, no_plot, help, list_devices;
     int small_light_buffer;   /* also thin-lpp/tiled with an R11G11B10F light buffer (--light-formats) */
     tl_tool_context_options context; /* --context, --device */
+    tl_lighting_model lighting;      /* --lighting (auto: from the scene's materials) */
+    tl_fresnel_layout fresnel;       /* --fresnel (thin-lpp with GGX) */
 } bench_options;
 
 /* One (mode, lights, size): medians over the timed frames, sizes from the plan, errors against the
@@ -120,6 +122,8 @@ typedef struct bench_record {
     tl_image_error hdr;            /* HDR target vs fat, RGB, peak = fat's largest value */
     double hdr_peak;
     uint64_t nan_pixels;           /* pixels with a NaN or Inf channel in the HDR target */
+    tl_lighting_model lighting;    /* the plan's lighting model */
+    tl_fresnel_layout fresnel;     /* the plan's Fresnel layout (thin-lpp with GGX), else DEFAULT */
 } bench_record;
 
 typedef enum bench_image_kind {
@@ -198,7 +202,7 @@ double bench_per_light_ms(const bench_record *r);          /* lighting_ms / ligh
 double bench_ns_per_pair(const bench_record *r);           /* lighting_ms / light_pairs in ns; NaN when none */
 double bench_ms_per_mpixel_covered(const bench_record *r); /* lighting_ms / covered Mpx; NaN when none */
 double bench_mib_at(const bench_record *r, uint32_t w, uint32_t h); /* plan bytes at another size */
-uint32_t bench_light_buffer_bpp(const bench_record *r);    /* light.diffuse + light.specular */
+uint32_t bench_light_buffer_bpp(const bench_record *r);    /* light.diffuse + light.specular + light.fresnel */
 
 /* bench_plan.c: fills run->planning for every rendered mode (pure: no GL; the times stay NaN). */
 int bench_planning_compare(bench_run *run, bench_scene *scene);

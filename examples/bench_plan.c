@@ -26,7 +26,8 @@ int bench_planning_compare(bench_run *run, bench_scene *scene)
     run->planning_count = 0;
     for (size_t m = 0; m < mode_count; m++) {
         tl_frame_plan plan, full;
-        tl_renderer_desc desc = {.mode = modes[m], .width = opt->sizes[0].width, .height = opt->sizes[0].height};
+        tl_renderer_desc desc = {.mode = modes[m], .width = opt->sizes[0].width, .height = opt->sizes[0].height,
+                                 .lighting = opt->lighting, .fresnel = opt->fresnel};
         tl_result a = tl_frame_plan_build(&desc, &features, &plan);
         desc.no_planning = 1;
         tl_result b = tl_frame_plan_build(&desc, &features, &full);

@@ -102,7 +102,8 @@ double bench_mib_at(const bench_record *r, uint32_t w, uint32_t h)
 
 uint32_t bench_light_buffer_bpp(const bench_record *r)
 {
-    return r->target_bpp[TL_TARGET_LIGHT_DIFFUSE] + r->target_bpp[TL_TARGET_LIGHT_SPECULAR];
+    return r->target_bpp[TL_TARGET_LIGHT_DIFFUSE] + r->target_bpp[TL_TARGET_LIGHT_SPECULAR] +
+           r->target_bpp[TL_TARGET_LIGHT_FRESNEL];
 }
 
 /* ---- statistics over the timed frames ------------------------------------------------------- */
@@ -175,6 +176,8 @@ static void bench__plan_figures(tl_renderer *r, const tl_frame_stats *st, size_t
         for (size_t i = 0; i < plan.pass_count && i < TL_PASS_COUNT; i++) rec->passes |= 1u << plan.passes[i].pass;
         rec->gbuffer_bytes_per_pixel = plan.gbuffer_bytes_per_pixel;
         rec->strategy = plan.light_strategy;
+        rec->lighting = plan.lighting;
+        rec->fresnel = plan.fresnel;
         for (int t = 0; t < TL_TARGET_COUNT; t++)
             if (plan.target_bytes_per_pixel[t] != rec->target_bpp[t])
                 fprintf(stderr, BENCH_TOOL ": warning: %s %s: the plan says %u B/px, the renderer allocated %u B/px\n",
@@ -323,6 +326,7 @@ static int bench__size_setup(bench_run *run, tl_context *ctx, const tl_scene *sc
     for (size_t m = 0; m < mode_count; m++) {
         tl_renderer_desc desc = {.mode = bench_config_mode(modes[m]), .light_strategy = bench_config_strategy(modes[m]),
                                  .light_format = bench_config_light_format(modes[m]),
+                                 .lighting = run->opt.lighting, .fresnel = run->opt.fresnel,
                                  .width = size.width, .height = size.height, .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR), .synchronous_stats = 1,
                                  .get_proc_address = tl_context_proc_loader, .get_proc_address_user = ctx,
                                  .logger = tl_tool_logger(BENCH_TOOL)};
@@ -429,6 +433,7 @@ static int bench__check_memory(const bench_options *opt, const tl_scene *scene)
             tl_frame_plan plan;
             tl_renderer_desc desc = {.mode = bench_config_mode(modes[m]), .light_strategy = bench_config_strategy(modes[m]),
                                      .light_format = bench_config_light_format(modes[m]),
+                                     .lighting = opt->lighting, .fresnel = opt->fresnel,
                                      .width = size.width, .height = size.height};
             if (tl_frame_plan_build(&desc, &features, &plan) == TL_OK) bpp += plan.bytes_per_pixel;
         }
@@ -469,6 +474,7 @@ static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *s
         tl_renderer *r[2] = {NULL, NULL};
         for (int k = 0; !err && k < 2; k++) {
             tl_renderer_desc desc = {.mode = p->mode, .width = size.width, .height = size.height, .no_planning = k,
+                                     .lighting = run->opt.lighting, .fresnel = run->opt.fresnel,
                                      .synchronous_stats = 1, .get_proc_address = tl_context_proc_loader,
                                      .get_proc_address_user = ctx, .logger = tl_tool_logger(BENCH_TOOL)};
             if (tl_renderer_create(&desc, &r[k]) != TL_OK) {

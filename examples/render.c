@@ -30,6 +30,11 @@ static const char *const usage =
     "  --rt0 FMT             rgba8 (default: oct 2x12 + gloss 8) or rgb10a2\n"
     "  --light-buffer L      exact (default: diffuse + specular RGBA16F) or compact (one RGBA16F)\n"
     "  --light-format F      rgba16f (default) or r11g11b10f (light buffer storage; exact layout)\n"
+    "  --lighting M          auto (default: ggx for glTF materials, else blinn-phong), blinn-phong\n"
+    "                        or ggx\n"
+    "  --fresnel F           thin-lpp with GGX: two-sums (default: exact, light.fresnel target) or\n"
+    "                        nv (one specular sum, Schlick with n.v per pixel)\n"
+    "  --ambient A           ambient radiance replacing the scene's (0 turns it off)\n"
     "  --light-strategy S    auto (default), volumes or tiled\n"
     "  --tile-size T         tiled: 8, 16 (default) or 32 pixels\n"
     "  --tiled-shading K     tiled: fragment (default) or compute\n"
@@ -101,7 +106,7 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
     static const char *const names[TL_TARGET_COUNT] = {
         "depth",        "rt0_normal_gloss", "rt1_albedo", "light_diffuse", "light_specular", "fat_position",
         "fat_normal",   "fat_albedo",       "fat_material", "hdr",         "ldr",            "output", NULL,
-        "ao_raw",       "ao",               "dof"};
+        "ao_raw",       "ao",               "dof",          "light_fresnel"};
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         size_t size = n * sizeof *buf;
         if (!names[t]) continue; /* a storage buffer */
@@ -138,6 +143,17 @@ static int parse_format(tl_renderer_desc *rd, const char *opt, const char *v)
         if (!strcmp(v, "rgba16f")) rd->light_format = TL_LIGHT_FORMAT_RGBA16F;
         else if (!strcmp(v, "r11g11b10f")) rd->light_format = TL_LIGHT_FORMAT_R11G11B10F;
         else return bad_usage("--light-format wants rgba16f or r11g11b10f", v);
+    } else if (!strcmp(opt, "--lighting")) {
+        if (tl_lighting_model_from_name(v, &rd->lighting) != TL_OK)
+            return bad_usage("--lighting wants blinn-phong, ggx or auto", v);
+    } else if (!strcmp(opt, "--fresnel")) {
+        if (tl_fresnel_layout_from_name(v, &rd->fresnel) != TL_OK) return bad_usage("--fresnel wants two-sums or nv", v);
+    } else if (!strcmp(opt, "--ambient")) {
+        float a;
+        char extra;
+        if (sscanf(v, "%f%c", &a, &extra) != 1 || !(a >= 0.0f) || a > 65504.0f)
+            return bad_usage("--ambient wants a radiance >= 0", v);
+        rd->ambient[0] = rd->ambient[1] = rd->ambient[2] = a > 0.0f ? a : -1.0f; /* negative: exactly 0 */
     } else if (!strcmp(opt, "--light-strategy")) {
         if (tl_light_strategy_from_name(v, &rd->light_strategy) != TL_OK)
             return bad_usage("--light-strategy wants volumes, tiled or auto", v);

@@ -4,7 +4,7 @@
 // its tile's list. TL_DEPTH_ONLY: the depth pre-pass. TL_TRANSPARENT: alpha out.
 #include "codec.glsl"
 #include "frame.glsl"
-#include "lighting.glsl"
+#include "light_eval.glsl"
 #include "material.glsl"
 #include "object.glsl"
 
@@ -17,12 +17,14 @@ layout(location = TL_OUT_HDR) out vec4 o_color;
 layout(binding = TL_UNIT_AO) uniform sampler2D u_ao;
 #endif
 
-void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float power, inout vec3 diffuse, inout vec3 specular)
+void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout vec3 diffuse, inout vec3 specular,
+                    inout vec3 fresnel)
 {
-    vec2 t = tl_light_terms(int(l.color_type.w), p, n, v, power, l.position_radius.xyz, l.position_radius.w,
-                            l.direction_cos_outer.xyz, l.cos_inner.x, l.direction_cos_outer.w);
+    vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
+                              l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
     diffuse += l.color_type.rgb * t.x;
     specular += l.color_type.rgb * t.y;
+    fresnel += l.color_type.rgb * t.z;
 }
 #endif
 
@@ -34,26 +36,26 @@ void main()
     vec3 n = tl_material_normal();
     vec3 p = v_view_position;
     vec3 v = normalize(-p);
-    float power = tl_gloss_to_specular_power(s.gloss);
-    vec3 diffuse = vec3(0.0), specular = vec3(0.0);
+    float shape = tl_lobe_shape(s.gloss);
+    vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
 #ifdef TL_FORWARD_TILED
     // Forward+: the directional lights, then the pixel's tile lists (every local light of a chunk
     // whose list overflowed)
-    for (uint i = 0u; i < u_light_counts.x; i++) tl_forward_add(tl_lights[i], p, n, v, power, diffuse, specular);
+    for (uint i = 0u; i < u_light_counts.x; i++) tl_forward_add(tl_lights[i], p, n, v, shape, diffuse, specular, fresnel);
     uint tile = tl_tile_index(ivec2(gl_FragCoord.xy)), chunks = tl_tile_chunks();
     for (uint c = 0u; c < chunks; c++) {
         uvec2 h = tl_tile_headers[tl_tile_header_index(tile, c)];
         uint count = tl_tile_list_size(h, c);
         for (uint k = 0u; k < count; k++)
-            tl_forward_add(tl_lights[tl_tile_list_light(h, c, k)], p, n, v, power, diffuse, specular);
+            tl_forward_add(tl_lights[tl_tile_list_light(h, c, k)], p, n, v, shape, diffuse, specular, fresnel);
     }
 #else
     uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
     for (uint k = 0u; k < count; k++)
-        tl_forward_add(tl_lights[tl_light_indices[first + k]], p, n, v, power, diffuse, specular);
+        tl_forward_add(tl_lights[tl_light_indices[first + k]], p, n, v, shape, diffuse, specular, fresnel);
 #endif
 #ifdef TL_SPECULAR_NONE
-    specular = vec3(0.0);
+    specular = fresnel = vec3(0.0);
 #endif
 #ifdef TL_SSAO_AMBIENT
     // SSAO (docs/effects.md): the ambient term, and with TL_SSAO_DIFFUSE the diffuse light
@@ -61,9 +63,9 @@ void main()
 #ifdef TL_SSAO_DIFFUSE
     diffuse *= ao;
 #endif
-    vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + s.specular * specular + s.emissive;
+    vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + s.specular * specular + fresnel + s.emissive;
 #else
-    vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + s.specular * specular + s.emissive;
+    vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + s.specular * specular + fresnel + s.emissive;
 #endif
 #ifdef TL_TRANSPARENT
     o_color = vec4(min(c, vec3(65504.0)), clamp(s.alpha, 0.0, 1.0));

@@ -2,17 +2,21 @@
 // into the FP16 light buffer; TL_LIGHT_SHADE_THIN / TL_LIGHT_SHADE_FAT (deferred modes) read the
 // material from the G-buffer and add shaded radiance to HDR.
 #include "gbuffer_decode.glsl"
-#include "lighting.glsl"
+#include "light_eval.glsl"
 
 flat in vec4 f_position_radius;
 flat in vec3 f_color;
 flat in vec4 f_direction_cos_outer;
 flat in float f_cos_inner;
+flat in float f_source_radius;
 
 #ifdef TL_LIGHT_ACCUM
 layout(location = TL_OUT_LIGHT_DIFFUSE) out vec4 o_diffuse;
 #ifdef TL_SPECULAR_EXACT
 layout(location = TL_OUT_LIGHT_SPECULAR) out vec4 o_specular;
+#endif
+#ifdef TL_FRESNEL_SUMS
+layout(location = TL_OUT_LIGHT_FRESNEL) out vec4 o_fresnel;
 #endif
 #else
 layout(location = TL_OUT_HDR) out vec4 o_color;
@@ -45,17 +49,24 @@ void main()
     tl_gbuffer_normal_gloss(px, n, gloss);
 #endif
     vec3 v = normalize(-p);
-    vec2 t = tl_light_terms(TL_LIGHT_TYPE, p, n, v, tl_gloss_to_specular_power(gloss), f_position_radius.xyz,
-                            f_position_radius.w, f_direction_cos_outer.xyz, f_cos_inner, f_direction_cos_outer.w);
+    vec3 t = tl_light_weights(TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(gloss), f_position_radius, f_direction_cos_outer.xyz,
+                              f_cos_inner, f_direction_cos_outer.w, f_source_radius);
     // One light's output never exceeds the FP16 maximum, whatever its colour (an Inf would poison
     // every later sum); sums past it are the readers' job (material.frag, tonemap.frag).
     const vec3 fp16_max = vec3(65504.0);
     vec3 diffuse = min(f_color * t.x, fp16_max);
-    vec3 specular = min(f_color * t.y, fp16_max);
+    vec3 specular = min(f_color * t.y, fp16_max); // times F0
+    vec3 fresnel = min(f_color * t.z, fp16_max);  // added as it is (GGX's Schlick part)
 #ifdef TL_LIGHT_ACCUM
+#ifndef TL_FRESNEL_SUMS
+    specular = min(specular + fresnel, fp16_max); // one sum: Fresnel is applied per pixel
+#endif
 #if defined(TL_SPECULAR_EXACT)
     o_diffuse = vec4(diffuse, 0.0);
     o_specular = vec4(specular, 0.0);
+#ifdef TL_FRESNEL_SUMS
+    o_fresnel = vec4(fresnel, 0.0);
+#endif
 #elif defined(TL_SPECULAR_COMPACT)
     o_diffuse = vec4(diffuse, min(tl_luminance(specular), 65504.0));
 #else
@@ -68,7 +79,8 @@ void main()
 #endif
 #ifdef TL_SPECULAR_NONE
     spec_color = vec3(0.0);
+    fresnel = vec3(0.0);
 #endif
-    o_color = vec4(min(albedo * diffuse + spec_color * specular, vec3(65504.0)), 0.0);
+    o_color = vec4(min(albedo * diffuse + spec_color * specular + fresnel, fp16_max), 0.0);
 #endif
 }

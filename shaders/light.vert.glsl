@@ -7,19 +7,21 @@ layout(location = 0) in vec3 a_position;           // unit volume mesh (sphere o
 layout(location = 1) in vec4 i_position_radius;    // world
 layout(location = 2) in vec4 i_color;
 layout(location = 3) in vec4 i_direction_cos_outer; // world direction light travels
-layout(location = 4) in float i_cos_inner;
+layout(location = 4) in vec2 i_cos_inner_source; // spot cos_inner, sphere light radius
 
 flat out vec4 f_position_radius; // view space
 flat out vec3 f_color;
 flat out vec4 f_direction_cos_outer; // view space
 flat out float f_cos_inner;
+flat out float f_source_radius;
 
 void main()
 {
     f_position_radius = vec4((u_view * vec4(i_position_radius.xyz, 1.0)).xyz, i_position_radius.w);
     f_color = i_color.rgb;
     f_direction_cos_outer = vec4(normalize(mat3(u_view) * i_direction_cos_outer.xyz), i_direction_cos_outer.w);
-    f_cos_inner = i_cos_inner;
+    f_cos_inner = i_cos_inner_source.x;
+    f_source_radius = i_cos_inner_source.y;
 #if TL_LIGHT_TYPE == 3 || defined(TL_LIGHT_FULLSCREEN)
     gl_Position = vec4(tl_fullscreen_position(gl_VertexID), 0.0, 1.0);
 #elif TL_LIGHT_TYPE == 2

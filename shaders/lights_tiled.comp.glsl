@@ -8,6 +8,9 @@ layout(TL_LIGHT_IMAGE_FORMAT, binding = TL_IMAGE_LIGHT_DIFFUSE) uniform writeonl
 #ifdef TL_SPECULAR_EXACT
 layout(TL_LIGHT_IMAGE_FORMAT, binding = TL_IMAGE_LIGHT_SPECULAR) uniform writeonly image2D u_light_specular_image;
 #endif
+#ifdef TL_FRESNEL_SUMS
+layout(TL_LIGHT_IMAGE_FORMAT, binding = TL_IMAGE_LIGHT_FRESNEL) uniform writeonly image2D u_light_fresnel_image;
+#endif
 #else
 layout(rgba16f, binding = TL_IMAGE_HDR) uniform image2D u_hdr_image;
 #endif
@@ -21,6 +24,9 @@ void main()
 #if defined(TL_SPECULAR_EXACT)
     imageStore(u_light_diffuse_image, px, vec4(r.diffuse, 0.0));
     imageStore(u_light_specular_image, px, vec4(r.specular, 0.0));
+#ifdef TL_FRESNEL_SUMS
+    imageStore(u_light_fresnel_image, px, vec4(r.fresnel, 0.0));
+#endif
 #elif defined(TL_SPECULAR_COMPACT)
     imageStore(u_light_diffuse_image, px, vec4(r.diffuse, min(tl_luminance(r.specular), 65504.0)));
 #else

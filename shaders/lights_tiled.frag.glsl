@@ -8,6 +8,9 @@ layout(location = TL_OUT_LIGHT_DIFFUSE) out vec4 o_diffuse;
 #ifdef TL_SPECULAR_EXACT
 layout(location = TL_OUT_LIGHT_SPECULAR) out vec4 o_specular;
 #endif
+#ifdef TL_FRESNEL_SUMS
+layout(location = TL_OUT_LIGHT_FRESNEL) out vec4 o_fresnel;
+#endif
 #else
 layout(location = TL_OUT_HDR) out vec4 o_color;
 #endif
@@ -19,6 +22,9 @@ void main()
 #if defined(TL_SPECULAR_EXACT)
     o_diffuse = vec4(r.diffuse, 0.0);
     o_specular = vec4(r.specular, 0.0);
+#ifdef TL_FRESNEL_SUMS
+    o_fresnel = vec4(r.fresnel, 0.0);
+#endif
 #elif defined(TL_SPECULAR_COMPACT)
     o_diffuse = vec4(r.diffuse, min(tl_luminance(r.specular), 65504.0));
 #else

@@ -1,11 +1,12 @@
 // Pass 3 (thin-lpp): the second geometry pass applies materials to the accumulated light
 // (depth EQUAL). TL_NO_LIGHTS: no light buffer, ambient and emissive only.
 #include "frame.glsl"
-#include "lighting.glsl"
+#include "light_eval.glsl"
 #include "material.glsl"
 
 layout(binding = TL_UNIT_LIGHT_DIFFUSE) uniform sampler2D u_light_diffuse;
 layout(binding = TL_UNIT_LIGHT_SPECULAR) uniform sampler2D u_light_specular;
+layout(binding = TL_UNIT_LIGHT_FRESNEL) uniform sampler2D u_light_fresnel;
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
 #ifdef TL_SSAO_AMBIENT
@@ -22,18 +23,27 @@ void main()
 {
     tl_surface s = tl_material_surface();
     if (tl_material_masked(s)) discard;
-    vec3 diffuse = vec3(0.0), specular = vec3(0.0);
+    vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
 #ifndef TL_NO_LIGHTS
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 ld = texelFetch(u_light_diffuse, px, 0);
     diffuse = tl_finite(ld.rgb);
 #if defined(TL_SPECULAR_EXACT)
     specular = tl_finite(texelFetch(u_light_specular, px, 0).rgb);
+#ifdef TL_FRESNEL_SUMS
+    fresnel = tl_finite(texelFetch(u_light_fresnel, px, 0).rgb);
+#endif
 #elif defined(TL_SPECULAR_COMPACT)
     // Compact layout: specular colour follows the diffuse light's chromaticity.
     float lum = tl_luminance(diffuse);
     specular = lum > 1e-8 ? diffuse * (min(ld.a, 65504.0) / lum) : vec3(0.0);
 #endif
+#endif
+    // GGX: F0 S1 + S2 with the two sums (exact), or one sum times Schlick with n.v; Blinn-Phong: F0 S
+#if defined(TL_GGX) && defined(TL_FRESNEL_NV) && !defined(TL_NO_LIGHTS)
+    vec3 f0 = tl_fresnel_schlick(s.specular, clamp(dot(tl_material_normal(), normalize(-v_view_position)), 0.0, 1.0));
+#else
+    vec3 f0 = s.specular;
 #endif
 #ifdef TL_SSAO_AMBIENT
     // SSAO (docs/effects.md): the ambient term, and with TL_SSAO_DIFFUSE the diffuse light
@@ -41,9 +51,9 @@ void main()
 #ifdef TL_SSAO_DIFFUSE
     diffuse *= ao;
 #endif
-    vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + s.specular * specular + s.emissive;
+    vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + f0 * specular + fresnel + s.emissive;
 #else
-    vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + s.specular * specular + s.emissive;
+    vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + f0 * specular + fresnel + s.emissive;
 #endif
     o_color = vec4(min(c, vec3(65504.0)), 1.0);
 }

@@ -11,7 +11,7 @@ struct tl_light_data {
     vec4 position_radius;     // view space
     vec4 color_type;          // linear colour, type (1 point, 2 spot, 3 directional)
     vec4 direction_cos_outer; // view space
-    vec4 cos_inner;
+    vec4 cos_inner;           // spot cos_inner, sphere light radius (source_radius), 0, 0
 };
 layout(std430, binding = TL_SSBO_LIGHTS) readonly buffer tl_light_buffer { tl_light_data tl_lights[]; };
 

@@ -95,6 +95,37 @@ typedef enum tl_light_format {
     TL_LIGHT_FORMAT_COUNT_       /**< number of values */
 } tl_light_format;
 
+/** The lighting model of a frame (docs/lighting.md); one model per frame, every mode. */
+typedef enum tl_lighting_model {
+    TL_LIGHTING_DEFAULT = 0,  /**< "auto": the planner picks from the scene's materials: GGX when some drawn
+                                   material is authored for it (glTF, TL_MATERIAL_MICROFACET or metallic-roughness),
+                                   else Blinn-Phong (the crypt's materials are authored for it) */
+    TL_LIGHTING_BLINN_PHONG,  /**< "blinn-phong": normalised Lambert + normalised Blinn-Phong */
+    TL_LIGHTING_GGX,          /**< "ggx": normalised Lambert + GGX / Schlick-GGX (k = alpha/2) / Schlick Fresnel */
+    TL_LIGHTING_COUNT_        /**< number of values */
+} tl_lighting_model;
+
+/** "auto", "blinn-phong", "ggx" ("unknown" otherwise). */
+TL_API const char *tl_lighting_model_name(tl_lighting_model model);
+/** Parses a name of tl_lighting_model_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_lighting_model_from_name(const char *name, tl_lighting_model *model);
+
+/** How thin-lpp's light buffer keeps GGX's Schlick Fresnel, which needs the material's F0 that the
+ *  light pass does not have (EXACT light buffer; the compact one always uses TL_FRESNEL_NV). The
+ *  other modes evaluate Fresnel per light with the true v.h. */
+typedef enum tl_fresnel_layout {
+    TL_FRESNEL_DEFAULT = 0, /**< = TL_FRESNEL_TWO_SUMS (docs/renderer.md gives the measurements) */
+    TL_FRESNEL_TWO_SUMS,    /**< "two-sums": S1 = sum c w (1 - s) in light.specular, S2 = sum c w s in
+                                 light.fresnel, s = (1 - v.h)^5; the material pass forms F0 S1 + S2 (exact) */
+    TL_FRESNEL_NV,          /**< "nv": one sum S1 + S2; the material pass applies Schlick with n.v per pixel */
+    TL_FRESNEL_COUNT_       /**< number of values */
+} tl_fresnel_layout;
+
+/** "two-sums", "nv" ("unknown" otherwise; TL_FRESNEL_DEFAULT is "two-sums"). */
+TL_API const char *tl_fresnel_layout_name(tl_fresnel_layout layout);
+/** Parses a name of tl_fresnel_layout_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_fresnel_layout_from_name(const char *name, tl_fresnel_layout *layout);
+
 /** FXAA 3.11-style quality presets (edge search lengths as in the 12 / 29 / 39 presets). */
 typedef enum tl_fxaa_preset {
     TL_FXAA_DEFAULT = 0, /**< = TL_FXAA_29 */
@@ -180,6 +211,8 @@ typedef struct tl_renderer_desc {
     tl_light_buffer light_buffer;      /**< default EXACT */
     tl_light_format light_format;      /**< default RGBA16F; R11G11B10F needs the EXACT layout */
     tl_light_strategy light_strategy;  /**< default auto */
+    tl_lighting_model lighting;        /**< default auto: from the scene's materials (tl_frame_plan.lighting) */
+    tl_fresnel_layout fresnel;         /**< thin-lpp with GGX: default two sums (exact) */
     uint32_t tile_size;                /**< tiled strategy: tile side in pixels, 8, 16 or 32; 0: the default (docs/frame.md) */
     tl_tiled_shading tiled_shading;    /**< tiled strategy: fragment (default) or compute shading pass */
     tl_fxaa_preset fxaa;               /**< default 29 */
@@ -187,6 +220,11 @@ typedef struct tl_renderer_desc {
     float fxaa_edge_threshold_min;     /**< default 0.0833 (absolute, in gamma-encoded luma) */
     float fxaa_subpix;                 /**< default 0.75; a negative value means 0 */
     float exposure;                    /**< default 1; multiplies HDR colour before tone mapping */
+    /** Linear ambient radiance added to every mode as albedo * ambient * occlusion (docs/renderer.md).
+     *  All three zero (the default): the scene's tl_scene.ambient (the glTF loader's 0.03, the
+     *  crypt's own). Otherwise it replaces the scene's, and a negative component means exactly 0:
+     *  `.ambient = {-1, -1, -1}` turns the ambient term off. */
+    float ambient[3];
     int forward_no_depth_prepass;      /**< forward mode: 1 leaves out the depth pre-pass (default: on) */
     int no_planning;                   /**< 1: plan for every feature whatever the scene uses (all light
                                             types, specular, textures, normal maps, alpha): shows what
@@ -253,6 +291,7 @@ typedef enum tl_target_id {
     TL_TARGET_AO_RAW,         /**< R16F SSAO estimate before the blur */
     TL_TARGET_AO,             /**< R16F ambient occlusion (1 = open) */
     TL_TARGET_DOF,            /**< RGBA16F depth-of-field image */
+    TL_TARGET_LIGHT_FRESNEL,  /**< thin-lpp with GGX, two-sums layout: S2, the Schlick part of specular */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -326,6 +365,10 @@ typedef struct tl_frame_plan {
     uint32_t light_types;                        /**< bits (1u << tl_light_type) drawn by the light pass */
     tl_light_strategy light_strategy;            /**< volumes or tiled (never auto) */
     char strategy_reason[96];                    /**< why the planner chose it */
+    tl_lighting_model lighting;                  /**< blinn-phong or ggx (never auto) */
+    tl_fresnel_layout fresnel;                   /**< thin-lpp with GGX and specular: how the light buffer keeps
+                                                      Fresnel; TL_FRESNEL_DEFAULT where it does not apply */
+    char lighting_reason[96];                    /**< why the planner chose the model */
     uint32_t tile_size;                          /**< tiled: tile side in pixels (0 with volumes) */
     uint32_t tiles_x;                            /**< tiled: tiles across */
     uint32_t tiles_y;                            /**< tiled: tiles down */
@@ -432,9 +475,9 @@ typedef struct tl_render_output {
  * reads the last frame rendered with tl_renderer_render).
  *
  * The GL state it leaves, as after tl_renderer_render: framebuffer 0 bound for drawing and
- * reading, program 0, vertex array 0, no texture or sampler on the units it used (0..20), no
+ * reading, program 0, vertex array 0, no texture or sampler on the units it used (0..24), no
  * uniform or storage buffer on the binding points it used (0..4), no image on the image units it
- * used (0..2); blending, depth test, face culling,
+ * used (0..3); blending, depth test, face culling,
  * depth clamp, scissor and stencil tests off; depth mask and colour mask on; clip control
  * (GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE); the viewport is the output rectangle (render_to) or
  * the renderer's size (render). Other state is not touched.

@@ -72,6 +72,9 @@ typedef struct tl_material {
 #define TL_MATERIAL_ALPHA_BLEND 4u
 /** Material flag: glTF metallic-roughness, converted per pixel (see tl_material). */
 #define TL_MATERIAL_METALLIC_ROUGHNESS 8u
+/** Material flag: authored for the GGX microfacet model (every glTF material): with
+ *  TL_LIGHTING_DEFAULT a scene that draws one is lit with GGX. */
+#define TL_MATERIAL_MICROFACET 16u
 
 /** A drawable object: a range of the scene's index buffer with one material and a world transform. */
 typedef struct tl_object {
@@ -106,6 +109,11 @@ typedef struct tl_light {
     float radius;        /**< range; > 0 for point and spot */
     float cos_inner;     /**< spot: full intensity inside this cone */
     float cos_outer;     /**< spot: zero outside this cone; cos_outer < cos_inner */
+    /** Point and spot lights: the radius of the emitting sphere (GGX lighting only: the sphere's
+     *  irradiance for diffuse, Karis' representative point for specular; docs/lighting.md).
+     *  0 (the default): a punctual light. The window and the cone are measured from the centre,
+     *  so `radius` still bounds everything the light reaches. */
+    float source_radius;
 } tl_light;
 
 /** A perspective camera looking from position at target. */
@@ -155,6 +163,7 @@ typedef struct tl_scene_feature_set {
     int has_occlusion;    /**< some material has an occlusion texture */
     int has_emissive_texture; /**< some emissive material has an emissive texture */
     int has_double_sided; /**< some material is double-sided */
+    int has_microfacet;   /**< some material is authored for GGX (TL_MATERIAL_MICROFACET or metallic-roughness) */
     size_t triangle_count; /**< triangles in the index buffer */
     size_t object_count;   /**< objects in the scene */
 } tl_scene_feature_set;

@@ -97,6 +97,7 @@ tl_material convert_material(const context &c, const tinygltf::Model &m, int ind
     out.alpha_cutoff = std::isfinite(g.alphaCutoff) && g.alphaCutoff >= 0.0 ? to_float(g.alphaCutoff) : 0.5f;
     out.normal_scale = positive_scale(g.normalTexture.scale);
     out.occlusion_strength = positive_scale(clamp01(g.occlusionTexture.strength, 1.0));
+    out.flags = TL_MATERIAL_MICROFACET; // glTF materials are authored for the GGX model
     if (mr_map) out.flags |= TL_MATERIAL_METALLIC_ROUGHNESS;
     if (g.doubleSided) out.flags |= TL_MATERIAL_DOUBLE_SIDED;
     if (g.alphaMode == "MASK") {

@@ -17,11 +17,12 @@
     X(IMAGE_LIGHT_DIFFUSE, 0)    /* image units of the compute shading pass's writes */           \
     X(IMAGE_LIGHT_SPECULAR, 1)                                                                    \
     X(IMAGE_HDR, 2)                                                                               \
-    X(UNIT_ALBEDO_TEXTURE, 16)   /* material textures (units below 16 are the targets') */        \
-    X(UNIT_NORMAL_TEXTURE, 17)                                                                    \
-    X(UNIT_MR_TEXTURE, 18)                                                                        \
-    X(UNIT_EMISSIVE_TEXTURE, 19)                                                                  \
-    X(UNIT_OCCLUSION_TEXTURE, 20)                                                                 \
+    X(IMAGE_LIGHT_FRESNEL, 3)                                                                     \
+    X(UNIT_ALBEDO_TEXTURE, 20)   /* material textures (units below 20 are the targets') */        \
+    X(UNIT_NORMAL_TEXTURE, 21)                                                                    \
+    X(UNIT_MR_TEXTURE, 22)                                                                        \
+    X(UNIT_EMISSIVE_TEXTURE, 23)                                                                  \
+    X(UNIT_OCCLUSION_TEXTURE, 24)                                                                 \
     X(CULL_CHUNK, 16384)         /* local lights one light-cull invocation tests (tiles.glsl) */
 
 enum {
@@ -29,9 +30,9 @@ enum {
     TL__BINDING_LIST(TL__BINDING_ENUM)
 #undef TL__BINDING_ENUM
     TL__MATERIAL_TEXTURES = 5,
-    TL__TEXTURE_UNITS_USED = 21, /* units the renderer may bind: 0 .. 20 */
+    TL__TEXTURE_UNITS_USED = 25, /* units the renderer may bind: 0 .. 24 */
     TL__BUFFER_BINDINGS_USED = 5, /* uniform and storage binding points it may bind: 0 .. 4 */
-    TL__IMAGE_UNITS_USED = 3     /* image units it may bind: 0 .. 2 */
+    TL__IMAGE_UNITS_USED = 4     /* image units it may bind: 0 .. 3 */
 };
 
 #endif

@@ -40,7 +40,8 @@ static void tl__view_light(const tl__view *v, const tl_light *l, int type, tl__f
     memcpy(fl->direction_cos_outer, vd, sizeof vd);
     fl->direction_cos_outer[3] = type == TL_LIGHT_SPOT ? l->cos_outer : -1.0f;
     fl->cos_inner[0] = type == TL_LIGHT_SPOT ? l->cos_inner : 1.0f;
-    fl->cos_inner[1] = fl->cos_inner[2] = fl->cos_inner[3] = 0.0f;
+    fl->cos_inner[1] = type == TL_LIGHT_DIRECTIONAL ? 0.0f : l->source_radius;
+    fl->cos_inner[2] = fl->cos_inner[3] = 0.0f;
 }
 
 /* Appends the visible lights of one kind (directional or local); returns the new count. */

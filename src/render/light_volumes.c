@@ -108,7 +108,7 @@ void tl__light_volumes_create(tl_renderer *r)
         gl->VertexArrayBindingDivisor(vao, 1, 1);
         for (GLuint a = 0; a < 4; a++) {
             gl->EnableVertexArrayAttrib(vao, a + 1);
-            gl->VertexArrayAttribFormat(vao, a + 1, a == 3 ? 1 : 4, GL_FLOAT, GL_FALSE, offs[a]);
+            gl->VertexArrayAttribFormat(vao, a + 1, a == 3 ? 2 : 4, GL_FLOAT, GL_FALSE, offs[a]);
             gl->VertexArrayAttribBinding(vao, a + 1, 1);
         }
         tl__gl_label(gl, GL_VERTEX_ARRAY, vao, names[k]);
@@ -152,6 +152,7 @@ static void tl__instance_fill(const tl_light *l, int type, tl__instance *in)
     memcpy(in->direction_cos_outer, dir, sizeof dir);
     in->direction_cos_outer[3] = type == TL_LIGHT_SPOT ? l->cos_outer : -1.0f;
     in->cos_inner = type == TL_LIGHT_SPOT ? l->cos_inner : 1.0f;
+    in->source_radius = type == TL_LIGHT_DIRECTIONAL ? 0.0f : l->source_radius;
 }
 
 tl_result tl__lights_prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec)

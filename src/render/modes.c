@@ -9,9 +9,9 @@
 
 const tl__mode_def tl__modes[TL_MODE_COUNT_] = {
     [TL_MODE_DEFAULT] = {"thin-lpp", TL__B(RT0), TL__B(DEPTH) | TL__B(RT0), TL__B(DEPTH) | TL__B(RT0),
-                         TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR), "TL_LIGHT_ACCUM", 1, 0},
+                         TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | TL__B(LIGHT_FRESNEL), "TL_LIGHT_ACCUM", 1, 0},
     [TL_MODE_THIN_LPP] = {"thin-lpp", TL__B(RT0), TL__B(DEPTH) | TL__B(RT0), TL__B(DEPTH) | TL__B(RT0),
-                          TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR), "TL_LIGHT_ACCUM", 1, 0},
+                          TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | TL__B(LIGHT_FRESNEL), "TL_LIGHT_ACCUM", 1, 0},
     /* emissive and ambient go straight to HDR in the G-buffer pass; lights add to it */
     [TL_MODE_THIN_DEFERRED] = {"thin-deferred", TL__B(RT0) | TL__B(RT1) | TL__B(HDR),
                                TL__B(DEPTH) | TL__B(RT0) | TL__B(RT1), TL__B(DEPTH) | TL__B(RT0) | TL__B(RT1),
@@ -49,6 +49,41 @@ tl_result tl_light_strategy_from_name(const char *name, tl_light_strategy *s)
     for (int i = 0; i < TL_LIGHT_STRATEGY_COUNT_; i++)
         if (strcmp(name, tl__strategy_names[i]) == 0) {
             *s = (tl_light_strategy)i;
+            return TL_OK;
+        }
+    return TL_ERROR_INVALID_ARGUMENT;
+}
+
+static const char *const tl__lighting_names[TL_LIGHTING_COUNT_] = {"auto", "blinn-phong", "ggx"};
+static const char *const tl__fresnel_names[TL_FRESNEL_COUNT_] = {"two-sums", "two-sums", "nv"};
+
+const char *tl_lighting_model_name(tl_lighting_model m)
+{
+    return (unsigned)m < TL_LIGHTING_COUNT_ ? tl__lighting_names[m] : "unknown";
+}
+
+tl_result tl_lighting_model_from_name(const char *name, tl_lighting_model *m)
+{
+    if (!name || !m) return TL_ERROR_INVALID_ARGUMENT;
+    for (int i = 0; i < TL_LIGHTING_COUNT_; i++)
+        if (strcmp(name, tl__lighting_names[i]) == 0) {
+            *m = (tl_lighting_model)i;
+            return TL_OK;
+        }
+    return TL_ERROR_INVALID_ARGUMENT;
+}
+
+const char *tl_fresnel_layout_name(tl_fresnel_layout f)
+{
+    return (unsigned)f < TL_FRESNEL_COUNT_ ? tl__fresnel_names[f] : "unknown";
+}
+
+tl_result tl_fresnel_layout_from_name(const char *name, tl_fresnel_layout *f)
+{
+    if (!name || !f) return TL_ERROR_INVALID_ARGUMENT;
+    for (int i = TL_FRESNEL_TWO_SUMS; i < TL_FRESNEL_COUNT_; i++)
+        if (strcmp(name, tl__fresnel_names[i]) == 0) {
+            *f = (tl_fresnel_layout)i;
             return TL_OK;
         }
     return TL_ERROR_INVALID_ARGUMENT;

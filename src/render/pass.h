@@ -40,9 +40,14 @@ typedef struct tl__plan_input {
     char strategy_reason[96];
     uint32_t tile_size, tiles_x, tiles_y;
     int spec;                   /* specular materials */
-    const char *spec_define;    /* TL_SPECULAR_EXACT, TL_SPECULAR_COMPACT or TL_SPECULAR_NONE */
+    tl_lighting_model lighting; /* resolved: blinn-phong or ggx */
+    tl_fresnel_layout fresnel;  /* thin-lpp, GGX, specular: the light buffer's Fresnel layout; else DEFAULT */
+    char lighting_reason[96];
+    /* every lighting program's model switches: TL_SPECULAR_EXACT, TL_SPECULAR_COMPACT or
+     * TL_SPECULAR_NONE, then TL_GGX with GGX, then TL_FRESNEL_SUMS or TL_FRESNEL_NV in thin-lpp */
+    char spec_define[48];
     const char *rt0_define;     /* TL_RT0_RGBA8 or TL_RT0_RGB10A2 */
-    char material_defines[128]; /* the geometry passes' material switches (leading space each) */
+    char material_defines[96];  /* the geometry passes' material switches (leading space each) */
 } tl__plan_input;
 
 /* One pass as declared for a plan (target sets are TL_TARGET_BIT bits). */

@@ -88,7 +88,8 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
     if (!in->mode->material_pass) return;
     d->writes = d->clears = TL__B(HDR);
-    d->samples = TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | (tl__ssao_pass(in) ? TL__B(AO) : 0u);
+    d->samples = TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | TL__B(LIGHT_FRESNEL) | /* those the light pass writes */
+                 (tl__ssao_pass(in) ? TL__B(AO) : 0u);
     d->reads = d->samples | TL__B(DEPTH);
     d->attach_depth = 1;
     d->state = tl__geometry_state(in, TL__DEPTH_EQUAL, 0, TL__BLEND_OFF);

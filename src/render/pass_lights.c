@@ -17,6 +17,7 @@ void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
     uint32_t spec_targets = TL__B(LIGHT_SPECULAR) | TL__B(FAT_MATERIAL);
     int exact_spec = in->spec && in->d.light_buffer == TL_LIGHT_BUFFER_EXACT;
     d->writes = m->light_writes & (exact_spec ? ~0u : ~TL__B(LIGHT_SPECULAR));
+    if (in->fresnel != TL_FRESNEL_TWO_SUMS) d->writes &= ~TL__B(LIGHT_FRESNEL); /* S2: GGX's two sums only */
     d->reads = m->light_reads & (in->spec ? ~0u : ~spec_targets);
     d->samples = m->light_samples & d->reads;
     d->neighbourhood = d->samples & TL__B(RT1); /* chroma from the four neighbours */

@@ -43,6 +43,27 @@ static void tl__plan_strategy(tl__plan_input *in)
     in->tiles_y = (in->d.height + in->tile_size - 1) / in->tile_size;
 }
 
+/* The lighting model (forced, or GGX for materials authored for it) and the shaders' switches. */
+static void tl__plan_lighting(tl__plan_input *in)
+{
+    const tl_renderer_desc *d = &in->d;
+    in->lighting = d->lighting;
+    if (d->lighting != TL_LIGHTING_DEFAULT) {
+        snprintf(in->lighting_reason, sizeof in->lighting_reason, "forced by the options");
+    } else if (in->f.has_microfacet) {
+        in->lighting = TL_LIGHTING_GGX;
+        snprintf(in->lighting_reason, sizeof in->lighting_reason, "auto: materials authored for GGX (glTF)");
+    } else {
+        in->lighting = TL_LIGHTING_BLINN_PHONG;
+        snprintf(in->lighting_reason, sizeof in->lighting_reason, "auto: no material authored for GGX");
+    }
+    int ggx = in->lighting == TL_LIGHTING_GGX, exact = d->light_buffer == TL_LIGHT_BUFFER_EXACT;
+    if (ggx && in->spec && in->mode->material_pass) in->fresnel = exact ? d->fresnel : TL_FRESNEL_NV;
+    snprintf(in->spec_define, sizeof in->spec_define, "%s%s%s",
+             !in->spec ? "TL_SPECULAR_NONE" : exact ? "TL_SPECULAR_EXACT" : "TL_SPECULAR_COMPACT", ggx ? " TL_GGX" : "",
+             in->fresnel == TL_FRESNEL_TWO_SUMS ? " TL_FRESNEL_SUMS" : in->fresnel == TL_FRESNEL_NV ? " TL_FRESNEL_NV" : "");
+}
+
 static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_feature_set *features, tl__plan_input *in)
 {
     memset(in, 0, sizeof *in);
@@ -60,9 +81,7 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     in->lights = f->point_lights + f->spot_lights + f->directional_lights > 0;
     tl__plan_strategy(in);
     in->spec = f->has_specular != 0;
-    in->spec_define = !in->spec                                 ? "TL_SPECULAR_NONE"
-                      : d->light_buffer == TL_LIGHT_BUFFER_EXACT ? "TL_SPECULAR_EXACT"
-                                                                 : "TL_SPECULAR_COMPACT";
+    tl__plan_lighting(in);
     in->rt0_define = d->rt0 == TL_RT0_RGB10A2 ? "TL_RT0_RGB10A2" : "TL_RT0_RGBA8";
     tl__material_defines(f, in->material_defines, sizeof in->material_defines);
 }
@@ -276,6 +295,9 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     /* the output is read after the frame; kept targets too, when the plan has them at all */
     uint32_t kept = TL__BIT(TL_TARGET_OUTPUT) | (d.keep_targets & (TL__BIT(TL_TARGET_COUNT) - 1u));
     p->pub.light_strategy = in.strategy;
+    p->pub.lighting = in.lighting;
+    p->pub.fresnel = in.fresnel;
+    snprintf(p->pub.lighting_reason, sizeof p->pub.lighting_reason, "%s", in.lighting_reason);
     snprintf(p->pub.strategy_reason, sizeof p->pub.strategy_reason, "%s", in.strategy_reason);
     if (in.strategy == TL_LIGHT_STRATEGY_TILED) {
         p->pub.tile_size = in.tile_size;

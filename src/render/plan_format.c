@@ -88,6 +88,12 @@ size_t tl_frame_plan_format(const tl_frame_plan *p, char *buffer, size_t size)
     if (p->light_strategy == TL_LIGHT_STRATEGY_TILED)
         tl__printf(&o, "; %ux%u-pixel tiles, %u x %u", p->tile_size, p->tile_size, p->tiles_x, p->tiles_y);
     tl__printf(&o, "\n");
+    tl__printf(&o, "lighting: %s (%s)", tl_lighting_model_name(p->lighting), p->lighting_reason);
+    if (p->fresnel != TL_FRESNEL_DEFAULT)
+        tl__printf(&o, "; Fresnel in the light buffer: %s", p->fresnel == TL_FRESNEL_TWO_SUMS
+                                                                 ? "two sums, F0 S1 + S2 (exact)"
+                                                                 : "one sum, Schlick with n.v per pixel");
+    tl__printf(&o, "\n");
     tl__printf(&o, "programs:\n");
     for (size_t i = 0; i < p->program_count; i++)
         tl__printf(&o, "  %-19s %s\n", p->programs[i].name, p->programs[i].defines[0] ? p->programs[i].defines : "-");

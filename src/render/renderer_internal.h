@@ -23,7 +23,7 @@ typedef struct tl__instance {
     float position_radius[4];
     float color[4];
     float direction_cos_outer[4];
-    float cos_inner;
+    float cos_inner, source_radius; /* attribute 4 (vec2) */
 } tl__instance;
 
 /* One light of the forward pass's storage buffer (forward.frag.glsl), view space. */
@@ -31,7 +31,7 @@ typedef struct tl__forward_light {
     float position_radius[4];
     float color_type[4];
     float direction_cos_outer[4];
-    float cos_inner[4];
+    float cos_inner[4]; /* cos_inner, source radius, 0, 0 */
 } tl__forward_light;
 
 /* std140 block tl_frame_block of shaders/frame.glsl. */

@@ -83,7 +83,8 @@ tl_result tl__lights_store(tl_renderer *r, const tl_light *lights, size_t count,
         int bad = (unsigned)l->type >= TL_LIGHT_TYPE_COUNT_;
         for (int k = 0; k < 3; k++)
             bad |= !isfinite(l->position[k]) || !isfinite(l->direction[k]) || !isfinite(l->color[k]);
-        if (l->type != TL_LIGHT_DIRECTIONAL) bad |= !(l->radius >= 0.0f) || !isfinite(l->radius);
+        if (l->type != TL_LIGHT_DIRECTIONAL)
+            bad |= !(l->radius >= 0.0f) || !isfinite(l->radius) || !(l->source_radius >= 0.0f) || !isfinite(l->source_radius);
         if (bad) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: light %zu has a non-finite or invalid field", i);
         kinds[(l->type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : l->type) - 1]++;
     }
@@ -219,6 +220,13 @@ static GLuint tl__static_buffer(const GladGLContext *gl, size_t bytes, const voi
     return b;
 }
 
+/* tl_renderer_desc.ambient: all zero keeps the scene's; otherwise it replaces it, negative = 0. */
+static void tl__ambient_resolve(const float desc[3], const float scene[3], float out[3])
+{
+    int set = desc[0] != 0.0f || desc[1] != 0.0f || desc[2] != 0.0f;
+    for (int k = 0; k < 3; k++) out[k] = !set ? scene[k] : desc[k] < 0.0f ? 0.0f : desc[k];
+}
+
 tl_result tl__scene_upload(tl_renderer *r, const tl_scene *s)
 {
     size_t no = s->object_count ? s->object_count : 1, nt = s->texture_count ? s->texture_count : 1;
@@ -254,7 +262,7 @@ tl_result tl__scene_upload(tl_renderer *r, const tl_scene *s)
     r->vbo_object_ids = tl__static_buffer(gl, no * sizeof(uint32_t), ids, "buffer.object_ids");
     tl__free(&r->alloc, ids);
     r->camera = s->camera;
-    memcpy(r->ambient, s->ambient, sizeof r->ambient);
+    tl__ambient_resolve(r->desc.ambient, s->ambient, r->ambient);
     tl_scene_features(s, &r->features);
     return TL_OK;
 }

@@ -1,7 +1,11 @@
 /* The target table (targets.h). */
 #include "targets.h"
+#include "bindings.h"
 
 #include "gl/gl.h"
+
+/* A target samples on texture unit = its id: the material textures' units come after them. */
+_Static_assert((int)TL_TARGET_COUNT <= (int)TL__UNIT_ALBEDO_TEXTURE, "target texture units overlap the material textures'");
 
 const tl__target_def tl__targets[TL_TARGET_COUNT] = {
     [TL_TARGET_DEPTH] = {"depth", "DEPTH", 0, 1},
@@ -20,6 +24,7 @@ const tl__target_def tl__targets[TL_TARGET_COUNT] = {
     [TL_TARGET_AO_RAW] = {"ao.raw", "AO_RAW", GL_R16F, 0},
     [TL_TARGET_AO] = {"ao", "AO", GL_R16F, 0},
     [TL_TARGET_DOF] = {"dof", "DOF", GL_RGBA16F, 0},
+    [TL_TARGET_LIGHT_FRESNEL] = {"light.fresnel", "LIGHT_FRESNEL", GL_RGBA16F, 1},
 };
 
 size_t tl__light_lists_bytes(size_t tiles) { return 16u + 8u * tiles + 4u * TL__TILE_START_ENTRIES * tiles; }
@@ -37,7 +42,8 @@ uint32_t tl__target_format(const tl_renderer_desc *d, tl_target_id id)
         return f32 ? GL_DEPTH_COMPONENT32F : GL_DEPTH24_STENCIL8;
     }
     if (id == TL_TARGET_RT0) return d->rt0 == TL_RT0_RGB10A2 ? GL_RGB10_A2 : GL_RGBA8;
-    if ((id == TL_TARGET_LIGHT_DIFFUSE || id == TL_TARGET_LIGHT_SPECULAR) && d->light_format == TL_LIGHT_FORMAT_R11G11B10F)
+    if ((id == TL_TARGET_LIGHT_DIFFUSE || id == TL_TARGET_LIGHT_SPECULAR || id == TL_TARGET_LIGHT_FRESNEL) &&
+        d->light_format == TL_LIGHT_FORMAT_R11G11B10F)
         return GL_R11F_G11F_B10F;
     return tl__targets[id].format;
 }

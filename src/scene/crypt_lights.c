@@ -11,6 +11,11 @@
 #include "scene_internal.h"
 
 #define TL__PI 3.14159265358979323846
+/* Source radii of the crypt's emitters (tl_light.source_radius, metres): they change nothing under
+ * Blinn-Phong (the crypt's default model) and make sphere lights under GGX. */
+#define TL__TORCH_RADIUS 0.06f
+#define TL__BRAZIER_RADIUS 0.15f
+#define TL__LANTERN_RADIUS 0.1f
 
 static float tl__clampf(float v, float lo, float hi) { return v < lo ? lo : v > hi ? hi : v; }
 
@@ -155,6 +160,8 @@ void tl__crypt_lights(const tl__light_plan *plan, tl_light *out)
                 l->color[c] = rgb[c] * k;
             }
             l->radius = radius * tl__rng_range(&rng, 0.8f, 1.2f);
+            /* emitters as spheres (GGX lighting): braziers at the warm spots, torch flames elsewhere */
+            l->source_radius = warm_spot ? TL__BRAZIER_RADIUS : TL__TORCH_RADIUS;
         }
     }
 
@@ -191,6 +198,7 @@ void tl__crypt_lights(const tl__light_plan *plan, tl_light *out)
             l->radius = radius * tl__rng_range(&rng, 0.9f, 1.1f);
             l->cos_inner = cosf(inner);
             l->cos_outer = cosf(outer);
+            l->source_radius = TL__LANTERN_RADIUS;
         }
     }
 

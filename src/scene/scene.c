@@ -55,6 +55,7 @@ void tl_scene_features(const tl_scene *scene, tl_scene_feature_set *out)
         if (m->occlusion_texture < nt) out->has_occlusion = 1;
         if (m->emissive_texture < nt && tl__nonzero3(m->emissive)) out->has_emissive_texture = 1;
         if (m->flags & TL_MATERIAL_DOUBLE_SIDED) out->has_double_sided = 1;
+        if (mr || (m->flags & TL_MATERIAL_MICROFACET)) out->has_microfacet = 1;
         if (m->normal_texture < nt) {
             out->has_textures = 1;
             out->has_normal_maps = 1;

@@ -245,7 +245,7 @@ static void check_promised_state(const GladGLContext *gl, const GLint viewport[4
     bad += v != GL_LOWER_LEFT;
     gl->GetIntegerv(GL_CLIP_DEPTH_MODE, &v);
     bad += v != GL_NEGATIVE_ONE_TO_ONE;
-    for (GLuint u = 0; u <= 20; u++) {
+    for (GLuint u = 0; u <= 24; u++) {
         gl->ActiveTexture(GL_TEXTURE0 + u);
         gl->GetIntegerv(GL_TEXTURE_BINDING_2D, &v);
         bad += v != 0;
@@ -259,7 +259,7 @@ static void check_promised_state(const GladGLContext *gl, const GLint viewport[4
         gl->GetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, i, &v);
         bad += v != 0;
     }
-    for (GLuint i = 0; i < 3; i++) {
+    for (GLuint i = 0; i < 4; i++) {
         gl->GetIntegeri_v(GL_IMAGE_BINDING_NAME, i, &v);
         bad += v != 0;
     }

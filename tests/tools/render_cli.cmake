@@ -54,6 +54,21 @@ function(check_gltf_plans)
   if(NOT materials_plan MATCHES "transparent")
     message(FATAL_ERROR "materials.glb (alpha BLEND) has no transparent pass:\n${materials_plan}")
   endif()
+  # glTF materials are lit with GGX, the crypt with Blinn-Phong; --lighting forces either
+  foreach(plan IN LISTS plans)
+    if(NOT plan MATCHES "lighting: ggx \\(auto")
+      message(FATAL_ERROR "a glTF scene is not planned with GGX:\n${plan}")
+    endif()
+  endforeach()
+  execute_process(COMMAND ${TOOL} default --size 96x54 --lights 8 --print-plan RESULT_VARIABLE r OUTPUT_VARIABLE plan)
+  if(NOT r EQUAL 0 OR NOT plan MATCHES "lighting: blinn-phong \\(auto")
+    message(FATAL_ERROR "the crypt is not planned with Blinn-Phong (exit ${r}):\n${plan}")
+  endif()
+  execute_process(COMMAND ${TOOL} default --size 96x54 --lights 8 --print-plan --lighting ggx --fresnel nv
+                  RESULT_VARIABLE r OUTPUT_VARIABLE plan)
+  if(NOT r EQUAL 0 OR NOT plan MATCHES "lighting: ggx \\(forced" OR NOT plan MATCHES "TL_GGX TL_FRESNEL_NV")
+    message(FATAL_ERROR "--lighting ggx --fresnel nv is not in the plan (exit ${r}):\n${plan}")
+  endif()
 endfunction()
 
 # The effects (docs/effects.md): on, they render and dump their targets; a bad value is one line
