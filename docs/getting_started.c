@@ -7,6 +7,13 @@
 #include <thinlight/renderer.h>
 #include <thinlight/scene.h>
 
+/* The library's error lines (here the image writer's) on stderr. */
+static void print_error(void *user, tl_log_level level, const char *message)
+{
+    (void)user;
+    if (level == TL_LOG_ERROR) fprintf(stderr, "getting_started: %s\n", message);
+}
+
 int main(int argc, char **argv)
 {
     const char *path = argc > 1 ? argv[1] : "crypt.png";
@@ -32,12 +39,13 @@ int main(int argc, char **argv)
                              : TL_ERROR_OUT_OF_MEMORY;
     if (r != TL_OK && renderer) snprintf(error, sizeof error, "%s", tl_renderer_last_error(renderer));
     if (r == TL_OK) {
-        tl_image_desc image = {.width = width, .height = height, .channels = 4, .bottom_up = 1};
-        r = tl_image_write(path, &image, rgba, error, sizeof error);
+        tl_image_desc image = {.width = width, .height = height, .channels = 4, .bottom_up = 1,
+                               .logger = {print_error, NULL}};
+        r = tl_image_write(path, &image, rgba); /* a failure's line goes to the logger */
     }
     if (r == TL_OK)
         printf("wrote %s (%ux%u)\n", path, (unsigned)width, (unsigned)height);
-    else
+    else if (error[0])
         fprintf(stderr, "getting_started: %s: %s\n", tl_result_string(r), error);
 
     tl_renderer_destroy(renderer); /* every create has its destroy; NULL is fine */

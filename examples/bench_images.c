@@ -105,7 +105,7 @@ static int bench__note_image(bench_run *run, const char *path, bench_image_kind 
 static int bench__write_png(bench_run *run, const bench_record *rec, bench_image_kind kind, const uint8_t *rgb,
                             uint32_t w, uint32_t h)
 {
-    char path[512], err[512];
+    char path[512];
     const char *mode = tl_render_mode_name(rec->mode);
     if (kind == BENCH_IMAGE_FINAL)
         snprintf(path, sizeof path, "%s/bench_final_%s_%ulights_%ux%u.png", run->opt.out, mode, rec->lights,
@@ -113,11 +113,8 @@ static int bench__write_png(bench_run *run, const bench_record *rec, bench_image
     else
         snprintf(path, sizeof path, "%s/bench_heat_%s_vs_fat_%ulights_%ux%u_0-%usteps%s.png", run->opt.out, mode,
                  rec->lights, rec->width, rec->height, BENCH_HEAT_SCALE, kind == BENCH_IMAGE_HEAT_DOC ? "_doc" : "");
-    tl_image_desc desc = {w, h, 3, TL_PIXEL_U8, 1};
-    if (tl_image_write(path, &desc, rgb, err, sizeof err) != TL_OK) {
-        tl_tool_fail(BENCH_TOOL, "%s", err);
-        return 1;
-    }
+    tl_image_desc desc = {w, h, 3, TL_PIXEL_U8, 1, TL_TOOL_LOGGER(BENCH_TOOL)};
+    if (tl_image_write(path, &desc, rgb) != TL_OK) return 1;
     return bench__note_image(run, path, kind, rec);
 }
 

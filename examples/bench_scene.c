@@ -33,15 +33,11 @@ struct bench_scene {
 
 static int bench__load_file(const bench_options *opt, bench_scene *s)
 {
-    char error[512] = "";
     uint32_t largest = opt->lights[opt->light_count - 1];
-    tl_gltf_options o = {.extra_lights = largest, .seed = opt->seed, .error = error, .error_size = sizeof error};
+    /* the loader's one error line ("FILE: element: what") is the tool's */
+    tl_gltf_options o = {.extra_lights = largest, .seed = opt->seed, .logger = TL_TOOL_LOGGER(BENCH_TOOL)};
     tl_result res = tl_scene_load_gltf(opt->scene, &o, &s->scene);
-    if (res != TL_OK) {
-        if (error[0]) tl_tool_fail(BENCH_TOOL, "cannot load scene %s", error);
-        else tl_tool_fail(BENCH_TOOL, "cannot load scene '%s': %s", opt->scene, tl_result_string(res));
-        return BENCH_EXIT_BAD_INPUT;
-    }
+    if (res != TL_OK) return BENCH_EXIT_BAD_INPUT;
     /* the loader appends the extra lights after the file's own (or its default rig) */
     if (s->scene->light_count < largest) {
         tl_tool_fail(BENCH_TOOL, "scene '%s': the loader gave %zu lights, fewer than the %u extra ones asked for",

@@ -10,6 +10,9 @@
 #include "thinlight/io.h"
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
+#include "tool_util.h"
+
+#define TOOL "thinlight-render"
 
 static const char *const usage =
     "usage: thinlight-render SCENE.gltf|SCENE.glb|default -o OUT.png|OUT.exr [options]\n"
@@ -88,11 +91,10 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         "fat_normal",   "fat_albedo",       "fat_material", "hdr",         "ldr",            "output"};
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         if (tl_renderer_read_target(r, (tl_target_id)t, buf, n) != TL_OK) continue; /* not allocated */
-        char path[4096], err[512];
+        char path[4096];
         snprintf(path, sizeof path, "%s/%s.exr", dir, names[t]);
-        tl_image_desc id = {w, h, 4, TL_PIXEL_F32, 1};
-        if (tl_image_write(path, &id, buf, err, sizeof err) != TL_OK) {
-            fprintf(stderr, "thinlight-render: %s\n", err);
+        tl_image_desc id = {w, h, 4, TL_PIXEL_F32, 1, TL_TOOL_LOGGER(TOOL)};
+        if (tl_image_write(path, &id, buf) != TL_OK) {
             free(buf);
             return 1;
         }
@@ -202,14 +204,9 @@ int main(int argc, char **argv)
     tl_result res;
     if (strcmp(scene_arg, "default") != 0) {
         /* a glTF file: its own lights (or the default rig), plus --lights N seeded point lights */
-        char gerr[1024] = "";
-        tl_gltf_options go = {.extra_lights = sd.point_lights, .seed = sd.seed, .error = gerr,
-                              .error_size = sizeof gerr};
-        res = tl_scene_load_gltf(scene_arg, &go, &scene);
-        if (res != TL_OK) {
-            fprintf(stderr, "thinlight-render: %s\n", gerr[0] ? gerr : tl_result_string(res));
-            return 1;
-        }
+        tl_gltf_options go = {.extra_lights = sd.point_lights, .seed = sd.seed, .logger = TL_TOOL_LOGGER(TOOL)};
+        res = tl_scene_load_gltf(scene_arg, &go, &scene); /* its one error line is ours */
+        if (res != TL_OK) return 1;
     } else {
         res = tl_scene_create_default(&sd, &scene);
         if (res != TL_OK) {
@@ -285,7 +282,7 @@ int main(int argc, char **argv)
     if (!rc) {
         size_t n = (size_t)rd.width * rd.height * 4;
         void *pixels = hdr_out ? malloc(n * sizeof(float)) : malloc(n);
-        tl_image_desc id = {rd.width, rd.height, 4, hdr_out ? TL_PIXEL_F32 : TL_PIXEL_U8, 1};
+        tl_image_desc id = {rd.width, rd.height, 4, hdr_out ? TL_PIXEL_F32 : TL_PIXEL_U8, 1, TL_TOOL_LOGGER(TOOL)};
         if (!pixels) {
             fprintf(stderr, "thinlight-render: out of memory\n");
             rc = 1;
@@ -293,8 +290,7 @@ int main(int argc, char **argv)
                             : tl_renderer_read_output(r, pixels, n)) != TL_OK) {
             fprintf(stderr, "thinlight-render: %s\n", tl_renderer_last_error(r));
             rc = 1;
-        } else if (tl_image_write(out, &id, pixels, err, sizeof err) != TL_OK) {
-            fprintf(stderr, "thinlight-render: %s\n", err);
+        } else if (tl_image_write(out, &id, pixels) != TL_OK) {
             rc = 1;
         }
         free(pixels);

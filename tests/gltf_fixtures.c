@@ -139,16 +139,18 @@ unsigned char *tlf_read_file(const char *path, size_t *size)
     return b.p;
 }
 
+static void log_stderr(void *user, tl_log_level level, const char *message)
+{
+    (void)user;
+    if (level == TL_LOG_ERROR) fprintf(stderr, "gltf fixtures: %s\n", message);
+}
+
 static int write_png(const char *dir, const char *name, uint32_t w, uint32_t h, const uint8_t *rgba)
 {
-    char path[1024], err[256];
+    char path[1024];
     tlf_join(path, sizeof path, dir, name);
-    tl_image_desc d = {.width = w, .height = h, .channels = 4, .type = TL_PIXEL_U8};
-    if (tl_image_write(path, &d, rgba, err, sizeof err) != TL_OK) {
-        fprintf(stderr, "gltf fixtures: %s\n", err);
-        return -1;
-    }
-    return 0;
+    tl_image_desc d = {.width = w, .height = h, .channels = 4, .type = TL_PIXEL_U8, .logger = {log_stderr, NULL}};
+    return tl_image_write(path, &d, rgba) == TL_OK ? 0 : -1;
 }
 
 /* ---- the document ---------------------------------------------------------------------------- */
@@ -883,10 +885,10 @@ int tlf_write_case(const char *dir, const char *name, char *path, size_t path_si
         /* an 8x8 mid-grey RGB JPEG, embedded in a GLB (decoded from memory) */
         uint8_t rgb[8 * 8 * 3];
         memset(rgb, 128, sizeof rgb);
-        char file[1024], err[256];
+        char file[1024];
         tlf_join(file, sizeof file, dir, "grey.jpg");
-        tl_image_desc jd = {.width = 8, .height = 8, .channels = 3, .type = TL_PIXEL_U8};
-        if (tl_image_write(file, &jd, rgb, err, sizeof err) != TL_OK) return -1;
+        tl_image_desc jd = {.width = 8, .height = 8, .channels = 3, .type = TL_PIXEL_U8, .logger = {log_stderr, NULL}};
+        if (tl_image_write(file, &jd, rgb) != TL_OK) return -1;
         tlf_doc d = {.dir = dir};
         tlf_mesh m;
         make_quad(&m, 0.0f, 0.0f, 0.0f, 1.0f);

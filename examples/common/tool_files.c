@@ -23,6 +23,11 @@ void tl_tool_fail(const char *tool, const char *fmt, ...)
     va_end(ap);
 }
 
+void tl_tool_log_errors(void *tool, tl_log_level level, const char *message)
+{
+    if (level == TL_LOG_ERROR) fprintf(stderr, "%s: %s\n", (const char *)tool, message);
+}
+
 char *tl_tool_strf(const char *fmt, ...)
 {
     va_list ap;

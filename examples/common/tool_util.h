@@ -8,6 +8,8 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "thinlight/base.h"
+
 #if defined(__GNUC__)
 #define TL_TOOL_PRINTF(f, a) __attribute__((format(printf, f, a)))
 #else
@@ -20,6 +22,11 @@
 void tl_tool_fail(const char *tool, const char *fmt, ...) TL_TOOL_PRINTF(2, 3);
 /* A malloc'ed formatted string; NULL when out of memory. */
 char *tl_tool_strf(const char *fmt, ...) TL_TOOL_PRINTF(1, 2);
+
+/* A tl_logger `fn` for the library's errors: "TOOL: message" on stderr, `user` being the tool's
+ * name; warnings are not shown (a failing tool prints one line). */
+void tl_tool_log_errors(void *tool, tl_log_level level, const char *message);
+#define TL_TOOL_LOGGER(tool) ((tl_logger){tl_tool_log_errors, (void *)(tool)})
 
 /* ---- files --------------------------------------------------------------------------------- */
 
