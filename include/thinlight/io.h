@@ -32,7 +32,8 @@ typedef struct tl_image_desc {
 
 /**
  * Writes an image; the file type follows the extension (.png, .exr, .tif, .jpg, ... as OIIO
- * supports). Float data written to an 8-bit format is clamped to [0,1] and rounded. The pixels go
+ * supports). Float data written to an 8-bit format is clamped to [0,1] and rounded; alpha is
+ * stored as given (straight, never divided out of or into the colour). The pixels go
  * to a temporary file in the same directory, flushed to disk and renamed over `path`, so `path`
  * holds either its old content or the whole new image, never part of one. On failure one line
  * naming the file and the reason goes to desc->logger.

@@ -58,6 +58,9 @@ std::string write_pixels(OIIO::ImageOutput *out, const std::string &tmp, const s
     if (ext == ".png" || ext == ".jpg" || ext == ".jpeg") file_type = OIIO::TypeDesc::UINT8;
     if (ext == ".exr") file_type = OIIO::TypeDesc::HALF;
     OIIO::ImageSpec spec((int)desc.width, (int)desc.height, (int)desc.channels, file_type);
+    // The pixels are stored as given. Without this OIIO takes RGBA for premultiplied and divides
+    // colour by alpha when it writes PNG (found by the test image_png_round_trip_*).
+    spec.attribute("oiio:UnassociatedAlpha", 1);
     if (!out->open(tmp, spec)) return "cannot write: " + out->geterror();
     size_t elem = desc.type == TL_PIXEL_F32 ? 4 : 1;
     OIIO::stride_t ystride = (OIIO::stride_t)(desc.width * desc.channels * elem);
