@@ -31,7 +31,10 @@ std::string byte_size(size_t bytes)
 {
     if (bytes < 10240) return std::to_string(bytes) + " bytes";
     char text[64];
-    std::snprintf(text, sizeof text, "%.1f MiB", (double)bytes / (1024.0 * 1024.0));
+    if (bytes < ((size_t)10 << 20))
+        std::snprintf(text, sizeof text, "%.1f KiB", (double)bytes / 1024.0);
+    else
+        std::snprintf(text, sizeof text, "%.1f MiB", (double)bytes / (1024.0 * 1024.0));
     return text;
 }
 

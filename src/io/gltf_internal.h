@@ -56,7 +56,7 @@ void warn(const context &c, const std::string &message);
 
 // "meshes[2].primitives[0]" style element names.
 std::string element(const char *array, size_t index);
-// A byte count for messages: "812 bytes", "3.5 MiB".
+// A byte count for messages: "812 bytes", "35.2 KiB", "512.0 MiB".
 std::string byte_size(size_t bytes);
 
 // ---- the memory budget and allocation through the caller's allocator -------------------------
