@@ -89,11 +89,12 @@ foreach(t IN LISTS _tl_fuzz_targets)
   endif()
   # The corpus folder (first) keeps what each run finds; the seeds and regressions are read only.
   # -malloc_limit_mb: no single allocation may pass 128 MiB, twice the targets' load budget, so an
-  # allocation the budget does not govern is a finding. A crash, leak, timeout or OOM fails the
-  # test and leaves the input in artifacts/.
+  # allocation the budget does not govern is a finding. -timeout is wall time: generous, for a
+  # busy 2-core machine. A crash, leak, timeout or OOM fails the test and leaves the input in
+  # artifacts/.
   add_test(NAME fuzz_${t}
     COMMAND ${CMAKE_CURRENT_BINARY_DIR}/fuzz-build/fuzz_${t}
-            -max_total_time=${THINLIGHT_FUZZ_SECONDS} -timeout=10 -rss_limit_mb=2560 -malloc_limit_mb=128
+            -max_total_time=${THINLIGHT_FUZZ_SECONDS} -timeout=60 -rss_limit_mb=2560 -malloc_limit_mb=128
             -print_final_stats=1 -artifact_prefix=${_tl_fuzz_work}/artifacts/${t}- ${dict}
             ${_tl_fuzz_work}/corpus/${t} ${seeds} ${_tl_fuzz_dir}/regressions/${t})
   math(EXPR _tl_timeout "${THINLIGHT_FUZZ_SECONDS} + 240")

@@ -179,7 +179,8 @@ struct json_shape {
     size_t containers = 0;   // objects and arrays
     size_t members = 0;      // object members (key: value)
     size_t items = 0;        // values after the first in arrays, members after the first in objects
-    size_t elements = 0;     // objects directly inside a top-level array (tinygltf structs)
+    size_t elements = 0;     // objects directly inside a top-level array (tinygltf structs)...
+    size_t materials = 0;    // ... and those of "materials" (the largest struct) apart
     size_t string_bytes = 0; // bytes inside strings, keys included
 };
 // One pass over the text, no allocation, no recursion; stops at max_json_depth + 1.
