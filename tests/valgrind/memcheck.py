@@ -10,7 +10,8 @@ invalid access, an uninitialised value used, a bad free, or a definite or indire
 are run with --trace-children=yes, so the tools they start are checked too (cmake, sh, gnuplot
 and compilers themselves are skipped). The libFuzzer targets (label fuzz, except the replays,
 which gcc builds) carry AddressSanitizer and cannot run under valgrind; a sanitizer build
-cannot either: use a plain build (e.g. RelWithDebInfo). Suppressions: tests/valgrind/mesa.supp,
+cannot either: use a plain build (e.g. RelWithDebInfo). hwy_timer_shim.c is preloaded (valgrind
+3.19 cannot run libhwy's static initializer, which OpenImageIO pulls in). Suppressions: tests/valgrind/mesa.supp,
 Mesa/llvmpipe/OSMesa internals only, never a thinlight frame. One log per test in --out
 (default BUILD_DIR/memcheck); a summary at the end; the exit status is 1 when any test failed.
 """
@@ -47,7 +48,14 @@ def list_tests(build, args):
     return tests
 
 
-def run_one(test, out, supp):
+def build_shim(out):
+    """hwy_timer_shim.c as a shared library (see the file: valgrind 3.19 and libhwy's RDTSCP)."""
+    so = os.path.join(out, "hwy_timer_shim.so")
+    subprocess.run(["cc", "-shared", "-fPIC", "-O2", os.path.join(HERE, "hwy_timer_shim.c"), "-o", so], check=True)
+    return so
+
+
+def run_one(test, out, supp, shim):
     log = os.path.join(out, test["name"] + ".log")
     for f in os.listdir(out):  # the logs of an earlier run
         if f == test["name"] + ".log" or f.startswith(test["name"] + ".log."):
@@ -62,7 +70,7 @@ def run_one(test, out, supp):
     for kv in test["env"]:
         k, _, v = kv.partition("=")
         env[k] = v
-    env.pop("LD_PRELOAD", None)
+    env["LD_PRELOAD"] = shim
     start = time.time()
     try:
         # valgrind slows programs 20-50 times: the test's own timeout, times 20
@@ -104,11 +112,12 @@ def main():
     out = os.path.abspath(args.out or os.path.join(build, "memcheck"))
     os.makedirs(out, exist_ok=True)
     supp = os.path.join(HERE, "mesa.supp")
+    shim = build_shim(out)
     tests = list_tests(build, args)
     print(f"memcheck: {len(tests)} tests, logs in {out}", flush=True)
     failed = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.j) as pool:
-        for name, status, errors, lost, secs, output in pool.map(lambda t: run_one(t, out, supp), tests):
+        for name, status, errors, lost, secs, output in pool.map(lambda t: run_one(t, out, supp, shim), tests):
             ok = status == 0 and errors == 0 and lost == 0
             print(f"{'ok  ' if ok else 'FAIL'} {name}: exit {status}, {errors} errors, {lost} bytes lost, {secs:.0f} s",
                   flush=True)
