@@ -21,6 +21,12 @@ set(_tl_fuzz_codec_seeds seeds/codec)
 set(_tl_fuzz_gltf_dict ${_tl_fuzz_dir}/gltf.dict)
 set(_tl_fuzz_image_dict ${_tl_fuzz_dir}/image.dict)
 set(_tl_fuzz_codec_dict "")
+# The largest single allocation each target may make, in MB: twice the glTF target's load budget
+# (64 MiB); the image target's pixels are at most 4 MiB (max_pixels 2^20); the codec allocates
+# nothing.
+set(_tl_fuzz_gltf_malloc_mb 128)
+set(_tl_fuzz_image_malloc_mb 32)
+set(_tl_fuzz_codec_malloc_mb 32)
 
 foreach(t IN LISTS _tl_fuzz_targets)
   add_executable(fuzz_replay_${t} ${_tl_fuzz_dir}/replay_main.c ${_tl_fuzz_dir}/fuzz_${t}.c)
@@ -88,13 +94,13 @@ foreach(t IN LISTS _tl_fuzz_targets)
     set(dict -dict=${_tl_fuzz_${t}_dict})
   endif()
   # The corpus folder (first) keeps what each run finds; the seeds and regressions are read only.
-  # -malloc_limit_mb: no single allocation may pass 128 MiB, twice the targets' load budget, so an
-  # allocation the budget does not govern is a finding. -timeout is wall time: generous, for a
+  # -malloc_limit_mb: no single allocation may pass the target's limit above, so an allocation the
+  # budget does not govern is a finding. -timeout is wall time: generous, for a
   # busy 2-core machine. A crash, leak, timeout or OOM fails the test and leaves the input in
   # artifacts/.
   add_test(NAME fuzz_${t}
     COMMAND ${CMAKE_CURRENT_BINARY_DIR}/fuzz-build/fuzz_${t}
-            -max_total_time=${THINLIGHT_FUZZ_SECONDS} -timeout=60 -rss_limit_mb=2560 -malloc_limit_mb=128
+            -max_total_time=${THINLIGHT_FUZZ_SECONDS} -timeout=60 -rss_limit_mb=2560 -malloc_limit_mb=${_tl_fuzz_${t}_malloc_mb}
             -print_final_stats=1 -artifact_prefix=${_tl_fuzz_work}/artifacts/${t}- ${dict}
             ${_tl_fuzz_work}/corpus/${t} ${seeds} ${_tl_fuzz_dir}/regressions/${t})
   math(EXPR _tl_timeout "${THINLIGHT_FUZZ_SECONDS} + 240")
