@@ -49,6 +49,7 @@ if(TARGET thinlight AND THINLIGHT_WITH_IO)
       image_png_round_trip_every_channel_count
       image_jpeg_reads_within_its_error
       image_bad_files_one_line_each
+      image_jpeg_header_checked_before_decoding
       image_bad_arguments
       image_write_failures_logged_and_leave_nothing
     LABELS io image

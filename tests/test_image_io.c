@@ -141,6 +141,48 @@ static void image_bad_files_one_line_each(void)
     expect_read(path, TL_ERROR_IO, "missing.png: no such file");
 }
 
+/* A JPEG of `sof` (C0 baseline, C2 progressive, C9 arithmetic) claiming w x h, 1 component, with
+ * `pad` bytes of scan data: only the headers a decoder looks at first. */
+static size_t jpeg_header(unsigned char *out, unsigned sof, uint32_t w, uint32_t h, size_t pad)
+{
+    static const unsigned char soi_app[] = {0xFF, 0xD8, 0xFF, 0xE0, 0x00, 0x10, 'J', 'F', 'I', 'F', 0, 1, 1, 0, 0, 1, 0, 1, 0, 0};
+    size_t n = sizeof soi_app;
+    memcpy(out, soi_app, n);
+    unsigned char sofseg[] = {0xFF, (unsigned char)sof, 0x00, 0x0B, 8, (unsigned char)(h >> 8), (unsigned char)h,
+                              (unsigned char)(w >> 8), (unsigned char)w, 1, 1, 0x11, 0};
+    memcpy(out + n, sofseg, sizeof sofseg);
+    n += sizeof sofseg;
+    memset(out + n, 0, pad);
+    n += pad;
+    out[n++] = 0xFF;
+    out[n++] = 0xD9;
+    return n;
+}
+
+/* JPEG headers are checked before libjpeg sees them: before, a 127-byte progressive JPEG
+ * claiming 65281x263 made libjpeg allocate 34 MB of coefficients inside OpenImageIO's open
+ * (found by fuzz_image; tests/fuzz/regressions/image). */
+static void image_jpeg_header_checked_before_decoding(void)
+{
+    unsigned char b[8192];
+    tlh_counter count = {0};
+    tlh_log log = {0};
+    tl_image_read_desc d = {.allocator = TLH_ALLOCATOR(&count), .logger = TLH_LOGGER(&log)};
+    tl_rgba8_image img;
+    size_t n = jpeg_header(b, 0xC2, 263, 65281, 60);
+    TL_CHECK(tl_image_decode_rgba8(b, n, &d, &img) == TL_ERROR_PARSE);
+    TL_CHECK(strstr(log.error, "cannot hold 263x65281 pixels") != NULL);
+    n = jpeg_header(b, 0xC0, 30000, 30000, 60); /* over the default 2^26 pixels */
+    TL_CHECK(tl_image_decode_rgba8(b, n, &d, &img) == TL_ERROR_LIMIT && strstr(log.error, "30000x30000"));
+    n = jpeg_header(b, 0xC9, 8, 8, 60);
+    TL_CHECK(tl_image_decode_rgba8(b, n, &d, &img) == TL_ERROR_UNSUPPORTED && strstr(log.error, "arithmetic"));
+    n = jpeg_header(b, 0xC0, 0, 8, 60);
+    TL_CHECK(tl_image_decode_rgba8(b, n, &d, &img) == TL_ERROR_PARSE && strstr(log.error, "invalid frame header"));
+    memcpy(b, "\xFF\xD8\xFF\xD9", 4); /* no frame at all */
+    TL_CHECK(tl_image_decode_rgba8(b, 4, &d, &img) == TL_ERROR_PARSE && strstr(log.error, "no frame header"));
+    TL_CHECK(count.largest == 0 && log.multiline == 0); /* nothing was allocated for pixels */
+}
+
 static void image_bad_arguments(void)
 {
     tl_rgba8_image img;
@@ -196,6 +238,7 @@ static const tl_test_case cases[] = {
     {"image_png_round_trip_every_channel_count", image_png_round_trip_every_channel_count},
     {"image_jpeg_reads_within_its_error", image_jpeg_reads_within_its_error},
     {"image_bad_files_one_line_each", image_bad_files_one_line_each},
+    {"image_jpeg_header_checked_before_decoding", image_jpeg_header_checked_before_decoding},
     {"image_bad_arguments", image_bad_arguments},
     {"image_write_failures_logged_and_leave_nothing", image_write_failures_logged_and_leave_nothing},
 };

@@ -12,8 +12,15 @@ struct budget_sink final : tl_io::pixel_sink {
     const std::string &what;
     uint8_t *px = nullptr;
     size_t bytes = 0;
-    budget_sink(const context &ctx, const std::string &w) : c(ctx), what(w) {}
+    budget_hold hold;
+    budget_sink(const context &ctx, const std::string &w) : c(ctx), what(w), hold(ctx) {}
     ~budget_sink() { free_bytes(c, px, bytes); }
+    // A progressive JPEG's coefficients live in libjpeg's heap during the decode: counted too.
+    bool working(size_t n) override
+    {
+        hold.add(n, what + " (the JPEG decoder's coefficients)");
+        return true;
+    }
     uint8_t *pixels(size_t width, size_t height) override
     {
         px = static_cast<uint8_t *>(alloc_bytes(c, width * height, 4, what + " (" + std::to_string(width) + "x" +

@@ -1,8 +1,8 @@
-// PNG and JPEG from memory to RGBA8 (image_decode.h). The header is checked before anything is
-// allocated: the size limit, and for PNG that every chunk lies inside the data and that the
-// compressed pixels could hold the image (deflate expands at most 1032 times), so a tiny file
-// that claims to be huge costs nothing.
+// PNG and JPEG from memory to RGBA8 (image_decode.h). The header is checked first
+// (image_check.cpp), so a tiny file that claims to be huge costs nothing; then OpenImageIO
+// decodes through an in-memory IOProxy, one row at a time.
 #include "image_decode.h"
+#include "image_check.h"
 
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
@@ -24,68 +24,6 @@ const char *format_of(const unsigned char *d, size_t n, const std::string &mime)
     if (mime == "image/png") return "png";
     if (mime == "image/jpeg") return "jpeg";
     return nullptr;
-}
-
-uint32_t be32(const unsigned char *p) { return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | p[3]; }
-
-// What the PNG's chunks say, read without decoding anything.
-struct png_header {
-    uint32_t width = 0, height = 0;
-    unsigned bits_per_pixel = 0;
-    size_t idat_bytes = 0;
-};
-
-// Every chunk lies inside the data, up to IEND, and IHDR comes first. OIIO 2.4's PNG reader
-// leaks (libpng longjmps over a std::string) when libpng asks for bytes past the end, so
-// truncated PNGs are refused here; corrupt data inside whole chunks is libpng's to reject.
-bool png_chunks(const unsigned char *d, size_t n, png_header *h, std::string *why)
-{
-    size_t at = 8;
-    bool ihdr = false;
-    while (n >= at && n - at >= 12) {
-        uint32_t len = be32(d + at);
-        const unsigned char *type = d + at + 4;
-        if (len > n - at - 12) break;
-        if (!ihdr) {
-            static const unsigned channels[7] = {1, 0, 3, 1, 2, 0, 4}; // by colour type
-            if (std::memcmp(type, "IHDR", 4) != 0 || len != 13 || type[13] > 6 || !channels[type[13]]) {
-                *why = "PNG: no valid IHDR chunk first";
-                return false;
-            }
-            h->width = be32(type + 4);
-            h->height = be32(type + 8);
-            h->bits_per_pixel = channels[type[13]] * type[12];
-            ihdr = true;
-        }
-        if (std::memcmp(type, "IDAT", 4) == 0) h->idat_bytes += len;
-        at += 12 + (size_t)len;
-        if (std::memcmp(type, "IEND", 4) == 0) return true;
-    }
-    *why = "truncated PNG";
-    return false;
-}
-
-// Header checks before any allocation: the limit, then whether the data can hold the pixels.
-decode_status check_png(const unsigned char *d, size_t n, size_t max_pixels, std::string *why)
-{
-    png_header h;
-    if (!png_chunks(d, n, &h, why)) return decode_status::corrupt;
-    if (h.width == 0 || h.height == 0 || h.bits_per_pixel == 0 || h.bits_per_pixel > 64) {
-        *why = "PNG: invalid IHDR";
-        return decode_status::corrupt;
-    }
-    if (h.width > 65536 || h.height > 65536 || (uint64_t)h.width * h.height > max_pixels) {
-        *why = std::to_string(h.width) + "x" + std::to_string(h.height) + " exceeds the limit of " +
-               std::to_string(max_pixels) + " pixels";
-        return decode_status::too_large;
-    }
-    uint64_t raw = ((uint64_t)h.width * h.height * h.bits_per_pixel + 7) / 8;
-    if (raw > 1032 * (uint64_t)h.idat_bytes + 1024) {
-        *why = "PNG: " + std::to_string(h.idat_bytes) + " bytes of IDAT cannot hold " + std::to_string(h.width) + "x" +
-               std::to_string(h.height) + " pixels";
-        return decode_status::corrupt;
-    }
-    return decode_status::ok;
 }
 
 std::string error_of(OIIO::ImageInput &in, const char *fallback)
@@ -160,9 +98,13 @@ decode_status decode_rgba8(const unsigned char *data, size_t size, const std::st
         *why = "not a PNG or JPEG image" + (mime.empty() ? std::string() : " (mimeType " + mime + ")");
         return decode_status::unsupported;
     }
-    if (std::strcmp(format, "png") == 0) {
-        decode_status s = check_png(data, size, max_pixels, why);
-        if (s != decode_status::ok) return s;
+    size_t working = 0; // what the decoder itself will allocate, beyond the pixels
+    decode_status s = std::strcmp(format, "png") == 0 ? check_png(data, size, max_pixels, why)
+                                                      : check_jpeg(data, size, max_pixels, &working, why);
+    if (s != decode_status::ok) return s;
+    if (working && !sink.working(working)) {
+        *why = "out of memory";
+        return decode_status::no_memory;
     }
     // The proxy outlives the reader, which may still touch it when it closes.
     OIIO::Filesystem::IOMemReader proxy(data, size);

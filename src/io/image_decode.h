@@ -11,8 +11,15 @@ namespace tl_io {
 
 // Where the pixels go: asked once, after the header was checked and before any pixel is decoded.
 // Returns width * height * 4 bytes that the caller owns, or nullptr when out of memory; may throw.
+// `working` is told first what the decoder itself will allocate beyond the pixels (a progressive
+// JPEG's coefficients), for a caller that counts memory; false refuses it (out of memory).
 struct pixel_sink {
     virtual uint8_t *pixels(size_t width, size_t height) = 0;
+    virtual bool working(size_t bytes)
+    {
+        (void)bytes;
+        return true;
+    }
 
 protected:
     ~pixel_sink() = default;
@@ -20,7 +27,7 @@ protected:
 
 enum class decode_status {
     ok,
-    unsupported, // neither PNG nor JPEG
+    unsupported, // neither PNG nor JPEG, or an arithmetic-coded JPEG
     corrupt,     // truncated or malformed, or a header that promises more than the data holds
     too_large,   // over max_pixels or 65536 per side
     no_memory,   // the sink returned nullptr
