@@ -39,8 +39,9 @@ int main(int argc, char **argv)
     if (r == TL_OK) r = rgba ? tl_renderer_read_output(renderer, rgba, &size) : TL_ERROR_OUT_OF_MEMORY;
     if (r != TL_OK && renderer) snprintf(error, sizeof error, "%s", tl_renderer_last_error(renderer));
     if (r == TL_OK) {
-        tl_image_desc image = {.width = width, .height = height, .channels = 4, .bottom_up = 1};
-        r = tl_image_write(path, &image, rgba, error, sizeof error);
+        tl_image_desc image = {.width = width, .height = height, .channels = 4, .bottom_up = 1,
+                               .logger = {keep_error, error}};
+        r = tl_image_write(path, &image, rgba); /* a failure's line goes to the logger */
     }
     if (r == TL_OK)
         printf("wrote %s (%ux%u)\n", path, (unsigned)width, (unsigned)height);

@@ -113,7 +113,7 @@ static int bench__write_png(bench_run *run, const bench_record *rec, bench_image
     else
         snprintf(path, sizeof path, "%s/bench_heat_%s_vs_fat_%ulights_%ux%u_0-%usteps%s.png", run->opt.out, mode,
                  rec->lights, rec->width, rec->height, BENCH_HEAT_SCALE, kind == BENCH_IMAGE_HEAT_DOC ? "_doc" : "");
-    tl_image_desc desc = {w, h, 3, TL_PIXEL_U8, 1};
+    tl_image_desc desc = {.width = w, .height = h, .channels = 3, .type = TL_PIXEL_U8, .bottom_up = 1};
     if (tl_tool_write_image(BENCH_TOOL, path, &desc, rgb)) return 1;
     return bench__note_image(run, path, kind, rec);
 }

@@ -113,7 +113,7 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         if (tl_renderer_read_target(r, (tl_target_id)t, buf, &size) != TL_OK) continue; /* not allocated */
         char path[4096];
         snprintf(path, sizeof path, "%s/%s.exr", dir, names[t]);
-        tl_image_desc id = {w, h, 4, TL_PIXEL_F32, 1};
+        tl_image_desc id = {.width = w, .height = h, .channels = 4, .type = TL_PIXEL_F32, .bottom_up = 1};
         if (tl_tool_write_image("thinlight-render", path, &id, buf)) {
             free(buf);
             return 1;
@@ -353,7 +353,8 @@ static int write_output(tl_renderer *r, const render_args *a)
 {
     size_t n = (size_t)a->rd.width * a->rd.height * 4;
     void *pixels = a->hdr_out ? malloc(n * sizeof(float)) : malloc(n);
-    tl_image_desc id = {a->rd.width, a->rd.height, 4, a->hdr_out ? TL_PIXEL_F32 : TL_PIXEL_U8, 1};
+    tl_image_desc id = {.width = a->rd.width, .height = a->rd.height, .channels = 4,
+                        .type = a->hdr_out ? TL_PIXEL_F32 : TL_PIXEL_U8, .bottom_up = 1};
     int rc = 0;
     if (!pixels) {
         fprintf(stderr, "thinlight-render: out of memory\n");

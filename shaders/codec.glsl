@@ -248,7 +248,7 @@ vec3 tl_rgb_to_luma_chroma(uint space, vec3 rgb)
     precise float y = (0.299 * r + 0.587 * g) + 0.114 * b;
     precise float cb = (b - y) * (0.5 / 0.886) + 0.5;
     precise float cr = (r - y) * (0.5 / 0.701) + 0.5;
-    return vec3(y, cb, cr);
+    return vec3(tl_clamp01(y), tl_clamp01(cb), tl_clamp01(cr)); // cyan's Cr rounds to -6e-8
 }
 
 vec3 tl_luma_chroma_to_rgb(uint space, vec3 ycc)

@@ -3,6 +3,7 @@
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
+#include <fcntl.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -86,6 +87,15 @@ int tl_tool_probe_writable(const char *path)
     return err;
 }
 
+int tl_tool_fsync_file(const char *path)
+{
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return errno;
+    int err = fsync(fd) == 0 ? 0 : errno;
+    close(fd);
+    return err;
+}
+
 int tl_tool_write_atomic(const char *tool, const char *path, tl_tool_write_fn fn, const void *ctx)
 {
     char *tmp = tl_tool_temp_name(path);
@@ -101,7 +111,8 @@ int tl_tool_write_atomic(const char *tool, const char *path, tl_tool_write_fn fn
     }
     errno = 0;
     int bad = fn(f, ctx) != 0;
-    bad |= ferror(f) != 0;
+    /* on disk before the rename: even a crash of the machine leaves the old file or the new one */
+    bad |= fflush(f) != 0 || ferror(f) != 0 || fsync(fileno(f)) != 0;
     bad |= fclose(f) != 0;
     if (bad || rename(tmp, path) != 0) {
         tl_tool_fail(tool, "cannot write '%s': %s", path, errno ? strerror(errno) : "write error");

@@ -77,7 +77,7 @@ int tl_tool_make_plot(tl_tool_plot *p)
     if (p->max_bytes && (size_t)st.st_size > p->max_bytes)
         fprintf(stderr, "%s: warning: %s is %ld KiB (over %zu KiB)\n", p->tool, png, (long)(st.st_size / 1024),
                 p->max_bytes / 1024);
-    if (rename(tmp, png) != 0) {
+    if (tl_tool_fsync_file(tmp) != 0 || rename(tmp, png) != 0) {
         tl_tool_fail(p->tool, "cannot write '%s': %s", png, strerror(errno));
         remove(tmp);
         goto done;

@@ -33,8 +33,11 @@ int tl_tool_make_dirs(const char *path);
 char *tl_tool_temp_name(const char *path);
 /* Whether a file can be created at `path` without touching `path` itself; 0 or an errno value. */
 int tl_tool_probe_writable(const char *path);
-/* Writes through `fn` into a temporary file and renames it over `path`; on failure prints one line,
- * removes the temporary file, leaves `path` untouched and returns nonzero. */
+/* Flushes a written file to disk (fsync); 0 or an errno value. */
+int tl_tool_fsync_file(const char *path);
+/* Writes through `fn` into a temporary file, flushes it to disk and renames it over `path`; on
+ * failure prints one line, removes the temporary file, leaves `path` untouched and returns
+ * nonzero. A process killed at any point leaves `path` old or new, never partial. */
 int tl_tool_write_atomic(const char *tool, const char *path, tl_tool_write_fn fn, const void *ctx);
 /* The whole file, NUL-terminated (size without the NUL); NULL with errno set on failure. */
 char *tl_tool_read_file(const char *path, size_t *size);

@@ -245,6 +245,13 @@ typedef struct tl_renderer_desc {
     tl_ssao_desc ssao;                 /**< screen-space ambient occlusion; zeroed: off */
     tl_fog_desc fog;                   /**< fog; zeroed: off */
     tl_dof_desc dof;                   /**< depth of field; zeroed: off */
+    /** The most memory, in bytes, the frame's targets may take (the memory blocks of the plan,
+     *  tl_frame_plan.allocated_bytes_per_pixel times the pixels, light lists included): a plan
+     *  that needs more is TL_ERROR_LIMIT naming both sizes, from create, set_scene, set_lights,
+     *  resize or add_pass; the renderer keeps its previous plan, size and passes (after a
+     *  refused set_scene it has no scene). 0: no budget
+     *  beyond GL's own limits (docs/renderer-limits.md). */
+    size_t max_target_bytes;
     tl_get_proc_address_fn get_proc_address; /**< required */
     void *get_proc_address_user;       /**< passed to get_proc_address */
     tl_allocator allocator;            /**< zeroed: malloc/free; every allocation of the renderer */

@@ -105,7 +105,8 @@ typedef struct tl_light {
     tl_light_type type;  /**< point, spot or directional */
     float position[3];   /**< world space (point, spot) */
     float direction[3];  /**< unit, the direction light travels (spot, directional) */
-    float color[3];      /**< linear colour times intensity */
+    float color[3];      /**< linear colour times intensity; the renderer takes a negative component as 0 and
+                              saturates what a pixel receives at 65504 (FP16), docs/renderer-limits.md */
     float radius;        /**< range; > 0 for point and spot */
     float cos_inner;     /**< spot: full intensity inside this cone */
     float cos_outer;     /**< spot: zero outside this cone; cos_outer < cos_inner */

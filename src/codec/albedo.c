@@ -29,9 +29,10 @@ void tl_rgb_to_luma_chroma(tl_color_space space, const float rgb[3], float ycc[3
         ycc[2] = 0.5f * g - 0.25f * (r + b) + 0.5f;
     } else { /* BT.601 full range */
         float y = 0.299f * r + 0.587f * g + 0.114f * b;
-        ycc[0] = y;
-        ycc[1] = (b - y) * (0.5f / 0.886f) + 0.5f;
-        ycc[2] = (r - y) * (0.5f / 0.701f) + 0.5f;
+        /* Clamped: rounding takes pure cyan's Cr to -6e-8 (found by tests/fuzz/fuzz_codec). */
+        ycc[0] = tl__clamp01(y);
+        ycc[1] = tl__clamp01((b - y) * (0.5f / 0.886f) + 0.5f);
+        ycc[2] = tl__clamp01((r - y) * (0.5f / 0.701f) + 0.5f);
     }
 }
 

@@ -1,4 +1,6 @@
-// Failures, warnings and allocation for the glTF adapter: the pieces every other gltf_*.cpp uses.
+// Failures, warnings, the memory budget and allocation for the glTF adapter: the pieces every
+// other gltf_*.cpp uses.
+#include <cstdio>
 #include <cstring>
 
 #include "gltf_internal.h"
@@ -13,10 +15,10 @@ void warn(const context &c, const std::string &message)
     // The logger takes one line per call; tinygltf's warnings can hold several.
     size_t start = 0;
     while (start <= message.size()) {
-        size_t end = message.find('\n', start);
+        size_t end = message.find_first_of("\r\n", start);
         if (end == std::string::npos) end = message.size();
         if (end > start) {
-            std::string line = c.path + ": " + message.substr(start, end - start);
+            std::string line = c.name + ": " + message.substr(start, end - start);
             c.logger.fn(c.logger.user, TL_LOG_WARNING, line.c_str());
         }
         start = end + 1;
@@ -25,25 +27,50 @@ void warn(const context &c, const std::string &message)
 
 std::string element(const char *array, size_t index) { return std::string(array) + "[" + std::to_string(index) + "]"; }
 
-std::string join_path(const std::string &dir, const std::string &file)
+std::string byte_size(size_t bytes)
 {
-    if (dir.empty()) return file;
-    return dir.back() == '/' ? dir + file : dir + "/" + file;
+    if (bytes < 10240) return std::to_string(bytes) + " bytes";
+    char text[64];
+    if (bytes < ((size_t)10 << 20))
+        std::snprintf(text, sizeof text, "%.1f KiB", (double)bytes / 1024.0);
+    else
+        std::snprintf(text, sizeof text, "%.1f MiB", (double)bytes / (1024.0 * 1024.0));
+    return text;
 }
 
-void *alloc_bytes(const context &c, size_t count, size_t size, const char *what)
+void charge(const context &c, size_t bytes, const std::string &what)
+{
+    if (bytes > c.budget - c.used)
+        fail(TL_ERROR_LIMIT, what + ": " + byte_size(bytes) + " would exceed the load's memory budget of " +
+                                 byte_size(c.budget) + " (max_memory; " + byte_size(c.used) + " in use)");
+    c.used += bytes;
+    if (c.used > c.peak) c.peak = c.used;
+}
+
+void uncharge(const context &c, size_t bytes) { c.used -= bytes < c.used ? bytes : c.used; }
+
+size_t budget_left(const context &c) { return c.budget - c.used; }
+
+void *alloc_bytes(const context &c, size_t count, size_t size, const std::string &what)
 {
     if (size != 0 && count > std::numeric_limits<size_t>::max() / size)
-        fail(TL_ERROR_OUT_OF_MEMORY, std::string(what) + ": size overflows");
+        fail(TL_ERROR_LIMIT, what + ": " + std::to_string(count) + " elements of " + std::to_string(size) +
+                                 " bytes overflow the address space");
     size_t bytes = count * size;
+    charge(c, bytes, what);
     void *p = c.alloc.alloc(bytes ? bytes : 1, c.alloc.user);
-    if (!p) fail(TL_ERROR_OUT_OF_MEMORY, std::string(what) + ": out of memory (" + std::to_string(bytes) + " bytes)");
+    if (!p) {
+        uncharge(c, bytes);
+        fail(TL_ERROR_OUT_OF_MEMORY, what + ": out of memory (" + std::to_string(bytes) + " bytes)");
+    }
     return p;
 }
 
-void free_bytes(const context &c, void *ptr)
+void free_bytes(const context &c, void *ptr, size_t bytes)
 {
-    if (ptr) c.alloc.free(ptr, c.alloc.user);
+    if (!ptr) return;
+    uncharge(c, bytes);
+    c.alloc.free(ptr, c.alloc.user);
 }
 
 } // namespace tl_gltf

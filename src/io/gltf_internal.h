@@ -22,19 +22,26 @@ namespace tl_gltf {
 struct context {
     tl_allocator alloc{};           // both functions set
     tl_logger logger{};
-    std::string path;               // as the caller gave it; prefixes every message
-    std::string base_dir;           // directory of `path` ("" = current), for relative URIs
+    std::string name;               // the path, or options.name for memory loads; prefixes every message
+    tl_gltf_files files{};          // external buffers and images; read == nullptr: none
     tl_gltf_normals normals = TL_GLTF_NORMALS_FLAT;
     size_t max_texture_pixels = 0;
     size_t max_triangles = 0;
+    size_t budget = 0;              // max_memory
+    mutable size_t used = 0;        // bytes held now against the budget (see charge())
+    mutable size_t peak = 0;
     uint32_t scene_number = 0;
     uint32_t extra_lights = 0;
     uint64_t seed = 1;
     bool default_lights = true;
-    // Set by the file callbacks, so that a failed tinygltf load can be told apart as I/O.
-    bool io_failed = false;
+    // Set when reading an external buffer fails inside tinygltf, so that the failure keeps its
+    // own result and message rather than becoming tinygltf's parse error.
+    tl_result io_result = TL_OK;
     std::string io_detail;
 };
+
+// JSON nested deeper than this is refused before any parser sees it (docs/gltf.md, "Limits").
+constexpr size_t max_json_depth = 64;
 
 // A failure: thrown anywhere inside the adapter, turned into a tl_result and one message line at
 // the C boundary. `message` is "element: what", without the file name.
@@ -44,22 +51,49 @@ struct failure {
 };
 
 [[noreturn]] void fail(tl_result result, const std::string &message);
-// Logs "path: message" as a warning (one line; embedded newlines are split into lines).
+// Logs "name: message" as a warning (one line; embedded newlines are split into lines).
 void warn(const context &c, const std::string &message);
 
 // "meshes[2].primitives[0]" style element names.
 std::string element(const char *array, size_t index);
-// `file` relative to directory `dir` ("" = the current directory).
-std::string join_path(const std::string &dir, const std::string &file);
+// A byte count for messages: "812 bytes", "35.2 KiB", "512.0 MiB".
+std::string byte_size(size_t bytes);
 
-// ---- allocation through the caller's allocator ---------------------------------------------
+// ---- the memory budget and allocation through the caller's allocator -------------------------
 
-// count * size bytes (overflow-checked); throws failure{TL_ERROR_OUT_OF_MEMORY} naming `what`.
-void *alloc_bytes(const context &c, size_t count, size_t size, const char *what);
-void free_bytes(const context &c, void *ptr);
+// Counts `bytes` against the load's budget (c.budget); throws failure{TL_ERROR_LIMIT} naming
+// `what` when they do not fit. Every allocation of the load goes through here: the caller's
+// allocator (alloc_bytes, stl_allocator) and, as estimates or exact sizes, what tinygltf and
+// nlohmann-json hold in the C++ heap (gltf_parse.cpp).
+void charge(const context &c, size_t bytes, const std::string &what);
+void uncharge(const context &c, size_t bytes);
+// What the budget still allows.
+size_t budget_left(const context &c);
 
-// A standard allocator over the context's allocator, so temporary vectors count as the caller's
-// allocations too; failure throws std::bad_alloc, which the C boundary reports as out of memory.
+// A charge held until the end of a scope.
+struct budget_hold {
+    const context &c;
+    size_t bytes = 0;
+    explicit budget_hold(const context &ctx) : c(ctx) {}
+    ~budget_hold() { uncharge(c, bytes); }
+    void add(size_t n, const std::string &what)
+    {
+        charge(c, n, what);
+        bytes += n;
+    }
+    budget_hold(const budget_hold &) = delete;
+    budget_hold &operator=(const budget_hold &) = delete;
+};
+
+// count * size bytes (overflow-checked), charged to the budget; throws failure naming `what`
+// (TL_ERROR_LIMIT over the budget, TL_ERROR_OUT_OF_MEMORY when the allocator fails).
+void *alloc_bytes(const context &c, size_t count, size_t size, const std::string &what);
+// Frees what alloc_bytes returned for `bytes` (count * size) bytes.
+void free_bytes(const context &c, void *ptr, size_t bytes);
+
+// A standard allocator over the context's allocator and budget, so temporary vectors count as
+// the caller's allocations too; failure throws (std::bad_alloc from the allocator, failure from
+// the budget), which the C boundary reports.
 template <class T> struct stl_allocator {
     using value_type = T;
     const context *c;
@@ -69,11 +103,19 @@ template <class T> struct stl_allocator {
     {
         if (n > std::numeric_limits<size_t>::max() / sizeof(T)) throw std::bad_alloc();
         size_t bytes = n * sizeof(T);
+        charge(*c, bytes, "temporary arrays");
         void *p = c->alloc.alloc(bytes != 0 ? bytes : 1, c->alloc.user);
-        if (!p) throw std::bad_alloc();
+        if (!p) {
+            uncharge(*c, bytes);
+            throw std::bad_alloc();
+        }
         return static_cast<T *>(p);
     }
-    void deallocate(T *p, size_t) noexcept { c->alloc.free(p, c->alloc.user); }
+    void deallocate(T *p, size_t n) noexcept
+    {
+        uncharge(*c, n * sizeof(T));
+        c->alloc.free(p, c->alloc.user);
+    }
     template <class U> bool operator==(const stl_allocator<U> &o) const noexcept { return c == o.c; }
     template <class U> bool operator!=(const stl_allocator<U> &o) const noexcept { return c != o.c; }
 };
@@ -81,11 +123,82 @@ template <class T> struct stl_allocator {
 template <class T> using vec = std::vector<T, stl_allocator<T>>;
 template <class T> vec<T> make_vec(const context &c) { return vec<T>(stl_allocator<T>(&c)); }
 
+// ---- external files (gltf_external.cpp) ------------------------------------------------------
+
+// The bytes of one external file, read through c.files and charged to the budget until freed.
+struct external_file {
+    const context &c;
+    void *data = nullptr;
+    size_t size = 0;
+    explicit external_file(const context &ctx) : c(ctx) {}
+    ~external_file();
+    external_file(const external_file &) = delete;
+    external_file &operator=(const external_file &) = delete;
+};
+// Reads `uri` (percent-decoded) through c.files. False with *result and *why ("'uri': reason")
+// when it cannot be read; throws failure for memory (the budget, TL_ERROR_LIMIT or
+// TL_ERROR_OUT_OF_MEMORY from the callback).
+bool read_external(const context &c, const std::string &uri, external_file *out, tl_result *result, std::string *why);
+
+// ---- the folder reader (gltf_folder.cpp) ----------------------------------------------------
+
+// The default tl_gltf_files of path loads: regular files in the glTF file's folder and below,
+// allocated through the context's allocator. `dir` is the folder as the path names it.
+struct folder_reader {
+    const context *c = nullptr;
+    std::string root;   // realpath of the folder, "" when it cannot be resolved
+    std::string why;    // the last failure's reason (tl_gltf_files.read's *why)
+};
+// Fills `r` for the folder of `path` and returns the tl_gltf_files that use it.
+tl_gltf_files folder_files(const context &c, const std::string &path, folder_reader *r);
+// The glTF file itself, read through the context's allocator (charged): only a regular file,
+// opened without blocking. Throws failure.
+struct file_bytes {
+    const context &c;
+    unsigned char *data = nullptr;
+    size_t size = 0;
+    explicit file_bytes(const context &ctx) : c(ctx) {}
+    ~file_bytes() { free_bytes(c, data, size); }
+    file_bytes(const file_bytes &) = delete;
+    file_bytes &operator=(const file_bytes &) = delete;
+};
+void read_main_file(const context &c, const std::string &path, file_bytes *out);
+
+// ---- the load (gltf_load.cpp) ---------------------------------------------------------------
+
+// Parses `size` bytes and builds the scene; throws failure. The C entry points (gltf_api.cpp)
+// resolve the options into `c` and catch.
+tl_scene *load_scene(context &c, const unsigned char *data, size_t size, const tl_allocator &user_allocator);
+
 // ---- parsing (gltf_parse.cpp) ---------------------------------------------------------------
 
-// Reads c.path (.gltf or .glb by content) into `model`; buffers are loaded, images are kept
-// encoded (decoded later, only when a material uses them). Throws failure.
-void parse_file(context &c, tinygltf::Model *model);
+// JSON whose shape would be costly to parse: nesting and how much parsed memory it may need.
+struct json_shape {
+    size_t depth = 0;        // deepest nesting of objects and arrays
+    size_t deep_at = 0;      // byte offset where nesting first passed max_json_depth (depth > max)
+    size_t containers = 0;   // objects and arrays
+    size_t members = 0;      // object members (key: value)
+    size_t items = 0;        // values after the first in arrays, members after the first in objects
+    size_t elements = 0;     // objects directly inside a top-level array (tinygltf structs)...
+    size_t materials = 0;    // ... and those of "materials" (the largest struct) apart
+    size_t string_bytes = 0; // bytes inside strings, keys included
+};
+// One pass over the text, no allocation, no recursion; stops at max_json_depth + 1.
+json_shape scan_json(const unsigned char *text, size_t size);
+// What parsing a document of that shape may hold in the C++ heap (nlohmann's DOM and tinygltf's
+// model together), an upper estimate.
+size_t json_parse_cost(const json_shape &s);
+
+// What tinygltf would trust without checking, checked on nlohmann's parse of the same text (a
+// malformed text is left for tinygltf to report): in a GLB only buffers[0] may use the BIN chunk
+// (tinygltf copies the chunk for every buffer without a URI), charged to `hold`; an image's
+// buffer view starts inside its buffer (tinygltf indexes the buffer before any check). Throws.
+void check_json(const context &c, const unsigned char *json, size_t size, bool glb, size_t bin_size, budget_hold *hold);
+
+// Parses `size` bytes (.gltf or .glb by content) into `model`; buffers are loaded, images are
+// kept encoded (decoded later, only when a material uses them). What tinygltf holds is charged
+// to `hold` for as long as the model lives. Throws failure.
+void parse_gltf(context &c, const unsigned char *data, size_t size, tinygltf::Model *model, budget_hold *hold);
 
 // ---- accessors (gltf_accessor.cpp) ----------------------------------------------------------
 
@@ -138,13 +251,12 @@ struct decoded_image {
     uint32_t width = 0, height = 0;
     uint8_t *rgba = nullptr;
 };
-// Decodes an encoded image (PNG, JPEG, ... whatever OpenImageIO reads) from memory or a file.
-// Returns false with `why` set when the data cannot be decoded (the caller warns and falls back);
-// throws failure for TL_ERROR_LIMIT (c.max_texture_pixels) and out of memory.
+// Decodes an encoded PNG or JPEG image from memory (image_decode.h), its pixels charged to the
+// budget. Returns false with `why` set when the data cannot be decoded (the caller warns and
+// falls back); throws failure for TL_ERROR_LIMIT (c.max_texture_pixels, the budget) and out of
+// memory.
 bool decode_image_memory(const context &c, const unsigned char *data, size_t size, const std::string &mime,
                          const std::string &what, decoded_image *out, std::string *why);
-bool decode_image_file(const context &c, const std::string &file, const std::string &what, decoded_image *out,
-                       std::string *why);
 
 // The scene's textures while loading: owns their pixels until handed to the scene.
 struct texture_table {

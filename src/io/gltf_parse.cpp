@@ -1,11 +1,8 @@
-// Reading the file and running tinygltf over it. We read the main file ourselves (I/O errors are
-// ours to name, GLB headers are checked before tinygltf trusts them) and give tinygltf file
-// callbacks that only look next to the glTF file and remember failures, so a missing .bin is
-// reported as TL_ERROR_IO rather than a parse error.
-#include <sys/stat.h>
-
-#include <cerrno>
-#include <cstdio>
+// Running tinygltf over the file's bytes. Before tinygltf sees them: the GLB header and chunk
+// table, the JSON's nesting and parse cost (gltf_json_scan.cpp), and what tinygltf would trust
+// (gltf_json_check.cpp). tinygltf reads external buffers through file callbacks that go to the
+// load's tl_gltf_files (gltf_external.cpp) and remember failures, so a missing .bin is reported
+// as TL_ERROR_IO with its own reason rather than as a parse error.
 #include <cstring>
 
 #include "gltf_internal.h"
@@ -15,48 +12,47 @@ namespace {
 
 uint32_t le32(const unsigned char *p) { return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24; }
 
-bool is_regular_file(const std::string &path)
-{
-    struct stat st;
-    return stat(path.c_str(), &st) == 0 && S_ISREG(st.st_mode);
-}
+struct fs_state {
+    context *c;
+    budget_hold *hold;
+};
 
-// tinygltf searches base_dir and then ".": accepting only files under base_dir keeps a stray
-// file of the same name in the working directory from standing in for a missing one.
-bool fs_exists(const std::string &file, void *user)
-{
-    context &c = *static_cast<context *>(user);
-    std::string prefix = join_path(c.base_dir, "");
-    bool under_base = prefix.empty() || file.compare(0, prefix.size(), prefix) == 0;
-    if (under_base && is_regular_file(file)) return true;
-    if (under_base && !c.io_failed) {
-        c.io_failed = true;
-        c.io_detail = file + ": no such file";
-    }
-    return false;
-}
+// tinygltf asks for "base_dir/uri" and then "./uri"; with an empty base_dir the first question
+// is the URI itself, and the answer is always yes: whether the file can be read is the file
+// callbacks' to say, when tinygltf reads it.
+bool fs_exists(const std::string &file, void *) { return !file.empty(); }
 
-// No "~" or environment expansion: URIs are relative paths, nothing more.
+// No "~" or environment expansion: URIs are what the file says, nothing more.
 std::string fs_expand(const std::string &file, void *) { return file; }
 
-bool fs_read(std::vector<unsigned char> *out, std::string *err, const std::string &file, void *user)
+// An external buffer (tinygltf has already percent-decoded the URI). Nothing may be thrown
+// through tinygltf: failures are kept in the context and reported after it returns.
+bool fs_read(std::vector<unsigned char> *out, std::string *err, const std::string &uri, void *user)
 {
-    context &c = *static_cast<context *>(user);
-    FILE *f = std::fopen(file.c_str(), "rb");
-    bool ok = f != nullptr;
-    if (ok) {
-        unsigned char chunk[65536];
-        size_t n;
-        while ((n = std::fread(chunk, 1, sizeof chunk, f)) > 0) out->insert(out->end(), chunk, chunk + n);
-        ok = !std::ferror(f);
-        std::fclose(f);
+    fs_state &s = *static_cast<fs_state *>(user);
+    context &c = *s.c;
+    try {
+        external_file file(c);
+        tl_result r = TL_OK;
+        std::string why;
+        if (read_external(c, uri, &file, &r, &why)) {
+            // The copy tinygltf keeps lives as long as the model.
+            s.hold->add(file.size, "buffer '" + uri + "'");
+            const unsigned char *b = static_cast<const unsigned char *>(file.data);
+            out->assign(b, b + file.size);
+            return true;
+        }
+        c.io_result = r;
+        c.io_detail = why;
+    } catch (const failure &f) {
+        c.io_result = f.result;
+        c.io_detail = f.message;
+    } catch (...) {
+        c.io_result = TL_ERROR_OUT_OF_MEMORY;
+        c.io_detail = "buffer '" + uri + "': out of memory";
     }
-    if (!ok) {
-        c.io_failed = true;
-        c.io_detail = file + ": " + std::strerror(errno);
-        if (err) *err += c.io_detail;
-    }
-    return ok;
+    if (err) *err += c.io_detail;
+    return false;
 }
 
 bool fs_write(std::string *err, const std::string &, const std::vector<unsigned char> &, void *)
@@ -82,7 +78,7 @@ std::string first_line(const std::string &text)
 {
     size_t start = 0;
     while (start < text.size()) {
-        size_t end = text.find('\n', start);
+        size_t end = text.find_first_of("\r\n", start);
         if (end == std::string::npos) end = text.size();
         if (end > start) return text.substr(start, end - start);
         start = end + 1;
@@ -91,8 +87,9 @@ std::string first_line(const std::string &text)
 }
 
 // The GLB header and chunk table, checked before tinygltf reads them (its BIN-chunk bound
-// ignores the 8-byte chunk header, so a crafted length would read past the file).
-void check_glb(const unsigned char *b, size_t size)
+// ignores the 8-byte chunk header, so a crafted length would read past the file). Returns the
+// BIN chunk's size (0: none).
+size_t check_glb(const unsigned char *b, size_t size)
 {
     if (size < 20) fail(TL_ERROR_PARSE, "GLB: truncated header (" + std::to_string(size) + " bytes)");
     uint32_t version = le32(b + 4), length = le32(b + 8), json_len = le32(b + 12), json_type = le32(b + 16);
@@ -104,70 +101,52 @@ void check_glb(const unsigned char *b, size_t size)
     if (json_type != 0x4E4F534Au || json_len == 0) fail(TL_ERROR_PARSE, "GLB: the first chunk is not JSON");
     uint64_t end = 20ull + json_len;
     if (end > length) fail(TL_ERROR_PARSE, "GLB: JSON chunk runs past the end of the file");
-    if (end == length) return;
+    if (end == length) return 0;
     if (end + 8 > length) fail(TL_ERROR_PARSE, "GLB: truncated BIN chunk header");
     uint32_t bin_len = le32(b + end), bin_type = le32(b + end + 4);
     if (bin_type != 0x004E4942u) fail(TL_ERROR_PARSE, "GLB: the second chunk is not BIN");
     if (end + 8 + bin_len > length) fail(TL_ERROR_PARSE, "GLB: BIN chunk runs past the end of the file");
+    return bin_len;
 }
 
-// The main file's bytes, through the caller's allocator.
-struct file_bytes {
-    const context &c;
-    unsigned char *data = nullptr;
-    size_t size = 0;
-    explicit file_bytes(const context &ctx) : c(ctx) {}
-    ~file_bytes() { free_bytes(c, data); }
-};
-
-void read_main_file(const context &c, file_bytes *out)
+// Nesting and parse cost of the JSON text, before any parser runs.
+void check_shape(const unsigned char *json, size_t size, size_t offset, budget_hold *hold)
 {
-    FILE *f = std::fopen(c.path.c_str(), "rb");
-    if (!f) fail(TL_ERROR_IO, std::string("cannot open: ") + std::strerror(errno));
-    long size = -1;
-    if (std::fseek(f, 0, SEEK_END) == 0) size = std::ftell(f);
-    if (size < 0 || std::fseek(f, 0, SEEK_SET) != 0) {
-        std::fclose(f);
-        fail(TL_ERROR_IO, "cannot determine the file size (not a regular file?)");
-    }
-    // tinygltf takes 32-bit lengths.
-    if ((unsigned long)size > 0xFFFFFFFFul) {
-        std::fclose(f);
-        fail(TL_ERROR_LIMIT, "larger than 4 GiB");
-    }
-    try {
-        out->data = static_cast<unsigned char *>(alloc_bytes(c, (size_t)size, 1, "reading the file"));
-    } catch (...) {
-        std::fclose(f);
-        throw;
-    }
-    out->size = std::fread(out->data, 1, (size_t)size, f);
-    bool ok = out->size == (size_t)size && !std::ferror(f);
-    std::fclose(f);
-    if (!ok) fail(TL_ERROR_IO, "read error");
+    json_shape shape = scan_json(json, size);
+    if (shape.depth > max_json_depth)
+        fail(TL_ERROR_LIMIT, "JSON nested more than " + std::to_string(max_json_depth) + " levels deep (at byte " +
+                                 std::to_string(offset + shape.deep_at) + ")");
+    hold->add(json_parse_cost(shape), "parsing the JSON (" + std::to_string(shape.containers) + " objects and arrays, " +
+                                          std::to_string(shape.members + shape.items) + " values, " +
+                                          byte_size(shape.string_bytes) + " of strings)");
 }
 
 } // namespace
 
-void parse_file(context &c, tinygltf::Model *model)
+void parse_gltf(context &c, const unsigned char *data, size_t size, tinygltf::Model *model, budget_hold *hold)
 {
-    file_bytes file(c);
-    read_main_file(c, &file);
-    if (file.size == 0) fail(TL_ERROR_PARSE, "empty file");
-    bool glb = file.size >= 4 && std::memcmp(file.data, "glTF", 4) == 0;
-    if (glb) check_glb(file.data, file.size);
+    if (size == 0) fail(TL_ERROR_PARSE, "empty file");
+    // tinygltf takes 32-bit lengths.
+    if (size > 0xFFFFFFFFu) fail(TL_ERROR_LIMIT, "larger than 4 GiB");
+    bool glb = size >= 4 && std::memcmp(data, "glTF", 4) == 0;
+    size_t bin_size = glb ? check_glb(data, size) : 0;
+    const unsigned char *json = glb ? data + 20 : data;
+    size_t json_size = glb ? le32(data + 12) : size;
+    check_shape(json, json_size, glb ? 20 : 0, hold);
+    check_json(c, json, json_size, glb, bin_size, hold);
 
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(keep_encoded, nullptr);
-    loader.SetFsCallbacks(tinygltf::FsCallbacks{fs_exists, fs_expand, fs_read, fs_write, &c});
+    fs_state fs{&c, hold};
+    loader.SetFsCallbacks(tinygltf::FsCallbacks{fs_exists, fs_expand, fs_read, fs_write, &fs});
     std::string err, warnings;
-    c.io_failed = false;
-    bool ok = glb ? loader.LoadBinaryFromMemory(model, &err, &warnings, file.data, (unsigned)file.size, c.base_dir)
-                  : loader.LoadASCIIFromString(model, &err, &warnings, reinterpret_cast<const char *>(file.data),
-                                               (unsigned)file.size, c.base_dir);
+    c.io_result = TL_OK;
+    bool ok = glb ? loader.LoadBinaryFromMemory(model, &err, &warnings, data, (unsigned)size, "")
+                  : loader.LoadASCIIFromString(model, &err, &warnings, reinterpret_cast<const char *>(data),
+                                               (unsigned)size, "");
     if (!warnings.empty()) warn(c, warnings);
     if (!ok) {
-        if (c.io_failed) fail(TL_ERROR_IO, c.io_detail);
+        if (c.io_result != TL_OK) fail(c.io_result, c.io_detail);
         fail(TL_ERROR_PARSE, first_line(err));
     }
     // tinygltf may report problems in `err` and still succeed (it is lenient); they are warnings.

@@ -1,5 +1,5 @@
-// glTF textures to scene textures: each image is decoded at most once, only when a material uses
-// it. A missing or undecodable image is a warning and TL_NO_TEXTURE (the material keeps its flat
+// glTF textures to scene textures: each glTF image is decoded at most once, only when a material
+// uses it. A missing or undecodable image is a warning and TL_NO_TEXTURE (the material keeps its flat
 // colour); a broken reference in the JSON is an error.
 #include <cstring>
 
@@ -69,18 +69,19 @@ bool decode_gltf_image(const context &c, const tinygltf::Model &m, size_t ii, de
         *why = "unsupported data URI type";
         return false;
     }
-    if (img.uri.find("://") != std::string::npos) {
-        *why = "only relative file URIs are supported";
-        return false;
-    }
-    return decode_image_file(c, join_path(c.base_dir, percent_decode(img.uri)), name, out, why);
+    // An external file, through the load's file callbacks (by default: the glTF file's folder).
+    external_file file(c);
+    tl_result result = TL_OK;
+    if (!read_external(c, percent_decode(img.uri), &file, &result, why)) return false;
+    return decode_image_memory(c, static_cast<const unsigned char *>(file.data), file.size, img.mimeType, name, out,
+                               why);
 }
 
 } // namespace
 
 texture_table::~texture_table()
 {
-    for (tl_texture &t : textures) free_bytes(*c, t.rgba);
+    for (tl_texture &t : textures) free_bytes(*c, t.rgba, (size_t)t.width * t.height * 4);
 }
 
 uint32_t texture_for(const context &c, const tinygltf::Model &m, texture_table *t, int index, const std::string &what)

@@ -1,21 +1,28 @@
-// Image files through OpenImageIO. Exceptions and OIIO error strings become tl_result plus a
-// message here; nothing C++ crosses the C API.
+// Image files through OpenImageIO: tl_image_write, and PNG/JPEG reading through the decoder the
+// glTF textures use (image_decode.h). Exceptions and OIIO error strings become a tl_result plus
+// one line to the logger here; nothing C++ crosses the C API.
 #include <OpenImageIO/imageio.h>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
-#include <memory>
 #include <string>
-#include <unistd.h>
 
+#include "core/alloc.h"
+#include "image_decode.h"
+#include "io_file.h"
 #include "thinlight/io.h"
 
 namespace {
 
-tl_result fail(char *error, size_t size, tl_result r, const std::string &msg)
+tl_result report(const tl_logger &logger, tl_result r, std::string msg)
 {
-    if (error && size) std::snprintf(error, size, "%s", msg.c_str());
+    for (char &ch : msg)
+        if (ch == '\n' || ch == '\r') ch = ' ';
+    if (logger.fn) logger.fn(logger.user, TL_LOG_ERROR, msg.c_str());
     return r;
 }
 
@@ -26,98 +33,188 @@ std::string extension_of(const std::string &path)
     return path.substr(dot);
 }
 
+// The written temporary reaches the disk before it is renamed over the target, so that even a
+// crash of the machine leaves the old file or the new one.
+bool flush_to_disk(const std::string &path)
+{
+    int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return false;
+    bool ok = fsync(fd) == 0;
+    close(fd);
+    return ok;
+}
+
+bool valid_layout(const tl_image_desc *d)
+{
+    return d->width && d->height && d->channels >= 1 && d->channels <= 4 && d->width <= 65536 && d->height <= 65536 &&
+           (unsigned)d->type < TL_PIXEL_TYPE_COUNT_;
+}
+
+// Writes the pixels into `tmp` with OIIO; "" or the reason.
+std::string write_pixels(OIIO::ImageOutput *out, const std::string &tmp, const std::string &ext, const tl_image_desc &desc,
+                         const void *pixels)
+{
+    OIIO::TypeDesc in_type = desc.type == TL_PIXEL_F32 ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
+    OIIO::TypeDesc file_type = in_type;
+    if (ext == ".png" || ext == ".jpg" || ext == ".jpeg") file_type = OIIO::TypeDesc::UINT8;
+    if (ext == ".exr") file_type = OIIO::TypeDesc::HALF;
+    OIIO::ImageSpec spec((int)desc.width, (int)desc.height, (int)desc.channels, file_type);
+    // The pixels are stored as given. Without this OIIO takes RGBA for premultiplied and divides
+    // colour by alpha when it writes PNG (found by the test image_png_round_trip_*).
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    if (!out->open(tmp, spec)) return "cannot write: " + out->geterror();
+    size_t elem = desc.type == TL_PIXEL_F32 ? 4 : 1;
+    OIIO::stride_t ystride = (OIIO::stride_t)(desc.width * desc.channels * elem);
+    const char *base = static_cast<const char *>(pixels);
+    if (desc.bottom_up) {
+        base += (size_t)(desc.height - 1) * (size_t)ystride;
+        ystride = -ystride;
+    }
+    bool ok = out->write_image(in_type, base, OIIO::AutoStride, ystride);
+    std::string e = ok ? "" : out->geterror();
+    ok = out->close() && ok;
+    if (!ok) return "write failed: " + (e.empty() ? out->geterror() : e);
+    return "";
+}
+
 } // namespace
 
-extern "C" tl_result tl_image_write(const char *path, const tl_image_desc *desc, const void *pixels, char *error,
-                                    size_t error_size)
+extern "C" tl_result tl_image_write(const char *path, const tl_image_desc *desc, const void *pixels)
 {
-    if (!path || !desc || !pixels || !desc->width || !desc->height || desc->channels < 1 || desc->channels > 4 ||
-        desc->width > 65536 || desc->height > 65536 || (unsigned)desc->type >= TL_PIXEL_TYPE_COUNT_)
-        return fail(error, error_size, TL_ERROR_INVALID_ARGUMENT, "image write: invalid arguments");
+    tl_logger logger = desc ? desc->logger : tl_logger{};
+    if (!path || !desc || !pixels || !valid_layout(desc))
+        return report(logger, TL_ERROR_INVALID_ARGUMENT, "tl_image_write: invalid arguments");
     try {
         std::string target(path), ext = extension_of(target);
-        if (ext.empty()) return fail(error, error_size, TL_ERROR_INVALID_ARGUMENT, target + ": no file extension");
+        if (ext.empty()) return report(logger, TL_ERROR_INVALID_ARGUMENT, target + ": no file extension");
+        auto out = OIIO::ImageOutput::create(target);
+        if (!out) return report(logger, TL_ERROR_UNSUPPORTED, target + ": no writer for '" + ext + "'");
         // The temporary keeps the extension so that OIIO picks the same writer.
         std::string tmp = target + ".tmp" + std::to_string(static_cast<long>(getpid())) + ext;
-        auto out = OIIO::ImageOutput::create(target);
-        if (!out) return fail(error, error_size, TL_ERROR_UNSUPPORTED, target + ": no writer for '" + ext + "'");
-        OIIO::TypeDesc in_type = desc->type == TL_PIXEL_F32 ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-        OIIO::TypeDesc file_type = in_type;
-        if (ext == ".png" || ext == ".jpg" || ext == ".jpeg") file_type = OIIO::TypeDesc::UINT8;
-        if (ext == ".exr") file_type = OIIO::TypeDesc::HALF;
-        OIIO::ImageSpec spec((int)desc->width, (int)desc->height, (int)desc->channels, file_type);
-        if (!out->open(tmp, spec)) {
-            std::string e = out->geterror();
-            return fail(error, error_size, TL_ERROR_IO, target + ": cannot write: " + e);
-        }
-        size_t elem = desc->type == TL_PIXEL_F32 ? 4 : 1;
-        OIIO::stride_t ystride = (OIIO::stride_t)(desc->width * desc->channels * elem);
-        const char *base = static_cast<const char *>(pixels);
-        if (desc->bottom_up) {
-            base += (size_t)(desc->height - 1) * (size_t)ystride;
-            ystride = -ystride;
-        }
-        bool ok = out->write_image(in_type, base, OIIO::AutoStride, ystride);
-        std::string e = ok ? "" : out->geterror();
-        ok = out->close() && ok;
-        if (!ok) {
+        std::string why = write_pixels(out.get(), tmp, ext, *desc, pixels);
+        if (why.empty() && !flush_to_disk(tmp)) why = "cannot flush the temporary file to disk";
+        if (why.empty() && std::rename(tmp.c_str(), target.c_str()) != 0) why = "cannot rename the temporary file into place";
+        if (!why.empty()) {
             std::remove(tmp.c_str());
-            return fail(error, error_size, TL_ERROR_IO, target + ": write failed: " + e);
-        }
-        if (std::rename(tmp.c_str(), target.c_str()) != 0) {
-            std::remove(tmp.c_str());
-            return fail(error, error_size, TL_ERROR_IO, target + ": cannot rename the temporary file into place");
+            return report(logger, TL_ERROR_IO, target + ": " + why);
         }
         return TL_OK;
     } catch (const std::exception &ex) {
-        return fail(error, error_size, TL_ERROR_IO, std::string(path) + ": " + ex.what());
+        return report(logger, TL_ERROR_IO, std::string(path) + ": " + ex.what());
     } catch (...) {
-        return fail(error, error_size, TL_ERROR_IO, std::string(path) + ": unknown error");
+        return report(logger, TL_ERROR_IO, std::string(path) + ": unknown error");
     }
 }
 
-extern "C" tl_result tl_image_read_rgba8(const char *path, size_t max_pixels, uint32_t *width, uint32_t *height,
-                                         uint8_t **rgba, char *error, size_t error_size)
+namespace {
+
+// Pixels from the caller's allocator, owned here until handed over.
+struct allocator_sink final : tl_io::pixel_sink {
+    tl_allocator a;
+    uint8_t *px = nullptr;
+    explicit allocator_sink(const tl_allocator &alloc) : a(alloc) {}
+    ~allocator_sink()
+    {
+        if (px) a.free(px, a.user);
+    }
+    uint8_t *pixels(size_t width, size_t height) override
+    {
+        px = static_cast<uint8_t *>(a.alloc(width * height * 4, a.user));
+        return px;
+    }
+};
+
+tl_result decode(const unsigned char *data, size_t size, const tl_image_read_desc &d, const std::string &name,
+                 tl_rgba8_image *out)
 {
-    if (!path || !width || !height || !rgba) return fail(error, error_size, TL_ERROR_INVALID_ARGUMENT, "image read: invalid arguments");
-    *rgba = nullptr;
-    *width = *height = 0;
-    if (!max_pixels) max_pixels = (size_t)1 << 26;
+    tl_allocator a;
+    tl__allocator_resolve(&d.allocator, &a); // begin_read refused a half allocator
+    allocator_sink sink(a);
+    tl_io::decoded_size got;
+    std::string why;
+    size_t max_pixels = d.max_pixels ? d.max_pixels : (size_t)1 << 26;
+    switch (tl_io::decode_rgba8(data, size, "", max_pixels, name, sink, &got, &why)) {
+    case tl_io::decode_status::ok: break;
+    case tl_io::decode_status::unsupported: return report(d.logger, TL_ERROR_UNSUPPORTED, name + ": " + why);
+    case tl_io::decode_status::too_large: return report(d.logger, TL_ERROR_LIMIT, name + ": " + why);
+    case tl_io::decode_status::no_memory: return report(d.logger, TL_ERROR_OUT_OF_MEMORY, name + ": out of memory");
+    default: return report(d.logger, TL_ERROR_PARSE, name + ": " + why);
+    }
+    out->width = got.width;
+    out->height = got.height;
+    out->rgba = sink.px;
+    out->allocator = a;
+    sink.px = nullptr;
+    return TL_OK;
+}
+
+// Checks shared by both readers; the resolved options into *d.
+tl_result begin_read(const char *fn, const tl_image_read_desc *desc, tl_rgba8_image *out, tl_image_read_desc *d)
+{
+    *d = desc ? *desc : tl_image_read_desc{};
+    if (out) *out = tl_rgba8_image{};
+    if (!out) return report(d->logger, TL_ERROR_INVALID_ARGUMENT, std::string(fn) + ": NULL out");
+    tl_allocator resolved;
+    if (tl__allocator_resolve(&d->allocator, &resolved) != TL_OK)
+        return report(d->logger, TL_ERROR_INVALID_ARGUMENT, std::string(fn) + ": allocator needs both alloc and free");
+    return TL_OK;
+}
+
+} // namespace
+
+extern "C" tl_result tl_image_decode_rgba8(const void *data, size_t size, const tl_image_read_desc *desc,
+                                           tl_rgba8_image *out)
+{
+    tl_image_read_desc d;
+    tl_result r = begin_read("tl_image_decode_rgba8", desc, out, &d);
+    if (r != TL_OK) return r;
+    if (!data && size) return report(d.logger, TL_ERROR_INVALID_ARGUMENT, "tl_image_decode_rgba8: NULL data");
+    std::string name = d.name ? d.name : "image";
     try {
-        auto in = OIIO::ImageInput::open(path);
-        if (!in) return fail(error, error_size, TL_ERROR_IO, std::string(path) + ": cannot open: " + OIIO::geterror());
-        const OIIO::ImageSpec &spec = in->spec();
-        if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 || spec.depth != 1)
-            return fail(error, error_size, TL_ERROR_UNSUPPORTED, std::string(path) + ": unsupported image layout");
-        size_t n = (size_t)spec.width * (size_t)spec.height;
-        if ((size_t)spec.width > 65536 || (size_t)spec.height > 65536 || n > max_pixels)
-            return fail(error, error_size, TL_ERROR_LIMIT,
-                        std::string(path) + ": " + std::to_string(spec.width) + "x" + std::to_string(spec.height) +
-                            " exceeds the pixel limit");
-        int ch = spec.nchannels;
-        std::unique_ptr<uint8_t[]> tmp(new uint8_t[n * (size_t)ch]);
-        if (!in->read_image(0, 0, 0, ch, OIIO::TypeDesc::UINT8, tmp.get()))
-            return fail(error, error_size, TL_ERROR_PARSE, std::string(path) + ": " + in->geterror());
-        uint8_t *out = static_cast<uint8_t *>(std::malloc(n * 4));
-        if (!out) return fail(error, error_size, TL_ERROR_OUT_OF_MEMORY, std::string(path) + ": out of memory");
-        for (size_t i = 0; i < n; i++) {
-            const uint8_t *s = tmp.get() + i * (size_t)ch;
-            uint8_t *d = out + i * 4;
-            if (ch >= 3) {
-                d[0] = s[0]; d[1] = s[1]; d[2] = s[2];
-                d[3] = ch >= 4 ? s[3] : 255;
-            } else {
-                d[0] = d[1] = d[2] = s[0];
-                d[3] = ch == 2 ? s[1] : 255;
-            }
-        }
-        *rgba = out;
-        *width = (uint32_t)spec.width;
-        *height = (uint32_t)spec.height;
-        return TL_OK;
+        return decode(static_cast<const unsigned char *>(data), size, d, name, out);
+    } catch (const std::bad_alloc &) {
+        return report(d.logger, TL_ERROR_OUT_OF_MEMORY, name + ": out of memory");
     } catch (const std::exception &ex) {
-        return fail(error, error_size, TL_ERROR_IO, std::string(path) + ": " + ex.what());
+        return report(d.logger, TL_ERROR_PARSE, name + ": " + ex.what());
+    } catch (...) {
+        return report(d.logger, TL_ERROR_PARSE, name + ": unknown error");
     }
 }
 
-extern "C" void tl_image_free(void *pixels) { std::free(pixels); }
+extern "C" tl_result tl_image_read_rgba8(const char *path, const tl_image_read_desc *desc, tl_rgba8_image *out)
+{
+    tl_image_read_desc d;
+    tl_result r = begin_read("tl_image_read_rgba8", desc, out, &d);
+    if (r != TL_OK) return r;
+    if (!path) return report(d.logger, TL_ERROR_INVALID_ARGUMENT, "tl_image_read_rgba8: NULL path");
+    std::string name(path);
+    void *bytes = nullptr;
+    tl_allocator a;
+    tl__allocator_resolve(&d.allocator, &a);
+    try {
+        tl_io::regular_file f;
+        std::string why;
+        if (tl_io::open_regular(path, &f, &why) != TL_OK) return report(d.logger, TL_ERROR_IO, name + ": " + why);
+        if (f.size > ((size_t)1 << 30)) return report(d.logger, TL_ERROR_LIMIT, name + ": larger than 1 GiB");
+        bytes = a.alloc(f.size ? f.size : 1, a.user);
+        if (!bytes) return report(d.logger, TL_ERROR_OUT_OF_MEMORY, name + ": out of memory");
+        r = tl_io::read_all(f, bytes, &why) == TL_OK
+                ? decode(static_cast<const unsigned char *>(bytes), f.size, d, name, out)
+                : report(d.logger, TL_ERROR_IO, name + ": " + why);
+    } catch (const std::bad_alloc &) {
+        r = report(d.logger, TL_ERROR_OUT_OF_MEMORY, name + ": out of memory");
+    } catch (const std::exception &ex) {
+        r = report(d.logger, TL_ERROR_PARSE, name + ": " + ex.what());
+    } catch (...) {
+        r = report(d.logger, TL_ERROR_PARSE, name + ": unknown error");
+    }
+    if (bytes) a.free(bytes, a.user);
+    return r;
+}
+
+extern "C" void tl_rgba8_image_free(tl_rgba8_image *image)
+{
+    if (!image) return;
+    if (image->rgba && image->allocator.free) image->allocator.free(image->rgba, image->allocator.user);
+    *image = tl_rgba8_image{};
+}

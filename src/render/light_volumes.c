@@ -90,6 +90,7 @@ void tl__light_volumes_create(tl_renderer *r)
         gl->CreateBuffers(1, &r->ibo_volume[v]);
         gl->NamedBufferStorage(r->ibo_volume[v], (GLsizeiptr)(mesh.index_count * 4u), mesh.indices, 0);
         tl__gl_label(gl, GL_BUFFER, r->vbo_volume[v], v ? "buffer.volume.cone" : "buffer.volume.sphere");
+        tl__gl_label(gl, GL_BUFFER, r->ibo_volume[v], v ? "buffer.volume.cone.indices" : "buffer.volume.sphere.indices");
         r->volume_index_count[v] = mesh.index_count;
     }
     gl->CreateVertexArrays(TL__LIGHT_KINDS, r->vao_light);

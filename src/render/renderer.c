@@ -23,13 +23,27 @@ tl_result tl_renderer_get_plan(const tl_renderer *r, tl_frame_plan *plan)
     return TL_OK;
 }
 
+/* TL_ERROR_LIMIT when the plan's target memory is over desc.max_target_bytes. */
+static tl_result tl__plan_budget(tl_renderer *r, const tl__plan *plan)
+{
+    const tl_frame_plan *p = &plan->pub;
+    size_t need = (size_t)p->allocated_bytes_per_pixel * r->desc.width * r->desc.height;
+    if (!r->desc.max_target_bytes || need <= r->desc.max_target_bytes) return TL_OK;
+    return tl__fail(r, TL_ERROR_LIMIT,
+                    "renderer: the targets of a %ux%u frame need %zu bytes (%.1f MiB, %u B/px), over max_target_bytes "
+                    "%zu", r->desc.width, r->desc.height, need, (double)need / 1048576.0, p->allocated_bytes_per_pixel,
+                    r->desc.max_target_bytes);
+}
+
 /* Re-plans from the options, the scene's features and the application passes; compiles the new
- * plan's GL objects when it differs (never per frame). */
+ * plan's GL objects when it differs (never per frame). Planning and the budget fail before
+ * anything changes. */
 static tl_result tl__replan(tl_renderer *r)
 {
     tl__plan plan;
     tl_result res = tl__plan_build(&r->desc, &r->features, r->apps, r->app_count, &plan);
     if (res != TL_OK) return tl__fail(r, res, "renderer: planning the frame failed");
+    if ((res = tl__plan_budget(r, &plan)) != TL_OK) return res;
     int same = r->pass_count && memcmp(&plan, &r->plan, sizeof plan) == 0;
     if (!same) {
         tl__queries_drain(r); /* the ring's frames refer to the old passes */
@@ -68,6 +82,7 @@ static tl_result tl__create_objects(tl_renderer *r)
     gl->CreateVertexArrays(1, &r->vao_empty);
     tl__gl_label(gl, GL_VERTEX_ARRAY, r->vao_empty, "vao.fullscreen");
     gl->CreateSamplers(1, &r->sampler_linear);
+    tl__gl_label(gl, GL_SAMPLER, r->sampler_linear, "sampler.linear");
     gl->SamplerParameteri(r->sampler_linear, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     gl->SamplerParameteri(r->sampler_linear, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     gl->SamplerParameteri(r->sampler_linear, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
@@ -191,8 +206,12 @@ tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height)
                         "renderer: size %ux%u outside 1..%d", width, height,
                         max_size < (GLint)TL__MAX_SIZE ? max_size : (int)TL__MAX_SIZE);
     if (width == r->desc.width && height == r->desc.height) return TL_OK;
+    tl_renderer_desc old = r->desc;
     r->desc = d;
-    return tl__replan(r);
+    tl_result res = tl__replan(r);
+    /* refused before anything changed (the budget): the old size stays with the old plan */
+    if (res != TL_OK && r->plan.pub.width == old.width && r->plan.pub.height == old.height) r->desc = old;
+    return res;
 }
 
 /* ---- application passes ---------------------------------------------------------------------- */
@@ -236,7 +255,9 @@ tl_result tl_renderer_add_pass(tl_renderer *r, const tl_app_pass_desc *desc)
     a->desc.after = a->desc.before = NULL;
     a->anchor = anchor;
     a->after = desc->after != NULL;
-    return tl__replan(r);
+    res = tl__replan(r);
+    if (res != TL_OK) r->app_count--; /* not added (over the target budget, say) */
+    return res;
 }
 
 tl_result tl_renderer_remove_pass(tl_renderer *r, const char *name)

@@ -100,6 +100,9 @@ tl_result tl__lights_store(tl_renderer *r, const tl_light *lights, size_t count,
         return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for %zu lights", count);
     }
     if (count) memcpy(copy, lights, count * sizeof *copy);
+    /* negative light is clamped to none (docs/renderer-limits.md): -inf otherwise in FP16 targets */
+    for (size_t i = 0; i < count; i++)
+        for (int k = 0; k < 3; k++) copy[i].color[k] = copy[i].color[k] > 0.0f ? copy[i].color[k] : 0.0f;
     tl__lights_release(r);
     r->lights = copy;
     r->instances = inst;

@@ -22,6 +22,11 @@ double tl__thread_cpu_ms(void)
     return (double)t.tv_sec * 1e3 + (double)t.tv_nsec * 1e-6;
 }
 
+static void tl__label_queries(const GladGLContext *gl, const GLuint *q, size_t n, const char *label)
+{
+    for (size_t i = 0; i < n; i++) tl__gl_label(gl, GL_QUERY, q[i], label);
+}
+
 void tl__queries_create(tl_renderer *r)
 {
     const GladGLContext *gl = &r->gl;
@@ -33,6 +38,8 @@ void tl__queries_create(tl_renderer *r)
         tl__query_slot *q = &r->ring[s];
         if (r->timestamps) gl->CreateQueries(GL_TIMESTAMP, 2 * TL_PLAN_MAX_PASSES, &q->time[0][0]);
         gl->CreateQueries(GL_SAMPLES_PASSED, TL__PASS_MAX_QUERIES * TL_PLAN_MAX_PASSES, &q->samples[0][0]);
+        if (r->timestamps) tl__label_queries(gl, &q->time[0][0], 2 * TL_PLAN_MAX_PASSES, "query.pass_time");
+        tl__label_queries(gl, &q->samples[0][0], TL__PASS_MAX_QUERIES * TL_PLAN_MAX_PASSES, "query.pass_samples");
     }
 }
 

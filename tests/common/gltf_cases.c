@@ -281,10 +281,10 @@ int tlf_write_case(const char *dir, const char *name, char *path, size_t path_si
         /* an 8x8 mid-grey RGB JPEG, embedded in a GLB (decoded from memory) */
         uint8_t rgb[8 * 8 * 3];
         memset(rgb, 128, sizeof rgb);
-        char file[1024], err[256];
+        char file[1024];
         tlf_join(file, sizeof file, dir, "grey.jpg");
-        tl_image_desc jd = {.width = 8, .height = 8, .channels = 3, .type = TL_PIXEL_U8};
-        if (tl_image_write(file, &jd, rgb, err, sizeof err) != TL_OK) return -1;
+        tl_image_desc jd = {.width = 8, .height = 8, .channels = 3, .type = TL_PIXEL_U8, .logger = {tlf_log_stderr, NULL}};
+        if (tl_image_write(file, &jd, rgb) != TL_OK) return -1;
         tlf_doc d = {.dir = dir};
         tlf_mesh m;
         make_quad(&m, 0.0f, 0.0f, 0.0f, 1.0f);

@@ -63,9 +63,8 @@ void load_opts(loaded *l, const char *test, const char *fixture_name, const tl_g
     tl_gltf_options o = base ? *base : (tl_gltf_options){0};
     o.logger = (tl_logger){capture_fn, &l->log};
     o.allocator = (tl_allocator){count_alloc, count_free, &l->count};
-    o.error = l->error;
-    o.error_size = sizeof l->error;
     l->result = tl_scene_load_gltf(l->path, &o, &l->scene);
+    snprintf(l->error, sizeof l->error, "%s", l->log.last_error);
     TL_CHECK(l->log.multiline == 0);
     if (l->result != TL_OK) {
         TL_CHECK(l->scene == NULL);

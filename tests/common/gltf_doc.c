@@ -131,16 +131,18 @@ unsigned char *tlf_read_file(const char *path, size_t *size)
     return b.p;
 }
 
+void tlf_log_stderr(void *user, tl_log_level level, const char *message)
+{
+    (void)user;
+    if (level == TL_LOG_ERROR) fprintf(stderr, "gltf fixtures: %s\n", message);
+}
+
 int write_png(const char *dir, const char *name, uint32_t w, uint32_t h, const uint8_t *rgba)
 {
-    char path[1024], err[256];
+    char path[1024];
     tlf_join(path, sizeof path, dir, name);
-    tl_image_desc d = {.width = w, .height = h, .channels = 4, .type = TL_PIXEL_U8};
-    if (tl_image_write(path, &d, rgba, err, sizeof err) != TL_OK) {
-        fprintf(stderr, "gltf fixtures: %s\n", err);
-        return -1;
-    }
-    return 0;
+    tl_image_desc d = {.width = w, .height = h, .channels = 4, .type = TL_PIXEL_U8, .logger = {tlf_log_stderr, NULL}};
+    return tl_image_write(path, &d, rgba) == TL_OK ? 0 : -1;
 }
 
 /* ---- the document ---------------------------------------------------------------------------- */

@@ -8,6 +8,7 @@
 #include <stdint.h>
 
 #include "gltf_fixtures.h"
+#include "thinlight/base.h"
 
 /* ---- growable bytes (gltf_doc.c) ------------------------------------------------------------ */
 
@@ -21,6 +22,8 @@ void buf_printf(tlf_buf *b, const char *fmt, ...);
 const char *buf_str(tlf_buf *b);
 void buf_free(tlf_buf *b);
 
+/* A tl_logger function: error lines on stderr ("gltf fixtures: ..."). */
+void tlf_log_stderr(void *user, tl_log_level level, const char *message);
 int write_png(const char *dir, const char *name, uint32_t w, uint32_t h, const uint8_t *rgba);
 
 /* ---- the document (gltf_doc.c) -------------------------------------------------------------- */

@@ -27,5 +27,7 @@ int ensure_context(void)
     if (g_ctx) return 1;
     if (tl_test_context_create(64, 64, &g_ctx) != TL_OK) return 0; /* the reason is printed */
     atexit(destroy_context);
+    if (!tl_test_gl_debug_install(g_ctx)) /* every context the tests use has it (GL 4.3 core) */
+        fprintf(stderr, "warning: no KHR_debug: GL errors are seen only at the end of frames\n");
     return 1;
 }

@@ -512,11 +512,12 @@ TL_TEST(gltf_allocator_counting)
         /* Fail the k-th allocation for every k: out of memory, nothing leaked. */
         for (size_t k = 1; k <= total; k++) {
             counter cnt = {.fail_at = k};
-            char error[512] = "";
-            tl_gltf_options o = {.allocator = {count_alloc, count_free, &cnt}, .error = error, .error_size = sizeof error};
+            capture log = {0};
+            tl_gltf_options o = {.allocator = {count_alloc, count_free, &cnt}, .logger = {capture_fn, &log}};
             tl_scene *s = (tl_scene *)&cnt; /* must be reset to NULL */
             tl_result r = tl_scene_load_gltf(l.path, &o, &s);
-            if (r != TL_ERROR_OUT_OF_MEMORY) fprintf(stderr, "%s: k = %zu: %s (%s)\n", cases[c], k, tl_result_string(r), error);
+            if (r != TL_ERROR_OUT_OF_MEMORY)
+                fprintf(stderr, "%s: k = %zu: %s (%s)\n", cases[c], k, tl_result_string(r), log.last_error);
             TL_CHECK(r == TL_ERROR_OUT_OF_MEMORY);
             TL_CHECK(s == NULL);
             TL_CHECK(cnt.live == 0);

@@ -1,0 +1,223 @@
+/* Outputs are never half-written: thinlight-render is killed (SIGKILL) in the middle of an EXR
+ * dump (--dump-targets at 768x768), at several moments, over files from an earlier run. Every
+ * output name must then hold either its old content or the whole new file (byte for byte what an
+ * uninterrupted run writes, the EXR capDate aside), never a truncated one. Temporary files of the
+ * killed process may stay behind; they have their own names (PATH.tmpPID.exr). */
+#define _POSIX_C_SOURCE 200809L
+
+#include <dirent.h>
+#include <errno.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <stdint.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "gltf_hostile.h"
+#include "tl_test.h"
+
+#ifndef TL_RENDER_TOOL
+#define TL_RENDER_TOOL "thinlight-render"
+#endif
+#ifndef TL_OUTPUTS_TEST_DIR
+#define TL_OUTPUTS_TEST_DIR "outputs_work"
+#endif
+
+#define SIZE_ARG "768x768"
+static const char OLD[] = "OLD CONTENT\n";
+static const char *const NAMES[] = {"out.exr",          "targets/depth.exr",          "targets/rt0_normal_gloss.exr",
+                                    "targets/hdr.exr",  "targets/light_diffuse.exr",  "targets/light_specular.exr",
+                                    "targets/ldr.exr",  "targets/output.exr"};
+#define NAME_COUNT (sizeof NAMES / sizeof NAMES[0])
+
+static unsigned char *read_all(const char *path, size_t *n)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    unsigned char *b = NULL;
+    size_t cap = 0, len = 0, got;
+    do {
+        if (len == cap) {
+            unsigned char *bigger = realloc(b, cap = cap ? 2 * cap : 65536);
+            if (!bigger) break;
+            b = bigger;
+        }
+        got = fread(b + len, 1, cap - len, f);
+        len += got;
+    } while (got > 0);
+    fclose(f);
+    *n = len;
+    return b;
+}
+
+/* The EXR header's capDate (the time of writing) is the one part two runs do not share. */
+static void mask_date(unsigned char *b, size_t n)
+{
+    for (size_t i = 0; i + 38 <= n && i < 4096; i++)
+        if (!memcmp(b + i, "capDate\0string\0", 15)) memset(b + i + 19, 0, 19);
+}
+
+static int same_file(const char *a, const char *b)
+{
+    size_t na = 0, nb = 0;
+    unsigned char *x = read_all(a, &na), *y = read_all(b, &nb);
+    int same = x && y && na == nb;
+    if (same) {
+        mask_date(x, na);
+        mask_date(y, nb);
+        same = !memcmp(x, y, na);
+    }
+    free(x);
+    free(y);
+    return same;
+}
+
+static pid_t spawn(const char *dir)
+{
+    char out[1100], targets[1100];
+    snprintf(out, sizeof out, "%s/out.exr", dir);
+    snprintf(targets, sizeof targets, "%s/targets", dir);
+    pid_t pid = fork();
+    if (pid == 0) {
+        int null = open("/dev/null", O_WRONLY);
+        if (null >= 0) {
+            dup2(null, 1);
+            dup2(null, 2);
+        }
+        execl(TL_RENDER_TOOL, TL_RENDER_TOOL, "default", "--size", SIZE_ARG, "--lights", "8", "-o", out,
+              "--dump-targets", targets, (char *)NULL);
+        _exit(127);
+    }
+    return pid;
+}
+
+/* Distinct files seen being written so far (appended to `seen`): temporary names in DIR and
+ * DIR/targets, and output names whose content is no longer the old one (a writer that wrote in
+ * place would be caught there, mid-write). */
+static int scan_temps(const char *dir, char seen[][256], int count)
+{
+    for (size_t i = 0; i < NAME_COUNT; i++) {
+        char path[1200];
+        struct stat st;
+        snprintf(path, sizeof path, "%s/%s", dir, NAMES[i]);
+        if (stat(path, &st) != 0 || st.st_size == (off_t)(sizeof OLD - 1)) continue;
+        int known = 0;
+        for (int k = 0; k < count; k++) known |= !strcmp(seen[k], NAMES[i]);
+        if (!known && count < 64) snprintf(seen[count++], 256, "%s", NAMES[i]);
+    }
+    char sub[2][1100];
+    snprintf(sub[0], sizeof sub[0], "%s", dir);
+    snprintf(sub[1], sizeof sub[1], "%s/targets", dir);
+    for (int s = 0; s < 2; s++) {
+        DIR *d = opendir(sub[s]);
+        struct dirent *e;
+        while (d && (e = readdir(d)) != NULL) {
+            if (!strstr(e->d_name, ".tmp")) continue;
+            int known = 0;
+            for (int i = 0; i < count; i++) known |= !strcmp(seen[i], e->d_name);
+            if (!known && count < 64) snprintf(seen[count++], 256, "%s", e->d_name);
+        }
+        if (d) closedir(d);
+    }
+    return count;
+}
+
+/* Old content under every output name, as an earlier run would have left. */
+static void prepare(const char *dir)
+{
+    char path[1200];
+    tlh_rmtree(dir);
+    snprintf(path, sizeof path, "%s/targets", dir);
+    TL_CHECK(tlh_mkdirs(path) == 0);
+    for (size_t i = 0; i < NAME_COUNT; i++) {
+        snprintf(path, sizeof path, "%s/%s", dir, NAMES[i]);
+        TL_CHECK(tlh_write(path, OLD, sizeof OLD - 1) == 0);
+    }
+}
+
+/* Every output is its old content or the reference's, never anything else. Returns how many
+ * are new. */
+static int check_outputs(const char *dir, const char *ref)
+{
+    int fresh = 0;
+    for (size_t i = 0; i < NAME_COUNT; i++) {
+        char path[1200], want[1200];
+        snprintf(path, sizeof path, "%s/%s", dir, NAMES[i]);
+        snprintf(want, sizeof want, "%s/%s", ref, NAMES[i]);
+        size_t n = 0;
+        unsigned char *b = read_all(path, &n);
+        int old = b && n == sizeof OLD - 1 && !memcmp(b, OLD, n);
+        free(b);
+        int whole = !old && same_file(path, want);
+        if (!old && !whole) fprintf(stderr, "%s: neither the old content nor the whole new file (%zu bytes)\n", path, n);
+        TL_CHECK(old || whole);
+        fresh += whole;
+    }
+    return fresh;
+}
+
+static void sleep_us(long us)
+{
+    struct timespec t = {0, us * 1000};
+    nanosleep(&t, NULL);
+}
+
+/* Runs the tool and kills it once `kth` files have been seen being written; 1 when it was
+ * killed, 0 when it finished first. */
+static int run_killed(const char *dir, int kth, char *caught, size_t caught_size)
+{
+    prepare(dir);
+    pid_t pid = spawn(dir);
+    TL_CHECK(pid > 0);
+    if (pid <= 0) return 0;
+    char seen[64][256];
+    int count = 0, killed = 0, status = 0;
+    for (long waited = 0; waited < 300L * 1000 * 1000; waited += 200) {
+        count = scan_temps(dir, seen, count);
+        if (count >= kth) {
+            kill(pid, SIGKILL);
+            killed = 1;
+            snprintf(caught, caught_size, "%s", seen[count - 1]);
+            break;
+        }
+        if (waitpid(pid, &status, WNOHANG) == pid) return 0;
+        sleep_us(200);
+    }
+    waitpid(pid, &status, 0);
+    TL_CHECK(killed && WIFSIGNALED(status) && WTERMSIG(status) == SIGKILL);
+    return killed;
+}
+
+TL_TEST(outputs_killed_mid_exr_dump_leave_old_or_whole)
+{
+    char ref[512], dir[512];
+    snprintf(ref, sizeof ref, "%s/reference", TL_OUTPUTS_TEST_DIR);
+    snprintf(dir, sizeof dir, "%s/killed", TL_OUTPUTS_TEST_DIR);
+    /* the whole run, uninterrupted, over old files: every output replaced */
+    prepare(ref);
+    pid_t pid = spawn(ref);
+    int status = -1;
+    TL_CHECK(pid > 0 && waitpid(pid, &status, 0) == pid && WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    for (size_t i = 0; i < NAME_COUNT; i++) {
+        char path[1200];
+        struct stat st;
+        snprintf(path, sizeof path, "%s/%s", ref, NAMES[i]);
+        TL_CHECK(stat(path, &st) == 0 && st.st_size > 100000); /* a real EXR, not the old text */
+    }
+    /* killed while the 1st, 3rd and 6th file are being written */
+    const int moments[] = {1, 3, 6};
+    int mid_write = 0;
+    for (size_t m = 0; m < sizeof moments / sizeof moments[0]; m++) {
+        char caught[256] = "";
+        int killed = run_killed(dir, moments[m], caught, sizeof caught);
+        int fresh = check_outputs(dir, ref);
+        printf("killed while writing file %d (%s): %d of %zu outputs new, the rest old\n", moments[m], caught, fresh,
+               NAME_COUNT);
+        mid_write += killed;
+        TL_CHECK(fresh < (int)NAME_COUNT); /* it was killed before the end */
+    }
+    TL_CHECK(mid_write == 3);
+}
