@@ -13,6 +13,14 @@
 layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
+
+void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float power, inout vec3 diffuse, inout vec3 specular)
+{
+    vec2 t = tl_light_terms(int(l.color_type.w), p, n, v, power, l.position_radius.xyz, l.position_radius.w,
+                            l.direction_cos_outer.xyz, l.cos_inner.x, l.direction_cos_outer.w);
+    diffuse += l.color_type.rgb * t.x;
+    specular += l.color_type.rgb * t.y;
+}
 #endif
 
 void main()
@@ -26,23 +34,21 @@ void main()
     float power = tl_gloss_to_specular_power(s.gloss);
     vec3 diffuse = vec3(0.0), specular = vec3(0.0);
 #ifdef TL_FORWARD_TILED
-    // Forward+: the directional lights, then the pixel's tile list (every local light on overflow)
-    uvec2 h = tl_tile_headers[tl_tile_index(ivec2(gl_FragCoord.xy))];
-    bool all_local = h.x == TL_TILE_OVERFLOW;
-    uint count = u_light_counts.x + (all_local ? u_light_counts.y : h.y);
-    for (uint k = 0u; k < count; k++) {
-        uint i = k < u_light_counts.x || all_local ? k : tl_tile_entries[h.x + k - u_light_counts.x];
+    // Forward+: the directional lights, then the pixel's tile lists (every local light of a chunk
+    // whose list overflowed)
+    for (uint i = 0u; i < u_light_counts.x; i++) tl_forward_add(tl_lights[i], p, n, v, power, diffuse, specular);
+    uint tile = tl_tile_index(ivec2(gl_FragCoord.xy)), chunks = tl_tile_chunks();
+    for (uint c = 0u; c < chunks; c++) {
+        uvec2 h = tl_tile_headers[tl_tile_header_index(tile, c)];
+        uint count = tl_tile_list_size(h, c);
+        for (uint k = 0u; k < count; k++)
+            tl_forward_add(tl_lights[tl_tile_list_light(h, c, k)], p, n, v, power, diffuse, specular);
+    }
 #else
     uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
-    for (uint k = 0u; k < count; k++) {
-        uint i = tl_light_indices[first + k];
+    for (uint k = 0u; k < count; k++)
+        tl_forward_add(tl_lights[tl_light_indices[first + k]], p, n, v, power, diffuse, specular);
 #endif
-        tl_light_data l = tl_lights[i];
-        vec2 t = tl_light_terms(int(l.color_type.w), p, n, v, power, l.position_radius.xyz, l.position_radius.w,
-                                l.direction_cos_outer.xyz, l.cos_inner.x, l.direction_cos_outer.w);
-        diffuse += l.color_type.rgb * t.x;
-        specular += l.color_type.rgb * t.y;
-    }
 #ifdef TL_SPECULAR_NONE
     specular = vec3(0.0);
 #endif

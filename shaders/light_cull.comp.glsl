@@ -1,4 +1,5 @@
-// Tiled light culling (the light-cull pass): one invocation per screen tile, no shared memory
+// Tiled light culling (the light-cull pass): one invocation per screen tile and chunk of
+// TL_CULL_CHUNK local lights (tiles.glsl says why chunks), no shared memory
 // (a barrier on llvmpipe is a coroutine switch; docs/frame.md says what that cost). It finds the
 // tile's depth bounds, then keeps every local light whose range (a sphere; for spot lights also
 // the cone) meets the tile's frustum between those depths: first counting, then writing the list
@@ -44,22 +45,29 @@ tl_tile_frustum tl_tile_frustum_make(vec2 ndc0, vec2 ndc1, float zmin, float zma
     return f;
 }
 
+// The per-light tests run twice (counting, then writing): `precise` keeps the compiler from
+// contracting or reordering them differently in the two loops, so both give the same answer.
 bool tl_sphere_in_tile(tl_tile_frustum f, vec3 c, float r)
 {
-    for (int i = 0; i < 4; i++)
-        if (dot(f.planes[i], c) < -r) return false;
-    return -c.z + r >= f.zmin && -c.z - r <= f.zmax;
+    for (int i = 0; i < 4; i++) {
+        precise float d = (f.planes[i].x * c.x + f.planes[i].y * c.y) + f.planes[i].z * c.z;
+        if (d < -r) return false;
+    }
+    precise float zn = -c.z + r, zf = -c.z - r;
+    return zn >= f.zmin && zf <= f.zmax;
 }
 
 // Spot cone against the tile's bounding sphere (Wronski, "Cull that cone", 2017).
 bool tl_cone_meets_sphere(vec3 apex, vec3 dir, float range, float cos_a, vec4 s)
 {
     if (cos_a <= 0.0) return true; // wider than a half space: the range sphere decides
-    vec3 v = s.xyz - apex;
-    float len2 = dot(v, v), along = dot(v, dir);
-    float sin_a = sqrt(max(1.0 - cos_a * cos_a, 0.0));
-    float closest = cos_a * sqrt(max(len2 - along * along, 0.0)) - along * sin_a;
-    return !(closest > s.w || along > s.w + range || along < -s.w);
+    precise vec3 v = s.xyz - apex;
+    precise float len2 = (v.x * v.x + v.y * v.y) + v.z * v.z;
+    precise float along = (v.x * dir.x + v.y * dir.y) + v.z * dir.z;
+    precise float sin_a = sqrt(max(1.0 - cos_a * cos_a, 0.0));
+    precise float closest = cos_a * sqrt(max(len2 - along * along, 0.0)) - along * sin_a;
+    precise float reach = s.w + range;
+    return !(closest > s.w || along > reach || along < -s.w);
 }
 
 bool tl_light_in_tile(tl_tile_frustum f, tl_light_data l)
@@ -70,9 +78,10 @@ bool tl_light_in_tile(tl_tile_frustum f, tl_light_data l)
     // spot: the cone's bounding sphere (centred half-way along the axis), then the cone itself
     float co = max(l.direction_cos_outer.w, 0.05);
     vec3 d = l.direction_cos_outer.xyz;
-    float half_len = 0.5 * r, base = r * sqrt(1.0 - co * co) / co;
-    float br = max(sqrt(half_len * half_len + base * base), r);
-    return tl_sphere_in_tile(f, c + d * half_len, br) && tl_cone_meets_sphere(c, d, r, l.direction_cos_outer.w, f.sphere);
+    precise float half_len = 0.5 * r, base = r * sqrt(1.0 - co * co) / co;
+    precise float br = max(sqrt(half_len * half_len + base * base), r);
+    precise vec3 centre = c + d * half_len;
+    return tl_sphere_in_tile(f, centre, br) && tl_cone_meets_sphere(c, d, r, l.direction_cos_outer.w, f.sphere);
 }
 
 float tl_distance(float window_depth)
@@ -83,8 +92,9 @@ float tl_distance(float window_depth)
 void main()
 {
     uvec2 tile = gl_GlobalInvocationID.xy;
-    if (tile.x >= u_tiles.y || tile.y >= u_tiles.z) return;
-    uint index = tile.y * u_tiles.y + tile.x;
+    uint chunk = gl_GlobalInvocationID.z;
+    if (tile.x >= u_tiles.y || tile.y >= u_tiles.z || chunk >= tl_tile_chunks()) return;
+    uint index = tl_tile_header_index(tile.y * u_tiles.y + tile.x, chunk);
     ivec2 size = textureSize(u_depth, 0);
     ivec2 p0 = ivec2(tile * u_tiles.x), p1 = min(p0 + int(u_tiles.x), size);
     // depth bounds of the tile's surfaces (window depth: nearer is smaller, larger when reversed)
@@ -105,7 +115,8 @@ void main()
     }
     vec2 ndc0 = vec2(p0) * u_inv_size * 2.0 - 1.0, ndc1 = vec2(p1) * u_inv_size * 2.0 - 1.0;
     tl_tile_frustum f = tl_tile_frustum_make(ndc0, ndc1, tl_distance(nearest), tl_distance(farthest));
-    uint first = u_light_counts.x, last = u_light_counts.x + u_light_counts.y, n = 0u;
+    uint first = u_light_counts.x + chunk * uint(TL_CULL_CHUNK);
+    uint last = min(first + uint(TL_CULL_CHUNK), u_light_counts.x + u_light_counts.y), n = 0u;
     for (uint i = first; i < last; i++) n += tl_light_in_tile(f, tl_lights[i]) ? 1u : 0u;
     uint pairs = pixels * n, before = atomicAdd(tl_counters.z, pairs);
     if (before > 0xFFFFFFFFu - pairs) atomicAdd(tl_counters.w, 1u);
@@ -118,5 +129,5 @@ void main()
     uint k = offset;
     for (uint i = first; i < last && k < offset + n; i++)
         if (tl_light_in_tile(f, tl_lights[i])) tl_tile_entries[k++] = i;
-    tl_tile_headers[index] = uvec2(offset, n);
+    tl_tile_headers[index] = uvec2(offset, k - offset); /* never an entry that was not written */
 }

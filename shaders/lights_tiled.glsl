@@ -50,12 +50,11 @@ tl_tiled_result tl_tiled_shade(ivec2 px)
     float power = tl_gloss_to_specular_power(gloss);
     vec3 diffuse = vec3(0.0), specular = vec3(0.0);
     for (uint i = 0u; i < u_light_counts.x; i++) tl_tiled_add(tl_lights[i], p, n, v, power, diffuse, specular);
-    uvec2 h = tl_tile_headers[tl_tile_index(px)];
-    if (h.x != TL_TILE_OVERFLOW) {
-        for (uint k = 0u; k < h.y; k++) tl_tiled_add(tl_lights[tl_tile_entries[h.x + k]], p, n, v, power, diffuse, specular);
-    } else {
-        for (uint i = u_light_counts.x; i < u_light_counts.x + u_light_counts.y; i++)
-            tl_tiled_add(tl_lights[i], p, n, v, power, diffuse, specular);
+    uint tile = tl_tile_index(px), chunks = tl_tile_chunks();
+    for (uint c = 0u; c < chunks; c++) {
+        uvec2 h = tl_tile_headers[tl_tile_header_index(tile, c)];
+        uint count = tl_tile_list_size(h, c);
+        for (uint k = 0u; k < count; k++) tl_tiled_add(tl_lights[tl_tile_list_light(h, c, k)], p, n, v, power, diffuse, specular);
     }
     const vec3 fp16_max = vec3(65504.0);
 #ifdef TL_LIGHT_ACCUM

@@ -23,10 +23,14 @@ const uint TL_TILE_OVERFLOW = 0xFFFFFFFFu;
 #else
 #define TL_TILES_ACCESS readonly
 #endif
-// tl_counters: entries used, tiles that overflowed, pixel-light pairs (low and high 32 bits)
+// tl_counters: entries used, lists that overflowed, pixel-light pairs (low and high 32 bits).
+// The local lights are culled in chunks of TL_CULL_CHUNK (llvmpipe ends any shader invocation's
+// loops after 65535 iterations in total, Mesa's LP_MAX_TGSI_LOOP_ITERATIONS: one invocation per
+// tile testing every light twice would lose lights beyond about 32,000); each chunk has its own
+// list per tile, and a pixel reads its tile's lists in chunk order, so lights keep their order.
 layout(std430, binding = TL_SSBO_TILE_HEADERS) TL_TILES_ACCESS buffer tl_tile_header_buffer {
     uvec4 tl_counters;
-    uvec2 tl_tile_headers[]; // (first entry, count) per tile, row by row
+    uvec2 tl_tile_headers[]; // (first entry, count) per chunk and tile: chunk by chunk, row by row
 };
 layout(std430, binding = TL_SSBO_TILE_ENTRIES) TL_TILES_ACCESS buffer tl_tile_entry_buffer { uint tl_tile_entries[]; };
 
@@ -34,6 +38,22 @@ uint tl_tile_index(ivec2 px)
 {
     uvec2 t = uvec2(px) / u_tiles.x;
     return t.y * u_tiles.y + t.x;
+}
+
+uint tl_tile_chunks() { return max((u_light_counts.y + uint(TL_CULL_CHUNK) - 1u) / uint(TL_CULL_CHUNK), 1u); }
+
+uint tl_tile_header_index(uint tile, uint chunk) { return chunk * u_tiles.y * u_tiles.z + tile; }
+
+// The lights a list holds: its count, or on overflow every local light of its chunk.
+uint tl_tile_list_size(uvec2 h, uint chunk)
+{
+    return h.x != TL_TILE_OVERFLOW ? h.y : min(uint(TL_CULL_CHUNK), u_light_counts.y - chunk * uint(TL_CULL_CHUNK));
+}
+
+// The k-th light of a list (an index into tl_lights).
+uint tl_tile_list_light(uvec2 h, uint chunk, uint k)
+{
+    return h.x != TL_TILE_OVERFLOW ? tl_tile_entries[h.x + k] : u_light_counts.x + chunk * uint(TL_CULL_CHUNK) + k;
 }
 
 #endif

@@ -1,4 +1,5 @@
-/* Fixed binding points of every program (GLSL `layout(binding = N)`): set once in the shaders, so
+/* Fixed binding points of every program (GLSL `layout(binding = N)`), and the constants C and GLSL
+ * share (TL_CULL_CHUNK): set once in the shaders, so
  * no frame looks up or sets a uniform location or a sampler unit. The same list becomes #defines
  * in front of every shader (programs.c), so C and GLSL cannot disagree. A target sampled by a
  * pass is bound to texture unit TL_UNIT_<TARGET> = its tl_target_id (targets.c). */
@@ -20,7 +21,8 @@
     X(UNIT_NORMAL_TEXTURE, 17)                                                                    \
     X(UNIT_MR_TEXTURE, 18)                                                                        \
     X(UNIT_EMISSIVE_TEXTURE, 19)                                                                  \
-    X(UNIT_OCCLUSION_TEXTURE, 20)
+    X(UNIT_OCCLUSION_TEXTURE, 20)                                                                 \
+    X(CULL_CHUNK, 16384)         /* local lights one light-cull invocation tests (tiles.glsl) */
 
 enum {
 #define TL__BINDING_ENUM(name, value) TL__##name = value,

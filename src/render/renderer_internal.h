@@ -119,6 +119,8 @@ typedef struct tl__tiles {
     size_t capacity;            /* entries the buffer holds */
     size_t needed;              /* most entries a finished frame used (read back) */
     uint32_t size, x, y;        /* tile side in pixels, tiles across and down */
+    uint32_t chunks;            /* light chunks (TL__CULL_CHUNK) the headers hold lists for */
+    uint32_t frame_chunks;      /* chunks this frame's visible local lights make */
     GLuint readback;
     const uint32_t *readback_map;  /* TL__QUERY_RING x 4 counters */
     GLsync fences[TL__QUERY_RING];

@@ -7,7 +7,7 @@
 
 #include "renderer_internal.h"
 
-#define TL__TILE_HEADER_BYTES(tiles) (16u + 8u * (size_t)(tiles))
+#define TL__TILE_HEADER_BYTES(lists) (16u + 8u * (size_t)(lists))
 
 static size_t tl__tile_count(const tl__tiles *t) { return (size_t)t->x * t->y; }
 
@@ -35,6 +35,20 @@ static tl_result tl__tiles_entries(tl_renderer *r, size_t capacity)
     return TL_OK;
 }
 
+/* The headers: counters, then (first entry, count) per tile for each of `chunks` light chunks. */
+static tl_result tl__tiles_headers(tl_renderer *r, uint32_t chunks)
+{
+    const GladGLContext *gl = &r->gl;
+    tl__tiles *t = &r->tiles;
+    if (t->headers) gl->DeleteBuffers(1, &t->headers); /* queued frames keep what they read */
+    gl->CreateBuffers(1, &t->headers);
+    gl->NamedBufferStorage(t->headers, (GLsizeiptr)TL__TILE_HEADER_BYTES(tl__tile_count(t) * chunks), NULL,
+                           GL_DYNAMIC_STORAGE_BIT);
+    tl__gl_label(gl, GL_BUFFER, t->headers, "buffer.tiles.headers");
+    t->chunks = chunks;
+    return TL_OK;
+}
+
 /* The buffers for the plan's tiles (graph.c calls this when the plan has light lists). */
 tl_result tl__tiles_create(tl_renderer *r, uint32_t size, uint32_t x, uint32_t y, size_t capacity)
 {
@@ -44,9 +58,7 @@ tl_result tl__tiles_create(tl_renderer *r, uint32_t size, uint32_t x, uint32_t y
     t->size = size;
     t->x = x;
     t->y = y;
-    gl->CreateBuffers(1, &t->headers);
-    gl->NamedBufferStorage(t->headers, (GLsizeiptr)TL__TILE_HEADER_BYTES(tl__tile_count(t)), NULL, GL_DYNAMIC_STORAGE_BIT);
-    tl__gl_label(gl, GL_BUFFER, t->headers, "buffer.tiles.headers");
+    tl__tiles_headers(r, 1);
     const GLbitfield flags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
     gl->CreateBuffers(1, &t->readback);
     gl->NamedBufferStorage(t->readback, TL__QUERY_RING * 16, NULL, flags);
@@ -77,6 +89,9 @@ static tl_result tl__tiles_grow(tl_renderer *r)
         uint32_t c[4];
         if (tl__tiles_counters(r, f, 0, c) && c[0] > t->needed) t->needed = c[0];
     }
+    size_t local = r->view_light_count - r->view_dir_count;
+    t->frame_chunks = local > TL__CULL_CHUNK ? (uint32_t)((local + TL__CULL_CHUNK - 1) / TL__CULL_CHUNK) : 1u;
+    if (t->frame_chunks > t->chunks) tl__tiles_headers(r, t->frame_chunks);
     if (t->needed <= t->capacity) return TL_OK;
     size_t cap = t->capacity;
     while (cap < t->needed + t->needed / 2) cap *= 2;
@@ -108,7 +123,7 @@ void tl__tiles_cull(tl_renderer *r, const tl__pass_ctx *ctx)
     gl->ClearNamedBufferSubData(t->headers, GL_R32UI, 0, 16, GL_RED_INTEGER, GL_UNSIGNED_INT, NULL);
     gl->MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     tl__state_program(gl, &r->state, ctx->cp->programs[0]);
-    gl->DispatchCompute((t->x + 7) / 8, (t->y + 7) / 8, 1);
+    gl->DispatchCompute((t->x + 7) / 8, (t->y + 7) / 8, t->frame_chunks);
     gl->MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     unsigned s = (unsigned)(r->frame_index % TL__QUERY_RING);
     gl->CopyNamedBufferSubData(t->headers, t->readback, 0, (GLintptr)(16 * s), 16);

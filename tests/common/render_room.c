@@ -78,13 +78,20 @@ void build_room(test_scene *t)
     t->s.camera = (tl_camera){{0, 3, 8}, {0, 1.5f, 0}, {0, 1, 0}, 1.0f, 0.1f, 100.0f};
 }
 
-tl_renderer *make_renderer(uint32_t w, uint32_t h, tl_depth_format depth, int fullscreen, tl_fxaa_preset fxaa)
+tl_renderer *make_renderer_desc(tl_renderer_desc d)
 {
-    tl_renderer_desc d = {.width = w, .height = h, .depth_format = depth, .fullscreen_lights = fullscreen,
-                          .fxaa = fxaa, .keep_targets = TL_TARGETS_ALL, .synchronous_stats = 1,
-                          .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
-                          .logger = tl_test_logger};
+    d.keep_targets = TL_TARGETS_ALL;
+    d.synchronous_stats = 1;
+    d.get_proc_address = tl_context_proc_loader;
+    d.get_proc_address_user = g_ctx;
+    d.logger = tl_test_logger;
     tl_renderer *r = NULL;
     tl_renderer_create(&d, &r);
     return r;
+}
+
+tl_renderer *make_renderer(uint32_t w, uint32_t h, tl_depth_format depth, int fullscreen, tl_fxaa_preset fxaa)
+{
+    return make_renderer_desc((tl_renderer_desc){.width = w, .height = h, .depth_format = depth,
+                                                 .fullscreen_lights = fullscreen, .fxaa = fxaa});
 }

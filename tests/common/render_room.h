@@ -22,6 +22,8 @@ typedef struct test_scene {
 void build_room(test_scene *t);
 
 /* A renderer on g_ctx (ensure_context() first); NULL after a message on stderr. */
+/* The same for any descriptor: every target kept readable, synchronous statistics, the test logger. */
+tl_renderer *make_renderer_desc(tl_renderer_desc d);
 tl_renderer *make_renderer(uint32_t w, uint32_t h, tl_depth_format depth, int fullscreen, tl_fxaa_preset fxaa);
 
 #endif
