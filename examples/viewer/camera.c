@@ -21,6 +21,8 @@ void vw_camera_from_scene(vw_camera *c, const tl_camera *s, float extent)
     float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     if (!(len > 1e-6f)) { d[0] = 0; d[1] = 0; d[2] = -1; len = 1; }
     c->mode = VW_CAMERA_ORBIT;
+    c->scene = *s;
+    c->moved = 0;
     c->distance = len;
     c->pitch = vw_clampf(asinf(vw_clampf(d[1] / len, -1, 1)), -vw_pitch_limit, vw_pitch_limit);
     c->yaw = atan2f(d[0], -d[2]);
@@ -33,6 +35,10 @@ void vw_camera_from_scene(vw_camera *c, const tl_camera *s, float extent)
 
 void vw_camera_get(vw_camera *c, tl_camera *out)
 {
+    if (!c->moved) { /* bit for bit the scene's view, as thinlight-render renders it */
+        *out = c->scene;
+        return;
+    }
     float d[3];
     vw_direction(c, d);
     if (c->mode == VW_CAMERA_ORBIT)
@@ -50,18 +56,21 @@ void vw_camera_get(vw_camera *c, tl_camera *out)
 /* Dragging right turns the view around the centre to the right; up lifts the eye. */
 void vw_camera_orbit(vw_camera *c, float dx, float dy)
 {
+    c->moved = 1;
     c->yaw -= dx * 0.008f;
     c->pitch = vw_clampf(c->pitch - dy * 0.008f, -vw_pitch_limit, vw_pitch_limit);
 }
 
 void vw_camera_look(vw_camera *c, float dx, float dy)
 {
+    c->moved = 1;
     c->yaw += dx * 0.004f;
     c->pitch = vw_clampf(c->pitch - dy * 0.004f, -vw_pitch_limit, vw_pitch_limit);
 }
 
 void vw_camera_zoom(vw_camera *c, float steps)
 {
+    c->moved = 1;
     if (c->mode == VW_CAMERA_ORBIT) {
         c->distance = vw_clampf(c->distance * powf(0.85f, steps), 0.05f, 1e5f);
         return;
@@ -74,6 +83,7 @@ void vw_camera_zoom(vw_camera *c, float steps)
 /* move: right, up, forward in [-1, 1]. */
 void vw_camera_fly(vw_camera *c, const float move[3], float dt)
 {
+    c->moved = 1;
     float d[3], right[3];
     vw_direction(c, d);
     float h = sqrtf(d[0] * d[0] + d[2] * d[2]);

@@ -43,6 +43,8 @@ typedef struct vw_camera {
     float eye[3];      /* fly position (and the orbit's eye after vw_camera_get) */
     float speed;       /* fly speed, metres per second */
     float fov_y, near_z, far_z;
+    tl_camera scene;   /* the scene's camera, given as it is until the camera moves */
+    int moved;
 } vw_camera;
 
 /** Per-pass GPU times, smoothed (exponential moving average). */
