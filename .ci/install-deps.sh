@@ -3,7 +3,8 @@
 # Run as root (or with sudo available). Safe to run again: it does nothing when all are there.
 set -eu
 PACKAGES="cmake make gcc g++ pkg-config python3 python3-glad libosmesa6-dev libegl-dev libegl-mesa0 libgl-dev libglfw3-dev \
-libtinygltf-dev nlohmann-json3-dev libopenimageio-dev gnuplot-nox glslang-tools doxygen"
+libtinygltf-dev nlohmann-json3-dev libopenimageio-dev gnuplot-nox glslang-tools doxygen \
+libimgui-dev xvfb xauth"
 missing=""
 for p in $PACKAGES; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed"; then

@@ -180,6 +180,9 @@ static void vw_ui_labels(vw_app *app, ImDrawList *dl, ImVec2 size)
         snprintf(a, sizeof a, "0");
         snprintf(b, sizeof b, "%.1f / 255 (x%.0f)", 255.0 / app->diff_scale, app->diff_scale);
         vw_ui_legend(dl, size, a, b);
+    } else if (app->view == VW_VIEW_DEPTH && !app->view_note[0]) {
+        snprintf(a, sizeof a, "white %.3g m ... dark %.3g m (log)", app->depth_range[0], app->depth_range[1]);
+        dl->AddText(ImVec2(16, size.y - 24), IM_COL32_WHITE, a);
     } else if (app->view == VW_VIEW_TILE_LIGHTS && !app->view_note[0]) {
         snprintf(b, sizeof b, "%u lights (magenta: overflow)", app->tile_max);
         vw_ui_legend(dl, size, "0", b);

@@ -90,6 +90,7 @@ typedef struct vw_app {
     tl_frame_plan plan;
     char *plan_text;
     size_t plan_text_size;
+    float depth_range[2];            /* the depth view's scale: nearest and farthest covered pixel */
     uint32_t tile_max;               /* the tile view's scale: most lights in one tile */
     char status[160];                /* a line for the panel (the last screenshot, an error) */
     char view_note[96];              /* why a view is empty in this mode */

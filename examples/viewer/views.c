@@ -174,19 +174,25 @@ static int vw_view_albedo(vw_app *app, tl_renderer *r, const tl_camera *cam, uin
     return 0;
 }
 
-/* Log scale from the near plane (white) to the farthest covered pixel (black). */
+/* Log scale from the nearest covered pixel (white) to the farthest (black). */
 static int vw_view_depth(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
 {
+    (void)cam;
     const float *d = vw_read(app, r, TL_TARGET_DEPTH, 1);
     if (!d) return vw_unavailable(app, "no depth target");
     size_t n = vw_pixels(app);
-    float near_z = cam->near_z > 0 ? cam->near_z : 0.1f, far_z = near_z * 1.0001f;
+    float near_z = 1e30f, far_z = 0;
     for (size_t i = 0; i < n; i++)
-        if (!vw_is_background(app, d, i) && d[4 * i + 1] > far_z) far_z = d[4 * i + 1];
-    float scale = 1.0f / logf(far_z / near_z);
+        if (!vw_is_background(app, d, i) && d[4 * i + 1] > 0) {
+            if (d[4 * i + 1] < near_z) near_z = d[4 * i + 1];
+            if (d[4 * i + 1] > far_z) far_z = d[4 * i + 1];
+        }
+    app->depth_range[0] = near_z;
+    app->depth_range[1] = far_z;
+    float scale = far_z > near_z * 1.0001f ? 1.0f / logf(far_z / near_z) : 0.0f;
     for (size_t i = 0; i < n; i++) {
         float z = d[4 * i + 1] > near_z ? d[4 * i + 1] : near_z;
-        float v = vw_is_background(app, d, i) ? 0.0f : 1.0f - logf(z / near_z) * scale;
+        float v = vw_is_background(app, d, i) ? 0.0f : 1.0f - 0.9f * logf(z / near_z) * scale;
         vw_put(out + 4 * i, v, v, v);
     }
     return 0;
@@ -360,7 +366,7 @@ static const vw_view_def vw_view_table[VW_VIEW_COUNT] = {
     [VW_VIEW_LUMA] = {"luma", "RT1 luma (thin-deferred)", vw_view_luma},
     [VW_VIEW_CHROMA] = {"chroma", "RT1 raw chroma: Cb on even pixels, Cr on odd (thin-deferred)", vw_view_chroma},
     [VW_VIEW_ALBEDO] = {"albedo", "albedo, missing chroma rebuilt (thin-deferred, fat)", vw_view_albedo},
-    [VW_VIEW_DEPTH] = {"depth", "linear depth, log scale: white near, black farthest", vw_view_depth},
+    [VW_VIEW_DEPTH] = {"depth", "linear depth, log scale: white nearest, dark grey farthest, black background", vw_view_depth},
     [VW_VIEW_POSITION] = {"position", "world position from depth over the scene bounds", vw_view_position},
     [VW_VIEW_LIGHT_DIFFUSE] = {"light-diffuse", "light buffer diffuse (thin-lpp), x/(1+x)", vw_view_light_diffuse},
     [VW_VIEW_LIGHT_SPECULAR] = {"light-specular", "light buffer specular (thin-lpp), x/(1+x)", vw_view_light_specular},
