@@ -168,6 +168,10 @@ static int vw_frame(vw_run *run, uint32_t frame, float dt)
     if (run->print_pending) vw_print_targets(run);
     run->print_pending = 0;
     glViewport(0, 0, (GLsizei)app->width, (GLsizei)app->height);
+    if (!direct) { /* the image covers the window, but nothing of the last frame may show through */
+        glClearColor(0, 0, 0, 1);
+        glClear(GL_COLOR_BUFFER_BIT);
+    }
     vw_ui_frame(app, direct ? 0 : run->texture);
     vw_ui_render();
     int bad = 0;

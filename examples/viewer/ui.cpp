@@ -127,8 +127,10 @@ static void vw_ui_timings(const vw_app *app)
     const tl_frame_plan *p = &app->plan;
     ImGui::Text("bytes/pixel: %u sum, %u peak live, %u allocated", p->bytes_per_pixel, p->peak_live_bytes_per_pixel,
                 p->allocated_bytes_per_pixel);
-    ImGui::Text("G-buffer + light buffer: %u B/px; covered pixels %llu", p->gbuffer_bytes_per_pixel,
-                static_cast<unsigned long long>(t->covered));
+    ImGui::Text("G-buffer + light buffer: %u B/px", p->gbuffer_bytes_per_pixel);
+    double px = static_cast<double>(app->width) * app->height;
+    ImGui::Text("geometry pass: %llu fragments (%.2f / pixel)", static_cast<unsigned long long>(t->covered),
+                px > 0 ? static_cast<double>(t->covered) / px : 0.0);
     if (app->kept) ImGui::TextDisabled("(debug views keep every target: no memory sharing)");
 }
 
@@ -137,7 +139,7 @@ static void vw_ui_panel(vw_app *app)
     ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowSize(ImVec2(430, 0), ImGuiCond_FirstUseEver);
     ImGui::Begin("thinlight");
-    ImGui::Text("%s, %ux%u, %.0f fps", app->scene_path ? app->scene_path : "crypt", app->width, app->height,
+    ImGui::Text("%s, %ux%u, %.1f fps", app->scene_path ? app->scene_path : "crypt", app->width, app->height,
                 ImGui::GetIO().Framerate);
     ImGui::TextDisabled("camera: %s (F toggles, C resets)", app->cam.mode == VW_CAMERA_FLY ? "fly" : "orbit");
     if (ImGui::CollapsingHeader("Renderer", ImGuiTreeNodeFlags_DefaultOpen)) vw_ui_settings(app);
@@ -174,7 +176,8 @@ static void vw_ui_labels(vw_app *app, ImDrawList *dl, ImVec2 size)
             dl->AddText(ImVec2((v % 4) * size.x / 4 + 4, (v / 4) * size.y / 4 + 2), IM_COL32_WHITE,
                         vw_view_name(static_cast<vw_view>(v)));
     } else if (app->split_on) {
-        dl->AddText(ImVec2(8, size.y - 24), IM_COL32_WHITE, tl_render_mode_name(app->desc.mode));
+        const char *left = tl_render_mode_name(app->desc.mode); // beside the dividing line
+        dl->AddText(ImVec2(size.x / 2 - 8 - ImGui::CalcTextSize(left).x, size.y - 24), IM_COL32_WHITE, left);
         dl->AddText(ImVec2(size.x / 2 + 8, size.y - 24), IM_COL32_WHITE, tl_render_mode_name(app->split_mode));
     } else if (app->view == VW_VIEW_DIFF_FAT) {
         snprintf(a, sizeof a, "0");

@@ -406,7 +406,7 @@ static void vw_build_one(vw_app *app, vw_view v, const tl_camera *cam, uint8_t *
 static void vw_build_grid(vw_app *app, const tl_camera *cam)
 {
     const uint32_t cols = 4, rows = 4, cw = app->width / cols, ch = app->height / rows;
-    memset(app->image, 0, vw_pixels(app) * 4);
+    for (size_t i = 0, n = vw_pixels(app); i < n; i++) memcpy(app->image + 4 * i, "\0\0\0\377", 4); /* opaque black */
     for (int v = 0; v < VW_VIEW_COUNT; v++) {
         uint8_t *full = app->scratch8[0];
         vw_build_one(app, (vw_view)v, cam, full);

@@ -109,6 +109,14 @@ static size_t colours(const image *c)
     return n;
 }
 
+/* Screenshots are opaque: nothing of an earlier frame may show through. */
+static int opaque(const image *im)
+{
+    for (size_t i = 0; im->px && i < (size_t)im->w * im->h; i++)
+        if (im->px[4 * i + 3] != 255) return 0;
+    return im->px != NULL;
+}
+
 static tl_image_error compare(const image *a, const image *b)
 {
     tl_image_error e;
@@ -151,7 +159,7 @@ static void check_grid(int m)
     snprintf(png, sizeof png, "grid_%s.png", modes[m]);
     TL_CHECK(viewer(args, png) == 0);
     image g = load(png), c[14];
-    TL_CHECK(g.px && g.w == GRID_W && g.h == GRID_H);
+    TL_CHECK(g.px && g.w == GRID_W && g.h == GRID_H && opaque(&g));
     if (!g.px) return;
     for (int v = 0; v < 14; v++) {
         c[v] = cell(&g, v);
@@ -214,7 +222,7 @@ TL_TEST(viewer_each_view_full_size_matches_its_thumbnail)
         snprintf(png, sizeof png, "view_%s.png", views[v]);
         TL_CHECK(viewer(args, png) == 0);
         image full = load(png);
-        TL_CHECK(full.px && colours(&full) > 1 && !is_placeholder(&full));
+        TL_CHECK(full.px && colours(&full) > 1 && !is_placeholder(&full) && opaque(&full));
         double e = full.px && grids[m].px ? thumbnail_error(&full, &grids[m], v) : 1e9;
         printf("%-14s (%s): thumbnail max difference %.0f\n", views[v], modes[m], e);
         TL_CHECK(e == 0.0);
