@@ -72,7 +72,6 @@ static tl_renderer *vw_make(vw_app *app, tl_render_mode mode, uint32_t keep)
     d.height = app->height;
     d.keep_targets = keep;
     d.logger = vw_logger(app);
-    if (mode == TL_MODE_FAT) d.rt0 = TL_RT0_DEFAULT; /* settings fat has no use for */
     tl_renderer *r = NULL;
     if (tl_renderer_create(&d, &r) != TL_OK) return NULL;
     if (tl_renderer_set_scene(r, app->scene) != TL_OK) {

@@ -100,11 +100,8 @@ static void vw_ui_views(vw_app *app)
     if (ImGui::Checkbox("split: right half in", &split)) { app->split_on = split; app->grid = 0; c = true; }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(120);
-    if (vw_combo("##split", &app->split_mode, modes, TL_MODE_THIN_LPP, 4) && app->split_on) {
-        app->split_on = 0; // a new right-hand renderer
-        vw_update_view(app);
-        app->split_on = 1;
-    }
+    if (vw_combo("##split", &app->split_mode, modes, TL_MODE_THIN_LPP, 4) && app->split_on)
+        app->rebuild = 1; // a new right-hand renderer
     ImGui::SliderFloat("difference scale", &app->diff_scale, 1.0f, 64.0f, "x%.0f", ImGuiSliderFlags_Logarithmic);
     if (c) vw_update_view(app);
 }
