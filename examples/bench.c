@@ -10,8 +10,9 @@
 
 static const char usage_text[] =
     "usage: " BENCH_TOOL " [--scene default|FILE.gltf] [--size WxH[,WxH...]] [--lights N,N,...]\n"
-    "                       [--modes MODE,...] [--frames N] [--warmup N] [--json OUT.json] [--out DIR]\n"
-    "                       [--quick] [--doc FILE.md] [--seed S] [--no-plot] [--context C] [--device N]\n"
+    "                       [--modes MODE,...] [--strategies S,...] [--light-formats F,...]\n"
+    "                       [--frames N] [--warmup N] [--json OUT.json] [--out DIR] [--quick]\n"
+    "                       [--doc FILE.md] [--seed S] [--no-plot] [--context C] [--device N]\n"
     "                       [--list-devices] [--help]\n"
     "\n"
     "Renders the same frames in every mode and compares what they store (bytes per pixel of the\n"
@@ -21,12 +22,18 @@ static const char usage_text[] =
     "  --scene S        'default' (the built-in crypt, default) or a glTF file\n"
     "  --size LIST      image sizes, e.g. 1280x720,1920x1080 (default 1280x720; 1..16384 per side)\n"
     "  --lights LIST    local lights per frame, point + spot with 1 in 8 a spot light, plus the scene's\n"
-    "                   directional light (default 8,16,32,64,128,256,512,1024; 0..4096)\n"
+    "                   directional light (default 8,16,32,64,128,256,512,1024; 0..65536)\n"
     "  --modes LIST     thin-lpp, thin-deferred, fat, forward (default all four); fat is rendered\n"
     "                   as the error reference even when not listed\n"
     "  --frames N       timed frames per measurement (default 7; medians and p90 over them)\n"
     "  --warmup N       untimed frames before them (default 2)\n"
-    "  --json FILE      write one record per (mode, lights, size)\n"
+    "  --strategies LIST light strategies, each mode rendered with each: volumes, tiled, auto\n"
+    "                   (default volumes,tiled). forward with volumes is per-object light lists\n"
+    "                   (\"forward\"), with tiled Forward+ (\"forward+\"); fat of the same strategy\n"
+    "                   is each one's error reference\n"
+    "  --light-formats LIST rgba16f (always) and r11g11b10f: thin-lpp/tiled also with the\n"
+    "                   R11G11B10F light buffer (default rgba16f,r11g11b10f)\n"
+    "  --json FILE      write one record per (mode, strategy, lights, size)\n"
     "  --out DIR        write final images, heat maps of |mode - fat| (at the largest light count)\n"
     "                   and the plots (gnuplot) into DIR (PNG: needs a build with THINLIGHT_WITH_IO)\n"
     "  --quick          a short sweep: 640x360, lights 8,64,256, 3 frames after 1 warm-up\n"
@@ -160,11 +167,42 @@ static int bench__parse_modes(const char *arg, bench_options *o)
     return 0;
 }
 
+static int bench__parse_strategies(const char *arg, bench_options *o)
+{
+    char buf[128], *items[2 * BENCH_STRATEGIES];
+    size_t n = bench__list("--strategies", "strategies", arg, buf, sizeof buf, items, 2 * BENCH_STRATEGIES);
+    if (!n) return BENCH_EXIT_BAD_USAGE;
+    o->strategy_count = 0;
+    for (size_t i = 0; i < n; i++) {
+        tl_light_strategy s;
+        if (tl_light_strategy_from_name(items[i], &s) != TL_OK)
+            return bench__usage("--strategies: unknown light strategy '%s' (volumes, tiled, auto)", items[i]);
+        int seen = 0;
+        for (size_t k = 0; k < o->strategy_count; k++) seen |= o->strategies[k] == s;
+        if (!seen) o->strategies[o->strategy_count++] = s;
+    }
+    return 0;
+}
+
+static int bench__parse_light_formats(const char *arg, bench_options *o)
+{
+    char buf[128], *items[2 * TL_LIGHT_FORMAT_COUNT_];
+    size_t n = bench__list("--light-formats", "formats", arg, buf, sizeof buf, items, 2 * TL_LIGHT_FORMAT_COUNT_);
+    if (!n) return BENCH_EXIT_BAD_USAGE;
+    o->small_light_buffer = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (!strcmp(items[i], "r11g11b10f")) o->small_light_buffer = 1;
+        else if (strcmp(items[i], "rgba16f"))
+            return bench__usage("--light-formats: unknown light buffer format '%s' (rgba16f, r11g11b10f)", items[i]);
+    }
+    return 0;
+}
+
 static int bench__parse_args(int argc, char **argv, bench_options *o)
 {
     memset(o, 0, sizeof *o);
     o->scene = "default";
-    const char *sizes = NULL, *lights = NULL, *modes = NULL, *frames = NULL, *warmup = NULL, *seed = NULL;
+    const char *sizes = NULL, *lights = NULL, *modes = NULL, *strategies = NULL, *formats = NULL, *frames = NULL, *warmup = NULL, *seed = NULL;
     const char *context = NULL, *device = NULL;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -179,6 +217,8 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
         else if (!strcmp(a, "--size")) value = &sizes;
         else if (!strcmp(a, "--lights")) value = &lights;
         else if (!strcmp(a, "--modes")) value = &modes;
+        else if (!strcmp(a, "--strategies")) value = &strategies;
+        else if (!strcmp(a, "--light-formats")) value = &formats;
         else if (!strcmp(a, "--frames")) value = &frames;
         else if (!strcmp(a, "--warmup")) value = &warmup;
         else if (!strcmp(a, "--seed")) value = &seed;
@@ -203,6 +243,8 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
         memcpy(o->lights, l, o->light_count * sizeof *l);
     }
     if ((rc = bench__parse_modes(modes ? modes : "thin-lpp,thin-deferred,fat,forward", o))) return rc;
+    if ((rc = bench__parse_strategies(strategies ? strategies : "volumes,tiled", o))) return rc;
+    if ((rc = bench__parse_light_formats(formats ? formats : "rgba16f,r11g11b10f", o))) return rc;
     uint64_t v;
     if (frames && (!bench__parse_u64(frames, BENCH_MAX_FRAMES, &v) || v == 0))
         return bench__usage("--frames wants 1..1000, got '%s'", frames);

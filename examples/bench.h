@@ -18,12 +18,14 @@
 #define BENCH_EXIT_BAD_INPUT 1
 #define BENCH_EXIT_BAD_USAGE 2
 
-#define BENCH_MAX_LIGHTS 4096u      /* local lights per frame */
+#define BENCH_MAX_LIGHTS 65536u     /* local lights per frame */
 #define BENCH_MAX_SIDE 16384u       /* pixels per side */
 #define BENCH_MAX_LIGHT_COUNTS 32u
 #define BENCH_MAX_SIZES 8u
 #define BENCH_MAX_FRAMES 1000u
 #define BENCH_MODES (TL_MODE_COUNT_ - 1) /* every mode but DEFAULT */
+#define BENCH_STRATEGIES (TL_LIGHT_STRATEGY_COUNT_) /* auto, volumes, tiled */
+#define BENCH_CONFIGS (BENCH_MODES * BENCH_STRATEGIES * 2) /* x 2: the R11G11B10F light buffer */
 #define BENCH_REFERENCE TL_MODE_FAT
 #define BENCH_PNG_MAX_BYTES (300u * 1024u)
 /* Heat maps show |mode - fat| of the final image, largest RGB channel, 0..HEAT_SCALE 8-bit steps. */
@@ -31,6 +33,34 @@
 
 #define BENCH_DOC_BEGIN "<!-- bench:begin -->"
 #define BENCH_DOC_END "<!-- bench:end -->"
+
+/* What the sweep renders: a mode with a light strategy, and for thin-lpp with the tiled strategy
+ * also the R11G11B10F light buffer: mode + TL_MODE_COUNT_ * (strategy + BENCH_STRATEGIES * small).
+ * Its name is the mode's with the strategy ("thin-lpp/tiled", "fat/volumes", "thin-lpp/auto",
+ * "thin-lpp/tiled/r11g11b10f"), except forward: "forward" with per-object lists (volumes),
+ * "forward+" with tile lists (tiled). */
+typedef unsigned bench_config;
+static inline bench_config bench_config_make(tl_render_mode m, tl_light_strategy s)
+{
+    return (unsigned)m + (unsigned)TL_MODE_COUNT_ * (unsigned)s;
+}
+static inline tl_render_mode bench_config_mode(bench_config c) { return (tl_render_mode)(c % TL_MODE_COUNT_); }
+static inline tl_light_strategy bench_config_strategy(bench_config c)
+{
+    return (tl_light_strategy)(c / TL_MODE_COUNT_ % BENCH_STRATEGIES);
+}
+/* The light buffer's format: R11G11B10F for the small-buffer variant, else the default. */
+static inline tl_light_format bench_config_light_format(bench_config c)
+{
+    return c / (TL_MODE_COUNT_ * BENCH_STRATEGIES) ? TL_LIGHT_FORMAT_R11G11B10F : TL_LIGHT_FORMAT_DEFAULT;
+}
+static inline bench_config bench_config_small_light_buffer(bench_config c)
+{
+    return c % (TL_MODE_COUNT_ * BENCH_STRATEGIES) + TL_MODE_COUNT_ * BENCH_STRATEGIES;
+}
+const char *bench_config_name(bench_config c);
+/* The name for file names: '/' becomes '-', '+' becomes "-plus". */
+const char *bench_config_slug(bench_config c);
 
 typedef struct bench_size {
     uint32_t width, height;
@@ -44,17 +74,22 @@ typedef struct bench_options {
     size_t light_count;
     tl_render_mode modes[BENCH_MODES];       /* as asked, no repeats */
     size_t mode_count;
+    tl_light_strategy strategies[BENCH_STRATEGIES]; /* as asked, no repeats (default volumes, tiled) */
+    size_t strategy_count;
     uint32_t frames, warmup;
     uint64_t seed;
     const char *json, *out, *doc;
     int quick, no_plot, help, list_devices;
+    int small_light_buffer;   /* also thin-lpp/tiled with an R11G11B10F light buffer (--light-formats) */
     tl_tool_context_options context; /* --context, --device */
 } bench_options;
 
 /* One (mode, lights, size): medians over the timed frames, sizes from the plan, errors against the
  * fat image of the same frame. */
 typedef struct bench_record {
-    tl_render_mode mode;
+    bench_config config;
+    tl_render_mode mode;           /* bench_config_mode(config) */
+    tl_light_strategy strategy;    /* what the plan used (auto resolved to volumes or tiled) */
     int requested;                 /* in --modes (fat may be rendered only as the reference) */
     uint32_t lights;               /* local lights: point + spot */
     uint32_t point_lights, spot_lights, directional_lights;
@@ -78,7 +113,9 @@ typedef struct bench_record {
     uint32_t lights_drawn[TL_LIGHT_TYPE_COUNT_];
     uint64_t forward_light_pairs;
     uint32_t draw_calls, objects_drawn;
-    double lighting_ms;            /* the pass that applies the lights: lights (deferred), forward */
+    uint64_t light_pairs;          /* pixel-light pairs the light pass shaded (tl_frame_stats.light_pairs) */
+    double lighting_ms;            /* the passes that apply the lights: light-cull + lights or lights-tiled
+                                      (deferred), light-cull + forward */
     tl_image_error ldr;            /* final image vs fat, RGB in 8-bit steps */
     tl_image_error hdr;            /* HDR target vs fat, RGB, peak = fat's largest value */
     double hdr_peak;
@@ -94,7 +131,7 @@ typedef enum bench_image_kind {
 typedef struct bench_image_file {
     char path[512];
     bench_image_kind kind;
-    tl_render_mode mode;
+    bench_config config;
     uint32_t lights, width, height;
 } bench_image_file;
 
@@ -143,11 +180,14 @@ void bench_scene_close(bench_scene *s);
 /* bench_sweep.c: renders everything and fills run->records (and the images under --out), then
  * times run->planning's modes planned and unplanned (so bench_planning_compare comes first). */
 int bench_sweep(bench_run *run, bench_scene *scene);
-/* The modes rendered, in order: fat first (the reference), then the requested ones. */
-size_t bench_render_modes(const bench_options *opt, tl_render_mode *modes);
+/* The configurations rendered (at most BENCH_CONFIGS), strategy by strategy: fat first (the
+ * reference of the strategy's group), then the requested modes. */
+size_t bench_render_modes(const bench_options *opt, bench_config *modes);
 int bench_mode_requested(const bench_options *opt, tl_render_mode mode);
-/* The record of (mode, lights, size), or NULL. */
-const bench_record *bench_find(const bench_run *run, tl_render_mode mode, uint32_t lights, bench_size size);
+/* The record of (configuration, lights, size), or NULL. */
+const bench_record *bench_find(const bench_run *run, bench_config config, uint32_t lights, bench_size size);
+/* The fat record the error of `config` was measured against (the same strategy). */
+bench_config bench_reference_of(bench_config config);
 
 /* Derived figures shared by the table, JSON and doc. */
 /* How many times faster `a` is than `b`: the median over the timed frames of b's frame time over
@@ -155,6 +195,7 @@ const bench_record *bench_find(const bench_run *run, tl_render_mode mode, uint32
  * ratio of the medians when the frame times are missing. */
 double bench_speedup(const bench_record *a, const bench_record *b);
 double bench_per_light_ms(const bench_record *r);          /* lighting_ms / lights; NaN for 0 lights */
+double bench_ns_per_pair(const bench_record *r);           /* lighting_ms / light_pairs in ns; NaN when none */
 double bench_ms_per_mpixel_covered(const bench_record *r); /* lighting_ms / covered Mpx; NaN when none */
 double bench_mib_at(const bench_record *r, uint32_t w, uint32_t h); /* plan bytes at another size */
 uint32_t bench_light_buffer_bpp(const bench_record *r);    /* light.diffuse + light.specular */

@@ -95,7 +95,7 @@ static int bench__note_image(bench_run *run, const char *path, bench_image_kind 
     bench_image_file *f = &run->images[run->image_count++];
     snprintf(f->path, sizeof f->path, "%s", path);
     f->kind = kind;
-    f->mode = rec->mode;
+    f->config = rec->config;
     f->lights = rec->lights;
     f->width = rec->width;
     f->height = rec->height;
@@ -106,7 +106,7 @@ static int bench__write_png(bench_run *run, const bench_record *rec, bench_image
                             uint32_t w, uint32_t h)
 {
     char path[512];
-    const char *mode = tl_render_mode_name(rec->mode);
+    const char *mode = bench_config_slug(rec->config);
     if (kind == BENCH_IMAGE_FINAL)
         snprintf(path, sizeof path, "%s/bench_final_%s_%ulights_%ux%u.png", run->opt.out, mode, rec->lights,
                  rec->width, rec->height);

@@ -18,8 +18,11 @@ int bench_planning_compare(bench_run *run, bench_scene *scene)
     lit.light_count = count;
     tl_scene_feature_set features;
     tl_scene_features(&lit, &features);
-    tl_render_mode modes[BENCH_MODES];
-    size_t mode_count = bench_render_modes(opt, modes);
+    tl_render_mode modes[BENCH_MODES]; /* fat first, then the requested modes (the planner's strategy) */
+    size_t mode_count = 0;
+    modes[mode_count++] = BENCH_REFERENCE;
+    for (size_t i = 0; i < opt->mode_count; i++)
+        if (opt->modes[i] != BENCH_REFERENCE) modes[mode_count++] = opt->modes[i];
     run->planning_count = 0;
     for (size_t m = 0; m < mode_count; m++) {
         tl_frame_plan plan, full;

@@ -13,13 +13,24 @@
 const char *const bench_plot_names[BENCH_PLOT_COUNT] = {"bench_ms_vs_lights", "bench_error_vs_ms",
                                                         "bench_bytes_per_pixel"};
 
-static const char *bench__colour(tl_render_mode m)
+/* One colour per mode; strategies are told apart by dash type (bench__dash). */
+static const char *bench__colour(bench_config c)
 {
-    switch (m) {
+    switch (bench_config_mode(c)) {
     case TL_MODE_THIN_LPP: return "#1a9850";
     case TL_MODE_THIN_DEFERRED: return "#2166ac";
     case TL_MODE_FAT: return "#d7191c";
     default: return "#7b3294";
+    }
+}
+
+/* Tiled solid, volumes dashed, auto dotted (forward: per-object lists dashed, Forward+ solid). */
+static const char *bench__dash(bench_config c)
+{
+    switch (bench_config_strategy(c)) {
+    case TL_LIGHT_STRATEGY_TILED: return "";
+    case TL_LIGHT_STRATEGY_VOLUMES: return " dt 2";
+    default: return " dt 3";
     }
 }
 
@@ -45,13 +56,13 @@ static void bench__value(FILE *f, double v)
 
 /* The (mode, size) series in plot order: every rendered mode at every size. */
 typedef struct bench__series {
-    tl_render_mode mode;
+    bench_config mode;
     bench_size size;
 } bench__series;
 
 static size_t bench__series_list(const bench_run *run, bench__series *out)
 {
-    tl_render_mode modes[BENCH_MODES];
+    bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(&run->opt, modes), n = 0;
     for (size_t si = 0; si < run->opt.size_count; si++)
         for (size_t m = 0; m < mode_count; m++) out[n++] = (bench__series){modes[m], run->opt.sizes[si]};
@@ -61,9 +72,9 @@ static size_t bench__series_list(const bench_run *run, bench__series *out)
 static void bench__series_title(const bench_run *run, const bench__series *s, char *buf, size_t size)
 {
     if (run->opt.size_count > 1)
-        snprintf(buf, size, "%s %ux%u", tl_render_mode_name(s->mode), s->size.width, s->size.height);
+        snprintf(buf, size, "%s %ux%u", bench_config_name(s->mode), s->size.width, s->size.height);
     else
-        snprintf(buf, size, "%s", tl_render_mode_name(s->mode));
+        snprintf(buf, size, "%s", bench_config_name(s->mode));
 }
 
 /* ---- ms vs lights --------------------------------------------------------------------------- */
@@ -71,7 +82,7 @@ static void bench__series_title(const bench_run *run, const bench__series *s, ch
 static int bench__ms_data(FILE *f, const void *ctx)
 {
     const bench_run *run = ((const tl_tool_plot *)ctx)->user;
-    bench__series series[BENCH_MODES * BENCH_MAX_SIZES];
+    bench__series series[BENCH_CONFIGS * BENCH_MAX_SIZES];
     size_t n = bench__series_list(run, series);
     fputs("# one block per (mode, size): lights ms_median ms_p90 wall_ms_median\n", f);
     for (size_t i = 0; i < n; i++) {
@@ -123,13 +134,14 @@ static int bench__ms_script(FILE *f, const void *ctx)
     for (size_t li = 0, any = 0; li < run->opt.light_count; li++)
         if (run->opt.lights[li]) fprintf(f, "%s%u", any++ ? ", " : "", run->opt.lights[li]);
     fputs(")\nset format y '%g'\n", f);
-    bench__series series[BENCH_MODES * BENCH_MAX_SIZES];
+    bench__series series[BENCH_CONFIGS * BENCH_MAX_SIZES];
     size_t n = bench__series_list(run, series);
     fputs("plot ", f);
     for (size_t i = 0; i < n; i++) {
         char title[64];
         bench__series_title(run, &series[i], title, sizeof title);
-        const char *dash = run->opt.size_count > 1 && series[i].size.width != run->opt.sizes[0].width ? " dt 2" : "";
+        const char *dash = run->opt.size_count > 1 && series[i].size.width != run->opt.sizes[0].width ? " dt 4"
+                                                                                                  : bench__dash(series[i].mode);
         fprintf(f, "%s'%s.dat' index %zu using 1:2:2:3 with yerrorbars lc rgb '%s' pt 7 notitle, "
                    "'' index %zu using 1:2 with linespoints lw 2 pt 7 lc rgb '%s'%s title '%s'",
                 i ? ", \\\n     " : "", p->name, i, bench__colour(series[i].mode), i, bench__colour(series[i].mode),
@@ -144,12 +156,12 @@ static int bench__ms_script(FILE *f, const void *ctx)
 static int bench__error_data(FILE *f, const void *ctx)
 {
     const bench_run *run = ((const tl_tool_plot *)ctx)->user;
-    bench__series series[BENCH_MODES * BENCH_MAX_SIZES];
+    bench__series series[BENCH_CONFIGS * BENCH_MAX_SIZES];
     size_t n = bench__series_list(run, series);
     fputs("# one block per (mode, size) but fat (the reference): ms_median psnr_db mean_abs max_abs lights\n", f);
     size_t block = 0;
     for (size_t i = 0; i < n; i++) {
-        if (series[i].mode == BENCH_REFERENCE) continue;
+        if (bench_config_mode(series[i].mode) == BENCH_REFERENCE) continue;
         if (block++) fputs("\n\n", f);
         for (size_t li = 0; li < run->opt.light_count; li++) {
             const bench_record *r = bench_find(run, series[i].mode, run->opt.lights[li], series[i].size);
@@ -177,7 +189,7 @@ static int bench__error_script(FILE *f, const void *ctx)
             "set xlabel 'ms per frame, median'\n"
             "set key bottom right box opaque\n",
             run->scene_name);
-    bench__series series[BENCH_MODES * BENCH_MAX_SIZES];
+    bench__series series[BENCH_CONFIGS * BENCH_MAX_SIZES];
     size_t n = bench__series_list(run, series);
     static const char *const panels[2][3] = {
         {"PSNR against fat, dB (higher is better)", "2", "set yrange [*:*]\nunset logscale y\n"},
@@ -187,12 +199,13 @@ static int bench__error_script(FILE *f, const void *ctx)
         fputs("plot ", f);
         size_t block = 0;
         for (size_t i = 0; i < n; i++) {
-            if (series[i].mode == BENCH_REFERENCE) continue;
+            if (bench_config_mode(series[i].mode) == BENCH_REFERENCE) continue;
             char title[64];
             bench__series_title(run, &series[i], title, sizeof title);
-            fprintf(f, "%s'%s.dat' index %zu using 1:%s with linespoints lw 1.5 pt 7 ps 1.3 lc rgb '%s' title '%s', "
+            fprintf(f, "%s'%s.dat' index %zu using 1:%s with linespoints lw 1.5%s pt 7 ps 1.3 lc rgb '%s' title '%s', "
                        "'' index %zu using 1:%s:5 with labels offset 0.8,0.6 font ',8' tc rgb '%s' notitle",
-                    block ? ", \\\n     " : "", p->name, block, panels[k][1], bench__colour(series[i].mode), title,
+                    block ? ", \\\n     " : "", p->name, block, panels[k][1], bench__dash(series[i].mode),
+                    bench__colour(series[i].mode), title,
                     block, panels[k][1], bench__colour(series[i].mode));
             block++;
         }
@@ -205,7 +218,7 @@ static int bench__error_script(FILE *f, const void *ctx)
 
 /* ---- bytes per pixel ------------------------------------------------------------------------ */
 
-static uint32_t bench__used_targets(const bench_run *run, const tl_render_mode *modes, size_t mode_count,
+static uint32_t bench__used_targets(const bench_run *run, const bench_config *modes, size_t mode_count,
                                     uint32_t *passes)
 {
     uint32_t used = 0;
@@ -222,7 +235,7 @@ static uint32_t bench__used_targets(const bench_run *run, const tl_render_mode *
 static int bench__bytes_data(FILE *f, const void *ctx)
 {
     const bench_run *run = ((const tl_tool_plot *)ctx)->user;
-    tl_render_mode modes[BENCH_MODES];
+    bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(&run->opt, modes);
     uint32_t passes, used = bench__used_targets(run, modes, mode_count, &passes);
     bench_size size = run->opt.sizes[0];
@@ -234,7 +247,7 @@ static int bench__bytes_data(FILE *f, const void *ctx)
     for (size_t m = 0; m < mode_count; m++) {
         const bench_record *r = bench_find(run, modes[m], run->opt.lights[run->opt.light_count - 1], size);
         if (!r) continue;
-        fprintf(f, "%s", tl_render_mode_name(modes[m]));
+        fprintf(f, "%s", bench_config_name(modes[m]));
         for (int t = 0; t < TL_TARGET_COUNT; t++)
             if (used & (1u << t)) fprintf(f, " %u", r->target_bpp[t]);
         fputc('\n', f);
@@ -246,7 +259,7 @@ static int bench__bytes_data(FILE *f, const void *ctx)
     for (size_t m = 0; m < mode_count; m++) {
         const bench_record *r = bench_find(run, modes[m], run->opt.lights[run->opt.light_count - 1], size);
         if (!r) continue;
-        fprintf(f, "%s", tl_render_mode_name(modes[m]));
+        fprintf(f, "%s", bench_config_name(modes[m]));
         for (int p = 0; p < TL_PASS_COUNT; p++)
             if (passes & (1u << p)) bench__value(f, r->pass_bytes[p] / pixels);
         fputc('\n', f);
@@ -260,12 +273,17 @@ static int bench__bytes_script(FILE *f, const void *ctx)
     static const char *const target_colours[TL_TARGET_COUNT] = {"#4d4d4d", "#1a9850", "#66bd63", "#2166ac",
                                                                 "#67a9cf", "#d7191c", "#f4a582", "#fdae61",
                                                                 "#b2abd2", "#7b3294", "#bababa", "#e0e0e0",
-                                                                "#8c510a"};
-    static const char *const pass_colours[TL_PASS_COUNT] = {"#4d4d4d", "#2166ac", "#8c510a", "#fdae61", "#f46d43",
-                                                            "#1a9850", "#7b3294", "#b2abd2", "#d7191c", "#bababa"};
+                                                                "#8c510a", "#35978f", "#80cdc1", "#c51b7d"};
+    static const char *const pass_colours[TL_PASS_COUNT] = {
+        [TL_PASS_DEPTH_PREPASS] = "#4d4d4d", [TL_PASS_GBUFFER] = "#2166ac",      [TL_PASS_SSAO] = "#35978f",
+        [TL_PASS_SSAO_BLUR] = "#80cdc1",     [TL_PASS_SSAO_APPLY] = "#01665e",   [TL_PASS_LIGHT_CULL] = "#8c510a",
+        [TL_PASS_LIGHTS] = "#fdae61",        [TL_PASS_LIGHTS_TILED] = "#f46d43", [TL_PASS_MATERIAL] = "#1a9850",
+        [TL_PASS_FORWARD] = "#7b3294",       [TL_PASS_TRANSPARENT] = "#b2abd2",  [TL_PASS_FOG] = "#878787",
+        [TL_PASS_DOF] = "#c51b7d",           [TL_PASS_DOF_APPLY] = "#de77ae",    [TL_PASS_TONEMAP] = "#d7191c",
+        [TL_PASS_FXAA] = "#bababa"};
     const tl_tool_plot *p = ctx;
     const bench_run *run = p->user;
-    tl_render_mode modes[BENCH_MODES];
+    bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(&run->opt, modes);
     uint32_t passes, used = bench__used_targets(run, modes, mode_count, &passes);
     bench__terminal(f, p, 1300, 600);

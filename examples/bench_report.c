@@ -41,13 +41,18 @@ static void bench__add(char *line, const char *fmt, ...)
     va_end(ap);
 }
 
-/* The mode the summary speaks for: thin-lpp when measured, else the first other mode. */
-static tl_render_mode bench__subject(const bench_options *opt)
+/* The configuration the summary speaks for: thin-lpp when measured, else the first other mode;
+ * tiled when measured, else the last strategy asked for. */
+static bench_config bench__subject(const bench_options *opt)
 {
-    if (bench_mode_requested(opt, TL_MODE_THIN_LPP)) return TL_MODE_THIN_LPP;
-    for (size_t i = 0; i < opt->mode_count; i++)
-        if (opt->modes[i] != BENCH_REFERENCE) return opt->modes[i];
-    return BENCH_REFERENCE;
+    tl_render_mode mode = BENCH_REFERENCE;
+    if (bench_mode_requested(opt, TL_MODE_THIN_LPP)) mode = TL_MODE_THIN_LPP;
+    for (size_t i = 0; mode == BENCH_REFERENCE && i < opt->mode_count; i++)
+        if (opt->modes[i] != BENCH_REFERENCE) mode = opt->modes[i];
+    tl_light_strategy strategy = opt->strategies[opt->strategy_count - 1];
+    for (size_t i = 0; i < opt->strategy_count; i++)
+        if (opt->strategies[i] == TL_LIGHT_STRATEGY_TILED) strategy = TL_LIGHT_STRATEGY_TILED;
+    return bench_config_make(mode, strategy);
 }
 
 static uint32_t bench__gbuffer_only_bpp(const bench_record *r)
@@ -55,22 +60,82 @@ static uint32_t bench__gbuffer_only_bpp(const bench_record *r)
     return r->gbuffer_bytes_per_pixel - bench_light_buffer_bpp(r);
 }
 
+/* "<subject> speed-up over <other>" at every count >= 64 (the largest alone when there is none);
+ * `light_pass`: the ratio of the light passes (cull + shading) rather than of the frames. */
+static void bench__speedup_line(const bench_run *run, bench__summary *s, const char *at, bench_size size,
+                                bench_config subject, bench_config other, int light_pass)
+{
+    const bench_options *opt = &run->opt;
+    uint32_t largest = opt->lights[opt->light_count - 1];
+    char line[BENCH__LINE];
+    if (light_pass)
+        snprintf(line, sizeof line, "%s%s light pass (cull + shading) speed-up over %s's, ns per pixel-light pair in "
+                 "brackets:", at, bench_config_name(subject), bench_config_name(other));
+    else
+        snprintf(line, sizeof line, "%s%s speed-up over %s (its frame time / %s's, median over frames):", at,
+                 bench_config_name(subject), bench_config_name(other), bench_config_name(subject));
+    int any = 0;
+    for (size_t li = 0; li < opt->light_count; li++) {
+        uint32_t n = opt->lights[li];
+        if (n < 64 && n != largest) continue;
+        const bench_record *a = bench_find(run, subject, n, size), *b = bench_find(run, other, n, size);
+        if (!a || !b || !(a->ms_median > 0.0)) continue;
+        if (!light_pass) {
+            bench__add(line, "%s %.2fx at %u", any ? "," : "", bench_speedup(a, b), n);
+        } else if (a->lighting_ms > 0.0) {
+            bench__add(line, "%s %.2fx at %u (%.1f vs %.1f)", any ? "," : "", b->lighting_ms / a->lighting_ms, n,
+                       bench_ns_per_pair(a), bench_ns_per_pair(b));
+        } else {
+            continue;
+        }
+        any = 1;
+    }
+    if (any) bench__say(s, "%s lights", line);
+}
+
+/* The fastest thin configuration against the fastest fat one at each count >= 256. */
+static void bench__fastest_line(const bench_run *run, bench__summary *s, const char *at, bench_size size,
+                                const bench_config *modes, size_t mode_count)
+{
+    const bench_options *opt = &run->opt;
+    char line[BENCH__LINE];
+    snprintf(line, sizeof line, "%sfastest thin configuration over the fastest fat one:", at);
+    int any = 0;
+    for (size_t li = 0; li < opt->light_count; li++) {
+        uint32_t n = opt->lights[li];
+        const bench_record *thin = NULL, *fat = NULL;
+        if (n < 256) continue;
+        for (size_t m = 0; m < mode_count; m++) {
+            const bench_record *r = bench_find(run, modes[m], n, size);
+            if (!r || !(r->ms_median > 0.0)) continue;
+            int is_thin = r->mode == TL_MODE_THIN_LPP || r->mode == TL_MODE_THIN_DEFERRED;
+            if (is_thin && (!thin || r->ms_median < thin->ms_median)) thin = r;
+            if (r->mode == TL_MODE_FAT && (!fat || r->ms_median < fat->ms_median)) fat = r;
+        }
+        if (!thin || !fat) continue;
+        bench__add(line, "%s %s over %s %.2fx at %u", any ? "," : "", bench_config_name(thin->config),
+                   bench_config_name(fat->config), bench_speedup(thin, fat), n);
+        any = 1;
+    }
+    if (any) bench__say(s, "%s lights", line);
+}
+
 static void bench__summarise(const bench_run *run, bench__summary *s)
 {
     const bench_options *opt = &run->opt;
-    tl_render_mode subject = bench__subject(opt);
-    const char *sname = tl_render_mode_name(subject);
+    bench_config subject = bench__subject(opt), ref = bench_reference_of(subject);
+    const char *sname = bench_config_name(subject);
     uint32_t largest = opt->lights[opt->light_count - 1];
-    tl_render_mode modes[BENCH_MODES];
+    bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(opt, modes);
     for (size_t si = 0; si < opt->size_count; si++) {
         bench_size size = opt->sizes[si];
         char at[32] = "";
         if (opt->size_count > 1) snprintf(at, sizeof at, "%ux%u: ", size.width, size.height);
-        const bench_record *fat = bench_find(run, BENCH_REFERENCE, largest, size);
+        const bench_record *fat = bench_find(run, ref, largest, size);
         const bench_record *sub = bench_find(run, subject, largest, size);
         if (!fat || !sub) continue;
-        if (subject != BENCH_REFERENCE && fat->gbuffer_bytes_per_pixel)
+        if (subject != ref && fat->gbuffer_bytes_per_pixel)
             bench__say(s,
                        "%s%s stores %u B/px in depth + G-buffer + light buffer = %.0f%% of fat's %u B/px "
                        "(depth + G-buffer alone: %u vs %u B/px = %.0f%%); all targets allocate %u vs %u B/px "
@@ -80,27 +145,18 @@ static void bench__summarise(const bench_run *run, bench__summary *s)
                        fat->gbuffer_bytes_per_pixel, bench__gbuffer_only_bpp(sub), bench__gbuffer_only_bpp(fat),
                        bench__gbuffer_only_bpp(fat) ? 100.0 * bench__gbuffer_only_bpp(sub) / bench__gbuffer_only_bpp(fat) : 0.0,
                        sub->bytes_per_pixel, fat->bytes_per_pixel, sub->bytes_per_pixel_sum, fat->bytes_per_pixel_sum);
-        /* speed-ups at every count >= 64 (the largest alone when there is none) */
-        for (size_t m = 0; subject != BENCH_REFERENCE && m < mode_count; m++) {
-            tl_render_mode other = modes[m];
-            if (other == subject || (other != BENCH_REFERENCE && other != TL_MODE_FORWARD)) continue;
-            char line[BENCH__LINE];
-            snprintf(line, sizeof line, "%s%s speed-up over %s (its frame time / %s's, median over frames):", at, sname,
-                     tl_render_mode_name(other), sname);
-            int any = 0;
-            for (size_t li = 0; li < opt->light_count; li++) {
-                uint32_t n = opt->lights[li];
-                if (n < 64 && n != largest) continue;
-                const bench_record *a = bench_find(run, subject, n, size), *b = bench_find(run, other, n, size);
-                if (!a || !b || !(a->ms_median > 0.0)) continue;
-                bench__add(line, "%s %.2fx at %u", any ? "," : "", bench_speedup(a, b), n);
-                any = 1;
-            }
-            if (any) bench__say(s, "%s lights", line);
+        /* against fat, forward, forward+ and the subject's mode with the other strategies */
+        for (size_t m = 0; subject != ref && m < mode_count; m++) {
+            tl_render_mode om = bench_config_mode(modes[m]);
+            if (modes[m] == subject || (om != BENCH_REFERENCE && om != TL_MODE_FORWARD && om != bench_config_mode(subject)))
+                continue;
+            bench__speedup_line(run, s, at, size, subject, modes[m], 0);
+            if (om == bench_config_mode(subject)) bench__speedup_line(run, s, at, size, subject, modes[m], 1);
         }
-        /* the worst image quality of each mode */
+        bench__fastest_line(run, s, at, size, modes, mode_count);
+        /* the worst image quality of each configuration */
         char line[BENCH__LINE];
-        snprintf(line, sizeof line, "%slowest PSNR of the final image against fat:", at);
+        snprintf(line, sizeof line, "%slowest PSNR of the final image against fat (same strategy):", at);
         int any = 0;
         uint64_t nans = 0;
         for (size_t m = 0; m < mode_count; m++) {
@@ -109,11 +165,11 @@ static void bench__summarise(const bench_run *run, bench__summary *s)
                 const bench_record *r = bench_find(run, modes[m], opt->lights[li], size);
                 if (!r) continue;
                 nans += r->nan_pixels;
-                if (modes[m] != BENCH_REFERENCE && (!worst || r->ldr.psnr_db < worst->ldr.psnr_db)) worst = r;
+                if (r->mode != BENCH_REFERENCE && (!worst || r->ldr.psnr_db < worst->ldr.psnr_db)) worst = r;
             }
             if (!worst) continue;
             bench__add(line, "%s %s %.1f dB (max error %.0f steps, at %u lights)", any ? ";" : "",
-                       tl_render_mode_name(modes[m]), worst->ldr.psnr_db, worst->ldr.max_abs, worst->lights);
+                       bench_config_name(modes[m]), worst->ldr.psnr_db, worst->ldr.max_abs, worst->lights);
             any = 1;
         }
         if (any) bench__say(s, "%s", line);
@@ -167,7 +223,7 @@ static void bench__fmt(char *buf, size_t size, const char *fmt, double v)
 void bench_print_table(const bench_run *run)
 {
     const bench_options *opt = &run->opt;
-    tl_render_mode modes[BENCH_MODES];
+    bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(opt, modes);
     char sizes[160] = "";
     for (size_t si = 0; si < opt->size_count; si++)
@@ -180,29 +236,30 @@ void bench_print_table(const bench_run *run)
            "%.0f s\n",
            run->gl_renderer, run->gl_version, run->context, run->context_platform, run->cpu, run->cores, run->load_start, run->load_end, run->seconds);
     printf("%s\n", run->light_definition);
-    printf("ms = %s per frame (median, p90); ms/light = lighting pass / lights; cov Mpx = pixels inside light volumes;\n"
+    printf("ms = %s per frame (median, p90); light ms = the passes that apply the lights (light-cull + lights,\n"
+           "lights-tiled or forward); ns/pair = light ms per pixel-light pair shaded;\n"
            "B/px = memory the targets occupy (shared where lifetimes allow; sum = as if each had its own);\n"
            "MiB moved = the renderer's bytes-moved estimate per frame;\n"
            "PSNR and max err (8-bit steps) of the final image against fat of the same frame; NaN = HDR pixels\n",
            run->timers_ok ? "GPU time (timer queries)" : "wall clock (no GPU timers)");
     for (size_t si = 0; si < opt->size_count; si++) {
         bench_size size = opt->sizes[si];
-        printf("\n%ux%u\n%-14s %6s %8s %8s %9s %7s %5s %4s %9s %9s %7s %7s %4s\n", size.width, size.height, "mode",
-               "lights", "ms med", "ms p90", "ms/light", "cov Mpx", "B/px", "sum", "MiB@1080p", "MiB moved", "PSNR dB",
+        printf("\n%ux%u\n%-22s %6s %8s %8s %8s %7s %5s %4s %9s %9s %7s %7s %4s\n", size.width, size.height, "mode",
+               "lights", "ms med", "ms p90", "light ms", "ns/pair", "B/px", "sum", "MiB@1080p", "MiB moved", "PSNR dB",
                "max err", "NaN");
         for (size_t m = 0; m < mode_count; m++) {
             if (m) putchar('\n');
             for (size_t li = 0; li < opt->light_count; li++) {
                 const bench_record *r = bench_find(run, modes[m], opt->lights[li], size);
                 if (!r) continue;
-                char label[32], pl[16], cov[16], psnr[16], maxe[16];
-                snprintf(label, sizeof label, "%s%s", tl_render_mode_name(r->mode),
+                char label[40], pl[16], cov[16], psnr[16], maxe[16];
+                snprintf(label, sizeof label, "%s%s", bench_config_name(r->config),
                          r->mode == BENCH_REFERENCE ? " (ref)" : "");
-                bench__fmt(pl, sizeof pl, "%.4f", bench_per_light_ms(r));
-                bench__fmt(cov, sizeof cov, "%.2f", r->covered_pixels ? (double)r->covered_pixels * 1e-6 : NAN);
+                bench__fmt(pl, sizeof pl, "%.2f", r->lighting_ms);
+                bench__fmt(cov, sizeof cov, "%.1f", bench_ns_per_pair(r));
                 bench__fmt(psnr, sizeof psnr, "%.1f", r->mode == BENCH_REFERENCE ? NAN : r->ldr.psnr_db);
                 bench__fmt(maxe, sizeof maxe, "%.0f", r->mode == BENCH_REFERENCE ? NAN : r->ldr.max_abs);
-                printf("%-14s %6u %8.2f %8.2f %9s %7s %5u %4u %9.1f %9.1f %7s %7s %4llu\n", label, r->lights,
+                printf("%-22s %6u %8.2f %8.2f %8s %7s %5u %4u %9.1f %9.1f %7s %7s %4llu\n", label, r->lights,
                        r->ms_median, r->ms_p90, pl, cov, r->bytes_per_pixel, r->bytes_per_pixel_sum,
                        bench_mib_at(r, 1920, 1080), r->bytes_moved / 1048576.0, psnr, maxe,
                        (unsigned long long)r->nan_pixels);
@@ -229,6 +286,11 @@ static void bench__json_record(tl_tool_json *j, const bench_record *r)
 {
     tl_tool_json_object(j, NULL, 0);
     tl_tool_json_str(j, "mode", tl_render_mode_name(r->mode));
+    tl_tool_json_str(j, "config", bench_config_name(r->config));
+    tl_tool_json_str(j, "strategy_asked", tl_light_strategy_name(bench_config_strategy(r->config)));
+    tl_tool_json_str(j, "strategy", tl_light_strategy_name(r->strategy));
+    tl_tool_json_str(j, "light_format", bench_config_light_format(r->config) == TL_LIGHT_FORMAT_R11G11B10F
+                                            ? "r11g11b10f" : "rgba16f");
     tl_tool_json_bool(j, "reference", r->mode == BENCH_REFERENCE);
     tl_tool_json_uint(j, "lights", r->lights);
     tl_tool_json_uint(j, "point_lights", r->point_lights);
@@ -287,6 +349,8 @@ static void bench__json_record(tl_tool_json *j, const bench_record *r)
     tl_tool_json_num(j, "per_light_ms", bench_per_light_ms(r));
     tl_tool_json_num(j, "ms_per_mpixel_covered", bench_ms_per_mpixel_covered(r));
     tl_tool_json_uint(j, "forward_light_pairs", r->forward_light_pairs);
+    tl_tool_json_uint(j, "light_pairs", r->light_pairs);
+    tl_tool_json_num(j, "light_ns_per_pair", bench_ns_per_pair(r));
     tl_tool_json_uint(j, "draw_calls", r->draw_calls);
     tl_tool_json_uint(j, "objects_drawn", r->objects_drawn);
     tl_tool_json_num(j, "psnr_db", r->ldr.psnr_db);
@@ -380,7 +444,7 @@ static int bench__write_json(FILE *f, const void *ctx)
         tl_tool_json_str(&j, "path", im->path);
         static const char *const kinds[3] = {"final", "heat", "heat-doc"};
         tl_tool_json_str(&j, "kind", kinds[im->kind]);
-        tl_tool_json_str(&j, "mode", tl_render_mode_name(im->mode));
+        tl_tool_json_str(&j, "mode", bench_config_slug(im->config));
         tl_tool_json_uint(&j, "lights", im->lights);
         tl_tool_json_close(&j, '}');
     }
@@ -402,7 +466,7 @@ typedef struct bench__doc {
     const char *text;
     size_t head;
     const char *tail;
-    tl_render_mode heat[BENCH_MODES]; /* heat maps copied to img/bench_heat_<mode>.png */
+    bench_config heat[BENCH_CONFIGS]; /* heat maps copied to img/bench_heat_<slug>.png */
     size_t heat_count;
 } bench__doc;
 
@@ -416,10 +480,10 @@ static void bench__md_number(FILE *f, const char *fmt, double v)
 static void bench__md_table(FILE *f, const bench_run *run, bench_size size)
 {
     const bench_options *opt = &run->opt;
-    tl_render_mode modes[BENCH_MODES];
+    bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(opt, modes);
     fprintf(f, "\n#### %ux%u\n\n", size.width, size.height);
-    fputs("| mode | lights | ms median | ms p90 | ms / light | covered Mpx | B/px (sum) | MiB @1080p | MiB moved / frame | "
+    fputs("| mode | lights | ms median | ms p90 | light ms | ns / pair | B/px (sum) | MiB @1080p | MiB moved / frame | "
           "PSNR dB | max err | NaN |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
           f);
     for (size_t m = 0; m < mode_count; m++)
@@ -427,11 +491,11 @@ static void bench__md_table(FILE *f, const bench_run *run, bench_size size)
             const bench_record *r = bench_find(run, modes[m], opt->lights[li], size);
             if (!r) continue;
             int ref = r->mode == BENCH_REFERENCE;
-            fprintf(f, "| `%s`%s | %u", tl_render_mode_name(r->mode), ref ? " (reference)" : "", r->lights);
+            fprintf(f, "| `%s`%s | %u", bench_config_name(r->config), ref ? " (reference)" : "", r->lights);
             bench__md_number(f, "%.2f", r->ms_median);
             bench__md_number(f, "%.2f", r->ms_p90);
-            bench__md_number(f, "%.4f", bench_per_light_ms(r));
-            bench__md_number(f, "%.2f", r->covered_pixels ? (double)r->covered_pixels * 1e-6 : NAN);
+            bench__md_number(f, "%.2f", r->lighting_ms);
+            bench__md_number(f, "%.1f", bench_ns_per_pair(r));
             fprintf(f, " | %u (%u)", r->bytes_per_pixel, r->bytes_per_pixel_sum);
             bench__md_number(f, "%.1f", bench_mib_at(r, 1920, 1080));
             bench__md_number(f, "%.1f", r->bytes_moved / 1048576.0);
@@ -445,7 +509,7 @@ static void bench__md_table(FILE *f, const bench_run *run, bench_size size)
 static void bench__md_targets(FILE *f, const bench_run *run)
 {
     const bench_options *opt = &run->opt;
-    tl_render_mode modes[BENCH_MODES];
+    bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(opt, modes);
     fputs("\nTargets each mode's plan allocates, bytes per pixel:\n\n| mode |", f);
     uint32_t used = 0;
@@ -463,7 +527,7 @@ static void bench__md_targets(FILE *f, const bench_run *run)
     for (size_t m = 0; m < mode_count; m++) {
         const bench_record *r = bench_find(run, modes[m], opt->lights[opt->light_count - 1], opt->sizes[0]);
         if (!r) continue;
-        fprintf(f, "| `%s` |", tl_render_mode_name(r->mode));
+        fprintf(f, "| `%s` |", bench_config_name(r->config));
         for (int t = 0; t < TL_TARGET_COUNT; t++)
             if (used & (1u << t)) r->target_bpp[t] ? fprintf(f, " %u |", r->target_bpp[t]) : fputs(" |", f);
         fprintf(f, " %u | %u | %u |\n", r->bytes_per_pixel_sum, r->bytes_per_pixel, r->gbuffer_bytes_per_pixel);
@@ -474,7 +538,7 @@ static void bench__md_targets(FILE *f, const bench_run *run)
 static void bench__md_passes(FILE *f, const bench_run *run)
 {
     const bench_options *opt = &run->opt;
-    tl_render_mode modes[BENCH_MODES];
+    bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(opt, modes);
     uint32_t n = opt->lights[opt->light_count - 1], used = 0;
     for (size_t m = 0; m < mode_count; m++) {
@@ -491,7 +555,7 @@ static void bench__md_passes(FILE *f, const bench_run *run)
     for (size_t m = 0; m < mode_count; m++) {
         const bench_record *r = bench_find(run, modes[m], n, opt->sizes[0]);
         if (!r) continue;
-        fprintf(f, "| `%s` |", tl_render_mode_name(r->mode));
+        fprintf(f, "| `%s` |", bench_config_name(r->config));
         for (int p = 0; p < TL_PASS_COUNT; p++) {
             if (!(used & (1u << p))) continue;
             if (r->passes & (1u << p)) fprintf(f, " %.1f (%.0f) |", r->pass_ms[p], r->pass_bytes[p] / 1048576.0);
@@ -533,8 +597,8 @@ static int bench__write_doc(FILE *f, const void *ctx)
                 (opt->sizes[0].width + 639) / 640, (opt->sizes[0].width + 639) / 640,
                 opt->sizes[0].width > 640 ? " of pixels" : " (full size)");
         for (size_t i = 0; i < d->heat_count; i++)
-            fprintf(f, "![%s against fat](img/bench_heat_%s.png)\n", tl_render_mode_name(d->heat[i]),
-                    tl_render_mode_name(d->heat[i]));
+            fprintf(f, "![%s against fat](img/bench_heat_%s.png)\n", bench_config_name(d->heat[i]),
+                    bench_config_slug(d->heat[i]));
     }
     if (run->plots_made) {
         fputs("\n", f);
@@ -553,7 +617,7 @@ static int bench__doc_heat_maps(const bench_run *run, const char *dir, bench__do
     for (size_t i = 0; i < run->image_count; i++) {
         const bench_image_file *im = &run->images[i];
         if (im->kind != BENCH_IMAGE_HEAT_DOC || im->width != run->opt.sizes[0].width ||
-            im->height != run->opt.sizes[0].height || d->heat_count == BENCH_MODES)
+            im->height != run->opt.sizes[0].height || d->heat_count == BENCH_CONFIGS)
             continue;
         size_t size = 0;
         char *data = tl_tool_read_file(im->path, &size);
@@ -563,11 +627,11 @@ static int bench__doc_heat_maps(const bench_run *run, const char *dir, bench__do
                     size / 1024, BENCH_PNG_MAX_BYTES / 1024);
             continue;
         }
-        char *dst = tl_tool_strf("%s/img/bench_heat_%s.png", dir, tl_render_mode_name(im->mode));
+        char *dst = tl_tool_strf("%s/img/bench_heat_%s.png", dir, bench_config_slug(im->config));
         int err = !dst || tl_tool_copy_file(BENCH_TOOL, im->path, dst);
         free(dst);
         if (err) return 1;
-        d->heat[d->heat_count++] = im->mode;
+        d->heat[d->heat_count++] = im->config;
     }
     return 0;
 }

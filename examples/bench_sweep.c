@@ -19,12 +19,42 @@
 
 static void bench__median_p90(double *v, size_t n, double *median, double *p90);
 
-size_t bench_render_modes(const bench_options *opt, tl_render_mode *modes)
+static const char *const bench__names[BENCH_STRATEGIES][BENCH_MODES][2] = {
+    /* TL_MODE_THIN_LPP .. TL_MODE_FORWARD (tl_render_mode order, DEFAULT left out): name, slug */
+    {{"thin-lpp/auto", "thin-lpp-auto"}, {"thin-deferred/auto", "thin-deferred-auto"}, {"fat/auto", "fat-auto"},
+     {"forward/auto", "forward-auto"}},
+    {{"thin-lpp/volumes", "thin-lpp-volumes"}, {"thin-deferred/volumes", "thin-deferred-volumes"},
+     {"fat/volumes", "fat-volumes"}, {"forward", "forward"}},
+    {{"thin-lpp/tiled", "thin-lpp-tiled"}, {"thin-deferred/tiled", "thin-deferred-tiled"}, {"fat/tiled", "fat-tiled"},
+     {"forward+", "forward-plus"}}};
+
+static const char *bench__config_string(bench_config c, int slug)
+{
+    unsigned m = (unsigned)bench_config_mode(c), s = (unsigned)bench_config_strategy(c);
+    if (m < 1 || m > BENCH_MODES || s >= BENCH_STRATEGIES) return "?";
+    if (bench_config_light_format(c) == TL_LIGHT_FORMAT_R11G11B10F) {
+        if (m != TL_MODE_THIN_LPP || s != TL_LIGHT_STRATEGY_TILED) return "?";
+        return slug ? "thin-lpp-tiled-r11g11b10f" : "thin-lpp/tiled/r11g11b10f";
+    }
+    return bench__names[s][m - 1][slug];
+}
+
+const char *bench_config_name(bench_config c) { return bench__config_string(c, 0); }
+const char *bench_config_slug(bench_config c) { return bench__config_string(c, 1); }
+
+bench_config bench_reference_of(bench_config c) { return bench_config_make(BENCH_REFERENCE, bench_config_strategy(c)); }
+
+size_t bench_render_modes(const bench_options *opt, bench_config *modes)
 {
     size_t n = 0;
-    modes[n++] = BENCH_REFERENCE;
-    for (size_t i = 0; i < opt->mode_count; i++)
-        if (opt->modes[i] != BENCH_REFERENCE) modes[n++] = opt->modes[i];
+    for (size_t s = 0; s < opt->strategy_count; s++) {
+        modes[n++] = bench_config_make(BENCH_REFERENCE, opt->strategies[s]);
+        for (size_t i = 0; i < opt->mode_count; i++)
+            if (opt->modes[i] != BENCH_REFERENCE) modes[n++] = bench_config_make(opt->modes[i], opt->strategies[s]);
+        if (opt->small_light_buffer && opt->strategies[s] == TL_LIGHT_STRATEGY_TILED &&
+            bench_mode_requested(opt, TL_MODE_THIN_LPP))
+            modes[n++] = bench_config_small_light_buffer(bench_config_make(TL_MODE_THIN_LPP, TL_LIGHT_STRATEGY_TILED));
+    }
     return n;
 }
 
@@ -35,11 +65,11 @@ int bench_mode_requested(const bench_options *opt, tl_render_mode mode)
     return 0;
 }
 
-const bench_record *bench_find(const bench_run *run, tl_render_mode mode, uint32_t lights, bench_size size)
+const bench_record *bench_find(const bench_run *run, bench_config config, uint32_t lights, bench_size size)
 {
     for (size_t i = 0; i < run->record_count; i++) {
         const bench_record *r = &run->records[i];
-        if (r->mode == mode && r->lights == lights && r->width == size.width && r->height == size.height) return r;
+        if (r->config == config && r->lights == lights && r->width == size.width && r->height == size.height) return r;
     }
     return NULL;
 }
@@ -54,6 +84,11 @@ double bench_speedup(const bench_record *a, const bench_record *b)
 }
 
 double bench_per_light_ms(const bench_record *r) { return r->lights ? r->lighting_ms / r->lights : NAN; }
+
+double bench_ns_per_pair(const bench_record *r)
+{
+    return r->light_pairs ? r->lighting_ms * 1e6 / (double)r->light_pairs : NAN;
+}
 
 double bench_ms_per_mpixel_covered(const bench_record *r)
 {
@@ -139,10 +174,11 @@ static void bench__plan_figures(tl_renderer *r, const tl_frame_stats *st, size_t
     if (tl_renderer_get_plan(r, &plan) == TL_OK) {
         for (size_t i = 0; i < plan.pass_count && i < TL_PASS_COUNT; i++) rec->passes |= 1u << plan.passes[i].pass;
         rec->gbuffer_bytes_per_pixel = plan.gbuffer_bytes_per_pixel;
+        rec->strategy = plan.light_strategy;
         for (int t = 0; t < TL_TARGET_COUNT; t++)
             if (plan.target_bytes_per_pixel[t] != rec->target_bpp[t])
                 fprintf(stderr, BENCH_TOOL ": warning: %s %s: the plan says %u B/px, the renderer allocated %u B/px\n",
-                        tl_render_mode_name(rec->mode), tl_target_name((tl_target_id)t), plan.target_bytes_per_pixel[t],
+                        bench_config_name(rec->config), tl_target_name((tl_target_id)t), plan.target_bytes_per_pixel[t],
                         rec->target_bpp[t]);
     } else {
         for (int p = 0; p < TL_PASS_COUNT; p++)
@@ -157,7 +193,7 @@ static int bench__frame(bench_run *run, tl_renderer *r, const bench_record *rec,
     const bench_options *opt = &run->opt;
     tl_frame_stats *st = &smp->last;
     if (tl_renderer_render(r, NULL, st) != TL_OK) {
-        tl_tool_fail(BENCH_TOOL, "%s at %ux%u with %u lights: %s", tl_render_mode_name(rec->mode), rec->width,
+        tl_tool_fail(BENCH_TOOL, "%s at %ux%u with %u lights: %s", bench_config_name(rec->config), rec->width,
                      rec->height, rec->lights, tl_renderer_last_error(r));
         return 1;
     }
@@ -197,10 +233,13 @@ static void bench__summarise_frames(const bench_options *opt, tl_renderer *r, be
         rec->lights_drawn[t] = st->lights_drawn[t];
     }
     rec->forward_light_pairs = st->forward_light_pairs;
+    rec->light_pairs = st->light_pairs;
     rec->draw_calls = st->draw_calls;
     rec->objects_drawn = st->objects_drawn;
     bench__plan_figures(r, st, pixels, rec);
-    rec->lighting_ms = rec->pass_ms[rec->mode == TL_MODE_FORWARD ? TL_PASS_FORWARD : TL_PASS_LIGHTS];
+    rec->lighting_ms = rec->pass_ms[TL_PASS_LIGHT_CULL] +
+                       (rec->mode == TL_MODE_FORWARD ? rec->pass_ms[TL_PASS_FORWARD]
+                                                     : rec->pass_ms[TL_PASS_LIGHTS] + rec->pass_ms[TL_PASS_LIGHTS_TILED]);
 }
 
 /* Reads the frame's images (into the reference buffers for fat) and measures the error. */
@@ -212,7 +251,7 @@ static int bench__images(tl_renderer *r, bench_record *rec, bench__frame_buffers
     size_t n = fb->pixels;
     if (tl_renderer_read_output(r, ldr, &(size_t){n * 4}) != TL_OK ||
         tl_renderer_read_target(r, TL_TARGET_HDR, hdr, &(size_t){n * 4 * sizeof(float)}) != TL_OK) {
-        tl_tool_fail(BENCH_TOOL, "%s: reading the images: %s", tl_render_mode_name(rec->mode),
+        tl_tool_fail(BENCH_TOOL, "%s: reading the images: %s", bench_config_name(rec->config),
                      tl_renderer_last_error(r));
         return 1;
     }
@@ -241,8 +280,8 @@ static bench_record *bench__append(bench_run *run)
 /* ---- the sweep ------------------------------------------------------------------------------ */
 
 typedef struct bench__size_state {
-    tl_renderer *renderers[BENCH_MODES];
-    bench__samples samples[BENCH_MODES];
+    tl_renderer *renderers[BENCH_CONFIGS];
+    bench__samples samples[BENCH_CONFIGS];
     double *sample_memory;
     bench__frame_buffers fb;
 } bench__size_state;
@@ -259,7 +298,7 @@ static void bench__size_release(bench__size_state *s, size_t modes)
 }
 
 static int bench__size_setup(bench_run *run, tl_context *ctx, const tl_scene *scene, bench_size size,
-                             const tl_render_mode *modes, size_t mode_count, bench__size_state *s)
+                             const bench_config *modes, size_t mode_count, bench__size_state *s)
 {
     memset(s, 0, sizeof *s);
     size_t n = (size_t)size.width * size.height;
@@ -282,13 +321,14 @@ static int bench__size_setup(bench_run *run, tl_context *ctx, const tl_scene *sc
         return 1;
     }
     for (size_t m = 0; m < mode_count; m++) {
-        tl_renderer_desc desc = {.mode = modes[m], .width = size.width, .height = size.height,
-                                 .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR), .synchronous_stats = 1,
+        tl_renderer_desc desc = {.mode = bench_config_mode(modes[m]), .light_strategy = bench_config_strategy(modes[m]),
+                                 .light_format = bench_config_light_format(modes[m]),
+                                 .width = size.width, .height = size.height, .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR), .synchronous_stats = 1,
                                  .get_proc_address = tl_context_proc_loader, .get_proc_address_user = ctx,
                                  .logger = tl_tool_logger(BENCH_TOOL)};
         if (tl_renderer_create(&desc, &s->renderers[m]) != TL_OK) return 1; /* the logger said why */
         if (tl_renderer_set_scene(s->renderers[m], scene) != TL_OK) {
-            tl_tool_fail(BENCH_TOOL, "%s: %s", tl_render_mode_name(modes[m]), tl_renderer_last_error(s->renderers[m]));
+            tl_tool_fail(BENCH_TOOL, "%s: %s", bench_config_name(modes[m]), tl_renderer_last_error(s->renderers[m]));
             return 1;
         }
     }
@@ -306,7 +346,7 @@ static void bench__count_types(const tl_light *lights, size_t count, bench_recor
 }
 
 /* One light count at one size: every mode's frames interleaved, then each mode's record. */
-static int bench__sweep_lights(bench_run *run, bench__size_state *s, const tl_render_mode *modes, size_t mode_count,
+static int bench__sweep_lights(bench_run *run, bench__size_state *s, const bench_config *modes, size_t mode_count,
                                bench_size size, uint32_t n, bench_scene *scene, tl_tool_progress *progress,
                                uint64_t *done)
 {
@@ -322,22 +362,24 @@ static int bench__sweep_lights(bench_run *run, bench__size_state *s, const tl_re
     bench_record *recs = &run->records[run->record_count - mode_count]; /* in the modes' order */
     for (size_t m = 0; m < mode_count; m++) {
         bench_record *rec = &recs[m];
-        rec->mode = modes[m];
-        rec->requested = bench_mode_requested(opt, modes[m]);
+        rec->config = modes[m];
+        rec->mode = bench_config_mode(modes[m]);
+        rec->strategy = bench_config_strategy(modes[m]);
+        rec->requested = bench_mode_requested(opt, rec->mode);
         rec->lights = n;
         rec->width = size.width;
         rec->height = size.height;
         rec->frames = opt->frames;
         bench__count_types(lights, count, rec);
         if (tl_renderer_set_lights(s->renderers[m], lights, count) != TL_OK) {
-            tl_tool_fail(BENCH_TOOL, "%s: %s", tl_render_mode_name(modes[m]), tl_renderer_last_error(s->renderers[m]));
+            tl_tool_fail(BENCH_TOOL, "%s: %s", bench_config_name(modes[m]), tl_renderer_last_error(s->renderers[m]));
             return 1;
         }
     }
     uint32_t total = opt->warmup + opt->frames;
     char label[96];
     for (uint32_t f = 0; f < total; f++) {
-        snprintf(label, sizeof label, "%ux%u, %u lights, frame %u/%u of %zu modes", size.width, size.height, n, f + 1,
+        snprintf(label, sizeof label, "%ux%u, %u lights, frame %u/%u of %zu configurations", size.width, size.height, n, f + 1,
                  total, mode_count);
         tl_tool_progress_update(progress, *done, label, f == 0);
         for (size_t m = 0; m < mode_count; m++, ++*done)
@@ -359,7 +401,7 @@ static int bench__sweep_size(bench_run *run, tl_context *ctx, bench_scene *scene
                              tl_tool_progress *progress, uint64_t *done)
 {
     const bench_options *opt = &run->opt;
-    tl_render_mode modes[BENCH_MODES];
+    bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(opt, modes);
     bench__size_state s;
     int err = bench__size_setup(run, ctx, bench_scene_get(scene), size, modes, mode_count, &s);
@@ -378,14 +420,16 @@ static int bench__check_memory(const bench_options *opt, const tl_scene *scene)
     double available = (double)pages * (double)page * 0.75;
     tl_scene_feature_set features;
     tl_scene_features(scene, &features);
-    tl_render_mode modes[BENCH_MODES];
+    bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(opt, modes);
     for (size_t si = 0; si < opt->size_count; si++) {
         bench_size size = opt->sizes[si];
         double bpp = 40.0;
         for (size_t m = 0; m < mode_count; m++) {
             tl_frame_plan plan;
-            tl_renderer_desc desc = {.mode = modes[m], .width = size.width, .height = size.height};
+            tl_renderer_desc desc = {.mode = bench_config_mode(modes[m]), .light_strategy = bench_config_strategy(modes[m]),
+                                     .light_format = bench_config_light_format(modes[m]),
+                                     .width = size.width, .height = size.height};
             if (tl_frame_plan_build(&desc, &features, &plan) == TL_OK) bpp += plan.bytes_per_pixel;
         }
         double need = bpp * size.width * size.height;
@@ -474,7 +518,7 @@ int bench_sweep(bench_run *run, bench_scene *scene)
     snprintf(run->gl_version, sizeof run->gl_version, "%s", tl_context_version_string(ctx));
     snprintf(run->context, sizeof run->context, "%s", tl_context_backend_name(tl_context_get_backend(ctx)));
     snprintf(run->context_platform, sizeof run->context_platform, "%s", tl_context_platform_string(ctx));
-    tl_render_mode modes[BENCH_MODES];
+    bench_config modes[BENCH_CONFIGS];
     uint64_t total = (uint64_t)opt->size_count * opt->light_count * bench_render_modes(opt, modes) *
                      (opt->warmup + opt->frames) +
                      (uint64_t)run->planning_count * 2 * (opt->warmup + opt->frames);

@@ -9,6 +9,7 @@
 #include "thinlight/context.h"
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
+#include "tool_effects.h"
 #include "tool_gl.h"
 #include "tool_log.h"
 #include "tool_util.h"
@@ -38,6 +39,7 @@ static const char *const usage =
     "  --stats               print per-pass GPU times and target bytes\n"
     "  --print-plan          print the frame plan: passes, inputs, outputs, targets, programs\n"
     "  --dump-targets DIR    write every intermediate target as EXR into DIR\n"
+    "%s"
     TL_TOOL_CONTEXT_HELP
     "  --help                this text\n"
     "An .exr output holds the HDR image before tone mapping; .png the final image. The context used\n"
@@ -47,7 +49,8 @@ static const char *const usage =
 
 static int bad_usage(const char *msg, const char *arg)
 {
-    fprintf(stderr, "thinlight-render: %s%s%s\n%s", msg, arg ? ": " : "", arg ? arg : "", usage);
+    fprintf(stderr, "thinlight-render: %s%s%s\n", msg, arg ? ": " : "", arg ? arg : "");
+    fprintf(stderr, usage, tl_tool_effects_help);
     return 2;
 }
 
@@ -97,9 +100,11 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
     }
     static const char *const names[TL_TARGET_COUNT] = {
         "depth",        "rt0_normal_gloss", "rt1_albedo", "light_diffuse", "light_specular", "fat_position",
-        "fat_normal",   "fat_albedo",       "fat_material", "hdr",         "ldr",            "output"};
+        "fat_normal",   "fat_albedo",       "fat_material", "hdr",         "ldr",            "output", NULL,
+        "ao_raw",       "ao",               "dof"};
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         size_t size = n * sizeof *buf;
+        if (!names[t]) continue; /* a storage buffer */
         if (tl_renderer_read_target(r, (tl_target_id)t, buf, &size) != TL_OK) continue; /* not allocated */
         char path[4096];
         snprintf(path, sizeof path, "%s/%s.exr", dir, names[t]);
@@ -217,14 +222,18 @@ static int parse_args(int argc, char **argv, render_args *a)
         const char *o = argv[i];
         int rc = 0;
         if (!strcmp(o, "--help") || !strcmp(o, "-h")) {
-            fputs(usage, stdout);
+            printf(usage, tl_tool_effects_help);
             return -1;
         } else if (!strcmp(o, "--stats")) a->stats = 1;
         else if (!strcmp(o, "--print-plan")) a->plan = 1;
         else if (!strcmp(o, "--list-devices")) a->list_devices = 1;
         else if (!strcmp(o, "--no-depth-prepass")) a->rd.forward_no_depth_prepass = 1;
         else if (!strcmp(o, "--no-directional")) a->sd.no_directional = 1;
-        else if (o[0] == '-' && strcmp(o, "-") != 0) {
+        else if ((rc = tl_tool_effect_option("thinlight-render", &a->rd, o, i + 1 < argc ? argv[i + 1] : NULL)) != 0) {
+            if (rc < 0) return 2;
+            i += rc - 1;
+            rc = 0;
+        } else if (o[0] == '-' && strcmp(o, "-") != 0) {
             if (i + 1 >= argc) return bad_usage("missing value for", o);
             rc = parse_value(a, o, argv[++i]);
         } else if (!a->scene) a->scene = o;

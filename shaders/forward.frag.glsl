@@ -13,6 +13,9 @@
 layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
+#ifdef TL_SSAO_AMBIENT
+layout(binding = TL_UNIT_AO) uniform sampler2D u_ao;
+#endif
 
 void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float power, inout vec3 diffuse, inout vec3 specular)
 {
@@ -52,7 +55,16 @@ void main()
 #ifdef TL_SPECULAR_NONE
     specular = vec3(0.0);
 #endif
+#ifdef TL_SSAO_AMBIENT
+    // SSAO (docs/effects.md): the ambient term, and with TL_SSAO_DIFFUSE the diffuse light
+    float ao = texelFetch(u_ao, ivec2(gl_FragCoord.xy), 0).r;
+#ifdef TL_SSAO_DIFFUSE
+    diffuse *= ao;
+#endif
+    vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + s.specular * specular + s.emissive;
+#else
     vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + s.specular * specular + s.emissive;
+#endif
 #ifdef TL_TRANSPARENT
     o_color = vec4(min(c, vec3(65504.0)), clamp(s.alpha, 0.0, 1.0));
 #else

@@ -19,6 +19,11 @@ layout(std140, binding = TL_UBO_FRAME) uniform tl_frame_block {
     float u_fxaa_edge_threshold_min;
     uvec4 u_tiles;        // tiled: tile side in pixels, tiles across, tiles down, list entries the buffer holds
     uvec4 u_light_counts; // visible lights: directional (first in the lights block), local after them
+    vec4 u_ssao;          // effects: radius, k_b, k_d, exponent
+    vec4 u_fog_color;     // rgb, density
+    vec4 u_fog;           // height, height falloff, noise, noise scale
+    vec4 u_effects;       // noise speed, camera time, focus distance, aperture
+    vec4 u_dof_params;    // largest CoC (fraction of the height), 0, 0, 0
 };
 
 #endif

@@ -53,12 +53,20 @@ void main()
     vec3 srgb = vec3(tl_linear_to_srgb1(s.albedo.r), tl_linear_to_srgb1(s.albedo.g), tl_linear_to_srgb1(s.albedo.b));
     uvec2 yc = tl_albedo_encode_pixel(1u, srgb, uvec2(gl_FragCoord.xy));
     uint spec = tl_unorm8(sqrt(clamp(tl_luminance(s.specular), 0.0, 1.0)));
+#ifdef TL_AO_STORE
+    o_rt1 = vec4(float(yc.x) / 255.0, float(yc.y) / 255.0, float(spec) / 255.0, s.occlusion); // for ssao-apply
+#else
     o_rt1 = vec4(float(yc.x), float(yc.y), float(spec), 0.0) / 255.0;
+#endif
 #endif
 #ifdef TL_OUT_FAT
     o_position = vec4(v_view_position, 1.0);
     o_normal = vec4(n, s.gloss);
+#ifdef TL_AO_STORE
+    o_albedo = vec4(s.albedo, s.occlusion); // for ssao-apply
+#else
     o_albedo = vec4(s.albedo, 1.0);
+#endif
 #ifdef TL_OUT_FAT_MATERIAL
     o_material = vec4(s.specular, 0.0);
 #endif

@@ -17,6 +17,8 @@ struct tl_tile_frustum {
     vec3 planes[4];
     float zmin, zmax; // distances along -Z
     vec4 sphere;
+    uint depth_mask;  // 2.5D culling: bit i set when a surface lies in the i-th of 32 slices of [zmin, zmax]
+    float slice_scale; // slices per unit of distance
 };
 
 vec3 tl_tile_point(vec2 ndc, float dist)
@@ -42,7 +44,14 @@ tl_tile_frustum tl_tile_frustum_make(vec2 ndc0, vec2 ndc1, float zmin, float zma
     }
     vec3 centre = 0.5 * (lo + hi);
     f.sphere = vec4(centre, length(hi - centre));
+    f.depth_mask = 0u;
+    f.slice_scale = 32.0 / max(zmax - zmin, 1.0e-6 * max(zmax, 1.0));
     return f;
+}
+
+uint tl_slice(tl_tile_frustum f, float dist)
+{
+    return uint(clamp((dist - f.zmin) * f.slice_scale, 0.0, 31.0));
 }
 
 // The per-light tests run twice (counting, then writing): `precise` keeps the compiler from
@@ -54,7 +63,12 @@ bool tl_sphere_in_tile(tl_tile_frustum f, vec3 c, float r)
         if (d < -r) return false;
     }
     precise float zn = -c.z + r, zf = -c.z - r;
-    return zn >= f.zmin && zf <= f.zmax;
+    if (!(zn >= f.zmin && zf <= f.zmax)) return false;
+    // 2.5D culling (Harada, "A 2.5D culling for Forward+", 2012): the slices the sphere spans
+    // against the slices that hold a surface of the tile
+    uint s0 = tl_slice(f, zf), s1 = tl_slice(f, zn);
+    uint mask = (0xFFFFFFFFu >> (31u - (s1 - s0))) << s0;
+    return (mask & f.depth_mask) != 0u;
 }
 
 // Spot cone against the tile's bounding sphere (Wronski, "Cull that cone", 2017).
@@ -115,6 +129,11 @@ void main()
     }
     vec2 ndc0 = vec2(p0) * u_inv_size * 2.0 - 1.0, ndc1 = vec2(p1) * u_inv_size * 2.0 - 1.0;
     tl_tile_frustum f = tl_tile_frustum_make(ndc0, ndc1, tl_distance(nearest), tl_distance(farthest));
+    for (int y = p0.y; y < p1.y; y++)
+        for (int x = p0.x; x < p1.x; x++) {
+            float d = texelFetch(u_depth, ivec2(x, y), 0).r;
+            if (d != u_clear_depth) f.depth_mask |= 1u << tl_slice(f, tl_distance(d));
+        }
     uint first = u_light_counts.x + chunk * uint(TL_CULL_CHUNK);
     uint last = min(first + uint(TL_CULL_CHUNK), u_light_counts.x + u_light_counts.y), n = 0u;
     for (uint i = first; i < last; i++) n += tl_light_in_tile(f, tl_lights[i]) ? 1u : 0u;

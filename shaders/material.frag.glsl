@@ -8,6 +8,9 @@ layout(binding = TL_UNIT_LIGHT_DIFFUSE) uniform sampler2D u_light_diffuse;
 layout(binding = TL_UNIT_LIGHT_SPECULAR) uniform sampler2D u_light_specular;
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
+#ifdef TL_SSAO_AMBIENT
+layout(binding = TL_UNIT_AO) uniform sampler2D u_ao;
+#endif
 
 vec3 tl_finite(vec3 c) // FP16 sums of many bright lights can reach Inf: keep targets finite
 {
@@ -32,6 +35,15 @@ void main()
     specular = lum > 1e-8 ? diffuse * (min(ld.a, 65504.0) / lum) : vec3(0.0);
 #endif
 #endif
+#ifdef TL_SSAO_AMBIENT
+    // SSAO (docs/effects.md): the ambient term, and with TL_SSAO_DIFFUSE the diffuse light
+    float ao = texelFetch(u_ao, ivec2(gl_FragCoord.xy), 0).r;
+#ifdef TL_SSAO_DIFFUSE
+    diffuse *= ao;
+#endif
+    vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + s.specular * specular + s.emissive;
+#else
     vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + s.specular * specular + s.emissive;
+#endif
     o_color = vec4(min(c, vec3(65504.0)), 1.0);
 }

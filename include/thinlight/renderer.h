@@ -105,6 +105,61 @@ typedef enum tl_fxaa_preset {
     TL_FXAA_COUNT_       /**< number of values */
 } tl_fxaa_preset;
 
+/** How screen-space ambient occlusion estimates occlusion (docs/effects.md). */
+typedef enum tl_ssao_method {
+    TL_SSAO_OFF = 0,    /**< no SSAO (default): no pass, no target */
+    TL_SSAO_DISC,       /**< the deferred-shading slides' estimator over a Poisson-disc set of screen-space
+                             neighbours p_i: AO = sum (1 - A B)^x / n, A = 1 - smoothstep(0, k_d, |p_i - p| - k_b),
+                             B = max(0, n . (p_i - p) / |p_i - p|) */
+    TL_SSAO_HEMISPHERE, /**< points in the normal-oriented hemisphere of the radius, occluded where the surface
+                             they project to lies in front of them; each weighted by A as above */
+    TL_SSAO_COUNT_      /**< number of values */
+} tl_ssao_method;
+
+/** Screen-space ambient occlusion from depth and RT0 (fat: its position and normal targets;
+ *  forward: normals rebuilt from the depth pre-pass). Zeroed: off. */
+typedef struct tl_ssao_desc {
+    tl_ssao_method method; /**< default OFF */
+    uint32_t samples;      /**< samples per pixel, 1..64; default 16 */
+    float radius;          /**< view-space radius of the neighbourhood; default 1 */
+    float bias;            /**< k_b: distance within which a neighbour occludes fully; default 0 */
+    float falloff;         /**< k_d: width of the smoothstep after k_b; default 2 x radius */
+    float exponent;        /**< x; default 3 */
+    uint32_t blur_radius;  /**< half-width in pixels of the depth-aware blur, 1..8; default 2 */
+    int diffuse;           /**< 1: AO also scales the diffuse light (default: the ambient term only) */
+} tl_ssao_desc;
+
+/** How fog density varies (docs/effects.md). */
+typedef enum tl_fog_mode {
+    TL_FOG_OFF = 0,  /**< no fog (default): no pass */
+    TL_FOG_DISTANCE, /**< constant density: transmittance exp(-density * distance) */
+    TL_FOG_HEIGHT,   /**< density * exp(-height_falloff * (y - height)), integrated along the view ray */
+    TL_FOG_COUNT_    /**< number of values */
+} tl_fog_mode;
+
+/** Fog from linear depth, blended over HDR: c = c T + colour (1 - T). Zeroed: off. */
+typedef struct tl_fog_desc {
+    tl_fog_mode mode;     /**< default OFF */
+    float color[3];       /**< linear radiance of the fog; default black */
+    float density;        /**< extinction per unit length (height fog: at y = height); default 0.05 */
+    float height;         /**< height fog: world y of the reference density; default 0 */
+    float height_falloff; /**< height fog: per unit of height; default 0.5 */
+    float noise;          /**< 0..1: fractal-noise modulation of the density (computed in the shader, drifting
+                               with the frame counter taken at 60 frames per second); default 0: none */
+    float noise_scale;    /**< noise: features per unit length; default 0.5 */
+    float noise_speed;    /**< noise: drift in units per second; default 0.3 */
+} tl_fog_desc;
+
+/** Depth of field: circle of confusion from linear depth, a gather blur in which sharp
+ *  foreground does not bleed onto blurred background. Zeroed: off. */
+typedef struct tl_dof_desc {
+    int enabled;          /**< 1: on */
+    float focus_distance; /**< view distance in focus; default: the camera's distance to its target */
+    float aperture;       /**< CoC radius at infinity as a fraction of the image height; default 0.01 */
+    float max_radius;     /**< largest CoC radius, fraction of the image height; default 2 x aperture */
+    uint32_t samples;     /**< gather taps, 8..128; default 48 */
+} tl_dof_desc;
+
 /** A GL entry point as a loader returns it. */
 typedef void (*tl_gl_function)(void);
 /** Loader for GL entry points, e.g. tl_context_proc_loader or a wrapper of glfwGetProcAddress. */
@@ -149,6 +204,9 @@ typedef struct tl_renderer_desc {
      *  its statistics describe that frame, as tl_renderer_wait does. Default 0: statistics come
      *  from a small ring of queries read a few frames later, and a frame never waits. */
     int synchronous_stats;
+    tl_ssao_desc ssao;                 /**< screen-space ambient occlusion; zeroed: off */
+    tl_fog_desc fog;                   /**< fog; zeroed: off */
+    tl_dof_desc dof;                   /**< depth of field; zeroed: off */
     tl_get_proc_address_fn get_proc_address; /**< required */
     void *get_proc_address_user;       /**< passed to get_proc_address */
     tl_allocator allocator;            /**< zeroed: malloc/free; every allocation of the renderer */
@@ -159,12 +217,18 @@ typedef struct tl_renderer_desc {
 typedef enum tl_pass {
     TL_PASS_DEPTH_PREPASS, /**< forward: depth only */
     TL_PASS_GBUFFER,       /**< thin or fat G-buffer (deferred modes also write emissive + ambient into HDR) */
+    TL_PASS_SSAO,          /**< SSAO estimator into ao.raw */
+    TL_PASS_SSAO_BLUR,     /**< depth-aware blur of ao.raw into ao */
+    TL_PASS_SSAO_APPLY,    /**< deferred modes: albedo x ambient x (1 - AO) taken from HDR */
     TL_PASS_LIGHT_CULL,    /**< tiled: per-tile depth bounds and light lists (compute) */
     TL_PASS_LIGHTS,        /**< light volumes: into the light buffer (thin-lpp) or shading into HDR */
     TL_PASS_LIGHTS_TILED,  /**< tiled: every pixel once, looping over its tile's lights */
     TL_PASS_MATERIAL,      /**< thin-lpp second geometry pass, depth EQUAL */
     TL_PASS_FORWARD,       /**< forward shading with per-object light lists */
     TL_PASS_TRANSPARENT,   /**< alpha-blended materials, forward-lit after the opaque frame */
+    TL_PASS_FOG,           /**< fog blended over HDR */
+    TL_PASS_DOF,           /**< depth of field: the gather blur of HDR into dof */
+    TL_PASS_DOF_APPLY,     /**< depth of field: dof copied into HDR */
     TL_PASS_TONEMAP,       /**< exposure, tone curve, sRGB encoding */
     TL_PASS_FXAA,          /**< FXAA, when it is on */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
@@ -186,6 +250,9 @@ typedef enum tl_target_id {
     TL_TARGET_OUTPUT,         /**< RGBA8 final image */
     TL_TARGET_LIGHT_LISTS,    /**< tiled: per-tile light lists (a storage buffer; its bytes per pixel are its
                                    size over the pixels, rounded up) */
+    TL_TARGET_AO_RAW,         /**< R16F SSAO estimate before the blur */
+    TL_TARGET_AO,             /**< R16F ambient occlusion (1 = open) */
+    TL_TARGET_DOF,            /**< RGBA16F depth-of-field image */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -292,7 +359,9 @@ typedef struct tl_frame_stats {
     double pass_bytes[TL_PASS_COUNT];   /**< estimate of bytes moved per pass (docs/bandwidth.md) */
     double bytes_moved;                 /**< sum of pass_bytes */
     double gpu_ms;                      /**< sum of pass_ms */
-    double cpu_ms;                      /**< CPU time the render call spent issuing commands (never waits) */
+    double cpu_ms;                      /**< CPU time of the calling thread in the render call, issuing commands
+                                             (thread CPU clock, before any wait for statistics; on llvmpipe it
+                                             includes Mesa's vertex processing and binning, which run there) */
     double wall_ms;                     /**< render call start to GPU done; synchronous statistics only, else 0 */
     size_t target_bytes[TL_TARGET_COUNT]; /**< bytes each allocated target occupies; 0 = not allocated */
     size_t gbuffer_bytes;               /**< depth + RT0 + RT1 + FAT_* */
@@ -363,8 +432,9 @@ typedef struct tl_render_output {
  * reads the last frame rendered with tl_renderer_render).
  *
  * The GL state it leaves, as after tl_renderer_render: framebuffer 0 bound for drawing and
- * reading, program 0, vertex array 0, no texture or sampler on the units it used, no uniform or
- * storage buffer on the binding points it used (0..3); blending, depth test, face culling,
+ * reading, program 0, vertex array 0, no texture or sampler on the units it used (0..20), no
+ * uniform or storage buffer on the binding points it used (0..4), no image on the image units it
+ * used (0..2); blending, depth test, face culling,
  * depth clamp, scissor and stencil tests off; depth mask and colour mask on; clip control
  * (GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE); the viewport is the output rectangle (render_to) or
  * the renderer's size (render). Other state is not touched.

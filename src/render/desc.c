@@ -1,5 +1,70 @@
 /* Renderer options with their defaults resolved (the one place a zeroed field becomes a value). */
+#include <math.h>
+#include <string.h>
+
 #include "plan_internal.h"
+
+static int tl__finite4(float a, float b, float c, float d) { return isfinite(a) && isfinite(b) && isfinite(c) && isfinite(d); }
+
+/* The effects' defaults (docs/effects.md); 0 for values out of range. An effect that is off keeps
+ * its zeroes, so that its other fields cannot change a plan. */
+static int tl__ssao_resolve(tl_ssao_desc *s)
+{
+    if ((unsigned)s->method >= TL_SSAO_COUNT_) return 0;
+    if (s->method == TL_SSAO_OFF) {
+        memset(s, 0, sizeof *s);
+        return 1;
+    }
+    if (!s->samples) s->samples = 16;
+    if (!(s->radius > 0.0f)) s->radius = 1.0f;
+    if (!(s->falloff > 0.0f)) s->falloff = 2.0f * s->radius;
+    if (!(s->exponent > 0.0f)) s->exponent = 3.0f;
+    if (!(s->bias > 0.0f)) s->bias = 0.0f;
+    if (!s->blur_radius) s->blur_radius = 2;
+    s->diffuse = s->diffuse != 0;
+    return s->samples <= 64 && s->blur_radius <= 8 && tl__finite4(s->radius, s->falloff, s->exponent, s->bias);
+}
+
+static int tl__fog_resolve(tl_fog_desc *f)
+{
+    if ((unsigned)f->mode >= TL_FOG_COUNT_) return 0;
+    if (f->mode == TL_FOG_OFF) {
+        memset(f, 0, sizeof *f);
+        return 1;
+    }
+    if (!(f->density > 0.0f)) f->density = 0.05f;
+    if (!(f->height_falloff > 0.0f)) f->height_falloff = 0.5f;
+    if (!(f->noise > 0.0f)) f->noise = 0.0f;
+    if (!(f->noise_scale > 0.0f)) f->noise_scale = 0.5f;
+    if (f->noise_speed == 0.0f) f->noise_speed = 0.3f;
+    for (int k = 0; k < 3; k++)
+        if (!(f->color[k] >= 0.0f) || !isfinite(f->color[k])) return 0;
+    return f->noise <= 1.0f && tl__finite4(f->density, f->height, f->height_falloff, f->noise_scale) &&
+           isfinite(f->noise_speed);
+}
+
+static int tl__dof_resolve(tl_dof_desc *f)
+{
+    if (!f->enabled) {
+        memset(f, 0, sizeof *f);
+        return 1;
+    }
+    f->enabled = 1;
+    if (!(f->focus_distance > 0.0f)) f->focus_distance = 0.0f; /* 0: the camera's target, per frame */
+    if (!(f->aperture > 0.0f)) f->aperture = 0.01f;
+    if (!(f->max_radius > 0.0f)) f->max_radius = 2.0f * f->aperture;
+    if (!f->samples) f->samples = 48;
+    return f->samples >= 8 && f->samples <= 128 && isfinite(f->focus_distance) && f->aperture <= 1.0f &&
+           f->max_radius <= 1.0f;
+}
+
+static tl_result tl__effects_resolve(tl_renderer_desc *d)
+{
+    int ok = tl__ssao_resolve(&d->ssao);
+    ok &= tl__fog_resolve(&d->fog);
+    ok &= tl__dof_resolve(&d->dof);
+    return ok ? TL_OK : TL_ERROR_INVALID_ARGUMENT;
+}
 
 tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc *d)
 {
@@ -29,5 +94,5 @@ tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc
     if (d->light_format == TL_LIGHT_FORMAT_R11G11B10F && d->light_buffer != TL_LIGHT_BUFFER_EXACT)
         return TL_ERROR_INVALID_ARGUMENT;
     if (d->width > TL__MAX_SIZE || d->height > TL__MAX_SIZE) return TL_ERROR_LIMIT;
-    return TL_OK;
+    return tl__effects_resolve(d);
 }

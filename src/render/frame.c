@@ -189,7 +189,7 @@ tl_result tl__frame(tl_renderer *r, const tl_camera *camera, const tl_render_out
     tl_result res = tl__view_setup(r, camera ? camera : &r->camera, &v);
     if (res != TL_OK) return res;
     if (!r->programs_ready && (res = tl__graph_programs(r)) != TL_OK) return res;
-    double t0 = tl__now_ms();
+    double t0 = tl__now_ms(), c0 = tl__thread_cpu_ms();
     int measure = stats || r->desc.synchronous_stats;
     uint64_t frame = ++r->frame_index;
     tl__query_slot *slot = measure ? tl__queries_slot(r, frame) : NULL;
@@ -199,7 +199,7 @@ tl_result tl__frame(tl_renderer *r, const tl_camera *camera, const tl_render_out
     r->frame_start_ms = t0;
     res = tl__issue(r, &v, out, rec, slot);
     if (res != TL_OK) return res;
-    rec->st.cpu_ms = tl__now_ms() - t0;
+    rec->st.cpu_ms = tl__thread_cpu_ms() - c0;
     tl__record_targets(r, &rec->st);
     r->last_measured = slot != NULL;
     if (slot) {

@@ -107,6 +107,13 @@ typedef struct tl__pass_def {
 /* What the light pass reads and writes in a mode, whichever strategy gathers the lights
  * (pass_lights.c; the tiled pass uses it too). */
 void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d);
+/* Forward shading has a depth pre-pass in this plan (pass_geometry.c). */
+int tl__forward_prepass(const tl__plan_input *in);
+/* SSAO in this plan (pass_ssao.c): 0 none, 1 read by the shading pass (material or forward), 2 taken
+ * from HDR by the ssao-apply pass (thin-deferred, fat); and the defines of a shading pass that
+ * samples it (" TL_SSAO_AMBIENT", " TL_SSAO_DIFFUSE", "" when it does not). */
+int tl__ssao_pass(const tl__plan_input *in);
+const char *tl__ssao_defines(const tl__plan_input *in, const tl__pass_decl *d);
 
 /* The table, in execution order; application passes go between its entries. */
 extern const tl__pass_def *const tl__pass_table[TL_PASS_COUNT];

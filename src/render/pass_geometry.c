@@ -24,7 +24,7 @@ static void tl__draw_opaque(tl_renderer *r, const tl__pass_ctx *ctx) { tl__draw_
 
 /* Forward+ (forward with tiled lights): the tiles' depth bounds come from the depth pre-pass. */
 static int tl__forward_plus(const tl__plan_input *in) { return in->lights && in->strategy == TL_LIGHT_STRATEGY_TILED; }
-static int tl__forward_prepass(const tl__plan_input *in) { return !in->d.forward_no_depth_prepass || tl__forward_plus(in); }
+int tl__forward_prepass(const tl__plan_input *in) { return !in->d.forward_no_depth_prepass || tl__forward_plus(in); }
 
 /* ---- depth pre-pass (forward) ---------------------------------------------------------------- */
 
@@ -68,9 +68,9 @@ static void tl__gbuffer_permute(const tl__plan_input *in, const tl__pass_decl *d
 {
     out->used[0] = 1;
     int colour = (d->writes & ~TL__B(DEPTH)) != 0;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", !colour ? "TL_DEPTH_ONLY"
-                                                        : (d->writes & TL__B(RT0)) ? in->rt0_define : "",
-             in->material_defines);
+    snprintf(out->slot[0], sizeof out->slot[0], "%s%s%s", !colour ? "TL_DEPTH_ONLY"
+                                                          : (d->writes & TL__B(RT0)) ? in->rt0_define : "",
+             in->material_defines, colour && tl__ssao_pass(in) == 2 ? " TL_AO_STORE" : "");
 }
 
 const tl__pass_def tl__pass_gbuffer = {
@@ -88,7 +88,7 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
     if (!in->mode->material_pass) return;
     d->writes = d->clears = TL__B(HDR);
-    d->samples = TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR); /* those the light pass writes */
+    d->samples = TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | (tl__ssao_pass(in) ? TL__B(AO) : 0u);
     d->reads = d->samples | TL__B(DEPTH);
     d->attach_depth = 1;
     d->state = tl__geometry_state(in, TL__DEPTH_EQUAL, 0, TL__BLEND_OFF);
@@ -97,8 +97,8 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",
-             in->material_defines);
+    snprintf(out->slot[0], sizeof out->slot[0], "%s%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",
+             in->material_defines, tl__ssao_defines(in, d));
 }
 
 const tl__pass_def tl__pass_material = {
@@ -118,6 +118,8 @@ static void tl__forward_declare(const tl__plan_input *in, tl__pass_decl *d)
     int prepass = tl__forward_prepass(in), plus = tl__forward_plus(in);
     d->writes = d->clears = TL__B(HDR) | (prepass ? 0u : TL__B(DEPTH));
     d->reads = (prepass ? TL__B(DEPTH) : 0u) | (plus ? TL__B(LIGHT_LISTS) : 0u);
+    d->samples = tl__ssao_pass(in) ? TL__B(AO) : 0u;
+    d->reads |= d->samples;
     d->attach_depth = 1;
     d->object_lights = !plus;
     d->state = tl__geometry_state(in, prepass ? TL__DEPTH_EQUAL : TL__DEPTH_LESS, !prepass, TL__BLEND_OFF);
@@ -126,8 +128,8 @@ static void tl__forward_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__forward_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_FORWARD%s %s%s", (d->reads & TL__B(LIGHT_LISTS)) ? " TL_FORWARD_TILED" : "",
-             in->spec_define, in->material_defines);
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_FORWARD%s %s%s%s", (d->reads & TL__B(LIGHT_LISTS)) ? " TL_FORWARD_TILED" : "",
+             in->spec_define, in->material_defines, tl__ssao_defines(in, d));
 }
 
 const tl__pass_def tl__pass_forward = {

@@ -44,6 +44,11 @@ typedef struct tl__frame_ubo {
     float fxaa_edge_threshold, fxaa_edge_threshold_min, pad[2];
     uint32_t tiles[4];        /* tile side, tiles across, tiles down, list entries the buffer holds */
     uint32_t light_counts[4]; /* visible directional lights (first), local lights after them */
+    float ssao[4];            /* effects (effects.c): radius, k_b, k_d, exponent */
+    float fog_color[4];       /* rgb, density */
+    float fog[4];             /* height, height falloff, noise, noise scale */
+    float effects[4];         /* noise speed, time, focus distance, aperture */
+    float dof[4];             /* largest CoC (fraction of the height), 0, 0, 0 */
 } tl__frame_ubo;
 
 /* std430 element of tl_object_buffer (shaders/object.glsl). */
@@ -79,6 +84,7 @@ struct tl__view {
     float clear_depth;
     float eye[3];
     float near_z;
+    float target_distance, time; /* the camera's distance to its target; seconds (frames at 60 Hz) */
     tl_view_info info;
 };
 
@@ -229,6 +235,8 @@ void tl__program_cache_destroy(tl_renderer *r);
 /* view.c: the camera's matrices and frustum; the per-frame uniform block. */
 tl_result tl__view_setup(tl_renderer *r, const tl_camera *c, tl__view *v);
 void tl__frame_ubo_fill(const tl_renderer *r, const tl__view *v, tl__frame_ubo *u);
+/* The effects' parameters in the frame block (effects.c). */
+void tl__frame_ubo_effects(const tl_renderer_desc *d, const tl__view *v, tl__frame_ubo *u);
 /* Only what full-screen post passes read (sizes, exposure, FXAA), for work outside a frame. */
 void tl__frame_ubo_post(const tl_renderer *r, tl__frame_ubo *u);
 
@@ -263,6 +271,7 @@ void tl__tiles_collect(tl_renderer *r, const uint64_t *results, tl_frame_stats *
 
 /* stats.c: the query ring and the bytes-moved estimate. */
 double tl__now_ms(void);
+double tl__thread_cpu_ms(void); /* CPU time of the calling thread (CLOCK_THREAD_CPUTIME_ID) */
 void tl__queries_create(tl_renderer *r);
 void tl__queries_destroy(tl_renderer *r);
 /* The ring slot for `frame`, read first (blocking) if it still holds an unread frame. */

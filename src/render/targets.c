@@ -17,6 +17,9 @@ const tl__target_def tl__targets[TL_TARGET_COUNT] = {
     [TL_TARGET_LDR] = {"ldr", "LDR", GL_RGBA8, 0},
     [TL_TARGET_OUTPUT] = {"output", "OUTPUT", GL_RGBA8, 0},
     [TL_TARGET_LIGHT_LISTS] = {"light.lists", "LIGHT_LISTS", 0, 1, 1},
+    [TL_TARGET_AO_RAW] = {"ao.raw", "AO_RAW", GL_R16F, 0},
+    [TL_TARGET_AO] = {"ao", "AO", GL_R16F, 0},
+    [TL_TARGET_DOF] = {"dof", "DOF", GL_RGBA16F, 0},
 };
 
 size_t tl__light_lists_bytes(size_t tiles) { return 16u + 8u * tiles + 4u * TL__TILE_START_ENTRIES * tiles; }

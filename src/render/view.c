@@ -48,6 +48,9 @@ tl_result tl__view_setup(tl_renderer *r, const tl_camera *c, tl__view *v)
     v->clear_depth = tl__reversed(r) ? 0.0f : 1.0f;
     memcpy(v->eye, c->position, sizeof v->eye);
     v->near_z = near_z;
+    float dx = c->target[0] - c->position[0], dy = c->target[1] - c->position[1], dz = c->target[2] - c->position[2];
+    v->target_distance = sqrtf(dx * dx + dy * dy + dz * dz);
+    v->time = (float)(r->frame_index % 3600000u) / 60.0f; /* the frame counter at 60 Hz */
     tl__view_info(r, c, v);
     return TL_OK;
 }
@@ -89,4 +92,5 @@ void tl__frame_ubo_fill(const tl_renderer *r, const tl__view *v, tl__frame_ubo *
         u->light_counts[0] = (uint32_t)r->view_dir_count;
         u->light_counts[1] = (uint32_t)(r->view_light_count - r->view_dir_count);
     }
+    tl__frame_ubo_effects(&r->desc, v, u);
 }

@@ -253,10 +253,14 @@ static void check_promised_state(const GladGLContext *gl, const GLint viewport[4
         bad += v != 0;
     }
     gl->ActiveTexture(GL_TEXTURE0);
-    for (GLuint i = 0; i < 3; i++) {
+    for (GLuint i = 0; i < 5; i++) {
         gl->GetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, i, &v);
         bad += v != 0;
         gl->GetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, i, &v);
+        bad += v != 0;
+    }
+    for (GLuint i = 0; i < 3; i++) {
+        gl->GetIntegeri_v(GL_IMAGE_BINDING_NAME, i, &v);
         bad += v != 0;
     }
     gl->GetIntegerv(GL_VIEWPORT, vp);
@@ -285,10 +289,16 @@ TL_TEST(frame_graph_render_to_state_promise)
     gl.CreateFramebuffers(1, &out_fbo);
     gl.NamedFramebufferTexture(out_fbo, GL_COLOR_ATTACHMENT0, out_tex, 0);
     const tl_depth_format depths[2] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
+    /* volumes; tiled with the fragment pass (D24) and the compute pass (reversed D32F): the storage
+     * buffers and image units of the tiled passes are unbound too */
     for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++)
-        for (int dz = 0; dz < 2; dz++) {
+        for (int k = 0; k < 4; k++) {
+            int dz = k % 2;
+            tl_light_strategy ls = k < 2 ? TL_LIGHT_STRATEGY_VOLUMES : TL_LIGHT_STRATEGY_TILED;
             tl_renderer *r = renderer((tl_renderer_desc){.mode = (tl_render_mode)mode, .depth_format = depths[dz],
-                                                         .width = 96, .height = 64},
+                                                         .width = 96, .height = 64, .light_strategy = ls,
+                                                         .tiled_shading = dz ? TL_TILED_SHADING_COMPUTE
+                                                                             : TL_TILED_SHADING_FRAGMENT},
                                       NULL, s);
             if (!r) continue;
             scramble_state(&gl, fbo, tex, vao, buf);

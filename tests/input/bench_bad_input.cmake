@@ -8,25 +8,30 @@ cmake_minimum_required(VERSION 3.25)
 include(${CMAKE_CURRENT_LIST_DIR}/../common/cli_checks.cmake)
 
 function(check_bad_usage)
+  # pairs: the arguments ('|' between them), what the case is
   set(cases
     "--no-such-flag" "unknown option"
     "stray" "unexpected argument"
     "--lights" "--lights without a value"
-    "--lights;5000" "more than 4096 lights"
-    "--lights;8,,64" "empty item in --lights"
-    "--lights;eight" "not a count"
-    "--size;20000x10" "size over 16384"
-    "--size;0x10" "zero size"
-    "--size;12by3" "malformed size"
-    "--modes;thin-lpp,bogus" "unknown mode"
-    "--frames;0" "zero frames"
-    "--out;${WORK}/out;--lights;-1" "negative light count"
-    "--doc;${WORK}/doc.md" "--doc without --out")
+    "--lights|70000" "more than 65536 lights"
+    "--lights|8,,64" "empty item in --lights"
+    "--lights|eight" "not a count"
+    "--size|20000x10" "size over 16384"
+    "--size|0x10" "zero size"
+    "--size|12by3" "malformed size"
+    "--modes|thin-lpp,bogus" "unknown mode"
+    "--strategies|tiled,clustered" "unknown light strategy"
+    "--strategies" "--strategies without a value"
+    "--light-formats|rgba16f,rgb9e5" "unknown light buffer format"
+    "--frames|0" "zero frames"
+    "--out|${WORK}/out|--lights|-1" "negative light count"
+    "--doc|${WORK}/doc.md" "--doc without --out")
   list(LENGTH cases n)
   math(EXPR last "${n} - 1")
   foreach(i RANGE 0 ${last} 2)
     math(EXPR j "${i} + 1")
     list(GET cases ${i} args)
+    string(REPLACE "|" ";" args "${args}") # each case's arguments are '|'-separated
     list(GET cases ${j} what)
     run_tool(${args} --json "${WORK}/x.json")
     expect_exit(2 "${what}")

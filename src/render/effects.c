@@ -1,0 +1,26 @@
+/* The screen-space effects' per-frame parameters (docs/effects.md): the resolved options of SSAO,
+ * fog and depth of field, with the camera's time and focus, into the frame's uniform block. */
+#include <string.h>
+
+#include "renderer_internal.h"
+
+void tl__frame_ubo_effects(const tl_renderer_desc *d, const tl__view *v, tl__frame_ubo *u)
+{
+    const tl_ssao_desc *s = &d->ssao;
+    const tl_fog_desc *f = &d->fog;
+    u->ssao[0] = s->radius;
+    u->ssao[1] = s->bias;
+    u->ssao[2] = s->falloff;
+    u->ssao[3] = s->exponent;
+    memcpy(u->fog_color, f->color, sizeof f->color);
+    u->fog_color[3] = f->density;
+    u->fog[0] = f->height;
+    u->fog[1] = f->height_falloff;
+    u->fog[2] = f->noise;
+    u->fog[3] = f->noise_scale;
+    u->effects[0] = f->noise_speed;
+    u->effects[1] = v->time;
+    u->effects[2] = d->dof.focus_distance > 0.0f ? d->dof.focus_distance : v->target_distance;
+    u->effects[3] = d->dof.aperture;
+    u->dof[0] = d->dof.max_radius;
+}

@@ -1,0 +1,414 @@
+/* Screen-space effects (issue 14, docs/effects.md): an effect that is off plans nothing; SSAO on an
+ * open plane (AO = 1 within the normals' quantisation), at a 90-degree inner corner (darker, by a
+ * bounded amount, and exactly open beyond k_b + k_d from the wall), finite on 1x1 and 7x3 targets
+ * and with reversed D32F at 1:10^7; fog at a known distance against exp(-density d) in double and
+ * at an infinite far plane; depth of field leaving its focus plane bit for bit. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "render_fixture.h"
+#include "thinlight/codec.h"
+#include "thinlight/renderer.h"
+#include "thinlight/scene.h"
+#include "tl_test.h"
+
+#define BIT(t) TL_TARGET_BIT(t)
+
+/* ---- scenes of quads ----------------------------------------------------------------------------- */
+
+typedef struct quads {
+    tl_vertex v[32];
+    uint32_t idx[48];
+    tl_object obj[1];
+    tl_material mat[1];
+    tl_light light[1];
+    tl_scene s;
+    size_t nv, ni;
+} quads;
+
+/* A quad o + a du + b dv, a, b in [0, 1]; its normal du x dv faces the camera. */
+static void quad(quads *q, const float o[3], const float du[3], const float dv[3])
+{
+    float n[3] = {du[1] * dv[2] - du[2] * dv[1], du[2] * dv[0] - du[0] * dv[2], du[0] * dv[1] - du[1] * dv[0]};
+    float l = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    uint32_t b = (uint32_t)q->nv;
+    for (int i = 0; i < 4; i++) {
+        float a = (float)(i == 1 || i == 2), c = (float)(i >= 2);
+        tl_vertex *x = &q->v[q->nv++];
+        memset(x, 0, sizeof *x);
+        for (int k = 0; k < 3; k++) {
+            x->position[k] = o[k] + a * du[k] + c * dv[k];
+            x->normal[k] = n[k] / l;
+        }
+    }
+    const uint32_t t[6] = {0, 1, 2, 0, 2, 3};
+    for (int i = 0; i < 6; i++) q->idx[q->ni++] = b + t[i];
+}
+
+static void quads_finish(quads *q, const tl_camera *cam)
+{
+    q->obj[0] = (tl_object){0, (uint32_t)q->ni, 0, {0}, {-1000, -1000, -1000}, {1000, 1000, 1000}};
+    const float id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    memcpy(q->obj[0].transform, id, sizeof id);
+    q->mat[0] = (tl_material){.alpha = 1.0f, .albedo = {0.5f, 0.5f, 0.5f}, .albedo_texture = TL_NO_TEXTURE,
+                              .normal_texture = TL_NO_TEXTURE, .metallic_roughness_texture = TL_NO_TEXTURE,
+                              .emissive_texture = TL_NO_TEXTURE, .occlusion_texture = TL_NO_TEXTURE};
+    q->s.vertices = q->v;
+    q->s.vertex_count = q->nv;
+    q->s.indices = q->idx;
+    q->s.index_count = q->ni;
+    q->s.objects = q->obj;
+    q->s.object_count = 1;
+    q->s.materials = q->mat;
+    q->s.material_count = 1;
+    q->s.ambient[0] = q->s.ambient[1] = q->s.ambient[2] = 1.0f;
+    q->s.camera = *cam;
+}
+
+/* Floor y = 0 over [-100, 100]^2, seen from (0, 2, 6). */
+static void plane_scene(quads *q)
+{
+    memset(q, 0, sizeof *q);
+    quad(q, (float[3]){-100, 0, 100}, (float[3]){200, 0, 0}, (float[3]){0, 0, -200});
+    quads_finish(q, &(tl_camera){{0, 2, 6}, {0, 0, 0}, {0, 1, 0}, 1.0f, 0.1f, 0.0f});
+}
+
+/* Floor y = 0 and a wall z = -2 facing +z: an inner corner along y = 0, z = -2. */
+static void corner_scene(quads *q)
+{
+    memset(q, 0, sizeof *q);
+    quad(q, (float[3]){-40, 0, 40}, (float[3]){80, 0, 0}, (float[3]){0, 0, -42});
+    quad(q, (float[3]){-40, 0, -2}, (float[3]){80, 0, 0}, (float[3]){0, 40, 0});
+    quads_finish(q, &(tl_camera){{0, 3, 6}, {0, 0, -2}, {0, 1, 0}, 1.0f, 0.1f, 0.0f});
+}
+
+/* A wall z = -dist facing the camera at the origin, filling the view. */
+static void wall_scene(quads *q, float dist)
+{
+    memset(q, 0, sizeof *q);
+    quad(q, (float[3]){-4 * dist, -4 * dist, -dist}, (float[3]){8 * dist, 0, 0}, (float[3]){0, 8 * dist, 0});
+    quads_finish(q, &(tl_camera){{0, 0, 0}, {0, 0, -dist}, {0, 1, 0}, 1.0f, 0.1f, 0.0f});
+}
+
+/* ---- rendering and readback ---------------------------------------------------------------------- */
+
+static tl_renderer *render(const tl_scene *s, tl_renderer_desc d)
+{
+    if (!ensure_context()) return NULL;
+    d.keep_targets = TL_TARGETS_ALL;
+    d.get_proc_address = tl_context_proc_loader;
+    d.get_proc_address_user = g_ctx;
+    d.logger = tl_test_logger;
+    tl_renderer *r = NULL;
+    if (tl_renderer_create(&d, &r) != TL_OK) return NULL;
+    if (tl_renderer_set_scene(r, s) != TL_OK || tl_renderer_render(r, NULL, NULL) != TL_OK ||
+        tl_renderer_wait(r, NULL) != TL_OK) {
+        tl_renderer_destroy(r);
+        return NULL;
+    }
+    return r;
+}
+
+/* RGBA float pixels of a target, rows bottom-up; NULL when it cannot be read. */
+static float *read_target(tl_renderer *r, tl_target_id id, size_t n)
+{
+    size_t size = n * 4 * sizeof(float);
+    float *p = malloc(size);
+    if (p && tl_renderer_read_target(r, id, p, &size) != TL_OK) {
+        free(p);
+        return NULL;
+    }
+    return p;
+}
+
+/* The pixel a world point falls in (camera and projection as the renderer builds them); 0 when it
+ * is outside the image. */
+static int project(const tl_camera *c, uint32_t w, uint32_t h, const double p[3], int *x, int *y)
+{
+    double f[3], s[3], u[3], d[3];
+    for (int k = 0; k < 3; k++) f[k] = (double)c->target[k] - c->position[k];
+    double fl = sqrt(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
+    for (int k = 0; k < 3; k++) f[k] /= fl;
+    s[0] = -f[2], s[1] = 0.0, s[2] = f[0]; /* f x (0, 1, 0) */
+    double sl = sqrt(s[0] * s[0] + s[2] * s[2]);
+    s[0] /= sl, s[2] /= sl;
+    u[0] = s[1] * f[2] - s[2] * f[1], u[1] = s[2] * f[0] - s[0] * f[2], u[2] = s[0] * f[1] - s[1] * f[0];
+    for (int k = 0; k < 3; k++) d[k] = p[k] - c->position[k];
+    double vx = s[0] * d[0] + s[1] * d[1] + s[2] * d[2], vy = u[0] * d[0] + u[1] * d[1] + u[2] * d[2];
+    double vz = f[0] * d[0] + f[1] * d[1] + f[2] * d[2]; /* distance along the view axis */
+    double t = tan(0.5 * c->fov_y), aspect = (double)w / h;
+    double nx = vx / (vz * t * aspect), ny = vy / (vz * t);
+    *x = (int)floor((nx * 0.5 + 0.5) * w);
+    *y = (int)floor((ny * 0.5 + 0.5) * h);
+    return vz > 0.0 && *x >= 0 && *y >= 0 && *x < (int)w && *y < (int)h;
+}
+
+static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
+static const tl_depth_format depths[] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
+
+/* ---- planning ------------------------------------------------------------------------------------ */
+
+static int plan_has_effects(const tl_frame_plan *p)
+{
+    for (size_t i = 0; i < p->pass_count; i++) {
+        tl_pass id = p->passes[i].pass;
+        if (id == TL_PASS_SSAO || id == TL_PASS_SSAO_BLUR || id == TL_PASS_SSAO_APPLY || id == TL_PASS_FOG ||
+            id == TL_PASS_DOF || id == TL_PASS_DOF_APPLY)
+            return 1;
+    }
+    for (size_t k = 0; k < p->program_count; k++)
+        if (strstr(p->programs[k].defines, "SSAO") || strstr(p->programs[k].defines, "TL_AO_STORE")) return 1;
+    return (p->targets & (BIT(TL_TARGET_AO_RAW) | BIT(TL_TARGET_AO) | BIT(TL_TARGET_DOF))) != 0;
+}
+
+/* Effects off: no pass, target or define, and the other fields of an effect that is off change
+ * nothing; each effect on adds its passes and exactly its targets' bytes. */
+TL_TEST(effects_off_plan_nothing_on_plan_their_passes)
+{
+    tl_scene_feature_set f = {.point_lights = 2, .directional_lights = 1, .has_specular = 1};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        tl_renderer_desc d = {.width = 64, .height = 32, .mode = modes[m]};
+        tl_frame_plan base, noise, on;
+        TL_CHECK(tl_frame_plan_build(&d, &f, &base) == TL_OK);
+        TL_CHECK(!plan_has_effects(&base));
+        tl_renderer_desc n = d;
+        n.ssao = (tl_ssao_desc){.samples = 9, .radius = 3, .exponent = 2};
+        n.fog = (tl_fog_desc){.density = 1, .noise = 0.5f};
+        n.dof = (tl_dof_desc){.aperture = 0.5f, .samples = 9};
+        TL_CHECK(tl_frame_plan_build(&n, &f, &noise) == TL_OK);
+        TL_CHECK(memcmp(&base, &noise, sizeof base) == 0);
+        tl_renderer_desc e = d;
+        e.ssao.method = TL_SSAO_DISC;
+        TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
+        TL_CHECK((on.targets & BIT(TL_TARGET_AO)) && (on.targets & BIT(TL_TARGET_AO_RAW)));
+        TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel + 4u); /* ao.raw and ao, R16F */
+        e = d;
+        e.fog.mode = TL_FOG_HEIGHT;
+        TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
+        TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel);
+        TL_CHECK(plan_has_effects(&on));
+        e = d;
+        e.dof.enabled = 1;
+        TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
+        TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel + 8u);
+        /* forward without a depth pre-pass has no depth to estimate from: no SSAO */
+        e = d;
+        e.ssao.method = TL_SSAO_DISC;
+        e.forward_no_depth_prepass = 1;
+        TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
+        if (modes[m] == TL_MODE_FORWARD) TL_CHECK(!(on.targets & BIT(TL_TARGET_AO)));
+    }
+    tl_renderer_desc bad = {.width = 8, .height = 8, .ssao = {.method = TL_SSAO_DISC, .samples = 65}};
+    tl_frame_plan p;
+    TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
+    bad = (tl_renderer_desc){.width = 8, .height = 8, .fog = {.mode = TL_FOG_DISTANCE, .noise = 2.0f}};
+    TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
+}
+
+/* ---- SSAO ---------------------------------------------------------------------------------------- */
+
+#define W 160
+#define H 90
+
+/* The open plane: every AO value of a floor pixel is 1 within OPEN_TOL. Thin and forward normals
+ * are off by up to about 2e-3 rad (12-bit octahedral, or cross products of D24 positions), so
+ * B <= 2e-3 and (1 - B)^3 >= 0.994; the hemisphere's sample points sit at least 0.031 radius
+ * above the plane, far above the depth and normal error. */
+#define OPEN_TOL 0.01
+
+TL_TEST(ssao_open_plane_is_one)
+{
+    quads q;
+    plane_scene(&q);
+    for (int method = TL_SSAO_DISC; method <= TL_SSAO_HEMISPHERE; method++)
+        for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
+            for (size_t z = 0; z < 2; z++) {
+                tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m], .depth_format = depths[z]};
+                d.ssao.method = (tl_ssao_method)method;
+                tl_renderer *r = render(&q.s, d);
+                TL_CHECK(r);
+                if (!r) continue;
+                float *ao = read_target(r, TL_TARGET_AO, (size_t)W * H), *raw = read_target(r, TL_TARGET_AO_RAW, (size_t)W * H);
+                TL_CHECK(ao && raw);
+                double lo = 1.0;
+                for (size_t i = 0; ao && raw && i < (size_t)W * H; i++) {
+                    lo = fmin(lo, fmin(ao[i * 4], raw[i * 4]));
+                    TL_CHECK(isfinite(ao[i * 4]) && ao[i * 4] <= 1.0f);
+                }
+                printf("  open plane, %s, %s, depth %d: lowest AO %.5f\n", method == TL_SSAO_DISC ? "disc" : "hemisphere",
+                       tl_render_mode_name(modes[m]), (int)depths[z], lo);
+                TL_CHECK(lo >= 1.0 - OPEN_TOL);
+                free(ao);
+                free(raw);
+                tl_renderer_destroy(r);
+            }
+}
+
+/* The corner: floor pixels at the foot of the wall are darker than the open plane, by a bounded
+ * amount (AO in [0.25, 0.95]); floor pixels farther from the wall than k_b + k_d (plus the blur's
+ * reach) see only neighbours with A = 0 and stay open. */
+TL_TEST(ssao_inner_corner_darkens_bounded)
+{
+    quads q;
+    corner_scene(&q);
+    const float radius = 0.5f;
+    for (int method = TL_SSAO_DISC; method <= TL_SSAO_HEMISPHERE; method++)
+        for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+            tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m]};
+            d.ssao = (tl_ssao_desc){.method = (tl_ssao_method)method, .radius = radius, .falloff = radius};
+            tl_renderer *r = render(&q.s, d);
+            TL_CHECK(r);
+            if (!r) continue;
+            float *ao = read_target(r, TL_TARGET_AO, (size_t)W * H);
+            TL_CHECK(ao);
+            double corner = 1.0, open = 1.0;
+            for (int k = 0; ao && k <= 40; k++) {
+                double dist = 0.02 + 0.1 * k, p[3] = {0.0, 0.0, -2.0 + dist};
+                int x, y;
+                if (!project(&q.s.camera, W, H, p, &x, &y)) continue;
+                double a = ao[((size_t)y * W + x) * 4];
+                if (dist < 0.1) corner = fmin(corner, a);
+                if (dist > 2.0 * radius + 0.3) open = fmin(open, a);
+            }
+            printf("  corner, %s, %s: AO at the foot of the wall %.4f, beyond k_b + k_d %.5f\n",
+                   method == TL_SSAO_DISC ? "disc" : "hemisphere", tl_render_mode_name(modes[m]), corner, open);
+            TL_CHECK(corner <= 0.95 && corner >= 0.25);
+            TL_CHECK(open >= 1.0 - OPEN_TOL);
+            free(ao);
+            tl_renderer_destroy(r);
+        }
+}
+
+/* Every effect on at once, on tiny targets and with reversed D32F at near 1e-3, far 1e4 (1:10^7)
+ * and an infinite far plane: AO in [0, 1] and HDR finite everywhere. */
+TL_TEST(effects_finite_tiny_targets_and_extreme_depth)
+{
+    quads q;
+    corner_scene(&q);
+    const uint32_t sizes[3][2] = {{1, 1}, {7, 3}, {W, H}};
+    const float fars[2] = {1e4f, 0.0f};
+    for (size_t s = 0; s < 3; s++)
+        for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
+            for (size_t fi = 0; fi < 2; fi++) {
+                q.s.camera.near_z = 1e-3f;
+                q.s.camera.far_z = fars[fi];
+                tl_renderer_desc d = {.width = sizes[s][0], .height = sizes[s][1], .mode = modes[m],
+                                      .depth_format = TL_DEPTH_FORMAT_D32F_REVERSED};
+                d.ssao.method = fi ? TL_SSAO_HEMISPHERE : TL_SSAO_DISC;
+                d.fog = (tl_fog_desc){.mode = fi ? TL_FOG_HEIGHT : TL_FOG_DISTANCE, .noise = 0.5f, .color = {1, 1, 1}};
+                d.dof.enabled = 1;
+                tl_renderer *r = render(&q.s, d);
+                TL_CHECK(r);
+                if (!r) continue;
+                size_t n = (size_t)d.width * d.height, bad = 0;
+                float *ao = read_target(r, TL_TARGET_AO, n), *hdr = read_target(r, TL_TARGET_HDR, n);
+                TL_CHECK(ao && hdr);
+                for (size_t i = 0; ao && hdr && i < n; i++) {
+                    bad += !(ao[i * 4] >= 0.0f && ao[i * 4] <= 1.0f);
+                    for (int c = 0; c < 4; c++) bad += !isfinite(hdr[i * 4 + c]);
+                }
+                if (bad) printf("  %ux%u %s far %g: %zu bad values\n", d.width, d.height, tl_render_mode_name(modes[m]),
+                                (double)fars[fi], bad);
+                TL_CHECK(bad == 0);
+                free(ao);
+                free(hdr);
+                tl_renderer_destroy(r);
+            }
+}
+
+/* ---- fog ----------------------------------------------------------------------------------------- */
+
+/* A wall at distance 20 facing the camera, ambient only: with distance fog each pixel's HDR is
+ * c T + fog (1 - T), T = exp(-density d), d the pixel centre's distance computed in double; within
+ * FP16 rounding of the stored values (two stores) and the depth format's error. The background of
+ * an infinite far plane is the fog colour (T = 0), finite. */
+TL_TEST(fog_known_depth_matches_formula_infinite_far_finite)
+{
+    quads q;
+    const float dist = 20.0f, fog[3] = {0.5f, 0.25f, 2.0f}, density = 0.05f;
+    wall_scene(&q, dist);
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
+        for (size_t z = 0; z < 2; z++) {
+            tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m], .depth_format = depths[z]};
+            tl_renderer *plain = render(&q.s, d);
+            d.fog = (tl_fog_desc){.mode = TL_FOG_DISTANCE, .density = density, .color = {fog[0], fog[1], fog[2]}};
+            tl_renderer *fogged = render(&q.s, d);
+            TL_CHECK(plain && fogged);
+            if (!plain || !fogged) continue;
+            float *a = read_target(plain, TL_TARGET_HDR, (size_t)W * H), *b = read_target(fogged, TL_TARGET_HDR, (size_t)W * H);
+            TL_CHECK(a && b);
+            double worst = 0.0, t = tan(0.5), aspect = (double)W / H;
+            for (int y = 0; a && b && y < H; y++)
+                for (int x = 0; x < W; x++) {
+                    double nx = (x + 0.5) / W * 2.0 - 1.0, ny = (y + 0.5) / H * 2.0 - 1.0;
+                    double dd = dist * sqrt(1.0 + nx * nx * t * t * aspect * aspect + ny * ny * t * t);
+                    double tr = exp(-density * dd);
+                    for (int c = 0; c < 3; c++) {
+                        size_t i = ((size_t)y * W + x) * 4 + c;
+                        double want = a[i] * tr + fog[c] * (1.0 - tr);
+                        double tol = 2.0 * want * TL_HALF_REL_STEP + 1e-5;
+                        worst = fmax(worst, fabs(b[i] - want) / tol);
+                    }
+                }
+            printf("  fog, %s, depth %d: worst error %.3f of the tolerance\n", tl_render_mode_name(modes[m]),
+                   (int)depths[z], worst);
+            TL_CHECK(worst <= 1.0);
+            free(a);
+            free(b);
+            tl_renderer_destroy(plain);
+            tl_renderer_destroy(fogged);
+        }
+    /* looking away from the wall: background at the infinite far plane */
+    q.s.camera.target[2] = 10.0f;
+    tl_renderer *r = render(&q.s, (tl_renderer_desc){.width = 8, .height = 8, .fog = {.mode = TL_FOG_DISTANCE, .color = {fog[0], fog[1], fog[2]}}});
+    float *h = r ? read_target(r, TL_TARGET_HDR, 64) : NULL;
+    TL_CHECK(h);
+    for (size_t i = 0; h && i < 64; i++)
+        for (int c = 0; c < 3; c++) TL_CHECK(fabs(h[i * 4 + c] - fog[c]) <= fog[c] * TL_HALF_REL_STEP);
+    free(h);
+    tl_renderer_destroy(r);
+}
+
+/* ---- depth of field ------------------------------------------------------------------------------ */
+
+/* The wall at the focus distance (the camera's target): every pixel's CoC is below half a pixel,
+ * no tap reaches another pixel, HDR is unchanged bit for bit. Focused nearer, the same wall is
+ * blurred: some pixel changes. A light makes the wall's shading vary across the image. */
+TL_TEST(dof_focus_plane_unchanged)
+{
+    quads q;
+    wall_scene(&q, 10.0f);
+    q.light[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {1, 1, -9}, .color = {4, 4, 4}, .radius = 3};
+    q.s.lights = q.light;
+    q.s.light_count = 1;
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m]};
+        tl_renderer *plain = render(&q.s, d);
+        d.dof = (tl_dof_desc){.enabled = 1, .aperture = 0.02f};
+        tl_renderer *focused = render(&q.s, d);
+        d.dof.focus_distance = 5.0f;
+        tl_renderer *near = render(&q.s, d);
+        TL_CHECK(plain && focused && near);
+        if (!plain || !focused || !near) continue;
+        size_t n = (size_t)W * H;
+        float *a = read_target(plain, TL_TARGET_HDR, n), *b = read_target(focused, TL_TARGET_HDR, n),
+              *c = read_target(near, TL_TARGET_HDR, n);
+        TL_CHECK(a && b && c);
+        size_t changed = 0, blurred = 0;
+        for (size_t i = 0; a && b && c && i < n * 4; i++) {
+            changed += memcmp(&a[i], &b[i], sizeof a[i]) != 0;
+            blurred += fabsf(a[i] - c[i]) > 1e-3f;
+        }
+        printf("  dof, %s: %zu values changed in focus, %zu out of focus\n", tl_render_mode_name(modes[m]), changed, blurred);
+        TL_CHECK(changed == 0);
+        TL_CHECK(blurred > 0);
+        free(a);
+        free(b);
+        free(c);
+        tl_renderer_destroy(plain);
+        tl_renderer_destroy(focused);
+        tl_renderer_destroy(near);
+    }
+}
