@@ -4,7 +4,7 @@
 set -eu
 PACKAGES="cmake make gcc g++ pkg-config python3 python3-glad libosmesa6-dev libegl-dev libegl-mesa0 libgl-dev libglfw3-dev \
 libtinygltf-dev nlohmann-json3-dev libopenimageio-dev gnuplot-nox glslang-tools doxygen \
-clang libclang-rt-14-dev valgrind"
+clang libclang-rt-14-dev valgrind libimgui-dev xvfb xauth"
 missing=""
 for p in $PACKAGES; do
   if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed"; then

@@ -509,7 +509,12 @@ typedef struct tl_view_info {
 /** What an application pass receives. */
 typedef struct tl_app_pass_context {
     const tl_view_info *view;              /**< the frame's view */
-    uint32_t textures[TL_TARGET_COUNT];    /**< GL texture names of the targets it declared as reads (0 otherwise) */
+    /** GL texture names of the targets it declared as reads (0 otherwise). TL_TARGET_LIGHT_LISTS is
+     *  a storage buffer: its entry is the GL buffer name of the tile headers, four uint32 counters
+     *  then, per tile row by row from the bottom left (tl_frame_plan.tiles_x across, tile_size
+     *  pixels square), two uint32: the first entry of its list and its count of local lights (first
+     *  = 0xFFFFFFFF: the list overflowed and the tile loops over every visible light) */
+    uint32_t textures[TL_TARGET_COUNT];
     uint32_t framebuffer;                  /**< bound for drawing, with its declared writes attached
                                                 as colour attachments in tl_target_id order (and the
                                                 depth target, read-only, when it reads depth); the

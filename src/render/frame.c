@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "renderer_internal.h"
+#include "targets.h"
 
 static const float tl__zero[4] = {0, 0, 0, 0};
 
@@ -31,8 +32,9 @@ static void tl__run_app(tl_renderer *r, const tl__compiled_pass *cp, const tl_vi
     memset(&ctx, 0, sizeof ctx);
     ctx.view = view;
     ctx.framebuffer = cp->fbo;
-    for (int t = 0; t < TL_TARGET_COUNT; t++)
-        if (cp->plan->reads & TL_TARGET_BIT(t)) ctx.textures[t] = r->targets[t].texture;
+    for (int t = 0; t < TL_TARGET_COUNT; t++) /* storage buffers: the tile headers (renderer.h) */
+        if (cp->plan->reads & TL_TARGET_BIT(t))
+            ctx.textures[t] = tl__targets[t].buffer ? r->tiles.headers : r->targets[t].texture;
     const tl__app_pass *a = &r->apps[cp->app];
     tl__state_program(gl, &r->state, 0);
     tl__state_vertex_array(gl, &r->state, 0);

@@ -1,0 +1,20 @@
+/* The viewer's scene and renderers (session.c). */
+#ifndef THINLIGHT_VIEWER_SESSION_H
+#define THINLIGHT_VIEWER_SESSION_H
+
+#include "viewer.h"
+
+tl_logger vw_logger(vw_app *app);
+/** Loads the crypt (app->crypt) or app->scene_path; keeps the lights for animation. 0 or -1. */
+int vw_load_scene(vw_app *app);
+/** Makes the main renderer and the helpers the view needs (fat for the difference, the split
+ *  view's second mode) at app->width x app->height. 0 or -1. */
+int vw_make_renderers(vw_app *app);
+void vw_destroy_renderers(vw_app *app);
+/** After app->view, grid or split_on changed. */
+int vw_update_view(vw_app *app);
+int vw_resize(vw_app *app, uint32_t w, uint32_t h);
+int vw_animate_lights(vw_app *app);
+int vw_scale_lights(vw_app *app, int up);
+
+#endif

@@ -1,0 +1,143 @@
+/* thinlight-viewer: a GLFW window over the public API (include/thinlight only). The state every
+ * part of the viewer shares; main.c owns it, ui.cpp (Dear ImGui) edits its settings. */
+#ifndef THINLIGHT_VIEWER_H
+#define THINLIGHT_VIEWER_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "thinlight/renderer.h"
+#include "thinlight/scene.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/** What the window shows (view_table in views.c holds the names and what each reads). */
+typedef enum vw_view {
+    VW_VIEW_FINAL,          /* the output, after FXAA */
+    VW_VIEW_NORMALS,        /* decoded view-space normals (RT0; fat: its normal target) */
+    VW_VIEW_GLOSS,          /* gloss (RT0 alpha; fat: normal target alpha) */
+    VW_VIEW_LUMA,           /* RT1 luma (thin-deferred) */
+    VW_VIEW_CHROMA,         /* RT1 raw checkerboard chroma: Cb on even pixels, Cr on odd ones */
+    VW_VIEW_ALBEDO,         /* RT1 albedo with the missing chroma rebuilt (fat: its albedo target) */
+    VW_VIEW_DEPTH,          /* linear view depth, log scale from near to the farthest pixel */
+    VW_VIEW_POSITION,       /* world position rebuilt from depth, over the scene bounds */
+    VW_VIEW_LIGHT_DIFFUSE,  /* light buffer diffuse (thin-lpp) */
+    VW_VIEW_LIGHT_SPECULAR, /* light buffer specular (exact layout; compact: its alpha) */
+    VW_VIEW_TILE_LIGHTS,    /* local lights per tile (tiled strategy) */
+    VW_VIEW_HDR,            /* HDR radiance times exposure before the tone curve, clipped at 1 */
+    VW_VIEW_BEFORE_FXAA,    /* the tone-mapped image before FXAA */
+    VW_VIEW_DIFF_FAT,       /* heat map of |output - fat output| times diff_scale */
+    VW_VIEW_COUNT
+} vw_view;
+
+/** How the camera moves. */
+typedef enum vw_camera_mode { VW_CAMERA_ORBIT, VW_CAMERA_FLY } vw_camera_mode;
+
+typedef struct vw_camera {
+    vw_camera_mode mode;
+    float target[3];   /* orbit centre */
+    float distance;    /* orbit radius */
+    float yaw, pitch;  /* radians; the direction from the eye to what it looks at */
+    float eye[3];      /* fly position (and the orbit's eye after vw_camera_get) */
+    float speed;       /* fly speed, metres per second */
+    float fov_y, near_z, far_z;
+    tl_camera scene;   /* the scene's camera, given as it is until the camera moves */
+    int moved;
+} vw_camera;
+
+/** Per-pass GPU times, smoothed (exponential moving average). */
+typedef struct vw_timings {
+    uint64_t last_frame;
+    double pass_ms[TL_PASS_COUNT];
+    double gpu_ms;
+    double cpu_ms;
+    uint64_t covered; /* fragments of the geometry pass (the last valid frame) */
+    int valid;
+} vw_timings;
+
+typedef struct vw_app {
+    /* scene */
+    const char *scene_path;          /* NULL: the built-in crypt */
+    tl_default_scene_desc crypt;     /* the crypt's lights */
+    uint32_t gltf_extra_lights;      /* glTF: seeded point lights added */
+    tl_scene *scene;
+    tl_light *base_lights;           /* the scene's lights, for animation */
+    size_t light_count;
+    float center[3], extent;         /* scene bounds: centre and diagonal */
+    /* renderers */
+    tl_renderer_desc desc;           /* the settings the panel edits (get_proc_address set once) */
+    tl_renderer *r;                  /* the main one */
+    tl_renderer *fat;                /* fat, for the difference view (created on demand) */
+    tl_renderer *split;              /* the split view's right half (created on demand) */
+    int kept;                        /* r was made with keep_targets = all (a debug view is on) */
+    int rebuild;                     /* settings changed: make the renderers again */
+    int reload;                      /* light count changed: make the scene again */
+    uint32_t width, height;          /* framebuffer size */
+    /* what is shown */
+    vw_view view;
+    int grid;                        /* every view as thumbnails */
+    int split_on;                    /* left: desc.mode, right: split_mode */
+    tl_render_mode split_mode;
+    float diff_scale;                /* heat map: full scale = 1 / diff_scale of the 8-bit range */
+    int animate;
+    double time;                     /* animation clock, seconds */
+    int show_panel;
+    vw_camera cam;
+    /* results of the last frame */
+    vw_timings timings;
+    tl_frame_plan plan;
+    char *plan_text;
+    size_t plan_text_size;
+    float depth_range[2];            /* the depth view's scale: nearest and farthest covered pixel */
+    uint32_t tile_max;               /* the tile view's scale: most lights in one tile */
+    char status[160];                /* a line for the panel (the last screenshot, an error) */
+    char view_note[96];              /* why a view is empty in this mode */
+    uint8_t *image;                  /* the view, RGBA8 bottom-up, width x height */
+    size_t image_pixels;
+    float *scratch[3];               /* target readback buffers */
+    uint8_t *scratch8[2];
+    uint32_t *tile_counts;           /* tile view: local lights per tile, read in the frame */
+    size_t tile_capacity;
+    void *gl;                        /* GL functions beyond 1.1 (views.c) */
+    int screenshot_request;          /* a key asked for one */
+} vw_app;
+
+/* views.c */
+const char *vw_view_name(vw_view v);
+int vw_view_from_name(const char *name, vw_view *v);
+const char *vw_view_help(vw_view v);
+/** Builds app->image for the current view (or the grid, or the split view) from the frame just
+ *  rendered; 0 on success. */
+int vw_views_build(vw_app *app, const tl_camera *cam);
+/** Installs or removes the application pass the tile view reads the light lists with. */
+void vw_views_tile_pass(vw_app *app, tl_renderer *r);
+int vw_views_init(vw_app *app, void *(*loader)(const char *));
+void vw_views_free(vw_app *app);
+/** Colour of t in [0,1] on the heat-map scale (black, blue, green, yellow, red, white). */
+void vw_heat(float t, uint8_t rgb[3]);
+
+/* camera.c */
+void vw_camera_from_scene(vw_camera *c, const tl_camera *scene_cam, float extent);
+void vw_camera_get(vw_camera *c, tl_camera *out);
+void vw_camera_orbit(vw_camera *c, float dx, float dy);
+void vw_camera_look(vw_camera *c, float dx, float dy);
+void vw_camera_zoom(vw_camera *c, float steps);
+void vw_camera_fly(vw_camera *c, const float move[3], float dt);
+void vw_camera_set_mode(vw_camera *c, vw_camera_mode mode);
+
+/* ui.cpp */
+int vw_ui_init(void *glfw_window);
+void vw_ui_shutdown(void);
+/** Starts an ImGui frame, draws the view texture behind it and the panel; returns 1 when a
+ *  setting changed. */
+void vw_ui_frame(vw_app *app, uint32_t view_texture);
+void vw_ui_render(void);
+int vw_ui_wants_mouse(void);
+int vw_ui_wants_keyboard(void);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,517 @@
+/* The debug views: each reads the frame's targets back through the public API
+ * (tl_renderer_read_target, which decodes RT0 and linearises depth; tl_albedo_reconstruct for
+ * RT1's chroma; an application pass for the tiled light lists) and turns them into RGBA8, rows
+ * bottom to top. The grid puts every view in one image; the split view two modes side by side. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "thinlight/codec.h"
+#include "viewer.h"
+
+typedef int (*vw_view_fn)(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out);
+
+typedef struct vw_view_def {
+    const char *name;
+    const char *help;
+    vw_view_fn build;
+} vw_view_def;
+
+/* GL beyond 1.1, for the light lists' storage buffer. */
+typedef void (*vw_barrier_fn)(unsigned int);
+typedef void (*vw_buffer_read_fn)(unsigned int, intptr_t, intptr_t, void *);
+typedef struct vw_gl {
+    vw_barrier_fn memory_barrier;
+    vw_buffer_read_fn get_named_buffer_sub_data;
+} vw_gl;
+#define VW_GL_BUFFER_UPDATE_BARRIER_BIT 0x00000200u
+
+static size_t vw_pixels(const vw_app *app) { return (size_t)app->width * app->height; }
+
+static uint8_t vw_u8(float v) { return (uint8_t)(v <= 0.0f ? 0 : v >= 1.0f ? 255 : (int)(v * 255.0f + 0.5f)); }
+
+static void vw_put(uint8_t *px, float r, float g, float b)
+{
+    px[0] = vw_u8(r);
+    px[1] = vw_u8(g);
+    px[2] = vw_u8(b);
+    px[3] = 255;
+}
+
+static void vw_put_srgb(uint8_t *px, float r, float g, float b)
+{
+    vw_put(px, tl_linear_to_srgb(r), tl_linear_to_srgb(g), tl_linear_to_srgb(b));
+}
+
+void vw_heat(float t, uint8_t rgb[3])
+{
+    static const float stops[6][3] = {{0, 0, 0}, {0, 0, 1}, {0, 1, 0}, {1, 1, 0}, {1, 0, 0}, {1, 1, 1}};
+    t = t < 0 ? 0 : t > 1 ? 1 : t;
+    float f = t * 5.0f;
+    int i = f >= 5.0f ? 4 : (int)f;
+    float a = f - (float)i;
+    for (int c = 0; c < 3; c++) rgb[c] = vw_u8(stops[i][c] * (1 - a) + stops[i + 1][c] * a);
+}
+
+/* A target as 4 floats a pixel into scratch[slot]; 0 when the plan has none. */
+static const float *vw_read(vw_app *app, tl_renderer *r, tl_target_id t, int slot)
+{
+    size_t size = vw_pixels(app) * 16;
+    if (r == app->r && !(app->plan.targets & TL_TARGET_BIT(t))) return NULL; /* not in this mode */
+    if (tl_renderer_read_target(r, t, app->scratch[slot], &size) != TL_OK) return NULL;
+    return app->scratch[slot];
+}
+
+static int vw_is_background(const vw_app *app, const float *depth, size_t i)
+{
+    float clear = app->desc.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ? 0.0f : 1.0f;
+    return depth[4 * i] == clear;
+}
+
+static int vw_unavailable(vw_app *app, const char *why)
+{
+    snprintf(app->view_note, sizeof app->view_note, "%s", why);
+    return 1;
+}
+
+static int vw_fat(const vw_app *app) { return app->desc.mode == TL_MODE_FAT; }
+
+/* ---- the views ------------------------------------------------------------------------------ */
+
+static int vw_view_final(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    size_t size = vw_pixels(app) * 4;
+    return tl_renderer_read_output(r, out, &size) != TL_OK ? vw_unavailable(app, "no output") : 0;
+}
+
+static int vw_view_normals_gloss(vw_app *app, tl_renderer *r, uint8_t *out, int gloss)
+{
+    const float *ng = vw_read(app, r, vw_fat(app) ? TL_TARGET_FAT_NORMAL : TL_TARGET_RT0, 0);
+    const float *d = vw_read(app, r, TL_TARGET_DEPTH, 1);
+    if (!ng || !d) return vw_unavailable(app, "no G-buffer normals in this mode");
+    for (size_t i = 0, n = vw_pixels(app); i < n; i++) {
+        const float *p = ng + 4 * i;
+        if (vw_is_background(app, d, i)) vw_put(out + 4 * i, 0, 0, 0);
+        else if (gloss) vw_put(out + 4 * i, p[3], p[3], p[3]);
+        else vw_put(out + 4 * i, p[0] * 0.5f + 0.5f, p[1] * 0.5f + 0.5f, p[2] * 0.5f + 0.5f);
+    }
+    return 0;
+}
+
+static int vw_view_normals(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    return vw_view_normals_gloss(app, r, out, 0);
+}
+
+static int vw_view_gloss(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    return vw_view_normals_gloss(app, r, out, 1);
+}
+
+/* RT1: channel 0 luma, 1 the pixel's own chroma (Cb where x + y is even, Cr where odd). */
+static int vw_view_rt1(vw_app *app, tl_renderer *r, uint8_t *out, int chroma)
+{
+    const float *t = vw_read(app, r, TL_TARGET_RT1, 0);
+    const float *d = vw_read(app, r, TL_TARGET_DEPTH, 1);
+    if (!t || !d) return vw_unavailable(app, "RT1 (luma, chroma) exists in thin-deferred only");
+    for (uint32_t y = 0; y < app->height; y++)
+        for (uint32_t x = 0; x < app->width; x++) {
+            size_t i = (size_t)y * app->width + x;
+            float v = t[4 * i], c = t[4 * i + 1], rgb[3];
+            if (vw_is_background(app, d, i)) { vw_put(out + 4 * i, 0, 0, 0); continue; }
+            if (!chroma) { vw_put(out + 4 * i, v, v, v); continue; }
+            float ycc[3] = {0.5f, 0.5f, 0.5f};
+            ycc[1 + tl_chroma_parity(x, y)] = c;
+            tl_luma_chroma_to_rgb(TL_COLOR_SPACE_YCBCR, ycc, rgb);
+            vw_put(out + 4 * i, rgb[0], rgb[1], rgb[2]);
+        }
+    return 0;
+}
+
+static int vw_view_luma(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    return vw_view_rt1(app, r, out, 0);
+}
+
+static int vw_view_chroma(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    return vw_view_rt1(app, r, out, 1);
+}
+
+/* Thin: the codec's own reconstruction (edge-aware filter, YCbCr) of RT1's bytes, sRGB as stored. */
+static int vw_view_albedo(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    size_t n = vw_pixels(app);
+    const float *d = vw_read(app, r, TL_TARGET_DEPTH, 1);
+    if (vw_fat(app)) {
+        const float *a = vw_read(app, r, TL_TARGET_FAT_ALBEDO, 0);
+        if (!a || !d) return vw_unavailable(app, "no albedo target");
+        for (size_t i = 0; i < n; i++)
+            if (vw_is_background(app, d, i)) vw_put(out + 4 * i, 0, 0, 0);
+            else vw_put_srgb(out + 4 * i, a[4 * i], a[4 * i + 1], a[4 * i + 2]);
+        return 0;
+    }
+    const float *t = vw_read(app, r, TL_TARGET_RT1, 0);
+    if (!t || !d) return vw_unavailable(app, "albedo is stored in thin-deferred and fat only");
+    uint8_t *yc = app->scratch8[1];
+    for (size_t i = 0; i < n; i++) {
+        yc[2 * i] = vw_u8(t[4 * i]);
+        yc[2 * i + 1] = vw_u8(t[4 * i + 1]);
+    }
+    float *rgb = app->scratch[2];
+    if (tl_albedo_reconstruct(TL_COLOR_SPACE_YCBCR, TL_CHROMA_FILTER_EDGE, yc, app->width, app->height, rgb) != TL_OK)
+        return vw_unavailable(app, "albedo reconstruction failed");
+    for (size_t i = 0; i < n; i++)
+        if (vw_is_background(app, d, i)) vw_put(out + 4 * i, 0, 0, 0);
+        else vw_put(out + 4 * i, rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]);
+    return 0;
+}
+
+/* Log scale from the nearest covered pixel (white) to the farthest (black). */
+static int vw_view_depth(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    const float *d = vw_read(app, r, TL_TARGET_DEPTH, 1);
+    if (!d) return vw_unavailable(app, "no depth target");
+    size_t n = vw_pixels(app);
+    float near_z = 1e30f, far_z = 0;
+    for (size_t i = 0; i < n; i++)
+        if (!vw_is_background(app, d, i) && d[4 * i + 1] > 0) {
+            if (d[4 * i + 1] < near_z) near_z = d[4 * i + 1];
+            if (d[4 * i + 1] > far_z) far_z = d[4 * i + 1];
+        }
+    app->depth_range[0] = near_z;
+    app->depth_range[1] = far_z;
+    float scale = far_z > near_z * 1.0001f ? 1.0f / logf(far_z / near_z) : 0.0f;
+    for (size_t i = 0; i < n; i++) {
+        float z = d[4 * i + 1] > near_z ? d[4 * i + 1] : near_z;
+        float v = vw_is_background(app, d, i) ? 0.0f : 1.0f - 0.9f * logf(z / near_z) * scale;
+        vw_put(out + 4 * i, v, v, v);
+    }
+    return 0;
+}
+
+typedef struct vw_basis {
+    float eye[3], right[3], up[3], fwd[3];
+    float tan_x, tan_y;
+} vw_basis;
+
+static void vw_normalize(float v[3])
+{
+    float l = sqrtf(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (l > 0) for (int i = 0; i < 3; i++) v[i] /= l;
+}
+
+static void vw_cross(const float a[3], const float b[3], float o[3])
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static void vw_camera_basis(const vw_app *app, const tl_camera *cam, vw_basis *b)
+{
+    float up[3] = {cam->up[0], cam->up[1], cam->up[2]};
+    if (up[0] == 0 && up[1] == 0 && up[2] == 0) up[1] = 1;
+    for (int i = 0; i < 3; i++) { b->eye[i] = cam->position[i]; b->fwd[i] = cam->target[i] - cam->position[i]; }
+    vw_normalize(b->fwd);
+    vw_cross(b->fwd, up, b->right);
+    vw_normalize(b->right);
+    vw_cross(b->right, b->fwd, b->up);
+    float fov = cam->fov_y > 0 ? cam->fov_y : 1.04719755f;
+    b->tan_y = tanf(fov * 0.5f);
+    b->tan_x = b->tan_y * (float)app->width / (float)app->height;
+}
+
+/* World position rebuilt from linear depth along the pixel's ray (fat: its view-space position
+ * target), shown as (p - scene min) / (scene max - scene min). */
+static int vw_view_position(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    const float *d = vw_read(app, r, TL_TARGET_DEPTH, 1);
+    const float *fp = vw_fat(app) ? vw_read(app, r, TL_TARGET_FAT_POSITION, 0) : NULL;
+    if (!d || (vw_fat(app) && !fp)) return vw_unavailable(app, "no depth target");
+    vw_basis b;
+    vw_camera_basis(app, cam, &b);
+    const float *lo = app->scene->bounds_min, *hi = app->scene->bounds_max;
+    for (uint32_t y = 0; y < app->height; y++)
+        for (uint32_t x = 0; x < app->width; x++) {
+            size_t i = (size_t)y * app->width + x;
+            if (vw_is_background(app, d, i)) { vw_put(out + 4 * i, 0, 0, 0); continue; }
+            float z = d[4 * i + 1];
+            float vx = ((2.0f * ((float)x + 0.5f) / (float)app->width) - 1.0f) * b.tan_x * z;
+            float vy = ((2.0f * ((float)y + 0.5f) / (float)app->height) - 1.0f) * b.tan_y * z;
+            if (fp) { vx = fp[4 * i]; vy = fp[4 * i + 1]; z = -fp[4 * i + 2]; }
+            float c[3];
+            for (int k = 0; k < 3; k++) {
+                float w = b.eye[k] + b.right[k] * vx + b.up[k] * vy + b.fwd[k] * z;
+                c[k] = hi[k] > lo[k] ? (w - lo[k]) / (hi[k] - lo[k]) : 0.5f;
+            }
+            vw_put(out + 4 * i, c[0], c[1], c[2]);
+        }
+    return 0;
+}
+
+/* Radiance-like values: times exposure, Reinhard x / (1 + x), sRGB. */
+static void vw_put_hdr(uint8_t *px, float e, float r, float g, float b, int reinhard)
+{
+    r *= e; g *= e; b *= e;
+    if (reinhard) { r /= 1 + r; g /= 1 + g; b /= 1 + b; }
+    vw_put_srgb(px, r, g, b);
+}
+
+static int vw_view_light(vw_app *app, tl_renderer *r, uint8_t *out, int specular)
+{
+    const float *dif = vw_read(app, r, TL_TARGET_LIGHT_DIFFUSE, 0);
+    const float *spec = specular ? vw_read(app, r, TL_TARGET_LIGHT_SPECULAR, 2) : NULL;
+    if (!dif) return vw_unavailable(app, "the light buffer exists in thin-lpp only");
+    int compact = specular && !spec;
+    if (compact && app->desc.light_buffer != TL_LIGHT_BUFFER_COMPACT)
+        return vw_unavailable(app, "no specular light buffer (no specular material)");
+    float e = app->desc.exposure > 0 ? app->desc.exposure : 1.0f;
+    for (size_t i = 0, n = vw_pixels(app); i < n; i++) {
+        const float *p = spec ? spec + 4 * i : dif + 4 * i;
+        if (compact) vw_put_hdr(out + 4 * i, e, p[3], p[3], p[3], 1);
+        else vw_put_hdr(out + 4 * i, e, p[0], p[1], p[2], 1);
+    }
+    return 0;
+}
+
+static int vw_view_light_diffuse(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    return vw_view_light(app, r, out, 0);
+}
+
+static int vw_view_light_specular(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    return vw_view_light(app, r, out, 1);
+}
+
+/* Tiles from the bottom left, as the light lists store them; overflowed tiles in magenta. */
+static int vw_view_tile_lights(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    const tl_frame_plan *p = &app->plan;
+    if (p->light_strategy != TL_LIGHT_STRATEGY_TILED || !p->tile_size)
+        return vw_unavailable(app, "lights per tile: the tiled light strategy only");
+    if (vw_view_final(app, r, cam, out)) return 1;
+    size_t tiles = (size_t)p->tiles_x * p->tiles_y;
+    uint32_t most = 1;
+    for (size_t t = 0; t < tiles && t < app->tile_capacity; t++)
+        if (app->tile_counts[t] != UINT32_MAX && app->tile_counts[t] > most) most = app->tile_counts[t];
+    app->tile_max = most;
+    for (uint32_t y = 0; y < app->height; y++)
+        for (uint32_t x = 0; x < app->width; x++) {
+            size_t i = (size_t)y * app->width + x, t = (size_t)(y / p->tile_size) * p->tiles_x + x / p->tile_size;
+            uint8_t *px = out + 4 * i, h[3] = {255, 0, 255};
+            uint32_t c = t < app->tile_capacity ? app->tile_counts[t] : 0;
+            if (c != UINT32_MAX) vw_heat((float)c / (float)most, h);
+            int edge = x % p->tile_size == 0 || y % p->tile_size == 0;
+            float grey = (px[0] + px[1] + px[2]) / 3.0f;
+            for (int k = 0; k < 3; k++) px[k] = edge ? 40 : (uint8_t)(0.3f * grey + 0.7f * h[k]);
+        }
+    return 0;
+}
+
+static int vw_view_hdr(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    const float *h = vw_read(app, r, TL_TARGET_HDR, 0);
+    if (!h) return vw_unavailable(app, "no HDR target");
+    float e = app->desc.exposure > 0 ? app->desc.exposure : 1.0f;
+    for (size_t i = 0, n = vw_pixels(app); i < n; i++) vw_put_hdr(out + 4 * i, e, h[4 * i], h[4 * i + 1], h[4 * i + 2], 0);
+    return 0;
+}
+
+static int vw_view_before_fxaa(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    const float *l = vw_read(app, r, TL_TARGET_LDR, 0);
+    if (!l) return vw_unavailable(app, "FXAA is off: the tone-mapped image is the output");
+    for (size_t i = 0, n = vw_pixels(app); i < n; i++) vw_put(out + 4 * i, l[4 * i], l[4 * i + 1], l[4 * i + 2]);
+    return 0;
+}
+
+/* Largest channel difference of the two outputs, times diff_scale, on the heat scale. */
+static int vw_view_diff_fat(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    if (!app->fat) return vw_unavailable(app, "no fat renderer");
+    uint8_t *ref = app->scratch8[0] + vw_pixels(app) * 4; /* the second half of the grid scratch */
+    size_t size = vw_pixels(app) * 4;
+    if (vw_view_final(app, r, cam, out) || tl_renderer_read_output(app->fat, ref, &size) != TL_OK)
+        return vw_unavailable(app, "no output to compare");
+    for (size_t i = 0, n = vw_pixels(app); i < n; i++) {
+        int m = 0;
+        for (int k = 0; k < 3; k++) {
+            int dd = abs((int)out[4 * i + k] - (int)ref[4 * i + k]);
+            if (dd > m) m = dd;
+        }
+        vw_heat((float)m / 255.0f * app->diff_scale, out + 4 * i);
+        out[4 * i + 3] = 255;
+    }
+    return 0;
+}
+
+static const vw_view_def vw_view_table[VW_VIEW_COUNT] = {
+    [VW_VIEW_FINAL] = {"final", "the output image (after FXAA)", vw_view_final},
+    [VW_VIEW_NORMALS] = {"normals", "decoded view-space normals, n * 0.5 + 0.5", vw_view_normals},
+    [VW_VIEW_GLOSS] = {"gloss", "gloss, black 0 to white 1", vw_view_gloss},
+    [VW_VIEW_LUMA] = {"luma", "RT1 luma (thin-deferred)", vw_view_luma},
+    [VW_VIEW_CHROMA] = {"chroma", "RT1 raw chroma: Cb on even pixels, Cr on odd (thin-deferred)", vw_view_chroma},
+    [VW_VIEW_ALBEDO] = {"albedo", "albedo, missing chroma rebuilt (thin-deferred, fat)", vw_view_albedo},
+    [VW_VIEW_DEPTH] = {"depth", "linear depth, log scale: white nearest, dark grey farthest, black background", vw_view_depth},
+    [VW_VIEW_POSITION] = {"position", "world position from depth over the scene bounds", vw_view_position},
+    [VW_VIEW_LIGHT_DIFFUSE] = {"light-diffuse", "light buffer diffuse (thin-lpp), x/(1+x)", vw_view_light_diffuse},
+    [VW_VIEW_LIGHT_SPECULAR] = {"light-specular", "light buffer specular (thin-lpp), x/(1+x)", vw_view_light_specular},
+    [VW_VIEW_TILE_LIGHTS] = {"tile-lights", "local lights per tile (tiled), heat scale", vw_view_tile_lights},
+    [VW_VIEW_HDR] = {"hdr", "HDR times exposure before tone mapping, clipped at 1", vw_view_hdr},
+    [VW_VIEW_BEFORE_FXAA] = {"before-fxaa", "the tone-mapped image before FXAA", vw_view_before_fxaa},
+    [VW_VIEW_DIFF_FAT] = {"diff-fat", "heat map of |output - fat output| x scale", vw_view_diff_fat},
+};
+
+const char *vw_view_name(vw_view v) { return v < VW_VIEW_COUNT ? vw_view_table[v].name : "unknown"; }
+const char *vw_view_help(vw_view v) { return v < VW_VIEW_COUNT ? vw_view_table[v].help : ""; }
+
+int vw_view_from_name(const char *name, vw_view *v)
+{
+    for (int i = 0; i < VW_VIEW_COUNT; i++)
+        if (!strcmp(name, vw_view_table[i].name)) { *v = (vw_view)i; return 1; }
+    return 0;
+}
+
+/* ---- building the shown image --------------------------------------------------------------- */
+
+/* One view into out; an unavailable one becomes a dark checkerboard. */
+static void vw_build_one(vw_app *app, vw_view v, const tl_camera *cam, uint8_t *out)
+{
+    app->view_note[0] = 0;
+    if (!vw_view_table[v].build(app, app->r, cam, out)) return;
+    for (uint32_t y = 0; y < app->height; y++)
+        for (uint32_t x = 0; x < app->width; x++) {
+            uint8_t g = ((x / 16 + y / 16) & 1) ? 48 : 32;
+            uint8_t *px = out + 4 * ((size_t)y * app->width + x);
+            px[0] = px[1] = px[2] = g;
+            px[3] = 255;
+        }
+}
+
+/* Every view shrunk (nearest) into a 4 x 4 grid, first view top left. */
+static void vw_build_grid(vw_app *app, const tl_camera *cam)
+{
+    const uint32_t cols = 4, rows = 4, cw = app->width / cols, ch = app->height / rows;
+    for (size_t i = 0, n = vw_pixels(app); i < n; i++) memcpy(app->image + 4 * i, "\0\0\0\377", 4); /* opaque black */
+    for (int v = 0; v < VW_VIEW_COUNT; v++) {
+        uint8_t *full = app->scratch8[0];
+        vw_build_one(app, (vw_view)v, cam, full);
+        uint32_t cx = (uint32_t)v % cols, cy = rows - 1 - (uint32_t)v / cols;
+        for (uint32_t y = 1; y + 1 < ch; y++)
+            for (uint32_t x = 1; x + 1 < cw; x++) {
+                size_t sx = (size_t)x * app->width / cw, sy = (size_t)y * app->height / ch;
+                memcpy(app->image + 4 * ((size_t)(cy * ch + y) * app->width + cx * cw + x),
+                       full + 4 * (sy * app->width + sx), 4);
+            }
+    }
+    app->view_note[0] = 0;
+}
+
+/* Left half: this renderer's output; right half: the split renderer's; a white line between. */
+static void vw_build_split(vw_app *app, const tl_camera *cam)
+{
+    uint8_t *right = app->scratch8[0];
+    size_t size = vw_pixels(app) * 4;
+    vw_build_one(app, VW_VIEW_FINAL, cam, app->image);
+    if (!app->split || tl_renderer_read_output(app->split, right, &size) != TL_OK) return;
+    uint32_t half = app->width / 2;
+    for (uint32_t y = 0; y < app->height; y++) {
+        size_t row = (size_t)y * app->width;
+        memcpy(app->image + 4 * (row + half), right + 4 * (row + half), 4 * (size_t)(app->width - half));
+        memset(app->image + 4 * (row + half), 255, 4);
+    }
+}
+
+static int vw_ensure_buffers(vw_app *app)
+{
+    size_t n = vw_pixels(app);
+    if (app->image && app->image_pixels == n) return 0;
+    free(app->image);
+    for (int i = 0; i < 3; i++) free(app->scratch[i]);
+    for (int i = 0; i < 2; i++) free(app->scratch8[i]);
+    app->image = malloc(n * 4);
+    for (int i = 0; i < 3; i++) app->scratch[i] = malloc(n * 16);
+    app->scratch8[0] = malloc(n * 8);
+    app->scratch8[1] = malloc(n * 2);
+    app->image_pixels = n;
+    return app->image && app->scratch[0] && app->scratch[1] && app->scratch[2] && app->scratch8[0] && app->scratch8[1]
+               ? 0
+               : -1;
+}
+
+int vw_views_build(vw_app *app, const tl_camera *cam)
+{
+    if (vw_ensure_buffers(app)) return -1;
+    if (app->split_on) vw_build_split(app, cam);
+    else if (app->grid) vw_build_grid(app, cam);
+    else vw_build_one(app, app->view, cam, app->image);
+    return 0;
+}
+
+/* ---- the light lists, read inside the frame ------------------------------------------------- */
+
+static void vw_tile_pass(void *user, const tl_app_pass_context *ctx)
+{
+    vw_app *app = (vw_app *)user;
+    const vw_gl *gl = (const vw_gl *)app->gl;
+    uint32_t name = ctx->textures[TL_TARGET_LIGHT_LISTS], ts = app->plan.tile_size;
+    if (!name || !ts || !gl->get_named_buffer_sub_data) return;
+    size_t tiles = (size_t)((ctx->view->width + ts - 1) / ts) * ((ctx->view->height + ts - 1) / ts);
+    if (tiles > app->tile_capacity) {
+        uint32_t *t = realloc(app->tile_counts, tiles * 2 * sizeof *t + 16);
+        if (!t) return;
+        app->tile_counts = t;
+        app->tile_capacity = tiles;
+    }
+    /* headers: 4 counters, then (first, count) per tile; read in place, then compacted */
+    uint32_t *h = app->tile_counts;
+    gl->memory_barrier(VW_GL_BUFFER_UPDATE_BARRIER_BIT);
+    gl->get_named_buffer_sub_data(name, 0, (intptr_t)(16 + 8 * tiles), h);
+    for (size_t t = 0; t < tiles; t++) h[t] = h[4 + 2 * t] == UINT32_MAX ? UINT32_MAX : h[4 + 2 * t + 1];
+}
+
+void vw_views_tile_pass(vw_app *app, tl_renderer *r)
+{
+    tl_app_pass_desc d = {.name = "viewer.tiles", .before = "tonemap", .reads = TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS),
+                          .writes = TL_TARGET_BIT(TL_TARGET_HDR), .execute = vw_tile_pass, .user = app};
+    tl_frame_plan *p = &app->plan;
+    int has = 0, want = app->view == VW_VIEW_TILE_LIGHTS || app->grid;
+    if (tl_renderer_get_plan(r, p) != TL_OK) return;
+    for (size_t i = 0; i < p->pass_count; i++) has |= !strcmp(p->passes[i].name, d.name);
+    if (has && !want) tl_renderer_remove_pass(r, d.name);
+    if (!has && want && p->light_strategy == TL_LIGHT_STRATEGY_TILED) tl_renderer_add_pass(r, &d);
+    tl_renderer_get_plan(r, p);
+}
+
+int vw_views_init(vw_app *app, void *(*loader)(const char *))
+{
+    vw_gl *gl = calloc(1, sizeof *gl);
+    if (!gl) return -1;
+    gl->memory_barrier = (vw_barrier_fn)(uintptr_t)loader("glMemoryBarrier");
+    gl->get_named_buffer_sub_data = (vw_buffer_read_fn)(uintptr_t)loader("glGetNamedBufferSubData");
+    app->gl = gl;
+    return gl->memory_barrier && gl->get_named_buffer_sub_data ? 0 : -1;
+}
+
+void vw_views_free(vw_app *app)
+{
+    free(app->gl);
+    free(app->image);
+    for (int i = 0; i < 3; i++) free(app->scratch[i]);
+    for (int i = 0; i < 2; i++) free(app->scratch8[i]);
+    free(app->tile_counts);
+}

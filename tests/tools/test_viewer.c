@@ -1,0 +1,336 @@
+/* thinlight-viewer from a script, under Xvfb (xvfb-run when DISPLAY is unset): every mode and every
+ * debug view written with --screenshot. Checks: an unmoved camera gives exactly thinlight-render's
+ * image in each mode (the same library, camera and rasteriser: no tolerance is needed, and a
+ * difference means the viewer changed the view); each view a mode has is non-blank and each it
+ * lacks shows the placeholder; views that must differ do; a full-size view equals its thumbnail in
+ * the grid; the split view's halves are the two modes' images; a resize keeps the bytes per pixel
+ * and scales the bytes; --help and bad usage. */
+#define _POSIX_C_SOURCE 200809L /* popen */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/wait.h>
+
+#include "thinlight/io.h"
+#include "thinlight/metrics.h"
+#include "tl_test.h"
+
+enum { VW_W = 320, VW_H = 180, GRID_W = 640, GRID_H = 360 };
+
+static const char *const modes[4] = {"thin-lpp", "thin-deferred", "fat", "forward"};
+/* The views in the viewer's order (--view names; the grid puts them row by row, 4 across). */
+static const char *const views[14] = {"final", "normals", "gloss", "luma", "chroma", "albedo", "depth",
+                                      "position", "light-diffuse", "light-specular", "tile-lights", "hdr",
+                                      "before-fxaa", "diff-fat"};
+/* Which views each mode has (the G-buffer it writes): 1 = available. */
+static const int has_view[4][14] = {
+    /* thin-lpp: RT0, light buffer; no RT1 */
+    {1, 1, 1, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1},
+    /* thin-deferred: RT0, RT1; no light buffer */
+    {1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1},
+    /* fat: its normal, albedo and position targets */
+    {1, 1, 1, 0, 0, 1, 1, 1, 0, 0, 1, 1, 1, 1},
+    /* forward: depth only (Forward+ has the tile lists) */
+    {1, 0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 1},
+};
+
+typedef struct image {
+    uint32_t w, h;
+    uint8_t *px; /* RGBA8, rows top to bottom */
+} image;
+
+/* Under THINLIGHT_SANITIZE the viewer's leak check is off: Mesa's GLX driver (swrast_dri.so)
+ * leaks 112 bytes and is unloaded at exit, so LeakSanitizer reports an unknown module that no
+ * suppression can name (with the driver kept loaded, the viewer reports no leak at all). Address
+ * and undefined-behaviour checks stay on. */
+#ifdef TL_SANITIZED
+#define VW_ENV "env LSAN_OPTIONS=detect_leaks=0 "
+#else
+#define VW_ENV ""
+#endif
+
+static const char *xvfb(void)
+{
+    const char *d = getenv("DISPLAY");
+    return d && d[0] ? VW_ENV : "xvfb-run -a -s '-screen 0 1280x1024x24' " VW_ENV;
+}
+
+/* Runs a command line; its exit status (-1 when it did not exit). */
+static int run(const char *cmd)
+{
+    int s = system(cmd);
+    if (s == -1 || !WIFEXITED(s)) return -1;
+    return WEXITSTATUS(s);
+}
+
+static int viewer(const char *args, const char *png)
+{
+    char cmd[2048];
+    snprintf(cmd, sizeof cmd, "%s'%s' --no-panel --light-strategy tiled --frames 2 --screenshot '%s/%s' %s", xvfb(),
+             TL_VIEWER, TL_WORK, png, args);
+    int s = run(cmd);
+    if (s) fprintf(stderr, "exit %d: %s\n", s, cmd);
+    return s;
+}
+
+static image load(const char *png)
+{
+    char path[1024], err[256] = "";
+    image im = {0, 0, NULL};
+    snprintf(path, sizeof path, "%s/%s", TL_WORK, png);
+    if (tl_image_read_rgba8(path, 0, &im.w, &im.h, &im.px, err, sizeof err) != TL_OK) fprintf(stderr, "%s\n", err);
+    return im;
+}
+
+static const uint8_t *at(const image *im, uint32_t x, uint32_t y) { return im->px + 4 * ((size_t)y * im->w + x); }
+
+/* A grid cell's interior (the viewer leaves a 1-pixel border) as its own image. */
+static image cell(const image *grid, int v)
+{
+    uint32_t cw = grid->w / 4, ch = grid->h / 4, x0 = (uint32_t)(v % 4) * cw, y0 = (uint32_t)(v / 4) * ch;
+    image c = {cw - 2, ch - 2, malloc((size_t)(cw - 2) * (ch - 2) * 4)};
+    for (uint32_t y = 0; c.px && y < c.h; y++) memcpy(c.px + 4 * (size_t)y * c.w, at(grid, x0 + 1, y0 + 1 + y), 4 * (size_t)c.w);
+    return c;
+}
+
+/* The placeholder of a view a mode lacks: 16-pixel squares of grey 32 and 48. */
+static int is_placeholder(const image *c)
+{
+    for (size_t i = 0; i < (size_t)c->w * c->h; i++) {
+        const uint8_t *p = c->px + 4 * i;
+        if ((p[0] != 32 && p[0] != 48) || p[1] != p[0] || p[2] != p[0]) return 0;
+    }
+    return 1;
+}
+
+/* Distinct colours: a blank (one-colour) image has 1. */
+static size_t colours(const image *c)
+{
+    size_t n = 0;
+    uint32_t seen[64];
+    for (size_t i = 0; i < (size_t)c->w * c->h && n < 64; i++) {
+        uint32_t v;
+        memcpy(&v, c->px + 4 * i, 4);
+        size_t k = 0;
+        while (k < n && seen[k] != v) k++;
+        if (k == n) seen[n++] = v;
+    }
+    return n;
+}
+
+/* Screenshots are opaque: nothing of an earlier frame may show through. */
+static int opaque(const image *im)
+{
+    for (size_t i = 0; im->px && i < (size_t)im->w * im->h; i++)
+        if (im->px[4 * i + 3] != 255) return 0;
+    return im->px != NULL;
+}
+
+static tl_image_error compare(const image *a, const image *b)
+{
+    tl_image_error e;
+    memset(&e, 0, sizeof e);
+    e.max_abs = 1e9;
+    if (a->px && b->px && a->w == b->w && a->h == b->h) tl_image_compare_u8(a->px, b->px, (size_t)a->w * a->h * 4, &e);
+    return e;
+}
+
+static void release(image *im) { tl_image_free(im->px); im->px = NULL; }
+
+/* An unmoved camera: the scene's, exactly as thinlight-render draws it, in every mode. */
+TL_TEST(viewer_final_view_equals_thinlight_render_each_mode)
+{
+    for (int m = 0; m < 4; m++) {
+        char args[128], png[64], ref[64], cmd[2048];
+        snprintf(args, sizeof args, "--size %ux%u --mode %s", VW_W, VW_H, modes[m]);
+        snprintf(png, sizeof png, "final_%s.png", modes[m]);
+        snprintf(ref, sizeof ref, "render_%s.png", modes[m]);
+        TL_CHECK(viewer(args, png) == 0);
+        snprintf(cmd, sizeof cmd, "'%s' default --size %ux%u --mode %s --light-strategy tiled -o '%s/%s' 2>/dev/null",
+                 TL_RENDER, VW_W, VW_H, modes[m], TL_WORK, ref);
+        TL_CHECK(run(cmd) == 0);
+        image a = load(png), b = load(ref);
+        tl_image_error e = compare(&a, &b);
+        printf("%s: viewer vs thinlight-render max %.0f mean %.5f levels\n", modes[m], e.max_abs, e.mean_abs);
+        TL_CHECK(a.px && a.w == VW_W && a.h == VW_H && colours(&a) > 32);
+        TL_CHECK(e.max_abs == 0.0);
+        release(&a);
+        release(&b);
+    }
+}
+
+/* The grid in each mode: views the mode has are non-blank, views it lacks are the placeholder,
+ * views that must differ do, and fat against itself differs nowhere. */
+static void check_grid(int m)
+{
+    char args[128], png[64];
+    snprintf(args, sizeof args, "--size %ux%u --mode %s --grid", GRID_W, GRID_H, modes[m]);
+    snprintf(png, sizeof png, "grid_%s.png", modes[m]);
+    TL_CHECK(viewer(args, png) == 0);
+    image g = load(png), c[14];
+    TL_CHECK(g.px && g.w == GRID_W && g.h == GRID_H && opaque(&g));
+    if (!g.px) return;
+    for (int v = 0; v < 14; v++) {
+        c[v] = cell(&g, v);
+        int blank = colours(&c[v]) < 2, placeholder = is_placeholder(&c[v]);
+        int diff_in_fat = m == 2 && v == 13; /* fat against fat: all black, as it must be */
+        printf("%s %-14s %s\n", modes[m], views[v], placeholder ? "placeholder" : blank ? "blank" : "image");
+        if (!has_view[m][v]) TL_CHECK(placeholder);
+        else if (diff_in_fat) TL_CHECK(blank && c[v].px[0] == 0 && c[v].px[1] == 0 && c[v].px[2] == 0);
+        else TL_CHECK(!placeholder && !blank);
+    }
+    static const int differ[][2] = {{0, 1}, {0, 11}, {6, 7}, {1, 2}, {3, 5}, {8, 9}, {0, 10}};
+    for (size_t k = 0; k < sizeof differ / sizeof differ[0]; k++) {
+        int a = differ[k][0], b = differ[k][1];
+        if (!has_view[m][a] || !has_view[m][b]) continue;
+        tl_image_error e = compare(&c[a], &c[b]);
+        printf("%s: %s vs %s mean %.2f levels\n", modes[m], views[a], views[b], e.mean_abs);
+        TL_CHECK(e.mean_abs > 1.0);
+    }
+    for (int v = 0; v < 14; v++) free(c[v].px);
+    release(&g);
+}
+
+TL_TEST(viewer_grid_views_thin_lpp) { check_grid(0); }
+TL_TEST(viewer_grid_views_thin_deferred) { check_grid(1); }
+TL_TEST(viewer_grid_views_fat) { check_grid(2); }
+TL_TEST(viewer_grid_views_forward) { check_grid(3); }
+
+/* Thumbnail pixel (x, y) of a cell (GL rows: from the bottom) is the full view's pixel
+ * (x W / cw, y H / ch); PNG rows run from the top. */
+static double thumbnail_error(const image *full, const image *grid, int v)
+{
+    uint32_t cw = grid->w / 4, ch = grid->h / 4, cx = (uint32_t)(v % 4), cy = 3 - (uint32_t)(v / 4);
+    double worst = 0;
+    for (uint32_t y = 1; y + 1 < ch; y++)
+        for (uint32_t x = 1; x + 1 < cw; x++) {
+            uint32_t sx = x * full->w / cw, sy = y * full->h / ch;
+            const uint8_t *a = at(grid, cx * cw + x, grid->h - 1 - (cy * ch + y)), *b = at(full, sx, full->h - 1 - sy);
+            for (int k = 0; k < 3; k++) worst = abs(a[k] - b[k]) > worst ? abs(a[k] - b[k]) : worst;
+        }
+    return worst;
+}
+
+/* Every view on its own at full size (in thin-deferred, or thin-lpp for the light buffer): not
+ * blank, and the same pixels as its thumbnail in that mode's grid. */
+TL_TEST(viewer_each_view_full_size_matches_its_thumbnail)
+{
+    image grids[2];
+    for (int m = 0; m < 2; m++) {
+        char args[128], png[64];
+        snprintf(args, sizeof args, "--size %ux%u --mode %s --grid", GRID_W, GRID_H, modes[m]);
+        snprintf(png, sizeof png, "thumbs_%s.png", modes[m]);
+        TL_CHECK(viewer(args, png) == 0);
+        grids[m] = load(png);
+    }
+    image final_view = {0, 0, NULL};
+    for (int v = 0; v < 14; v++) {
+        int m = has_view[1][v] ? 1 : 0;
+        char args[128], png[64];
+        snprintf(args, sizeof args, "--size %ux%u --mode %s --view %s", GRID_W, GRID_H, modes[m], views[v]);
+        snprintf(png, sizeof png, "view_%s.png", views[v]);
+        TL_CHECK(viewer(args, png) == 0);
+        image full = load(png);
+        TL_CHECK(full.px && colours(&full) > 1 && !is_placeholder(&full) && opaque(&full));
+        double e = full.px && grids[m].px ? thumbnail_error(&full, &grids[m], v) : 1e9;
+        printf("%-14s (%s): thumbnail max difference %.0f\n", views[v], modes[m], e);
+        TL_CHECK(e == 0.0);
+        if (v == 0) { final_view = full; continue; }
+        if (v == 12) { /* FXAA moves edge pixels only */
+            tl_image_error d = compare(&full, &final_view);
+            printf("before-fxaa vs final: max %.0f mean %.3f levels\n", d.max_abs, d.mean_abs);
+            TL_CHECK(d.max_abs > 0 && d.mean_abs < 2.0);
+        }
+        release(&full);
+    }
+    release(&final_view);
+    for (int m = 0; m < 2; m++) release(&grids[m]);
+}
+
+/* Left half thin-deferred, right half fat, a white column between. */
+TL_TEST(viewer_split_view_halves_are_the_two_modes)
+{
+    char args[128];
+    snprintf(args, sizeof args, "--size %ux%u --mode thin-deferred --split fat", VW_W, VW_H);
+    TL_CHECK(viewer(args, "split.png") == 0);
+    snprintf(args, sizeof args, "--size %ux%u --mode thin-deferred", VW_W, VW_H);
+    TL_CHECK(viewer(args, "split_left.png") == 0);
+    snprintf(args, sizeof args, "--size %ux%u --mode fat", VW_W, VW_H);
+    TL_CHECK(viewer(args, "split_right.png") == 0);
+    image s = load("split.png"), l = load("split_left.png"), r = load("split_right.png");
+    TL_CHECK(s.px && l.px && r.px && s.w == VW_W && l.w == VW_W && r.w == VW_W);
+    size_t wrong_left = 0, wrong_right = 0, wrong_line = 0;
+    for (uint32_t y = 0; s.px && l.px && r.px && y < VW_H; y++)
+        for (uint32_t x = 0; x < VW_W; x++) {
+            const uint8_t *p = at(&s, x, y);
+            if (x < VW_W / 2) wrong_left += memcmp(p, at(&l, x, y), 3) != 0;
+            else if (x == VW_W / 2) wrong_line += p[0] != 255 || p[1] != 255 || p[2] != 255;
+            else wrong_right += memcmp(p, at(&r, x, y), 3) != 0;
+        }
+    printf("split: %zu left, %zu right, %zu line pixels wrong\n", wrong_left, wrong_right, wrong_line);
+    TL_CHECK(wrong_left == 0 && wrong_right == 0 && wrong_line == 0);
+    tl_image_error e = compare(&l, &r); /* the halves come from different images */
+    TL_CHECK(e.max_abs > 0);
+    release(&s);
+    release(&l);
+    release(&r);
+}
+
+/* --print-targets lines before and after the window grows 2 x 2: the same bytes per pixel, four
+ * times the bytes (light volumes: no per-tile buffer whose size rounds to tiles). */
+TL_TEST(viewer_resize_reallocates_targets)
+{
+    char cmd[2048], line[256];
+    snprintf(cmd, sizeof cmd, "%s'%s' --no-panel --light-strategy volumes --size 320x180 --resize 640x360 --frames 6 "
+             "--print-targets", xvfb(), TL_VIEWER);
+    FILE *f = popen(cmd, "r");
+    TL_CHECK(f != NULL);
+    unsigned w[2] = {0, 0}, h[2] = {0, 0}, sum[2] = {0, 0}, peak[2] = {0, 0}, alloc[2] = {0, 0};
+    size_t total[2] = {0, 0}, allocated[2] = {0, 0}, n = 0;
+    while (f && fgets(line, sizeof line, f))
+        if (n < 2 && sscanf(line, "targets %ux%u: %u B/px sum, %u B/px peak, %u B/px allocated, %zu bytes total, %zu bytes allocated",
+                            &w[n], &h[n], &sum[n], &peak[n], &alloc[n], &total[n], &allocated[n]) == 7) {
+            printf("%s", line);
+            n++;
+        }
+    TL_CHECK(f && pclose(f) == 0);
+    TL_CHECK(n == 2);
+    TL_CHECK(w[0] == 320 && h[0] == 180 && w[1] == 640 && h[1] == 360);
+    TL_CHECK(sum[0] > 0 && sum[0] == sum[1] && peak[0] == peak[1] && alloc[0] == alloc[1]);
+    TL_CHECK(total[0] == (size_t)sum[0] * 320 * 180 && total[1] == 4 * total[0] && allocated[1] == 4 * allocated[0]);
+}
+
+/* A glTF file opens; every view its mode has shows something. */
+TL_TEST(viewer_gltf_scene_grid)
+{
+#ifdef TL_MAKE_SCENES
+    char cmd[2048], args[1200];
+    snprintf(cmd, sizeof cmd, "'%s' '%s/scenes' >/dev/null", TL_MAKE_SCENES, TL_WORK);
+    TL_CHECK(run(cmd) == 0);
+    snprintf(args, sizeof args, "'%s/scenes/textured_boxes.gltf' --size %ux%u --mode thin-deferred --grid", TL_WORK,
+             GRID_W, GRID_H);
+    TL_CHECK(viewer(args, "gltf_grid.png") == 0);
+    image g = load("gltf_grid.png");
+    TL_CHECK(g.px != NULL);
+    for (int v = 0; g.px && v < 13; v++) { /* diff-fat may be black: few edges */
+        image c = cell(&g, v);
+        if (has_view[1][v]) TL_CHECK(colours(&c) > 1 && !is_placeholder(&c));
+        free(c.px);
+    }
+    release(&g);
+#else
+    printf("no make_gltf_scenes in this build\n");
+#endif
+}
+
+TL_TEST(viewer_help_lists_keys_bad_usage_fails)
+{
+    char cmd[2048];
+    snprintf(cmd, sizeof cmd, "'%s' --help | grep -q 'Keys'", TL_VIEWER);
+    TL_CHECK(run(cmd) == 0);
+    snprintf(cmd, sizeof cmd, "'%s' --view nonsense 2>/dev/null", TL_VIEWER);
+    TL_CHECK(run(cmd) == 2);
+    snprintf(cmd, sizeof cmd, "%s'%s' '%s/no-such-file.gltf' --frames 1 2>/dev/null", xvfb(), TL_VIEWER, TL_WORK);
+    TL_CHECK(run(cmd) == 1);
+}
