@@ -102,11 +102,9 @@ static void vw_print_targets(vw_run *run)
 
 static int vw_write_png(const char *path, uint32_t w, uint32_t h, const uint8_t *rgba)
 {
-    char err[256] = "";
-    tl_image_desc d = {.width = w, .height = h, .channels = 4, .type = TL_PIXEL_U8, .bottom_up = 1};
-    if (tl_image_write(path, &d, rgba, err, sizeof err) == TL_OK) return 0;
-    fprintf(stderr, "thinlight-viewer: %s\n", err[0] ? err : path);
-    return -1;
+    tl_image_desc d = {.width = w, .height = h, .channels = 4, .type = TL_PIXEL_U8, .bottom_up = 1,
+                       .logger = vw_logger(NULL)}; /* the logger prints the error line */
+    return tl_image_write(path, &d, rgba) == TL_OK ? 0 : -1;
 }
 
 /* The window as shown, panel included (before the swap: the back buffer). */

@@ -13,7 +13,7 @@ static void vw_log(void *user, tl_log_level level, const char *message)
     vw_app *app = (vw_app *)user;
     if (level == TL_LOG_INFO) return;
     fprintf(stderr, "thinlight-viewer: %s\n", message);
-    if (level == TL_LOG_ERROR) snprintf(app->status, sizeof app->status, "%s", message);
+    if (level == TL_LOG_ERROR && app) snprintf(app->status, sizeof app->status, "%s", message);
 }
 
 tl_logger vw_logger(vw_app *app) { return (tl_logger){.fn = vw_log, .user = app}; }
@@ -35,9 +35,7 @@ int vw_load_scene(vw_app *app)
     tl_scene *s = NULL;
     tl_result res;
     if (app->scene_path) {
-        char err[256] = "";
-        tl_gltf_options o = {.logger = vw_logger(app), .extra_lights = app->gltf_extra_lights, .error = err,
-                             .error_size = sizeof err};
+        tl_gltf_options o = {.logger = vw_logger(app), .extra_lights = app->gltf_extra_lights};
         res = tl_scene_load_gltf(app->scene_path, &o, &s);
     } else {
         res = tl_scene_create_default(&app->crypt, &s);

@@ -74,13 +74,21 @@ static int viewer(const char *args, const char *png)
     return s;
 }
 
+static void log_line(void *user, tl_log_level level, const char *message)
+{
+    (void)user;
+    (void)level;
+    fprintf(stderr, "%s\n", message);
+}
+
 static image load(const char *png)
 {
-    char path[1024], err[256] = "";
-    image im = {0, 0, NULL};
+    char path[1024];
     snprintf(path, sizeof path, "%s/%s", TL_WORK, png);
-    if (tl_image_read_rgba8(path, 0, &im.w, &im.h, &im.px, err, sizeof err) != TL_OK) fprintf(stderr, "%s\n", err);
-    return im;
+    tl_rgba8_image r = {0};
+    tl_image_read_desc d = {.logger = {.fn = log_line}}; /* default allocator: malloc, so free() releases */
+    tl_image_read_rgba8(path, &d, &r);
+    return (image){r.width, r.height, r.rgba};
 }
 
 static const uint8_t *at(const image *im, uint32_t x, uint32_t y) { return im->px + 4 * ((size_t)y * im->w + x); }
@@ -136,7 +144,7 @@ static tl_image_error compare(const image *a, const image *b)
     return e;
 }
 
-static void release(image *im) { tl_image_free(im->px); im->px = NULL; }
+static void release(image *im) { free(im->px); im->px = NULL; }
 
 /* An unmoved camera: the scene's, exactly as thinlight-render draws it, in every mode. */
 TL_TEST(viewer_final_view_equals_thinlight_render_each_mode)
