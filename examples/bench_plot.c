@@ -24,9 +24,11 @@ static const char *bench__colour(bench_config c)
     }
 }
 
-/* Tiled solid, volumes dashed, auto dotted (forward: per-object lists dashed, Forward+ solid). */
+/* Tiled solid, volumes dashed, auto dotted (forward: per-object lists dashed, Forward+ solid);
+ * the R11G11B10F light buffer dash-dotted. */
 static const char *bench__dash(bench_config c)
 {
+    if (bench_config_light_format(c) == TL_LIGHT_FORMAT_R11G11B10F) return " dt 4"; /* dash-dot */
     switch (bench_config_strategy(c)) {
     case TL_LIGHT_STRATEGY_TILED: return "";
     case TL_LIGHT_STRATEGY_VOLUMES: return " dt 2";
@@ -187,7 +189,7 @@ static int bench__error_script(FILE *f, const void *ctx)
             "(labels: lights; %s)\"\n"
             "set logscale x\n"
             "set xlabel 'ms per frame, median'\n"
-            "set key bottom right box opaque\n",
+            "set key bottom right box opaque font ',8'\n",
             run->scene_name);
     bench__series series[BENCH_CONFIGS * BENCH_MAX_SIZES];
     size_t n = bench__series_list(run, series);

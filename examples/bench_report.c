@@ -244,7 +244,7 @@ void bench_print_table(const bench_run *run)
            run->timers_ok ? "GPU time (timer queries)" : "wall clock (no GPU timers)");
     for (size_t si = 0; si < opt->size_count; si++) {
         bench_size size = opt->sizes[si];
-        printf("\n%ux%u\n%-22s %6s %8s %8s %8s %7s %5s %4s %9s %9s %7s %7s %4s\n", size.width, size.height, "mode",
+        printf("\n%ux%u\n%-26s %6s %8s %8s %8s %7s %5s %4s %9s %9s %7s %7s %4s\n", size.width, size.height, "mode",
                "lights", "ms med", "ms p90", "light ms", "ns/pair", "B/px", "sum", "MiB@1080p", "MiB moved", "PSNR dB",
                "max err", "NaN");
         for (size_t m = 0; m < mode_count; m++) {
@@ -252,14 +252,14 @@ void bench_print_table(const bench_run *run)
             for (size_t li = 0; li < opt->light_count; li++) {
                 const bench_record *r = bench_find(run, modes[m], opt->lights[li], size);
                 if (!r) continue;
-                char label[40], pl[16], cov[16], psnr[16], maxe[16];
+                char label[48], pl[16], cov[16], psnr[16], maxe[16];
                 snprintf(label, sizeof label, "%s%s", bench_config_name(r->config),
                          r->mode == BENCH_REFERENCE ? " (ref)" : "");
                 bench__fmt(pl, sizeof pl, "%.2f", r->lighting_ms);
                 bench__fmt(cov, sizeof cov, "%.1f", bench_ns_per_pair(r));
                 bench__fmt(psnr, sizeof psnr, "%.1f", r->mode == BENCH_REFERENCE ? NAN : r->ldr.psnr_db);
                 bench__fmt(maxe, sizeof maxe, "%.0f", r->mode == BENCH_REFERENCE ? NAN : r->ldr.max_abs);
-                printf("%-22s %6u %8.2f %8.2f %8s %7s %5u %4u %9.1f %9.1f %7s %7s %4llu\n", label, r->lights,
+                printf("%-26s %6u %8.2f %8.2f %8s %7s %5u %4u %9.1f %9.1f %7s %7s %4llu\n", label, r->lights,
                        r->ms_median, r->ms_p90, pl, cov, r->bytes_per_pixel, r->bytes_per_pixel_sum,
                        bench_mib_at(r, 1920, 1080), r->bytes_moved / 1048576.0, psnr, maxe,
                        (unsigned long long)r->nan_pixels);
