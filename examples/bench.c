@@ -44,7 +44,8 @@ static const char usage_text[] =
     "                   unless --no-plot)\n"
     "  --seed S         seed of the light layout (default 1)\n"
     "  --lighting M     auto (default: ggx for glTF materials, else blinn-phong), blinn-phong or ggx\n"
-    "  --fresnel F      thin-lpp with GGX: two-sums (default, exact) or nv (Schlick with n.v per pixel)\n"
+    "  --fresnel F      thin-lpp with GGX: two-sums (default, exact) or nv (Schlick with n.v per pixel);\n"
+    "                   without it, a GGX-lit sweep also measures thin-lpp/tiled/nv beside the exact layout\n"
     "  --no-plot        do not run gnuplot\n"
     TL_TOOL_CONTEXT_HELP
     "  --help           this text\n"
@@ -331,6 +332,18 @@ static int bench__check_outputs(bench_options *o, char **doc_text)
     return 0;
 }
 
+/* With GGX lighting (asked, or the planner's choice for the scene) and no --fresnel, thin-lpp/tiled
+ * is also measured with the cheaper Fresnel layout, so the report shows both. */
+static void bench__fresnel_variant(bench_options *o, bench_scene *scene)
+{
+    tl_scene_feature_set features;
+    tl_frame_plan plan;
+    tl_scene_features(bench_scene_get(scene), &features);
+    tl_renderer_desc desc = {.mode = TL_MODE_THIN_LPP, .lighting = o->lighting, .width = 64, .height = 64};
+    o->fresnel_nv_variant = o->fresnel == TL_FRESNEL_DEFAULT && tl_frame_plan_build(&desc, &features, &plan) == TL_OK &&
+                            plan.lighting == TL_LIGHTING_GGX;
+}
+
 int main(int argc, char **argv)
 {
     bench_run *run = calloc(1, sizeof *run);
@@ -350,6 +363,7 @@ int main(int argc, char **argv)
     bench_scene *scene = NULL;
     rc = BENCH_EXIT_BAD_INPUT;
     if (bench_scene_open(opt, &scene, run) || bench__check_outputs(opt, &doc_text)) goto done;
+    bench__fresnel_variant(opt, scene);
     tl_tool_machine(run->cpu, sizeof run->cpu, &run->cores);
     /* the plans first: the sweep times each planned mode against its no_planning renderer */
     if (bench_planning_compare(run, scene) || bench_sweep(run, scene)) goto done;

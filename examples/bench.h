@@ -25,7 +25,7 @@
 #define BENCH_MAX_FRAMES 1000u
 #define BENCH_MODES (TL_MODE_COUNT_ - 1) /* every mode but DEFAULT */
 #define BENCH_STRATEGIES (TL_LIGHT_STRATEGY_COUNT_) /* auto, volumes, tiled */
-#define BENCH_CONFIGS (BENCH_MODES * BENCH_STRATEGIES * 2) /* x 2: the R11G11B10F light buffer */
+#define BENCH_CONFIGS (BENCH_MODES * BENCH_STRATEGIES * 3) /* x 3: as asked, R11G11B10F, Fresnel n.v */
 #define BENCH_REFERENCE TL_MODE_FAT
 #define BENCH_PNG_MAX_BYTES (300u * 1024u)
 /* Heat maps show |mode - fat| of the final image, largest RGB channel, 0..HEAT_SCALE 8-bit steps. */
@@ -35,11 +35,15 @@
 #define BENCH_DOC_END "<!-- bench:end -->"
 
 /* What the sweep renders: a mode with a light strategy, and for thin-lpp with the tiled strategy
- * also the R11G11B10F light buffer: mode + TL_MODE_COUNT_ * (strategy + BENCH_STRATEGIES * small).
- * Its name is the mode's with the strategy ("thin-lpp/tiled", "fat/volumes", "thin-lpp/auto",
- * "thin-lpp/tiled/r11g11b10f"), except forward: "forward" with per-object lists (volumes),
- * "forward+" with tile lists (tiled). */
+ * two variants: the R11G11B10F light buffer (variant 1) and, when the frame is lit with GGX, the
+ * cheaper Fresnel layout (variant 2, Schlick with n.v per pixel): mode + TL_MODE_COUNT_ *
+ * (strategy + BENCH_STRATEGIES * variant). Its name is the mode's with the strategy
+ * ("thin-lpp/tiled", "fat/volumes", "thin-lpp/auto", "thin-lpp/tiled/r11g11b10f",
+ * "thin-lpp/tiled/nv"), except forward: "forward" with per-object lists (volumes), "forward+"
+ * with tile lists (tiled). */
 typedef unsigned bench_config;
+#define BENCH_VARIANT_R11G11B10F 1u
+#define BENCH_VARIANT_FRESNEL_NV 2u
 static inline bench_config bench_config_make(tl_render_mode m, tl_light_strategy s)
 {
     return (unsigned)m + (unsigned)TL_MODE_COUNT_ * (unsigned)s;
@@ -49,14 +53,21 @@ static inline tl_light_strategy bench_config_strategy(bench_config c)
 {
     return (tl_light_strategy)(c / TL_MODE_COUNT_ % BENCH_STRATEGIES);
 }
-/* The light buffer's format: R11G11B10F for the small-buffer variant, else the default. */
+static inline unsigned bench_config_variant_of(bench_config c) { return c / (TL_MODE_COUNT_ * BENCH_STRATEGIES); }
+static inline bench_config bench_config_variant(bench_config c, unsigned variant)
+{
+    return c % (TL_MODE_COUNT_ * BENCH_STRATEGIES) + TL_MODE_COUNT_ * BENCH_STRATEGIES * variant;
+}
+/* The light buffer's format: R11G11B10F for that variant, else the default. */
 static inline tl_light_format bench_config_light_format(bench_config c)
 {
-    return c / (TL_MODE_COUNT_ * BENCH_STRATEGIES) ? TL_LIGHT_FORMAT_R11G11B10F : TL_LIGHT_FORMAT_DEFAULT;
+    return bench_config_variant_of(c) == BENCH_VARIANT_R11G11B10F ? TL_LIGHT_FORMAT_R11G11B10F
+                                                                   : TL_LIGHT_FORMAT_DEFAULT;
 }
-static inline bench_config bench_config_small_light_buffer(bench_config c)
+/* The Fresnel layout: n.v for that variant, else `asked` (--fresnel). */
+static inline tl_fresnel_layout bench_config_fresnel(bench_config c, tl_fresnel_layout asked)
 {
-    return c % (TL_MODE_COUNT_ * BENCH_STRATEGIES) + TL_MODE_COUNT_ * BENCH_STRATEGIES;
+    return bench_config_variant_of(c) == BENCH_VARIANT_FRESNEL_NV ? TL_FRESNEL_NV : asked;
 }
 const char *bench_config_name(bench_config c);
 /* The name for file names: '/' becomes '-', '+' becomes "-plus". */
@@ -81,6 +92,8 @@ typedef struct bench_options {
     const char *json, *out, *doc;
     int quick, no_plot, help, list_devices;
     int small_light_buffer;   /* also thin-lpp/tiled with an R11G11B10F light buffer (--light-formats) */
+    int fresnel_nv_variant;   /* also thin-lpp/tiled with the n.v Fresnel layout: set when the scene is
+                                 lit with GGX and --fresnel was not given */
     tl_tool_context_options context; /* --context, --device */
     tl_lighting_model lighting;      /* --lighting (auto: from the scene's materials) */
     tl_fresnel_layout fresnel;       /* --fresnel (thin-lpp with GGX) */

@@ -25,10 +25,11 @@ static const char *bench__colour(bench_config c)
 }
 
 /* Tiled solid, volumes dashed, auto dotted (forward: per-object lists dashed, Forward+ solid);
- * the R11G11B10F light buffer dash-dotted. */
+ * the R11G11B10F light buffer dash-dotted, the n.v Fresnel layout dash-dot-dotted. */
 static const char *bench__dash(bench_config c)
 {
-    if (bench_config_light_format(c) == TL_LIGHT_FORMAT_R11G11B10F) return " dt 4"; /* dash-dot */
+    if (bench_config_variant_of(c) == BENCH_VARIANT_R11G11B10F) return " dt 4"; /* dash-dot */
+    if (bench_config_variant_of(c) == BENCH_VARIANT_FRESNEL_NV) return " dt 5";
     switch (bench_config_strategy(c)) {
     case TL_LIGHT_STRATEGY_TILED: return "";
     case TL_LIGHT_STRATEGY_VOLUMES: return " dt 2";

@@ -32,10 +32,10 @@ static const char *bench__config_string(bench_config c, int slug)
 {
     unsigned m = (unsigned)bench_config_mode(c), s = (unsigned)bench_config_strategy(c);
     if (m < 1 || m > BENCH_MODES || s >= BENCH_STRATEGIES) return "?";
-    if (bench_config_light_format(c) == TL_LIGHT_FORMAT_R11G11B10F) {
-        if (m != TL_MODE_THIN_LPP || s != TL_LIGHT_STRATEGY_TILED) return "?";
-        return slug ? "thin-lpp-tiled-r11g11b10f" : "thin-lpp/tiled/r11g11b10f";
-    }
+    unsigned v = bench_config_variant_of(c);
+    if (v && (m != TL_MODE_THIN_LPP || s != TL_LIGHT_STRATEGY_TILED)) return "?";
+    if (v == BENCH_VARIANT_R11G11B10F) return slug ? "thin-lpp-tiled-r11g11b10f" : "thin-lpp/tiled/r11g11b10f";
+    if (v == BENCH_VARIANT_FRESNEL_NV) return slug ? "thin-lpp-tiled-nv" : "thin-lpp/tiled/nv";
     return bench__names[s][m - 1][slug];
 }
 
@@ -51,9 +51,10 @@ size_t bench_render_modes(const bench_options *opt, bench_config *modes)
         modes[n++] = bench_config_make(BENCH_REFERENCE, opt->strategies[s]);
         for (size_t i = 0; i < opt->mode_count; i++)
             if (opt->modes[i] != BENCH_REFERENCE) modes[n++] = bench_config_make(opt->modes[i], opt->strategies[s]);
-        if (opt->small_light_buffer && opt->strategies[s] == TL_LIGHT_STRATEGY_TILED &&
-            bench_mode_requested(opt, TL_MODE_THIN_LPP))
-            modes[n++] = bench_config_small_light_buffer(bench_config_make(TL_MODE_THIN_LPP, TL_LIGHT_STRATEGY_TILED));
+        bench_config tiled = bench_config_make(TL_MODE_THIN_LPP, TL_LIGHT_STRATEGY_TILED);
+        if (opt->strategies[s] != TL_LIGHT_STRATEGY_TILED || !bench_mode_requested(opt, TL_MODE_THIN_LPP)) continue;
+        if (opt->small_light_buffer) modes[n++] = bench_config_variant(tiled, BENCH_VARIANT_R11G11B10F);
+        if (opt->fresnel_nv_variant) modes[n++] = bench_config_variant(tiled, BENCH_VARIANT_FRESNEL_NV);
     }
     return n;
 }
@@ -326,7 +327,7 @@ static int bench__size_setup(bench_run *run, tl_context *ctx, const tl_scene *sc
     for (size_t m = 0; m < mode_count; m++) {
         tl_renderer_desc desc = {.mode = bench_config_mode(modes[m]), .light_strategy = bench_config_strategy(modes[m]),
                                  .light_format = bench_config_light_format(modes[m]),
-                                 .lighting = run->opt.lighting, .fresnel = run->opt.fresnel,
+                                 .lighting = run->opt.lighting, .fresnel = bench_config_fresnel(modes[m], run->opt.fresnel),
                                  .width = size.width, .height = size.height, .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR), .synchronous_stats = 1,
                                  .get_proc_address = tl_context_proc_loader, .get_proc_address_user = ctx,
                                  .logger = tl_tool_logger(BENCH_TOOL)};
@@ -433,7 +434,7 @@ static int bench__check_memory(const bench_options *opt, const tl_scene *scene)
             tl_frame_plan plan;
             tl_renderer_desc desc = {.mode = bench_config_mode(modes[m]), .light_strategy = bench_config_strategy(modes[m]),
                                      .light_format = bench_config_light_format(modes[m]),
-                                     .lighting = opt->lighting, .fresnel = opt->fresnel,
+                                     .lighting = opt->lighting, .fresnel = bench_config_fresnel(modes[m], opt->fresnel),
                                      .width = size.width, .height = size.height};
             if (tl_frame_plan_build(&desc, &features, &plan) == TL_OK) bpp += plan.bytes_per_pixel;
         }
