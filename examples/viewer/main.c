@@ -250,7 +250,6 @@ static int vw_start(vw_run *run)
     glfwGetFramebufferSize(run->window, &fw, &fh);
     app->width = (uint32_t)fw;
     app->height = (uint32_t)fh;
-    if (vw_load_scene(app)) return -1;
     vw_camera_from_scene(&app->cam, &app->scene->camera, app->extent);
     if (vw_views_init(app, vw_proc_ptr)) {
         fprintf(stderr, "thinlight-viewer: the context lacks glMemoryBarrier or glGetNamedBufferSubData\n");
@@ -271,6 +270,7 @@ int main(int argc, char **argv)
     int status = vw_parse_args(argc, argv, &run.args);
     if (status >= 0) return status;
     vw_settings(&run);
+    if (vw_load_scene(&run.app)) return 1; /* bad input fails before any window or display is needed */
     if (!glfwInit()) {
         const char *why = NULL;
         glfwGetError(&why);
