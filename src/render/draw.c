@@ -100,3 +100,12 @@ void tl__draw_objects(tl_renderer *r, const tl__pass_ctx *ctx, tl__draw_set set)
         ctx->rec->st.draw_calls++;
     }
 }
+
+void tl__draw_fullscreen(tl_renderer *r, const tl__pass_ctx *ctx)
+{
+    const GladGLContext *gl = &r->gl;
+    tl__state_program(gl, &r->state, ctx->cp->programs[0]);
+    tl__state_vertex_array(gl, &r->state, r->vao_empty);
+    gl->DrawArrays(GL_TRIANGLES, 0, 3);
+    ctx->rec->st.draw_calls++;
+}

@@ -112,9 +112,14 @@ typedef struct tl__pass_def {
 /* What the light pass reads and writes in a mode, whichever strategy gathers the lights
  * (pass_lights.c; the tiled pass uses it too). */
 void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d);
-/* Forward shading has a depth pre-pass in this plan (pass_geometry.c). */
+/* Forward shading reads tile lists (Forward+) in this plan; it has a depth pre-pass (modes.c). */
+int tl__forward_plus(const tl__plan_input *in);
 int tl__forward_prepass(const tl__plan_input *in);
-/* SSAO in this plan (pass_ssao.c): 0 none, 1 read by the shading pass (material or forward), 2 taken
+/* The state of a full-screen triangle pass: colour and depth writes on, nothing else (modes.c). */
+extern const tl__pipeline tl__pipeline_fullscreen;
+/* The permute step of a pass with one program and no defines of its own (modes.c). */
+void tl__permute_one_program(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out);
+/* SSAO in this plan (modes.c): 0 none, 1 read by the shading pass (material or forward), 2 taken
  * from HDR by the ssao-apply pass (thin-deferred, fat); and the defines of a shading pass that
  * samples it (" TL_SSAO_AMBIENT", " TL_SSAO_DIFFUSE", "" when it does not). */
 int tl__ssao_pass(const tl__plan_input *in);

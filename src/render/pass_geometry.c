@@ -23,8 +23,6 @@ static tl__pipeline tl__geometry_state(const tl__plan_input *in, tl__depth_test 
 static void tl__draw_opaque(tl_renderer *r, const tl__pass_ctx *ctx) { tl__draw_objects(r, ctx, TL__DRAW_OPAQUE); }
 
 /* Forward+ (forward with tiled lights): the tiles' depth bounds come from the depth pre-pass. */
-static int tl__forward_plus(const tl__plan_input *in) { return in->lights && in->strategy == TL_LIGHT_STRATEGY_TILED; }
-int tl__forward_prepass(const tl__plan_input *in) { return !in->d.forward_no_depth_prepass || tl__forward_plus(in); }
 
 /* ---- depth pre-pass (forward) ---------------------------------------------------------------- */
 

@@ -6,17 +6,6 @@
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
-static const tl__pipeline tl__fullscreen = {.color_write = 1, .depth_write = 1};
-
-static void tl__draw_fullscreen(tl_renderer *r, const tl__pass_ctx *ctx)
-{
-    const GladGLContext *gl = &r->gl;
-    tl__state_program(gl, &r->state, ctx->cp->programs[0]);
-    tl__state_vertex_array(gl, &r->state, r->vao_empty);
-    gl->DrawArrays(GL_TRIANGLES, 0, 3);
-    ctx->rec->st.draw_calls++;
-}
-
 /* ---- fog: HDR = HDR T + colour (1 - T) ------------------------------------------------------- */
 
 static void tl__fog_declare(const tl__plan_input *in, tl__pass_decl *d)
@@ -25,7 +14,7 @@ static void tl__fog_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->samples = TL__B(DEPTH);
     d->reads = TL__B(DEPTH) | TL__B(HDR);
     d->writes = TL__B(HDR);
-    d->state = tl__fullscreen;
+    d->state = tl__pipeline_fullscreen;
     d->state.blend = TL__BLEND_ALPHA;
 }
 
@@ -53,7 +42,7 @@ static void tl__dof_declare(const tl__plan_input *in, tl__pass_decl *d)
     if (!in->d.dof.enabled) return;
     d->reads = d->samples = TL__B(DEPTH) | TL__B(HDR);
     d->writes = TL__B(DOF);
-    d->state = tl__fullscreen;
+    d->state = tl__pipeline_fullscreen;
 }
 
 static void tl__dof_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
@@ -77,14 +66,7 @@ static void tl__dof_apply_declare(const tl__plan_input *in, tl__pass_decl *d)
     if (!in->d.dof.enabled) return;
     d->reads = d->samples = TL__B(DOF);
     d->writes = TL__B(HDR);
-    d->state = tl__fullscreen;
-}
-
-static void tl__one_program(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
-{
-    (void)in;
-    (void)d;
-    out->used[0] = 1;
+    d->state = tl__pipeline_fullscreen;
 }
 
 const tl__pass_def tl__pass_dof_apply = {
@@ -92,6 +74,6 @@ const tl__pass_def tl__pass_dof_apply = {
     .name = "dof-apply",
     .programs = {{"dof-apply", "fullscreen.vert.glsl", "dof_apply.frag.glsl"}},
     .declare = tl__dof_apply_declare,
-    .permute = tl__one_program,
+    .permute = tl__permute_one_program,
     .execute = tl__draw_fullscreen,
 };

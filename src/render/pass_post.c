@@ -6,31 +6,13 @@
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
-static const tl__pipeline tl__fullscreen = {.color_write = 1, .depth_write = 1};
-
-static void tl__draw_fullscreen(tl_renderer *r, const tl__pass_ctx *ctx)
-{
-    const GladGLContext *gl = &r->gl;
-    tl__state_program(gl, &r->state, ctx->cp->programs[0]);
-    tl__state_vertex_array(gl, &r->state, r->vao_empty);
-    gl->DrawArrays(GL_TRIANGLES, 0, 3);
-    ctx->rec->st.draw_calls++;
-}
-
-static void tl__one_program(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
-{
-    (void)in;
-    (void)d;
-    out->used[0] = 1;
-}
-
 /* ---- tone map -------------------------------------------------------------------------------- */
 
 static void tl__tonemap_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
     d->reads = d->samples = TL__B(HDR);
     d->writes = in->d.fxaa != TL_FXAA_OFF ? TL__B(LDR) : TL__B(OUTPUT);
-    d->state = tl__fullscreen;
+    d->state = tl__pipeline_fullscreen;
 }
 
 /* Into a caller's framebuffer of another size the image is resampled: linear filtering then. */
@@ -46,7 +28,7 @@ const tl__pass_def tl__pass_tonemap = {
     .name = "tonemap",
     .programs = {{"tonemap", "fullscreen.vert.glsl", "tonemap.frag.glsl"}},
     .declare = tl__tonemap_declare,
-    .permute = tl__one_program,
+    .permute = tl__permute_one_program,
     .execute = tl__tonemap_execute,
 };
 
@@ -57,7 +39,7 @@ static void tl__fxaa_declare(const tl__plan_input *in, tl__pass_decl *d)
     if (in->d.fxaa == TL_FXAA_OFF) return;
     d->reads = d->samples = TL__B(LDR);
     d->writes = TL__B(OUTPUT);
-    d->state = tl__fullscreen;
+    d->state = tl__pipeline_fullscreen;
 }
 
 static void tl__fxaa_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
@@ -92,7 +74,7 @@ static void tl__luma_declare(const tl__plan_input *in, tl__pass_decl *d)
     (void)in;
     d->reads = d->samples = TL__B(OUTPUT);
     d->writes = TL__B(LDR);
-    d->state = tl__fullscreen;
+    d->state = tl__pipeline_fullscreen;
 }
 
 const tl__pass_def tl__pass_luma = {
@@ -100,6 +82,6 @@ const tl__pass_def tl__pass_luma = {
     .name = "luma",
     .programs = {{"luma", "fullscreen.vert.glsl", "luma.frag.glsl"}},
     .declare = tl__luma_declare,
-    .permute = tl__one_program,
+    .permute = tl__permute_one_program,
     .execute = tl__draw_fullscreen,
 };

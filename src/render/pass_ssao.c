@@ -9,31 +9,7 @@
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
-static const tl__pipeline tl__fullscreen = {.color_write = 1, .depth_write = 1};
-
-int tl__ssao_pass(const tl__plan_input *in)
-{
-    if (in->d.ssao.method == TL_SSAO_OFF) return 0;
-    if (in->mode->forward) return tl__forward_prepass(in) ? 1 : 0;
-    return in->mode->material_pass ? 1 : 2;
-}
-
-const char *tl__ssao_defines(const tl__plan_input *in, const tl__pass_decl *d)
-{
-    if (!(d->samples & TL__B(AO))) return "";
-    return in->d.ssao.diffuse ? " TL_SSAO_AMBIENT TL_SSAO_DIFFUSE" : " TL_SSAO_AMBIENT";
-}
-
 static int tl__ssao_fat(const tl__plan_input *in) { return (in->mode->gbuffer_writes & TL__B(FAT_POSITION)) != 0; }
-
-static void tl__draw_fullscreen(tl_renderer *r, const tl__pass_ctx *ctx)
-{
-    const GladGLContext *gl = &r->gl;
-    tl__state_program(gl, &r->state, ctx->cp->programs[0]);
-    tl__state_vertex_array(gl, &r->state, r->vao_empty);
-    gl->DrawArrays(GL_TRIANGLES, 0, 3);
-    ctx->rec->st.draw_calls++;
-}
 
 /* ---- the estimator --------------------------------------------------------------------------- */
 
@@ -45,7 +21,7 @@ static void tl__ssao_declare(const tl__plan_input *in, tl__pass_decl *d)
     else d->samples = TL__B(DEPTH) | TL__B(RT0);
     d->reads = d->samples;
     d->writes = TL__B(AO_RAW);
-    d->state = tl__fullscreen;
+    d->state = tl__pipeline_fullscreen;
 }
 
 static void tl__ssao_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
@@ -73,7 +49,7 @@ static void tl__ssao_blur_declare(const tl__plan_input *in, tl__pass_decl *d)
     if (!tl__ssao_pass(in)) return;
     d->reads = d->samples = TL__B(AO_RAW) | TL__B(DEPTH);
     d->writes = TL__B(AO);
-    d->state = tl__fullscreen;
+    d->state = tl__pipeline_fullscreen;
 }
 
 static void tl__ssao_blur_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
@@ -100,7 +76,7 @@ static void tl__ssao_apply_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->samples = TL__B(AO) | (tl__ssao_fat(in) ? TL__B(FAT_ALBEDO) : TL__B(RT1));
     d->reads = d->samples | TL__B(HDR);
     d->writes = TL__B(HDR);
-    d->state = tl__fullscreen;
+    d->state = tl__pipeline_fullscreen;
     d->state.blend = TL__BLEND_ADD;
 }
 

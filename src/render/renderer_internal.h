@@ -245,6 +245,8 @@ typedef enum tl__draw_set { TL__DRAW_OPAQUE, TL__DRAW_TRANSPARENT } tl__draw_set
 void tl__visibility(tl_renderer *r, const tl__view *v, tl__frame_record *rec);
 void tl__objects_fill(const tl_renderer *r, const tl__view *v, int with_lists, tl__object_gpu *out);
 void tl__draw_objects(tl_renderer *r, const tl__pass_ctx *ctx, tl__draw_set set);
+/* A full-screen triangle with the pass's first program (draw.c). */
+void tl__draw_fullscreen(tl_renderer *r, const tl__pass_ctx *ctx);
 
 /* light_volumes.c: volume meshes, per-frame instances (the light pass's prepare and upload). */
 void tl__light_volumes_create(tl_renderer *r);
