@@ -253,108 +253,125 @@ static void tl__append_stage_header(const tl__source_list *s, const char *what, 
     tl__msg_append(log, log_size, "%s", "):\n");
 }
 
-tl_result tl__program_build(const GladGLContext *gl, const tl__program_desc *desc,
-                            GLuint *out_program, char *log, size_t log_size)
+/* Checks the descriptor; the number of stages on success, 0 (with a message) otherwise. */
+static size_t tl__program_stage_count(const GladGLContext *gl, const tl__program_desc *desc,
+                                      char *log, size_t log_size)
 {
-    static const char header[] = "#version 450 core\n";
-    tl__msg(log, log_size, "%s", "");
-    if (out_program) *out_program = 0;
-    if (!gl || !desc || !out_program) {
-        tl__msg(log, log_size, "tl__program_build: NULL %s",
-                !gl ? "context" : !desc ? "descriptor" : "output");
-        return TL_ERROR_INVALID_ARGUMENT;
+    if (!gl || !desc) {
+        tl__msg(log, log_size, "tl__program_build: NULL %s", !gl ? "context" : "descriptor");
+        return 0;
     }
     if (desc->define_count && !desc->defines) {
         tl__msg(log, log_size, "%s", "tl__program_build: define_count without defines");
-        return TL_ERROR_INVALID_ARGUMENT;
+        return 0;
     }
     size_t stage_count = 0;
     while (stage_count < TL__PROGRAM_MAX_STAGES && desc->stages[stage_count].type != 0)
         stage_count++;
-    if (stage_count == 0) {
+    if (stage_count == 0)
         tl__msg(log, log_size, "program \"%s\": no shader stage", desc->label ? desc->label : "");
+    return stage_count;
+}
+
+/* Expands stage i's source (version header, defines, #includes) into s and compiles it. */
+static tl_result tl__compile_stage(const GladGLContext *gl, const tl__program_desc *desc, size_t i,
+                                   tl__source_list *s, GLuint *out_shader)
+{
+    static const char header[] = "#version 450 core\n";
+    const tl__shader_stage *st = &desc->stages[i];
+    const char *stage = tl__stage_string(st->type);
+    const char *name = st->name ? st->name : "(inline)";
+    const char *text = st->source ? st->source : tl__shader_source(st->name);
+    if (!stage) {
+        tl__msg(s->log, s->log_size, "stage %zu (\"%s\"): unknown shader type 0x%x", i, name,
+                (unsigned)st->type);
         return TL_ERROR_INVALID_ARGUMENT;
     }
+    if (!text) {
+        tl__msg(s->log, s->log_size, "%s shader \"%s\": not among the embedded shaders", stage,
+                name);
+        return TL_ERROR_INVALID_ARGUMENT;
+    }
+    s->count = s->line_count = s->included_count = 0;
+    tl_result result = tl__add(s, header, sizeof header - 1);
+    for (size_t d = 0; d < desc->define_count && result == TL_OK; d++)
+        result = tl__add_define(s, desc->defines[d]);
+    if (result == TL_OK) result = tl__add_line(s, 1, 0);
+    if (result == TL_OK) result = tl__expand(s, name, text, 0, 0);
+    if (result != TL_OK) return result;
+
+    GLuint shader = gl->CreateShader(st->type);
+    *out_shader = shader;
+    if (!shader) {
+        tl__msg(s->log, s->log_size, "%s shader \"%s\": glCreateShader failed", stage, name);
+        return TL_ERROR_GL;
+    }
+    gl->ShaderSource(shader, (GLsizei)s->count, s->ptr, s->len);
+    gl->CompileShader(shader);
+    GLint ok = GL_FALSE;
+    gl->GetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (!ok || tl__has_info_log(gl, shader, false)) {
+        tl__append_stage_header(s, ok ? "warnings in" : "failed to compile", stage, name, s->log,
+                                s->log_size);
+        tl__append_info_log(gl, shader, false, s->log, s->log_size);
+    }
+    return ok ? TL_OK : TL_ERROR_GL;
+}
+
+/* Links the compiled stages into a new program; the shaders stay the caller's. */
+static tl_result tl__link_program(const GladGLContext *gl, const tl__program_desc *desc,
+                                  const GLuint *shaders, size_t stage_count, GLuint *out_program,
+                                  char *log, size_t log_size)
+{
+    GLuint program = gl->CreateProgram();
+    if (!program) {
+        tl__msg_append(log, log_size, "%s", "glCreateProgram failed\n");
+        return TL_ERROR_GL;
+    }
+    for (size_t i = 0; i < stage_count; i++) gl->AttachShader(program, shaders[i]);
+    gl->LinkProgram(program);
+    GLint ok = GL_FALSE;
+    gl->GetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (!ok || tl__has_info_log(gl, program, true)) {
+        tl__msg_append(log, log_size, "%s program \"%s\":\n", ok ? "link warnings in" : "failed to link",
+                       desc->label ? desc->label : "");
+        tl__append_info_log(gl, program, true, log, log_size);
+    }
+    for (size_t i = 0; i < stage_count; i++) gl->DetachShader(program, shaders[i]);
+    if (!ok) {
+        gl->DeleteProgram(program);
+        return TL_ERROR_GL;
+    }
+    *out_program = program;
+    return TL_OK;
+}
+
+tl_result tl__program_build(const GladGLContext *gl, const tl__program_desc *desc,
+                            GLuint *out_program, char *log, size_t log_size)
+{
+    tl__msg(log, log_size, "%s", "");
+    if (!out_program) {
+        tl__msg(log, log_size, "%s", "tl__program_build: NULL output");
+        return TL_ERROR_INVALID_ARGUMENT;
+    }
+    *out_program = 0;
+    size_t stage_count = tl__program_stage_count(gl, desc, log, log_size);
+    if (stage_count == 0) return TL_ERROR_INVALID_ARGUMENT;
 
     /* About 12 KiB on the stack keeps the call allocation-free. */
     tl__source_list list;
-    tl__source_list *s = &list;
+    list.log = log;
+    list.log_size = log_size;
     GLuint shaders[TL__PROGRAM_MAX_STAGES] = {0};
     GLuint program = 0;
     tl_result result = TL_OK;
-
-    for (size_t i = 0; i < stage_count && result == TL_OK; i++) {
-        const tl__shader_stage *st = &desc->stages[i];
-        const char *stage = tl__stage_string(st->type);
-        const char *name = st->name ? st->name : "(inline)";
-        const char *text = st->source ? st->source : tl__shader_source(st->name);
-        if (!stage) {
-            tl__msg(log, log_size, "stage %zu (\"%s\"): unknown shader type 0x%x", i, name,
-                    (unsigned)st->type);
-            result = TL_ERROR_INVALID_ARGUMENT;
-            break;
-        }
-        if (!text) {
-            tl__msg(log, log_size, "%s shader \"%s\": not among the embedded shaders", stage,
-                    name);
-            result = TL_ERROR_INVALID_ARGUMENT;
-            break;
-        }
-        s->count = s->line_count = s->included_count = 0;
-        s->log = log;
-        s->log_size = log_size;
-        result = tl__add(s, header, sizeof header - 1);
-        for (size_t d = 0; d < desc->define_count && result == TL_OK; d++)
-            result = tl__add_define(s, desc->defines[d]);
-        if (result == TL_OK) result = tl__add_line(s, 1, 0);
-        if (result == TL_OK) result = tl__expand(s, name, text, 0, 0);
-        if (result != TL_OK) break;
-
-        shaders[i] = gl->CreateShader(st->type);
-        if (!shaders[i]) {
-            tl__msg(log, log_size, "%s shader \"%s\": glCreateShader failed", stage, name);
-            result = TL_ERROR_GL;
-            break;
-        }
-        gl->ShaderSource(shaders[i], (GLsizei)s->count, s->ptr, s->len);
-        gl->CompileShader(shaders[i]);
-        GLint ok = GL_FALSE;
-        gl->GetShaderiv(shaders[i], GL_COMPILE_STATUS, &ok);
-        if (!ok || tl__has_info_log(gl, shaders[i], false)) {
-            tl__append_stage_header(s, ok ? "warnings in" : "failed to compile", stage, name, log,
-                                    log_size);
-            tl__append_info_log(gl, shaders[i], false, log, log_size);
-        }
-        if (!ok) result = TL_ERROR_GL;
-    }
-
-    if (result == TL_OK) {
-        program = gl->CreateProgram();
-        if (!program) {
-            tl__msg_append(log, log_size, "%s", "glCreateProgram failed\n");
-            result = TL_ERROR_GL;
-        }
-    }
-    if (result == TL_OK) {
-        for (size_t i = 0; i < stage_count; i++) gl->AttachShader(program, shaders[i]);
-        gl->LinkProgram(program);
-        GLint ok = GL_FALSE;
-        gl->GetProgramiv(program, GL_LINK_STATUS, &ok);
-        if (!ok || tl__has_info_log(gl, program, true)) {
-            tl__msg_append(log, log_size, "%s program \"%s\":\n",
-                           ok ? "link warnings in" : "failed to link",
-                           desc->label ? desc->label : "");
-            tl__append_info_log(gl, program, true, log, log_size);
-        }
-        for (size_t i = 0; i < stage_count; i++) gl->DetachShader(program, shaders[i]);
-        if (!ok) result = TL_ERROR_GL;
-    }
+    for (size_t i = 0; i < stage_count && result == TL_OK; i++)
+        result = tl__compile_stage(gl, desc, i, &list, &shaders[i]);
+    if (result == TL_OK)
+        result = tl__link_program(gl, desc, shaders, stage_count, &program, log, log_size);
     for (size_t i = 0; i < stage_count; i++)
         if (shaders[i]) gl->DeleteShader(shaders[i]);
-    if (result != TL_OK) {
-        if (program) gl->DeleteProgram(program);
-        return result;
-    }
+    if (result != TL_OK) return result;
     tl__gl_label(gl, GL_PROGRAM, program, desc->label);
     *out_program = program;
     return TL_OK;

@@ -117,101 +117,107 @@ static int tl__place(const tl__light_plan *plan, tl__r2 *seq, tl__rng *rng, floa
     return 0;
 }
 
+/* Point lights: radius shrinks slowly with the count (64 -> 5 m, 4096 -> 2.5 m), intensity
+ * falls so that count * intensity * radius (the mean irradiance) stays constant. */
+static void tl__point_lights(const tl__light_plan *plan, tl__r2 *seq, tl__rng *rng, tl_light *out)
+{
+    uint32_t n = plan->point_lights;
+    if (n == 0) return;
+    float scale = 64.0f / (float)n;
+    float radius = tl__clampf(5.0f * powf(scale, 1.0f / 6.0f), 1.5f, 6.0f);
+    float intensity = 3.2f * scale * (5.0f / radius);
+    /* a handful of lights leaves most of the view outside every range: lift them a little */
+    if (n < 32) intensity *= sqrtf(32.0f / (float)n);
+    for (uint32_t i = 0; i < n; i++) {
+        tl_light *l = &out[i];
+        *l = (tl_light){0};
+        l->type = TL_LIGHT_POINT;
+        int warm_spot = i < plan->warm_spot_count && i < n / 8;
+        float p[3], rgb[3];
+        if (warm_spot) {
+            p[0] = plan->warm_spots[i][0];
+            p[1] = plan->warm_spots[i][1];
+            p[2] = plan->warm_spots[i][2];
+            tl__hue_rgb(tl__rng_range(rng, 0.05f, 0.09f), tl__rng_range(rng, 0.7f, 0.8f), rgb);
+        } else {
+            if (!tl__place(plan, seq, rng, 0.3f, 0.5f, 1.0f, p)) {
+                p[0] = 0.0f; /* the nave's centre line is always free */
+                p[1] = 2.5f;
+                p[2] = TL__HALL_Z0 + 1.0f + (float)seq->y * (TL__HALL_Z1 - TL__HALL_Z0 - 2.0f);
+            }
+            if (tl__rng_unit(rng) < 0.55)
+                tl__hue_rgb(tl__rng_range(rng, 0.02f, 0.11f), tl__rng_range(rng, 0.4f, 0.7f), rgb);
+            else
+                tl__hue_rgb((float)tl__rng_unit(rng), tl__rng_range(rng, 0.25f, 0.6f), rgb);
+        }
+        float k = intensity * tl__rng_range(rng, 0.7f, 1.3f) * (warm_spot ? 1.5f : 1.0f);
+        for (int c = 0; c < 3; c++) {
+            l->position[c] = p[c];
+            l->color[c] = rgb[c] * k;
+        }
+        l->radius = radius * tl__rng_range(rng, 0.8f, 1.2f);
+        /* emitters as spheres (GGX lighting): braziers at the warm spots, torch flames elsewhere */
+        l->source_radius = warm_spot ? TL__BRAZIER_RADIUS : TL__TORCH_RADIUS;
+    }
+}
+
+/* Spot lights: lanterns under the vault (upper third of the free height), tilted up to 25
+ * degrees from straight down, cones of 26 to 43 degrees. */
+static void tl__spot_lights(const tl__light_plan *plan, tl__r2 *seq, tl__rng *rng, tl_light *out)
+{
+    uint32_t ns = plan->spot_lights;
+    if (ns == 0) return;
+    float scale = 8.0f / (float)ns;
+    float radius = tl__clampf(8.0f * powf(scale, 1.0f / 6.0f), 3.0f, 9.0f);
+    float intensity = 10.0f * scale * (8.0f / radius);
+    for (uint32_t i = 0; i < ns; i++) {
+        tl_light *l = &out[i];
+        *l = (tl_light){0};
+        l->type = TL_LIGHT_SPOT;
+        float p[3], rgb[3];
+        if (!tl__place(plan, seq, rng, 2.5f, 0.5f, 0.33f, p)) {
+            p[0] = 0.0f;
+            p[1] = 4.0f;
+            p[2] = TL__HALL_Z0 + 1.0f + (float)seq->y * (TL__HALL_Z1 - TL__HALL_Z0 - 2.0f);
+        }
+        float tilt = tl__rng_range(rng, 0.0f, 0.44f);
+        float az = tl__rng_range(rng, 0.0f, 2.0f * (float)TL__PI);
+        float outer = tl__rng_range(rng, 0.45f, 0.75f);
+        float inner = outer * tl__rng_range(rng, 0.55f, 0.8f);
+        tl__hue_rgb((float)tl__rng_unit(rng), tl__rng_range(rng, 0.1f, 0.35f), rgb);
+        float k = intensity * tl__rng_range(rng, 0.8f, 1.2f);
+        float d[3] = {sinf(tilt) * cosf(az), -cosf(tilt), sinf(tilt) * sinf(az)};
+        float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+        for (int c = 0; c < 3; c++) {
+            l->position[c] = p[c];
+            l->direction[c] = d[c] / len;
+            l->color[c] = rgb[c] * k;
+        }
+        l->radius = radius * tl__rng_range(rng, 0.9f, 1.1f);
+        l->cos_inner = cosf(inner);
+        l->cos_outer = cosf(outer);
+        l->source_radius = TL__LANTERN_RADIUS;
+    }
+}
+
+/* Moonlight through the roof: dim and cool. */
+static void tl__moonlight(tl_light *l)
+{
+    *l = (tl_light){0};
+    l->type = TL_LIGHT_DIRECTIONAL;
+    const float d[3] = {-0.3f, -1.0f, -0.2f};
+    float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    for (int c = 0; c < 3; c++) l->direction[c] = d[c] / len;
+    l->color[0] = 0.10f;
+    l->color[1] = 0.13f;
+    l->color[2] = 0.22f;
+}
+
 void tl__crypt_lights(const tl__light_plan *plan, tl_light *out)
 {
     tl__rng rng = {plan->seed ^ 0x6c696768746c6967ull};
     tl__r2 seq = {tl__rng_unit(&rng), tl__rng_unit(&rng)};
-    size_t at = 0;
-
-    /* Point lights: radius shrinks slowly with the count (64 -> 5 m, 4096 -> 2.5 m), intensity
-     * falls so that count * intensity * radius (the mean irradiance) stays constant. */
-    uint32_t n = plan->point_lights;
-    if (n > 0) {
-        float scale = 64.0f / (float)n;
-        float radius = tl__clampf(5.0f * powf(scale, 1.0f / 6.0f), 1.5f, 6.0f);
-        float intensity = 3.2f * scale * (5.0f / radius);
-        /* a handful of lights leaves most of the view outside every range: lift them a little */
-        if (n < 32) intensity *= sqrtf(32.0f / (float)n);
-        for (uint32_t i = 0; i < n; i++) {
-            tl_light *l = &out[at++];
-            *l = (tl_light){0};
-            l->type = TL_LIGHT_POINT;
-            int warm_spot = i < plan->warm_spot_count && i < n / 8;
-            float p[3], rgb[3];
-            if (warm_spot) {
-                p[0] = plan->warm_spots[i][0];
-                p[1] = plan->warm_spots[i][1];
-                p[2] = plan->warm_spots[i][2];
-                tl__hue_rgb(tl__rng_range(&rng, 0.05f, 0.09f), tl__rng_range(&rng, 0.7f, 0.8f), rgb);
-            } else {
-                if (!tl__place(plan, &seq, &rng, 0.3f, 0.5f, 1.0f, p)) {
-                    p[0] = 0.0f; /* the nave's centre line is always free */
-                    p[1] = 2.5f;
-                    p[2] = TL__HALL_Z0 + 1.0f + (float)seq.y * (TL__HALL_Z1 - TL__HALL_Z0 - 2.0f);
-                }
-                if (tl__rng_unit(&rng) < 0.55)
-                    tl__hue_rgb(tl__rng_range(&rng, 0.02f, 0.11f), tl__rng_range(&rng, 0.4f, 0.7f), rgb);
-                else
-                    tl__hue_rgb((float)tl__rng_unit(&rng), tl__rng_range(&rng, 0.25f, 0.6f), rgb);
-            }
-            float k = intensity * tl__rng_range(&rng, 0.7f, 1.3f) * (warm_spot ? 1.5f : 1.0f);
-            for (int c = 0; c < 3; c++) {
-                l->position[c] = p[c];
-                l->color[c] = rgb[c] * k;
-            }
-            l->radius = radius * tl__rng_range(&rng, 0.8f, 1.2f);
-            /* emitters as spheres (GGX lighting): braziers at the warm spots, torch flames elsewhere */
-            l->source_radius = warm_spot ? TL__BRAZIER_RADIUS : TL__TORCH_RADIUS;
-        }
-    }
-
-    /* Spot lights: lanterns under the vault (upper third of the free height), tilted up to 25
-     * degrees from straight down, cones of 26 to 43 degrees. */
-    uint32_t ns = plan->spot_lights;
-    if (ns > 0) {
-        float scale = 8.0f / (float)ns;
-        float radius = tl__clampf(8.0f * powf(scale, 1.0f / 6.0f), 3.0f, 9.0f);
-        float intensity = 10.0f * scale * (8.0f / radius);
-        for (uint32_t i = 0; i < ns; i++) {
-            tl_light *l = &out[at++];
-            *l = (tl_light){0};
-            l->type = TL_LIGHT_SPOT;
-            float p[3], rgb[3];
-            if (!tl__place(plan, &seq, &rng, 2.5f, 0.5f, 0.33f, p)) {
-                p[0] = 0.0f;
-                p[1] = 4.0f;
-                p[2] = TL__HALL_Z0 + 1.0f + (float)seq.y * (TL__HALL_Z1 - TL__HALL_Z0 - 2.0f);
-            }
-            float tilt = tl__rng_range(&rng, 0.0f, 0.44f);
-            float az = tl__rng_range(&rng, 0.0f, 2.0f * (float)TL__PI);
-            float outer = tl__rng_range(&rng, 0.45f, 0.75f);
-            float inner = outer * tl__rng_range(&rng, 0.55f, 0.8f);
-            tl__hue_rgb((float)tl__rng_unit(&rng), tl__rng_range(&rng, 0.1f, 0.35f), rgb);
-            float k = intensity * tl__rng_range(&rng, 0.8f, 1.2f);
-            float d[3] = {sinf(tilt) * cosf(az), -cosf(tilt), sinf(tilt) * sinf(az)};
-            float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            for (int c = 0; c < 3; c++) {
-                l->position[c] = p[c];
-                l->direction[c] = d[c] / len;
-                l->color[c] = rgb[c] * k;
-            }
-            l->radius = radius * tl__rng_range(&rng, 0.9f, 1.1f);
-            l->cos_inner = cosf(inner);
-            l->cos_outer = cosf(outer);
-            l->source_radius = TL__LANTERN_RADIUS;
-        }
-    }
-
-    /* Moonlight through the roof: dim and cool. */
-    if (plan->directional) {
-        tl_light *l = &out[at++];
-        *l = (tl_light){0};
-        l->type = TL_LIGHT_DIRECTIONAL;
-        const float d[3] = {-0.3f, -1.0f, -0.2f};
-        float len = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-        for (int c = 0; c < 3; c++) l->direction[c] = d[c] / len;
-        l->color[0] = 0.10f;
-        l->color[1] = 0.13f;
-        l->color[2] = 0.22f;
-    }
+    tl__point_lights(plan, &seq, &rng, out);
+    tl__spot_lights(plan, &seq, &rng, out + plan->point_lights);
+    if (plan->directional) tl__moonlight(out + plan->point_lights + plan->spot_lights);
 }
