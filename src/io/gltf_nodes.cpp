@@ -93,34 +93,81 @@ void check_forest(const tinygltf::Model &m, vec<int> *parent)
 
 } // namespace
 
-void walk_scene(const context &c, const tinygltf::Model &m, scene_graph *g)
-{
-    vec<int> parent = make_vec<int>(c);
-    check_forest(m, &parent);
+namespace {
 
-    // The root list: the chosen scene's nodes, or every root node of a file without scenes.
-    vec<int> roots = make_vec<int>(c);
-    std::string scene_name;
+// The root list: the chosen scene's nodes, or every root node of a file without scenes. Returns
+// the name messages use for the list.
+std::string choose_roots(const context &c, const tinygltf::Model &m, const vec<int> &parent, vec<int> *roots)
+{
     if (c.scene_number > 0) {
         if (c.scene_number > m.scenes.size())
             fail(TL_ERROR_INVALID_ARGUMENT, "scene number " + std::to_string(c.scene_number) + " but the file has " +
                                                 std::to_string(m.scenes.size()) + " scenes");
         size_t s = c.scene_number - 1;
-        roots.assign(m.scenes[s].nodes.begin(), m.scenes[s].nodes.end());
-        scene_name = element("scenes", s);
-    } else if (!m.scenes.empty()) {
+        roots->assign(m.scenes[s].nodes.begin(), m.scenes[s].nodes.end());
+        return element("scenes", s);
+    }
+    if (!m.scenes.empty()) {
         if (m.defaultScene >= 0 && (size_t)m.defaultScene >= m.scenes.size())
             fail(TL_ERROR_PARSE, "scene " + std::to_string(m.defaultScene) + " out of range (" +
                                      std::to_string(m.scenes.size()) + " scenes)");
         size_t s = m.defaultScene >= 0 ? (size_t)m.defaultScene : 0;
-        roots.assign(m.scenes[s].nodes.begin(), m.scenes[s].nodes.end());
-        scene_name = element("scenes", s);
-    } else {
-        for (size_t i = 0; i < m.nodes.size(); i++)
-            if (parent[i] < 0) roots.push_back((int)i);
-        if (!roots.empty()) warn(c, "no scenes: drawing all " + std::to_string(roots.size()) + " root nodes");
-        scene_name = "nodes";
+        roots->assign(m.scenes[s].nodes.begin(), m.scenes[s].nodes.end());
+        return element("scenes", s);
     }
+    for (size_t i = 0; i < m.nodes.size(); i++)
+        if (parent[i] < 0) roots->push_back((int)i);
+    if (!roots->empty()) warn(c, "no scenes: drawing all " + std::to_string(roots->size()) + " root nodes");
+    return "nodes";
+}
+
+// What node ni with world transform `world` puts in the scene: a mesh instance, the first
+// camera, a light.
+void visit_node(const context &c, const tinygltf::Model &m, size_t ni, const double world[16], scene_graph *g,
+                bool *skin_warned)
+{
+    const tinygltf::Node &n = m.nodes[ni];
+    if (n.mesh >= 0) {
+        if ((size_t)n.mesh >= m.meshes.size())
+            fail(TL_ERROR_PARSE, element("nodes", ni) + ": mesh " + std::to_string(n.mesh) + " out of range (" +
+                                     std::to_string(m.meshes.size()) + " meshes)");
+        if (n.skin >= 0 && !*skin_warned) {
+            warn(c, element("nodes", ni) + ": skinning is not supported; drawing the bind pose");
+            *skin_warned = true;
+        }
+        mesh_instance mi;
+        mi.node = (int)ni;
+        mi.mesh = n.mesh;
+        std::copy(world, world + 16, mi.world);
+        g->meshes.push_back(mi);
+    }
+    if (n.camera >= 0) {
+        if ((size_t)n.camera >= m.cameras.size())
+            fail(TL_ERROR_PARSE, element("nodes", ni) + ": camera " + std::to_string(n.camera) + " out of range (" +
+                                     std::to_string(m.cameras.size()) + " cameras)");
+        if (g->camera_node < 0) {
+            g->camera_node = (int)ni;
+            std::copy(world, world + 16, g->camera_world);
+        }
+    }
+    int light = node_light(n, ni, m.lights.size());
+    if (light >= 0) {
+        light_instance li;
+        li.node = (int)ni;
+        li.light = light;
+        std::copy(world, world + 16, li.world);
+        g->lights.push_back(li);
+    }
+}
+
+} // namespace
+
+void walk_scene(const context &c, const tinygltf::Model &m, scene_graph *g)
+{
+    vec<int> parent = make_vec<int>(c);
+    check_forest(m, &parent);
+    vec<int> roots = make_vec<int>(c);
+    std::string scene_name = choose_roots(c, m, parent, &roots);
 
     struct item {
         int node;
@@ -151,38 +198,7 @@ void walk_scene(const context &c, const tinygltf::Model &m, scene_graph *g)
         for (double x : world)
             if (!fits_float(x))
                 fail(TL_ERROR_PARSE, element("nodes", ni) + ": world transform overflows single precision");
-
-        if (n.mesh >= 0) {
-            if ((size_t)n.mesh >= m.meshes.size())
-                fail(TL_ERROR_PARSE, element("nodes", ni) + ": mesh " + std::to_string(n.mesh) + " out of range (" +
-                                         std::to_string(m.meshes.size()) + " meshes)");
-            if (n.skin >= 0 && !skin_warned) {
-                warn(c, element("nodes", ni) + ": skinning is not supported; drawing the bind pose");
-                skin_warned = true;
-            }
-            mesh_instance mi;
-            mi.node = it.node;
-            mi.mesh = n.mesh;
-            std::copy(world, world + 16, mi.world);
-            g->meshes.push_back(mi);
-        }
-        if (n.camera >= 0) {
-            if ((size_t)n.camera >= m.cameras.size())
-                fail(TL_ERROR_PARSE, element("nodes", ni) + ": camera " + std::to_string(n.camera) + " out of range (" +
-                                         std::to_string(m.cameras.size()) + " cameras)");
-            if (g->camera_node < 0) {
-                g->camera_node = it.node;
-                std::copy(world, world + 16, g->camera_world);
-            }
-        }
-        int light = node_light(n, ni, m.lights.size());
-        if (light >= 0) {
-            light_instance li;
-            li.node = it.node;
-            li.light = light;
-            std::copy(world, world + 16, li.world);
-            g->lights.push_back(li);
-        }
+        visit_node(c, m, ni, world, g, &skin_warned);
         // Children in reverse so that they pop in file order (pre-order, first child first).
         for (size_t k = n.children.size(); k-- > 0;) {
             item child;
