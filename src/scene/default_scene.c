@@ -544,6 +544,112 @@ static void tl__crypt_build(tl__crypt *c)
 
 /* ---- creation ------------------------------------------------------------------------------- */
 
+/* The scene's arrays for the counts pass 1 found, with its generated textures; NULL when out
+ * of memory (nothing left allocated). */
+static tl_scene *tl__crypt_alloc(const tl_allocator *a, const tl__builder *counts, size_t light_count)
+{
+    tl_scene *scene = tl__alloc_array(a, 1, sizeof(tl_scene));
+    if (!scene) return NULL;
+    memset(scene, 0, sizeof(*scene));
+    scene->allocator = *a;
+    scene->vertices = tl__alloc_array(a, counts->vertex_count, sizeof(tl_vertex));
+    scene->indices = scene->vertices ? tl__alloc_array(a, counts->index_count, sizeof(uint32_t)) : NULL;
+    scene->objects = scene->indices ? tl__alloc_array(a, counts->object_count, sizeof(tl_object)) : NULL;
+    scene->materials = scene->objects ? tl__alloc_array(a, TL__M_COUNT, sizeof(tl_material)) : NULL;
+    scene->textures = scene->materials ? tl__alloc_array(a, TL__TEX_COUNT, sizeof(tl_texture)) : NULL;
+    scene->lights = scene->textures ? tl__alloc_array(a, light_count, sizeof(tl_light)) : NULL;
+    if (!scene->lights) goto out_of_memory;
+    memset(scene->textures, 0, TL__TEX_COUNT * sizeof(tl_texture));
+    scene->texture_count = TL__TEX_COUNT;
+    for (int t = 0; t < TL__TEX_COUNT; t++) {
+        tl_texture *tex = &scene->textures[t];
+        uint32_t size = tl__texture_size(t);
+        tex->rgba = tl__alloc_array(a, (size_t)size * size, 4);
+        if (!tex->rgba) goto out_of_memory;
+        tex->width = tex->height = size;
+        strncpy(tex->name, tl__texture_name(t), sizeof(tex->name) - 1);
+        tl__texture_generate(t, tex->rgba);
+    }
+    return scene;
+
+out_of_memory:
+    tl_scene_destroy(scene);
+    return NULL;
+}
+
+static void tl__crypt_material_table(tl_scene *scene)
+{
+    scene->material_count = TL__M_COUNT;
+    for (int m = 0; m < TL__M_COUNT; m++) {
+        const tl__material_def *def = &tl__crypt_materials[m];
+        tl_material *mat = &scene->materials[m];
+        memset(mat, 0, sizeof(*mat));
+        memcpy(mat->albedo, def->albedo, sizeof(mat->albedo));
+        memcpy(mat->specular, def->specular, sizeof(mat->specular));
+        memcpy(mat->emissive, def->emissive, sizeof(mat->emissive));
+        mat->gloss = def->gloss;
+        mat->alpha_cutoff = 0.5f;
+        mat->albedo_texture = def->texture >= 0 ? (uint32_t)def->texture : TL_NO_TEXTURE;
+        mat->normal_texture = TL_NO_TEXTURE;
+        mat->metallic_roughness_texture = TL_NO_TEXTURE;
+        mat->emissive_texture = TL_NO_TEXTURE;
+        mat->occlusion_texture = TL_NO_TEXTURE;
+        mat->alpha = 1.0f;
+        strncpy(mat->name, def->name, sizeof(mat->name) - 1);
+    }
+}
+
+/* Lights placed around the solids and warm spots the layout recorded (crypt_lights.c). */
+static void tl__crypt_light_set(tl_scene *scene, const tl__crypt *layout, const tl_default_scene_desc *d,
+                                size_t light_count)
+{
+    float solids[TL__MAX_SOLIDS][6];
+    for (size_t i = 0; i < layout->solid_count; i++) {
+        const tl_object *o = &scene->objects[layout->solids[i]];
+        memcpy(solids[i], o->bounds_min, 3 * sizeof(float));
+        memcpy(solids[i] + 3, o->bounds_max, 3 * sizeof(float));
+    }
+    tl__light_plan plan = {
+        .point_lights = d->point_lights,
+        .spot_lights = d->spot_lights,
+        .directional = !d->no_directional,
+        .seed = d->seed,
+        .solids = (const float (*)[6])solids,
+        .solid_count = layout->solid_count,
+        .warm_spots = (const float (*)[3])layout->warm,
+        .warm_spot_count = layout->warm_count,
+    };
+    tl__crypt_lights(&plan, scene->lights);
+    scene->light_count = light_count;
+}
+
+/* Ambient, the camera down the nave, and the bounds of every vertex. */
+static void tl__crypt_view(tl_scene *scene)
+{
+    scene->ambient[0] = 0.015f;
+    scene->ambient[1] = 0.015f;
+    scene->ambient[2] = 0.02f;
+    scene->camera = (tl_camera){
+        .position = {0.0f, 2.0f, 18.5f},
+        .target = {0.0f, 1.0f, 0.0f},
+        .up = {0.0f, 1.0f, 0.0f},
+        .fov_y = (float)(TL__PI / 3.0),
+        .near_z = 0.1f,
+        .far_z = 100.0f,
+    };
+    for (int k = 0; k < 3; k++) {
+        scene->bounds_min[k] = INFINITY;
+        scene->bounds_max[k] = -INFINITY;
+    }
+    for (size_t v = 0; v < scene->vertex_count; v++) {
+        for (int k = 0; k < 3; k++) {
+            float p = scene->vertices[v].position[k];
+            if (p < scene->bounds_min[k]) scene->bounds_min[k] = p;
+            if (p > scene->bounds_max[k]) scene->bounds_max[k] = p;
+        }
+    }
+}
+
 tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **out)
 {
     if (!out) return TL_ERROR_INVALID_ARGUMENT;
@@ -556,7 +662,6 @@ tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **
     if (d.spot_lights == 0) d.spot_lights = d.point_lights / 8;
     if (d.seed == 0) d.seed = 1;
     if (d.detail == 0) d.detail = 4;
-    const tl_allocator *a = &d.allocator;
 
     /* pass 1: count */
     tl__builder counter = {.counting = 1};
@@ -564,31 +669,8 @@ tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **
     tl__crypt_build(&layout);
     if (counter.vertex_count > UINT32_MAX || counter.index_count > UINT32_MAX) return TL_ERROR_LIMIT;
     size_t light_count = (size_t)d.point_lights + d.spot_lights + (d.no_directional ? 0 : 1);
-
-    tl_scene *scene = tl__alloc_array(a, 1, sizeof(tl_scene));
+    tl_scene *scene = tl__crypt_alloc(&d.allocator, &counter, light_count);
     if (!scene) return TL_ERROR_OUT_OF_MEMORY;
-    memset(scene, 0, sizeof(*scene));
-    scene->allocator = d.allocator;
-
-    scene->vertices = tl__alloc_array(a, counter.vertex_count, sizeof(tl_vertex));
-    scene->indices = scene->vertices ? tl__alloc_array(a, counter.index_count, sizeof(uint32_t)) : NULL;
-    scene->objects = scene->indices ? tl__alloc_array(a, counter.object_count, sizeof(tl_object)) : NULL;
-    scene->materials = scene->objects ? tl__alloc_array(a, TL__M_COUNT, sizeof(tl_material)) : NULL;
-    scene->textures = scene->materials ? tl__alloc_array(a, TL__TEX_COUNT, sizeof(tl_texture)) : NULL;
-    if (!scene->textures) goto out_of_memory;
-    memset(scene->textures, 0, TL__TEX_COUNT * sizeof(tl_texture));
-    scene->texture_count = TL__TEX_COUNT;
-    for (int t = 0; t < TL__TEX_COUNT; t++) {
-        tl_texture *tex = &scene->textures[t];
-        uint32_t size = tl__texture_size(t);
-        tex->rgba = tl__alloc_array(a, (size_t)size * size, 4);
-        if (!tex->rgba) goto out_of_memory;
-        tex->width = tex->height = size;
-        strncpy(tex->name, tl__texture_name(t), sizeof(tex->name) - 1);
-        tl__texture_generate(t, tex->rgba);
-    }
-    scene->lights = tl__alloc_array(a, light_count, sizeof(tl_light));
-    if (!scene->lights) goto out_of_memory;
 
     /* pass 2: write */
     tl__builder writer = {
@@ -609,73 +691,9 @@ tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **
     scene->vertex_count = writer.vertex_count;
     scene->index_count = writer.index_count;
     scene->object_count = writer.object_count;
-
-    scene->material_count = TL__M_COUNT;
-    for (int m = 0; m < TL__M_COUNT; m++) {
-        const tl__material_def *def = &tl__crypt_materials[m];
-        tl_material *mat = &scene->materials[m];
-        memset(mat, 0, sizeof(*mat));
-        memcpy(mat->albedo, def->albedo, sizeof(mat->albedo));
-        memcpy(mat->specular, def->specular, sizeof(mat->specular));
-        memcpy(mat->emissive, def->emissive, sizeof(mat->emissive));
-        mat->gloss = def->gloss;
-        mat->alpha_cutoff = 0.5f;
-        mat->albedo_texture = def->texture >= 0 ? (uint32_t)def->texture : TL_NO_TEXTURE;
-        mat->normal_texture = TL_NO_TEXTURE;
-        mat->metallic_roughness_texture = TL_NO_TEXTURE;
-        mat->emissive_texture = TL_NO_TEXTURE;
-        mat->occlusion_texture = TL_NO_TEXTURE;
-        mat->alpha = 1.0f;
-        strncpy(mat->name, def->name, sizeof(mat->name) - 1);
-    }
-
-    float solids[TL__MAX_SOLIDS][6];
-    for (size_t i = 0; i < layout.solid_count; i++) {
-        const tl_object *o = &scene->objects[layout.solids[i]];
-        memcpy(solids[i], o->bounds_min, 3 * sizeof(float));
-        memcpy(solids[i] + 3, o->bounds_max, 3 * sizeof(float));
-    }
-    tl__light_plan plan = {
-        .point_lights = d.point_lights,
-        .spot_lights = d.spot_lights,
-        .directional = !d.no_directional,
-        .seed = d.seed,
-        .solids = (const float (*)[6])solids,
-        .solid_count = layout.solid_count,
-        .warm_spots = (const float (*)[3])layout.warm,
-        .warm_spot_count = layout.warm_count,
-    };
-    tl__crypt_lights(&plan, scene->lights);
-    scene->light_count = light_count;
-
-    scene->ambient[0] = 0.015f;
-    scene->ambient[1] = 0.015f;
-    scene->ambient[2] = 0.02f;
-    scene->camera = (tl_camera){
-        .position = {0.0f, 2.0f, 18.5f},
-        .target = {0.0f, 1.0f, 0.0f},
-        .up = {0.0f, 1.0f, 0.0f},
-        .fov_y = (float)(TL__PI / 3.0),
-        .near_z = 0.1f,
-        .far_z = 100.0f,
-    };
-
-    for (int k = 0; k < 3; k++) {
-        scene->bounds_min[k] = INFINITY;
-        scene->bounds_max[k] = -INFINITY;
-    }
-    for (size_t v = 0; v < scene->vertex_count; v++) {
-        for (int k = 0; k < 3; k++) {
-            float p = scene->vertices[v].position[k];
-            if (p < scene->bounds_min[k]) scene->bounds_min[k] = p;
-            if (p > scene->bounds_max[k]) scene->bounds_max[k] = p;
-        }
-    }
-
+    tl__crypt_material_table(scene);
+    tl__crypt_light_set(scene, &layout, &d, light_count);
+    tl__crypt_view(scene);
     *out = scene;
     return TL_OK;
-
-out_of_memory:
-    tl_scene_destroy(scene);
-    return TL_ERROR_OUT_OF_MEMORY;
 }
