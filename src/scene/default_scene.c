@@ -432,9 +432,9 @@ static void tl__sphere_profile(tl__profile *pr, float radius, uint32_t steps)
     }
 }
 
-static void tl__crypt_props(tl__crypt *c)
+/* sarcophagi along the aisles, with gabled lids, and benches against the walls */
+static void tl__crypt_sarcophagi(tl__crypt *c)
 {
-    const uint32_t d = c->detail, segs = tl__ring_segments(c);
     static const float sarcophagus_z[3] = {-12.5f, -2.5f, 7.5f};
     static const int lid_material[3] = {TL__M_RED, TL__M_BLUE, TL__M_MARBLE_DARK};
     for (int side = -1; side <= 1; side += 2) {
@@ -464,8 +464,12 @@ static void tl__crypt_props(tl__crypt *c)
             tl__obj_end(c, 1);
         }
     }
+}
 
-    /* pedestals with spheres in the aisles, by the columns */
+/* pedestals with spheres in the aisles, by the columns */
+static void tl__crypt_pedestals(tl__crypt *c)
+{
+    const uint32_t d = c->detail, segs = tl__ring_segments(c);
     static const float pedestal_z[4] = {-17.5f, -7.5f, 2.5f, 12.5f};
     static const int sphere_material[4] = {TL__M_GOLD, TL__M_MARBLE, TL__M_BLUE, TL__M_MARBLE_DARK};
     tl__profile sphere;
@@ -482,8 +486,12 @@ static void tl__crypt_props(tl__crypt *c)
             tl__obj_end(c, 1);
         }
     }
+}
 
-    /* braziers flanking the nave: bronze stand and bowl, glowing embers */
+/* braziers flanking the nave: bronze stand and bowl, glowing embers */
+static void tl__crypt_braziers(tl__crypt *c)
+{
+    const uint32_t d = c->detail, segs = tl__ring_segments(c);
     static const float brazier_z[3] = {-12.5f, -2.5f, 7.5f};
     tl__profile stand = {.n = 0}, embers = {.n = 0};
     tl__profile_add(&stand, 0.0f, 0.0f, 0, 0);
@@ -514,8 +522,11 @@ static void tl__crypt_props(tl__crypt *c)
             if (c->warm_count < 8) tl__v3(c->warm[c->warm_count++], x, 1.45f, z);
         }
     }
+}
 
-    /* crates stacked in the entrance bays */
+/* crates stacked in the entrance bays */
+static void tl__crypt_crates(tl__crypt *c)
+{
     for (int side = -1; side <= 1; side += 2) {
         float s = (float)side;
         tl__obj(c, TL__M_RED);
@@ -528,6 +539,14 @@ static void tl__crypt_props(tl__crypt *c)
         tl__box_at(c, s * 4.5f, 0.3f, 18.3f, 0.3f, 0.3f, 0.45f, 0.5f);
         tl__obj_end(c, 1);
     }
+}
+
+static void tl__crypt_props(tl__crypt *c)
+{
+    tl__crypt_sarcophagi(c);
+    tl__crypt_pedestals(c);
+    tl__crypt_braziers(c);
+    tl__crypt_crates(c);
 }
 
 static void tl__crypt_build(tl__crypt *c)
