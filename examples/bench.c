@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "bench.h"
+#include "tool_effects.h"
 #include "tool_util.h"
 
 static const char usage_text[] =
@@ -13,6 +14,7 @@ static const char usage_text[] =
     "                       [--modes MODE,...] [--strategies S,...] [--light-formats F,...]\n"
     "                       [--frames N] [--warmup N] [--json OUT.json] [--out DIR] [--quick]\n"
     "                       [--doc FILE.md] [--seed S] [--lighting M] [--fresnel F] [--no-plot]\n"
+    "                       [--effects E,...] [--effects-doc FILE.md] [effect options]\n"
     "                       [--context C] [--device N]\n"
     "                       [--list-devices] [--help]\n"
     "\n"
@@ -47,6 +49,16 @@ static const char usage_text[] =
     "  --fresnel F      thin-lpp with GGX: two-sums (default, exact) or nv (Schlick with n.v per pixel);\n"
     "                   without it, a GGX-lit sweep also measures thin-lpp/tiled/nv beside the exact layout\n"
     "  --no-plot        do not run gnuplot\n"
+    "  --effects LIST   none (default), ssao, fog, dof, bloom: at the first size and light count, every\n"
+    "                   configuration of the first strategy also renders with each effect, taking turns\n"
+    "                   with frames without it: the effect's cost (its passes' GPU time) and its error\n"
+    "                   against fat with the same effect (SSAO: also the AO target's) join the table,\n"
+    "                   the JSON (\"effects\") and the error-vs-time plot. --ssao, --fog, --dof, --bloom add\n"
+    "                   one; their parameter options set it up:\n"
+    ;
+static const char usage_tail[] =
+    "  --effects-doc FILE replace the text between " BENCH_EFFECTS_DOC_BEGIN " and\n"
+    "                   " BENCH_EFFECTS_DOC_END " in FILE with the effects' table\n"
     TL_TOOL_CONTEXT_HELP
     "  --help           this text\n"
     "\n"
@@ -202,15 +214,44 @@ static int bench__parse_light_formats(const char *arg, bench_options *o)
     return 0;
 }
 
+static int bench__parse_effects(const char *arg, bench_options *o)
+{
+    char buf[128], *items[2 * BENCH_EFFECTS + 1];
+    size_t n = bench__list("--effects", "effects", arg, buf, sizeof buf, items, 2 * BENCH_EFFECTS + 1);
+    if (!n) return BENCH_EXIT_BAD_USAGE;
+    for (size_t i = 0; i < n; i++) {
+        int e = 0;
+        while (e < BENCH_EFFECTS && strcmp(items[i], bench_effect_name((bench_effect)e))) e++;
+        if (e < BENCH_EFFECTS) o->effects |= 1u << e;
+        else if (strcmp(items[i], "none"))
+            return bench__usage("--effects: unknown effect '%s' (none, ssao, fog, dof, bloom)", items[i]);
+    }
+    return 0;
+}
+
+/* An effect option (tool_effects.h): 0 not one, 1 a flag, 2 it took the next argument, -1 bad. */
+static int bench__effect_option(bench_options *o, const char *a, const char *next)
+{
+    int rc = tl_tool_effect_option(BENCH_TOOL, &o->effect_desc, a, next);
+    static const char *const flags[BENCH_EFFECTS] = {"--ssao", "--fog", "--dof", "--bloom"};
+    for (int e = 0; rc == 1 && e < BENCH_EFFECTS; e++)
+        if (!strcmp(a, flags[e])) o->effects |= 1u << e;
+    return rc;
+}
+
 static int bench__parse_args(int argc, char **argv, bench_options *o)
 {
     memset(o, 0, sizeof *o);
     o->scene = "default";
     const char *sizes = NULL, *lights = NULL, *modes = NULL, *strategies = NULL, *formats = NULL, *frames = NULL, *warmup = NULL, *seed = NULL;
-    const char *context = NULL, *device = NULL, *lighting = NULL, *fresnel = NULL;
+    const char *context = NULL, *device = NULL, *lighting = NULL, *fresnel = NULL, *effects = NULL;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         const char **value = NULL;
+        int erc = bench__effect_option(o, a, i + 1 < argc ? argv[i + 1] : NULL);
+        if (erc < 0) return BENCH_EXIT_BAD_USAGE; /* it printed the line */
+        if (erc == 2) i++;
+        if (erc) continue;
         if (!strcmp(a, "--help") || !strcmp(a, "-h")) o->help = 1;
         else if (!strcmp(a, "--quick")) o->quick = 1;
         else if (!strcmp(a, "--no-plot")) o->no_plot = 1;
@@ -231,6 +272,8 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
         else if (!strcmp(a, "--json")) value = &o->json;
         else if (!strcmp(a, "--out")) value = &o->out;
         else if (!strcmp(a, "--doc")) value = &o->doc;
+        else if (!strcmp(a, "--effects")) value = &effects;
+        else if (!strcmp(a, "--effects-doc")) value = &o->effects_doc;
         else return bench__usage(a[0] == '-' ? "unknown option '%s'" : "unexpected argument '%s'", a);
         if (value) {
             if (i + 1 >= argc || argv[i + 1][0] == '\0') return bench__usage("%s needs a value", a);
@@ -264,13 +307,30 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
         return bench__usage("--lighting wants auto, blinn-phong or ggx, got '%s'", lighting);
     if (fresnel && tl_fresnel_layout_from_name(fresnel, &o->fresnel) != TL_OK)
         return bench__usage("--fresnel wants two-sums or nv, got '%s'", fresnel);
+    if (effects && (rc = bench__parse_effects(effects, o))) return rc;
     if (o->doc && !o->out && !o->no_plot) return bench__usage("--doc %s needs --out DIR for the plots (or --no-plot)", o->doc);
     return 0;
 }
 
 /* Everything that can fail for bad input is checked before the sweep; nothing is created unless
  * every check passes. */
-static int bench__check_outputs(bench_options *o, char **doc_text)
+/* A doc the run will rewrite: readable, with both markers, writable. */
+static int bench__check_doc(const char *path, const char *begin, const char *end, char **text)
+{
+    *text = tl_tool_read_file(path, NULL);
+    if (!*text) {
+        tl_tool_fail(BENCH_TOOL, "cannot read '%s': %s", path, strerror(errno));
+        return 1;
+    }
+    size_t head;
+    const char *tail;
+    if (tl_tool_doc_split(BENCH_TOOL, path, *text, begin, end, &head, &tail)) return 1;
+    int e = tl_tool_probe_writable(path);
+    if (e) tl_tool_fail(BENCH_TOOL, "cannot write '%s': %s", path, strerror(e));
+    return e != 0;
+}
+
+static int bench__check_outputs(bench_options *o, char **doc_text, char **effects_text)
 {
     int e;
     if (o->out && !tl_tool_have_io()) {
@@ -290,20 +350,9 @@ static int bench__check_outputs(bench_options *o, char **doc_text)
         tl_tool_fail(BENCH_TOOL, "cannot write '%s': %s", o->json, strerror(e));
         return 1;
     }
-    if (o->doc) {
-        *doc_text = tl_tool_read_file(o->doc, NULL);
-        if (!*doc_text) {
-            tl_tool_fail(BENCH_TOOL, "cannot read '%s': %s", o->doc, strerror(errno));
-            return 1;
-        }
-        size_t head;
-        const char *tail;
-        if (tl_tool_doc_split(BENCH_TOOL, o->doc, *doc_text, BENCH_DOC_BEGIN, BENCH_DOC_END, &head, &tail)) return 1;
-        if ((e = tl_tool_probe_writable(o->doc)) != 0) {
-            tl_tool_fail(BENCH_TOOL, "cannot write '%s': %s", o->doc, strerror(e));
-            return 1;
-        }
-    }
+    if (o->doc && bench__check_doc(o->doc, BENCH_DOC_BEGIN, BENCH_DOC_END, doc_text)) return 1;
+    if (o->effects_doc && bench__check_doc(o->effects_doc, BENCH_EFFECTS_DOC_BEGIN, BENCH_EFFECTS_DOC_END, effects_text))
+        return 1;
     if (o->out && !o->no_plot && !tl_tool_have_gnuplot()) {
         fprintf(stderr, BENCH_TOOL ": warning: gnuplot not found on PATH, no plots (install gnuplot-nox)\n");
         o->no_plot = 1;
@@ -353,28 +402,32 @@ int main(int argc, char **argv)
     }
     int rc = bench__parse_args(argc, argv, &run->opt);
     if (rc || run->opt.help || run->opt.list_devices) {
-        if (!rc && run->opt.help) fputs(usage_text, stdout);
+        if (!rc && run->opt.help) printf("%s%s%s", usage_text, tl_tool_effects_help, usage_tail);
         else if (!rc) rc = tl_tool_list_devices(BENCH_TOOL);
         free(run);
         return rc;
     }
     bench_options *opt = &run->opt;
-    char *doc_text = NULL;
+    char *doc_text = NULL, *effects_text = NULL;
     bench_scene *scene = NULL;
     rc = BENCH_EXIT_BAD_INPUT;
-    if (bench_scene_open(opt, &scene, run) || bench__check_outputs(opt, &doc_text)) goto done;
+    if (bench_scene_open(opt, &scene, run) || bench__check_outputs(opt, &doc_text, &effects_text)) goto done;
     bench__fresnel_variant(opt, scene);
     tl_tool_machine(run->cpu, sizeof run->cpu, &run->cores);
     /* the plans first: the sweep times each planned mode against its no_planning renderer */
     if (bench_planning_compare(run, scene) || bench_sweep(run, scene)) goto done;
     int plot_failed = opt->out && !opt->no_plot && bench_plots(run);
     bench_print_table(run);
+    bench_effects_print_table(run);
     if (opt->json && bench_write_json(run, opt->json)) goto done;
     if (opt->doc && bench_update_doc(run, doc_text)) goto done;
+    if (opt->effects_doc && bench_effects_update_doc(run, effects_text)) goto done;
     rc = plot_failed ? BENCH_EXIT_BAD_INPUT : 0;
 done:
     bench_scene_close(scene);
     free(doc_text);
+    free(effects_text);
+    free(run->effects);
     for (size_t i = 0; i < run->record_count; i++) free(run->records[i].frame_ms);
     free(run->records);
     free(run->images);

@@ -13,6 +13,7 @@
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
 #include "tool_gl.h"
+#include "tool_util.h"
 
 #define BENCH_TOOL "thinlight-bench"
 #define BENCH_EXIT_BAD_INPUT 1
@@ -77,6 +78,10 @@ typedef struct bench_size {
     uint32_t width, height;
 } bench_size;
 
+/* Screen-space effects the bench can measure (--effects), each against the same frame without it. */
+typedef enum bench_effect { BENCH_EFFECT_SSAO, BENCH_EFFECT_FOG, BENCH_EFFECT_DOF, BENCH_EFFECT_BLOOM, BENCH_EFFECTS } bench_effect;
+const char *bench_effect_name(bench_effect e);
+
 typedef struct bench_options {
     const char *scene;        /* "default" or a glTF file */
     bench_size sizes[BENCH_MAX_SIZES];
@@ -97,7 +102,25 @@ typedef struct bench_options {
     tl_tool_context_options context; /* --context, --device */
     tl_lighting_model lighting;      /* --lighting (auto: from the scene's materials) */
     tl_fresnel_layout fresnel;       /* --fresnel (thin-lpp with GGX) */
+    unsigned effects;                /* --effects: bits (1u << bench_effect); 0: none measured */
+    tl_renderer_desc effect_desc;    /* the effects' parameters (--ssao-*, --fog-*, --dof-*, --bloom-*) */
+    const char *effects_doc;         /* --effects-doc: the effects table between its markers */
 } bench_options;
+
+/* One effect in one configuration, at the first size and light count: the configuration rendered
+ * with the effect and without it, frame by frame in turn; its error against fat with the same effect. */
+typedef struct bench_effect_record {
+    bench_effect effect;
+    bench_config config;
+    uint32_t lights, width, height, frames;
+    double effect_ms;              /* median over the frames of the effect's passes' GPU time */
+    double frame_ms, base_ms;      /* median frame time with the effect, and without it */
+    double ratio;                  /* median over the frames of (with / without, the frames side by side) */
+    tl_image_error ldr;            /* final image vs fat with the same effect, RGB, 8-bit steps */
+    tl_image_error base_ldr;       /* the same without the effect (what the configuration loses already) */
+    tl_image_error ao;             /* SSAO: the AO target vs fat's (peak 1) */
+    uint32_t bytes_per_pixel, base_bytes_per_pixel; /* memory the targets occupy, with and without */
+} bench_effect_record;
 
 /* One (mode, lights, size): medians over the timed frames, sizes from the plan, errors against the
  * fat image of the same frame. */
@@ -183,6 +206,8 @@ typedef struct bench_run {
     int plots_made;
     bench_planning planning[BENCH_MODES];
     size_t planning_count;
+    bench_effect_record *effects;  /* --effects: per configuration (fat first), per effect */
+    size_t effect_count;
 } bench_run;
 
 /* bench_scene.c: the geometry of the sweep (built-in crypt or glTF file) and its lights for N. */
@@ -216,6 +241,21 @@ double bench_ns_per_pair(const bench_record *r);           /* lighting_ms / ligh
 double bench_ms_per_mpixel_covered(const bench_record *r); /* lighting_ms / covered Mpx; NaN when none */
 double bench_mib_at(const bench_record *r, uint32_t w, uint32_t h); /* plan bytes at another size */
 uint32_t bench_light_buffer_bpp(const bench_record *r);    /* light.diffuse + light.specular + light.fresnel */
+
+/* bench_effects.c: measures opt.effects (at the first size and light count, the configurations of
+ * the first strategy); frames it renders, for the progress bar. */
+int bench_effects_measure(bench_run *run, tl_context *ctx, bench_scene *scene, tl_tool_progress *progress,
+                          uint64_t *done);
+uint64_t bench_effects_frames(const bench_options *opt);
+/* The effect's parameters from opt.effect_desc into `d`, turned on. */
+void bench_effect_enable(const bench_options *opt, bench_effect e, tl_renderer_desc *d);
+
+/* bench_effects_report.c: the effects' table (stdout), JSON member and Markdown table. */
+void bench_effects_print_table(const bench_run *run);
+void bench_effects_json(tl_tool_json *j, const bench_run *run);
+int bench_effects_update_doc(const bench_run *run, const char *doc_text);
+#define BENCH_EFFECTS_DOC_BEGIN "<!-- bench-effects:begin -->"
+#define BENCH_EFFECTS_DOC_END "<!-- bench-effects:end -->"
 
 /* bench_plan.c: fills run->planning for every rendered mode (pure: no GL; the times stay NaN). */
 int bench_planning_compare(bench_run *run, bench_scene *scene);

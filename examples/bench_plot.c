@@ -1,6 +1,7 @@
 /* The three plots of a sweep (gnuplot, PNG, each well under 300 KiB):
  *   bench_ms_vs_lights     frame time against light count per mode, log-log;
- *   bench_error_vs_ms      error of the final image against run time, one point per (mode, lights);
+ *   bench_error_vs_ms      error of the final image against run time, one point per (mode, lights),
+ *                          and one per (effect, mode) measured with --effects;
  *   bench_bytes_per_pixel  bytes per pixel each mode allocates, stacked by target, and the bytes it
  *                          moves per pixel and frame at the largest light count, stacked by pass. */
 #include <math.h>
@@ -176,8 +177,40 @@ static int bench__error_data(FILE *f, const void *ctx)
             fprintf(f, " \"%u\"\n", r->lights);
         }
     }
+    /* then one block per measured effect and configuration (--effects): one point, the frame time
+     * with the effect against its error versus fat with the same effect */
+    for (size_t i = 0; i < run->effect_count; i++) {
+        const bench_effect_record *e = &run->effects[i];
+        if (bench_config_mode(e->config) == BENCH_REFERENCE) continue;
+        if (block++) fputs("\n\n", f);
+        fprintf(f, "%.6g", e->frame_ms);
+        bench__value(f, e->ldr.psnr_db);
+        bench__value(f, e->ldr.mean_abs > 0.0 ? e->ldr.mean_abs : NAN);
+        bench__value(f, e->ldr.max_abs);
+        fprintf(f, " \"+%s\"\n", bench_effect_name(e->effect));
+    }
     if (!block) fputs("NaN NaN NaN NaN \"\"\n", f);
     return 0;
+}
+
+/* The effects' points of the error-vs-time plot: one per (effect, configuration), a point type
+ * per effect, the configuration's colour, labelled "+effect". */
+static void bench__error_effects(FILE *f, const tl_tool_plot *p, const bench_run *run, const char *column, size_t *block)
+{
+    static const int point_types[BENCH_EFFECTS] = {5, 9, 11, 13};
+    unsigned titled = 0;
+    for (size_t i = 0; i < run->effect_count; i++) {
+        const bench_effect_record *e = &run->effects[i];
+        if (bench_config_mode(e->config) == BENCH_REFERENCE) continue;
+        char title[48] = "notitle";
+        if (!(titled & (1u << e->effect))) snprintf(title, sizeof title, "title '+%s'", bench_effect_name(e->effect));
+        titled |= 1u << e->effect;
+        fprintf(f, "%s'%s.dat' index %zu using 1:%s with points pt %d ps 1.8 lc rgb '%s' %s, "
+                   "'' index %zu using 1:%s:5 with labels offset 0.8,-0.6 font ',8' tc rgb '%s' notitle",
+                *block ? ", \\\n     " : "", p->name, *block, column, point_types[e->effect], bench__colour(e->config),
+                title, *block, column, bench__colour(e->config));
+        ++*block;
+    }
 }
 
 static int bench__error_script(FILE *f, const void *ctx)
@@ -187,7 +220,7 @@ static int bench__error_script(FILE *f, const void *ctx)
     bench__terminal(f, p, 1300, 600);
     fprintf(f,
             "set multiplot layout 1,2 title \"thinlight-bench: error of the final image against fat vs frame time "
-            "(labels: lights; %s)\"\n"
+            "(labels: lights, or +effect against fat with it; %s)\"\n"
             "set logscale x\n"
             "set xlabel 'ms per frame, median'\n"
             "set key bottom right box opaque font ',8'\n",
@@ -212,6 +245,7 @@ static int bench__error_script(FILE *f, const void *ctx)
                     block, panels[k][1], bench__colour(series[i].mode));
             block++;
         }
+        bench__error_effects(f, p, run, panels[k][1], &block);
         if (!block) fputs("NaN notitle", f);
         fputc('\n', f);
     }
@@ -276,14 +310,15 @@ static int bench__bytes_script(FILE *f, const void *ctx)
     static const char *const target_colours[TL_TARGET_COUNT] = {"#4d4d4d", "#1a9850", "#66bd63", "#2166ac",
                                                                 "#67a9cf", "#d7191c", "#f4a582", "#fdae61",
                                                                 "#b2abd2", "#7b3294", "#bababa", "#e0e0e0",
-                                                                "#8c510a", "#35978f", "#80cdc1", "#c51b7d"};
+                                                                "#8c510a", "#35978f", "#80cdc1", "#c51b7d",
+                                                                "#fee08b", "#ffd700"};
     static const char *const pass_colours[TL_PASS_COUNT] = {
         [TL_PASS_DEPTH_PREPASS] = "#4d4d4d", [TL_PASS_GBUFFER] = "#2166ac",      [TL_PASS_SSAO] = "#35978f",
         [TL_PASS_SSAO_BLUR] = "#80cdc1",     [TL_PASS_SSAO_APPLY] = "#01665e",   [TL_PASS_LIGHT_CULL] = "#8c510a",
         [TL_PASS_LIGHTS] = "#fdae61",        [TL_PASS_LIGHTS_TILED] = "#f46d43", [TL_PASS_MATERIAL] = "#1a9850",
         [TL_PASS_FORWARD] = "#7b3294",       [TL_PASS_TRANSPARENT] = "#b2abd2",  [TL_PASS_FOG] = "#878787",
         [TL_PASS_DOF] = "#c51b7d",           [TL_PASS_DOF_APPLY] = "#de77ae",    [TL_PASS_TONEMAP] = "#d7191c",
-        [TL_PASS_FXAA] = "#bababa"};
+        [TL_PASS_FXAA] = "#bababa",          [TL_PASS_BLOOM] = "#ffd700"};
     const tl_tool_plot *p = ctx;
     const bench_run *run = p->user;
     bench_config modes[BENCH_CONFIGS];

@@ -106,14 +106,18 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
     static const char *const names[TL_TARGET_COUNT] = {
         "depth",        "rt0_normal_gloss", "rt1_albedo", "light_diffuse", "light_specular", "fat_position",
         "fat_normal",   "fat_albedo",       "fat_material", "hdr",         "ldr",            "output", NULL,
-        "ao_raw",       "ao",               "dof",          "light_fresnel"};
+        "ao_raw",       "ao",               "dof",          "light_fresnel", "bloom"};
+    tl_frame_plan plan;
+    if (tl_renderer_get_plan(r, &plan) != TL_OK) memset(&plan, 0, sizeof plan);
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         size_t size = n * sizeof *buf;
+        uint32_t tw = plan.target_info[t].width ? plan.target_info[t].width : w; /* bloom: half size */
+        uint32_t th = plan.target_info[t].height ? plan.target_info[t].height : h;
         if (!names[t]) continue; /* a storage buffer */
         if (tl_renderer_read_target(r, (tl_target_id)t, buf, &size) != TL_OK) continue; /* not allocated */
         char path[4096];
         snprintf(path, sizeof path, "%s/%s.exr", dir, names[t]);
-        tl_image_desc id = {.width = w, .height = h, .channels = 4, .type = TL_PIXEL_F32, .bottom_up = 1};
+        tl_image_desc id = {.width = tw, .height = th, .channels = 4, .type = TL_PIXEL_F32, .bottom_up = 1};
         if (tl_tool_write_image("thinlight-render", path, &id, buf)) {
             free(buf);
             return 1;

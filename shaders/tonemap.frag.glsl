@@ -1,9 +1,12 @@
-// Pass 4: exposure, ACES-fitted tone curve (Narkowicz 2015) in linear space, sRGB encoding, and
+// Pass 4: bloom added (docs/effects.md), exposure, ACES-fitted tone curve (Narkowicz 2015) in linear space, sRGB encoding, and
 // gamma-encoded luma in alpha for FXAA.
 #include "frame.glsl"
 
 in vec2 v_uv;
 layout(binding = TL_UNIT_HDR) uniform sampler2D u_hdr;
+#ifdef TL_BLOOM
+layout(binding = TL_UNIT_BLOOM) uniform sampler2D u_bloom_image; // half size, bilinear: the 2x upsample
+#endif
 #ifdef TL_OUT_LDR
 layout(location = TL_OUT_LDR) out vec4 o_ldr;
 #else
@@ -26,6 +29,9 @@ void main()
     // brightest value, NaN (Inf - Inf never happens here, but be safe) is black.
     vec3 c = textureLod(u_hdr, v_uv, 0.0).rgb;
     c = vec3(isnan(c.r) ? 0.0 : c.r, isnan(c.g) ? 0.0 : c.g, isnan(c.b) ? 0.0 : c.b);
+#ifdef TL_BLOOM
+    c = clamp(c, vec3(0.0), vec3(65504.0)) + u_bloom.z * textureLod(u_bloom_image, v_uv, 0.0).rgb;
+#endif
     vec3 hdr = clamp(c, vec3(0.0), vec3(65504.0)) * u_exposure;
     vec3 l = tl_aces(hdr);
     vec3 s = vec3(tl_encode_srgb(l.r), tl_encode_srgb(l.g), tl_encode_srgb(l.b));

@@ -16,7 +16,9 @@ const char tl_tool_effects_help[] =
     "                        --fog-color R,G,B (0,0,0), --fog-height Y (0), --fog-falloff K (0.5),\n"
     "                        --fog-noise 0..1 (0)\n"
     "  --dof                 depth of field; --dof-focus DIST (camera target), --dof-aperture A (0.01 of\n"
-    "                        the height), --dof-max M (2 A), --dof-samples N (48)\n";
+    "                        the height), --dof-max M (2 A), --dof-samples N (48)\n"
+    "  --bloom               bloom; --bloom-threshold T (1; 0: everything), --bloom-knee K (0.5 of T),\n"
+    "                        --bloom-intensity I (0.5), --bloom-scatter S (0.7), --bloom-levels N (6, 1..8)\n";
 
 static int tl__bad(const char *tool, const char *opt, const char *value, const char *want)
 {
@@ -52,6 +54,7 @@ static int tl__flag(tl_renderer_desc *d, const char *opt)
     else if (!strcmp(opt, "--fog")) {
         if (d->fog.mode == TL_FOG_OFF) d->fog.mode = TL_FOG_DISTANCE;
     } else if (!strcmp(opt, "--dof")) d->dof.enabled = 1;
+    else if (!strcmp(opt, "--bloom")) d->bloom.enabled = 1;
     else return 0;
     return 1;
 }
@@ -103,11 +106,29 @@ static int tl__dof_value(const char *tool, tl_dof_desc *f, const char *opt, cons
     return ok ? 2 : tl__bad(tool, opt, v, "out of range (see --help)");
 }
 
+/* Zero means "the default" in tl_bloom_desc: an explicit 0 threshold or knee is passed as -1 (exactly 0). */
+static int tl__bloom_value(const char *tool, tl_bloom_desc *b, const char *opt, const char *v)
+{
+    int ok = 1;
+    if (!strcmp(opt, "--bloom-threshold")) {
+        ok = tl__float(v, &b->threshold) && b->threshold >= 0.0f;
+        if (ok && b->threshold == 0.0f) b->threshold = -1.0f;
+    } else if (!strcmp(opt, "--bloom-knee")) {
+        ok = tl__float(v, &b->knee) && b->knee >= 0.0f && b->knee <= 1.0f;
+        if (ok && b->knee == 0.0f) b->knee = -1.0f;
+    } else if (!strcmp(opt, "--bloom-intensity")) ok = tl__float(v, &b->intensity) && b->intensity > 0.0f;
+    else if (!strcmp(opt, "--bloom-scatter")) ok = tl__float(v, &b->scatter) && b->scatter > 0.0f && b->scatter <= 1.0f;
+    else if (!strcmp(opt, "--bloom-levels")) ok = tl__u32(v, &b->levels) && b->levels >= 1 && b->levels <= 8;
+    else return 0;
+    return ok ? 2 : tl__bad(tool, opt, v, "out of range (see --help)");
+}
+
 int tl_tool_effect_option(const char *tool, tl_renderer_desc *d, const char *opt, const char *value)
 {
     if (tl__flag(d, opt)) return 1;
     int rc = tl__ssao_value(tool, &d->ssao, opt, value);
     if (!rc) rc = tl__fog_value(tool, &d->fog, opt, value);
     if (!rc) rc = tl__dof_value(tool, &d->dof, opt, value);
+    if (!rc) rc = tl__bloom_value(tool, &d->bloom, opt, value);
     return rc;
 }

@@ -191,6 +191,22 @@ typedef struct tl_dof_desc {
     uint32_t samples;     /**< gather taps, 8..128; default 48 */
 } tl_dof_desc;
 
+/** Bloom: the HDR image above a threshold, blurred by a downsample / upsample chain of half-size
+ *  mip levels (the 13-tap downsample and 3x3 tent upsample of Jimenez, "Next generation post
+ *  processing in Call of Duty: Advanced Warfare", SIGGRAPH 2014; each upsample blends the coarser
+ *  level over the finer one by `scatter`, as Unity's URP bloom does), added to HDR in the tone-map
+ *  pass. The chain conserves energy: with threshold 0 the bloom image sums to the HDR image it was
+ *  made from (docs/effects.md). Zeroed: off. */
+typedef struct tl_bloom_desc {
+    int enabled;         /**< 1: on */
+    float threshold;     /**< HDR brightness (largest channel) where bloom starts; default 1; negative: exactly 0 */
+    float knee;          /**< soft knee as a fraction of the threshold, 0..1; default 0.5; negative: exactly 0 (hard) */
+    float intensity;     /**< weight of the bloom image added to HDR; default 0.5 */
+    float scatter;       /**< 0..1: weight of each coarser level in the upsample (larger: wider glow); default 0.7 */
+    uint32_t levels;     /**< mip levels of the chain, 1..8, the first at half size; default 6 (fewer when the
+                              size runs out: a level is never smaller than 1x1) */
+} tl_bloom_desc;
+
 /** A GL entry point as a loader returns it. */
 typedef void (*tl_gl_function)(void);
 /** Loader for GL entry points, e.g. tl_context_proc_loader or a wrapper of glfwGetProcAddress. */
@@ -245,6 +261,7 @@ typedef struct tl_renderer_desc {
     tl_ssao_desc ssao;                 /**< screen-space ambient occlusion; zeroed: off */
     tl_fog_desc fog;                   /**< fog; zeroed: off */
     tl_dof_desc dof;                   /**< depth of field; zeroed: off */
+    tl_bloom_desc bloom;               /**< bloom; zeroed: off */
     /** The most memory, in bytes, the frame's targets may take (the memory blocks of the plan,
      *  tl_frame_plan.allocated_bytes_per_pixel times the pixels, light lists included): a plan
      *  that needs more is TL_ERROR_LIMIT naming both sizes, from create, set_scene, set_lights,
@@ -274,7 +291,8 @@ typedef enum tl_pass {
     TL_PASS_FOG,           /**< fog blended over HDR */
     TL_PASS_DOF,           /**< depth of field: the gather blur of HDR into dof */
     TL_PASS_DOF_APPLY,     /**< depth of field: dof copied into HDR */
-    TL_PASS_TONEMAP,       /**< exposure, tone curve, sRGB encoding */
+    TL_PASS_BLOOM,         /**< bloom: threshold and the downsample / upsample chain of HDR into bloom */
+    TL_PASS_TONEMAP,       /**< (bloom added), exposure, tone curve, sRGB encoding */
     TL_PASS_FXAA,          /**< FXAA, when it is on */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
@@ -299,6 +317,7 @@ typedef enum tl_target_id {
     TL_TARGET_AO,             /**< R16F ambient occlusion (1 = open) */
     TL_TARGET_DOF,            /**< RGBA16F depth-of-field image */
     TL_TARGET_LIGHT_FRESNEL,  /**< thin-lpp with GGX, two-sums layout: S2, the Schlick part of specular */
+    TL_TARGET_BLOOM,          /**< RGBA16F bloom chain: half size (odd sizes round up), tl_bloom_desc.levels mip levels */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -335,6 +354,10 @@ typedef struct tl_plan_target {
     uint32_t last_pass;       /**< index of its last reader; pass_count when it must survive the
                                    frame (the output, kept targets) */
     uint32_t block;           /**< index in tl_frame_plan.blocks of the memory it uses */
+    uint32_t width;           /**< size of its first level: the frame's, or divided and rounded up */
+    uint32_t height;          /**< (never 0) */
+    uint32_t levels;          /**< mip levels (1 for most targets; each level is half the last, rounded down, at least 1) */
+    size_t bytes;             /**< memory of all its levels; bytes_per_pixel is this over the frame's pixels, rounded up */
 } tl_plan_target;
 
 /** One allocation that targets with disjoint lifetimes and view-compatible formats share
@@ -366,6 +389,7 @@ typedef struct tl_frame_plan {
     tl_plan_block blocks[TL_TARGET_COUNT];       /**< the allocations behind the targets */
     uint32_t bytes_per_pixel;                    /**< sum over allocated targets */
     uint32_t allocated_bytes_per_pixel;          /**< sum over blocks: the memory actually allocated */
+    size_t allocated_bytes;                      /**< the same in bytes (reduced-size targets counted exactly) */
     uint32_t peak_live_bytes_per_pixel;          /**< most bytes live during one pass (a lower bound) */
     uint32_t gbuffer_bytes_per_pixel;            /**< depth + G-buffer + light buffer (what the technique stores) */
     uint32_t vertex_attributes;                  /**< TL_ATTRIBUTE_* bound by the geometry passes */
@@ -559,7 +583,9 @@ TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *
 /**
  * Reads a target as floats, 4 per pixel, rows bottom to top: DEPTH gives (window depth, linear
  * view distance, 0, 1); RT0 the decoded normal (view space) and gloss; RT1 its raw channels in
- * [0,1]; LIGHT_*, FAT_* and HDR their RGBA; LDR and OUTPUT their colour in [0,1]. *size is the
+ * [0,1]; LIGHT_*, FAT_* and HDR their RGBA; LDR and OUTPUT their colour in [0,1]; BLOOM its first
+ * level (tl_plan_target.width x height, not the frame's size): the bloom image before its
+ * intensity. *size is the
  * buffer's size in bytes and receives the bytes written; a NULL `rgba` asks for the size needed.
  * TL_ERROR_INVALID_ARGUMENT for a target the plan did not allocate, or one whose memory a later
  * pass of the frame reused (list it in tl_renderer_desc.keep_targets to read it).

@@ -121,21 +121,30 @@ typedef struct tl__target_desc {
 } tl__target_desc;
 
 typedef struct tl__target {
-    GLuint texture; /* immutable GL_TEXTURE_2D, one level, nearest filtering, clamp to edge */
+    GLuint texture; /* immutable GL_TEXTURE_2D, nearest filtering (or linear), clamp to edge */
     GLenum internal_format;
-    uint32_t width, height;
-    size_t bytes; /* bytes_per_pixel * width * height */
+    uint32_t width, height; /* of level 0 */
+    uint32_t levels;
+    size_t bytes; /* bytes_per_pixel * width * height over its levels */
 } tl__target;
 
 /* TL_ERROR_UNSUPPORTED for unknown formats, TL_ERROR_LIMIT beyond GL_MAX_TEXTURE_SIZE,
  * TL_ERROR_GL when the storage could not be allocated. `out` is zeroed on failure. */
 tl_result tl__target_create(const GladGLContext *gl, const tl__target_desc *desc, tl__target *out,
                             char *msg, size_t msg_size);
+/* The same with `levels` mip levels (0 means 1; fewer when the size ends at 1x1 first) and, with
+ * `linear`, bilinear filtering of level 0 instead of nearest. */
+tl_result tl__target_create_levels(const GladGLContext *gl, const tl__target_desc *desc, uint32_t levels, int linear,
+                                   tl__target *out, char *msg, size_t msg_size);
 /* A texture view (glTextureView) of `storage`'s level 0 with a view-compatible format: same size,
  * same memory. TL_ERROR_INVALID_ARGUMENT for formats of different view classes. The view
  * accounts for no bytes of its own (bytes = 0); the storage does. */
 tl_result tl__target_create_view(const GladGLContext *gl, const tl__target *storage, GLenum internal_format,
                                  const char *label, tl__target *out, char *msg, size_t msg_size);
+/* A one-level view of `storage`'s mip `level` (same format, linear filtering, clamp to edge), to
+ * sample one level while another is rendered, or to attach it: width and height are the level's. */
+tl_result tl__target_create_level(const GladGLContext *gl, const tl__target *storage, uint32_t level, const char *label,
+                                  tl__target *out, char *msg, size_t msg_size);
 /* Deletes the texture and zeroes `t`; a zeroed target is fine. */
 void tl__target_destroy(const GladGLContext *gl, tl__target *t);
 

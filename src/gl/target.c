@@ -67,6 +67,12 @@ unsigned tl__format_view_class(GLenum internal_format)
 tl_result tl__target_create(const GladGLContext *gl, const tl__target_desc *desc, tl__target *out,
                             char *msg, size_t msg_size)
 {
+    return tl__target_create_levels(gl, desc, 1, 0, out, msg, msg_size);
+}
+
+tl_result tl__target_create_levels(const GladGLContext *gl, const tl__target_desc *desc, uint32_t levels, int linear,
+                                   tl__target *out, char *msg, size_t msg_size)
+{
     tl__msg(msg, msg_size, "%s", "");
     if (out) memset(out, 0, sizeof *out);
     if (!gl || !desc || !out) {
@@ -102,7 +108,10 @@ tl_result tl__target_create(const GladGLContext *gl, const tl__target_desc *desc
         tl__msg(msg, msg_size, "target \"%s\": glCreateTextures failed", label);
         return TL_ERROR_GL;
     }
-    gl->TextureStorage2D(tex, 1, f->internal_format, (GLsizei)desc->width,
+    uint32_t side = desc->width > desc->height ? desc->width : desc->height;
+    if (!levels) levels = 1;
+    while (levels > 1 && (side >> (levels - 1)) == 0) levels--; /* GL's chain ends at 1x1 */
+    gl->TextureStorage2D(tex, (GLsizei)levels, f->internal_format, (GLsizei)desc->width,
                          (GLsizei)desc->height);
     /* Storage that failed (GL_OUT_OF_MEMORY, ...) leaves the texture mutable; checking this avoids
      * glGetError, which would also consume the caller's pending errors. */
@@ -115,8 +124,9 @@ tl_result tl__target_create(const GladGLContext *gl, const tl__target_desc *desc
                 pixels * f->bytes_per_pixel);
         return TL_ERROR_GL;
     }
-    gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    GLint filter = linear ? GL_LINEAR : GL_NEAREST;
+    gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, filter);
+    gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
     gl->TextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl->TextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     tl__gl_label(gl, GL_TEXTURE, tex, desc->label);
@@ -125,7 +135,12 @@ tl_result tl__target_create(const GladGLContext *gl, const tl__target_desc *desc
     out->internal_format = f->internal_format;
     out->width = desc->width;
     out->height = desc->height;
-    out->bytes = pixels * f->bytes_per_pixel;
+    out->levels = levels;
+    out->bytes = 0;
+    for (uint32_t k = 0; k < levels; k++) {
+        size_t w = desc->width >> k, h = desc->height >> k;
+        out->bytes += (w ? w : 1u) * (h ? h : 1u) * f->bytes_per_pixel;
+    }
     return TL_OK;
 }
 
@@ -152,7 +167,35 @@ tl_result tl__target_create_view(const GladGLContext *gl, const tl__target *stor
     out->internal_format = internal_format;
     out->width = storage->width;
     out->height = storage->height;
+    out->levels = 1;
     out->bytes = 0;
+    return TL_OK;
+}
+
+tl_result tl__target_create_level(const GladGLContext *gl, const tl__target *storage, uint32_t level, const char *label,
+                                  tl__target *out, char *msg, size_t msg_size)
+{
+    tl__msg(msg, msg_size, "%s", "");
+    memset(out, 0, sizeof *out);
+    if (!storage || !storage->texture || level >= storage->levels) {
+        tl__msg(msg, msg_size, "view \"%s\": level %u of a storage with %u", label ? label : "", (unsigned)level,
+                storage ? (unsigned)storage->levels : 0u);
+        return TL_ERROR_INVALID_ARGUMENT;
+    }
+    GLuint tex = 0;
+    gl->GenTextures(1, &tex);
+    gl->TextureView(tex, GL_TEXTURE_2D, storage->texture, storage->internal_format, level, 1, 0, 1);
+    gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    tl__gl_label(gl, GL_TEXTURE, tex, label);
+    uint32_t w = storage->width >> level, h = storage->height >> level;
+    out->texture = tex;
+    out->internal_format = storage->internal_format;
+    out->width = w ? w : 1u;
+    out->height = h ? h : 1u;
+    out->levels = 1;
     return TL_OK;
 }
 

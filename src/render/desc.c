@@ -3,6 +3,7 @@
 #include <string.h>
 
 #include "plan_internal.h"
+#include "targets.h"
 
 static int tl__finite4(float a, float b, float c, float d) { return isfinite(a) && isfinite(b) && isfinite(c) && isfinite(d); }
 
@@ -58,11 +59,30 @@ static int tl__dof_resolve(tl_dof_desc *f)
            f->max_radius <= 1.0f;
 }
 
+static int tl__bloom_resolve(tl_bloom_desc *b)
+{
+    if (!b->enabled) {
+        memset(b, 0, sizeof *b);
+        return 1;
+    }
+    b->enabled = 1;
+    if (b->threshold == 0.0f) b->threshold = 1.0f;
+    if (b->threshold < 0.0f) b->threshold = 0.0f;
+    if (b->knee == 0.0f) b->knee = 0.5f;
+    if (b->knee < 0.0f) b->knee = 0.0f;
+    if (!(b->intensity > 0.0f)) b->intensity = 0.5f;
+    if (!(b->scatter > 0.0f)) b->scatter = 0.7f;
+    if (!b->levels) b->levels = 6;
+    return b->levels <= TL__MAX_LEVELS && b->knee <= 1.0f && b->scatter <= 1.0f &&
+           tl__finite4(b->threshold, b->knee, b->intensity, b->scatter);
+}
+
 static tl_result tl__effects_resolve(tl_renderer_desc *d)
 {
     int ok = tl__ssao_resolve(&d->ssao);
     ok &= tl__fog_resolve(&d->fog);
     ok &= tl__dof_resolve(&d->dof);
+    ok &= tl__bloom_resolve(&d->bloom);
     return ok ? TL_OK : TL_ERROR_INVALID_ARGUMENT;
 }
 

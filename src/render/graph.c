@@ -14,11 +14,15 @@ void tl__graph_release(tl_renderer *r)
 {
     const GladGLContext *gl = &r->gl;
     tl__tiles_release(r);
-    for (size_t i = 0; i < r->pass_count; i++) tl__framebuffer_destroy(gl, &r->passes[i].fbo);
+    for (size_t i = 0; i < r->pass_count; i++) {
+        tl__framebuffer_destroy(gl, &r->passes[i].fbo);
+        for (uint8_t k = 1; k < r->passes[i].level_count; k++) tl__framebuffer_destroy(gl, &r->passes[i].level_fbos[k]);
+    }
     tl__framebuffer_destroy(gl, &r->luma.fbo);
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         tl__target_destroy(gl, &r->targets[t]);
         tl__target_destroy(gl, &r->blocks[t]);
+        for (uint32_t k = 0; k < TL__MAX_LEVELS; k++) tl__target_destroy(gl, &r->levels[t][k]);
     }
     memset(r->passes, 0, sizeof r->passes);
     memset(&r->luma, 0, sizeof r->luma);
@@ -38,11 +42,17 @@ static tl_result tl__graph_block(tl_renderer *r, size_t b)
             members++;
         }
     if (tl__targets[first].buffer) return TL_OK; /* storage buffers: tl__tiles_create */
-    tl__target_desc td = {label, p->target_info[first].format, p->width, p->height};
+    const tl_plan_target *ti = &p->target_info[first];
+    tl__target_desc td = {label, ti->format, ti->width, ti->height};
     tl_result res;
-    if (members == 1) { /* memory of its own: the target is the texture */
+    if (members == 1) { /* memory of its own: the target is the texture, with a view per level */
         snprintf(label, sizeof label, "target.%s", tl_target_name((tl_target_id)first));
-        res = tl__target_create(&r->gl, &td, &r->targets[first], msg, sizeof msg);
+        res = tl__target_create_levels(&r->gl, &td, ti->levels, tl__targets[first].linear, &r->targets[first], msg,
+                                       sizeof msg);
+        for (uint32_t k = 0; res == TL_OK && ti->levels > 1 && k < ti->levels; k++) {
+            snprintf(label, sizeof label, "target.%s.level%u", tl_target_name((tl_target_id)first), k);
+            res = tl__target_create_level(&r->gl, &r->targets[first], k, label, &r->levels[first][k], msg, sizeof msg);
+        }
         if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
         return TL_OK;
     }
@@ -73,6 +83,23 @@ static void tl__graph_images(tl_renderer *r, tl__compiled_pass *cp, const tl__pa
         }
 }
 
+/* A pass whose one colour write has mip levels renders each level through a framebuffer of its own. */
+static tl_result tl__graph_levels(tl_renderer *r, tl__compiled_pass *cp, const tl__target *const *colors, size_t n)
+{
+    if (n != 1 || colors[0]->levels < 2) return TL_OK;
+    size_t t = (size_t)(colors[0] - r->targets);
+    cp->level_fbos[0] = cp->fbo;
+    cp->level_count = (uint8_t)colors[0]->levels;
+    for (uint8_t k = 1; k < cp->level_count; k++) {
+        char label[64], msg[256];
+        const tl__target *level = &r->levels[t][k];
+        snprintf(label, sizeof label, "fbo.%s.level%u", cp->plan->name, (unsigned)k);
+        tl_result res = tl__framebuffer_create(&r->gl, label, &level, 1, NULL, &cp->level_fbos[k], msg, sizeof msg);
+        if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
+    }
+    return TL_OK;
+}
+
 /* Framebuffer, clears and texture bindings of one pass. */
 static tl_result tl__graph_pass(tl_renderer *r, tl__compiled_pass *cp, const tl_plan_pass *pp, const tl__pass_decl *d)
 {
@@ -101,7 +128,7 @@ static tl_result tl__graph_pass(tl_renderer *r, tl__compiled_pass *cp, const tl_
     const tl__target *depth = d->attach_depth ? &r->targets[TL_TARGET_DEPTH] : NULL;
     tl_result res = tl__framebuffer_create(&r->gl, label, colors, n, depth, &cp->fbo, msg, sizeof msg);
     if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
-    return TL_OK;
+    return tl__graph_levels(r, cp, colors, n);
 }
 
 tl_result tl__graph_programs(tl_renderer *r)

@@ -10,9 +10,16 @@
 
 static void tl__tonemap_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    d->reads = d->samples = TL__B(HDR);
+    d->reads = d->samples = TL__B(HDR) | (in->d.bloom.enabled ? TL__B(BLOOM) : 0u);
     d->writes = in->d.fxaa != TL_FXAA_OFF ? TL__B(LDR) : TL__B(OUTPUT);
     d->state = tl__pipeline_fullscreen;
+}
+
+static void tl__tonemap_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+{
+    out->used[0] = 1;
+    snprintf(out->slot[0], sizeof out->slot[0], "%s", (d->samples & TL__B(BLOOM)) ? "TL_BLOOM" : "");
+    (void)in;
 }
 
 /* Into a caller's framebuffer of another size the image is resampled: linear filtering then. */
@@ -28,7 +35,7 @@ const tl__pass_def tl__pass_tonemap = {
     .name = "tonemap",
     .programs = {{"tonemap", "fullscreen.vert.glsl", "tonemap.frag.glsl"}},
     .declare = tl__tonemap_declare,
-    .permute = tl__permute_one_program,
+    .permute = tl__tonemap_permute,
     .execute = tl__tonemap_execute,
 };
 

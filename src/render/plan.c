@@ -174,6 +174,23 @@ static void tl__cull_passes(tl__plan *p, uint32_t sinks)
 
 /* ---- targets, lifetimes, shared memory ------------------------------------------------------ */
 
+/* Format, size, levels and bytes of a target; a storage buffer's or a reduced target's bytes per
+ * pixel are its bytes over the frame's pixels, rounded up. */
+static void tl__target_memory(const tl_renderer_desc *d, const tl_frame_plan *fp, tl_target_id t, tl_plan_target *ti)
+{
+    size_t px = (size_t)d->width * d->height, bpp;
+    ti->format = tl__target_format(d, t);
+    bpp = tl__format_bytes_per_pixel(ti->format);
+    tl__target_size(d, t, &ti->width, &ti->height, &ti->levels);
+    ti->bytes = 0;
+    for (uint32_t k = 0; k < ti->levels; k++) {
+        size_t w = ti->width >> k, h = ti->height >> k;
+        ti->bytes += (w ? w : 1u) * (h ? h : 1u) * bpp;
+    }
+    if (tl__targets[t].buffer) ti->bytes = tl__light_lists_bytes((size_t)fp->tiles_x * fp->tiles_y);
+    ti->bytes_per_pixel = (uint32_t)((ti->bytes + px - 1) / px);
+}
+
 static void tl__lifetimes(tl__plan *p, const tl_renderer_desc *d, uint32_t sinks)
 {
     tl_frame_plan *fp = &p->pub;
@@ -181,12 +198,7 @@ static void tl__lifetimes(tl__plan *p, const tl_renderer_desc *d, uint32_t sinks
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         tl_plan_target *ti = &fp->target_info[t];
         if (!(fp->targets & TL__BIT(t))) continue;
-        ti->format = tl__target_format(d, (tl_target_id)t);
-        ti->bytes_per_pixel = (uint32_t)tl__format_bytes_per_pixel(ti->format);
-        if (tl__targets[t].buffer) { /* its size over the pixels, rounded up */
-            size_t px = (size_t)d->width * d->height, bytes = tl__light_lists_bytes((size_t)fp->tiles_x * fp->tiles_y);
-            ti->bytes_per_pixel = (uint32_t)((bytes + px - 1) / px);
-        }
+        tl__target_memory(d, fp, (tl_target_id)t, ti);
         fp->target_bytes_per_pixel[t] = ti->bytes_per_pixel;
         fp->bytes_per_pixel += ti->bytes_per_pixel;
         if (tl__targets[t].gbuffer) fp->gbuffer_bytes_per_pixel += ti->bytes_per_pixel;
@@ -220,7 +232,8 @@ static void tl__share_memory(tl__plan *p)
         for (int t = 0; t < TL_TARGET_COUNT; t++) {
             tl_plan_target *ti = &fp->target_info[t];
             if (!ti->bytes_per_pixel || ti->first_pass != step) continue;
-            unsigned cls = tl__format_view_class(ti->format);
+            /* a block is one texture of the frame's size and one level: a reduced target keeps its own */
+            unsigned cls = tl__targets[t].shift || ti->levels > 1 ? 0u : tl__format_view_class(ti->format);
             size_t b = fp->block_count;
             for (size_t k = 0; cls && k < fp->block_count; k++)
                 if (block_class[k] == cls && block_end[k] < ti->first_pass) {
@@ -231,6 +244,7 @@ static void tl__share_memory(tl__plan *p)
                 fp->block_count++;
                 fp->blocks[b].bytes_per_pixel = ti->bytes_per_pixel;
                 fp->allocated_bytes_per_pixel += ti->bytes_per_pixel;
+                fp->allocated_bytes += ti->bytes;
             } else {
                 p->shared |= fp->blocks[b].targets; /* earlier members are overwritten by this one */
             }

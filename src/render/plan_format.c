@@ -62,13 +62,18 @@ static void tl__print_targets_table(tl__out *o, const tl_frame_plan *p)
         char last[16];
         if (t->last_pass >= p->pass_count) snprintf(last, sizeof last, "end");
         else snprintf(last, sizeof last, "%u", t->last_pass + 1);
-        tl__printf(o, "  %-15s %2u  %u..%-3s  block %u%s\n", tl_target_name((tl_target_id)i), t->bytes_per_pixel,
+        tl__printf(o, "  %-15s %2u  %u..%-3s  block %u%s", tl_target_name((tl_target_id)i), t->bytes_per_pixel,
                    t->first_pass + 1, last, t->block,
                    (p->blocks[t->block].targets & ~TL_TARGET_BIT(i)) ? " (shared)" : "");
+        if (t->levels > 1 || t->width != p->width || t->height != p->height)
+            tl__printf(o, " (%ux%u, %u level%s, %zu bytes)", t->width, t->height, t->levels, t->levels > 1 ? "s" : "",
+                       t->bytes);
+        tl__printf(o, "\n");
     }
     tl__printf(o, "  %-15s %2u (G-buffer and light buffer: %u)\n", "sum", p->bytes_per_pixel, p->gbuffer_bytes_per_pixel);
-    tl__printf(o, "  %-15s %2u in %zu blocks (most live at once: %u)\n", "allocated", p->allocated_bytes_per_pixel,
-               p->block_count, p->peak_live_bytes_per_pixel);
+    tl__printf(o, "  %-15s %2u in %zu blocks (most live at once: %u; %.2f MiB)\n", "allocated",
+               p->allocated_bytes_per_pixel, p->block_count, p->peak_live_bytes_per_pixel,
+               (double)p->allocated_bytes / 1048576.0);
 }
 
 size_t tl_frame_plan_format(const tl_frame_plan *p, char *buffer, size_t size)

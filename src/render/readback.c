@@ -99,7 +99,7 @@ tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id id, float *rgba, 
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
     tl_result res = tl__readable(r, id);
     if (res != TL_OK) return res;
-    size_t n = (size_t)r->desc.width * r->desc.height;
+    size_t n = (size_t)r->targets[id].width * r->targets[id].height; /* a reduced target: its first level */
     if (!tl__size_check(r, rgba, size, n * 4 * sizeof(float), tl_target_name(id), &res)) return res;
     char msg[256] = "";
     if (id == TL_TARGET_DEPTH) res = tl__read_depth(r, rgba, n, msg, sizeof msg);

@@ -13,6 +13,7 @@
 #include "gl/stream.h"
 #include "math3d.h"
 #include "pass.h"
+#include "targets.h"
 #include "thinlight/renderer.h"
 
 enum { TL__LIGHT_KINDS = 3 }; /* point, spot, directional: index = type - 1 */
@@ -49,6 +50,7 @@ typedef struct tl__frame_ubo {
     float fog[4];             /* height, height falloff, noise, noise scale */
     float effects[4];         /* noise speed, time, focus distance, aperture */
     float dof[4];             /* largest CoC (fraction of the height), 0, 0, 0 */
+    float bloom[4];           /* threshold, knee (absolute), intensity, scatter */
 } tl__frame_ubo;
 
 /* std430 element of tl_object_buffer (shaders/object.glsl). */
@@ -107,6 +109,9 @@ struct tl__compiled_pass {
     GLuint image_textures[TL__IMAGE_UNITS_USED];
     GLenum image_formats[TL__IMAGE_UNITS_USED];
     uint8_t writes_output;
+    /* it writes a target with mip levels: a framebuffer per level (level_fbos[0] is fbo) */
+    uint8_t level_count;
+    GLuint level_fbos[TL__MAX_LEVELS];
 };
 
 /* What the CPU knows about a frame (the GPU's figures arrive with its queries). */
@@ -153,6 +158,7 @@ struct tl_renderer {
     tl_scene_feature_set features;
     tl__target targets[TL_TARGET_COUNT]; /* textures or views of blocks */
     tl__target blocks[TL_TARGET_COUNT];  /* storage of blocks shared by several targets */
+    tl__target levels[TL_TARGET_COUNT][TL__MAX_LEVELS]; /* one-level views of targets with mip levels */
     tl__compiled_pass passes[TL_PLAN_MAX_PASSES];
     size_t pass_count;
     int programs_ready;

@@ -25,6 +25,7 @@ const tl__target_def tl__targets[TL_TARGET_COUNT] = {
     [TL_TARGET_AO] = {"ao", "AO", GL_R16F, 0},
     [TL_TARGET_DOF] = {"dof", "DOF", GL_RGBA16F, 0},
     [TL_TARGET_LIGHT_FRESNEL] = {"light.fresnel", "LIGHT_FRESNEL", GL_RGBA16F, 1},
+    [TL_TARGET_BLOOM] = {"bloom", "BLOOM", GL_RGBA16F, 0, 0, 1, 1},
 };
 
 size_t tl__light_lists_bytes(size_t tiles) { return 16u + 8u * tiles + 4u * TL__TILE_START_ENTRIES * tiles; }
@@ -46,4 +47,17 @@ uint32_t tl__target_format(const tl_renderer_desc *d, tl_target_id id)
         d->light_format == TL_LIGHT_FORMAT_R11G11B10F)
         return GL_R11F_G11F_B10F;
     return tl__targets[id].format;
+}
+
+void tl__target_size(const tl_renderer_desc *d, tl_target_id id, uint32_t *width, uint32_t *height, uint32_t *levels)
+{
+    unsigned shift = (unsigned)id < TL_TARGET_COUNT ? tl__targets[id].shift : 0u;
+    uint32_t w = (uint32_t)(((uint64_t)d->width + (1u << shift) - 1u) >> shift);
+    uint32_t h = (uint32_t)(((uint64_t)d->height + (1u << shift) - 1u) >> shift);
+    *width = w ? w : 1u;
+    *height = h ? h : 1u;
+    uint32_t want = id == TL_TARGET_BLOOM ? d->bloom.levels : 1u, n = 1;
+    /* GL halves each level rounding down, to 1x1 at the least: a level exists while the larger side is >= 2^level */
+    while (n < want && n < TL__MAX_LEVELS && ((*width > *height ? *width : *height) >> n) >= 1u) n++;
+    *levels = n;
 }

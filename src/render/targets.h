@@ -13,12 +13,21 @@ typedef struct tl__target_def {
     uint32_t format;    /* GL internal format; 0: depends on the options (tl__target_format) */
     uint8_t gbuffer;    /* counts as what the technique stores (G-buffer or light buffer) */
     uint8_t buffer;     /* a storage buffer, not a texture: no attachment, unit or memory sharing */
+    uint8_t shift;      /* its first level is the frame's size divided by 2^shift, rounded up */
+    uint8_t linear;     /* sampled with bilinear filtering (of its first level) */
 } tl__target_def;
+
+/* Most mip levels a target may have. */
+#define TL__MAX_LEVELS 8u
 
 extern const tl__target_def tl__targets[TL_TARGET_COUNT];
 
 /* The GL internal format of a target in a resolved configuration (0 for buffers). */
 uint32_t tl__target_format(const tl_renderer_desc *d, tl_target_id id);
+
+/* The size of a target's first level and its mip levels in a resolved configuration: a reduced
+ * target rounds up and is never 0 wide; levels stop before a level would be smaller than 1x1. */
+void tl__target_size(const tl_renderer_desc *d, tl_target_id id, uint32_t *width, uint32_t *height, uint32_t *levels);
 
 /* Tiled light lists: entries each tile starts with (the buffer grows when a frame needs more). */
 #define TL__TILE_START_ENTRIES 32u

@@ -135,16 +135,23 @@ TL_TEST(frame_graph_steady_frame_gl_calls)
     if (!ensure_context()) { tl_test_failures++; return; }
     tl_scene *s = crypt(64);
     if (!s) return;
-    for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++) {
-        tl_renderer *r = renderer((tl_renderer_desc){.mode = (tl_render_mode)mode, .width = 160, .height = 90},
-                                  counting_loader, s);
+    for (int run = 0; run < 2 * (TL_MODE_COUNT_ - 1); run++) { /* every mode, then with every effect on */
+        int mode = TL_MODE_THIN_LPP + run % (TL_MODE_COUNT_ - 1), fx = run >= TL_MODE_COUNT_ - 1;
+        tl_renderer_desc d = {.mode = (tl_render_mode)mode, .width = 160, .height = 90};
+        if (fx) {
+            d.ssao.method = TL_SSAO_DISC;
+            d.fog.mode = TL_FOG_DISTANCE;
+            d.dof.enabled = d.bloom.enabled = 1;
+        }
+        tl_renderer *r = renderer(d, counting_loader, s);
         if (!r) continue;
         TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK); /* warm: the first use of every object */
         TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
         counts_reset();
         TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
-        char label[64];
-        snprintf(label, sizeof label, "%s, steady frame without statistics", tl_render_mode_name((tl_render_mode)mode));
+        char label[80];
+        snprintf(label, sizeof label, "%s%s, steady frame without statistics", tl_render_mode_name((tl_render_mode)mode),
+                 fx ? " with every effect" : "");
         counts_print(label);
         TL_CHECK_EQ_U(n_GetUniformLocation + n_Uniform1i + n_ProgramUniform1i + n_ProgramUniform1f +
                           n_ProgramUniformMatrix4fv, 0);
@@ -158,7 +165,8 @@ TL_TEST(frame_graph_steady_frame_gl_calls)
         counts_reset();
         tl_frame_stats st;
         for (int f = 0; f < 6; f++) TL_CHECK(tl_renderer_render(r, NULL, &st) == TL_OK);
-        snprintf(label, sizeof label, "%s, 6 frames with ring statistics", tl_render_mode_name((tl_render_mode)mode));
+        snprintf(label, sizeof label, "%s%s, 6 frames with ring statistics", tl_render_mode_name((tl_render_mode)mode),
+                 fx ? " with every effect" : "");
         counts_print(label);
         TL_CHECK_EQ_U(n_Finish, 0);
         TL_CHECK_EQ_U(n_GetUniformLocation + n_GetNamedFramebufferAttachmentParameteriv, 0);

@@ -25,7 +25,14 @@ function(check_bad_usage)
     "--light-formats|rgba16f,rgb9e5" "unknown light buffer format"
     "--frames|0" "zero frames"
     "--out|${WORK}/out|--lights|-1" "negative light count"
-    "--doc|${WORK}/doc.md" "--doc without --out")
+    "--doc|${WORK}/doc.md" "--doc without --out"
+    "--effects|ssao,glow" "unknown effect"
+    "--effects|ssao,,fog" "empty item in --effects"
+    "--effects" "--effects without a value"
+    "--bloom-levels|0" "zero bloom levels"
+    "--bloom-threshold|-1" "negative bloom threshold"
+    "--bloom-scatter|1.5" "bloom scatter over 1"
+    "--ssao-samples|65" "too many SSAO samples")
   list(LENGTH cases n)
   math(EXPR last "${n} - 1")
   foreach(i RANGE 0 ${last} 2)
@@ -63,6 +70,12 @@ function(check_bad_input)
   file(READ "${WORK}/doc.md" doc)
   if(NOT doc STREQUAL "no markers here\n")
     message(FATAL_ERROR "--doc without markers changed the file")
+  endif()
+  run_tool(--quick --no-plot --effects bloom --effects-doc "${WORK}/doc.md" --json "${WORK}/x.json")
+  expect_exit(1 "--effects-doc without markers")
+  file(READ "${WORK}/doc.md" doc)
+  if(NOT doc STREQUAL "no markers here\n")
+    message(FATAL_ERROR "--effects-doc without markers changed the file")
   endif()
   expect_only("bad input" file doc.md)
 endfunction()

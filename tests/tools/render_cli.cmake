@@ -75,14 +75,15 @@ endfunction()
 # and exit 2, with no output written.
 function(check_effects)
   run_tool(default --size 96x54 --lights 8 --ssao --ssao-method hemisphere --fog --fog-mode height --fog-noise 0.5
-           --dof -o "${WORK}/out.png" --dump-targets "${WORK}/targets")
+           --dof --bloom --bloom-threshold 0 --bloom-levels 3 -o "${WORK}/out.png" --dump-targets "${WORK}/targets")
   expect_exit(0 "render with every effect")
-  foreach(t out.png targets/ao.exr targets/ao_raw.exr targets/dof.exr)
+  foreach(t out.png targets/ao.exr targets/ao_raw.exr targets/dof.exr targets/bloom.exr)
     if(NOT EXISTS "${WORK}/${t}")
       message(FATAL_ERROR "missing ${t}")
     endif()
   endforeach()
-  foreach(bad "--ssao-samples;0" "--ssao-method;foo" "--fog-color;1,2" "--dof-aperture;2" "--ssao-radius;nan")
+  foreach(bad "--ssao-samples;0" "--ssao-method;foo" "--fog-color;1,2" "--dof-aperture;2" "--ssao-radius;nan"
+          "--bloom-levels;9" "--bloom-threshold;-1" "--bloom-knee;2" "--bloom-scatter;0" "--bloom-intensity;inf")
     run_tool(default --size 32x18 ${bad} -o "${WORK}/bad.png")
     expect_exit(2 "bad effect value ${bad}")
     if(EXISTS "${WORK}/bad.png")

@@ -1,0 +1,253 @@
+/* The effects' measurements (--effects): at the first size and the first light count, every
+ * configuration of the first strategy (fat, the reference, first) is rendered without effects and
+ * with each effect, by one renderer each, the renderers taking turns frame by frame (the first to
+ * go rotates), so that each effect's frames sit beside frames without it. Its cost is the GPU time
+ * of its own passes; its error compares the final image with fat's under the same effect, and for
+ * SSAO the AO target with fat's. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "bench.h"
+#include "tool_log.h"
+
+static const char *const bench__effect_names[BENCH_EFFECTS] = {"ssao", "fog", "dof", "bloom"};
+
+const char *bench_effect_name(bench_effect e) { return (unsigned)e < BENCH_EFFECTS ? bench__effect_names[e] : "?"; }
+
+/* The passes each effect adds (their GPU time is its cost). */
+static double bench__effect_ms(bench_effect e, const tl_frame_stats *st)
+{
+    static const tl_pass passes[BENCH_EFFECTS][3] = {{TL_PASS_SSAO, TL_PASS_SSAO_BLUR, TL_PASS_SSAO_APPLY},
+                                                     {TL_PASS_FOG, TL_PASS_COUNT, TL_PASS_COUNT},
+                                                     {TL_PASS_DOF, TL_PASS_DOF_APPLY, TL_PASS_COUNT},
+                                                     {TL_PASS_BLOOM, TL_PASS_COUNT, TL_PASS_COUNT}};
+    double ms = 0.0;
+    for (int k = 0; k < 3; k++)
+        if (passes[e][k] != TL_PASS_COUNT && st->pass_ms[passes[e][k]] > 0.0) ms += st->pass_ms[passes[e][k]];
+    return ms;
+}
+
+void bench_effect_enable(const bench_options *opt, bench_effect e, tl_renderer_desc *d)
+{
+    const tl_renderer_desc *t = &opt->effect_desc;
+    switch (e) {
+    case BENCH_EFFECT_SSAO:
+        d->ssao = t->ssao;
+        if (d->ssao.method == TL_SSAO_OFF) d->ssao.method = TL_SSAO_DISC;
+        break;
+    case BENCH_EFFECT_FOG:
+        d->fog = t->fog;
+        if (d->fog.mode == TL_FOG_OFF) d->fog.mode = TL_FOG_DISTANCE;
+        break;
+    case BENCH_EFFECT_DOF:
+        d->dof = t->dof;
+        d->dof.enabled = 1;
+        break;
+    default:
+        d->bloom = t->bloom;
+        d->bloom.enabled = 1;
+        break;
+    }
+}
+
+/* The configurations measured: those of the first strategy, without the light-buffer variants. */
+static size_t bench__effect_configs(const bench_options *opt, bench_config *out)
+{
+    bench_config modes[BENCH_CONFIGS];
+    size_t n = bench_render_modes(opt, modes), k = 0;
+    for (size_t m = 0; m < n; m++)
+        if (bench_config_strategy(modes[m]) == opt->strategies[0] && !bench_config_variant_of(modes[m])) out[k++] = modes[m];
+    return k;
+}
+
+static size_t bench__effect_list(const bench_options *opt, bench_effect *out)
+{
+    size_t n = 0;
+    for (int e = 0; e < BENCH_EFFECTS; e++)
+        if (opt->effects & (1u << e)) out[n++] = (bench_effect)e;
+    return n;
+}
+
+uint64_t bench_effects_frames(const bench_options *opt)
+{
+    bench_config configs[BENCH_CONFIGS];
+    bench_effect list[BENCH_EFFECTS];
+    size_t e = bench__effect_list(opt, list);
+    return e ? (uint64_t)bench__effect_configs(opt, configs) * (e + 1) * (opt->warmup + opt->frames) : 0;
+}
+
+static int bench__cmp(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+static double bench__median(double *v, size_t n)
+{
+    qsort(v, n, sizeof *v, bench__cmp);
+    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+/* Images of one configuration (slot 0: no effect, then one per effect), and fat's. */
+typedef struct bench__effect_images {
+    size_t pixels;
+    uint8_t *ldr[BENCH_EFFECTS + 1], *ref_ldr[BENCH_EFFECTS + 1];
+    float *ao, *ref_ao; /* R of the AO target */
+} bench__effect_images;
+
+static tl_renderer *bench__effect_renderer(bench_run *run, tl_context *ctx, const tl_scene *scene, const tl_light *lights,
+                                           size_t count, bench_config c, int slot, const bench_effect *list)
+{
+    const bench_options *opt = &run->opt;
+    tl_renderer_desc d = {.mode = bench_config_mode(c), .light_strategy = bench_config_strategy(c),
+                          .lighting = opt->lighting, .fresnel = bench_config_fresnel(c, opt->fresnel),
+                          .width = opt->sizes[0].width, .height = opt->sizes[0].height, .synchronous_stats = 1,
+                          .get_proc_address = tl_context_proc_loader, .get_proc_address_user = ctx,
+                          .logger = tl_tool_logger(BENCH_TOOL)};
+    if (slot) bench_effect_enable(opt, list[slot - 1], &d);
+    if (d.ssao.method != TL_SSAO_OFF) d.keep_targets = TL_TARGET_BIT(TL_TARGET_AO);
+    tl_renderer *r = NULL;
+    if (tl_renderer_create(&d, &r) != TL_OK) return NULL; /* the logger said why */
+    if (tl_renderer_set_scene(r, scene) != TL_OK || tl_renderer_set_lights(r, lights, count) != TL_OK) {
+        tl_tool_fail(BENCH_TOOL, "%s with %s: %s", bench_config_name(c), slot ? bench_effect_name(list[slot - 1]) : "no effect",
+                     tl_renderer_last_error(r));
+        tl_renderer_destroy(r);
+        return NULL;
+    }
+    return r;
+}
+
+/* Reads slot's final image (and AO) after the last frame; fat's go to the reference buffers. */
+static int bench__effect_read(tl_renderer *r, int ref, int slot, int ssao, bench__effect_images *im)
+{
+    size_t n = im->pixels;
+    uint8_t *ldr = ref ? im->ref_ldr[slot] : im->ldr[slot];
+    if (tl_renderer_read_output(r, ldr, &(size_t){n * 4}) != TL_OK) return 1;
+    for (size_t i = 0; i < n; i++)
+        for (int c = 0; c < 3; c++) ldr[3 * i + c] = ldr[4 * i + c];
+    if (!ssao) return 0;
+    float *ao = ref ? im->ref_ao : im->ao;
+    if (tl_renderer_read_target(r, TL_TARGET_AO, ao, &(size_t){n * 4 * sizeof(float)}) != TL_OK) return 1;
+    for (size_t i = 0; i < n; i++) ao[i] = ao[4 * i];
+    return 0;
+}
+
+/* The timed frames of one configuration: ms[slot * frames + f] frame time, effect[...] its passes. */
+static int bench__effect_frames(bench_run *run, tl_renderer **r, size_t slots, const bench_effect *list, double *ms,
+                                double *effect, tl_tool_progress *progress, uint64_t *done, const char *name)
+{
+    const bench_options *opt = &run->opt;
+    uint32_t total = opt->warmup + opt->frames;
+    char label[96];
+    for (uint32_t f = 0; f < total; f++) {
+        snprintf(label, sizeof label, "effects: %s, frame %u/%u", name, f + 1, total);
+        tl_tool_progress_update(progress, *done, label, f == 0);
+        for (size_t j = 0; j < slots; j++, ++*done) {
+            size_t s = (f + j) % slots;
+            tl_frame_stats st;
+            if (tl_renderer_render(r[s], NULL, &st) != TL_OK) {
+                tl_tool_fail(BENCH_TOOL, "effects, %s: %s", name, tl_renderer_last_error(r[s]));
+                return 1;
+            }
+            if (f < opt->warmup) continue;
+            if (!(st.gpu_ms > 0.0)) run->timers_ok = 0;
+            size_t k = s * opt->frames + (f - opt->warmup);
+            ms[k] = st.gpu_ms > 0.0 ? st.gpu_ms : st.wall_ms;
+            effect[k] = s ? bench__effect_ms(list[s - 1], &st) : 0.0;
+        }
+    }
+    return 0;
+}
+
+static uint32_t bench__bpp(tl_renderer *r, size_t pixels)
+{
+    tl_frame_stats st;
+    if (tl_renderer_wait(r, &st) != TL_OK) return 0;
+    return (uint32_t)((st.allocated_target_bytes + pixels / 2) / pixels);
+}
+
+/* One configuration's records (the frames are done): medians, sizes, errors against fat's images. */
+static int bench__effect_summarise(bench_run *run, bench_config c, tl_renderer **r, size_t slots,
+                                   const bench_effect *list, double *ms, double *effect, bench__effect_images *im)
+{
+    const bench_options *opt = &run->opt;
+    uint32_t frames = opt->frames;
+    int ref = bench_config_mode(c) == BENCH_REFERENCE;
+    double ratios[BENCH_MAX_FRAMES];
+    for (size_t s = 0; s < slots; s++)
+        if (bench__effect_read(r[s], ref, (int)s, s && list[s - 1] == BENCH_EFFECT_SSAO, im)) {
+            tl_tool_fail(BENCH_TOOL, "effects, %s: reading the images: %s", bench_config_name(c), tl_renderer_last_error(r[s]));
+            return 1;
+        }
+    for (size_t s = 1; s < slots; s++) {
+        bench_effect_record *e = &run->effects[run->effect_count++];
+        memset(e, 0, sizeof *e);
+        *e = (bench_effect_record){.effect = list[s - 1], .config = c, .lights = opt->lights[0],
+                                   .width = opt->sizes[0].width, .height = opt->sizes[0].height, .frames = frames};
+        for (uint32_t f = 0; f < frames; f++) ratios[f] = ms[s * frames + f] / ms[f];
+        e->ratio = bench__median(ratios, frames);
+        e->effect_ms = bench__median(effect + s * frames, frames);
+        e->frame_ms = bench__median(ms + s * frames, frames);
+        memcpy(ratios, ms, frames * sizeof *ratios);
+        e->base_ms = bench__median(ratios, frames);
+        e->bytes_per_pixel = bench__bpp(r[s], im->pixels);
+        e->base_bytes_per_pixel = bench__bpp(r[0], im->pixels);
+        size_t n3 = im->pixels * 3;
+        tl_image_compare_u8(ref ? im->ref_ldr[s] : im->ldr[s], im->ref_ldr[s], n3, &e->ldr);
+        tl_image_compare_u8(ref ? im->ref_ldr[0] : im->ldr[0], im->ref_ldr[0], n3, &e->base_ldr);
+        if (e->effect == BENCH_EFFECT_SSAO) tl_image_compare(ref ? im->ref_ao : im->ao, im->ref_ao, im->pixels, 1.0, &e->ao);
+    }
+    return 0;
+}
+
+static int bench__effect_config(bench_run *run, tl_context *ctx, bench_scene *scene, bench_config c, const tl_light *lights,
+                                size_t count, const bench_effect *list, size_t slots, bench__effect_images *im,
+                                tl_tool_progress *progress, uint64_t *done)
+{
+    tl_renderer *r[BENCH_EFFECTS + 1] = {NULL};
+    size_t frames = run->opt.frames;
+    double *ms = malloc(2 * slots * frames * sizeof *ms), *effect = ms ? ms + slots * frames : NULL;
+    int err = !ms;
+    if (err) tl_tool_fail(BENCH_TOOL, "out of memory");
+    for (size_t s = 0; !err && s < slots; s++)
+        err = !(r[s] = bench__effect_renderer(run, ctx, bench_scene_get(scene), lights, count, c, (int)s, list));
+    if (!err) err = bench__effect_frames(run, r, slots, list, ms, effect, progress, done, bench_config_name(c));
+    if (!err) err = bench__effect_summarise(run, c, r, slots, list, ms, effect, im);
+    for (size_t s = 0; s < slots; s++) tl_renderer_destroy(r[s]);
+    free(ms);
+    return err;
+}
+
+static void bench__effect_images_free(bench__effect_images *im)
+{
+    for (int s = 0; s <= BENCH_EFFECTS; s++) {
+        free(im->ldr[s]);
+        free(im->ref_ldr[s]);
+    }
+    free(im->ao);
+    free(im->ref_ao);
+}
+
+int bench_effects_measure(bench_run *run, tl_context *ctx, bench_scene *scene, tl_tool_progress *progress, uint64_t *done)
+{
+    const bench_options *opt = &run->opt;
+    bench_effect list[BENCH_EFFECTS];
+    bench_config configs[BENCH_CONFIGS];
+    size_t ne = bench__effect_list(opt, list), nc = bench__effect_configs(opt, configs);
+    if (!ne || !nc) return 0;
+    const tl_light *lights;
+    size_t count;
+    if (bench_scene_lights(scene, opt->lights[0], &lights, &count)) return 1;
+    bench__effect_images im = {.pixels = (size_t)opt->sizes[0].width * opt->sizes[0].height};
+    int err = !(run->effects = calloc(nc * ne, sizeof *run->effects));
+    for (size_t s = 0; !err && s <= ne; s++)
+        err = !(im.ldr[s] = malloc(im.pixels * 4)) || !(im.ref_ldr[s] = malloc(im.pixels * 4));
+    if (!err) err = !(im.ao = malloc(im.pixels * 4 * sizeof(float))) || !(im.ref_ao = malloc(im.pixels * 4 * sizeof(float)));
+    if (err) tl_tool_fail(BENCH_TOOL, "out of memory for the effects' images");
+    for (size_t m = 0; !err && m < nc; m++) /* fat first: the reference images */
+        err = bench__effect_config(run, ctx, scene, configs[m], lights, count, list, ne + 1, &im, progress, done);
+    bench__effect_images_free(&im);
+    return err;
+}
