@@ -39,9 +39,10 @@ static void tl__print_targets(tl__out *o, uint32_t bits)
 static void tl__print_passes(tl__out *o, const tl_frame_plan *p)
 {
     tl__printf(o, "passes:\n");
+    int width = p->pass_count >= 10 ? 2 : 1; /* numbers right-aligned: the names stay in a column */
     for (size_t i = 0; i < p->pass_count; i++) {
         const tl_plan_pass *pp = &p->passes[i];
-        tl__printf(o, "  %zu %-13s reads ", i + 1, pp->name);
+        tl__printf(o, "  %*zu %-13s reads ", width, i + 1, pp->name);
         tl__print_targets(o, pp->reads);
         tl__printf(o, "; writes ");
         tl__print_targets(o, pp->writes);
