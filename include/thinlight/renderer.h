@@ -297,7 +297,7 @@ typedef enum tl_target_id {
                                    size over the pixels, rounded up) */
     TL_TARGET_AO_RAW,         /**< R16F SSAO estimate before the blur */
     TL_TARGET_AO,             /**< R16F ambient occlusion (1 = open) */
-    TL_TARGET_DOF,            /**< RGBA16F depth-of-field image */
+    TL_TARGET_DOF,            /**< RGBA16F depth-of-field image; alpha: circle of confusion radius in pixels */
     TL_TARGET_LIGHT_FRESNEL,  /**< thin-lpp with GGX, two-sums layout: S2, the Schlick part of specular */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
@@ -559,7 +559,9 @@ TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *
 /**
  * Reads a target as floats, 4 per pixel, rows bottom to top: DEPTH gives (window depth, linear
  * view distance, 0, 1); RT0 the decoded normal (view space) and gloss; RT1 its raw channels in
- * [0,1]; LIGHT_*, FAT_* and HDR their RGBA; LDR and OUTPUT their colour in [0,1]. *size is the
+ * [0,1]; LIGHT_*, FAT_* and HDR their RGBA; AO_RAW and AO the occlusion in R (1 = open); DOF the
+ * blurred colour and, in alpha, the circle of confusion's radius in pixels that the gather used
+ * (docs/effects.md); LDR and OUTPUT their colour in [0,1]. *size is the
  * buffer's size in bytes and receives the bytes written; a NULL `rgba` asks for the size needed.
  * TL_ERROR_INVALID_ARGUMENT for a target the plan did not allocate, or one whose memory a later
  * pass of the frame reused (list it in tl_renderer_desc.keep_targets to read it).
