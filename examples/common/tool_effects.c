@@ -16,7 +16,10 @@ const char tl_tool_effects_help[] =
     "                        --fog-color R,G,B (0,0,0), --fog-height Y (0), --fog-falloff K (0.5),\n"
     "                        --fog-noise 0..1 (0)\n"
     "  --dof                 depth of field; --dof-focus DIST (camera target), --dof-aperture A (0.01 of\n"
-    "                        the height), --dof-max M (2 A), --dof-samples N (48)\n";
+    "                        the height), --dof-max M (2 A), --dof-samples N (48)\n"
+    "  --ssr                 screen-space reflections (thin-lpp, thin-deferred, fat); --ssr-steps N (48),\n"
+    "                        --ssr-distance D (16), --ssr-thickness T (0.4), --ssr-min-gloss G (0.3),\n"
+    "                        --ssr-intensity I (1)\n";
 
 static int tl__bad(const char *tool, const char *opt, const char *value, const char *want)
 {
@@ -52,6 +55,7 @@ static int tl__flag(tl_renderer_desc *d, const char *opt)
     else if (!strcmp(opt, "--fog")) {
         if (d->fog.mode == TL_FOG_OFF) d->fog.mode = TL_FOG_DISTANCE;
     } else if (!strcmp(opt, "--dof")) d->dof.enabled = 1;
+    else if (!strcmp(opt, "--ssr")) d->ssr.enabled = 1;
     else return 0;
     return 1;
 }
@@ -103,11 +107,26 @@ static int tl__dof_value(const char *tool, tl_dof_desc *f, const char *opt, cons
     return ok ? 2 : tl__bad(tool, opt, v, "out of range (see --help)");
 }
 
+static int tl__ssr_value(const char *tool, tl_ssr_desc *f, const char *opt, const char *v)
+{
+    int ok = 1;
+    if (!strcmp(opt, "--ssr-steps")) ok = tl__u32(v, &f->steps) && f->steps >= 4 && f->steps <= 256;
+    else if (!strcmp(opt, "--ssr-distance")) ok = tl__float(v, &f->max_distance) && f->max_distance > 0.0f;
+    else if (!strcmp(opt, "--ssr-thickness")) ok = tl__float(v, &f->thickness) && f->thickness > 0.0f;
+    else if (!strcmp(opt, "--ssr-min-gloss")) {
+        ok = tl__float(v, &f->min_gloss) && f->min_gloss >= 0.0f && f->min_gloss < 1.0f;
+        if (ok && f->min_gloss == 0.0f) f->min_gloss = -1.0f; /* exactly 0 (zero is the default, 0.3) */
+    } else if (!strcmp(opt, "--ssr-intensity")) ok = tl__float(v, &f->intensity) && f->intensity > 0.0f;
+    else return 0;
+    return ok ? 2 : tl__bad(tool, opt, v, "out of range (see --help)");
+}
+
 int tl_tool_effect_option(const char *tool, tl_renderer_desc *d, const char *opt, const char *value)
 {
     if (tl__flag(d, opt)) return 1;
     int rc = tl__ssao_value(tool, &d->ssao, opt, value);
     if (!rc) rc = tl__fog_value(tool, &d->fog, opt, value);
     if (!rc) rc = tl__dof_value(tool, &d->dof, opt, value);
+    if (!rc) rc = tl__ssr_value(tool, &d->ssr, opt, value);
     return rc;
 }

@@ -1,5 +1,5 @@
 /* The screen-space effects' per-frame parameters (docs/effects.md): the resolved options of SSAO,
- * fog and depth of field, with the camera's time and focus, into the frame's uniform block. */
+ * fog, depth of field and reflections, with the camera's time and focus, into the frame's uniform block. */
 #include <string.h>
 
 #include "renderer_internal.h"
@@ -23,4 +23,10 @@ void tl__frame_ubo_effects(const tl_renderer_desc *d, const tl__view *v, tl__fra
     u->effects[2] = d->dof.focus_distance > 0.0f ? d->dof.focus_distance : v->target_distance;
     u->effects[3] = d->dof.aperture;
     u->dof[0] = d->dof.max_radius;
+    u->ssr[0] = d->ssr.max_distance;
+    u->ssr[1] = d->ssr.thickness;
+    u->ssr[2] = d->ssr.min_gloss;
+    u->ssr[3] = d->ssr.edge_fade;
+    u->ssr2[0] = d->ssr.intensity;
+    u->ssr2[1] = v->near_z;
 }
