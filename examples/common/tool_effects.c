@@ -18,7 +18,7 @@ const char tl_tool_effects_help[] =
     "  --dof                 depth of field; --dof-focus DIST (camera target), --dof-aperture A (0.01 of\n"
     "                        the height), --dof-max M (2 A), --dof-samples N (48)\n"
     "  --ssr                 screen-space reflections (thin-lpp, thin-deferred, fat); --ssr-steps N (48),\n"
-    "                        --ssr-distance D (16), --ssr-thickness T (0.4), --ssr-min-gloss G (0.3),\n"
+    "                        --ssr-distance D (16), --ssr-thickness T (0.4), --ssr-min-gloss G (0.4),\n"
     "                        --ssr-intensity I (1)\n";
 
 static int tl__bad(const char *tool, const char *opt, const char *value, const char *want)
@@ -115,7 +115,7 @@ static int tl__ssr_value(const char *tool, tl_ssr_desc *f, const char *opt, cons
     else if (!strcmp(opt, "--ssr-thickness")) ok = tl__float(v, &f->thickness) && f->thickness > 0.0f;
     else if (!strcmp(opt, "--ssr-min-gloss")) {
         ok = tl__float(v, &f->min_gloss) && f->min_gloss >= 0.0f && f->min_gloss < 1.0f;
-        if (ok && f->min_gloss == 0.0f) f->min_gloss = -1.0f; /* exactly 0 (zero is the default, 0.3) */
+        if (ok && f->min_gloss == 0.0f) f->min_gloss = -1.0f; /* exactly 0 (zero is the default, 0.4) */
     } else if (!strcmp(opt, "--ssr-intensity")) ok = tl__float(v, &f->intensity) && f->intensity > 0.0f;
     else return 0;
     return ok ? 2 : tl__bad(tool, opt, v, "out of range (see --help)");

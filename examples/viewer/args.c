@@ -20,7 +20,7 @@ static const char vw_usage[] =
     "  --lights N            crypt: point lights (default 64); glTF: seeded point lights added\n"
     "  --view V              final (default), normals, gloss, luma, chroma, albedo, depth, position,\n"
     "                        light-diffuse, light-specular, tile-lights, hdr, before-fxaa, diff-fat,\n"
-    "                        ao-raw, ao (with --ssao), dof-coc (with --dof)\n"
+    "                        ao-raw, ao (with --ssao), dof-coc (with --dof), ssr (with --ssr)\n"
     "  --grid                every view as thumbnails\n"
     "  --split MODE          left half in --mode, right half in MODE\n"
     "  --animate             move the lights\n"

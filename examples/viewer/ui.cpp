@@ -94,7 +94,8 @@ static void vw_ui_settings(vw_app *app)
 // One row per effect: its name, the tool flag that turns it on with its defaults (tool_effects.h,
 // the flags thinlight-render takes) and its options in tl_renderer_desc, whose first field (method,
 // mode or enabled) is zero when the effect is off. A new effect is one more row; bloom (branch
-// effects2, tl_bloom_desc bloom): {"bloom", "--bloom", VW_FX(bloom)}.
+// effects2, tl_bloom_desc bloom, flag --bloom in tool_effects.c): {"bloom", "--bloom", VW_FX(bloom)}
+// after the last row (vw_app.fx_saved has its slot; its parameters, if any, are rows of vw_params).
 struct vw_effect {
     const char *name, *flag;
     size_t offset, size;
@@ -104,6 +105,7 @@ static const vw_effect vw_effects[] = {
     {"SSAO", "--ssao", VW_FX(ssao)},
     {"fog", "--fog", VW_FX(fog)},
     {"depth of field", "--dof", VW_FX(dof)},
+    {"reflections", "--ssr", VW_FX(ssr)},
 };
 static const int vw_effect_count = static_cast<int>(sizeof vw_effects / sizeof vw_effects[0]);
 
@@ -140,6 +142,11 @@ static const vw_param vw_params[] = {
     {"depth of field", "aperture", VW_F32_LOG, VW_AT(dof.aperture), 0.001f, 0.1f, 0.01f, nullptr},
     {"depth of field", "largest CoC", VW_F32, VW_AT(dof.max_radius), 0, 0.2f, -1, nullptr},
     {"depth of field", "taps", VW_U32, VW_AT(dof.samples), 8, 128, 48, nullptr},
+    {"reflections", "steps", VW_U32, VW_AT(ssr.steps), 4, 256, 48, nullptr},
+    {"reflections", "distance", VW_F32_LOG, VW_AT(ssr.max_distance), 0.5f, 100, 16, nullptr},
+    {"reflections", "thickness", VW_F32_LOG, VW_AT(ssr.thickness), 0.01f, 5, 0.4f, nullptr},
+    {"reflections", "least gloss", VW_F32, VW_AT(ssr.min_gloss), 0, 0.99f, 0.4f, nullptr},
+    {"reflections", "intensity", VW_F32_LOG, VW_AT(ssr.intensity), 0.1f, 10, 1, nullptr},
 };
 
 // One parameter's widget; true when an edit is finished (the renderer is then made again).

@@ -32,6 +32,7 @@ typedef enum vw_view {
     VW_VIEW_AO_RAW,         /* SSAO's estimate before the blur (ao.raw) */
     VW_VIEW_AO,             /* SSAO after the depth-aware blur (ao), what the frame applies */
     VW_VIEW_DOF_COC,        /* depth of field: circle of confusion radius (dof target alpha), heat scale */
+    VW_VIEW_SSR,            /* screen-space reflections: the term added to HDR (ssr target) */
     VW_VIEW_COUNT
 } vw_view;
 
@@ -95,7 +96,7 @@ typedef struct vw_app {
     size_t plan_text_size;
     float depth_range[2];            /* the depth view's scale: nearest and farthest covered pixel */
     uint32_t tile_max;               /* the tile view's scale: most lights in one tile */
-    unsigned char fx_saved[4][64];   /* an effect's settings while the panel has it off (ui.cpp) */
+    unsigned char fx_saved[5][64];   /* an effect's settings while the panel has it off (ui.cpp) */
     char status[160];                /* a line for the panel (the last screenshot, an error) */
     char view_note[96];              /* why a view is empty in this mode */
     uint8_t *image;                  /* the view, RGBA8 bottom-up, width x height */

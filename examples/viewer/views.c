@@ -412,6 +412,18 @@ static int vw_view_dof_coc(vw_app *app, tl_renderer *r, const tl_camera *cam, ui
     return 0;
 }
 
+/* The reflection term SSR adds to HDR, times exposure, x / (1 + x). */
+static int vw_view_ssr(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    if (!app->desc.ssr.enabled) return vw_unavailable(app, "reflections are off (--ssr, or the Effects panel)");
+    const float *t = vw_read(app, r, TL_TARGET_SSR, 0);
+    if (!t) return vw_unavailable(app, "no ssr target (forward mode plans no reflections)");
+    float e = app->desc.exposure > 0 ? app->desc.exposure : 1.0f;
+    for (size_t i = 0, n = vw_pixels(app); i < n; i++) vw_put_hdr(out + 4 * i, e, t[4 * i], t[4 * i + 1], t[4 * i + 2], 1);
+    return 0;
+}
+
 /* ---- legends -------------------------------------------------------------------------------- */
 
 static void vw_grey(float t, uint8_t rgb[3]) { rgb[0] = rgb[1] = rgb[2] = vw_u8(t); }
@@ -499,6 +511,7 @@ static const vw_view_def vw_view_table[VW_VIEW_COUNT] = {
     [VW_VIEW_AO] = {"ao", "SSAO after the depth-aware blur (ao), as applied", vw_view_ao, vw_legend_ao},
     [VW_VIEW_DOF_COC] = {"dof-coc", "depth of field: circle of confusion radius in pixels, heat scale",
                          vw_view_dof_coc, vw_legend_coc},
+    [VW_VIEW_SSR] = {"ssr", "screen-space reflections: the term added to HDR, x/(1+x)", vw_view_ssr, NULL},
 };
 
 const char *vw_view_name(vw_view v) { return v < VW_VIEW_COUNT ? vw_view_table[v].name : "unknown"; }

@@ -204,7 +204,7 @@ typedef struct tl_ssr_desc {
     float thickness;    /**< how far behind the depth buffer's surface a ray still hits it (view units);
                              default 0.4 */
     float min_gloss;    /**< gloss below which a pixel reflects nothing (weight rises linearly to 1 at
-                             gloss 1), below 1; default 0.3, a negative value means 0 */
+                             gloss 1), below 1; default 0.4, a negative value means 0 */
     float edge_fade;    /**< fraction of the screen over which hits fade out at its edges, 0..0.5;
                              default 0.1 */
     float intensity;    /**< scale of the added reflection; default 1 */

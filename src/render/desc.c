@@ -69,7 +69,7 @@ static int tl__ssr_resolve(tl_ssr_desc *s)
     if (!s->refine) s->refine = 4;
     if (!(s->max_distance > 0.0f)) s->max_distance = 16.0f;
     if (!(s->thickness > 0.0f)) s->thickness = 0.4f;
-    if (!(s->min_gloss > 0.0f)) s->min_gloss = s->min_gloss == 0.0f ? 0.3f : 0.0f;
+    if (!(s->min_gloss > 0.0f)) s->min_gloss = s->min_gloss == 0.0f ? 0.4f : 0.0f;
     if (!(s->edge_fade > 0.0f)) s->edge_fade = 0.1f;
     if (!(s->intensity > 0.0f)) s->intensity = 1.0f;
     return s->steps >= 4 && s->steps <= 256 && s->refine <= 8 && s->min_gloss < 1.0f && s->edge_fade <= 0.5f &&

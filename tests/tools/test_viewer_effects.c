@@ -12,16 +12,16 @@ enum { W = 320, H = 180, BIG_W = 640, BIG_H = 360 };
 
 static const char *const modes[4] = {"thin-lpp", "thin-deferred", "fat", "forward"};
 /* The effects' views: their place in the grid (after the 14 views without effects). */
-enum { V_AO_RAW = 14, V_AO = 15, V_DOF_COC = 16, V_DEPTH = 6, V_FINAL = 0 };
+enum { V_AO_RAW = 14, V_AO = 15, V_DOF_COC = 16, V_SSR = 17, V_DEPTH = 6, V_FINAL = 0, NV = 18 };
 
 /* Final view = thinlight-render with the same effect flags, bit for bit; and not the image
  * without the effect. */
 TL_TEST(viewer_final_view_with_each_effect_equals_thinlight_render)
 {
-    static const char *const effects[4] = {"", "--ssao", "--fog --fog-color 0.3,0.3,0.35 --fog-density 0.08",
-                                           "--dof --dof-aperture 0.02"};
+    static const char *const effects[5] = {"", "--ssao", "--fog --fog-color 0.3,0.3,0.35 --fog-density 0.08",
+                                           "--dof --dof-aperture 0.02", "--ssr"};
     image plain = {0, 0, NULL};
-    for (int e = 0; e < 4; e++) {
+    for (int e = 0; e < 5; e++) {
         char args[256], png[64], ref[64], cmd[2048];
         snprintf(args, sizeof args, "--size %ux%u --mode thin-lpp %s", W, H, effects[e]);
         snprintf(png, sizeof png, "fx_final_%d.png", e);
@@ -43,32 +43,35 @@ TL_TEST(viewer_final_view_with_each_effect_equals_thinlight_render)
     release(&plain);
 }
 
-/* In every mode with all three effects on: the effects' thumbnails show an image (not the
- * placeholder, not one colour); ao-raw differs from ao (the blur), ao from the final view, the CoC
- * from the depth view. */
+/* In every mode with every effect on: the effects' thumbnails show an image (not the placeholder,
+ * not one colour; forward plans no reflections: their placeholder); ao-raw differs from ao (the
+ * blur), ao from the final view, the CoC from the depth view, the reflections from the final view. */
 TL_TEST(viewer_effect_views_each_mode)
 {
     for (int m = 0; m < 4; m++) {
         char args[256], png[64];
-        snprintf(args, sizeof args, "--size %ux%u --mode %s --grid --ssao --fog --dof", BIG_W, BIG_H, modes[m]);
+        snprintf(args, sizeof args, "--size %ux%u --mode %s --grid --ssao --fog --dof --ssr", BIG_W, BIG_H, modes[m]);
         snprintf(png, sizeof png, "fx_grid_%s.png", modes[m]);
         TL_CHECK(viewer(args, png) == 0);
         image g = load(png);
         TL_CHECK(g.px && g.w == BIG_W);
         if (!g.px) continue;
-        image c[17];
-        for (int v = 0; v < 17; v++) c[v] = cell(&g, v);
-        for (int v = V_AO_RAW; v <= V_DOF_COC; v++) {
+        image c[NV];
+        for (int v = 0; v < NV; v++) c[v] = cell(&g, v);
+        for (int v = V_AO_RAW; v <= V_SSR; v++) {
             printf("%s view %d: %zu colours%s\n", modes[m], v, colours(&c[v]), is_placeholder(&c[v]) ? " (placeholder)" : "");
-            TL_CHECK(!is_placeholder(&c[v]) && colours(&c[v]) > 4);
+            if (v == V_SSR && m == 3) TL_CHECK(is_placeholder(&c[v]));
+            else TL_CHECK(!is_placeholder(&c[v]) && colours(&c[v]) > 4);
         }
-        static const int differ[][2] = {{V_AO_RAW, V_AO}, {V_AO, V_FINAL}, {V_DOF_COC, V_DEPTH}, {V_DOF_COC, V_FINAL}};
+        static const int differ[][2] = {{V_AO_RAW, V_AO}, {V_AO, V_FINAL}, {V_DOF_COC, V_DEPTH}, {V_DOF_COC, V_FINAL},
+                                        {V_SSR, V_FINAL}};
         for (size_t k = 0; k < sizeof differ / sizeof differ[0]; k++) {
+            if (differ[k][0] == V_SSR && m == 3) continue;
             tl_image_error e = compare(&c[differ[k][0]], &c[differ[k][1]]);
             printf("%s: view %d vs %d mean %.2f levels\n", modes[m], differ[k][0], differ[k][1], e.mean_abs);
             TL_CHECK(e.mean_abs > 0.5);
         }
-        for (int v = 0; v < 17; v++) free(c[v].px);
+        for (int v = 0; v < NV; v++) free(c[v].px);
         release(&g);
     }
 }
@@ -174,7 +177,8 @@ TL_TEST(viewer_effect_flags_bad_values_exit_2_one_line)
         "--ssao-falloff 0",   "--ssao-exponent x", "--ssao-blur 9",        "--ssao-method ring", "--fog-mode up",
         "--fog-density -1",   "--fog-color 1,2",   "--fog-color 1,2,-3",   "--fog-falloff 0",  "--fog-noise 2",
         "--fog-height inf",   "--dof-focus 0",     "--dof-aperture 2",     "--dof-max 0",      "--dof-samples 7",
-        "--dof-samples 129",  "--ssao-radius",
+        "--dof-samples 129",  "--ssao-radius",     "--ssr-steps 3",        "--ssr-steps 257",  "--ssr-distance 0",
+        "--ssr-thickness -1", "--ssr-min-gloss 1", "--ssr-intensity nan",
     };
     char err[1024], shot[1024], cmd[4096], line[512];
     snprintf(err, sizeof err, "%s/fx_bad.txt", TL_WORK);
