@@ -39,5 +39,6 @@ void main()
             wsum += w;
         }
     }
-    o_dof = wsum > 0.0 ? vec4((c0.rgb * w0 + sum) / (w0 + wsum), c0.a) : c0;
+    // alpha: the circle of confusion's radius in pixels (tl_renderer_read_target(TL_TARGET_DOF))
+    o_dof = vec4(wsum > 0.0 ? (c0.rgb * w0 + sum) / (w0 + wsum) : c0.rgb, coc0);
 }

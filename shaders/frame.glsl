@@ -25,6 +25,8 @@ layout(std140, binding = TL_UBO_FRAME) uniform tl_frame_block {
     vec4 u_effects;       // noise speed, camera time, focus distance, aperture
     vec4 u_dof_params;    // largest CoC (fraction of the height), 0, 0, 0
     vec4 u_bloom;         // threshold, knee (absolute), intensity, scatter
+    vec4 u_ssr_march;           // max distance, thickness, min gloss, edge fade
+    vec4 u_ssr_weight;         // intensity, near plane distance, 0, 0
 };
 
 #endif

@@ -18,7 +18,10 @@ const char tl_tool_effects_help[] =
     "  --dof                 depth of field; --dof-focus DIST (camera target), --dof-aperture A (0.01 of\n"
     "                        the height), --dof-max M (2 A), --dof-samples N (48)\n"
     "  --bloom               bloom; --bloom-threshold T (1; 0: everything), --bloom-knee K (0.5 of T),\n"
-    "                        --bloom-intensity I (0.5), --bloom-scatter S (0.7), --bloom-levels N (6, 1..8)\n";
+    "                        --bloom-intensity I (0.5), --bloom-scatter S (0.7), --bloom-levels N (6, 1..8)\n"
+    "  --ssr                 screen-space reflections (thin-lpp, thin-deferred, fat); --ssr-steps N (48),\n"
+    "                        --ssr-distance D (16), --ssr-thickness T (0.4), --ssr-min-gloss G (0.4),\n"
+    "                        --ssr-intensity I (1)\n";
 
 static int tl__bad(const char *tool, const char *opt, const char *value, const char *want)
 {
@@ -55,6 +58,7 @@ static int tl__flag(tl_renderer_desc *d, const char *opt)
         if (d->fog.mode == TL_FOG_OFF) d->fog.mode = TL_FOG_DISTANCE;
     } else if (!strcmp(opt, "--dof")) d->dof.enabled = 1;
     else if (!strcmp(opt, "--bloom")) d->bloom.enabled = 1;
+    else if (!strcmp(opt, "--ssr")) d->ssr.enabled = 1;
     else return 0;
     return 1;
 }
@@ -123,6 +127,20 @@ static int tl__bloom_value(const char *tool, tl_bloom_desc *b, const char *opt, 
     return ok ? 2 : tl__bad(tool, opt, v, "out of range (see --help)");
 }
 
+static int tl__ssr_value(const char *tool, tl_ssr_desc *f, const char *opt, const char *v)
+{
+    int ok = 1;
+    if (!strcmp(opt, "--ssr-steps")) ok = tl__u32(v, &f->steps) && f->steps >= 4 && f->steps <= 256;
+    else if (!strcmp(opt, "--ssr-distance")) ok = tl__float(v, &f->max_distance) && f->max_distance > 0.0f;
+    else if (!strcmp(opt, "--ssr-thickness")) ok = tl__float(v, &f->thickness) && f->thickness > 0.0f;
+    else if (!strcmp(opt, "--ssr-min-gloss")) {
+        ok = tl__float(v, &f->min_gloss) && f->min_gloss >= 0.0f && f->min_gloss < 1.0f;
+        if (ok && f->min_gloss == 0.0f) f->min_gloss = -1.0f; /* exactly 0 (zero is the default, 0.4) */
+    } else if (!strcmp(opt, "--ssr-intensity")) ok = tl__float(v, &f->intensity) && f->intensity > 0.0f;
+    else return 0;
+    return ok ? 2 : tl__bad(tool, opt, v, "out of range (see --help)");
+}
+
 int tl_tool_effect_option(const char *tool, tl_renderer_desc *d, const char *opt, const char *value)
 {
     if (tl__flag(d, opt)) return 1;
@@ -130,5 +148,6 @@ int tl_tool_effect_option(const char *tool, tl_renderer_desc *d, const char *opt
     if (!rc) rc = tl__fog_value(tool, &d->fog, opt, value);
     if (!rc) rc = tl__dof_value(tool, &d->dof, opt, value);
     if (!rc) rc = tl__bloom_value(tool, &d->bloom, opt, value);
+    if (!rc) rc = tl__ssr_value(tool, &d->ssr, opt, value);
     return rc;
 }

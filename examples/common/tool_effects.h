@@ -1,4 +1,4 @@
-/* The screen-space effect options the tools share (docs/effects.md): --ssao, --fog, --dof, --bloom and their
+/* The screen-space effect options the tools share (docs/effects.md): --ssao, --fog, --dof, --bloom, --ssr and their
  * parameters, into a tl_renderer_desc. Not part of the library. */
 #ifndef TL_TOOL_EFFECTS_H
 #define TL_TOOL_EFFECTS_H

@@ -4,6 +4,7 @@
 #include <string.h>
 
 #include "args.h"
+#include "tool_effects.h"
 
 static const char vw_usage[] =
     "usage: thinlight-viewer [SCENE.gltf|SCENE.glb|crypt] [options]\n"
@@ -18,7 +19,8 @@ static const char vw_usage[] =
     "  --exposure E          exposure before tone mapping (default 1)\n"
     "  --lights N            crypt: point lights (default 64); glTF: seeded point lights added\n"
     "  --view V              final (default), normals, gloss, luma, chroma, albedo, depth, position,\n"
-    "                        light-diffuse, light-specular, tile-lights, hdr, before-fxaa, diff-fat\n"
+    "                        light-diffuse, light-specular, tile-lights, hdr, before-fxaa, diff-fat,\n"
+    "                        ao-raw, ao (with --ssao), dof-coc (with --dof), ssr (with --ssr)\n"
     "  --grid                every view as thumbnails\n"
     "  --split MODE          left half in --mode, right half in MODE\n"
     "  --animate             move the lights\n"
@@ -29,6 +31,9 @@ static const char vw_usage[] =
     "  --resize WxH          resize the window after the first frames (tests)\n"
     "  --print-targets       print the targets' size and bytes whenever they are (re)allocated\n"
     "  --help                this text\n"
+    "Screen-space effects (as thinlight-render; the panel's Effects section changes them live):\n";
+
+static const char vw_keys[] =
     "Keys (when the panel does not have the keyboard):\n"
     "  left drag             orbit (orbit camera) or look around (fly camera)\n"
     "  right drag            look around\n"
@@ -50,7 +55,12 @@ static const char vw_usage[] =
     "  P or F12              screenshot (viewer-N.png in the current directory)\n"
     "  Escape                quit\n";
 
-void vw_print_usage(FILE *f) { fputs(vw_usage, f); }
+void vw_print_usage(FILE *f)
+{
+    fputs(vw_usage, f);
+    fputs(tl_tool_effects_help, f);
+    fputs(vw_keys, f);
+}
 
 static int vw_bad(const char *what, const char *value)
 {
@@ -132,6 +142,7 @@ static int vw_parse_valued(vw_args *a, const char *opt, const char *v)
 int vw_parse_args(int argc, char **argv, vw_args *a)
 {
     memset(a, 0, sizeof *a);
+    int fx;
     a->width = 1280;
     a->height = 720;
     for (int i = 1; i < argc; i++) {
@@ -141,7 +152,11 @@ int vw_parse_args(int argc, char **argv, vw_args *a)
         else if (!strcmp(o, "--animate")) a->animate = 1;
         else if (!strcmp(o, "--no-panel")) a->no_panel = 1;
         else if (!strcmp(o, "--print-targets")) a->print_targets = 1;
-        else if (o[0] == '-' && o[1] == '-') {
+        else if (o[0] == '-' && o[1] == '-' && (fx = tl_tool_effect_option("thinlight-viewer", &a->desc, o,
+                                                                            i + 1 < argc ? argv[i + 1] : NULL)) != 0) {
+            if (fx < 0) return 2; /* the line is printed */
+            i += fx - 1;          /* 2: it took the value */
+        } else if (o[0] == '-' && o[1] == '-') {
             if (i + 1 >= argc) return vw_bad("missing value for", o);
             int s = vw_parse_valued(a, o, argv[++i]);
             if (s >= 0) return s;

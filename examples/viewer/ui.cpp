@@ -2,8 +2,10 @@
 // Edits vw_app's settings (a change sets app->rebuild, or goes through vw_update_view) and shows
 // the smoothed per-pass times, the bytes per pixel and the frame plan. The view image is drawn
 // behind the panel with the background draw list.
+#include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
+#include <string.h>
 
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
@@ -12,6 +14,7 @@
 #include "viewer.h"
 extern "C" {
 #include "session.h"
+#include "tool_effects.h"
 }
 
 static bool vw_ui_started;
@@ -87,6 +90,151 @@ static void vw_ui_settings(vw_app *app)
     if (c) app->rebuild = 1;
 }
 
+// ---- screen-space effects ------------------------------------------------------------------------
+// One row per effect: its name, the tool flag that turns it on with its defaults (tool_effects.h,
+// the flags thinlight-render takes) and its options in tl_renderer_desc, whose first field (method,
+// mode or enabled) is zero when the effect is off. A new effect is one more row (and a slot in
+// vw_app.fx_saved); its parameters are rows of vw_params.
+struct vw_effect {
+    const char *name, *flag;
+    size_t offset, size;
+};
+#define VW_FX(field) offsetof(tl_renderer_desc, field), sizeof(tl_renderer_desc::field)
+static const vw_effect vw_effects[] = {
+    {"SSAO", "--ssao", VW_FX(ssao)},
+    {"fog", "--fog", VW_FX(fog)},
+    {"depth of field", "--dof", VW_FX(dof)},
+    {"reflections", "--ssr", VW_FX(ssr)},
+    {"bloom", "--bloom", VW_FX(bloom)},
+};
+static const int vw_effect_count = static_cast<int>(sizeof vw_effects / sizeof vw_effects[0]);
+
+// The main parameters, shown under their effect while it is on. A zero field means the
+// library's default, shown as `def` until it is edited, or as "default" where that depends on
+// other settings (def -1: k_d = 2 radius, focus on the camera's target, largest CoC 2 apertures).
+enum vw_param_kind { VW_F32, VW_F32_LOG, VW_U32, VW_ENUM, VW_RGB, VW_BOOL };
+struct vw_param {
+    const char *effect, *label;
+    vw_param_kind kind;
+    size_t offset;
+    float lo, hi, def;
+    const char *const *names; // VW_ENUM: values 1, 2, ... (0 is off)
+};
+#define VW_AT(field) offsetof(tl_renderer_desc, field)
+static const char *const vw_ssao_methods[] = {"disc (slides)", "hemisphere", nullptr};
+static const char *const vw_fog_modes[] = {"distance", "height", nullptr};
+static const vw_param vw_params[] = {
+    {"SSAO", "estimator", VW_ENUM, VW_AT(ssao.method), 0, 0, 1, vw_ssao_methods},
+    {"SSAO", "samples", VW_U32, VW_AT(ssao.samples), 1, 64, 16, nullptr},
+    {"SSAO", "radius", VW_F32_LOG, VW_AT(ssao.radius), 0.05f, 10, 1, nullptr},
+    {"SSAO", "bias k_b", VW_F32, VW_AT(ssao.bias), 0, 2, 0, nullptr},
+    {"SSAO", "falloff k_d", VW_F32, VW_AT(ssao.falloff), 0, 20, -1, nullptr},
+    {"SSAO", "exponent x", VW_F32, VW_AT(ssao.exponent), 0.25f, 8, 3, nullptr},
+    {"SSAO", "blur half-width", VW_U32, VW_AT(ssao.blur_radius), 1, 8, 2, nullptr},
+    {"SSAO", "on diffuse light too", VW_BOOL, VW_AT(ssao.diffuse), 0, 1, 0, nullptr},
+    {"fog", "kind", VW_ENUM, VW_AT(fog.mode), 0, 0, 1, vw_fog_modes},
+    {"fog", "density", VW_F32_LOG, VW_AT(fog.density), 0.001f, 1, 0.05f, nullptr},
+    {"fog", "colour", VW_RGB, VW_AT(fog.color), 0, 0, 0, nullptr},
+    {"fog", "height", VW_F32, VW_AT(fog.height), -20, 20, 0, nullptr},
+    {"fog", "height falloff", VW_F32_LOG, VW_AT(fog.height_falloff), 0.01f, 5, 0.5f, nullptr},
+    {"fog", "noise", VW_F32, VW_AT(fog.noise), 0, 1, 0, nullptr},
+    {"depth of field", "focus distance", VW_F32, VW_AT(dof.focus_distance), 0, 100, -1, nullptr},
+    {"depth of field", "aperture", VW_F32_LOG, VW_AT(dof.aperture), 0.001f, 0.1f, 0.01f, nullptr},
+    {"depth of field", "largest CoC", VW_F32, VW_AT(dof.max_radius), 0, 0.2f, -1, nullptr},
+    {"depth of field", "taps", VW_U32, VW_AT(dof.samples), 8, 128, 48, nullptr},
+    {"reflections", "steps", VW_U32, VW_AT(ssr.steps), 4, 256, 48, nullptr},
+    {"reflections", "distance", VW_F32_LOG, VW_AT(ssr.max_distance), 0.5f, 100, 16, nullptr},
+    {"reflections", "thickness", VW_F32_LOG, VW_AT(ssr.thickness), 0.01f, 5, 0.4f, nullptr},
+    {"reflections", "least gloss", VW_F32, VW_AT(ssr.min_gloss), 0, 0.99f, 0.4f, nullptr},
+    {"reflections", "intensity", VW_F32_LOG, VW_AT(ssr.intensity), 0.1f, 10, 1, nullptr},
+    {"bloom", "threshold", VW_F32_LOG, VW_AT(bloom.threshold), 0.05f, 20, 1, nullptr},
+    {"bloom", "intensity", VW_F32_LOG, VW_AT(bloom.intensity), 0.02f, 4, 0.5f, nullptr},
+    {"bloom", "scatter", VW_F32, VW_AT(bloom.scatter), 0.05f, 1, 0.7f, nullptr},
+    {"bloom", "levels", VW_U32, VW_AT(bloom.levels), 1, 8, 6, nullptr},
+};
+
+// One parameter's widget; true when an edit is finished (the renderer is then made again).
+static bool vw_ui_param(tl_renderer_desc *d, const vw_param &p)
+{
+    unsigned char *at = reinterpret_cast<unsigned char *>(d) + p.offset;
+    float f;
+    int i;
+    memcpy(&f, at, sizeof f);
+    memcpy(&i, at, sizeof i);
+    bool edited = false;
+    if (p.kind == VW_F32 || p.kind == VW_F32_LOG) {
+        float v = f != 0 ? f : p.def > 0 ? p.def : 0.0f;
+        ImGuiSliderFlags flags = p.kind == VW_F32_LOG ? ImGuiSliderFlags_Logarithmic : 0;
+        if (ImGui::SliderFloat(p.label, &v, p.lo, p.hi, f == 0 && p.def < 0 ? "default" : "%.3f", flags))
+            memcpy(at, &v, sizeof v);
+        edited = ImGui::IsItemDeactivatedAfterEdit();
+    } else if (p.kind == VW_U32) {
+        int v = i != 0 ? i : static_cast<int>(p.def);
+        if (ImGui::SliderInt(p.label, &v, static_cast<int>(p.lo), static_cast<int>(p.hi))) memcpy(at, &v, sizeof v);
+        edited = ImGui::IsItemDeactivatedAfterEdit();
+    } else if (p.kind == VW_ENUM) {
+        int count = 0;
+        while (p.names[count]) count++;
+        edited = vw_combo(p.label, &i, p.names, 1, count);
+        if (edited) memcpy(at, &i, sizeof i);
+    } else if (p.kind == VW_RGB) {
+        float rgb[3];
+        memcpy(rgb, at, sizeof rgb);
+        if (ImGui::ColorEdit3(p.label, rgb, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR)) memcpy(at, rgb, sizeof rgb);
+        edited = ImGui::IsItemDeactivatedAfterEdit();
+    } else {
+        bool b = i != 0;
+        edited = ImGui::Checkbox(p.label, &b);
+        i = b ? 1 : 0;
+        memcpy(at, &i, sizeof i);
+    }
+    return edited;
+}
+
+// A checkbox per effect (its first field says whether it is on); turning one off keeps its
+// settings for when it comes back, turning it on the first time takes the tool flag's defaults.
+static bool vw_ui_effect_toggle(vw_app *app, int e)
+{
+    const vw_effect &fx = vw_effects[e];
+    unsigned char *at = reinterpret_cast<unsigned char *>(&app->desc) + fx.offset, *saved = app->fx_saved[e];
+    int first;
+    memcpy(&first, at, sizeof first);
+    bool on = first != 0;
+    if (!ImGui::Checkbox(fx.name, &on)) return false;
+    if (!on) {
+        memcpy(saved, at, fx.size);
+        memset(at, 0, fx.size);
+    } else {
+        int was;
+        memcpy(&was, saved, sizeof was);
+        if (was) memcpy(at, saved, fx.size);
+        else tl_tool_effect_option("thinlight-viewer", &app->desc, fx.flag, nullptr);
+    }
+    return true;
+}
+
+static void vw_ui_effects(vw_app *app)
+{
+    bool c = false;
+    static_assert(sizeof vw_effects / sizeof vw_effects[0] <= sizeof(vw_app::fx_saved) / sizeof(vw_app::fx_saved[0]),
+                  "vw_app.fx_saved: one slot per effect");
+    for (int e = 0; e < vw_effect_count; e++) {
+        if (vw_effects[e].size > sizeof app->fx_saved[0]) continue; // cannot happen with the rows above
+        ImGui::PushID(e);
+        c |= vw_ui_effect_toggle(app, e);
+        int first;
+        memcpy(&first, reinterpret_cast<unsigned char *>(&app->desc) + vw_effects[e].offset, sizeof first);
+        for (const vw_param &p : vw_params)
+            if (first && !strcmp(p.effect, vw_effects[e].name)) {
+                ImGui::Indent();
+                c |= vw_ui_param(&app->desc, p);
+                ImGui::Unindent();
+            }
+        ImGui::PopID();
+    }
+    if (c) app->rebuild = 1;
+}
+
 static void vw_ui_views(vw_app *app)
 {
     static const char *modes[] = {"thin-lpp", "thin-deferred", "fat", "forward"};
@@ -140,6 +288,7 @@ static void vw_ui_panel(vw_app *app)
                 ImGui::GetIO().Framerate);
     ImGui::TextDisabled("camera: %s (F toggles, C resets)", app->cam.mode == VW_CAMERA_FLY ? "fly" : "orbit");
     if (ImGui::CollapsingHeader("Renderer", ImGuiTreeNodeFlags_DefaultOpen)) vw_ui_settings(app);
+    if (ImGui::CollapsingHeader("Effects", ImGuiTreeNodeFlags_DefaultOpen)) vw_ui_effects(app);
     if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) vw_ui_views(app);
     if (ImGui::CollapsingHeader("Passes and bytes", ImGuiTreeNodeFlags_DefaultOpen)) vw_ui_timings(app);
     if (ImGui::CollapsingHeader("Frame plan") && app->plan_text) {
@@ -151,41 +300,18 @@ static void vw_ui_panel(vw_app *app)
     ImGui::End();
 }
 
-// A heat-scale bar with its range, bottom left.
-static void vw_ui_legend(ImDrawList *dl, ImVec2 size, const char *lo, const char *hi)
-{
-    ImVec2 o(16, size.y - 40);
-    const int steps = 64;
-    for (int i = 0; i < steps; i++) {
-        uint8_t c[3];
-        vw_heat(static_cast<float>(i) / (steps - 1), c);
-        dl->AddRectFilled(ImVec2(o.x + i * 4.0f, o.y), ImVec2(o.x + i * 4.0f + 4, o.y + 14), IM_COL32(c[0], c[1], c[2], 255));
-    }
-    dl->AddText(ImVec2(o.x, o.y + 16), IM_COL32_WHITE, lo);
-    dl->AddText(ImVec2(o.x + steps * 4.0f - ImGui::CalcTextSize(hi).x, o.y + 16), IM_COL32_WHITE, hi);
-}
-
+// Labels over the grid and the split view. Scales (legends) are drawn into the view's pixels by
+// views.c, so that screenshots carry them.
 static void vw_ui_labels(vw_app *app, ImDrawList *dl, ImVec2 size)
 {
-    char a[64], b[64];
     if (app->grid) {
         for (int v = 0; v < VW_VIEW_COUNT; v++)
-            dl->AddText(ImVec2((v % 4) * size.x / 4 + 4, (v / 4) * size.y / 4 + 2), IM_COL32_WHITE,
-                        vw_view_name(static_cast<vw_view>(v)));
+            dl->AddText(ImVec2((v % VW_GRID_COLS) * size.x / VW_GRID_COLS + 4, (v / VW_GRID_COLS) * size.y / VW_GRID_ROWS + 2),
+                        IM_COL32_WHITE, vw_view_name(static_cast<vw_view>(v)));
     } else if (app->split_on) {
         const char *left = tl_render_mode_name(app->desc.mode); // beside the dividing line
         dl->AddText(ImVec2(size.x / 2 - 8 - ImGui::CalcTextSize(left).x, size.y - 24), IM_COL32_WHITE, left);
         dl->AddText(ImVec2(size.x / 2 + 8, size.y - 24), IM_COL32_WHITE, tl_render_mode_name(app->split_mode));
-    } else if (app->view == VW_VIEW_DIFF_FAT) {
-        snprintf(a, sizeof a, "0");
-        snprintf(b, sizeof b, "%.1f / 255 (x%.0f)", 255.0 / app->diff_scale, app->diff_scale);
-        vw_ui_legend(dl, size, a, b);
-    } else if (app->view == VW_VIEW_DEPTH && !app->view_note[0]) {
-        snprintf(a, sizeof a, "white %.3g m ... dark %.3g m (log)", app->depth_range[0], app->depth_range[1]);
-        dl->AddText(ImVec2(16, size.y - 24), IM_COL32_WHITE, a);
-    } else if (app->view == VW_VIEW_TILE_LIGHTS && !app->view_note[0]) {
-        snprintf(b, sizeof b, "%u lights (magenta: overflow)", app->tile_max);
-        vw_ui_legend(dl, size, "0", b);
     }
 }
 

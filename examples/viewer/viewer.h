@@ -29,6 +29,10 @@ typedef enum vw_view {
     VW_VIEW_HDR,            /* HDR radiance times exposure before the tone curve, clipped at 1 */
     VW_VIEW_BEFORE_FXAA,    /* the tone-mapped image before FXAA */
     VW_VIEW_DIFF_FAT,       /* heat map of |output - fat output| times diff_scale */
+    VW_VIEW_AO_RAW,         /* SSAO's estimate before the blur (ao.raw) */
+    VW_VIEW_AO,             /* SSAO after the depth-aware blur (ao), what the frame applies */
+    VW_VIEW_DOF_COC,        /* depth of field: circle of confusion radius (dof target alpha), heat scale */
+    VW_VIEW_SSR,            /* screen-space reflections: the term added to HDR (ssr target) */
     VW_VIEW_COUNT
 } vw_view;
 
@@ -92,6 +96,7 @@ typedef struct vw_app {
     size_t plan_text_size;
     float depth_range[2];            /* the depth view's scale: nearest and farthest covered pixel */
     uint32_t tile_max;               /* the tile view's scale: most lights in one tile */
+    unsigned char fx_saved[5][64];   /* an effect's settings while the panel has it off (ui.cpp) */
     char status[160];                /* a line for the panel (the last screenshot, an error) */
     char view_note[96];              /* why a view is empty in this mode */
     uint8_t *image;                  /* the view, RGBA8 bottom-up, width x height */
@@ -117,6 +122,9 @@ int vw_views_init(vw_app *app, void *(*loader)(const char *));
 void vw_views_free(vw_app *app);
 /** Colour of t in [0,1] on the heat-map scale (black, blue, green, yellow, red, white). */
 void vw_heat(float t, uint8_t rgb[3]);
+/** Grid of every view: columns and rows (first view top left, row by row). */
+#define VW_GRID_COLS 5u
+#define VW_GRID_ROWS 4u
 
 /* camera.c */
 void vw_camera_from_scene(vw_camera *c, const tl_camera *scene_cam, float extent);

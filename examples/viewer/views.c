@@ -7,15 +7,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "legend.h"
 #include "thinlight/codec.h"
 #include "viewer.h"
 
 typedef int (*vw_view_fn)(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out);
+/* A view that maps a scalar to colours fills its legend (title, end values, colour map). */
+typedef void (*vw_legend_fn)(const vw_app *app, vw_legend *l);
 
 typedef struct vw_view_def {
     const char *name;
     const char *help;
     vw_view_fn build;
+    vw_legend_fn legend; /* NULL: the view shows colours, not a scale */
 } vw_view_def;
 
 /* GL beyond 1.1, for the light lists' storage buffer. */
@@ -359,21 +363,155 @@ static int vw_view_diff_fat(vw_app *app, tl_renderer *r, const tl_camera *cam, u
     return 0;
 }
 
+/* SSAO's targets: AO as grey, black 0 (occluded) to white 1 (open). */
+static int vw_view_ao_target(vw_app *app, tl_renderer *r, uint8_t *out, tl_target_id t)
+{
+    if (app->desc.ssao.method == TL_SSAO_OFF) return vw_unavailable(app, "SSAO is off (--ssao, or the Effects panel)");
+    const float *ao = vw_read(app, r, t, 0);
+    const float *d = vw_read(app, r, TL_TARGET_DEPTH, 1);
+    if (!ao || !d) return vw_unavailable(app, "no AO target in this plan");
+    for (size_t i = 0, n = vw_pixels(app); i < n; i++) {
+        float v = vw_is_background(app, d, i) ? 1.0f : ao[4 * i];
+        vw_put(out + 4 * i, v, v, v);
+    }
+    return 0;
+}
+
+static int vw_view_ao_raw(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    return vw_view_ao_target(app, r, out, TL_TARGET_AO_RAW);
+}
+
+static int vw_view_ao(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    return vw_view_ao_target(app, r, out, TL_TARGET_AO);
+}
+
+/* The largest circle of confusion, in pixels (tl_dof_desc's defaults resolved). */
+static float vw_coc_max(const vw_app *app)
+{
+    const tl_dof_desc *f = &app->desc.dof;
+    float aperture = f->aperture > 0 ? f->aperture : 0.01f;
+    return (f->max_radius > 0 ? f->max_radius : 2.0f * aperture) * (float)app->height;
+}
+
+/* The dof target's alpha: the radius the gather used at each pixel, 0 to the largest. */
+static int vw_view_dof_coc(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    if (!app->desc.dof.enabled) return vw_unavailable(app, "depth of field is off (--dof, or the Effects panel)");
+    const float *f = vw_read(app, r, TL_TARGET_DOF, 0);
+    if (!f) return vw_unavailable(app, "no dof target in this plan");
+    float most = vw_coc_max(app);
+    for (size_t i = 0, n = vw_pixels(app); i < n; i++) {
+        vw_heat(most > 0 ? f[4 * i + 3] / most : 0.0f, out + 4 * i);
+        out[4 * i + 3] = 255;
+    }
+    return 0;
+}
+
+/* The reflection term SSR adds to HDR, times exposure, x / (1 + x). */
+static int vw_view_ssr(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    if (!app->desc.ssr.enabled) return vw_unavailable(app, "reflections are off (--ssr, or the Effects panel)");
+    const float *t = vw_read(app, r, TL_TARGET_SSR, 0);
+    if (!t) return vw_unavailable(app, "no ssr target (forward mode plans no reflections)");
+    float e = app->desc.exposure > 0 ? app->desc.exposure : 1.0f;
+    for (size_t i = 0, n = vw_pixels(app); i < n; i++) vw_put_hdr(out + 4 * i, e, t[4 * i], t[4 * i + 1], t[4 * i + 2], 1);
+    return 0;
+}
+
+/* ---- legends -------------------------------------------------------------------------------- */
+
+static void vw_grey(float t, uint8_t rgb[3]) { rgb[0] = rgb[1] = rgb[2] = vw_u8(t); }
+/* The depth view: white at the nearest pixel (t = 0) to 0.1 at the farthest (t = 1), log scale. */
+static void vw_depth_grey(float t, uint8_t rgb[3]) { vw_grey(1.0f - 0.9f * t, rgb); }
+
+static void vw_legend_unit(const vw_app *app, vw_legend *l)
+{
+    (void)app;
+    l->colour = vw_grey;
+    snprintf(l->low, sizeof l->low, "0");
+    snprintf(l->high, sizeof l->high, "1");
+}
+
+static void vw_legend_gloss(const vw_app *app, vw_legend *l)
+{
+    vw_legend_unit(app, l);
+    l->title = "GLOSS";
+}
+
+static void vw_legend_ao_raw(const vw_app *app, vw_legend *l)
+{
+    vw_legend_unit(app, l);
+    l->title = "AO BEFORE BLUR (1 = OPEN)";
+}
+
+static void vw_legend_ao(const vw_app *app, vw_legend *l)
+{
+    vw_legend_unit(app, l);
+    l->title = "AO (1 = OPEN)";
+}
+
+static void vw_legend_depth(const vw_app *app, vw_legend *l)
+{
+    l->title = "LINEAR DEPTH (LOG)";
+    l->colour = vw_depth_grey;
+    snprintf(l->low, sizeof l->low, "%.3g M", app->depth_range[0]);
+    snprintf(l->high, sizeof l->high, "%.3g M", app->depth_range[1]);
+}
+
+static void vw_legend_tiles(const vw_app *app, vw_legend *l)
+{
+    l->title = "LIGHTS PER TILE";
+    l->colour = vw_heat;
+    snprintf(l->low, sizeof l->low, "0");
+    snprintf(l->high, sizeof l->high, "%u", app->tile_max);
+}
+
+static void vw_legend_diff(const vw_app *app, vw_legend *l)
+{
+    l->title = "MAX CHANNEL DIFF. FROM FAT";
+    l->colour = vw_heat;
+    snprintf(l->low, sizeof l->low, "0");
+    snprintf(l->high, sizeof l->high, "%.1f/255", 255.0 / app->diff_scale);
+}
+
+static void vw_legend_coc(const vw_app *app, vw_legend *l)
+{
+    l->title = "DOF COC RADIUS (PX)";
+    l->colour = vw_heat;
+    snprintf(l->low, sizeof l->low, "0");
+    snprintf(l->high, sizeof l->high, "%.1f", vw_coc_max(app));
+}
+
 static const vw_view_def vw_view_table[VW_VIEW_COUNT] = {
-    [VW_VIEW_FINAL] = {"final", "the output image (after FXAA)", vw_view_final},
-    [VW_VIEW_NORMALS] = {"normals", "decoded view-space normals, n * 0.5 + 0.5", vw_view_normals},
-    [VW_VIEW_GLOSS] = {"gloss", "gloss, black 0 to white 1", vw_view_gloss},
-    [VW_VIEW_LUMA] = {"luma", "RT1 luma (thin-deferred)", vw_view_luma},
-    [VW_VIEW_CHROMA] = {"chroma", "RT1 raw chroma: Cb on even pixels, Cr on odd (thin-deferred)", vw_view_chroma},
-    [VW_VIEW_ALBEDO] = {"albedo", "albedo, missing chroma rebuilt (thin-deferred, fat)", vw_view_albedo},
-    [VW_VIEW_DEPTH] = {"depth", "linear depth, log scale: white nearest, dark grey farthest, black background", vw_view_depth},
-    [VW_VIEW_POSITION] = {"position", "world position from depth over the scene bounds", vw_view_position},
-    [VW_VIEW_LIGHT_DIFFUSE] = {"light-diffuse", "light buffer diffuse (thin-lpp), x/(1+x)", vw_view_light_diffuse},
-    [VW_VIEW_LIGHT_SPECULAR] = {"light-specular", "light buffer specular (thin-lpp), x/(1+x)", vw_view_light_specular},
-    [VW_VIEW_TILE_LIGHTS] = {"tile-lights", "local lights per tile (tiled), heat scale", vw_view_tile_lights},
-    [VW_VIEW_HDR] = {"hdr", "HDR times exposure before tone mapping, clipped at 1", vw_view_hdr},
-    [VW_VIEW_BEFORE_FXAA] = {"before-fxaa", "the tone-mapped image before FXAA", vw_view_before_fxaa},
-    [VW_VIEW_DIFF_FAT] = {"diff-fat", "heat map of |output - fat output| x scale", vw_view_diff_fat},
+    [VW_VIEW_FINAL] = {"final", "the output image (after FXAA)", vw_view_final, NULL},
+    [VW_VIEW_NORMALS] = {"normals", "decoded view-space normals, n * 0.5 + 0.5", vw_view_normals, NULL},
+    [VW_VIEW_GLOSS] = {"gloss", "gloss, black 0 to white 1", vw_view_gloss, vw_legend_gloss},
+    [VW_VIEW_LUMA] = {"luma", "RT1 luma (thin-deferred)", vw_view_luma, NULL},
+    [VW_VIEW_CHROMA] = {"chroma", "RT1 raw chroma: Cb on even pixels, Cr on odd (thin-deferred)", vw_view_chroma, NULL},
+    [VW_VIEW_ALBEDO] = {"albedo", "albedo, missing chroma rebuilt (thin-deferred, fat)", vw_view_albedo, NULL},
+    [VW_VIEW_DEPTH] = {"depth", "linear depth, log scale: white nearest, dark grey farthest, black background",
+                       vw_view_depth, vw_legend_depth},
+    [VW_VIEW_POSITION] = {"position", "world position from depth over the scene bounds", vw_view_position, NULL},
+    [VW_VIEW_LIGHT_DIFFUSE] = {"light-diffuse", "light buffer diffuse (thin-lpp), x/(1+x)", vw_view_light_diffuse, NULL},
+    [VW_VIEW_LIGHT_SPECULAR] = {"light-specular", "light buffer specular (thin-lpp), x/(1+x)", vw_view_light_specular,
+                                NULL},
+    [VW_VIEW_TILE_LIGHTS] = {"tile-lights", "local lights per tile (tiled), heat scale", vw_view_tile_lights,
+                             vw_legend_tiles},
+    [VW_VIEW_HDR] = {"hdr", "HDR times exposure before tone mapping, clipped at 1", vw_view_hdr, NULL},
+    [VW_VIEW_BEFORE_FXAA] = {"before-fxaa", "the tone-mapped image before FXAA", vw_view_before_fxaa, NULL},
+    [VW_VIEW_DIFF_FAT] = {"diff-fat", "heat map of |output - fat output| x scale", vw_view_diff_fat, vw_legend_diff},
+    [VW_VIEW_AO_RAW] = {"ao-raw", "SSAO before the blur (ao.raw), black 0 to white 1 (open)", vw_view_ao_raw,
+                        vw_legend_ao_raw},
+    [VW_VIEW_AO] = {"ao", "SSAO after the depth-aware blur (ao), as applied", vw_view_ao, vw_legend_ao},
+    [VW_VIEW_DOF_COC] = {"dof-coc", "depth of field: circle of confusion radius in pixels, heat scale",
+                         vw_view_dof_coc, vw_legend_coc},
+    [VW_VIEW_SSR] = {"ssr", "screen-space reflections: the term added to HDR, x/(1+x)", vw_view_ssr, NULL},
 };
 
 const char *vw_view_name(vw_view v) { return v < VW_VIEW_COUNT ? vw_view_table[v].name : "unknown"; }
@@ -402,10 +540,10 @@ static void vw_build_one(vw_app *app, vw_view v, const tl_camera *cam, uint8_t *
         }
 }
 
-/* Every view shrunk (nearest) into a 4 x 4 grid, first view top left. */
+/* Every view shrunk (nearest) into a grid, first view top left (no legends: thumbnails). */
 static void vw_build_grid(vw_app *app, const tl_camera *cam)
 {
-    const uint32_t cols = 4, rows = 4, cw = app->width / cols, ch = app->height / rows;
+    const uint32_t cols = VW_GRID_COLS, rows = VW_GRID_ROWS, cw = app->width / cols, ch = app->height / rows;
     for (size_t i = 0, n = vw_pixels(app); i < n; i++) memcpy(app->image + 4 * i, "\0\0\0\377", 4); /* opaque black */
     for (int v = 0; v < VW_VIEW_COUNT; v++) {
         uint8_t *full = app->scratch8[0];
@@ -458,7 +596,14 @@ int vw_views_build(vw_app *app, const tl_camera *cam)
     if (vw_ensure_buffers(app)) return -1;
     if (app->split_on) vw_build_split(app, cam);
     else if (app->grid) vw_build_grid(app, cam);
-    else vw_build_one(app, app->view, cam, app->image);
+    else {
+        vw_build_one(app, app->view, cam, app->image);
+        vw_legend l = {0};
+        if (!app->view_note[0] && vw_view_table[app->view].legend) {
+            vw_view_table[app->view].legend(app, &l);
+            vw_draw_legend(app->image, app->width, app->height, &l);
+        }
+    }
     return 0;
 }
 

@@ -206,6 +206,24 @@ typedef struct tl_bloom_desc {
     uint32_t levels;     /**< mip levels of the chain, 1..8, the first at half size; default 6 (fewer when the
                               size runs out: a level is never smaller than 1x1) */
 } tl_bloom_desc;
+/** Screen-space reflections (docs/effects.md): a view-space ray march of the reflected view ray
+ *  against the depth buffer (linear steps, then a binary refinement), a hit where the ray lies
+ *  behind the surface by less than `thickness`; the HDR colour there, weighted by gloss (RT0),
+ *  Schlick's Fresnel with F0 = 0.04, and fades at the screen's edges and the ray's end, is added
+ *  to HDR. Thin-lpp, thin-deferred and fat (forward has no gloss to read: not planned). Zeroed: off. */
+typedef struct tl_ssr_desc {
+    int enabled;        /**< 1: on */
+    uint32_t steps;     /**< linear steps along the ray, 4..256; default 48 */
+    uint32_t refine;    /**< binary refinement steps after a hit, 0..8 (0 means the default); default 4 */
+    float max_distance; /**< view-space length of a ray; default 16 */
+    float thickness;    /**< how far behind the depth buffer's surface a ray still hits it (view units);
+                             default 0.4 */
+    float min_gloss;    /**< gloss below which a pixel reflects nothing (weight rises linearly to 1 at
+                             gloss 1), below 1; default 0.4, a negative value means 0 */
+    float edge_fade;    /**< fraction of the screen over which hits fade out at its edges, 0..0.5;
+                             default 0.1 */
+    float intensity;    /**< scale of the added reflection; default 1 */
+} tl_ssr_desc;
 
 /** A GL entry point as a loader returns it. */
 typedef void (*tl_gl_function)(void);
@@ -262,6 +280,7 @@ typedef struct tl_renderer_desc {
     tl_fog_desc fog;                   /**< fog; zeroed: off */
     tl_dof_desc dof;                   /**< depth of field; zeroed: off */
     tl_bloom_desc bloom;               /**< bloom; zeroed: off */
+    tl_ssr_desc ssr;                   /**< screen-space reflections; zeroed: off */
     /** The most memory, in bytes, the frame's targets may take (the memory blocks of the plan,
      *  tl_frame_plan.allocated_bytes_per_pixel times the pixels, light lists included): a plan
      *  that needs more is TL_ERROR_LIMIT naming both sizes, from create, set_scene, set_lights,
@@ -288,6 +307,8 @@ typedef enum tl_pass {
     TL_PASS_MATERIAL,      /**< thin-lpp second geometry pass, depth EQUAL */
     TL_PASS_FORWARD,       /**< forward shading with per-object light lists */
     TL_PASS_TRANSPARENT,   /**< alpha-blended materials, forward-lit after the opaque frame */
+    TL_PASS_SSR,           /**< screen-space reflections: the ray march into ssr */
+    TL_PASS_SSR_APPLY,     /**< screen-space reflections: ssr added to HDR */
     TL_PASS_FOG,           /**< fog blended over HDR */
     TL_PASS_DOF,           /**< depth of field: the gather blur of HDR into dof */
     TL_PASS_DOF_APPLY,     /**< depth of field: dof copied into HDR */
@@ -315,9 +336,10 @@ typedef enum tl_target_id {
                                    size over the pixels, rounded up) */
     TL_TARGET_AO_RAW,         /**< R16F SSAO estimate before the blur */
     TL_TARGET_AO,             /**< R16F ambient occlusion (1 = open) */
-    TL_TARGET_DOF,            /**< RGBA16F depth-of-field image */
+    TL_TARGET_DOF,            /**< RGBA16F depth-of-field image; alpha: circle of confusion radius in pixels */
     TL_TARGET_LIGHT_FRESNEL,  /**< thin-lpp with GGX, two-sums layout: S2, the Schlick part of specular */
     TL_TARGET_BLOOM,          /**< RGBA16F bloom chain: half size (odd sizes round up), tl_bloom_desc.levels mip levels */
+    TL_TARGET_SSR,            /**< RGBA16F reflected radiance as added to HDR; alpha: its weight */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -583,9 +605,11 @@ TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *
 /**
  * Reads a target as floats, 4 per pixel, rows bottom to top: DEPTH gives (window depth, linear
  * view distance, 0, 1); RT0 the decoded normal (view space) and gloss; RT1 its raw channels in
- * [0,1]; LIGHT_*, FAT_* and HDR their RGBA; LDR and OUTPUT their colour in [0,1]; BLOOM its first
- * level (tl_plan_target.width x height, not the frame's size): the bloom image before its
- * intensity. *size is the
+ * [0,1]; LIGHT_*, FAT_* and HDR their RGBA; AO_RAW and AO the occlusion in R (1 = open); DOF the
+ * blurred colour and, in alpha, the circle of confusion's radius in pixels that the gather used
+ * (docs/effects.md); SSR the reflection added to HDR and its weight; BLOOM its first level
+ * (tl_plan_target.width x height, not the frame's size): the bloom image before its intensity;
+ * LDR and OUTPUT their colour in [0,1]. *size is the
  * buffer's size in bytes and receives the bytes written; a NULL `rgba` asks for the size needed.
  * TL_ERROR_INVALID_ARGUMENT for a target the plan did not allocate, or one whose memory a later
  * pass of the frame reused (list it in tl_renderer_desc.keep_targets to read it).

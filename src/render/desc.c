@@ -77,12 +77,31 @@ static int tl__bloom_resolve(tl_bloom_desc *b)
            tl__finite4(b->threshold, b->knee, b->intensity, b->scatter);
 }
 
+static int tl__ssr_resolve(tl_ssr_desc *s)
+{
+    if (!s->enabled) {
+        memset(s, 0, sizeof *s);
+        return 1;
+    }
+    s->enabled = 1;
+    if (!s->steps) s->steps = 48;
+    if (!s->refine) s->refine = 4;
+    if (!(s->max_distance > 0.0f)) s->max_distance = 16.0f;
+    if (!(s->thickness > 0.0f)) s->thickness = 0.4f;
+    if (!(s->min_gloss > 0.0f)) s->min_gloss = s->min_gloss == 0.0f ? 0.4f : 0.0f;
+    if (!(s->edge_fade > 0.0f)) s->edge_fade = 0.1f;
+    if (!(s->intensity > 0.0f)) s->intensity = 1.0f;
+    return s->steps >= 4 && s->steps <= 256 && s->refine <= 8 && s->min_gloss < 1.0f && s->edge_fade <= 0.5f &&
+           tl__finite4(s->max_distance, s->thickness, s->intensity, s->min_gloss);
+}
+
 static tl_result tl__effects_resolve(tl_renderer_desc *d)
 {
     int ok = tl__ssao_resolve(&d->ssao);
     ok &= tl__fog_resolve(&d->fog);
     ok &= tl__dof_resolve(&d->dof);
     ok &= tl__bloom_resolve(&d->bloom);
+    ok &= tl__ssr_resolve(&d->ssr);
     return ok ? TL_OK : TL_ERROR_INVALID_ARGUMENT;
 }
 

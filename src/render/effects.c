@@ -1,5 +1,5 @@
 /* The screen-space effects' per-frame parameters (docs/effects.md): the resolved options of SSAO,
- * fog, depth of field and bloom, with the camera's time and focus, into the frame's uniform block. */
+ * fog, depth of field, reflections and bloom, with the camera's time and focus, into the frame's uniform block. */
 #include <string.h>
 
 #include "renderer_internal.h"
@@ -27,4 +27,10 @@ void tl__frame_ubo_effects(const tl_renderer_desc *d, const tl__view *v, tl__fra
     u->bloom[1] = d->bloom.knee * d->bloom.threshold;
     u->bloom[2] = d->bloom.intensity;
     u->bloom[3] = d->bloom.scatter;
+    u->ssr[0] = d->ssr.max_distance;
+    u->ssr[1] = d->ssr.thickness;
+    u->ssr[2] = d->ssr.min_gloss;
+    u->ssr[3] = d->ssr.edge_fade;
+    u->ssr2[0] = d->ssr.intensity;
+    u->ssr2[1] = v->near_z;
 }

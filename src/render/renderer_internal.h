@@ -51,6 +51,8 @@ typedef struct tl__frame_ubo {
     float effects[4];         /* noise speed, time, focus distance, aperture */
     float dof[4];             /* largest CoC (fraction of the height), 0, 0, 0 */
     float bloom[4];           /* threshold, knee (absolute), intensity, scatter */
+    float ssr[4];             /* max distance, thickness, min gloss, edge fade */
+    float ssr2[4];            /* intensity, near plane distance, 0, 0 */
 } tl__frame_ubo;
 
 /* std430 element of tl_object_buffer (shaders/object.glsl). */

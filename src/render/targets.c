@@ -26,6 +26,7 @@ const tl__target_def tl__targets[TL_TARGET_COUNT] = {
     [TL_TARGET_DOF] = {"dof", "DOF", GL_RGBA16F, 0},
     [TL_TARGET_LIGHT_FRESNEL] = {"light.fresnel", "LIGHT_FRESNEL", GL_RGBA16F, 1},
     [TL_TARGET_BLOOM] = {"bloom", "BLOOM", GL_RGBA16F, 0, 0, 1, 1},
+    [TL_TARGET_SSR] = {"ssr", "SSR", GL_RGBA16F, 0},
 };
 
 size_t tl__light_lists_bytes(size_t tiles) { return 16u + 8u * tiles + 4u * TL__TILE_START_ENTRIES * tiles; }

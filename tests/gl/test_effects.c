@@ -412,3 +412,31 @@ TL_TEST(dof_focus_plane_unchanged)
         tl_renderer_destroy(near);
     }
 }
+
+/* The dof target's alpha is the circle of confusion the gather used (tl_renderer_read_target):
+ * a wall at distance 10 focused at 5 with aperture a has c = min(a |10 - 5| / 10, largest) x
+ * height pixels at every pixel (the wall is a plane of constant view depth), within an FP16
+ * rounding; focused on the wall, 0. */
+TL_TEST(dof_target_alpha_is_the_circle_of_confusion)
+{
+    quads q;
+    wall_scene(&q, 10.0f);
+    const float aperture = 0.02f, largest[2] = {0.04f, 0.005f}, focus[3] = {5.0f, 10.0f, 20.0f};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
+        for (int f = 0; f < 3; f++)
+            for (int l = 0; l < 2; l++) {
+                tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m],
+                                      .dof = {.enabled = 1, .aperture = aperture, .max_radius = largest[l],
+                                              .focus_distance = focus[f], .samples = 8}};
+                tl_renderer *r = render(&q.s, d);
+                float *t = r ? read_target(r, TL_TARGET_DOF, (size_t)W * H) : NULL;
+                TL_CHECK(t != NULL);
+                double want = fmin(aperture * fabs(10.0 - focus[f]) / 10.0, largest[l]) * H, worst = 0.0;
+                for (size_t i = 0; t && i < (size_t)W * H; i++) worst = fmax(worst, fabs(t[4 * i + 3] - want));
+                if (f == 0 && l == 0)
+                    printf("  dof coc, %s: want %.4f px, worst error %.2g\n", tl_render_mode_name(modes[m]), want, worst);
+                TL_CHECK(worst <= want * TL_HALF_REL_STEP + 1e-4);
+                free(t);
+                tl_renderer_destroy(r);
+            }
+}

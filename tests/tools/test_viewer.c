@@ -6,145 +6,30 @@
  * the grid; the split view's halves are the two modes' images; a resize keeps the bytes per pixel
  * and scales the bytes; --help and bad usage. */
 #define _POSIX_C_SOURCE 200809L /* popen */
-#include <stdint.h>
-#include <stdio.h>
-#include <stdlib.h>
-#include <string.h>
-#include <sys/wait.h>
-
-#include "thinlight/io.h"
-#include "thinlight/metrics.h"
-#include "tl_test.h"
+#include "viewer_harness.h"
 
 enum { VW_W = 320, VW_H = 180, GRID_W = 640, GRID_H = 360 };
 
 static const char *const modes[4] = {"thin-lpp", "thin-deferred", "fat", "forward"};
 /* The views in the viewer's order (--view names; the grid puts them row by row, 4 across). */
-static const char *const views[14] = {"final", "normals", "gloss", "luma", "chroma", "albedo", "depth",
+enum { NV = 18, NV_NO_EFFECTS = 14 }; /* views; those that need no effect come first */
+static const char *const views[NV] = {"final", "normals", "gloss", "luma", "chroma", "albedo", "depth",
                                       "position", "light-diffuse", "light-specular", "tile-lights", "hdr",
-                                      "before-fxaa", "diff-fat"};
-/* Which views each mode has (the G-buffer it writes): 1 = available. */
-static const int has_view[4][14] = {
+                                      "before-fxaa", "diff-fat", "ao-raw", "ao", "dof-coc", "ssr"};
+/* Which views each mode has (the G-buffer it writes) with every effect off: 1 = available
+ * (the effects' views: test_viewer_effects.c). */
+static const int has_view[4][NV] = {
     /* thin-lpp: RT0, light buffer; no RT1 */
-    {1, 1, 1, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1},
+    {1, 1, 1, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 0, 0},
     /* thin-deferred: RT0, RT1; no light buffer */
-    {1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1},
+    {1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0},
     /* fat: its normal, albedo and position targets */
-    {1, 1, 1, 0, 0, 1, 1, 1, 0, 0, 1, 1, 1, 1},
+    {1, 1, 1, 0, 0, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0},
     /* forward: depth only (Forward+ has the tile lists) */
-    {1, 0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 1},
+    {1, 0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0},
 };
-
-typedef struct image {
-    uint32_t w, h;
-    uint8_t *px; /* RGBA8, rows top to bottom */
-} image;
-
-/* Under THINLIGHT_SANITIZE the viewer's leak check is off: Mesa's GLX driver (swrast_dri.so)
- * leaks 112 bytes and is unloaded at exit, so LeakSanitizer reports an unknown module that no
- * suppression can name (with the driver kept loaded, the viewer reports no leak at all). Address
- * and undefined-behaviour checks stay on. */
-#ifdef TL_SANITIZED
-#define VW_ENV "env LSAN_OPTIONS=detect_leaks=0 "
-#else
-#define VW_ENV ""
-#endif
-
-static const char *xvfb(void)
-{
-    const char *d = getenv("DISPLAY");
-    return d && d[0] ? VW_ENV : "xvfb-run -a -s '-screen 0 1280x1024x24' " VW_ENV;
-}
-
-/* Runs a command line; its exit status (-1 when it did not exit). */
-static int run(const char *cmd)
-{
-    int s = system(cmd);
-    if (s == -1 || !WIFEXITED(s)) return -1;
-    return WEXITSTATUS(s);
-}
-
-static int viewer(const char *args, const char *png)
-{
-    char cmd[2048];
-    snprintf(cmd, sizeof cmd, "%s'%s' --no-panel --light-strategy tiled --frames 2 --screenshot '%s/%s' %s", xvfb(),
-             TL_VIEWER, TL_WORK, png, args);
-    int s = run(cmd);
-    if (s) fprintf(stderr, "exit %d: %s\n", s, cmd);
-    return s;
-}
-
-static void log_line(void *user, tl_log_level level, const char *message)
-{
-    (void)user;
-    (void)level;
-    fprintf(stderr, "%s\n", message);
-}
-
-static image load(const char *png)
-{
-    char path[1024];
-    snprintf(path, sizeof path, "%s/%s", TL_WORK, png);
-    tl_rgba8_image r = {0};
-    tl_image_read_desc d = {.logger = {.fn = log_line}}; /* default allocator: malloc, so free() releases */
-    tl_image_read_rgba8(path, &d, &r);
-    return (image){r.width, r.height, r.rgba};
-}
-
-static const uint8_t *at(const image *im, uint32_t x, uint32_t y) { return im->px + 4 * ((size_t)y * im->w + x); }
-
-/* A grid cell's interior (the viewer leaves a 1-pixel border) as its own image. */
-static image cell(const image *grid, int v)
-{
-    uint32_t cw = grid->w / 4, ch = grid->h / 4, x0 = (uint32_t)(v % 4) * cw, y0 = (uint32_t)(v / 4) * ch;
-    image c = {cw - 2, ch - 2, malloc((size_t)(cw - 2) * (ch - 2) * 4)};
-    for (uint32_t y = 0; c.px && y < c.h; y++) memcpy(c.px + 4 * (size_t)y * c.w, at(grid, x0 + 1, y0 + 1 + y), 4 * (size_t)c.w);
-    return c;
-}
-
-/* The placeholder of a view a mode lacks: 16-pixel squares of grey 32 and 48. */
-static int is_placeholder(const image *c)
-{
-    for (size_t i = 0; i < (size_t)c->w * c->h; i++) {
-        const uint8_t *p = c->px + 4 * i;
-        if ((p[0] != 32 && p[0] != 48) || p[1] != p[0] || p[2] != p[0]) return 0;
-    }
-    return 1;
-}
-
-/* Distinct colours: a blank (one-colour) image has 1. */
-static size_t colours(const image *c)
-{
-    size_t n = 0;
-    uint32_t seen[64];
-    for (size_t i = 0; i < (size_t)c->w * c->h && n < 64; i++) {
-        uint32_t v;
-        memcpy(&v, c->px + 4 * i, 4);
-        size_t k = 0;
-        while (k < n && seen[k] != v) k++;
-        if (k == n) seen[n++] = v;
-    }
-    return n;
-}
-
-/* Screenshots are opaque: nothing of an earlier frame may show through. */
-static int opaque(const image *im)
-{
-    for (size_t i = 0; im->px && i < (size_t)im->w * im->h; i++)
-        if (im->px[4 * i + 3] != 255) return 0;
-    return im->px != NULL;
-}
-
-static tl_image_error compare(const image *a, const image *b)
-{
-    tl_image_error e;
-    memset(&e, 0, sizeof e);
-    e.max_abs = 1e9;
-    if (a->px && b->px && a->w == b->w && a->h == b->h) tl_image_compare_u8(a->px, b->px, (size_t)a->w * a->h * 4, &e);
-    return e;
-}
-
-static void release(image *im) { free(im->px); im->px = NULL; }
+/* Views that draw a scale legend into their pixels (bottom left; not in the grid's thumbnails). */
+static const int has_legend[NV] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1, 1, 1, 0};
 
 /* An unmoved camera: the scene's, exactly as thinlight-render draws it, in every mode. */
 TL_TEST(viewer_final_view_equals_thinlight_render_each_mode)
@@ -176,10 +61,10 @@ static void check_grid(int m)
     snprintf(args, sizeof args, "--size %ux%u --mode %s --grid", GRID_W, GRID_H, modes[m]);
     snprintf(png, sizeof png, "grid_%s.png", modes[m]);
     TL_CHECK(viewer(args, png) == 0);
-    image g = load(png), c[14];
+    image g = load(png), c[NV];
     TL_CHECK(g.px && g.w == GRID_W && g.h == GRID_H && opaque(&g));
     if (!g.px) return;
-    for (int v = 0; v < 14; v++) {
+    for (int v = 0; v < NV; v++) {
         c[v] = cell(&g, v);
         int blank = colours(&c[v]) < 2, placeholder = is_placeholder(&c[v]);
         int diff_in_fat = m == 2 && v == 13; /* fat against fat: all black, as it must be */
@@ -196,7 +81,7 @@ static void check_grid(int m)
         printf("%s: %s vs %s mean %.2f levels\n", modes[m], views[a], views[b], e.mean_abs);
         TL_CHECK(e.mean_abs > 1.0);
     }
-    for (int v = 0; v < 14; v++) free(c[v].px);
+    for (int v = 0; v < NV; v++) free(c[v].px);
     release(&g);
 }
 
@@ -206,14 +91,18 @@ TL_TEST(viewer_grid_views_fat) { check_grid(2); }
 TL_TEST(viewer_grid_views_forward) { check_grid(3); }
 
 /* Thumbnail pixel (x, y) of a cell (GL rows: from the bottom) is the full view's pixel
- * (x W / cw, y H / ch); PNG rows run from the top. */
+ * (x W / cw, y H / ch); PNG rows run from the top. The full view's legend is left out: the
+ * bottom-left 200 x 48 pixels (the legend's box at 640 x 360 is 8 + 134 or the title's width
+ * across, 8 + 32 up). */
 static double thumbnail_error(const image *full, const image *grid, int v)
 {
-    uint32_t cw = grid->w / 4, ch = grid->h / 4, cx = (uint32_t)(v % 4), cy = 3 - (uint32_t)(v / 4);
+    uint32_t cw = grid->w / GRID_COLS, ch = grid->h / GRID_ROWS, cx = (uint32_t)(v % GRID_COLS),
+             cy = GRID_ROWS - 1 - (uint32_t)(v / GRID_COLS);
     double worst = 0;
     for (uint32_t y = 1; y + 1 < ch; y++)
         for (uint32_t x = 1; x + 1 < cw; x++) {
             uint32_t sx = x * full->w / cw, sy = y * full->h / ch;
+            if (has_legend[v] && sx < 200 && sy < 48) continue;
             const uint8_t *a = at(grid, cx * cw + x, grid->h - 1 - (cy * ch + y)), *b = at(full, sx, full->h - 1 - sy);
             for (int k = 0; k < 3; k++) worst = abs(a[k] - b[k]) > worst ? abs(a[k] - b[k]) : worst;
         }
@@ -233,7 +122,7 @@ TL_TEST(viewer_each_view_full_size_matches_its_thumbnail)
         grids[m] = load(png);
     }
     image final_view = {0, 0, NULL};
-    for (int v = 0; v < 14; v++) {
+    for (int v = 0; v < NV_NO_EFFECTS; v++) {
         int m = has_view[1][v] ? 1 : 0;
         char args[128], png[64];
         snprintf(args, sizeof args, "--size %ux%u --mode %s --view %s", GRID_W, GRID_H, modes[m], views[v]);
@@ -321,7 +210,7 @@ TL_TEST(viewer_gltf_scene_grid)
     TL_CHECK(viewer(args, "gltf_grid.png") == 0);
     image g = load("gltf_grid.png");
     TL_CHECK(g.px != NULL);
-    for (int v = 0; g.px && v < 13; v++) { /* diff-fat may be black: few edges */
+    for (int v = 0; g.px && v < 13; v++) { /* diff-fat may be black: few edges; effects are off */
         image c = cell(&g, v);
         if (has_view[1][v]) TL_CHECK(colours(&c) > 1 && !is_placeholder(&c));
         free(c.px);
