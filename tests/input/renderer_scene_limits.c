@@ -363,3 +363,41 @@ TL_TEST(renderer_forward_light_lists_over_the_storage_block_refused)
     TL_CHECK(strstr(c.line, "18 objects exceed the limit of 17 (a storage block of 2176 bytes at 128 bytes an object)") != NULL);
     tl_renderer_destroy(r);
 }
+
+TL_TEST(renderer_light_fields_and_negative_sizes_refused)
+{
+    if (!ensure_context()) { tl_test_failures++; return; }
+    static test_scene t;
+    build_room(&t);
+    counted c = {0};
+    /* a negative size passed as uint32_t is 2^32 - n: over the limit, named */
+    tl_renderer_desc d = {.width = (uint32_t)-1, .height = 32};
+    TL_CHECK(counted_renderer(d, &c) == NULL && strstr(c.line, "4294967295x32") != NULL);
+    tl_renderer *r = counted_renderer((tl_renderer_desc){.width = 32, .height = 32}, &c);
+    TL_CHECK(r != NULL);
+    if (!r) return;
+    TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_OK);
+    TL_CHECK(tl_renderer_resize(r, (uint32_t)-8, 32) == TL_ERROR_LIMIT && strstr(c.line, "4294967288x32") != NULL);
+    /* each bad field of a light, alone: refused naming the light; the renderer keeps its lights */
+    const tl_light good = {TL_LIGHT_SPOT, {0, 5, 0}, {0, -1, 0}, {4, 4, 4}, 12, 0.9f, 0.8f, 0.1f};
+    tl_light bad[8];
+    for (int i = 0; i < 8; i++) bad[i] = good;
+    bad[0].radius = -1.0f;
+    bad[1].radius = INFINITY;
+    bad[2].radius = NAN;
+    bad[3].color[1] = INFINITY;
+    bad[4].direction[2] = NAN;
+    bad[5].source_radius = -0.5f;
+    bad[6].type = TL_LIGHT_TYPE_COUNT_;
+    bad[7].position[0] = -INFINITY;
+    tl_light two[2] = {good, good};
+    for (int i = 0; i < 8; i++) {
+        two[1] = bad[i];
+        TL_CHECK(tl_renderer_set_lights(r, two, 2) == TL_ERROR_INVALID_ARGUMENT);
+        TL_CHECK(strstr(c.line, "light 1 has a non-finite or invalid field") != NULL);
+    }
+    TL_CHECK(tl_renderer_set_lights(r, two, 0) == TL_OK && tl_renderer_set_lights(r, NULL, 0) == TL_OK);
+    TL_CHECK(tl_renderer_set_lights(r, NULL, 3) == TL_ERROR_INVALID_ARGUMENT && strstr(c.line, "3 lights but no array"));
+    TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
+    tl_renderer_destroy(r);
+}
