@@ -69,8 +69,43 @@ def list_tests(build, args):
         if not t.get("command"):
             continue
         tests.append({"name": t["name"], "command": t["command"], "cwd": props.get("WORKING_DIRECTORY", build),
-                      "env": props.get("ENVIRONMENT", []), "timeout": float(props.get("TIMEOUT", 1500))})
+                      "env": props.get("ENVIRONMENT", []), "timeout": float(props.get("TIMEOUT", 1500)),
+                      "setup": props.get("FIXTURES_SETUP", []), "required": props.get("FIXTURES_REQUIRED", []),
+                      "cleanup": props.get("FIXTURES_CLEANUP", []), "depends": props.get("DEPENDS", [])})
     return tests
+
+
+def with_prerequisites(todo, tests):
+    """todo with, before each test, the tests it needs (ctest's DEPENDS and the FIXTURES_SETUP tests
+    of its FIXTURES_REQUIRED, run again even when already clean: what they make may be gone), and
+    fixture cleanup tests last. Returns (tests in order, {name: names it waits for})."""
+    by_name = {t["name"]: t for t in tests}
+    setups = {}
+    for t in tests:
+        for f in t["setup"]:
+            setups.setdefault(f, []).append(t["name"])
+
+    def needs(t):
+        return [n for n in t["depends"] + [s for f in t["required"] for s in setups.get(f, [])] if n in by_name]
+
+    out, placed, waits = [], set(), {}
+
+    def place(t):
+        if t["name"] in placed:
+            return
+        placed.add(t["name"])
+        for n in needs(t):
+            place(by_name[n])
+        waits[t["name"]] = needs(t)
+        out.append(t)
+
+    for t in todo:
+        if not t["cleanup"]:
+            place(t)
+    for t in todo:
+        if t["cleanup"]:
+            place(t)
+    return out, waits
 
 
 # ---- fingerprints -------------------------------------------------------------------------------
@@ -340,11 +375,14 @@ def print_list(tests, prints, results, verbose):
     return 1 if counts["failed"] else 0
 
 
-def run_all(todo, fp, results, out, supp, shim, jobs, force):
-    """Runs the tests of todo on jobs threads; returns the names of those that failed."""
+def run_all(todo, waits, fp, results, out, supp, shim, jobs, force):
+    """Runs the tests of todo on jobs threads, each after the tests it waits for; returns the names
+    of those that failed."""
     failed = []
     queue = list(todo)
-    qlock = threading.Lock()
+    qlock = threading.Condition()
+    finished = set()
+    prerequisites = {n for names in waits.values() for n in names}
 
     def worker():
         while True:
@@ -352,25 +390,34 @@ def run_all(todo, fp, results, out, supp, shim, jobs, force):
                 if not queue:
                     return
                 t = queue.pop(0)
-            if not force and results.clean(t["name"], fp.of(t)[0]):
-                continue
-            before, files_before = fp.of(t)  # what runs now (the build may have changed since the start)
-            code, wall, cpu, output = run_one(t, out, supp, shim)
-            after, _ = fp.of(t)
-            rec = record_of(t, before, files_before, code, wall, cpu, out)
-            if after != before:  # rebuilt while it ran: no result for either build
-                rec["status"], rec["fingerprint"] = "rebuilt while running", None
-            results.put(t["name"], rec)
-            ok = rec["status"] == "clean"
-            with qlock:
-                print(f"{'ok  ' if ok else 'FAIL'} {t['name']}: {rec['status']}, exit {code}, {rec['errors']} errors, "
-                      f"{rec['lost_bytes']} bytes lost, {wall:.0f} s wall, {cpu:.0f} s cpu", flush=True)
-                if not ok:
-                    failed.append(t["name"])
-                    for rep in rec["reports"]:
-                        print("     " + rep, flush=True)
-                    if rec["status"] not in ("memcheck",):
-                        sys.stdout.write(output[-2000:])
+                qlock.wait_for(lambda: all(n in finished for n in waits.get(t["name"], [])))
+            try:
+                run_test(t)
+            finally:
+                with qlock:
+                    finished.add(t["name"])
+                    qlock.notify_all()
+
+    def run_test(t):
+        if t["name"] not in prerequisites and not force and results.clean(t["name"], fp.of(t)[0]):
+            return
+        before, files_before = fp.of(t)  # what runs now (the build may have changed since the start)
+        code, wall, cpu, output = run_one(t, out, supp, shim)
+        after, _ = fp.of(t)
+        rec = record_of(t, before, files_before, code, wall, cpu, out)
+        if after != before:  # rebuilt while it ran: no result for either build
+            rec["status"], rec["fingerprint"] = "rebuilt while running", None
+        results.put(t["name"], rec)
+        ok = rec["status"] == "clean"
+        with qlock:
+            print(f"{'ok  ' if ok else 'FAIL'} {t['name']}: {rec['status']}, exit {code}, {rec['errors']} errors, "
+                  f"{rec['lost_bytes']} bytes lost, {wall:.0f} s wall, {cpu:.0f} s cpu", flush=True)
+            if not ok:
+                failed.append(t["name"])
+                for rep in rec["reports"]:
+                    print("     " + rep, flush=True)
+                if rec["status"] not in ("memcheck",):
+                    sys.stdout.write(output[-2000:])
 
     threads = [threading.Thread(target=worker, daemon=True) for _ in range(max(1, jobs))]
     for th in threads:
@@ -418,12 +465,13 @@ def main():
     cost_path = args.cost_data or os.path.join(build, "Testing", "Temporary", "CTestCostData.txt")
     tests = ordered(tests, args.order, cost_path)
     todo = [t for t in tests if args.force or not results.clean(t["name"], prints[t["name"]])]
+    todo, waits = with_prerequisites(todo, tests)
     signal.signal(signal.SIGTERM, stop)
     signal.signal(signal.SIGINT, stop)
     shim = build_shim(out)
     print(f"memcheck: {len(tests)} tests, {len(tests) - len(todo)} already clean, {len(todo)} to run; "
           f"logs and {RESULTS} in {out}", flush=True)
-    failed = run_all(todo, fp, results, out, supp, shim, args.j, args.force)
+    failed = run_all(todo, waits, fp, results, out, supp, shim, args.j, args.force)
     status = print_list(tests, prints, results, False)
     return 1 if failed else status
 
