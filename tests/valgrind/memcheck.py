@@ -8,8 +8,9 @@ Every test command ctest would run (the same arguments, folder and environment) 
 memcheck with --leak-check=full; a test fails when it fails on its own, when memcheck reports an
 invalid access, an uninitialised value used, a bad free, or a definite or indirect leak
 (possibly-lost and still-reachable blocks are not errors). Commands that are cmake -P scripts
-are run with --trace-children=yes, so the tools they start are checked too (cmake, sh, gnuplot
-and compilers themselves are skipped). The libFuzzer targets (label fuzz, except the replays,
+are run with --trace-children=yes, so the project's tools they start are checked too; programs
+in system folders (cmake, shells, compilers, nm, gnuplot, python) are not traced, and the
+check's own cmake does not count. The libFuzzer targets (label fuzz, except the replays,
 which gcc builds) carry AddressSanitizer and cannot run under valgrind; a sanitizer build
 cannot either: use a plain build (e.g. RelWithDebInfo). hwy_timer_shim.c is preloaded (valgrind
 3.19 cannot run libhwy's static initializer, which OpenImageIO pulls in). Suppressions: tests/valgrind/mesa.supp,
@@ -21,7 +22,8 @@ seconds, memcheck's error count, lost bytes and first reports), rewritten atomic
 test. A test already clean for the same fingerprint is skipped unless --force. The fingerprint is
 the sha256 of the command line, environment and folder, of every file the command names (the
 test executable, a cmake -P script and the tool it is given), of the build tree's shared libraries
-those executables load (ldd), and of the suppressions. Killing the script at any time (SIGINT,
+those executables load (ldd); not of the suppressions (adding an entry cannot make a clean test
+dirty; after removing or narrowing one, run with --force). Killing the script at any time (SIGINT,
 SIGTERM, even SIGKILL: the running valgrind gets SIGKILL when its parent dies) loses only the test
 being run, which stays pending. --list prints the clean / failed / pending counts and starts
 nothing. --order cost runs the cheapest tests first, by ctest's cost data
@@ -43,7 +45,10 @@ import threading
 import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
-SKIP_CHILDREN = "*/cmake,*/ctest,*/sh,*/bash,*/dash,*/gnuplot,*/cc,*/gcc,*/g++,*/c++,*/ld,*/collect2,*/cc1,*/as"
+# Programs outside the project (cmake, shells, compilers, nm, gnuplot, python, ...): the children
+# of a cmake -P check that are not traced, and the logs that do not count (the check's cmake)
+SYSTEM_DIRS = ("/usr/", "/bin/", "/sbin/", "/lib/", "/lib64/", "/opt/", "/snap/", sys.base_prefix.rstrip("/") + "/")
+SKIP_CHILDREN = ",".join(d + "*" for d in SYSTEM_DIRS)
 RESULTS = "results.json"
 # memcheck's report headlines, kept (deduplicated, at most MAX_REPORTS) as the error summary
 REPORT = re.compile(r"==\d+== ((?:Invalid (?:read|write|free)|Conditional jump|Use of uninitialised|Syscall param|"
@@ -161,7 +166,6 @@ class Fingerprints:
                         files[lib] = None
         if not os.path.isfile(test["command"][0]):
             return None, {}  # not built (EXE_NOT_BUILT)
-        files[self.supp] = None
         try:
             files = {f: self.file_hash(f) for f in sorted(files)}
         except OSError:
@@ -240,10 +244,12 @@ def run_one(test, out, supp, shim):
     log = os.path.join(out, test["name"] + ".log")
     scripted = os.path.basename(test["command"][0]) == "cmake"
     vg = ["valgrind", "--tool=memcheck", "--leak-check=full", "--show-leak-kinds=definite,indirect",
-          "--errors-for-leak-kinds=definite,indirect", "--error-exitcode=99", "--num-callers=40",
+          "--errors-for-leak-kinds=definite,indirect", "--num-callers=40",
           "--suppressions=" + supp, "--log-file=" + log + (".%p" if scripted else "")]
-    if scripted:
+    if scripted:  # the check's own verdict stands; memcheck's reports are counted from the logs
         vg += ["--trace-children=yes", "--trace-children-skip=" + SKIP_CHILDREN]
+    else:
+        vg += ["--error-exitcode=99"]
     env = dict(os.environ)
     for kv in test["env"]:
         k, _, v = kv.partition("=")
@@ -293,6 +299,9 @@ def summarize(out, name):
         text = open(path, errors="replace").read()
         if "Memcheck" not in text:
             continue  # a skipped child left an empty log
+        command = re.search(r"==\d+== Command: (\S+)", text)
+        if command and command.group(1).startswith(SYSTEM_DIRS):
+            continue  # a cmake -P check's cmake: not the project's code
         for m in re.finditer(r"ERROR SUMMARY: ([0-9,]+) errors", text):
             errors += int(m.group(1).replace(",", ""))
         for m in re.finditer(r"(definitely|indirectly) lost: ([0-9,]+) bytes", text):
