@@ -288,6 +288,12 @@ typedef struct tl_renderer_desc {
      *  refused set_scene it has no scene). 0: no budget
      *  beyond GL's own limits (docs/renderer-limits.md). */
     size_t max_target_bytes;
+    /** The most bytes one storage buffer binding of the renderer may hold: the frame's lights (64 B
+     *  each: this bounds the light count, see TL_RENDERER_MAX_LIGHTS), the tiled light lists and
+     *  the forward per-object light lists. 0 or more than GL_MAX_SHADER_STORAGE_BLOCK_SIZE: that
+     *  (128 MiB on llvmpipe; GL guarantees 16 MiB). A lower value lowers every limit that derives
+     *  from it (docs/renderer-limits.md). */
+    size_t max_storage_block_bytes;
     tl_get_proc_address_fn get_proc_address; /**< required */
     void *get_proc_address_user;       /**< passed to get_proc_address */
     tl_allocator allocator;            /**< zeroed: malloc/free; every allocation of the renderer */
@@ -493,8 +499,21 @@ TL_API const char *tl_renderer_last_error(const tl_renderer *r);
 
 /** Uploads a scene (geometry, materials, textures, lights), plans the frame from its features,
  *  allocates the plan's targets and compiles the shader permutations it needs (cached across
- *  calls, keyed by their defines). The scene may be freed afterwards. */
+ *  calls, keyed by their defines). The scene may be freed afterwards.
+ *  The renderer trusts that each array holds its count of elements; it checks the counts first,
+ *  before reading an array, allocating or calling GL: more than 2^32 - 1 vertices, objects,
+ *  materials or textures, more than 2^29 indices (a 2 GiB index buffer), or more than
+ *  TL_RENDERER_MAX_LIGHTS lights is TL_ERROR_LIMIT; a count whose array is NULL, an index count
+ *  or object range that is not whole triangles, an index >= vertex_count, an object whose index
+ *  range or material lies outside the arrays, or a non-finite position is
+ *  TL_ERROR_INVALID_ARGUMENT. A refused scene leaves the previous one in place. */
 TL_API tl_result tl_renderer_set_scene(tl_renderer *r, const tl_scene *scene);
+/** The most lights a scene or tl_renderer_set_lights may hold: 2^20, or fewer where the GL's
+ *  GL_MAX_SHADER_STORAGE_BLOCK_SIZE (or tl_renderer_desc.max_storage_block_bytes) holds fewer
+ *  lights of 64 bytes (16 MiB, GL's minimum: 262144). More is TL_ERROR_LIMIT naming both counts,
+ *  before anything is allocated; the renderer keeps its lights (docs/renderer-limits.md). */
+#define TL_RENDERER_MAX_LIGHTS (1u << 20)
+
 /** Replaces the lights only (same scene geometry); re-plans when the light types change. */
 TL_API tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t count);
 /** Changes the target size (a resized window): re-plans and reallocates the targets. */

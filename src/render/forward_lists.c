@@ -35,13 +35,18 @@ tl_result tl__forward_prepare(tl_renderer *r, const tl__view *v, tl__frame_recor
     tl__visible_lights(r, v, rec);
     size_t nvis = r->object_lists ? r->view_light_count : 0; /* Forward+ alone reads tile lists */
     /* lists: count first, then fill, into one index array */
-    size_t total = 0;
+    size_t total = 0, max_entries = r->storage_max / sizeof(uint32_t);
     for (size_t o = 0; o < r->object_count; o++) {
         uint32_t n = 0;
         for (size_t j = 0; j < nvis; j++) n += (uint32_t)tl__reaches(r->view_light_spheres[j], &r->objects[o]);
         r->fwd_first[o] = (uint32_t)total;
         r->fwd_count[o] = n;
         total += n;
+        if (total > max_entries) /* the lists are one storage block of 4-byte entries */
+            return tl__fail(r, TL_ERROR_LIMIT,
+                            "renderer: forward light lists need more than %zu entries (%zu objects, %zu visible "
+                            "lights), over the storage block of %zu bytes; fewer lights or the tiled strategy",
+                            max_entries, r->object_count, nvis, r->storage_max);
     }
     if (total > r->fwd_index_capacity) {
         size_t cap = r->fwd_index_capacity ? r->fwd_index_capacity : 1024;

@@ -65,6 +65,20 @@ static GLADapiproc tl__load_thunk(void *user, const char *name)
     return (GLADapiproc)r->desc.get_proc_address(r->desc.get_proc_address_user, name);
 }
 
+/* What one storage block may hold (GL's limit, or the descriptor's lower one; at most 4 GiB - 1,
+ * since the shaders index with uint), and so how many lights of 64 bytes the renderer takes. */
+static void tl__storage_limits(tl_renderer *r)
+{
+    GLint64 gl_max = 0;
+    r->gl.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &gl_max);
+    size_t m = gl_max > 0 ? (size_t)gl_max : (size_t)1 << 24; /* GL 4.3's minimum */
+    if (m > UINT32_MAX) m = UINT32_MAX;
+    if (r->desc.max_storage_block_bytes && r->desc.max_storage_block_bytes < m) m = r->desc.max_storage_block_bytes;
+    r->storage_max = m;
+    size_t lights = m / sizeof(tl__forward_light);
+    r->max_lights = lights < TL_RENDERER_MAX_LIGHTS ? lights : TL_RENDERER_MAX_LIGHTS;
+}
+
 static tl_result tl__create_objects(tl_renderer *r)
 {
     const GladGLContext *gl = &r->gl;
@@ -77,6 +91,7 @@ static tl_result tl__create_objects(tl_renderer *r)
     gl->GetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &ssbo_align);
     r->ubo_align = ubo_align > 16 ? (size_t)ubo_align : 16;
     r->ssbo_align = ssbo_align > 16 ? (size_t)ssbo_align : 16;
+    tl__storage_limits(r);
     r->state.reversed = r->desc.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
     tl__light_volumes_create(r);
     gl->CreateVertexArrays(1, &r->vao_empty);

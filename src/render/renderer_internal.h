@@ -154,6 +154,8 @@ struct tl_renderer {
     GladGLContext gl;
     tl__state state;
     size_t ubo_align, ssbo_align;
+    size_t storage_max; /* bytes one storage block binding may hold (GL's, or the descriptor's lower one) */
+    size_t max_lights;  /* TL_RENDERER_MAX_LIGHTS, or fewer when storage_max holds fewer */
 
     /* the plan and its GL objects (graph.c) */
     tl__plan plan;

@@ -1,6 +1,8 @@
 /* Scene upload: validation, geometry buffers, the per-object instance ids, textures (sRGB or linear
  * by use), the materials' uniform blocks, lights. The renderer plans the frame afterwards. */
 #include <math.h>
+#include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -72,11 +74,20 @@ void tl__scene_vao(tl_renderer *r)
     tl__gl_label(gl, GL_VERTEX_ARRAY, r->vao_scene, "vao.scene");
 }
 
+/* The light count against what the light buffers hold, before the array is read. */
+static tl_result tl__lights_count(tl_renderer *r, size_t count)
+{
+    if (count <= r->max_lights) return TL_OK;
+    return tl__fail(r, TL_ERROR_LIMIT,
+                    "renderer: %zu lights exceed the limit of %zu (TL_RENDERER_MAX_LIGHTS, or a storage block of %zu "
+                    "bytes at %zu bytes a light)", count, r->max_lights, r->storage_max, sizeof(tl__forward_light));
+}
+
 tl_result tl__lights_store(tl_renderer *r, const tl_light *lights, size_t count, size_t kinds[TL__LIGHT_KINDS])
 {
+    tl_result res = tl__lights_count(r, count);
+    if (res != TL_OK) return res;
     if (count && !lights) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: %zu lights but no array", count);
-    if (count > (size_t)1 << 20)
-        return tl__fail(r, TL_ERROR_LIMIT, "renderer: %zu lights exceed the limit of %u", count, 1u << 20);
     memset(kinds, 0, TL__LIGHT_KINDS * sizeof kinds[0]);
     for (size_t i = 0; i < count; i++) {
         const tl_light *l = &lights[i];
@@ -113,12 +124,57 @@ tl_result tl__lights_store(tl_renderer *r, const tl_light *lights, size_t count,
     return TL_OK;
 }
 
+/* Counts past what 32-bit indices, GL sizes and the light buffers take: checked before any array is
+ * read (the renderer trusts an array to hold its count, not the count to be sane). */
+static tl_result tl__scene_counts(tl_renderer *r, const tl_scene *s)
+{
+    const struct { size_t count, limit; const char *what; } c[] = {
+        {s->vertex_count, UINT32_MAX, "vertices (indices are 32-bit)"},
+        {s->vertex_count, (size_t)PTRDIFF_MAX / sizeof(tl_vertex), "vertices (their bytes overflow GLsizeiptr)"},
+        {s->index_count, TL__MAX_SCENE_INDICES, "indices (a 2 GiB index buffer)"},
+        {s->object_count, UINT32_MAX, "objects"},
+        {s->material_count, UINT32_MAX, "materials"},
+        {s->texture_count, UINT32_MAX - 1u, "textures"},
+    };
+    for (size_t i = 0; i < sizeof c / sizeof c[0]; i++)
+        if (c[i].count > c[i].limit)
+            return tl__fail(r, TL_ERROR_LIMIT, "renderer: %zu %s exceed the limit of %zu", c[i].count, c[i].what,
+                            c[i].limit);
+    size_t max_objects = r->storage_max / sizeof(tl__object_gpu); /* the frame's per-object storage block */
+    if (s->object_count > max_objects)
+        return tl__fail(r, TL_ERROR_LIMIT,
+                        "renderer: %zu objects exceed the limit of %zu (a storage block of %zu bytes at %zu bytes an "
+                        "object)", s->object_count, max_objects, r->storage_max, sizeof(tl__object_gpu));
+    const struct { size_t count; const void *array; const char *what; } a[] = {
+        {s->vertex_count, s->vertices, "vertices"}, {s->index_count, s->indices, "indices"},
+        {s->object_count, s->objects, "objects"},   {s->material_count, s->materials, "materials"},
+        {s->texture_count, s->textures, "textures"},
+    };
+    for (size_t i = 0; i < sizeof a / sizeof a[0]; i++)
+        if (a[i].count && !a[i].array)
+            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: %zu %s but no array", a[i].count, a[i].what);
+    if (s->index_count % 3)
+        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: %zu indices are not whole triangles", s->index_count);
+    return TL_OK;
+}
+
 tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s)
 {
-    if ((s->vertex_count && !s->vertices) || (s->index_count && !s->indices) || (s->object_count && !s->objects) ||
-        (s->material_count && !s->materials) || (s->texture_count && !s->textures) || s->index_count % 3 ||
-        s->vertex_count > UINT32_MAX || s->index_count > ((size_t)1 << 31) / 4)
-        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: inconsistent scene arrays");
+    tl_result res = tl__scene_counts(r, s);
+    if (res != TL_OK) return res;
+    if ((res = tl__lights_count(r, s->light_count)) != TL_OK) return res;
+    for (size_t i = 0; i < s->object_count; i++) {
+        const tl_object *o = &s->objects[i];
+        if ((uint64_t)o->first_index + o->index_count > s->index_count || o->material >= s->material_count)
+            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
+                            "renderer: object %zu draws indices %u..%llu or material %u, outside the scene's %zu "
+                            "indices and %zu materials", i, o->first_index,
+                            (unsigned long long)o->first_index + o->index_count, o->material, s->index_count,
+                            s->material_count);
+        if (o->index_count % 3)
+            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: object %zu draws %u indices, not whole triangles",
+                            i, o->index_count);
+    }
     for (size_t i = 0; i < s->index_count; i++)
         if (s->indices[i] >= s->vertex_count)
             return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: index %zu (%u) is out of range (%zu vertices)", i,
@@ -127,12 +183,6 @@ tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s)
         for (int k = 0; k < 3; k++)
             if (!isfinite(s->vertices[i].position[k]))
                 return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: vertex %zu has a non-finite position", i);
-    for (size_t i = 0; i < s->object_count; i++) {
-        const tl_object *o = &s->objects[i];
-        if ((size_t)o->first_index + o->index_count > s->index_count || o->material >= s->material_count)
-            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
-                            "renderer: object %zu has an index range or material out of range", i);
-    }
     return TL_OK;
 }
 

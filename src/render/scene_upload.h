@@ -5,6 +5,11 @@
 #include "plan_internal.h"
 #include "renderer_internal.h"
 
+/* The most indices a scene may have: a 2 GiB index buffer (GLsizei draw counts, 32-bit GLsizeiptr). */
+#define TL__MAX_SCENE_INDICES ((size_t)1 << 29)
+
+/* Counts first (TL_ERROR_LIMIT past 32-bit indices, GL sizes, the light limit), then arrays, ranges
+ * and index values (TL_ERROR_INVALID_ARGUMENT); reads nothing an array's count does not vouch for. */
 tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s);
 /* Objects, materials, textures and geometry buffers; the scene's features into r->features. */
 tl_result tl__scene_upload(tl_renderer *r, const tl_scene *s);

@@ -9,6 +9,12 @@
 
 #define TL__TILE_HEADER_BYTES(lists) (16u + 8u * (size_t)(lists))
 
+/* The light-cull dispatch, (tiles / 8) x (tiles / 8) x chunks, and the tiled shading's (side / 8)^2
+ * stay within GL's guaranteed GL_MAX_COMPUTE_WORK_GROUP_COUNT of 65535 per dimension: a 16384-pixel
+ * side (8-pixel tiles) and TL_RENDERER_MAX_LIGHTS lights in chunks of TL__CULL_CHUNK. */
+_Static_assert((TL_RENDERER_MAX_LIGHTS + TL__CULL_CHUNK - 1) / TL__CULL_CHUNK <= 65535, "light-cull chunks");
+_Static_assert((16384 + 7) / 8 <= 65535, "compute groups across a side");
+
 static size_t tl__tile_count(const tl__tiles *t) { return (size_t)t->x * t->y; }
 
 void tl__tiles_release(tl_renderer *r)
@@ -35,11 +41,17 @@ static tl_result tl__tiles_entries(tl_renderer *r, size_t capacity)
     return TL_OK;
 }
 
-/* The headers: counters, then (first entry, count) per tile for each of `chunks` light chunks. */
+/* The headers: counters, then (first entry, count) per tile for each of `chunks` light chunks. One
+ * storage block: TL_ERROR_LIMIT past it (a huge frame with many lights in view). */
 static tl_result tl__tiles_headers(tl_renderer *r, uint32_t chunks)
 {
     const GladGLContext *gl = &r->gl;
     tl__tiles *t = &r->tiles;
+    size_t bytes = TL__TILE_HEADER_BYTES(tl__tile_count(t) * chunks);
+    if (bytes > r->storage_max)
+        return tl__fail(r, TL_ERROR_LIMIT,
+                        "renderer: tiled light lists of %ux%u tiles for %u chunks of %u lights need %zu bytes, over the "
+                        "storage block of %zu bytes", t->x, t->y, chunks, TL__CULL_CHUNK, bytes, r->storage_max);
     if (t->headers) gl->DeleteBuffers(1, &t->headers); /* queued frames keep what they read */
     gl->CreateBuffers(1, &t->headers);
     gl->NamedBufferStorage(t->headers, (GLsizeiptr)TL__TILE_HEADER_BYTES(tl__tile_count(t) * chunks), NULL,
@@ -58,14 +70,16 @@ tl_result tl__tiles_create(tl_renderer *r, uint32_t size, uint32_t x, uint32_t y
     t->size = size;
     t->x = x;
     t->y = y;
-    tl__tiles_headers(r, 1);
+    tl_result res = tl__tiles_headers(r, 1);
+    if (res != TL_OK) return res;
     const GLbitfield flags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
     gl->CreateBuffers(1, &t->readback);
     gl->NamedBufferStorage(t->readback, TL__QUERY_RING * 16, NULL, flags);
     t->readback_map = (const uint32_t *)gl->MapNamedBufferRange(t->readback, 0, TL__QUERY_RING * 16, flags);
     tl__gl_label(gl, GL_BUFFER, t->readback, "buffer.tiles.readback");
     if (!t->readback_map) return tl__fail(r, TL_ERROR_GL, "renderer: could not map the tile counters' read-back");
-    return tl__tiles_entries(r, capacity);
+    size_t max_entries = r->storage_max / sizeof(uint32_t);
+    return tl__tiles_entries(r, capacity < max_entries ? capacity : max_entries);
 }
 
 /* Counters of `frame` once the GPU has finished it: 1 with them in out[4], 0 when not (yet). */
@@ -91,10 +105,22 @@ static tl_result tl__tiles_grow(tl_renderer *r)
     }
     size_t local = r->view_light_count - r->view_dir_count;
     t->frame_chunks = local > TL__CULL_CHUNK ? (uint32_t)((local + TL__CULL_CHUNK - 1) / TL__CULL_CHUNK) : 1u;
-    if (t->frame_chunks > t->chunks) tl__tiles_headers(r, t->frame_chunks);
-    if (t->needed <= t->capacity) return TL_OK;
+    if (t->frame_chunks > t->chunks) {
+        tl_result res = tl__tiles_headers(r, t->frame_chunks);
+        if (res != TL_OK) return res;
+    }
+    /* the entries are one storage block: they grow up to it; past it, the tiles whose lists do not
+     * fit loop over every light of their chunk (a documented clamp: slower, nothing lost) */
+    size_t max_entries = r->storage_max / sizeof(uint32_t);
+    if (t->needed <= t->capacity || t->capacity >= max_entries) return TL_OK;
     size_t cap = t->capacity;
-    while (cap < t->needed + t->needed / 2) cap *= 2;
+    while (cap < t->needed + t->needed / 2 && cap < max_entries) cap *= 2;
+    if (cap > max_entries) {
+        cap = max_entries;
+        tl__log_message(&r->log, TL_LOG_WARNING,
+                "renderer: tiled light lists need %zu entries; the storage block holds %zu: tiles that do not fit "
+                "loop over every light", t->needed, max_entries);
+    }
     return tl__tiles_entries(r, cap);
 }
 
