@@ -270,7 +270,9 @@ static void tl__output_defines(uint32_t writes, char *out, size_t size)
         }
 }
 
-static void tl__programs(const tl__plan_input *in, tl__plan *p)
+/* Each planned program with its permutation; TL_ERROR_LIMIT if its switches do not fit
+ * tl_plan_program.defines (a missing #define would build the wrong program silently). */
+static tl_result tl__programs(const tl__plan_input *in, tl__plan *p)
 {
     tl_frame_plan *fp = &p->pub;
     for (size_t i = 0; i < fp->pass_count; i++) {
@@ -287,10 +289,12 @@ static void tl__programs(const tl__plan_input *in, tl__plan *p)
             pr->pass = def->id;
             pr->slot = s;
             snprintf(pr->name, sizeof pr->name, "%s", def->programs[s].name);
-            snprintf(pr->defines, sizeof pr->defines, "%s%s%s", outs, outs[0] && defs.slot[s][0] ? " " : "",
-                     defs.slot[s]);
+            int n = snprintf(pr->defines, sizeof pr->defines, "%s%s%s", outs, outs[0] && defs.slot[s][0] ? " " : "",
+                             defs.slot[s]);
+            if (n < 0 || (size_t)n >= sizeof pr->defines) return TL_ERROR_LIMIT;
         }
     }
+    return TL_OK;
 }
 
 tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_set *features, const tl__app_pass *apps,
@@ -322,7 +326,8 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     tl__cull_passes(p, TL__BIT(TL_TARGET_OUTPUT));
     tl__lifetimes(p, &d, kept);
     tl__share_memory(p);
-    tl__programs(&in, p);
+    tl_result r = tl__programs(&in, p);
+    if (r != TL_OK) return r;
     p->pub.vertex_attributes = TL_ATTRIBUTE_POSITION | TL_ATTRIBUTE_NORMAL;
     if (in.f.has_textures) p->pub.vertex_attributes |= TL_ATTRIBUTE_UV;
     if (in.f.has_normal_maps) p->pub.vertex_attributes |= TL_ATTRIBUTE_TANGENT;
