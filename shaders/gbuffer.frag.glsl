@@ -13,14 +13,22 @@ layout(location = TL_OUT_RT0) out vec4 o_rt0;
 #ifdef TL_OUT_RT1
 layout(location = TL_OUT_RT1) out vec4 o_rt1;
 #endif
-#ifdef TL_OUT_FAT_POSITION
+// Each fat target on its own: the plan drops the ones no later pass reads (with SSAO or
+// reflections but no lights, position and normal are read and albedo is not).
+#if defined(TL_OUT_FAT_POSITION) || defined(TL_OUT_FAT_NORMAL) || defined(TL_OUT_FAT_ALBEDO)
 #define TL_OUT_FAT
+#endif
+#ifdef TL_OUT_FAT_POSITION
 layout(location = TL_OUT_FAT_POSITION) out vec4 o_position;
+#endif
+#ifdef TL_OUT_FAT_NORMAL
 layout(location = TL_OUT_FAT_NORMAL) out vec4 o_normal;
+#endif
+#ifdef TL_OUT_FAT_ALBEDO
 layout(location = TL_OUT_FAT_ALBEDO) out vec4 o_albedo;
+#endif
 #ifdef TL_OUT_FAT_MATERIAL
 layout(location = TL_OUT_FAT_MATERIAL) out vec4 o_material;
-#endif
 #endif
 #ifdef TL_OUT_HDR
 layout(location = TL_OUT_HDR) out vec4 o_hdr;
@@ -59,17 +67,21 @@ void main()
     o_rt1 = vec4(float(yc.x), float(yc.y), float(spec), 0.0) / 255.0;
 #endif
 #endif
-#ifdef TL_OUT_FAT
+#ifdef TL_OUT_FAT_POSITION
     o_position = vec4(v_view_position, 1.0);
+#endif
+#ifdef TL_OUT_FAT_NORMAL
     o_normal = vec4(n, s.gloss);
+#endif
+#ifdef TL_OUT_FAT_ALBEDO
 #ifdef TL_AO_STORE
     o_albedo = vec4(s.albedo, s.occlusion); // for ssao-apply
 #else
     o_albedo = vec4(s.albedo, 1.0);
 #endif
+#endif
 #ifdef TL_OUT_FAT_MATERIAL
     o_material = vec4(s.specular, 0.0);
-#endif
 #endif
 #ifdef TL_OUT_HDR
     o_hdr = vec4(min(s.albedo * u_ambient * s.occlusion + s.emissive, vec3(65504.0)), 1.0);

@@ -19,8 +19,8 @@ static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, 
 static const tl_depth_format depths[] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
 
 /* A floor y = 0 (object 0, black mirror) and an emissive quad x in [-2, 2], y in [1, 3] at
- * z = -8 facing +z (object 1). One point light far below the floor reaches nothing (fat mode
- * needs a light pass: without one its G-buffer program fails to compile, a bug left alone here). */
+ * z = -8 facing +z (object 1). One point light far below the floor reaches nothing
+ * (ssr_and_ssao_without_lights_in_every_mode drops it). */
 typedef struct mirror_scene {
     tl_vertex v[8];
     uint32_t idx[12];
@@ -269,4 +269,32 @@ TL_TEST(ssr_rays_off_screen_or_to_background_add_nothing_no_nan)
                 free(h);
                 tl_renderer_destroy(r);
             }
+}
+
+/* A scene without lights plans no light pass, so fat's G-buffer writes only the targets SSAO and
+ * reflections read (position, normal) and not albedo: each output is declared on its own
+ * (the program failed to compile when they were declared together). The quad's reflection is
+ * still there: it comes from HDR (emissive), not from lights. */
+TL_TEST(ssr_and_ssao_without_lights_in_every_mode)
+{
+    mirror_scene m;
+    mirror(&m, 1.5f);
+    m.s.light_count = 0;
+    m.s.lights = NULL;
+    for (size_t md = 0; md < sizeof modes / sizeof modes[0]; md++)
+        for (int fx = 0; fx < 3; fx++) {
+            tl_renderer_desc d = {.width = W, .height = H, .mode = modes[md]};
+            if (fx != 1) d.ssr.enabled = 1;
+            if (fx != 0) d.ssao.method = TL_SSAO_HEMISPHERE;
+            tl_renderer *r = render(&m.s, d);
+            TL_CHECK(r != NULL);
+            float *t = r && d.ssr.enabled ? read_target(r, TL_TARGET_SSR, (size_t)W * H) : NULL;
+            size_t lit = 0;
+            for (size_t i = 0; t && i < (size_t)W * H; i++) lit += t[4 * i] > 0.0f;
+            printf("  %s, %s%s, no lights: %s, %zu reflecting pixels\n", tl_render_mode_name(modes[md]),
+                   d.ssr.enabled ? "ssr " : "", d.ssao.method ? "ssao" : "", r ? "rendered" : "FAILED", lit);
+            if (d.ssr.enabled) TL_CHECK(lit > 100);
+            free(t);
+            tl_renderer_destroy(r);
+        }
 }
