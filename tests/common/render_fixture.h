@@ -5,6 +5,9 @@
 #define TL_RENDER_FIXTURE_H
 
 #include "thinlight/context.h"
+#include "thinlight/renderer.h"
+
+#include <stddef.h>
 
 extern tl_context *g_ctx;
 
@@ -14,6 +17,13 @@ extern const tl_logger tl_test_logger;
 /* 1 when g_ctx exists (creating it on the first call, with the GL debug callback below), 0 after
  * a message on stderr. */
 int ensure_context(void);
+
+/* A renderer on g_ctx for `d` (every target kept, g_ctx's loader, the test logger) with scene `s`
+ * set and one frame rendered and waited for; NULL when any step fails (its message logged). */
+tl_renderer *tl_test_render_once(const tl_scene *s, tl_renderer_desc d);
+/* The RGBA float pixels (n of them, rows bottom-up) of a target, malloc'd; NULL when it cannot be
+ * read. */
+float *tl_test_read_target(tl_renderer *r, tl_target_id id, size_t n);
 
 /* ---- GL errors (gl_debug.c) ------------------------------------------------------------------
  * On g_ctx a synchronous KHR_debug callback follows the debug groups (the renderer pushes one per

@@ -94,35 +94,6 @@ static void wall_scene(quads *q, float dist)
 
 /* ---- rendering and readback ---------------------------------------------------------------------- */
 
-static tl_renderer *render(const tl_scene *s, tl_renderer_desc d)
-{
-    if (!ensure_context()) return NULL;
-    d.keep_targets = TL_TARGETS_ALL;
-    d.get_proc_address = tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
-    d.logger = tl_test_logger;
-    tl_renderer *r = NULL;
-    if (tl_renderer_create(&d, &r) != TL_OK) return NULL;
-    if (tl_renderer_set_scene(r, s) != TL_OK || tl_renderer_render(r, NULL, NULL) != TL_OK ||
-        tl_renderer_wait(r, NULL) != TL_OK) {
-        tl_renderer_destroy(r);
-        return NULL;
-    }
-    return r;
-}
-
-/* RGBA float pixels of a target, rows bottom-up; NULL when it cannot be read. */
-static float *read_target(tl_renderer *r, tl_target_id id, size_t n)
-{
-    size_t size = n * 4 * sizeof(float);
-    float *p = malloc(size);
-    if (p && tl_renderer_read_target(r, id, p, &size) != TL_OK) {
-        free(p);
-        return NULL;
-    }
-    return p;
-}
-
 /* The pixel a world point falls in (camera and projection as the renderer builds them); 0 when it
  * is outside the image. */
 static int project(const tl_camera *c, uint32_t w, uint32_t h, const double p[3], int *x, int *y)
@@ -227,10 +198,10 @@ TL_TEST(ssao_open_plane_is_one)
             for (size_t z = 0; z < 2; z++) {
                 tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m], .depth_format = depths[z]};
                 d.ssao.method = (tl_ssao_method)method;
-                tl_renderer *r = render(&q.s, d);
+                tl_renderer *r = tl_test_render_once(&q.s, d);
                 TL_CHECK(r);
                 if (!r) continue;
-                float *ao = read_target(r, TL_TARGET_AO, (size_t)W * H), *raw = read_target(r, TL_TARGET_AO_RAW, (size_t)W * H);
+                float *ao = tl_test_read_target(r, TL_TARGET_AO, (size_t)W * H), *raw = tl_test_read_target(r, TL_TARGET_AO_RAW, (size_t)W * H);
                 TL_CHECK(ao && raw);
                 double lo = 1.0;
                 for (size_t i = 0; ao && raw && i < (size_t)W * H; i++) {
@@ -258,10 +229,10 @@ TL_TEST(ssao_inner_corner_darkens_bounded)
         for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
             tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m]};
             d.ssao = (tl_ssao_desc){.method = (tl_ssao_method)method, .radius = radius, .falloff = radius};
-            tl_renderer *r = render(&q.s, d);
+            tl_renderer *r = tl_test_render_once(&q.s, d);
             TL_CHECK(r);
             if (!r) continue;
-            float *ao = read_target(r, TL_TARGET_AO, (size_t)W * H);
+            float *ao = tl_test_read_target(r, TL_TARGET_AO, (size_t)W * H);
             TL_CHECK(ao);
             double corner = 1.0, open = 1.0;
             for (int k = 0; ao && k <= 40; k++) {
@@ -299,11 +270,11 @@ TL_TEST(effects_finite_tiny_targets_and_extreme_depth)
                 d.ssao.method = fi ? TL_SSAO_HEMISPHERE : TL_SSAO_DISC;
                 d.fog = (tl_fog_desc){.mode = fi ? TL_FOG_HEIGHT : TL_FOG_DISTANCE, .noise = 0.5f, .color = {1, 1, 1}};
                 d.dof.enabled = 1;
-                tl_renderer *r = render(&q.s, d);
+                tl_renderer *r = tl_test_render_once(&q.s, d);
                 TL_CHECK(r);
                 if (!r) continue;
                 size_t n = (size_t)d.width * d.height, bad = 0;
-                float *ao = read_target(r, TL_TARGET_AO, n), *hdr = read_target(r, TL_TARGET_HDR, n);
+                float *ao = tl_test_read_target(r, TL_TARGET_AO, n), *hdr = tl_test_read_target(r, TL_TARGET_HDR, n);
                 TL_CHECK(ao && hdr);
                 for (size_t i = 0; ao && hdr && i < n; i++) {
                     bad += !(ao[i * 4] >= 0.0f && ao[i * 4] <= 1.0f);
@@ -332,12 +303,12 @@ TL_TEST(fog_known_depth_matches_formula_infinite_far_finite)
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
         for (size_t z = 0; z < 2; z++) {
             tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m], .depth_format = depths[z]};
-            tl_renderer *plain = render(&q.s, d);
+            tl_renderer *plain = tl_test_render_once(&q.s, d);
             d.fog = (tl_fog_desc){.mode = TL_FOG_DISTANCE, .density = density, .color = {fog[0], fog[1], fog[2]}};
-            tl_renderer *fogged = render(&q.s, d);
+            tl_renderer *fogged = tl_test_render_once(&q.s, d);
             TL_CHECK(plain && fogged);
             if (!plain || !fogged) continue;
-            float *a = read_target(plain, TL_TARGET_HDR, (size_t)W * H), *b = read_target(fogged, TL_TARGET_HDR, (size_t)W * H);
+            float *a = tl_test_read_target(plain, TL_TARGET_HDR, (size_t)W * H), *b = tl_test_read_target(fogged, TL_TARGET_HDR, (size_t)W * H);
             TL_CHECK(a && b);
             double worst = 0.0, t = tan(0.5), aspect = (double)W / H;
             for (int y = 0; a && b && y < H; y++)
@@ -362,8 +333,8 @@ TL_TEST(fog_known_depth_matches_formula_infinite_far_finite)
         }
     /* looking away from the wall: background at the infinite far plane */
     q.s.camera.target[2] = 10.0f;
-    tl_renderer *r = render(&q.s, (tl_renderer_desc){.width = 8, .height = 8, .fog = {.mode = TL_FOG_DISTANCE, .color = {fog[0], fog[1], fog[2]}}});
-    float *h = r ? read_target(r, TL_TARGET_HDR, 64) : NULL;
+    tl_renderer *r = tl_test_render_once(&q.s, (tl_renderer_desc){.width = 8, .height = 8, .fog = {.mode = TL_FOG_DISTANCE, .color = {fog[0], fog[1], fog[2]}}});
+    float *h = r ? tl_test_read_target(r, TL_TARGET_HDR, 64) : NULL;
     TL_CHECK(h);
     for (size_t i = 0; h && i < 64; i++)
         for (int c = 0; c < 3; c++) TL_CHECK(fabs(h[i * 4 + c] - fog[c]) <= fog[c] * TL_HALF_REL_STEP);
@@ -385,16 +356,16 @@ TL_TEST(dof_focus_plane_unchanged)
     q.s.light_count = 1;
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
         tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m]};
-        tl_renderer *plain = render(&q.s, d);
+        tl_renderer *plain = tl_test_render_once(&q.s, d);
         d.dof = (tl_dof_desc){.enabled = 1, .aperture = 0.02f};
-        tl_renderer *focused = render(&q.s, d);
+        tl_renderer *focused = tl_test_render_once(&q.s, d);
         d.dof.focus_distance = 5.0f;
-        tl_renderer *near = render(&q.s, d);
+        tl_renderer *near = tl_test_render_once(&q.s, d);
         TL_CHECK(plain && focused && near);
         if (!plain || !focused || !near) continue;
         size_t n = (size_t)W * H;
-        float *a = read_target(plain, TL_TARGET_HDR, n), *b = read_target(focused, TL_TARGET_HDR, n),
-              *c = read_target(near, TL_TARGET_HDR, n);
+        float *a = tl_test_read_target(plain, TL_TARGET_HDR, n), *b = tl_test_read_target(focused, TL_TARGET_HDR, n),
+              *c = tl_test_read_target(near, TL_TARGET_HDR, n);
         TL_CHECK(a && b && c);
         size_t changed = 0, blurred = 0;
         for (size_t i = 0; a && b && c && i < n * 4; i++) {
@@ -428,8 +399,8 @@ TL_TEST(dof_target_alpha_is_the_circle_of_confusion)
                 tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m],
                                       .dof = {.enabled = 1, .aperture = aperture, .max_radius = largest[l],
                                               .focus_distance = focus[f], .samples = 8}};
-                tl_renderer *r = render(&q.s, d);
-                float *t = r ? read_target(r, TL_TARGET_DOF, (size_t)W * H) : NULL;
+                tl_renderer *r = tl_test_render_once(&q.s, d);
+                float *t = r ? tl_test_read_target(r, TL_TARGET_DOF, (size_t)W * H) : NULL;
                 TL_CHECK(t != NULL);
                 double want = fmin(aperture * fabs(10.0 - focus[f]) / 10.0, largest[l]) * H, worst = 0.0;
                 for (size_t i = 0; t && i < (size_t)W * H; i++) worst = fmax(worst, fabs(t[4 * i + 3] - want));

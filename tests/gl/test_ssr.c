@@ -71,33 +71,7 @@ static void mirror(mirror_scene *m, float cam_y)
     m->s.camera = (tl_camera){{0, cam_y, 4}, {0, 0.5f, -8}, {0, 1, 0}, 1.0f, 0.1f, 0.0f};
 }
 
-static tl_renderer *render(const tl_scene *s, tl_renderer_desc d)
-{
-    if (!ensure_context()) return NULL;
-    d.keep_targets = TL_TARGETS_ALL;
-    d.get_proc_address = tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
-    d.logger = tl_test_logger;
-    tl_renderer *r = NULL;
-    if (tl_renderer_create(&d, &r) != TL_OK) return NULL;
-    if (tl_renderer_set_scene(r, s) != TL_OK || tl_renderer_render(r, NULL, NULL) != TL_OK ||
-        tl_renderer_wait(r, NULL) != TL_OK) {
-        tl_renderer_destroy(r);
-        return NULL;
-    }
-    return r;
-}
 
-static float *read_target(tl_renderer *r, tl_target_id id, size_t n)
-{
-    size_t size = n * 4 * sizeof(float);
-    float *p = malloc(size);
-    if (p && tl_renderer_read_target(r, id, p, &size) != TL_OK) {
-        free(p);
-        return NULL;
-    }
-    return p;
-}
 
 /* The camera's basis and the pixel of a world point, as the renderer projects it (double). */
 typedef struct basis {
@@ -162,8 +136,8 @@ TL_TEST(ssr_mirror_floor_reflects_quad_at_mirrored_position)
         for (size_t z = 0; z < 2; z++) {
             tl_renderer_desc d = {.width = W, .height = H, .mode = modes[md], .depth_format = depths[z],
                                   .ssr = {.enabled = 1, .steps = 64, .max_distance = 20.0f, .thickness = 0.5f}};
-            tl_renderer *r = render(&m.s, d);
-            float *t = r ? read_target(r, TL_TARGET_SSR, (size_t)W * H) : NULL;
+            tl_renderer *r = tl_test_render_once(&m.s, d);
+            float *t = r ? tl_test_read_target(r, TL_TARGET_SSR, (size_t)W * H) : NULL;
             TL_CHECK(t != NULL);
             size_t inside = 0, hit = 0, outside = 0, stray = 0;
             double worst = 0.0;
@@ -217,7 +191,7 @@ TL_TEST(ssr_off_plans_nothing_and_changes_no_byte)
         for (size_t i = 0; i < c.pass_count; i++) has_c |= c.passes[i].pass == TL_PASS_SSR || c.passes[i].pass == TL_PASS_SSR_APPLY;
         TL_CHECK(!has_a && !(a.targets & TL_TARGET_BIT(TL_TARGET_SSR)));
         TL_CHECK(has_c == (all[md] != TL_MODE_FORWARD));
-        tl_renderer *r0 = render(&m.s, plain), *r1 = render(&m.s, off);
+        tl_renderer *r0 = tl_test_render_once(&m.s, plain), *r1 = tl_test_render_once(&m.s, off);
         uint8_t o0[64 * 36 * 4], o1[64 * 36 * 4];
         size_t s0 = sizeof o0, s1 = sizeof o1;
         TL_CHECK(r0 && r1 && tl_renderer_read_output(r0, o0, &s0) == TL_OK && tl_renderer_read_output(r1, o1, &s1) == TL_OK);
@@ -237,8 +211,8 @@ TL_TEST(ssr_rays_off_screen_or_to_background_add_nothing_no_nan)
     mirror(&m, 1.5f);
     m.s.camera.target[1] = -6.0f; /* looking down: the emissive quad and its mirror image are off the screen */
     for (size_t md = 0; md < sizeof modes / sizeof modes[0]; md++) {
-        tl_renderer *r = render(&m.s, (tl_renderer_desc){.width = W, .height = H, .mode = modes[md], .ssr = {.enabled = 1}});
-        float *t = r ? read_target(r, TL_TARGET_SSR, (size_t)W * H) : NULL;
+        tl_renderer *r = tl_test_render_once(&m.s, (tl_renderer_desc){.width = W, .height = H, .mode = modes[md], .ssr = {.enabled = 1}});
+        float *t = r ? tl_test_read_target(r, TL_TARGET_SSR, (size_t)W * H) : NULL;
         TL_CHECK(t != NULL);
         size_t nonzero = 0;
         for (size_t i = 0; t && i < (size_t)W * H * 4; i++) nonzero += t[i] != 0.0f;
@@ -258,9 +232,9 @@ TL_TEST(ssr_rays_off_screen_or_to_background_add_nothing_no_nan)
                 tl_renderer_desc d = {.width = sizes[sz][0], .height = sizes[sz][1], .mode = modes[md],
                                       .depth_format = TL_DEPTH_FORMAT_D32F_REVERSED,
                                       .ssr = {.enabled = 1, .intensity = 1e4f}};
-                tl_renderer *r = render(&m.s, d);
+                tl_renderer *r = tl_test_render_once(&m.s, d);
                 size_t n = (size_t)sizes[sz][0] * sizes[sz][1];
-                float *t = r ? read_target(r, TL_TARGET_SSR, n) : NULL, *h = r ? read_target(r, TL_TARGET_HDR, n) : NULL;
+                float *t = r ? tl_test_read_target(r, TL_TARGET_SSR, n) : NULL, *h = r ? tl_test_read_target(r, TL_TARGET_HDR, n) : NULL;
                 TL_CHECK(t && h);
                 size_t bad = 0;
                 for (size_t i = 0; t && h && i < n * 4; i++) bad += !isfinite(t[i]) || !isfinite(h[i]);
@@ -286,9 +260,9 @@ TL_TEST(ssr_and_ssao_without_lights_in_every_mode)
             tl_renderer_desc d = {.width = W, .height = H, .mode = modes[md]};
             if (fx != 1) d.ssr.enabled = 1;
             if (fx != 0) d.ssao.method = TL_SSAO_HEMISPHERE;
-            tl_renderer *r = render(&m.s, d);
+            tl_renderer *r = tl_test_render_once(&m.s, d);
             TL_CHECK(r != NULL);
-            float *t = r && d.ssr.enabled ? read_target(r, TL_TARGET_SSR, (size_t)W * H) : NULL;
+            float *t = r && d.ssr.enabled ? tl_test_read_target(r, TL_TARGET_SSR, (size_t)W * H) : NULL;
             size_t lit = 0;
             for (size_t i = 0; t && i < (size_t)W * H; i++) lit += t[4 * i] > 0.0f;
             printf("  %s, %s%s, no lights: %s, %zu reflecting pixels\n", tl_render_mode_name(modes[md]),
