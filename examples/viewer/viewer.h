@@ -33,6 +33,7 @@ typedef enum vw_view {
     VW_VIEW_AO,             /* SSAO after the depth-aware blur (ao), what the frame applies */
     VW_VIEW_DOF_COC,        /* depth of field: circle of confusion radius (dof target alpha), heat scale */
     VW_VIEW_SSR,            /* screen-space reflections: the term added to HDR (ssr target) */
+    VW_VIEW_BLOOM,          /* bloom: the glow the tone-map pass adds to HDR (bloom target, first level) */
     VW_VIEW_COUNT
 } vw_view;
 

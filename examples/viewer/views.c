@@ -424,6 +424,45 @@ static int vw_view_ssr(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_
     return 0;
 }
 
+/* img (w x h RGBA floats, rows bottom to top) at texel coordinates (u, v), bilinear with edges
+ * clamped, as GL's linear filter samples it. */
+static void vw_bilinear(const float *img, uint32_t w, uint32_t h, float u, float v, float c[3])
+{
+    int x0 = (int)floorf(u), y0 = (int)floorf(v);
+    float fx = u - (float)x0, fy = v - (float)y0;
+    int xs[2] = {x0 < 0 ? 0 : x0, x0 + 1 > (int)w - 1 ? (int)w - 1 : x0 + 1};
+    int ys[2] = {y0 < 0 ? 0 : y0, y0 + 1 > (int)h - 1 ? (int)h - 1 : y0 + 1};
+    for (int i = 0; i < 3; i++) {
+        float row[2];
+        for (int j = 0; j < 2; j++) {
+            const float *p = img + 4 * (size_t)ys[j] * w + i;
+            row[j] = p[4 * xs[0]] * (1 - fx) + p[4 * xs[1]] * fx;
+        }
+        c[i] = row[0] * (1 - fy) + row[1] * fy;
+    }
+}
+
+/* The bloom the tone-map pass adds to HDR: the chain's first level (half size) sampled at each
+ * pixel's centre as that pass's textureLod does, times intensity and exposure, x / (1 + x). */
+static int vw_view_bloom(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    if (!app->desc.bloom.enabled) return vw_unavailable(app, "bloom is off (--bloom, or the Effects panel)");
+    const float *b = vw_read(app, r, TL_TARGET_BLOOM, 0);
+    if (!b) return vw_unavailable(app, "no bloom target in this plan");
+    const tl_plan_target *t = &app->plan.target_info[TL_TARGET_BLOOM];
+    float k = app->desc.bloom.intensity > 0 ? app->desc.bloom.intensity : 0.5f; /* tl_bloom_desc's default */
+    k *= app->desc.exposure > 0 ? app->desc.exposure : 1.0f;
+    float sx = (float)t->width / (float)app->width, sy = (float)t->height / (float)app->height;
+    for (uint32_t y = 0; y < app->height; y++)
+        for (uint32_t x = 0; x < app->width; x++) {
+            float c[3];
+            vw_bilinear(b, t->width, t->height, ((float)x + 0.5f) * sx - 0.5f, ((float)y + 0.5f) * sy - 0.5f, c);
+            vw_put_hdr(out + 4 * ((size_t)y * app->width + x), k, c[0], c[1], c[2], 1);
+        }
+    return 0;
+}
+
 /* ---- legends -------------------------------------------------------------------------------- */
 
 static void vw_grey(float t, uint8_t rgb[3]) { rgb[0] = rgb[1] = rgb[2] = vw_u8(t); }
@@ -512,6 +551,8 @@ static const vw_view_def vw_view_table[VW_VIEW_COUNT] = {
     [VW_VIEW_DOF_COC] = {"dof-coc", "depth of field: circle of confusion radius in pixels, heat scale",
                          vw_view_dof_coc, vw_legend_coc},
     [VW_VIEW_SSR] = {"ssr", "screen-space reflections: the term added to HDR, x/(1+x)", vw_view_ssr, NULL},
+    [VW_VIEW_BLOOM] = {"bloom", "bloom: the glow added to HDR (first level, upsampled) times intensity, x/(1+x)",
+                       vw_view_bloom, NULL},
 };
 
 const char *vw_view_name(vw_view v) { return v < VW_VIEW_COUNT ? vw_view_table[v].name : "unknown"; }

@@ -1,7 +1,8 @@
 /* thinlight-viewer with the screen-space effects (docs/effects.md, docs/viewer.md), under Xvfb:
  * the final view with each effect is thinlight-render's image with the same flag, and differs
- * from the image without it; the effects' views (ao-raw, ao, dof-coc) show something in every
- * mode, differ where they must, and the crypt's AO is below 1 in its corners; the views that map
+ * from the image without it; the effects' views (ao-raw, ao, dof-coc, ssr, bloom) show something
+ * in every mode, differ where they must, the crypt's AO is below 1 in its corners and its bloom
+ * glows where HDR is brightest; the views that map
  * a scalar to colours carry their legend in the screenshot, with the colour bar's pixels where the
  * viewer's geometry puts them; every effect flag's bad value exits 2 with one line and no file. */
 #include "viewer_harness.h"
@@ -12,16 +13,16 @@ enum { W = 320, H = 180, BIG_W = 640, BIG_H = 360 };
 
 static const char *const modes[4] = {"thin-lpp", "thin-deferred", "fat", "forward"};
 /* The effects' views: their place in the grid (after the 14 views without effects). */
-enum { V_AO_RAW = 14, V_AO = 15, V_DOF_COC = 16, V_SSR = 17, V_DEPTH = 6, V_FINAL = 0, NV = 18 };
+enum { V_AO_RAW = 14, V_AO = 15, V_DOF_COC = 16, V_SSR = 17, V_BLOOM = 18, V_DEPTH = 6, V_FINAL = 0, NV = 19 };
 
 /* Final view = thinlight-render with the same effect flags, bit for bit; and not the image
  * without the effect. */
 TL_TEST(viewer_final_view_with_each_effect_equals_thinlight_render)
 {
-    static const char *const effects[5] = {"", "--ssao", "--fog --fog-color 0.3,0.3,0.35 --fog-density 0.08",
-                                           "--dof --dof-aperture 0.02", "--ssr"};
+    static const char *const effects[6] = {"", "--ssao", "--fog --fog-color 0.3,0.3,0.35 --fog-density 0.08",
+                                           "--dof --dof-aperture 0.02", "--ssr", "--bloom"};
     image plain = {0, 0, NULL};
-    for (int e = 0; e < 5; e++) {
+    for (int e = 0; e < 6; e++) {
         char args[256], png[64], ref[64], cmd[2048];
         snprintf(args, sizeof args, "--size %ux%u --mode thin-lpp %s", W, H, effects[e]);
         snprintf(png, sizeof png, "fx_final_%d.png", e);
@@ -50,7 +51,7 @@ TL_TEST(viewer_effect_views_each_mode)
 {
     for (int m = 0; m < 4; m++) {
         char args[256], png[64];
-        snprintf(args, sizeof args, "--size %ux%u --mode %s --grid --ssao --fog --dof --ssr", BIG_W, BIG_H, modes[m]);
+        snprintf(args, sizeof args, "--size %ux%u --mode %s --grid --ssao --fog --dof --ssr --bloom", BIG_W, BIG_H, modes[m]);
         snprintf(png, sizeof png, "fx_grid_%s.png", modes[m]);
         TL_CHECK(viewer(args, png) == 0);
         image g = load(png);
@@ -58,13 +59,13 @@ TL_TEST(viewer_effect_views_each_mode)
         if (!g.px) continue;
         image c[NV];
         for (int v = 0; v < NV; v++) c[v] = cell(&g, v);
-        for (int v = V_AO_RAW; v <= V_SSR; v++) {
+        for (int v = V_AO_RAW; v <= V_BLOOM; v++) {
             printf("%s view %d: %zu colours%s\n", modes[m], v, colours(&c[v]), is_placeholder(&c[v]) ? " (placeholder)" : "");
             if (v == V_SSR && m == 3) TL_CHECK(is_placeholder(&c[v]));
             else TL_CHECK(!is_placeholder(&c[v]) && colours(&c[v]) > 4);
         }
         static const int differ[][2] = {{V_AO_RAW, V_AO}, {V_AO, V_FINAL}, {V_DOF_COC, V_DEPTH}, {V_DOF_COC, V_FINAL},
-                                        {V_SSR, V_FINAL}};
+                                        {V_SSR, V_FINAL}, {V_BLOOM, V_FINAL}};
         for (size_t k = 0; k < sizeof differ / sizeof differ[0]; k++) {
             if (differ[k][0] == V_SSR && m == 3) continue;
             tl_image_error e = compare(&c[differ[k][0]], &c[differ[k][1]]);
@@ -100,6 +101,47 @@ TL_TEST(viewer_ao_view_crypt_below_one_in_corners)
     TL_CHECK(dark > n / 200);   /* its corners are not */
     TL_CHECK(dark < n / 2);
     release(&a);
+}
+
+/* The bloom view: where the HDR view clips (radiance times exposure above 1 in some channel, which
+ * is what the default threshold of 1 lets into the chain) it is on average brighter than elsewhere,
+ * more so than a blur that ignores brightness could be; with a threshold no pixel reaches and a
+ * hard knee the chain holds exactly 0 and the view is black. */
+TL_TEST(viewer_bloom_view_glows_where_hdr_is_brightest)
+{
+    char args[256];
+    snprintf(args, sizeof args, "--size %ux%u --view hdr --bloom", BIG_W, BIG_H);
+    TL_CHECK(viewer(args, "fx_bloom_hdr.png") == 0);
+    snprintf(args, sizeof args, "--size %ux%u --view bloom --bloom", BIG_W, BIG_H);
+    TL_CHECK(viewer(args, "fx_bloom.png") == 0);
+    snprintf(args, sizeof args, "--size %ux%u --view bloom --bloom --bloom-threshold 1e30 --bloom-knee 0", BIG_W, BIG_H);
+    TL_CHECK(viewer(args, "fx_bloom_none.png") == 0);
+    image h = load("fx_bloom_hdr.png"), b = load("fx_bloom.png"), z = load("fx_bloom_none.png");
+    TL_CHECK(h.px && b.px && z.px && h.w == b.w && h.h == b.h);
+    if (h.px && b.px && z.px) {
+        double lit[2] = {0, 0}, n[2] = {0, 0}, top = 0;
+        size_t nonzero = 0;
+        for (uint32_t y = 0; y < h.h; y++)
+            for (uint32_t x = 0; x < h.w; x++) {
+                const uint8_t *p = at(&h, x, y), *q = at(&b, x, y), *o = at(&z, x, y);
+                int clip = p[0] == 255 || p[1] == 255 || p[2] == 255;
+                double v = (q[0] + q[1] + q[2]) / 3.0;
+                lit[clip] += v;
+                n[clip] += 1;
+                top = v > top ? v : top;
+                nonzero += o[0] || o[1] || o[2];
+            }
+        double in = n[1] ? lit[1] / n[1] : 0, out = n[0] ? lit[0] / n[0] : 0;
+        printf("bloom view: %.0f clipped HDR pixels, mean %.1f levels there, %.1f elsewhere, brightest %.0f; "
+               "unreachable threshold: %zu non-black pixels\n", n[1], in, out, top, nonzero);
+        TL_CHECK(n[1] > 0 && n[0] > 0);
+        TL_CHECK(in > 2.0 * out);
+        TL_CHECK(top > 32.0);
+        TL_CHECK(nonzero == 0);
+    }
+    release(&h);
+    release(&b);
+    release(&z);
 }
 
 /* The viewer's heat scale (views.c: black, blue, green, yellow, red, white). */
