@@ -49,12 +49,13 @@ static const char usage_text[] =
     "  --fresnel F      thin-lpp with GGX: two-sums (default, exact) or nv (Schlick with n.v per pixel);\n"
     "                   without it, a GGX-lit sweep also measures thin-lpp/tiled/nv beside the exact layout\n"
     "  --no-plot        do not run gnuplot\n"
-    "  --effects LIST   none (default), ssao, fog, dof, bloom: at the first size and light count, every\n"
-    "                   configuration of the first strategy also renders with each effect, taking turns\n"
-    "                   with frames without it: the effect's cost (its passes' GPU time) and its error\n"
-    "                   against fat with the same effect (SSAO: also the AO target's) join the table,\n"
-    "                   the JSON (\"effects\") and the error-vs-time plot. --ssao, --fog, --dof, --bloom add\n"
-    "                   one; their parameter options set it up:\n"
+    "  --effects LIST   none (default), ssao, fog, dof, bloom, ssr: at the first size and light count,\n"
+    "                   every configuration of the first strategy also renders with each effect (ssr:\n"
+    "                   not forward, which has no reflections), taking turns with frames without it:\n"
+    "                   the effect's cost (its passes' GPU time) and its error against fat with the\n"
+    "                   same effect (SSAO: also the AO target's) join the table, the JSON (\"effects\")\n"
+    "                   and the error-vs-time plot. --ssao, --fog, --dof, --bloom, --ssr add one;\n"
+    "                   their parameter options set it up:\n"
     ;
 static const char usage_tail[] =
     "  --effects-doc FILE replace the text between " BENCH_EFFECTS_DOC_BEGIN " and\n"
@@ -224,7 +225,7 @@ static int bench__parse_effects(const char *arg, bench_options *o)
         while (e < BENCH_EFFECTS && strcmp(items[i], bench_effect_name((bench_effect)e))) e++;
         if (e < BENCH_EFFECTS) o->effects |= 1u << e;
         else if (strcmp(items[i], "none"))
-            return bench__usage("--effects: unknown effect '%s' (none, ssao, fog, dof, bloom)", items[i]);
+            return bench__usage("--effects: unknown effect '%s' (none, ssao, fog, dof, bloom, ssr)", items[i]);
     }
     return 0;
 }
@@ -233,7 +234,7 @@ static int bench__parse_effects(const char *arg, bench_options *o)
 static int bench__effect_option(bench_options *o, const char *a, const char *next)
 {
     int rc = tl_tool_effect_option(BENCH_TOOL, &o->effect_desc, a, next);
-    static const char *const flags[BENCH_EFFECTS] = {"--ssao", "--fog", "--dof", "--bloom"};
+    static const char *const flags[BENCH_EFFECTS] = {"--ssao", "--fog", "--dof", "--bloom", "--ssr"};
     for (int e = 0; rc == 1 && e < BENCH_EFFECTS; e++)
         if (!strcmp(a, flags[e])) o->effects |= 1u << e;
     return rc;

@@ -79,7 +79,14 @@ typedef struct bench_size {
 } bench_size;
 
 /* Screen-space effects the bench can measure (--effects), each against the same frame without it. */
-typedef enum bench_effect { BENCH_EFFECT_SSAO, BENCH_EFFECT_FOG, BENCH_EFFECT_DOF, BENCH_EFFECT_BLOOM, BENCH_EFFECTS } bench_effect;
+typedef enum bench_effect {
+    BENCH_EFFECT_SSAO,
+    BENCH_EFFECT_FOG,
+    BENCH_EFFECT_DOF,
+    BENCH_EFFECT_BLOOM,
+    BENCH_EFFECT_SSR, /* not in forward, which plans no reflections (no gloss to read) */
+    BENCH_EFFECTS
+} bench_effect;
 const char *bench_effect_name(bench_effect e);
 
 typedef struct bench_options {
@@ -103,7 +110,7 @@ typedef struct bench_options {
     tl_lighting_model lighting;      /* --lighting (auto: from the scene's materials) */
     tl_fresnel_layout fresnel;       /* --fresnel (thin-lpp with GGX) */
     unsigned effects;                /* --effects: bits (1u << bench_effect); 0: none measured */
-    tl_renderer_desc effect_desc;    /* the effects' parameters (--ssao-*, --fog-*, --dof-*, --bloom-*) */
+    tl_renderer_desc effect_desc;    /* the effects' parameters (--ssao-*, --fog-*, --dof-*, --bloom-*, --ssr-*) */
     const char *effects_doc;         /* --effects-doc: the effects table between its markers */
 } bench_options;
 

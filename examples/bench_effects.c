@@ -1,7 +1,8 @@
 /* The effects' measurements (--effects): at the first size and the first light count, every
  * configuration of the first strategy (fat, the reference, first) is rendered without effects and
  * with each effect, by one renderer each, the renderers taking turns frame by frame (the first to
- * go rotates), so that each effect's frames sit beside frames without it. Its cost is the GPU time
+ * go rotates), so that each effect's frames sit beside frames without it (forward has no
+ * reflections: it gets no ssr record). Its cost is the GPU time
  * of its own passes; its error compares the final image with fat's under the same effect, and for
  * SSAO the AO target with fat's. */
 #include <math.h>
@@ -12,7 +13,7 @@
 #include "bench.h"
 #include "tool_log.h"
 
-static const char *const bench__effect_names[BENCH_EFFECTS] = {"ssao", "fog", "dof", "bloom"};
+static const char *const bench__effect_names[BENCH_EFFECTS] = {"ssao", "fog", "dof", "bloom", "ssr"};
 
 const char *bench_effect_name(bench_effect e) { return (unsigned)e < BENCH_EFFECTS ? bench__effect_names[e] : "?"; }
 
@@ -22,7 +23,8 @@ static double bench__effect_ms(bench_effect e, const tl_frame_stats *st)
     static const tl_pass passes[BENCH_EFFECTS][3] = {{TL_PASS_SSAO, TL_PASS_SSAO_BLUR, TL_PASS_SSAO_APPLY},
                                                      {TL_PASS_FOG, TL_PASS_COUNT, TL_PASS_COUNT},
                                                      {TL_PASS_DOF, TL_PASS_DOF_APPLY, TL_PASS_COUNT},
-                                                     {TL_PASS_BLOOM, TL_PASS_COUNT, TL_PASS_COUNT}};
+                                                     {TL_PASS_BLOOM, TL_PASS_COUNT, TL_PASS_COUNT},
+                                                     {TL_PASS_SSR, TL_PASS_SSR_APPLY, TL_PASS_COUNT}};
     double ms = 0.0;
     for (int k = 0; k < 3; k++)
         if (passes[e][k] != TL_PASS_COUNT && st->pass_ms[passes[e][k]] > 0.0) ms += st->pass_ms[passes[e][k]];
@@ -45,11 +47,21 @@ void bench_effect_enable(const bench_options *opt, bench_effect e, tl_renderer_d
         d->dof = t->dof;
         d->dof.enabled = 1;
         break;
-    default:
+    case BENCH_EFFECT_BLOOM:
         d->bloom = t->bloom;
         d->bloom.enabled = 1;
         break;
+    default:
+        d->ssr = t->ssr;
+        d->ssr.enabled = 1;
+        break;
     }
+}
+
+/* Whether configuration c has effect e at all: forward plans no reflections (no gloss to read). */
+static int bench__effect_applies(bench_effect e, bench_config c)
+{
+    return !(e == BENCH_EFFECT_SSR && bench_config_mode(c) == TL_MODE_FORWARD);
 }
 
 /* The configurations measured: those of the first strategy, without the light-buffer variants. */
@@ -62,11 +74,12 @@ static size_t bench__effect_configs(const bench_options *opt, bench_config *out)
     return k;
 }
 
-static size_t bench__effect_list(const bench_options *opt, bench_effect *out)
+/* The effects measured in configuration *c (every one asked for when c is NULL), in enum order. */
+static size_t bench__effect_list(const bench_options *opt, const bench_config *c, bench_effect *out)
 {
     size_t n = 0;
     for (int e = 0; e < BENCH_EFFECTS; e++)
-        if (opt->effects & (1u << e)) out[n++] = (bench_effect)e;
+        if ((opt->effects & (1u << e)) && (!c || bench__effect_applies((bench_effect)e, *c))) out[n++] = (bench_effect)e;
     return n;
 }
 
@@ -74,8 +87,11 @@ uint64_t bench_effects_frames(const bench_options *opt)
 {
     bench_config configs[BENCH_CONFIGS];
     bench_effect list[BENCH_EFFECTS];
-    size_t e = bench__effect_list(opt, list);
-    return e ? (uint64_t)bench__effect_configs(opt, configs) * (e + 1) * (opt->warmup + opt->frames) : 0;
+    if (!bench__effect_list(opt, NULL, list)) return 0;
+    uint64_t frames = 0;
+    for (size_t m = 0, n = bench__effect_configs(opt, configs); m < n; m++)
+        frames += (uint64_t)(bench__effect_list(opt, &configs[m], list) + 1) * (opt->warmup + opt->frames);
+    return frames;
 }
 
 static int bench__cmp(const void *a, const void *b)
@@ -90,7 +106,7 @@ static double bench__median(double *v, size_t n)
     return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
 
-/* Images of one configuration (slot 0: no effect, then one per effect), and fat's. */
+/* Images of one configuration ([0]: no effect, [e + 1]: with effect e), and fat's. */
 typedef struct bench__effect_images {
     size_t pixels;
     uint8_t *ldr[BENCH_EFFECTS + 1], *ref_ldr[BENCH_EFFECTS + 1];
@@ -119,11 +135,11 @@ static tl_renderer *bench__effect_renderer(bench_run *run, tl_context *ctx, cons
     return r;
 }
 
-/* Reads slot's final image (and AO) after the last frame; fat's go to the reference buffers. */
-static int bench__effect_read(tl_renderer *r, int ref, int slot, int ssao, bench__effect_images *im)
+/* Reads image k's final image (and AO) after the last frame; fat's go to the reference buffers. */
+static int bench__effect_read(tl_renderer *r, int ref, int k, int ssao, bench__effect_images *im)
 {
     size_t n = im->pixels;
-    uint8_t *ldr = ref ? im->ref_ldr[slot] : im->ldr[slot];
+    uint8_t *ldr = ref ? im->ref_ldr[k] : im->ldr[k];
     if (tl_renderer_read_output(r, ldr, &(size_t){n * 4}) != TL_OK) return 1;
     for (size_t i = 0; i < n; i++)
         for (int c = 0; c < 3; c++) ldr[3 * i + c] = ldr[4 * i + c];
@@ -177,7 +193,7 @@ static int bench__effect_summarise(bench_run *run, bench_config c, tl_renderer *
     int ref = bench_config_mode(c) == BENCH_REFERENCE;
     double ratios[BENCH_MAX_FRAMES];
     for (size_t s = 0; s < slots; s++)
-        if (bench__effect_read(r[s], ref, (int)s, s && list[s - 1] == BENCH_EFFECT_SSAO, im)) {
+        if (bench__effect_read(r[s], ref, s ? (int)list[s - 1] + 1 : 0, s && list[s - 1] == BENCH_EFFECT_SSAO, im)) {
             tl_tool_fail(BENCH_TOOL, "effects, %s: reading the images: %s", bench_config_name(c), tl_renderer_last_error(r[s]));
             return 1;
         }
@@ -194,8 +210,8 @@ static int bench__effect_summarise(bench_run *run, bench_config c, tl_renderer *
         e->base_ms = bench__median(ratios, frames);
         e->bytes_per_pixel = bench__bpp(r[s], im->pixels);
         e->base_bytes_per_pixel = bench__bpp(r[0], im->pixels);
-        size_t n3 = im->pixels * 3;
-        tl_image_compare_u8(ref ? im->ref_ldr[s] : im->ldr[s], im->ref_ldr[s], n3, &e->ldr);
+        size_t n3 = im->pixels * 3, k = (size_t)list[s - 1] + 1;
+        tl_image_compare_u8(ref ? im->ref_ldr[k] : im->ldr[k], im->ref_ldr[k], n3, &e->ldr);
         tl_image_compare_u8(ref ? im->ref_ldr[0] : im->ldr[0], im->ref_ldr[0], n3, &e->base_ldr);
         if (e->effect == BENCH_EFFECT_SSAO) tl_image_compare(ref ? im->ref_ao : im->ao, im->ref_ao, im->pixels, 1.0, &e->ao);
     }
@@ -203,10 +219,11 @@ static int bench__effect_summarise(bench_run *run, bench_config c, tl_renderer *
 }
 
 static int bench__effect_config(bench_run *run, tl_context *ctx, bench_scene *scene, bench_config c, const tl_light *lights,
-                                size_t count, const bench_effect *list, size_t slots, bench__effect_images *im,
-                                tl_tool_progress *progress, uint64_t *done)
+                                size_t count, bench__effect_images *im, tl_tool_progress *progress, uint64_t *done)
 {
     tl_renderer *r[BENCH_EFFECTS + 1] = {NULL};
+    bench_effect list[BENCH_EFFECTS];
+    size_t slots = bench__effect_list(&run->opt, &c, list) + 1;
     size_t frames = run->opt.frames;
     double *ms = malloc(2 * slots * frames * sizeof *ms), *effect = ms ? ms + slots * frames : NULL;
     int err = !ms;
@@ -235,19 +252,21 @@ int bench_effects_measure(bench_run *run, tl_context *ctx, bench_scene *scene, t
     const bench_options *opt = &run->opt;
     bench_effect list[BENCH_EFFECTS];
     bench_config configs[BENCH_CONFIGS];
-    size_t ne = bench__effect_list(opt, list), nc = bench__effect_configs(opt, configs);
+    size_t ne = bench__effect_list(opt, NULL, list), nc = bench__effect_configs(opt, configs);
     if (!ne || !nc) return 0;
     const tl_light *lights;
     size_t count;
     if (bench_scene_lights(scene, opt->lights[0], &lights, &count)) return 1;
     bench__effect_images im = {.pixels = (size_t)opt->sizes[0].width * opt->sizes[0].height};
     int err = !(run->effects = calloc(nc * ne, sizeof *run->effects));
-    for (size_t s = 0; !err && s <= ne; s++)
-        err = !(im.ldr[s] = malloc(im.pixels * 4)) || !(im.ref_ldr[s] = malloc(im.pixels * 4));
+    for (size_t s = 0; !err && s <= ne; s++) {
+        size_t k = s ? (size_t)list[s - 1] + 1 : 0;
+        err = !(im.ldr[k] = malloc(im.pixels * 4)) || !(im.ref_ldr[k] = malloc(im.pixels * 4));
+    }
     if (!err) err = !(im.ao = malloc(im.pixels * 4 * sizeof(float))) || !(im.ref_ao = malloc(im.pixels * 4 * sizeof(float)));
     if (err) tl_tool_fail(BENCH_TOOL, "out of memory for the effects' images");
     for (size_t m = 0; !err && m < nc; m++) /* fat first: the reference images */
-        err = bench__effect_config(run, ctx, scene, configs[m], lights, count, list, ne + 1, &im, progress, done);
+        err = bench__effect_config(run, ctx, scene, configs[m], lights, count, &im, progress, done);
     bench__effect_images_free(&im);
     return err;
 }

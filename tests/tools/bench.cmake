@@ -317,11 +317,12 @@ function(check_help)
 endfunction()
 
 # --effects (docs/effects.md): a tiny run measures each effect in each configuration of the first
-# strategy, fat included; the JSON has its records, the table its lines, --effects-doc its table.
+# strategy, fat included, reflections in every mode but forward; the JSON has its records, the
+# table its lines, --effects-doc its table.
 function(check_effects_quick)
   file(WRITE "${WORK}/effects.md" "# e\n<!-- bench-effects:begin -->\nold\n<!-- bench-effects:end -->\nend\n")
-  run_tool(--size 96x54 --lights 8 --modes thin-lpp --strategies volumes --light-formats rgba16f --frames 1
-           --warmup 0 --effects ssao --bloom --bloom-levels 3 --no-plot --json "${WORK}/e.json"
+  run_tool(--size 96x54 --lights 8 --modes thin-lpp,forward --strategies volumes --light-formats rgba16f --frames 1
+           --warmup 0 --effects ssao,ssr --bloom --bloom-levels 3 --no-plot --json "${WORK}/e.json"
            --effects-doc "${WORK}/effects.md")
   expect_exit(0 "tiny effects run")
   string(FIND "${out}" "effects at 96x54" at)
@@ -330,11 +331,12 @@ function(check_effects_quick)
   endif()
   file(READ "${WORK}/e.json" json)
   string(JSON n LENGTH "${json}" effects)
-  if(NOT n EQUAL 4)
-    message(FATAL_ERROR "${n} effect records, expected 4 (ssao and bloom, in fat/volumes and thin-lpp/volumes)")
+  if(NOT n EQUAL 8)
+    message(FATAL_ERROR "${n} effect records, expected 8 (ssao, bloom and ssr in fat/volumes and thin-lpp/volumes, "
+                        "ssao and bloom in forward)")
   endif()
   set(seen "")
-  foreach(i RANGE 3)
+  foreach(i RANGE 7)
     json_get(STRING "effect ${i}" effects ${i} effect)
     set(effect "${value}")
     json_get(STRING "effect ${i}" effects ${i} mode)
@@ -347,11 +349,15 @@ function(check_effects_quick)
       json_get(NUMBER "ssao" effects ${i} ao_max_abs)
     endif()
   endforeach()
-  foreach(want "ssao@fat/volumes" "bloom@fat/volumes" "ssao@thin-lpp/volumes" "bloom@thin-lpp/volumes")
+  foreach(want "ssao@fat/volumes" "bloom@fat/volumes" "ssr@fat/volumes" "ssao@thin-lpp/volumes"
+               "bloom@thin-lpp/volumes" "ssr@thin-lpp/volumes" "ssao@forward" "bloom@forward")
     if(NOT want IN_LIST seen)
       message(FATAL_ERROR "no record ${want} in ${seen}")
     endif()
   endforeach()
+  if("ssr@forward" IN_LIST seen)
+    message(FATAL_ERROR "forward plans no reflections, yet has an ssr record: ${seen}")
+  endif()
   file(READ "${WORK}/effects.md" doc)
   if(NOT doc MATCHES "\\| bloom \\| thin-lpp/volumes \\|" OR doc MATCHES "old" OR NOT doc MATCHES "end\n$")
     message(FATAL_ERROR "--effects-doc did not replace the section:\n${doc}")
