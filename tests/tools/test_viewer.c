@@ -148,14 +148,8 @@ TL_TEST(viewer_each_view_full_size_matches_its_thumbnail)
 /* Left half thin-deferred, right half fat, a white column between. */
 TL_TEST(viewer_split_view_halves_are_the_two_modes)
 {
-    char args[128];
-    snprintf(args, sizeof args, "--size %ux%u --mode thin-deferred --split fat", VW_W, VW_H);
-    TL_CHECK(viewer(args, "split.png") == 0);
-    snprintf(args, sizeof args, "--size %ux%u --mode thin-deferred", VW_W, VW_H);
-    TL_CHECK(viewer(args, "split_left.png") == 0);
-    snprintf(args, sizeof args, "--size %ux%u --mode fat", VW_W, VW_H);
-    TL_CHECK(viewer(args, "split_right.png") == 0);
-    image s = load("split.png"), l = load("split_left.png"), r = load("split_right.png");
+    image s = shot(VW_W, VW_H, "--mode thin-deferred --split fat", "split.png"),
+          l = shot(VW_W, VW_H, "--mode thin-deferred", "split_left.png"), r = shot(VW_W, VW_H, "--mode fat", "split_right.png");
     TL_CHECK(s.px && l.px && r.px && s.w == VW_W && l.w == VW_W && r.w == VW_W);
     size_t wrong_left = 0, wrong_right = 0, wrong_line = 0;
     for (uint32_t y = 0; s.px && l.px && r.px && y < VW_H; y++)

@@ -109,14 +109,9 @@ TL_TEST(viewer_ao_view_crypt_below_one_in_corners)
  * hard knee the chain holds exactly 0 and the view is black. */
 TL_TEST(viewer_bloom_view_glows_where_hdr_is_brightest)
 {
-    char args[256];
-    snprintf(args, sizeof args, "--size %ux%u --view hdr --bloom", BIG_W, BIG_H);
-    TL_CHECK(viewer(args, "fx_bloom_hdr.png") == 0);
-    snprintf(args, sizeof args, "--size %ux%u --view bloom --bloom", BIG_W, BIG_H);
-    TL_CHECK(viewer(args, "fx_bloom.png") == 0);
-    snprintf(args, sizeof args, "--size %ux%u --view bloom --bloom --bloom-threshold 1e30 --bloom-knee 0", BIG_W, BIG_H);
-    TL_CHECK(viewer(args, "fx_bloom_none.png") == 0);
-    image h = load("fx_bloom_hdr.png"), b = load("fx_bloom.png"), z = load("fx_bloom_none.png");
+    image h = shot(BIG_W, BIG_H, "--view hdr --bloom", "fx_bloom_hdr.png"),
+          b = shot(BIG_W, BIG_H, "--view bloom --bloom", "fx_bloom.png"),
+          z = shot(BIG_W, BIG_H, "--view bloom --bloom --bloom-threshold 1e30 --bloom-knee 0", "fx_bloom_none.png");
     TL_CHECK(h.px && b.px && z.px && h.w == b.w && h.h == b.h);
     if (h.px && b.px && z.px) {
         double lit[2] = {0, 0}, n[2] = {0, 0}, top = 0;

@@ -73,6 +73,16 @@ static inline image load(const char *png)
     return (image){r.width, r.height, r.rgba};
 }
 
+/* The viewer at w x h with the arguments `more`, its screenshot `png` loaded; no pixels (px NULL)
+ * when the viewer failed, whatever an earlier run left under that name. */
+static inline image shot(uint32_t w, uint32_t h, const char *more, const char *png)
+{
+    char args[1024];
+    snprintf(args, sizeof args, "--size %ux%u %s", w, h, more);
+    if (viewer(args, png)) return (image){0, 0, NULL};
+    return load(png);
+}
+
 static inline const uint8_t *at(const image *im, uint32_t x, uint32_t y) { return im->px + 4 * ((size_t)y * im->w + x); }
 
 /* A grid cell's interior (rows top to bottom (the viewer leaves a 1-pixel border) as its own image. */
