@@ -214,14 +214,17 @@ static GLADapiproc fixture_load(void *user, const char *name)
     return (GLADapiproc)tl_context_get_proc_address((tl_context *)user, name);
 }
 
+/* The source texture and framebuffer; 0, counted as a test failure, when rgba is NULL (its
+ * allocation failed) or GL fails. */
 static int hdr_source_make(hdr_source *src, GladGLContext *gl, uint32_t w, uint32_t h, const float *rgba)
 {
     char msg[256];
-    if (tl__gl_load(gl, fixture_load, g_ctx, msg, sizeof msg) != TL_OK) {
-        fprintf(stderr, "glad: %s\n", msg);
+    memset(src, 0, sizeof *src);
+    if (!rgba || tl__gl_load(gl, fixture_load, g_ctx, msg, sizeof msg) != TL_OK) {
+        if (rgba) fprintf(stderr, "glad: %s\n", msg);
+        tl_test_failures++;
         return 0;
     }
-    memset(src, 0, sizeof *src);
     src->gl = gl;
     src->w = w;
     src->h = h;
@@ -230,7 +233,9 @@ static int hdr_source_make(hdr_source *src, GladGLContext *gl, uint32_t w, uint3
     gl->TextureSubImage2D(src->texture, 0, 0, 0, (GLsizei)w, (GLsizei)h, GL_RGBA, GL_FLOAT, rgba);
     gl->CreateFramebuffers(1, &src->fbo);
     gl->NamedFramebufferTexture(src->fbo, GL_COLOR_ATTACHMENT0, src->texture, 0);
-    return gl->CheckNamedFramebufferStatus(src->fbo, GL_READ_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+    if (gl->CheckNamedFramebufferStatus(src->fbo, GL_READ_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE) return 1;
+    tl_test_failures++;
+    return 0;
 }
 
 static void hdr_source_free(hdr_source *src)
@@ -277,8 +282,7 @@ TL_TEST(bloom_chain_conserves_energy_threshold_zero)
             }
     GladGLContext gl;
     hdr_source src;
-    if (!img || !hdr_source_make(&src, &gl, w, h, img)) {
-        tl_test_failures++;
+    if (!hdr_source_make(&src, &gl, w, h, img)) {
         free(img);
         tl_scene_destroy(s);
         return;
@@ -346,8 +350,7 @@ TL_TEST(bloom_bright_pixel_spreads_symmetrically_without_shift)
                 for (int k = 0; k < 3; k++) img[4 * ((size_t)y * w + x) + k] = 1000.0f;
         GladGLContext gl;
         hdr_source src;
-        if (!img || !hdr_source_make(&src, &gl, w, h, img)) {
-            tl_test_failures++;
+        if (!hdr_source_make(&src, &gl, w, h, img)) {
             free(img);
             break;
         }
@@ -411,8 +414,7 @@ TL_TEST(bloom_finite_at_fp16_max_and_on_tiny_targets)
         for (size_t k = 0; img && k < 4 * n; k++) img[k] = 65504.0f;
         GladGLContext gl;
         hdr_source src;
-        if (!img || !hdr_source_make(&src, &gl, w, h, img)) {
-            tl_test_failures++;
+        if (!hdr_source_make(&src, &gl, w, h, img)) {
             free(img);
             break;
         }
