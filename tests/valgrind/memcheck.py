@@ -7,14 +7,16 @@
 Every test command ctest would run (the same arguments, folder and environment) runs under
 memcheck with --leak-check=full; a test fails when it fails on its own, when memcheck reports an
 invalid access, an uninitialised value used, a bad free, or a definite or indirect leak
-(possibly-lost and still-reachable blocks are not errors). Commands that are cmake -P scripts
-are run with --trace-children=yes, so the project's tools they start are checked too; programs
-in system folders (cmake, shells, compilers, nm, gnuplot, python) are not traced, and the
-check's own cmake does not count. The libFuzzer targets (label fuzz, except the replays,
+(possibly-lost and still-reachable blocks are not errors). Every test runs with
+--trace-children=yes, so the project's programs it starts (a cmake -P check's tools, the viewer
+started through system()) are checked too; programs in system folders (cmake, compilers, nm,
+gnuplot, python, xvfb-run) are not traced, except /bin/sh, and their logs do not count. With
+DISPLAY unset an Xvfb is started for the run, so the viewer tests start the viewer through the
+traced /bin/sh instead of the untraced xvfb-run. The libFuzzer targets (label fuzz, except the replays,
 which gcc builds) carry AddressSanitizer and cannot run under valgrind; a sanitizer build
 cannot either: use a plain build (e.g. RelWithDebInfo). hwy_timer_shim.c is preloaded (valgrind
 3.19 cannot run libhwy's static initializer, which OpenImageIO pulls in). Suppressions: tests/valgrind/mesa.supp,
-Mesa/llvmpipe/OSMesa internals only, never a thinlight frame. One log per test in --out
+Mesa/llvmpipe/OSMesa internals only, never a thinlight frame. One log per process in --out
 (default BUILD_DIR/memcheck).
 
 Resuming: --out holds results.json (runs sharing it merge their records), one record per test (its fingerprint, status, wall and CPU
@@ -32,12 +34,14 @@ most tests are covered early. The exit status is 1 when a test run now, or an ea
 rerun, failed.
 """
 import argparse
+import atexit
 import datetime
 import fcntl
 import hashlib
 import json
 import os
 import re
+import shutil
 import signal
 import subprocess
 import sys
@@ -48,7 +52,10 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 # Programs outside the project (cmake, shells, compilers, nm, gnuplot, python, ...): the children
 # of a cmake -P check that are not traced, and the logs that do not count (the check's cmake)
 SYSTEM_DIRS = ("/usr/", "/bin/", "/sbin/", "/lib/", "/lib64/", "/opt/", "/snap/", sys.base_prefix.rstrip("/") + "/")
-SKIP_CHILDREN = ",".join(d + "*" for d in SYSTEM_DIRS)
+# not traced: every program there but /bin/sh (valgrind's patterns have only * and ?: two-letter
+# names in /bin are traced too, and cost a second each), through which system() and popen() start
+# the project's programs (the viewer tests, the kill-mid-write test)
+SKIP_CHILDREN = ",".join([d + "*" for d in SYSTEM_DIRS if d != "/bin/"] + ["/bin/?", "/bin/???*"])
 RESULTS = "results.json"
 # memcheck's report headlines, kept (deduplicated, at most MAX_REPORTS) as the error summary
 REPORT = re.compile(r"==\d+== ((?:Invalid (?:read|write|free)|Conditional jump|Use of uninitialised|Syscall param|"
@@ -242,14 +249,11 @@ def run_one(test, out, supp, shim):
     for f in logs_of(out, test["name"]):  # the logs of an earlier run
         os.remove(f)
     log = os.path.join(out, test["name"] + ".log")
-    scripted = os.path.basename(test["command"][0]) == "cmake"
+    # every process the test starts outside system folders is traced, one log each; the test's
+    # own verdict stands and memcheck's reports are counted from the logs (summarize)
     vg = ["valgrind", "--tool=memcheck", "--leak-check=full", "--show-leak-kinds=definite,indirect",
-          "--errors-for-leak-kinds=definite,indirect", "--num-callers=40",
-          "--suppressions=" + supp, "--log-file=" + log + (".%p" if scripted else "")]
-    if scripted:  # the check's own verdict stands; memcheck's reports are counted from the logs
-        vg += ["--trace-children=yes", "--trace-children-skip=" + SKIP_CHILDREN]
-    else:
-        vg += ["--error-exitcode=99"]
+          "--errors-for-leak-kinds=definite,indirect", "--num-callers=40", "--suppressions=" + supp,
+          "--log-file=" + log + ".%p", "--trace-children=yes", "--trace-children-skip=" + SKIP_CHILDREN]
     env = dict(os.environ)
     for kv in test["env"]:
         k, _, v = kv.partition("=")
@@ -330,7 +334,7 @@ def record_of(test, fingerprint, files, code, wall, cpu, out):
         status = "timeout"
     elif code == 0 and errors == 0 and lost == 0:
         status = "clean"
-    elif code in (0, 99):
+    elif code == 0:
         status = "memcheck"
     else:
         status = f"exit {code}"
@@ -440,6 +444,30 @@ def run_all(todo, waits, fp, results, out, supp, shim, jobs, force):
     return failed
 
 
+def start_display():
+    """An Xvfb server for the run when DISPLAY is unset (the viewer tests need one): with DISPLAY
+    set they start the viewer through /bin/sh, which is traced, instead of through xvfb-run, which
+    is a system program and would hide the viewer from memcheck. None when not started."""
+    if os.environ.get("DISPLAY") or not shutil.which("Xvfb"):
+        return None
+    r, w = os.pipe()
+    server = subprocess.Popen(DIE_WITH_PARENT + ["Xvfb", "-displayfd", str(w), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
+                              pass_fds=(w,), stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
+                              stderr=subprocess.DEVNULL, start_new_session=True)
+    os.close(w)
+    with os.fdopen(r) as f:
+        number = f.readline().strip()  # written once the server accepts clients; empty if it died
+    if not number.isdigit():
+        server.kill()
+        print("memcheck: Xvfb did not start; the viewer tests run the viewer untraced, under xvfb-run", flush=True)
+        return None
+    os.environ["DISPLAY"] = ":" + number
+    atexit.register(server.kill)
+    with LIVE_LOCK:
+        LIVE.add(server)  # stop() kills it too (os._exit skips atexit)
+    return server
+
+
 def stop(signum, frame):
     with LIVE_LOCK:
         for p in list(LIVE):
@@ -481,6 +509,7 @@ def main():
     signal.signal(signal.SIGTERM, stop)
     signal.signal(signal.SIGINT, stop)
     shim = build_shim(out)
+    start_display()
     print(f"memcheck: {len(tests)} tests, {len(tests) - len(todo)} already clean, {len(todo)} to run; "
           f"logs and {RESULTS} in {out}", flush=True)
     failed = run_all(todo, waits, fp, results, out, supp, shim, args.j, args.force)
