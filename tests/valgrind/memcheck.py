@@ -19,16 +19,16 @@ cannot either: use a plain build (e.g. RelWithDebInfo). hwy_timer_shim.c is prel
 Mesa/llvmpipe/OSMesa internals only, never a thinlight frame. One log per process in --out
 (default BUILD_DIR/memcheck).
 
-Resuming: --out holds results.json (runs sharing it merge their records), one record per test (its fingerprint, status, wall and CPU
-seconds, memcheck's error count, lost bytes and first reports), rewritten atomically after every
-test. A test already clean for the same fingerprint is skipped unless --force. The fingerprint is
-the sha256 of the command line, environment and folder, of every file the command names (the
-test executable, a cmake -P script and the tool it is given), of the build tree's shared libraries
-those executables load (ldd); not of the suppressions (adding an entry cannot make a clean test
-dirty; after removing or narrowing one, run with --force). Killing the script at any time (SIGINT,
-SIGTERM, even SIGKILL: the running valgrind gets SIGKILL when its parent dies) loses only the test
-being run, which stays pending. --list prints the clean / failed / pending counts and starts
-nothing. --order cost runs the cheapest tests first, by ctest's cost data
+Resuming: --out holds results.json (runs sharing it merge their records), one record per test (its
+fingerprint, status, wall and CPU seconds, memcheck's error count, lost bytes and first reports),
+rewritten atomically after every test. A test already clean for the same fingerprint is skipped
+unless --force. The fingerprint is the sha256 of the command line, environment and folder, of every
+file the command names (the test executable, a cmake -P script and the tool it is given), of the
+build tree's shared libraries those executables load (ldd); not of the suppressions (adding an entry
+cannot make a clean test dirty; after removing or narrowing one, run with --force). Killing the
+script at any time (SIGINT, SIGTERM, even SIGKILL: the running valgrind gets SIGKILL when its parent
+dies) loses only the test being run, which stays pending. --list prints the clean / failed / pending
+counts and starts nothing. --order cost runs the cheapest tests first, by ctest's cost data
 (BUILD_DIR/Testing/Temporary/CTestCostData.txt, or --cost-data FILE; tests without data last), so
 most tests are covered early. The exit status is 1 when a test run now, or an earlier failure not
 rerun, failed.
@@ -50,7 +50,7 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 # Programs outside the project (cmake, shells, compilers, nm, gnuplot, python, ...): the children
-# of a cmake -P check that are not traced, and the logs that do not count (the check's cmake)
+# of a test that are not traced, and the logs that do not count (a cmake -P check's cmake)
 SYSTEM_DIRS = ("/usr/", "/bin/", "/sbin/", "/lib/", "/lib64/", "/opt/", "/snap/", sys.base_prefix.rstrip("/") + "/")
 # not traced: every program there but /bin/sh (valgrind's patterns have only * and ?: two-letter
 # names in /bin are traced too, and cost a second each), through which system() and popen() start
@@ -251,9 +251,12 @@ def run_one(test, out, supp, shim):
     log = os.path.join(out, test["name"] + ".log")
     # every process the test starts outside system folders is traced, one log each; the test's
     # own verdict stands and memcheck's reports are counted from the logs (summarize)
+    # --keep-debuginfo: a library unloaded before the leak check (the viewer's DRI driver) still
+    # names its frames, so that mesa.supp can match them
     vg = ["valgrind", "--tool=memcheck", "--leak-check=full", "--show-leak-kinds=definite,indirect",
-          "--errors-for-leak-kinds=definite,indirect", "--num-callers=40", "--suppressions=" + supp,
-          "--log-file=" + log + ".%p", "--trace-children=yes", "--trace-children-skip=" + SKIP_CHILDREN]
+          "--errors-for-leak-kinds=definite,indirect", "--num-callers=40", "--keep-debuginfo=yes",
+          "--suppressions=" + supp, "--log-file=" + log + ".%p", "--trace-children=yes",
+          "--trace-children-skip=" + SKIP_CHILDREN]
     env = dict(os.environ)
     for kv in test["env"]:
         k, _, v = kv.partition("=")
@@ -451,9 +454,9 @@ def start_display():
     if os.environ.get("DISPLAY") or not shutil.which("Xvfb"):
         return None
     r, w = os.pipe()
-    server = subprocess.Popen(DIE_WITH_PARENT + ["Xvfb", "-displayfd", str(w), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"],
-                              pass_fds=(w,), stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL,
-                              stderr=subprocess.DEVNULL, start_new_session=True)
+    xvfb = ["Xvfb", "-displayfd", str(w), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"]
+    server = subprocess.Popen(DIE_WITH_PARENT + xvfb, pass_fds=(w,), stdin=subprocess.DEVNULL,
+                              stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, start_new_session=True)
     os.close(w)
     with os.fdopen(r) as f:
         number = f.readline().strip()  # written once the server accepts clients; empty if it died
