@@ -34,7 +34,6 @@ most tests are covered early. The exit status is 1 when a test run now, or an ea
 rerun, failed.
 """
 import argparse
-import atexit
 import datetime
 import fcntl
 import hashlib
@@ -464,10 +463,7 @@ def start_display():
         server.kill()
         print("memcheck: Xvfb did not start; the viewer tests run the viewer untraced, under xvfb-run", flush=True)
         return None
-    os.environ["DISPLAY"] = ":" + number
-    atexit.register(server.kill)
-    with LIVE_LOCK:
-        LIVE.add(server)  # stop() kills it too (os._exit skips atexit)
+    os.environ["DISPLAY"] = ":" + number  # the server dies with the script (DIE_WITH_PARENT)
     return server
 
 
