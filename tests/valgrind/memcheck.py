@@ -28,7 +28,10 @@ build tree's shared libraries those executables load (ldd); not of the suppressi
 cannot make a clean test dirty; after removing or narrowing one, run with --force). Killing the
 script at any time (SIGINT, SIGTERM, even SIGKILL: the running valgrind gets SIGKILL when its parent
 dies) loses only the test being run, which stays pending. --list prints the clean / failed / pending
-counts and starts nothing. --order cost runs the cheapest tests first, by ctest's cost data
+counts and starts nothing. Every result also goes to the ledger (--ledger, default
+tests/valgrind/ledger.json, committed), keyed by the sources tracked at HEAD, the build type, the
+toolchain's package versions and the test's command: a test clean there for its key now is
+skipped too, so a run resumes on a fresh checkout with a new build folder. --order cost runs the cheapest tests first, by ctest's cost data
 (BUILD_DIR/Testing/Temporary/CTestCostData.txt, or --cost-data FILE; tests without data last), so
 most tests are covered early. The exit status is 1 when a test run now, or an earlier failure not
 rerun, failed.
@@ -224,6 +227,108 @@ class Results:
             os.replace(tmp, self.path)
 
 
+# ---- the ledger: results that outlive the build folder ------------------------------------------
+
+# what a test's key leaves out: prose, CI scripts and this folder (the script, its suppressions and
+# the ledger itself); everything else tracked (sources, shaders, tests, examples, data, the code
+# in docs/) is in it
+LEDGER_SKIP = re.compile(r"(\.md$|^LICENSE$|^\.gitignore$|^\.ci/|^tests/valgrind/)")
+# the toolchain and libraries a result depends on beyond the sources
+LEDGER_PACKAGES = ("gcc-12", "g++-12", "libc6", "valgrind", "libosmesa6", "libgl1-mesa-dri", "libegl-mesa0",
+                   "libglfw3", "libopenimageio2.4", "libtinygltf-dev", "nlohmann-json3-dev", "libllvm15")
+
+
+class Ledger:
+    """tests/valgrind/ledger.json, kept in the repository: per test the key of the sources and
+    toolchain it ran at (not of the binaries, which every session builds anew), its status and
+    figures. A test clean in the ledger for the key it has now is skipped, so a run spread over
+    sessions on fresh checkouts resumes where the last commit of the ledger left it. Disabled,
+    with a line saying why, when the work tree differs from HEAD in a file the key covers."""
+
+    def __init__(self, path, build):
+        self.path = path
+        self.build = os.path.realpath(build)
+        self.root = os.path.realpath(os.path.join(HERE, "..", ".."))
+        self.lock = threading.Lock()
+        self.base, self.why = self._base()
+        try:
+            with open(path) as f:
+                self.data = json.load(f)
+        except FileNotFoundError:
+            self.data = {}
+        except (OSError, ValueError) as e:
+            sys.exit(f"memcheck: cannot read {path}: {e}")
+        self.data.setdefault("tests", {})
+
+    def _git(self, *args):
+        return subprocess.run(["git", "-C", self.root] + list(args), capture_output=True, text=True)
+
+    def _base(self):
+        """(sha256 of the tracked files the key covers and the toolchain, None) or (None, why not)."""
+        head = self._git("rev-parse", "HEAD")
+        if head.returncode != 0:
+            return None, "not a git checkout"
+        dirty = [line[3:] for line in self._git("status", "--porcelain").stdout.splitlines()
+                 if not LEDGER_SKIP.search(line[3:].split(" -> ")[-1])]
+        if dirty:
+            return None, f"the work tree differs from HEAD ({dirty[0]}{' ...' if len(dirty) > 1 else ''})"
+        files = [line for line in self._git("ls-tree", "-r", "HEAD").stdout.splitlines()
+                 if not LEDGER_SKIP.search(line.split("\t", 1)[1])]
+        cache = {}
+        try:
+            with open(os.path.join(self.build, "CMakeCache.txt")) as f:
+                for line in f:
+                    m = re.match(r"(CMAKE_BUILD_TYPE|CMAKE_C_COMPILER|CMAKE_CXX_COMPILER|THINLIGHT_\w+):\w+=(.*)", line)
+                    if m:
+                        cache[m.group(1)] = m.group(2).strip()
+        except OSError:
+            return None, "no CMakeCache.txt in the build folder"
+        q = subprocess.run(["dpkg-query", "-W", "-f", "${Package}=${Version}\n"] + list(LEDGER_PACKAGES),
+                           capture_output=True, text=True)
+        packages = sorted(q.stdout.split())
+        self.commit = head.stdout.strip()
+        h = hashlib.sha256(json.dumps([files, cache, packages]).encode())
+        return h.hexdigest(), None
+
+    def key(self, test):
+        """The test's key: the base and its command, environment and folder with the build and
+        source folders' paths replaced (they may lie elsewhere in another session)."""
+        if self.base is None:
+            return None
+
+        def norm(s):
+            return s.replace(self.build, "<build>").replace(self.root, "<source>")
+        what = [[norm(a) for a in test["command"]], [norm(e) for e in test["env"]], norm(test["cwd"])]
+        return hashlib.sha256(json.dumps([self.base, what]).encode()).hexdigest()
+
+    def clean(self, name, key):
+        r = self.data["tests"].get(name)
+        return key is not None and r is not None and r["key"] == key and r["status"] == "clean"
+
+    def put(self, name, key, record):
+        if key is None:
+            return
+        if self._base()[0] != self.base:  # a commit or an edit since the start: the build may not be HEAD's
+            print(f"memcheck: {name} not put in the ledger: the sources changed during the run", flush=True)
+            return
+        keep = ("status", "exit", "errors", "lost_bytes", "reports", "wall_s", "cpu_s", "when")
+        with self.lock:
+            try:
+                with open(self.path) as f:
+                    self.data["tests"].update(json.load(f).get("tests", {}))
+            except (OSError, ValueError):
+                pass
+            self.data["tests"][name] = dict({"key": key, "commit": self.commit[:12]},
+                                            **{k: record[k] for k in keep})
+            tmp = f"{self.path}.{os.getpid()}.tmp"
+            with open(tmp, "w") as f:
+                json.dump(self.data, f, indent=1, sort_keys=True)
+                f.write("\n")
+                f.flush()
+                os.fsync(f.fileno())
+            os.replace(tmp, self.path)
+
+
 # ---- running one test ---------------------------------------------------------------------------
 
 LIVE = set()  # the valgrind processes running now, killed with the script
@@ -374,12 +479,14 @@ def ordered(tests, order, cost_path):
     return tests
 
 
-def print_list(tests, prints, results, verbose):
+def print_list(tests, prints, results, ledger, verbose):
     counts = {"clean": 0, "failed": 0, "pending": 0}
     for t in tests:
         state = results.state(t["name"], prints[t["name"]])
-        counts[state] += 1
         r = results.records.get(t["name"])
+        if state == "pending" and ledger.clean(t["name"], ledger.key(t)):
+            state, r = "clean", ledger.data["tests"][t["name"]]
+        counts[state] += 1
         if verbose or state == "failed":
             extra = f" ({r['status']}, {r['wall_s']} s, {r['errors']} errors, {r['lost_bytes']} bytes lost)" \
                 if r and state != "pending" else ""
@@ -393,7 +500,7 @@ def print_list(tests, prints, results, verbose):
     return 1 if counts["failed"] else 0
 
 
-def run_all(todo, waits, fp, results, out, supp, shim, jobs, force):
+def run_all(todo, waits, fp, results, ledger, out, supp, shim, jobs, force):
     """Runs the tests of todo on jobs threads, each after the tests it waits for; returns the names
     of those that failed."""
     failed = []
@@ -417,7 +524,8 @@ def run_all(todo, waits, fp, results, out, supp, shim, jobs, force):
                     qlock.notify_all()
 
     def run_test(t):
-        if t["name"] not in prerequisites and not force and results.clean(t["name"], fp.of(t)[0]):
+        if t["name"] not in prerequisites and not force and (results.clean(t["name"], fp.of(t)[0]) or
+                                                             ledger.clean(t["name"], ledger.key(t))):
             return
         before, files_before = fp.of(t)  # what runs now (the build may have changed since the start)
         code, wall, cpu, output = run_one(t, out, supp, shim)
@@ -426,6 +534,8 @@ def run_all(todo, waits, fp, results, out, supp, shim, jobs, force):
         if after != before:  # rebuilt while it ran: no result for either build
             rec["status"], rec["fingerprint"] = "rebuilt while running", None
         results.put(t["name"], rec)
+        if rec["fingerprint"] is not None:
+            ledger.put(t["name"], ledger.key(t), rec)
         ok = rec["status"] == "clean"
         with qlock:
             print(f"{'ok  ' if ok else 'FAIL'} {t['name']}: {rec['status']}, exit {code}, {rec['errors']} errors, "
@@ -488,6 +598,8 @@ def main():
     p.add_argument("--force", action="store_true", help="rerun tests already clean for the same fingerprint")
     p.add_argument("--list", action="store_true", help="print clean / failed / pending counts, run nothing")
     p.add_argument("-v", "--verbose", action="store_true", help="with --list: one line per test")
+    p.add_argument("--ledger", default=os.path.join(HERE, "ledger.json"),
+                   help="the results kept in the repository (default: tests/valgrind/ledger.json)")
     args = p.parse_args()
     build = os.path.abspath(args.build)
     out = os.path.abspath(args.out or os.path.join(build, "memcheck"))
@@ -499,11 +611,21 @@ def main():
     for t in tests:
         prints[t["name"]], files[t["name"]] = fp.of(t)
     results = Results(out)
+    ledger = Ledger(os.path.abspath(args.ledger), build)
+    if ledger.why:
+        print(f"memcheck: the ledger is not read or written: {ledger.why}", flush=True)
+    elif not args.list:
+        # what runs must be what the key names: HEAD's sources, built (seconds when up to date)
+        if subprocess.run(["cmake", "--build", build, "-j2"], stdout=subprocess.DEVNULL).returncode != 0:
+            sys.exit("memcheck: the build folder does not build")
+        for t in tests:
+            prints[t["name"]], files[t["name"]] = fp.of(t)
     if args.list:
-        return print_list(tests, prints, results, args.verbose)
+        return print_list(tests, prints, results, ledger, args.verbose)
     cost_path = args.cost_data or os.path.join(build, "Testing", "Temporary", "CTestCostData.txt")
     tests = ordered(tests, args.order, cost_path)
-    todo = [t for t in tests if args.force or not results.clean(t["name"], prints[t["name"]])]
+    todo = [t for t in tests if args.force or not (results.clean(t["name"], prints[t["name"]]) or
+                                                   ledger.clean(t["name"], ledger.key(t)))]
     todo, waits = with_prerequisites(todo, tests)
     signal.signal(signal.SIGTERM, stop)
     signal.signal(signal.SIGINT, stop)
@@ -511,8 +633,8 @@ def main():
     start_display()
     print(f"memcheck: {len(tests)} tests, {len(tests) - len(todo)} already clean, {len(todo)} to run; "
           f"logs and {RESULTS} in {out}", flush=True)
-    failed = run_all(todo, waits, fp, results, out, supp, shim, args.j, args.force)
-    status = print_list(tests, prints, results, False)
+    failed = run_all(todo, waits, fp, results, ledger, out, supp, shim, args.j, args.force)
+    status = print_list(tests, prints, results, ledger, False)
     return 1 if failed else status
 
 
