@@ -31,10 +31,10 @@ dies) loses only the test being run, which stays pending. --list prints the clea
 counts and starts nothing. Every result also goes to the ledger (--ledger, default
 tests/valgrind/ledger.json, committed), keyed by the sources tracked at HEAD, the build type, the
 toolchain's package versions and the test's command: a test clean there for its key now is
-skipped too, so a run resumes on a fresh checkout with a new build folder. --order cost runs the cheapest tests first, by ctest's cost data
-(BUILD_DIR/Testing/Temporary/CTestCostData.txt, or --cost-data FILE; tests without data last), so
-most tests are covered early. The exit status is 1 when a test run now, or an earlier failure not
-rerun, failed.
+skipped too, so a run resumes on a fresh checkout with a new build folder. --order cost runs the
+cheapest tests first, by ctest's cost data (BUILD_DIR/Testing/Temporary/CTestCostData.txt, or
+--cost-data FILE; tests without data last), so most tests are covered early. The exit status is 1
+when a test run now, or an earlier failure not rerun, failed.
 """
 import argparse
 import datetime
