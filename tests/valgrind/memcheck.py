@@ -185,6 +185,17 @@ class Fingerprints:
 
 # ---- the results file ---------------------------------------------------------------------------
 
+def write_json(path, data):
+    """data as JSON at path, written to a temporary name and renamed: a kill leaves the old file."""
+    tmp = f"{path}.{os.getpid()}.tmp"
+    with open(tmp, "w") as f:
+        json.dump(data, f, indent=1, sort_keys=True)
+        f.write("\n")
+        f.flush()
+        os.fsync(f.fileno())
+    os.replace(tmp, path)
+
+
 class Results:
     """results.json in --out: {test name: record}, rewritten to a temporary name and renamed."""
 
@@ -219,12 +230,7 @@ class Results:
             except (OSError, ValueError):
                 pass
             self.records[name] = record
-            tmp = f"{self.path}.{os.getpid()}.tmp"
-            with open(tmp, "w") as f:
-                json.dump(self.records, f, indent=1, sort_keys=True)
-                f.flush()
-                os.fsync(f.fileno())
-            os.replace(tmp, self.path)
+            write_json(self.path, self.records)
 
 
 # ---- the ledger: results that outlive the build folder ------------------------------------------
@@ -320,13 +326,7 @@ class Ledger:
                 pass
             self.data["tests"][name] = dict({"key": key, "commit": self.commit[:12]},
                                             **{k: record[k] for k in keep})
-            tmp = f"{self.path}.{os.getpid()}.tmp"
-            with open(tmp, "w") as f:
-                json.dump(self.data, f, indent=1, sort_keys=True)
-                f.write("\n")
-                f.flush()
-                os.fsync(f.fileno())
-            os.replace(tmp, self.path)
+            write_json(self.path, self.data)
 
 
 # ---- running one test ---------------------------------------------------------------------------
