@@ -16,7 +16,7 @@ traced /bin/sh instead of the untraced xvfb-run. The libFuzzer targets (label fu
 which gcc builds) carry AddressSanitizer and cannot run under valgrind; a sanitizer build
 cannot either: use a plain build (e.g. RelWithDebInfo). hwy_timer_shim.c is preloaded (valgrind
 3.19 cannot run libhwy's static initializer, which OpenImageIO pulls in). Suppressions: tests/valgrind/mesa.supp,
-Mesa/llvmpipe/OSMesa internals only, never a thinlight frame. One log per process in --out
+Mesa/llvmpipe/OSMesa internals and one false positive of glibc's ld.so, never a thinlight frame. One log per process in --out
 (default BUILD_DIR/memcheck).
 
 Resuming: --out holds results.json (runs sharing it merge their records), one record per test (its
