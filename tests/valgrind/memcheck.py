@@ -15,9 +15,9 @@ DISPLAY unset an Xvfb is started for the run, so the viewer tests start the view
 traced /bin/sh instead of the untraced xvfb-run. The libFuzzer targets (label fuzz, except the replays,
 which gcc builds) carry AddressSanitizer and cannot run under valgrind; a sanitizer build
 cannot either: use a plain build (e.g. RelWithDebInfo). hwy_timer_shim.c is preloaded (valgrind
-3.19 cannot run libhwy's static initializer, which OpenImageIO pulls in). Suppressions: tests/valgrind/mesa.supp,
-Mesa/llvmpipe/OSMesa internals and one false positive of glibc's ld.so, never a thinlight frame. One log per process in --out
-(default BUILD_DIR/memcheck).
+3.19 cannot run libhwy's static initializer, which OpenImageIO pulls in). Suppressions:
+tests/valgrind/mesa.supp, Mesa/llvmpipe/OSMesa internals and one false report of glibc's ld.so,
+never a thinlight frame. One log per process in --out (default BUILD_DIR/memcheck).
 
 Resuming: --out holds results.json (runs sharing it merge their records), one record per test (its
 fingerprint, status, wall and CPU seconds, memcheck's error count, lost bytes and first reports),
