@@ -318,15 +318,21 @@ class Ledger:
             print(f"memcheck: {name} not put in the ledger: the sources changed during the run", flush=True)
             return
         keep = ("status", "exit", "errors", "lost_bytes", "reports", "wall_s", "cpu_s", "when")
-        with self.lock:
-            try:
-                with open(self.path) as f:
-                    self.data["tests"].update(json.load(f).get("tests", {}))
-            except (OSError, ValueError):
-                pass
-            self.data["tests"][name] = dict({"key": key, "commit": self.commit[:12]},
-                                            **{k: record[k] for k in keep})
-            write_json(self.path, self.data)
+        # another run may write the ledger too: lock its folder (no lock file left in the tree)
+        folder = os.open(os.path.dirname(os.path.abspath(self.path)), os.O_RDONLY)
+        try:
+            with self.lock:
+                fcntl.flock(folder, fcntl.LOCK_EX)
+                try:
+                    with open(self.path) as f:
+                        self.data["tests"].update(json.load(f).get("tests", {}))
+                except (OSError, ValueError):
+                    pass
+                self.data["tests"][name] = dict({"key": key, "commit": self.commit[:12]},
+                                                **{k: record[k] for k in keep})
+                write_json(self.path, self.data)
+        finally:
+            os.close(folder)  # releases the lock
 
 
 # ---- running one test ---------------------------------------------------------------------------
