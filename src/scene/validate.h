@@ -1,0 +1,83 @@
+/* One validation of what a scene hands the renderer: cameras, textures, materials' texture indices
+ * and lights. The glTF loader (src/io) and the renderer (src/render) both run these checks, so what
+ * loads renders: the loader turns a failed check into its documented fallback with a warning, the
+ * renderer into an error; both carry the message written here, which names the field
+ * ("camera.fov_y = 3.14159: outside (0, pi)"). Pure C (and C++-includable), no GL, no allocation.
+ * The tables of decisions are in docs/gltf.md and docs/renderer-limits.md. */
+#ifndef TL_SCENE_VALIDATE_H
+#define TL_SCENE_VALIDATE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "thinlight/codec.h"
+#include "thinlight/scene.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* GL_MAX_TEXTURE_SIZE that every GL 4.5 context has: the loader's largest texture side. */
+#define TL__GL45_MAX_TEXTURE_SIZE 16384u
+
+/* Room for any message of these checks (the caller's prefix included). */
+#define TL__CHECK_MESSAGE_SIZE 320
+
+/* A camera with its defaults and fallbacks applied: what a frame is rendered with. */
+typedef struct tl__camera_view {
+    double eye[3];
+    double right[3], up[3], back[3]; /* orthonormal, world space; the view looks along -back */
+    float fov_y, near_z, far_z;      /* far_z 0: an infinite far plane */
+    float target_distance;           /* |target - position| */
+    int near_raised; /* near_z was below the depth format's floor and was raised to it (a warning) */
+} tl__camera_view;
+
+/* The union of the objects' bounds (non-finite boxes left out); 0 when nothing is left. */
+int tl__objects_bounds(const tl_object *objects, size_t count, float min[3], float max[3]);
+
+/*
+ * Resolves a camera as a frame uses it. Errors (TL_ERROR_INVALID_ARGUMENT, the message naming the
+ * field after `what`, e.g. "camera"): a non-finite position, target or up; position == target;
+ * fov_y negative, NaN, not below pi or too narrow for a float projection; near_z negative or not
+ * finite; far_z negative, NaN, or finite and not beyond near_z. Defaults: fov_y 0 = 60 degrees,
+ * near_z 0 = 0.1, far_z 0 or +Inf = infinite, up 0 = +Y; an up parallel to the view is replaced
+ * by the limit of views tilted towards -Z (or +Y when up is along Z), so the view stays defined.
+ * Fallback (TL_OK, out->near_raised, the warning in `message`): a near_z below the floor of
+ * `depth` (2^-24 of the distance to the bounds' farthest corner, or the far plane when nearer, for
+ * D24; 2^-126 for reversed D32F), where the depth holds nothing of the scene, is raised to 2^-16 of
+ * that distance. NULL bounds: no floor.
+ */
+tl_result tl__camera_resolve(const tl_camera *c, const char *what, tl_depth_format depth, const float *bounds_min,
+                             const float *bounds_max, tl__camera_view *out, char *message, size_t size);
+
+/* The column-major view matrix (world to view) of a resolved camera. */
+void tl__camera_view_matrix(const tl__camera_view *v, float m[16]);
+
+/* A texture's size and pixels: width and height 1..max_side, pixels present. TL_ERROR_INVALID_ARGUMENT
+ * or TL_ERROR_LIMIT (over max_side) with the message naming the field after `what`. */
+tl_result tl__texture_check(const tl_texture *t, const char *what, uint32_t max_side, char *message, size_t size);
+
+/* The texture slots of tl_material, in the renderer's order (albedo, normal, metallic-roughness,
+ * emissive, occlusion), and whether each holds sRGB-encoded colour. */
+#define TL__MATERIAL_TEXTURE_SLOTS 5
+typedef struct tl__texture_slot {
+    const char *name; /* the field's name */
+    size_t offset;    /* of its uint32_t index in tl_material */
+    int srgb;
+} tl__texture_slot;
+extern const tl__texture_slot tl__material_texture_slots[TL__MATERIAL_TEXTURE_SLOTS];
+/* The index in slot k of `m`. */
+uint32_t tl__material_texture(const tl_material *m, int k);
+
+/* Every texture index of a material is TL_NO_TEXTURE or below texture_count. */
+tl_result tl__material_check(const tl_material *m, const char *what, size_t texture_count, char *message, size_t size);
+
+/* A light's type and values: finite position, direction and colour (a negative colour is allowed:
+ * the renderer takes it as 0); point and spot: a finite radius > 0 and source_radius >= 0; spot and
+ * directional: a direction that is not zero; spot: cos_outer < cos_inner. */
+tl_result tl__light_check(const tl_light *l, const char *what, char *message, size_t size);
+
+#ifdef __cplusplus
+}
+#endif
+#endif
