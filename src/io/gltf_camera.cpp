@@ -1,9 +1,12 @@
 // The scene's camera: the first perspective camera node of the scene, or else one that frames the
 // scene's bounds (tl_camera has no orthographic projection, so orthographic cameras fall back).
+#include <cfloat>
 #include <cmath>
+#include <cstdio>
 
 #include "gltf_internal.h"
 #include "gltf_math.h"
+#include "scene/validate.h"
 
 namespace tl_gltf {
 namespace {
@@ -31,10 +34,28 @@ void framing_camera(const float bmin[3], const float bmax[3], tl_camera *out)
     out->far_z = to_float(2.0 * (dist + r));
 }
 
+// The file's camera as the renderer will resolve it (scene/validate.h, with the default D24
+// depth): what the renderer would refuse is a warning and the framing camera; a near plane below
+// the floor is raised here, with a warning, so that the renderer has nothing left to say.
+bool renderable(const context &c, const std::string &name, const float *bmin, const float *bmax, tl_camera *cam)
+{
+    tl__camera_view v;
+    char msg[TL__CHECK_MESSAGE_SIZE];
+    if (tl__camera_resolve(cam, "camera", TL_DEPTH_FORMAT_D24, bmin, bmax, &v, msg, sizeof msg) != TL_OK) {
+        warn(c, name + ": " + msg + "; using a camera that frames the scene");
+        return false;
+    }
+    if (v.near_raised) {
+        warn(c, name + ": " + msg);
+        cam->near_z = v.near_z;
+    }
+    return true;
+}
+
 } // namespace
 
 void make_camera(const context &c, const tinygltf::Model &m, const scene_graph &g, const float bmin[3],
-                 const float bmax[3], tl_camera *out)
+                 const float bmax[3], const tl_scene *s, tl_camera *out)
 {
     framing_camera(bmin, bmax, out);
     if (g.camera_node < 0) return;
@@ -46,8 +67,11 @@ void make_camera(const context &c, const tinygltf::Model &m, const scene_graph &
         return;
     }
     const tinygltf::PerspectiveCamera &p = cam.perspective;
-    if (!(p.yfov > 0.0 && p.yfov < pi) || !(p.znear > 0.0) || !fits_float(p.znear)) {
-        warn(c, name + ": yfov or znear out of range; using a camera that frames the scene");
+    // glTF has no zero defaults: yfov and znear must be > 0 (0 would mean the renderer's default)
+    if (!(p.yfov > 0.0) || !(p.znear > 0.0) || (float)p.yfov == 0.0f || (float)p.znear == 0.0f) {
+        char msg[160];
+        std::snprintf(msg, sizeof msg, ": yfov = %g, znear = %g: both must be > 0 in single precision", p.yfov, p.znear);
+        warn(c, name + msg + "; using a camera that frames the scene");
         return;
     }
     const double origin[3] = {0, 0, 0}, minus_z[3] = {0, 0, -1}, plus_y[3] = {0, 1, 0};
@@ -64,20 +88,19 @@ void make_camera(const context &c, const tinygltf::Model &m, const scene_graph &
     double depth = 0.0;
     for (int k = 0; k < 3; k++) depth += (0.5 * ((double)bmin[k] + bmax[k]) - pos[k]) * fwd[k];
     if (!(depth > p.znear)) depth = 1.0;
+    tl_camera file = {};
     for (int k = 0; k < 3; k++) {
-        out->position[k] = (float)pos[k];
-        out->target[k] = to_float(pos[k] + fwd[k] * depth);
-        out->up[k] = (float)up[k];
+        file.position[k] = (float)pos[k];
+        file.target[k] = to_float(pos[k] + fwd[k] * depth);
+        file.up[k] = (float)up[k];
     }
-    out->fov_y = (float)p.yfov;
-    out->near_z = (float)p.znear;
-    // glTF: zfar absent (tinygltf: 0) means an infinite projection.
-    if (p.zfar > p.znear && fits_float(p.zfar)) {
-        out->far_z = (float)p.zfar;
-    } else {
-        if (p.zfar != 0.0) warn(c, name + ": zfar <= znear; using an infinite far plane");
-        out->far_z = 0.0f;
-    }
+    file.fov_y = (float)p.yfov;
+    file.near_z = (float)p.znear;
+    // glTF: zfar absent (tinygltf: 0) means an infinite projection; one past float's range too
+    file.far_z = p.zfar > FLT_MAX ? INFINITY : (float)p.zfar; // below -FLT_MAX: -Inf, refused
+    float omin[3], omax[3];
+    bool drawn = tl__objects_bounds(s->objects, s->object_count, omin, omax);
+    if (renderable(c, name, drawn ? omin : nullptr, drawn ? omax : nullptr, &file)) *out = file;
 }
 
 } // namespace tl_gltf

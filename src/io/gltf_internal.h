@@ -329,8 +329,11 @@ void orthogonal(const float n[3], float out[3]);
 void convert_lights(const context &c, const tinygltf::Model &m, const scene_graph &g, vec<tl_light> *out);
 void default_rig(const float bmin[3], const float bmax[3], vec<tl_light> *out);
 void extra_lights(const context &c, const float bmin[3], const float bmax[3], vec<tl_light> *out);
+// Skips, with a warning naming `what`N], each light from `first` on that the renderer would refuse.
+void drop_unrenderable(const context &c, const char *what, size_t first, vec<tl_light> *lights);
+// The file's camera, or the framing camera; `s` holds the scene's objects (the near plane's floor).
 void make_camera(const context &c, const tinygltf::Model &m, const scene_graph &g, const float bmin[3],
-                 const float bmax[3], tl_camera *out);
+                 const float bmax[3], const tl_scene *s, tl_camera *out);
 
 // Linear ambient radiance of every loaded scene (docs/gltf.md).
 constexpr float ambient = 0.03f;

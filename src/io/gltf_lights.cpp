@@ -7,6 +7,7 @@
 
 #include "gltf_internal.h"
 #include "gltf_math.h"
+#include "scene/validate.h"
 
 namespace tl_gltf {
 namespace {
@@ -36,6 +37,15 @@ struct rng {
     }
     double unit() { return (double)(next() >> 11) * 0x1.0p-53; }
 };
+
+// What the renderer checks (scene/validate.h): a light it would refuse is skipped with a warning.
+bool renderable(const context &c, const std::string &name, const tl_light &l)
+{
+    char msg[TL__CHECK_MESSAGE_SIZE];
+    if (tl__light_check(&l, name.c_str(), msg, sizeof msg) == TL_OK) return true;
+    warn(c, std::string(msg) + "; skipped");
+    return false;
+}
 
 } // namespace
 
@@ -105,8 +115,16 @@ void convert_lights(const context &c, const tinygltf::Model &m, const scene_grap
             l.cos_outer = (float)std::cos(outer);
             if (!(l.cos_outer < l.cos_inner)) l.cos_outer = std::nextafter(l.cos_inner, -1.0f);
         }
-        out->push_back(l);
+        if (renderable(c, name, l)) out->push_back(l);
     }
+}
+
+void drop_unrenderable(const context &c, const char *what, size_t first, vec<tl_light> *lights)
+{
+    size_t kept = first;
+    for (size_t i = first; i < lights->size(); i++)
+        if (renderable(c, what + std::to_string(i - first) + "]", (*lights)[i])) (*lights)[kept++] = (*lights)[i];
+    lights->resize(kept);
 }
 
 void default_rig(const float bmin[3], const float bmax[3], vec<tl_light> *out)

@@ -248,13 +248,18 @@ void finish_scene(const context &c, const tinygltf::Model &model, load_state *st
 
     vec<tl_light> lights = make_vec<tl_light>(c);
     convert_lights(c, model, st->g, &lights);
-    if (lights.empty() && c.default_lights) default_rig(s->bounds_min, s->bounds_max, &lights);
+    if (lights.empty() && c.default_lights) {
+        default_rig(s->bounds_min, s->bounds_max, &lights);
+        drop_unrenderable(c, "default_rig[", 0, &lights);
+    }
+    size_t first_extra = lights.size();
     extra_lights(c, s->bounds_min, s->bounds_max, &lights);
+    drop_unrenderable(c, "extra_lights[", first_extra, &lights);
     s->lights = scene_array<tl_light>(c, lights.size(), std::to_string(lights.size()) + " lights");
     if (!lights.empty()) std::memcpy(s->lights, lights.data(), lights.size() * sizeof(tl_light));
     s->light_count = lights.size();
 
-    make_camera(c, model, st->g, s->bounds_min, s->bounds_max, &s->camera);
+    make_camera(c, model, st->g, s->bounds_min, s->bounds_max, s, &s->camera);
     for (float &a : s->ambient) a = ambient;
 }
 

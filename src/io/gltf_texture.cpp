@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "gltf_internal.h"
+#include "scene/validate.h"
 
 namespace tl_gltf {
 namespace {
@@ -119,6 +120,14 @@ uint32_t texture_for(const context &c, const tinygltf::Model &m, texture_table *
     set_name(&out, !img.name.empty() ? img.name : (!img.uri.empty() && img.uri.compare(0, 5, "data:") != 0)
                                                       ? img.uri
                                                       : element("images", ii));
+    // What every GL 4.5 renderer takes (scene/validate.h, as tl_renderer_set_scene checks it)
+    char msg[TL__CHECK_MESSAGE_SIZE];
+    if (tl__texture_check(&out, element("images", ii).c_str(), TL__GL45_MAX_TEXTURE_SIZE, msg, sizeof msg) != TL_OK) {
+        free_bytes(c, out.rgba, (size_t)out.width * out.height * 4);
+        warn(c, std::string(msg) + "; using the flat colour");
+        t->image_slot[ii] = TL_NO_TEXTURE;
+        return TL_NO_TEXTURE;
+    }
     t->textures.push_back(out);
     t->image_slot[ii] = (uint32_t)(t->textures.size() - 1);
     return t->image_slot[ii];
