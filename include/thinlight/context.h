@@ -136,6 +136,11 @@ TL_API tl_result tl_context_create(const tl_context_desc *desc, tl_context **out
  *  current. TL_ERROR_GL when the platform refuses (tl_context_last_error(ctx) says why). */
 TL_API tl_result tl_context_make_current(tl_context *ctx);
 
+/** Whether `ctx` is current on the calling thread (false for NULL); as cheap as the platform's
+ *  OSMesaGetCurrentContext, eglGetCurrentContext or glfwGetCurrentContext. A renderer loading GL
+ *  through tl_context_proc_loader asks this before every call that uses GL. */
+TL_API bool tl_context_is_current(const tl_context *ctx);
+
 /** The address of a GL function, NULL if unknown (or for a NULL argument). GLFW needs `ctx`
  *  current; OSMesa and EGL (eglGetProcAddress, core functions included) do not. */
 TL_API tl_gl_proc tl_context_get_proc_address(tl_context *ctx, const char *name);

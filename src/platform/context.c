@@ -236,6 +236,8 @@ tl_result tl_context_make_current(tl_context *ctx)
     return tl__context_failed(ctx, ctx->ops->make_current(ctx));
 }
 
+bool tl_context_is_current(const tl_context *ctx) { return ctx && ctx->ops->is_current(ctx); }
+
 tl_gl_proc tl_context_get_proc_address(tl_context *ctx, const char *name)
 {
     if (!ctx || !name) return NULL;

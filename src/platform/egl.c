@@ -349,6 +349,16 @@ static tl_result tl__egl_make_current(tl_context *ctx)
     return TL_OK;
 }
 
+/* The current desktop-GL context is this one; the thread's bound API is left as it was. */
+static bool tl__egl_is_current(const tl_context *ctx)
+{
+    const tl__egl *e = ctx->impl;
+    EGLenum api = eglQueryAPI();
+    bool current = eglBindAPI(EGL_OPENGL_API) && eglGetCurrentContext() == e->context;
+    if (api != EGL_OPENGL_API && api != EGL_NONE) eglBindAPI(api);
+    return current;
+}
+
 /* Releases the current desktop-GL EGL context, leaving the thread's bound API as it was. */
 static void tl__egl_release(void)
 {
@@ -380,6 +390,7 @@ static void tl__egl_destroy(tl_context *ctx)
 const tl__context_ops tl__egl_ops = {
     .create = tl__egl_create,
     .make_current = tl__egl_make_current,
+    .is_current = tl__egl_is_current,
     .release = tl__egl_release,
     .proc = tl__egl_proc,
     .swap = NULL,

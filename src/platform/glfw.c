@@ -114,6 +114,12 @@ static tl_result tl__glfw_make_current(tl_context *ctx)
     return TL_OK;
 }
 
+static bool tl__glfw_is_current(const tl_context *ctx)
+{
+    const tl__glfw *g = ctx->impl;
+    return glfwGetCurrentContext() == g->window;
+}
+
 static void tl__glfw_release(void)
 {
     /* Only meaningful while GLFW is initialised by us; the count is read under the lock. */
@@ -162,6 +168,7 @@ static void tl__glfw_destroy(tl_context *ctx)
 const tl__context_ops tl__glfw_ops = {
     .create = tl__glfw_create,
     .make_current = tl__glfw_make_current,
+    .is_current = tl__glfw_is_current,
     .release = tl__glfw_release,
     .proc = tl__glfw_proc,
     .swap = tl__glfw_swap,

@@ -104,6 +104,12 @@ static tl_result tl__osmesa_make_current(tl_context *ctx)
     return TL_OK;
 }
 
+static bool tl__osmesa_is_current(const tl_context *ctx)
+{
+    const tl__osmesa *o = ctx->impl;
+    return OSMesaGetCurrentContext() == o->context;
+}
+
 static void tl__osmesa_release(void)
 {
     if (OSMesaGetCurrentContext()) OSMesaMakeCurrent(NULL, NULL, 0, 0, 0);
@@ -129,6 +135,7 @@ static void tl__osmesa_destroy(tl_context *ctx)
 const tl__context_ops tl__osmesa_ops = {
     .create = tl__osmesa_create,
     .make_current = tl__osmesa_make_current,
+    .is_current = tl__osmesa_is_current,
     .release = tl__osmesa_release,
     .proc = tl__osmesa_proc,
     .swap = NULL,

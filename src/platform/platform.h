@@ -75,11 +75,12 @@ static inline void tl__free(const tl_allocator *a, void *ptr)
 
 /* One back end. create fills ctx->impl, major/minor and ctx->platform and makes the context
  * current; on failure it leaves ctx->impl NULL, writes ctx->error and cleans up after itself.
- * release makes no context of this back end current on the calling thread. swap and size may be
- * NULL: nothing to present, and the size asked for. */
+ * release makes no context of this back end current on the calling thread; is_current tells whether
+ * ctx is the current one. swap and size may be NULL: nothing to present, and the size asked for. */
 struct tl__context_ops {
     tl_result (*create)(tl_context *ctx, const tl__context_config *cfg);
     tl_result (*make_current)(tl_context *ctx);
+    bool (*is_current)(const tl_context *ctx);
     void (*release)(void);
     tl_gl_proc (*proc)(tl_context *ctx, const char *name);
     tl_result (*swap)(tl_context *ctx);
