@@ -229,6 +229,9 @@ typedef struct tl_ssr_desc {
 typedef void (*tl_gl_function)(void);
 /** Loader for GL entry points, e.g. tl_context_proc_loader or a wrapper of glfwGetProcAddress. */
 typedef tl_gl_function (*tl_get_proc_address_fn)(void *user, const char *name);
+/** Whether the renderer's GL context is current on the calling thread (non-zero: it is), e.g. a
+ *  wrapper of `glfwGetCurrentContext() == window`; called with get_proc_address_user. */
+typedef int (*tl_is_current_fn)(void *user);
 
 /** Bits of tl_target_id, for tl_renderer_desc.keep_targets and the plan's read/write sets. */
 #define TL_TARGET_BIT(target) (1u << (target))
@@ -295,7 +298,16 @@ typedef struct tl_renderer_desc {
      *  from it (docs/renderer-limits.md). */
     size_t max_storage_block_bytes;
     tl_get_proc_address_fn get_proc_address; /**< required */
-    void *get_proc_address_user;       /**< passed to get_proc_address */
+    void *get_proc_address_user;       /**< passed to get_proc_address (and is_current) */
+    /** Asked at the start of every call that uses GL (create, destroy, set_scene, set_lights,
+     *  resize, add_pass, remove_pass, render, render_to, wait, the reads and apply_fxaa): when the
+     *  context is not current the call fails with TL_ERROR_GL and a message that says so, and
+     *  changes nothing (destroy frees nothing; call it again where the context is current).
+     *  Zeroed: with tl_context_proc_loader as get_proc_address, the context's own answer
+     *  (tl_context_is_current, exact); otherwise one GL query whenever the calling thread differs
+     *  from the last one that had the context (it catches a thread with no context or another
+     *  one current, not a context switched on the same thread; docs/getting-started.md). */
+    tl_is_current_fn is_current;
     tl_allocator allocator;            /**< zeroed: malloc/free; every allocation of the renderer */
     tl_logger logger;                  /**< zeroed: silent; every failure is also in tl_renderer_last_error */
 } tl_renderer_desc;
@@ -490,9 +502,13 @@ TL_API const char *tl_pass_name(tl_pass pass);
 TL_API const char *tl_target_name(tl_target_id target);
 
 /** Creates the renderer in the current context. On failure *out is NULL and the message naming
- *  the problem goes to desc->logger (there is no object to ask). */
+ *  the problem goes to desc->logger (there is no object to ask). Every call that uses GL then
+ *  needs that context current on the calling thread, or fails with TL_ERROR_GL and changes
+ *  nothing (tl_renderer_desc.is_current). */
 TL_API tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out);
-/** Frees every GL object and allocation of the renderer (in its context, which must be current); NULL is ignored. */
+/** Frees every GL object and allocation of the renderer (in its context, which must be current:
+ *  otherwise it frees nothing and logs why; call it again where the context is current); NULL is
+ *  ignored. Destroy the renderer before its context. */
 TL_API void tl_renderer_destroy(tl_renderer *r);
 /** The last failure's message on this renderer ("" when none). */
 TL_API const char *tl_renderer_last_error(const tl_renderer *r);
@@ -506,7 +522,11 @@ TL_API const char *tl_renderer_last_error(const tl_renderer *r);
  *  TL_RENDERER_MAX_LIGHTS lights is TL_ERROR_LIMIT; a count whose array is NULL, an index count
  *  or object range that is not whole triangles, an index >= vertex_count, an object whose index
  *  range or material lies outside the arrays, or a non-finite position is
- *  TL_ERROR_INVALID_ARGUMENT. A refused scene leaves the previous one in place. */
+ *  TL_ERROR_INVALID_ARGUMENT. Then textures (a side 0 or over GL_MAX_TEXTURE_SIZE: TL_ERROR_LIMIT,
+ *  no pixels), materials' texture indices, lights and the camera are checked as tl_texture,
+ *  tl_material, tl_light and tl_camera say, each refusal naming the field ("textures[3].width =
+ *  0: outside 1..16384"; docs/renderer-limits.md). A refused scene leaves the previous one in
+ *  place. */
 TL_API tl_result tl_renderer_set_scene(tl_renderer *r, const tl_scene *scene);
 /** The most lights a scene or tl_renderer_set_lights may hold: 2^20, or fewer where the GL's
  *  GL_MAX_SHADER_STORAGE_BLOCK_SIZE (or tl_renderer_desc.max_storage_block_bytes) holds fewer
@@ -514,7 +534,9 @@ TL_API tl_result tl_renderer_set_scene(tl_renderer *r, const tl_scene *scene);
  *  before anything is allocated; the renderer keeps its lights (docs/renderer-limits.md). */
 #define TL_RENDERER_MAX_LIGHTS (1u << 20)
 
-/** Replaces the lights only (same scene geometry); re-plans when the light types change. */
+/** Replaces the lights only (same scene geometry); re-plans when the light types change. A light
+ *  tl_light does not allow is TL_ERROR_INVALID_ARGUMENT naming it and the field
+ *  ("lights[3].radius = 0: a point light needs a finite radius > 0"); the renderer keeps its lights. */
 TL_API tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t count);
 /** Changes the target size (a resized window): re-plans and reallocates the targets. */
 TL_API tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height);
@@ -522,8 +544,10 @@ TL_API tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t hei
 /** The current plan; TL_ERROR_INVALID_ARGUMENT before a scene is set. */
 TL_API tl_result tl_renderer_get_plan(const tl_renderer *r, tl_frame_plan *plan);
 
-/** Renders one frame with `camera` (NULL: the scene's) into the renderer's own targets. It does
- *  not wait for the GPU unless tl_renderer_desc.synchronous_stats is set. `stats` may be NULL (the
+/** Renders one frame with `camera` (NULL: the scene's) into the renderer's own targets. A camera
+ *  tl_camera does not allow is TL_ERROR_INVALID_ARGUMENT naming the field ("camera.fov_y =
+ *  3.14159: outside (0, pi)"); a near plane below the depth format's floor is raised, with one
+ *  warning per scene. It does not wait for the GPU unless tl_renderer_desc.synchronous_stats is set. `stats` may be NULL (the
  *  frame then issues no queries); otherwise it receives the newest frame whose queries are ready
  *  (stats->frame says which; CPU figures are of that frame too). */
 TL_API tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_frame_stats *stats);
@@ -544,7 +568,9 @@ typedef struct tl_render_output {
 /**
  * Renders one frame like tl_renderer_render, with the pass that writes the output writing into
  * `output` instead. The renderer's own output target is not written (tl_renderer_read_output
- * reads the last frame rendered with tl_renderer_render).
+ * reads the last frame rendered with tl_renderer_render). A framebuffer name that is not a
+ * framebuffer object of the current context, or one that is not complete, is
+ * TL_ERROR_INVALID_ARGUMENT naming it; the last 4 names found complete are not asked about again.
  *
  * The GL state it leaves, as after tl_renderer_render: framebuffer 0 bound for drawing and
  * reading, program 0, vertex array 0, no texture or sampler on the units it used (0..24), no

@@ -22,11 +22,12 @@ typedef struct tl_vertex {
                            along +v; may be zero when the object has no normal map */
 } tl_vertex;
 
-/** An RGBA8 texture; albedo textures hold sRGB-encoded colour. */
+/** An RGBA8 texture; albedo textures hold sRGB-encoded colour. tl_renderer_set_scene refuses a
+ *  texture outside these ranges, naming it (docs/renderer-limits.md). */
 typedef struct tl_texture {
-    uint32_t width;  /**< pixels, 1..16384 */
-    uint32_t height; /**< pixels, 1..16384 */
-    uint8_t *rgba; /**< width * height * 4 bytes, rows top to bottom */
+    uint32_t width;  /**< pixels, 1..GL_MAX_TEXTURE_SIZE (16384 or more; the glTF loader keeps to 16384) */
+    uint32_t height; /**< pixels, 1..GL_MAX_TEXTURE_SIZE */
+    uint8_t *rgba; /**< width * height * 4 bytes, rows top to bottom; not NULL */
     char name[64];   /**< for debug labels and messages, NUL-terminated */
 } tl_texture;
 
@@ -35,7 +36,8 @@ typedef struct tl_texture {
 
 /**
  * The renderer's material: Lambert diffuse + normalised Blinn-Phong specular (docs/renderer.md).
- * Textures are indices into the scene's textures or TL_NO_TEXTURE. Colour textures (albedo,
+ * Textures are indices into the scene's textures or TL_NO_TEXTURE; any other index past
+ * texture_count is refused by tl_renderer_set_scene. Colour textures (albedo,
  * emissive) hold sRGB-encoded values; data textures (normal, metallic-roughness, occlusion) linear.
  *
  * With TL_MATERIAL_METALLIC_ROUGHNESS the material is glTF's metallic-roughness model, converted
@@ -99,32 +101,40 @@ typedef enum tl_light_type {
  * A light with a finite range. Point and spot lights fall off with the windowed inverse square
  *   attenuation(d) = clamp(1 - (d / radius)^4, 0, 1)^2 / max(d^2, (0.01 radius)^2),
  * which reaches exactly zero at d = radius and stays finite at d = 0. The built-in scene leaves
- * the fields a type does not use at zero.
+ * the fields a type does not use at zero. Every field must be finite; a light outside the ranges
+ * below is refused by tl_renderer_set_lights and set_scene, naming the field.
  */
 typedef struct tl_light {
     tl_light_type type;  /**< point, spot or directional */
     float position[3];   /**< world space (point, spot) */
-    float direction[3];  /**< unit, the direction light travels (spot, directional) */
+    float direction[3];  /**< the direction light travels (spot, directional): not zero; made unit */
     float color[3];      /**< linear colour times intensity; the renderer takes a negative component as 0 and
                               saturates what a pixel receives at 65504 (FP16), docs/renderer-limits.md */
-    float radius;        /**< range; > 0 for point and spot */
+    float radius;        /**< range; > 0 for point and spot (0 is refused: it would reach nothing) */
     float cos_inner;     /**< spot: full intensity inside this cone */
-    float cos_outer;     /**< spot: zero outside this cone; cos_outer < cos_inner */
+    float cos_outer;     /**< spot: zero outside this cone; cos_outer < cos_inner (else refused) */
     /** Point and spot lights: the radius of the emitting sphere (GGX lighting only: the sphere's
      *  irradiance for diffuse, Karis' representative point for specular; docs/lighting.md).
-     *  0 (the default): a punctual light. The window and the cone are measured from the centre,
-     *  so `radius` still bounds everything the light reaches. */
+     *  0 (the default): a punctual light; >= 0. The window and the cone are measured from the
+     *  centre, so `radius` still bounds everything the light reaches. */
     float source_radius;
 } tl_light;
 
-/** A perspective camera looking from position at target. */
+/** A perspective camera looking from position at target. The renderer refuses, naming the field,
+ *  a camera it cannot draw (tl_renderer_render, and set_scene for the scene's); the table of
+ *  what is refused and what falls back is in docs/renderer-limits.md. Every field is finite. */
 typedef struct tl_camera {
     float position[3]; /**< world space eye */
-    float target[3];   /**< a world-space point the camera looks at */
-    float up[3];       /**< world-space up; zero = +Y */
-    float fov_y;  /**< vertical field of view in radians; <= 0 = 60 degrees */
-    float near_z; /**< near plane distance; <= 0 = 0.1 */
-    float far_z;  /**< <= 0 or Inf: infinite far plane */
+    float target[3];   /**< a world-space point the camera looks at; not the position */
+    /** World-space up; zero = +Y. Parallel to the view (looking straight down or up) the view is
+     *  the limit of views whose target moves towards -Z (+Y when up lies along Z). */
+    float up[3];
+    float fov_y;  /**< vertical field of view in radians, in (0, pi); 0 = 60 degrees */
+    /** Near plane distance, > 0; 0 = 0.1. One so small that the depth format holds nothing of the
+     *  scene (below 2^-24 of the distance to its farthest point with D24) is raised to 2^-16 of
+     *  that distance, with one warning. */
+    float near_z;
+    float far_z;  /**< beyond near_z; 0 or +Inf: an infinite far plane */
 } tl_camera;
 
 /** A scene: every array is owned by the scene and freed by tl_scene_destroy() with `allocator`. */

@@ -187,7 +187,7 @@ tl_result tl__frame_wait(tl_renderer *r, tl_frame_stats *stats)
 tl_result tl__frame(tl_renderer *r, const tl_camera *camera, const tl_render_output *out, tl_frame_stats *stats)
 {
     tl__view v;
-    tl_result res = tl__view_setup(r, camera ? camera : &r->camera, &v);
+    tl_result res = tl__view_setup(r, camera ? camera : &r->camera, camera ? "camera" : "scene.camera", &v);
     if (res != TL_OK) return res;
     if (!r->programs_ready && (res = tl__graph_programs(r)) != TL_OK) return res;
     double t0 = tl__now_ms(), c0 = tl__thread_cpu_ms();

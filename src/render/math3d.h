@@ -29,28 +29,6 @@ static inline void tl__vec3_normalize(float v[3])
     }
 }
 
-static inline void tl__vec3_cross(const float a[3], const float b[3], float r[3])
-{
-    r[0] = a[1] * b[2] - a[2] * b[1];
-    r[1] = a[2] * b[0] - a[0] * b[2];
-    r[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-/* View matrix looking from eye at target (right-handed, -Z forward). */
-static inline tl__mat4 tl__mat4_look_at(const float eye[3], const float target[3], const float up[3])
-{
-    float f[3] = {target[0] - eye[0], target[1] - eye[1], target[2] - eye[2]}, s[3], u[3];
-    tl__vec3_normalize(f);
-    tl__vec3_cross(f, up, s);
-    tl__vec3_normalize(s);
-    tl__vec3_cross(s, f, u);
-    tl__mat4 r = {{s[0], u[0], -f[0], 0, s[1], u[1], -f[1], 0, s[2], u[2], -f[2], 0,
-                   -(s[0] * eye[0] + s[1] * eye[1] + s[2] * eye[2]),
-                   -(u[0] * eye[0] + u[1] * eye[1] + u[2] * eye[2]),
-                   (f[0] * eye[0] + f[1] * eye[1] + f[2] * eye[2]), 1}};
-    return r;
-}
-
 /* Inverse transpose of the upper 3x3 of m, column-major 3x3 (normal matrix). */
 static inline void tl__normal_matrix(const tl__mat4 *m, float out[9])
 {

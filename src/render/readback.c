@@ -43,6 +43,7 @@ tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *size)
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
     tl_result res;
     if (!tl__size_check(r, rgba, size, (size_t)r->desc.width * r->desc.height * 4, "the output", &res)) return res;
+    if ((res = tl__need_context(r, "tl_renderer_read_output")) != TL_OK) return res;
     char msg[256];
     res = tl__target_read(&r->gl, &r->targets[TL_TARGET_OUTPUT], GL_RGBA, GL_UNSIGNED_BYTE, rgba, *size, msg, sizeof msg);
     if (res != TL_OK) return tl__fail(r, res, "renderer: reading the output: %s", msg);
@@ -56,10 +57,14 @@ static tl_result tl__read_depth(tl_renderer *r, float *rgba, size_t n, char *msg
     tl_result res = tl__target_read(&r->gl, &r->targets[TL_TARGET_DEPTH], GL_DEPTH_COMPONENT, GL_FLOAT, d,
                                     n * sizeof(float), msg, msg_size);
     if (res != TL_OK) return res;
-    tl_projection pr;
-    float fov = r->camera.fov_y > 0.0f ? r->camera.fov_y : 1.0471976f;
-    tl_projection_perspective(r->desc.depth_format, fov, (float)r->desc.width / (float)r->desc.height,
-                              r->camera.near_z > 0.0f ? r->camera.near_z : 0.1f, r->camera.far_z, &pr);
+    tl_projection pr; /* of the camera the depth was rendered with (set_scene: the scene's) */
+    const tl__camera_view *c = &r->frame_camera;
+    res = tl_projection_perspective(r->desc.depth_format, c->fov_y, (float)r->desc.width / (float)r->desc.height,
+                                    c->near_z, c->far_z, &pr);
+    if (res != TL_OK) {
+        snprintf(msg, msg_size, "no camera has been resolved yet");
+        return res;
+    }
     for (size_t i = 0; i < n; i++) {
         float dv = d[i];
         rgba[4 * i + 0] = dv;
@@ -101,6 +106,7 @@ tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id id, float *rgba, 
     if (res != TL_OK) return res;
     size_t n = (size_t)r->targets[id].width * r->targets[id].height; /* a reduced target: its first level */
     if (!tl__size_check(r, rgba, size, n * 4 * sizeof(float), tl_target_name(id), &res)) return res;
+    if ((res = tl__need_context(r, "tl_renderer_read_target")) != TL_OK) return res;
     char msg[256] = "";
     if (id == TL_TARGET_DEPTH) res = tl__read_depth(r, rgba, n, msg, sizeof msg);
     else if (id == TL_TARGET_RT0) res = tl__read_rt0(r, rgba, n, msg, sizeof msg);
@@ -125,6 +131,7 @@ tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *o
     tl_result res;
     if (!tl__size_check(r, out, size, (size_t)r->desc.width * r->desc.height * 4, "the FXAA image", &res)) return res;
     if (!rgba) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: apply_fxaa needs an input image");
+    if ((res = tl__need_context(r, "tl_renderer_apply_fxaa")) != TL_OK) return res;
     size_t fxaa_index = 0;
     const tl__compiled_pass *fxaa = tl__fxaa_pass(r, &fxaa_index);
     if (!fxaa || !r->luma.fbo) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: FXAA is off in this renderer");

@@ -84,6 +84,7 @@ static tl_result tl__create_objects(tl_renderer *r)
     const GladGLContext *gl = &r->gl;
     GLint max_size = 0, ubo_align = 0, ssbo_align = 0;
     gl->GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    r->max_texture_size = max_size;
     if ((GLint)r->desc.width > max_size || (GLint)r->desc.height > max_size)
         return tl__fail(r, TL_ERROR_LIMIT, "renderer: %ux%u exceeds GL_MAX_TEXTURE_SIZE %d", r->desc.width,
                         r->desc.height, max_size);
@@ -133,6 +134,13 @@ tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out)
     r->desc = d;
     r->desc.allocator = a;
     r->log.logger = d.logger;
+    tl__context_check_init(r);
+    if (r->is_current && !tl__context_current(r)) { /* without a callback GL loading tells */
+        tl__logger_fail(&d.logger, TL_ERROR_GL, "renderer: tl_renderer_create: no GL context is current on this thread "
+                                                "(the renderer is created in the current context)");
+        tl__free(&a, r);
+        return TL_ERROR_GL;
+    }
     char msg[512];
     res = tl__gl_load(&r->gl, tl__load_thunk, r, msg, sizeof msg);
     if (res != TL_OK) {
@@ -152,6 +160,8 @@ tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out)
 void tl_renderer_destroy(tl_renderer *r)
 {
     if (!r) return;
+    /* GL names mean other objects in another context: leave everything for a call that can */
+    if (tl__need_context(r, "tl_renderer_destroy") != TL_OK) return;
     const GladGLContext *gl = &r->gl;
     tl__scene_release(r);
     tl__lights_release(r);
@@ -168,17 +178,33 @@ void tl_renderer_destroy(tl_renderer *r)
 
 /* ---- scene, lights, size -------------------------------------------------------------------- */
 
+/* The scene's camera, bounds and warnings replace the previous scene's. */
+static void tl__scene_frame_take(tl_renderer *r, const tl__scene_frame *f)
+{
+    memcpy(r->bounds_min, f->bounds_min, sizeof r->bounds_min);
+    memcpy(r->bounds_max, f->bounds_max, sizeof r->bounds_max);
+    r->has_bounds = f->has_bounds;
+    r->frame_camera = f->camera;
+    r->warned = f->warning[0] ? TL__WARNED_NEAR : 0;
+    if (f->warning[0]) tl__log_message(&r->log, TL_LOG_WARNING, "renderer: %s", f->warning);
+}
+
 tl_result tl_renderer_set_scene(tl_renderer *r, const tl_scene *s)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__need_context(r, "tl_renderer_set_scene");
+    if (res != TL_OK) return res;
     if (!s) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: no scene");
-    tl_result res = tl__scene_validate(r, s);
+    tl__scene_frame frame;
+    res = tl__scene_validate(r, s);
+    if (res == TL_OK) res = tl__scene_camera(r, s, &frame);
     size_t kinds[TL__LIGHT_KINDS];
     if (res == TL_OK) res = tl__lights_store(r, s->lights, s->light_count, kinds);
     if (res != TL_OK) return res;
     tl__queries_drain(r);
     tl__scene_release(r);
     if ((res = tl__scene_upload(r, s)) != TL_OK) return res;
+    tl__scene_frame_take(r, &frame);
     r->has_scene = 1;
     r->programs_ready = 0;
     if ((res = tl__replan(r)) != TL_OK) {
@@ -195,7 +221,8 @@ tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t 
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
     size_t kinds[TL__LIGHT_KINDS];
-    tl_result res = tl__lights_store(r, lights, count, kinds);
+    tl_result res = tl__need_context(r, "tl_renderer_set_lights");
+    if (res == TL_OK) res = tl__lights_store(r, lights, count, kinds);
     if (res != TL_OK || !r->has_scene) return res;
     tl_scene_feature_set *f = &r->features;
     int changed = (f->point_lights > 0) != (kinds[0] > 0) || (f->spot_lights > 0) != (kinds[1] > 0) ||
@@ -210,11 +237,12 @@ tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t 
 tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result need = tl__need_context(r, "tl_renderer_resize");
+    if (need != TL_OK) return need;
     tl_renderer_desc d = r->desc;
     d.width = width;
     d.height = height;
-    GLint max_size = 0;
-    r->gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
+    GLint max_size = r->max_texture_size;
     if (!width || !height || width > TL__MAX_SIZE || height > TL__MAX_SIZE || (GLint)width > max_size ||
         (GLint)height > max_size)
         return tl__fail(r, width && height ? TL_ERROR_LIMIT : TL_ERROR_INVALID_ARGUMENT,
@@ -258,9 +286,11 @@ static tl_result tl__app_check(tl_renderer *r, const tl_app_pass_desc *d, int *a
 tl_result tl_renderer_add_pass(tl_renderer *r, const tl_app_pass_desc *desc)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__need_context(r, "tl_renderer_add_pass");
+    if (res != TL_OK) return res;
     if (!desc) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: no application pass");
     int anchor = -1;
-    tl_result res = tl__app_check(r, desc, &anchor);
+    res = tl__app_check(r, desc, &anchor);
     if (res != TL_OK) return res;
     tl__app_pass *a = &r->apps[r->app_count++];
     memset(a, 0, sizeof *a);
@@ -278,6 +308,8 @@ tl_result tl_renderer_add_pass(tl_renderer *r, const tl_app_pass_desc *desc)
 tl_result tl_renderer_remove_pass(tl_renderer *r, const char *name)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__need_context(r, "tl_renderer_remove_pass");
+    if (res != TL_OK) return res;
     for (size_t i = 0; name && i < r->app_count; i++)
         if (strcmp(r->apps[i].name, name) == 0) {
             memmove(&r->apps[i], &r->apps[i + 1], (r->app_count - i - 1) * sizeof r->apps[0]);
@@ -299,7 +331,8 @@ static tl_result tl__need_scene(tl_renderer *r)
 tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_frame_stats *stats)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
-    tl_result res = tl__need_scene(r);
+    tl_result res = tl__need_context(r, "tl_renderer_render");
+    if (res == TL_OK) res = tl__need_scene(r);
     return res == TL_OK ? tl__frame(r, camera, NULL, stats) : res;
 }
 
@@ -307,13 +340,17 @@ tl_result tl_renderer_render_to(tl_renderer *r, const tl_camera *camera, const t
                                 tl_frame_stats *stats)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__need_context(r, "tl_renderer_render_to");
+    if (res != TL_OK) return res;
     if (!output) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: render_to needs an output");
-    tl_result res = tl__need_scene(r);
+    res = tl__need_scene(r);
+    if (res == TL_OK) res = tl__output_check(r, output);
     return res == TL_OK ? tl__frame(r, camera, output, stats) : res;
 }
 
 tl_result tl_renderer_wait(tl_renderer *r, tl_frame_stats *stats)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
-    return tl__frame_wait(r, stats);
+    tl_result res = tl__need_context(r, "tl_renderer_wait");
+    return res == TL_OK ? tl__frame_wait(r, stats) : res;
 }

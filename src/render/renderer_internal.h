@@ -13,11 +13,16 @@
 #include "gl/stream.h"
 #include "math3d.h"
 #include "pass.h"
+#include "scene/validate.h"
 #include "targets.h"
 #include "thinlight/renderer.h"
 
+#include <threads.h>
+
 enum { TL__LIGHT_KINDS = 3 }; /* point, spot, directional: index = type - 1 */
 #define TL__QUERY_RING 4      /* frames whose queries may be in flight */
+#define TL__OUTPUTS_KNOWN 4   /* framebuffers render_to checked and does not ask about again */
+enum { TL__WARNED_NEAR = 1u }; /* warnings given once per scene (tl_renderer.warned) */
 
 /* One light volume instance (light.vert attributes 1..4), world space. */
 typedef struct tl__instance {
@@ -155,6 +160,14 @@ struct tl_renderer {
     tl__state state;
     size_t ubo_align, ssbo_align;
     size_t storage_max; /* bytes one storage block binding may hold (GL's, or the descriptor's lower one) */
+    GLint max_texture_size; /* GL_MAX_TEXTURE_SIZE, read at creation */
+
+    /* the context check (context_check.c) */
+    int (*is_current)(void *user); /* the descriptor's, thinlight's own, or NULL: the thread check */
+    thrd_t thread;                 /* the thread that last had the context (without is_current) */
+    int thread_known;
+    GLuint outputs_known[TL__OUTPUTS_KNOWN]; /* framebuffers render_to found complete */
+    unsigned output_known_count, output_next;
     size_t max_lights;  /* TL_RENDERER_MAX_LIGHTS, or fewer when storage_max holds fewer */
 
     /* the plan and its GL objects (graph.c) */
@@ -192,6 +205,10 @@ struct tl_renderer {
     float *draw_keys;    /* scratch for sorting transparent objects */
     size_t visible_opaque, visible_transparent;
     tl_camera camera;
+    float bounds_min[3], bounds_max[3]; /* the union of the objects' bounds: the near plane's floor */
+    int has_bounds;
+    tl__camera_view frame_camera; /* the last frame's camera as resolved (after set_scene: the scene's) */
+    unsigned warned;              /* TL__WARNED_* given since the scene was set */
     float ambient[3];
     int has_scene;
 
@@ -242,8 +259,20 @@ tl_result tl__program_get(tl_renderer *r, const char *label, const tl__program_s
                           GLuint *out);
 void tl__program_cache_destroy(tl_renderer *r);
 
+/* context_check.c: the renderer's context is current (the descriptor's is_current, thinlight's own
+ * contexts, or one GL query when the calling thread changes); render_to's framebuffer. */
+void tl__context_check_init(tl_renderer *r);
+int tl__context_current(tl_renderer *r);
+/* TL_ERROR_GL naming `call` when the context is not current. */
+tl_result tl__need_context(tl_renderer *r, const char *call);
+/* TL_ERROR_INVALID_ARGUMENT for a framebuffer that does not exist or is not complete. */
+tl_result tl__output_check(tl_renderer *r, const tl_render_output *out);
+
 /* view.c: the camera's matrices and frustum; the per-frame uniform block. */
-tl_result tl__view_setup(tl_renderer *r, const tl_camera *c, tl__view *v);
+/* Resolves a camera (scene/validate.h) with the scene's bounds: an error naming the field after
+ * `what`, or TL_OK after the near plane's warning (once per scene). */
+tl_result tl__camera_check(tl_renderer *r, const tl_camera *c, const char *what, tl__camera_view *out);
+tl_result tl__view_setup(tl_renderer *r, const tl_camera *c, const char *what, tl__view *v);
 void tl__frame_ubo_fill(const tl_renderer *r, const tl__view *v, tl__frame_ubo *u);
 /* The effects' parameters in the frame block (effects.c). */
 void tl__frame_ubo_effects(const tl_renderer_desc *d, const tl__view *v, tl__frame_ubo *u);

@@ -9,6 +9,8 @@
 #include "renderer_internal.h"
 #include "scene_upload.h"
 
+_Static_assert(TL__MATERIAL_TEXTURES == TL__MATERIAL_TEXTURE_SLOTS, "one texture unit per material texture slot");
+
 void tl__scene_release(tl_renderer *r)
 {
     const GladGLContext *gl = &r->gl;
@@ -90,14 +92,11 @@ tl_result tl__lights_store(tl_renderer *r, const tl_light *lights, size_t count,
     if (count && !lights) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: %zu lights but no array", count);
     memset(kinds, 0, TL__LIGHT_KINDS * sizeof kinds[0]);
     for (size_t i = 0; i < count; i++) {
-        const tl_light *l = &lights[i];
-        int bad = (unsigned)l->type >= TL_LIGHT_TYPE_COUNT_;
-        for (int k = 0; k < 3; k++)
-            bad |= !isfinite(l->position[k]) || !isfinite(l->direction[k]) || !isfinite(l->color[k]);
-        if (l->type != TL_LIGHT_DIRECTIONAL)
-            bad |= !(l->radius >= 0.0f) || !isfinite(l->radius) || !(l->source_radius >= 0.0f) || !isfinite(l->source_radius);
-        if (bad) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: light %zu has a non-finite or invalid field", i);
-        kinds[(l->type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : l->type) - 1]++;
+        char what[32], msg[TL__CHECK_MESSAGE_SIZE];
+        snprintf(what, sizeof what, "lights[%zu]", i);
+        if ((res = tl__light_check(&lights[i], what, msg, sizeof msg)) != TL_OK)
+            return tl__fail(r, res, "renderer: %s", msg);
+        kinds[(lights[i].type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : lights[i].type) - 1]++;
     }
     size_t n = count ? count : 1;
     tl_light *copy = (tl_light *)tl__alloc_array(&r->alloc, n, sizeof *copy);
@@ -111,9 +110,17 @@ tl_result tl__lights_store(tl_renderer *r, const tl_light *lights, size_t count,
         return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for %zu lights", count);
     }
     if (count) memcpy(copy, lights, count * sizeof *copy);
-    /* negative light is clamped to none (docs/renderer-limits.md): -inf otherwise in FP16 targets */
-    for (size_t i = 0; i < count; i++)
-        for (int k = 0; k < 3; k++) copy[i].color[k] = copy[i].color[k] > 0.0f ? copy[i].color[k] : 0.0f;
+    /* negative light is clamped to none (docs/renderer-limits.md): -inf otherwise in FP16 targets;
+     * directions are made unit (in double: any finite non-zero vector) */
+    for (size_t i = 0; i < count; i++) {
+        double d[3], l2 = 0.0;
+        for (int k = 0; k < 3; k++) {
+            copy[i].color[k] = copy[i].color[k] > 0.0f ? copy[i].color[k] : 0.0f;
+            d[k] = copy[i].direction[k];
+            l2 += d[k] * d[k];
+        }
+        for (int k = 0; k < 3 && l2 > 0.0; k++) copy[i].direction[k] = (float)(d[k] / sqrt(l2));
+    }
     tl__lights_release(r);
     r->lights = copy;
     r->instances = inst;
@@ -158,6 +165,36 @@ static tl_result tl__scene_counts(tl_renderer *r, const tl_scene *s)
     return TL_OK;
 }
 
+/* Textures (sizes against this context's GL_MAX_TEXTURE_SIZE, pixels present) and the materials'
+ * indices into them, as scene/validate.h checks them for the loader too. */
+static tl_result tl__scene_parts(tl_renderer *r, const tl_scene *s)
+{
+    char what[48], msg[TL__CHECK_MESSAGE_SIZE];
+    tl_result res;
+    for (size_t i = 0; i < s->texture_count; i++) {
+        snprintf(what, sizeof what, "textures[%zu]", i);
+        if ((res = tl__texture_check(&s->textures[i], what, (uint32_t)r->max_texture_size, msg, sizeof msg)) != TL_OK)
+            return tl__fail(r, res, "renderer: %s", msg);
+    }
+    for (size_t i = 0; i < s->material_count; i++) {
+        snprintf(what, sizeof what, "materials[%zu]", i);
+        if ((res = tl__material_check(&s->materials[i], what, s->texture_count, msg, sizeof msg)) != TL_OK)
+            return tl__fail(r, res, "renderer: %s", msg);
+    }
+    return TL_OK;
+}
+
+tl_result tl__scene_camera(tl_renderer *r, const tl_scene *s, tl__scene_frame *out)
+{
+    out->has_bounds = tl__objects_bounds(s->objects, s->object_count, out->bounds_min, out->bounds_max);
+    tl_result res = tl__camera_resolve(&s->camera, "scene.camera", r->desc.depth_format,
+                                       out->has_bounds ? out->bounds_min : NULL, out->has_bounds ? out->bounds_max : NULL,
+                                       &out->camera, out->warning, sizeof out->warning);
+    if (res != TL_OK) return tl__fail(r, res, "renderer: %s", out->warning);
+    if (!out->camera.near_raised) out->warning[0] = '\0';
+    return TL_OK;
+}
+
 tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s)
 {
     tl_result res = tl__scene_counts(r, s);
@@ -183,13 +220,13 @@ tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s)
         for (int k = 0; k < 3; k++)
             if (!isfinite(s->vertices[i].position[k]))
                 return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: vertex %zu has a non-finite position", i);
-    return TL_OK;
+    return tl__scene_parts(r, s);
 }
 
+/* A texture tl__scene_parts accepted. */
 static GLuint tl__upload_texture(tl_renderer *r, const tl_texture *tx, int srgb)
 {
     const GladGLContext *gl = &r->gl;
-    if (!tx->rgba || !tx->width || !tx->height || tx->width > TL__MAX_SIZE || tx->height > TL__MAX_SIZE) return 0;
     GLuint id;
     gl->CreateTextures(GL_TEXTURE_2D, 1, &id);
     uint32_t levels = 1, m = tx->width > tx->height ? tx->width : tx->height;
@@ -208,9 +245,9 @@ static GLuint tl__upload_texture(tl_renderer *r, const tl_texture *tx, int srgb)
     return id;
 }
 
-static GLuint tl__material_texture(tl_renderer *r, const tl_scene *s, uint32_t index, int srgb)
+static GLuint tl__slot_texture(tl_renderer *r, const tl_scene *s, uint32_t index, int srgb)
 {
-    if (index >= s->texture_count) return 0;
+    if (index == TL_NO_TEXTURE) return 0;
     GLuint *slot = srgb ? &r->tex_srgb[index] : &r->tex_linear[index];
     if (!*slot) *slot = tl__upload_texture(r, &s->textures[index], srgb);
     return *slot;
@@ -242,15 +279,11 @@ static tl_result tl__upload_materials(tl_renderer *r, const tl_scene *s)
     if (!records) return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for %zu materials", n);
     for (size_t i = 0; i < s->material_count; i++) {
         const tl_material *m = &s->materials[i];
-        const uint32_t idx[TL__MATERIAL_TEXTURES] = {m->albedo_texture, m->normal_texture,
-                                                     m->metallic_roughness_texture, m->emissive_texture,
-                                                     m->occlusion_texture};
-        const int srgb[TL__MATERIAL_TEXTURES] = {1, 0, 0, 1, 0};
         int mask = 0;
         r->materials[i].flags = m->flags;
         for (int k = 0; k < TL__MATERIAL_TEXTURES; k++) {
-            /* a missing or unreadable texture leaves the flat factor (a warning is the loader's job) */
-            r->materials[i].textures[k] = tl__material_texture(r, s, idx[k], srgb[k]);
+            r->materials[i].textures[k] =
+                tl__slot_texture(r, s, tl__material_texture(m, k), tl__material_texture_slots[k].srgb);
             if (r->materials[i].textures[k]) mask |= 1 << k;
         }
         tl__material_record(m, mask, (tl__material_ubo *)(records + i * r->material_stride));

@@ -11,6 +11,15 @@
 /* Counts first (TL_ERROR_LIMIT past 32-bit indices, GL sizes, the light limit), then arrays, ranges
  * and index values (TL_ERROR_INVALID_ARGUMENT); reads nothing an array's count does not vouch for. */
 tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s);
+/* The scene's camera as resolved with its objects' bounds (an error naming the field), and the
+ * near plane's warning ("" when none), which set_scene gives once it has taken the scene. */
+typedef struct tl__scene_frame {
+    float bounds_min[3], bounds_max[3];
+    int has_bounds;
+    tl__camera_view camera;
+    char warning[TL__CHECK_MESSAGE_SIZE];
+} tl__scene_frame;
+tl_result tl__scene_camera(tl_renderer *r, const tl_scene *s, tl__scene_frame *out);
 /* Objects, materials, textures and geometry buffers; the scene's features into r->features. */
 tl_result tl__scene_upload(tl_renderer *r, const tl_scene *s);
 void tl__scene_release(tl_renderer *r);

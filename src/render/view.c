@@ -6,7 +6,7 @@
 
 static int tl__reversed(const tl_renderer *r) { return r->desc.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED; }
 
-static void tl__view_info(const tl_renderer *r, const tl_camera *c, tl__view *v)
+static void tl__view_info(const tl_renderer *r, tl__view *v)
 {
     tl_view_info *i = &v->info;
     memcpy(i->view, v->view.m, sizeof i->view);
@@ -14,27 +14,37 @@ static void tl__view_info(const tl_renderer *r, const tl_camera *c, tl__view *v)
     memcpy(i->view_projection, v->view_proj.m, sizeof i->view_projection);
     memcpy(i->eye, v->eye, sizeof i->eye);
     i->near_z = v->near_z;
-    i->far_z = c->far_z > 0.0f && isfinite(c->far_z) ? c->far_z : 0.0f;
+    i->far_z = r->frame_camera.far_z;
     i->reversed_z = tl__reversed(r);
     i->width = r->desc.width;
     i->height = r->desc.height;
 }
 
-tl_result tl__view_setup(tl_renderer *r, const tl_camera *c, tl__view *v)
+tl_result tl__camera_check(tl_renderer *r, const tl_camera *c, const char *what, tl__camera_view *out)
 {
-    float up[3] = {c->up[0], c->up[1], c->up[2]};
-    if (up[0] == 0.0f && up[1] == 0.0f && up[2] == 0.0f) up[1] = 1.0f;
-    float fov = c->fov_y > 0.0f ? c->fov_y : 1.0471976f;
-    float near_z = c->near_z > 0.0f ? c->near_z : 0.1f;
-    tl_result res = tl_projection_perspective(r->desc.depth_format, fov, (float)r->desc.width / (float)r->desc.height,
-                                              near_z, c->far_z, &v->projection);
-    if (res != TL_OK)
-        return tl__fail(r, res, "renderer: invalid camera (fov %g, near %g, far %g)", (double)c->fov_y,
-                        (double)c->near_z, (double)c->far_z);
-    for (int k = 0; k < 3; k++)
-        if (!isfinite(c->position[k]) || !isfinite(c->target[k]))
-            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: camera position or target is not finite");
-    v->view = tl__mat4_look_at(c->position, c->target, up);
+    char msg[TL__CHECK_MESSAGE_SIZE];
+    tl_result res = tl__camera_resolve(c, what, r->desc.depth_format, r->has_bounds ? r->bounds_min : NULL,
+                                       r->has_bounds ? r->bounds_max : NULL, out, msg, sizeof msg);
+    if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
+    if (out->near_raised && !(r->warned & TL__WARNED_NEAR)) { /* once per scene: not every frame */
+        r->warned |= TL__WARNED_NEAR;
+        tl__log_message(&r->log, TL_LOG_WARNING, "renderer: %s", msg);
+    }
+    return TL_OK;
+}
+
+tl_result tl__view_setup(tl_renderer *r, const tl_camera *c, const char *what, tl__view *v)
+{
+    tl__camera_view cam;
+    tl_result res = tl__camera_check(r, c, what, &cam);
+    if (res != TL_OK) return res;
+    res = tl_projection_perspective(r->desc.depth_format, cam.fov_y, (float)r->desc.width / (float)r->desc.height,
+                                    cam.near_z, cam.far_z, &v->projection);
+    if (res != TL_OK) /* the camera was resolved for this: a failure here is the renderer's bug */
+        return tl__fail(r, res, "renderer: no projection for fov %g, near %g, far %g", (double)cam.fov_y,
+                        (double)cam.near_z, (double)cam.far_z);
+    r->frame_camera = cam;
+    tl__camera_view_matrix(&cam, v->view.m);
     memcpy(v->proj.m, v->projection.m, sizeof v->proj.m);
     v->view_proj = tl__mat4_mul(&v->proj, &v->view);
     tl__frustum_planes(&v->view_proj, v->planes);
@@ -47,11 +57,10 @@ tl_result tl__view_setup(tl_renderer *r, const tl_camera *c, tl__view *v)
     }
     v->clear_depth = tl__reversed(r) ? 0.0f : 1.0f;
     memcpy(v->eye, c->position, sizeof v->eye);
-    v->near_z = near_z;
-    float dx = c->target[0] - c->position[0], dy = c->target[1] - c->position[1], dz = c->target[2] - c->position[2];
-    v->target_distance = sqrtf(dx * dx + dy * dy + dz * dz);
+    v->near_z = cam.near_z;
+    v->target_distance = cam.target_distance;
     v->time = (float)(r->frame_index % 3600000u) / 60.0f; /* the frame counter at 60 Hz */
-    tl__view_info(r, c, v);
+    tl__view_info(r, v);
     return TL_OK;
 }
 
