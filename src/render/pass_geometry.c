@@ -7,7 +7,12 @@
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
-static const tl__pipeline tl__opaque = {.depth_test = TL__DEPTH_LESS, .depth_write = 1, .color_write = 1,
+/* Every geometry pass that decides visibility tests LEQUAL (GEQUAL reversed): of fragments at the
+ * same stored depth the last drawn wins, as it does in a later pass at EQUAL, which draws the same
+ * objects in the same order. With LESS the G-buffer kept the first drawn and the material pass
+ * shaded the last: where two surfaces quantise to one depth (coplanar parts, decals, D24), the
+ * light of one surface with the material of the other (docs/frame.md, "Coplanar surfaces"). */
+static const tl__pipeline tl__opaque = {.depth_test = TL__DEPTH_LEQUAL, .depth_write = 1, .color_write = 1,
                                         .cull = TL__CULL_BACK};
 
 static tl__pipeline tl__geometry_state(const tl__plan_input *in, tl__depth_test test, int write, tl__blend blend)
@@ -31,7 +36,7 @@ static void tl__prepass_declare(const tl__plan_input *in, tl__pass_decl *d)
     if (!in->mode->forward || !tl__forward_prepass(in)) return;
     d->writes = d->clears = TL__B(DEPTH);
     d->attach_depth = 1;
-    d->state = tl__geometry_state(in, TL__DEPTH_LESS, 1, TL__BLEND_OFF);
+    d->state = tl__geometry_state(in, TL__DEPTH_LEQUAL, 1, TL__BLEND_OFF);
     d->state.color_write = 0;
 }
 
@@ -59,7 +64,7 @@ static void tl__gbuffer_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->writes = d->clears = TL__B(DEPTH) | in->mode->gbuffer_writes;
     d->optional = in->mode->gbuffer_writes & ~TL__B(HDR); /* kept when the light pass reads them */
     d->attach_depth = 1;
-    d->state = tl__geometry_state(in, TL__DEPTH_LESS, 1, TL__BLEND_OFF);
+    d->state = tl__geometry_state(in, TL__DEPTH_LEQUAL, 1, TL__BLEND_OFF);
 }
 
 static void tl__gbuffer_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
@@ -121,7 +126,7 @@ static void tl__forward_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->reads |= d->samples;
     d->attach_depth = 1;
     d->object_lights = !plus;
-    d->state = tl__geometry_state(in, prepass ? TL__DEPTH_EQUAL : TL__DEPTH_LESS, !prepass, TL__BLEND_OFF);
+    d->state = tl__geometry_state(in, prepass ? TL__DEPTH_EQUAL : TL__DEPTH_LEQUAL, !prepass, TL__BLEND_OFF);
 }
 
 static void tl__forward_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
@@ -149,7 +154,7 @@ static void tl__transparent_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->reads = TL__B(DEPTH) | TL__B(HDR); /* blended onto */
     d->attach_depth = 1;
     d->object_lights = 1; /* tiles hold lights for the opaque surfaces' depths only */
-    d->state = tl__geometry_state(in, TL__DEPTH_LESS, 0, TL__BLEND_ALPHA);
+    d->state = tl__geometry_state(in, TL__DEPTH_LEQUAL, 0, TL__BLEND_ALPHA);
 }
 
 static void tl__transparent_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
