@@ -158,7 +158,7 @@ static tl_result tl__issue(tl_renderer *r, const tl__view *v, const tl_render_ou
     tl_result res = tl__prepare(r, v, rec);
     if (res == TL_OK) res = tl__upload(r, v, rec, r->object_lists);
     if (res != TL_OK) return res;
-    tl__state_invalidate(&r->state);
+    tl__state_enter(gl, &r->state, TL__TEXTURE_UNITS_USED);
     for (size_t i = 0; i < r->pass_count; i++) tl__run(r, &r->passes[i], rec, i, out, v, slot);
     tl__state_reset(gl, &r->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED,
                     TL__IMAGE_UNITS_USED);
