@@ -431,7 +431,8 @@ typedef struct tl_frame_plan {
     uint32_t allocated_bytes_per_pixel;          /**< sum over blocks: the memory actually allocated */
     size_t allocated_bytes;                      /**< the same in bytes (reduced-size targets counted exactly) */
     uint32_t peak_live_bytes_per_pixel;          /**< most bytes live during one pass (a lower bound) */
-    uint32_t gbuffer_bytes_per_pixel;            /**< depth + G-buffer + light buffer (what the technique stores) */
+    uint32_t gbuffer_bytes_per_pixel;            /**< depth + G-buffer + light buffer + tiled light
+                                                      lists (what the technique stores) */
     uint32_t vertex_attributes;                  /**< TL_ATTRIBUTE_* bound by the geometry passes */
     uint32_t light_types;                        /**< bits (1u << tl_light_type) drawn by the light pass */
     tl_light_strategy light_strategy;            /**< volumes or tiled (never auto) */
@@ -478,8 +479,8 @@ typedef struct tl_frame_stats {
                                              includes Mesa's vertex processing and binning, which run there) */
     double wall_ms;                     /**< render call start to GPU done; synchronous statistics only, else 0 */
     size_t target_bytes[TL_TARGET_COUNT]; /**< bytes each allocated target occupies; 0 = not allocated */
-    size_t gbuffer_bytes;               /**< depth + RT0 + RT1 + FAT_* */
-    size_t light_buffer_bytes;          /**< LIGHT_DIFFUSE + LIGHT_SPECULAR */
+    size_t gbuffer_bytes;               /**< depth + RT0 + RT1 + FAT_* (no effect target, no light lists) */
+    size_t light_buffer_bytes;          /**< LIGHT_DIFFUSE + LIGHT_SPECULAR + LIGHT_FRESNEL */
     size_t total_target_bytes;          /**< sum of target_bytes */
     size_t allocated_target_bytes;      /**< memory the targets actually occupy (shared blocks once) */
     uint32_t objects_drawn;             /**< after frustum culling, per geometry pass */

@@ -142,9 +142,8 @@ static void tl__record_targets(const tl_renderer *r, tl_frame_stats *st)
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         st->target_bytes[t] = (size_t)p->target_bytes_per_pixel[t] * px;
         st->total_target_bytes += st->target_bytes[t];
-        if (t == TL_TARGET_LIGHT_DIFFUSE || t == TL_TARGET_LIGHT_SPECULAR || t == TL_TARGET_LIGHT_FRESNEL)
-            st->light_buffer_bytes += st->target_bytes[t];
-        else if (t != TL_TARGET_HDR && t != TL_TARGET_LDR && t != TL_TARGET_OUTPUT) st->gbuffer_bytes += st->target_bytes[t];
+        if (tl__targets[t].store == TL__STORE_LIGHT) st->light_buffer_bytes += st->target_bytes[t];
+        else if (tl__targets[t].store == TL__STORE_GBUFFER) st->gbuffer_bytes += st->target_bytes[t];
     }
     st->allocated_target_bytes = (size_t)p->allocated_bytes_per_pixel * px;
     st->programs_compiled = r->programs_compiled;
