@@ -431,7 +431,8 @@ typedef struct tl_frame_plan {
     uint32_t allocated_bytes_per_pixel;          /**< sum over blocks: the memory actually allocated */
     size_t allocated_bytes;                      /**< the same in bytes (reduced-size targets counted exactly) */
     uint32_t peak_live_bytes_per_pixel;          /**< most bytes live during one pass (a lower bound) */
-    uint32_t gbuffer_bytes_per_pixel;            /**< depth + G-buffer + light buffer (what the technique stores) */
+    uint32_t gbuffer_bytes_per_pixel;            /**< depth + G-buffer + light buffer + tiled light
+                                                      lists (what the technique stores) */
     uint32_t vertex_attributes;                  /**< TL_ATTRIBUTE_* bound by the geometry passes */
     uint32_t light_types;                        /**< bits (1u << tl_light_type) drawn by the light pass */
     tl_light_strategy light_strategy;            /**< volumes or tiled (never auto) */
@@ -478,8 +479,8 @@ typedef struct tl_frame_stats {
                                              includes Mesa's vertex processing and binning, which run there) */
     double wall_ms;                     /**< render call start to GPU done; synchronous statistics only, else 0 */
     size_t target_bytes[TL_TARGET_COUNT]; /**< bytes each allocated target occupies; 0 = not allocated */
-    size_t gbuffer_bytes;               /**< depth + RT0 + RT1 + FAT_* */
-    size_t light_buffer_bytes;          /**< LIGHT_DIFFUSE + LIGHT_SPECULAR */
+    size_t gbuffer_bytes;               /**< depth + RT0 + RT1 + FAT_* (no effect target, no light lists) */
+    size_t light_buffer_bytes;          /**< LIGHT_DIFFUSE + LIGHT_SPECULAR + LIGHT_FRESNEL */
     size_t total_target_bytes;          /**< sum of target_bytes */
     size_t allocated_target_bytes;      /**< memory the targets actually occupy (shared blocks once) */
     uint32_t objects_drawn;             /**< after frustum culling, per geometry pass */
@@ -572,13 +573,18 @@ typedef struct tl_render_output {
  * framebuffer object of the current context, or one that is not complete, is
  * TL_ERROR_INVALID_ARGUMENT naming it; the last 4 names found complete are not asked about again.
  *
- * The GL state it leaves, as after tl_renderer_render: framebuffer 0 bound for drawing and
- * reading, program 0, vertex array 0, no texture or sampler on the units it used (0..24), no
- * uniform or storage buffer on the binding points it used (0..4), no image on the image units it
- * used (0..3); blending, depth test, face culling,
- * depth clamp, scissor and stencil tests off; depth mask and colour mask on; clip control
- * (GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE); the viewport is the output rectangle (render_to) or
- * the renderer's size (render). Other state is not touched.
+ * No state the application left in the context changes the image: a frame sets every piece of
+ * state its passes depend on (docs/renderer.md, "The GL contract", has the table). The GL state
+ * it leaves, as after tl_renderer_render: framebuffer 0 bound for drawing and reading, program 0,
+ * vertex array 0, no texture or sampler on the units it used (0..24), no uniform or storage
+ * buffer on the binding points it used (0..4) nor on the generic bindings, no image on the image
+ * units it used (0..3); blending, depth test, face culling, depth clamp, scissor and stencil
+ * tests off; depth mask and colour mask on; clip control (GL_LOWER_LEFT,
+ * GL_NEGATIVE_ONE_TO_ONE); the viewport is the output rectangle (render_to) or the renderer's
+ * size (render); the fixed-function state of the table's entry column (front face CCW, depth
+ * range [0, 1], logic op, polygon offset, rasteriser discard, primitive restart, sRGB writes and
+ * multisample coverage off, ...). Pixel-store state and pixel buffers are the application's again
+ * after every call that transfers pixels. Other state is not touched.
  */
 TL_API tl_result tl_renderer_render_to(tl_renderer *r, const tl_camera *camera, const tl_render_output *output,
                                        tl_frame_stats *stats);

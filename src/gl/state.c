@@ -3,6 +3,29 @@
 
 #include <string.h>
 
+void tl__state_enter(const GladGLContext *gl, tl__state *s, GLuint units)
+{
+    static const GLenum off[] = {GL_COLOR_LOGIC_OP,          GL_POLYGON_OFFSET_FILL,     GL_POLYGON_OFFSET_LINE,
+                                 GL_POLYGON_OFFSET_POINT,    GL_RASTERIZER_DISCARD,      GL_PRIMITIVE_RESTART,
+                                 GL_PRIMITIVE_RESTART_FIXED_INDEX, GL_SAMPLE_ALPHA_TO_COVERAGE,
+                                 GL_SAMPLE_ALPHA_TO_ONE,     GL_SAMPLE_COVERAGE,         GL_SAMPLE_SHADING,
+                                 GL_SAMPLE_MASK,             GL_FRAMEBUFFER_SRGB,        GL_POLYGON_SMOOTH,
+                                 GL_CLIP_DISTANCE0,          GL_CLIP_DISTANCE1,          GL_CLIP_DISTANCE2,
+                                 GL_CLIP_DISTANCE3,          GL_CLIP_DISTANCE4,          GL_CLIP_DISTANCE5,
+                                 GL_CLIP_DISTANCE6,          GL_CLIP_DISTANCE7};
+    for (size_t i = 0; i < sizeof off / sizeof off[0]; i++) gl->Disable(off[i]);
+    gl->Enable(GL_DITHER);
+    gl->Enable(GL_MULTISAMPLE);
+    gl->FrontFace(GL_CCW);
+    gl->DepthRange(0.0, 1.0);
+    gl->PolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+    gl->ProvokingVertex(GL_LAST_VERTEX_CONVENTION);
+    gl->StencilMask(0xFFFFFFFFu); /* depth-stencil clears obey it */
+    gl->BlendEquation(GL_FUNC_ADD);
+    if (units) gl->BindSamplers(0, (GLsizei)units, NULL);
+    tl__state_invalidate(s);
+}
+
 void tl__state_invalidate(tl__state *s)
 {
     int reversed = s->reversed;
@@ -124,10 +147,39 @@ void tl__state_reset(const GladGLContext *gl, tl__state *s, GLuint units, GLuint
         gl->BindBuffersBase(GL_UNIFORM_BUFFER, 0, (GLsizei)buffers, NULL);
         gl->BindBuffersBase(GL_SHADER_STORAGE_BUFFER, 0, (GLsizei)buffers, NULL);
     }
+    gl->BindBuffer(GL_UNIFORM_BUFFER, 0); /* the generic bindings too (BindBufferRange set them) */
+    gl->BindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
     const GLenum caps[] = {GL_BLEND, GL_DEPTH_TEST, GL_CULL_FACE, GL_DEPTH_CLAMP, GL_SCISSOR_TEST, GL_STENCIL_TEST};
     for (size_t i = 0; i < sizeof caps / sizeof caps[0]; i++) gl->Disable(caps[i]);
     gl->DepthMask(GL_TRUE);
     gl->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
     gl->ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     tl__state_invalidate(s);
+}
+
+static const GLenum tl__pack_names[2][8] = {
+    {GL_PACK_SWAP_BYTES, GL_PACK_LSB_FIRST, GL_PACK_ROW_LENGTH, GL_PACK_IMAGE_HEIGHT, GL_PACK_SKIP_ROWS,
+     GL_PACK_SKIP_PIXELS, GL_PACK_SKIP_IMAGES, GL_PACK_ALIGNMENT},
+    {GL_UNPACK_SWAP_BYTES, GL_UNPACK_LSB_FIRST, GL_UNPACK_ROW_LENGTH, GL_UNPACK_IMAGE_HEIGHT, GL_UNPACK_SKIP_ROWS,
+     GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SKIP_IMAGES, GL_UNPACK_ALIGNMENT}};
+
+void tl__pixel_store_enter(const GladGLContext *gl, int unpack, tl__pixel_store *saved)
+{
+    unpack = unpack != 0;
+    saved->unpack = unpack;
+    for (int i = 0; i < 8; i++) {
+        saved->values[i] = 0;
+        gl->GetIntegerv(tl__pack_names[unpack][i], &saved->values[i]);
+        gl->PixelStorei(tl__pack_names[unpack][i], i == 7 ? 1 : 0);
+    }
+    saved->buffer = 0;
+    gl->GetIntegerv(unpack ? GL_PIXEL_UNPACK_BUFFER_BINDING : GL_PIXEL_PACK_BUFFER_BINDING, &saved->buffer);
+    if (saved->buffer) gl->BindBuffer(unpack ? GL_PIXEL_UNPACK_BUFFER : GL_PIXEL_PACK_BUFFER, 0);
+}
+
+void tl__pixel_store_leave(const GladGLContext *gl, const tl__pixel_store *saved)
+{
+    for (int i = 0; i < 8; i++) gl->PixelStorei(tl__pack_names[saved->unpack][i], saved->values[i]);
+    if (saved->buffer)
+        gl->BindBuffer(saved->unpack ? GL_PIXEL_UNPACK_BUFFER : GL_PIXEL_PACK_BUFFER, (GLuint)saved->buffer);
 }

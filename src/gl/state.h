@@ -48,6 +48,13 @@ typedef struct tl__state {
     GLint viewport[4];
 } tl__state;
 
+/* Enters the renderer's GL work (a frame, apply_fxaa): sets every piece of fixed-function state a
+ * pass depends on but never changes to GL's initial value (front face, depth range, logic op,
+ * polygon offset and mode, rasteriser discard, primitive restart, multisample coverage, sRGB
+ * writes, clip distances, provoking vertex, stencil write mask, dither; docs/renderer.md, "The GL
+ * contract"), takes sampler objects off units [0, units) and forgets the cache, so that nothing an
+ * application left changes the image. */
+void tl__state_enter(const GladGLContext *gl, tl__state *s, GLuint units);
 /* Forgets what is applied (the next calls set everything). */
 void tl__state_invalidate(tl__state *s);
 /* Applies a pipeline, issuing only the calls whose state differs. */
@@ -63,6 +70,21 @@ void tl__state_cull(const GladGLContext *gl, tl__state *s, tl__cull cull);
  * capabilities off, masks on, default clip
  * control. The viewport is left as it is. */
 void tl__state_reset(const GladGLContext *gl, tl__state *s, GLuint units, GLuint buffers, GLuint images);
+
+/* Pixel-store state of one direction (pack: reading into client memory; unpack: uploading from
+ * it) and its pixel buffer binding, saved so that a transfer runs with GL's defaults (alignment
+ * 1) and the application's values come back afterwards. */
+typedef struct tl__pixel_store {
+    int unpack;       /* 0: pack, 1: unpack */
+    GLint values[8];  /* swap bytes, LSB first, row length, image height, skip rows, skip pixels,
+                         skip images, alignment */
+    GLint buffer;     /* GL_PIXEL_PACK_BUFFER or GL_PIXEL_UNPACK_BUFFER binding */
+} tl__pixel_store;
+
+/* Saves the direction's state into *saved and sets the defaults with alignment 1 and no buffer. */
+void tl__pixel_store_enter(const GladGLContext *gl, int unpack, tl__pixel_store *saved);
+/* Puts back what tl__pixel_store_enter saved. */
+void tl__pixel_store_leave(const GladGLContext *gl, const tl__pixel_store *saved);
 
 #ifdef __cplusplus
 }

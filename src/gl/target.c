@@ -3,6 +3,7 @@
 
 #include "gl.h"
 #include "msg.h"
+#include "state.h"
 
 #define TL__F(fmt, bpp, kind, f, t) {fmt, #fmt, bpp, kind, f, t}
 
@@ -255,14 +256,10 @@ tl_result tl__target_read(const GladGLContext *gl, const tl__target *t, GLenum f
                 (unsigned)t->width, (unsigned)t->height, need, dst_size);
         return TL_ERROR_LIMIT;
     }
-    GLint alignment = 4, pack_buffer = 0;
-    gl->GetIntegerv(GL_PACK_ALIGNMENT, &alignment);
-    gl->GetIntegerv(GL_PIXEL_PACK_BUFFER_BINDING, &pack_buffer);
-    gl->PixelStorei(GL_PACK_ALIGNMENT, 1);
-    if (pack_buffer) gl->BindBuffer(GL_PIXEL_PACK_BUFFER, 0);
+    tl__pixel_store saved; /* the application's pack state and buffer come back afterwards */
+    tl__pixel_store_enter(gl, 0, &saved);
     gl->GetTextureImage(t->texture, 0, format, type, (GLsizei)need, dst);
-    if (pack_buffer) gl->BindBuffer(GL_PIXEL_PACK_BUFFER, (GLuint)pack_buffer);
-    gl->PixelStorei(GL_PACK_ALIGNMENT, alignment);
+    tl__pixel_store_leave(gl, &saved);
     return TL_OK;
 }
 

@@ -142,9 +142,8 @@ static void tl__record_targets(const tl_renderer *r, tl_frame_stats *st)
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         st->target_bytes[t] = (size_t)p->target_bytes_per_pixel[t] * px;
         st->total_target_bytes += st->target_bytes[t];
-        if (t == TL_TARGET_LIGHT_DIFFUSE || t == TL_TARGET_LIGHT_SPECULAR || t == TL_TARGET_LIGHT_FRESNEL)
-            st->light_buffer_bytes += st->target_bytes[t];
-        else if (t != TL_TARGET_HDR && t != TL_TARGET_LDR && t != TL_TARGET_OUTPUT) st->gbuffer_bytes += st->target_bytes[t];
+        if (tl__targets[t].store == TL__STORE_LIGHT) st->light_buffer_bytes += st->target_bytes[t];
+        else if (tl__targets[t].store == TL__STORE_GBUFFER) st->gbuffer_bytes += st->target_bytes[t];
     }
     st->allocated_target_bytes = (size_t)p->allocated_bytes_per_pixel * px;
     st->programs_compiled = r->programs_compiled;
@@ -158,7 +157,7 @@ static tl_result tl__issue(tl_renderer *r, const tl__view *v, const tl_render_ou
     tl_result res = tl__prepare(r, v, rec);
     if (res == TL_OK) res = tl__upload(r, v, rec, r->object_lists);
     if (res != TL_OK) return res;
-    tl__state_invalidate(&r->state);
+    tl__state_enter(gl, &r->state, TL__TEXTURE_UNITS_USED);
     for (size_t i = 0; i < r->pass_count; i++) tl__run(r, &r->passes[i], rec, i, out, v, slot);
     tl__state_reset(gl, &r->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED,
                     TL__IMAGE_UNITS_USED);

@@ -201,7 +201,7 @@ static void tl__lifetimes(tl__plan *p, const tl_renderer_desc *d, uint32_t sinks
         tl__target_memory(d, fp, (tl_target_id)t, ti);
         fp->target_bytes_per_pixel[t] = ti->bytes_per_pixel;
         fp->bytes_per_pixel += ti->bytes_per_pixel;
-        if (tl__targets[t].gbuffer) fp->gbuffer_bytes_per_pixel += ti->bytes_per_pixel;
+        if (tl__targets[t].store != TL__STORE_NONE) fp->gbuffer_bytes_per_pixel += ti->bytes_per_pixel;
         ti->first_pass = (uint32_t)fp->pass_count;
         for (size_t i = 0; i < fp->pass_count; i++) {
             if (!((fp->passes[i].reads | fp->passes[i].writes) & TL__BIT(t))) continue;

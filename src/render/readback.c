@@ -140,9 +140,11 @@ tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *o
         (res = tl__program_get(r, "luma", &tl__pass_luma.programs[0], "TL_OUT_LDR=0", &r->luma.programs[0])) != TL_OK)
         return res;
     const GladGLContext *gl = &r->gl;
-    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    tl__pixel_store saved;
+    tl__pixel_store_enter(gl, 1, &saved);
     gl->TextureSubImage2D(r->targets[TL_TARGET_OUTPUT].texture, 0, 0, 0, (GLsizei)r->desc.width,
                           (GLsizei)r->desc.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    tl__pixel_store_leave(gl, &saved);
     size_t offset = 0;
     if (tl__stream_begin(gl, &r->stream, sizeof(tl__frame_ubo) + r->ubo_align, "buffer.frame") != TL_OK)
         return tl__fail(r, TL_ERROR_GL, "renderer: could not map the per-frame buffer");
@@ -151,7 +153,7 @@ tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *o
     tl__stream_bind_range(gl, &r->stream, GL_UNIFORM_BUFFER, TL__UBO_FRAME, offset, sizeof *u);
     tl__frame_record rec;
     memset(&rec, 0, sizeof rec);
-    tl__state_invalidate(&r->state);
+    tl__state_enter(gl, &r->state, TL__TEXTURE_UNITS_USED);
     tl__run_pass(r, &r->luma, &rec, 0, NULL);
     tl__run_pass(r, fxaa, &rec, fxaa_index, NULL);
     tl__state_reset(gl, &r->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED,

@@ -203,7 +203,11 @@ tl_result tl_renderer_set_scene(tl_renderer *r, const tl_scene *s)
     if (res != TL_OK) return res;
     tl__queries_drain(r);
     tl__scene_release(r);
-    if ((res = tl__scene_upload(r, s)) != TL_OK) return res;
+    tl__pixel_store saved; /* textures upload with GL's unpack defaults; the application's come back */
+    tl__pixel_store_enter(&r->gl, 1, &saved);
+    res = tl__scene_upload(r, s);
+    tl__pixel_store_leave(&r->gl, &saved);
+    if (res != TL_OK) return res;
     tl__scene_frame_take(r, &frame);
     r->has_scene = 1;
     r->programs_ready = 0;

@@ -7,11 +7,20 @@
 
 #include "thinlight/renderer.h"
 
+/* The part of what a technique stores that a target is (tl_frame_plan.gbuffer_bytes_per_pixel
+ * counts all three; tl_frame_stats counts G-buffer and light buffer apart). */
+typedef enum tl__store {
+    TL__STORE_NONE = 0,  /* images of the frame and effect targets: HDR, LDR, output, AO, DOF, ... */
+    TL__STORE_GBUFFER,   /* depth and the G-buffer */
+    TL__STORE_LIGHT,     /* the light buffer */
+    TL__STORE_LISTS      /* the tiled light lists */
+} tl__store;
+
 typedef struct tl__target_def {
     const char *name;   /* tl_target_name */
     const char *macro;  /* "RT0": TL_UNIT_RT0 (texture unit = id), TL_OUT_RT0 (colour location) */
     uint32_t format;    /* GL internal format; 0: depends on the options (tl__target_format) */
-    uint8_t gbuffer;    /* counts as what the technique stores (G-buffer or light buffer) */
+    uint8_t store;      /* tl__store: what the technique stores, and as which part */
     uint8_t buffer;     /* a storage buffer, not a texture: no attachment, unit or memory sharing */
     uint8_t shift;      /* its first level is the frame's size divided by 2^shift, rounded up */
     uint8_t linear;     /* sampled with bilinear filtering (of its first level) */

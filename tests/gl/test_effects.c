@@ -254,6 +254,44 @@ TL_TEST(ssao_inner_corner_darkens_bounded)
 
 /* Every effect on at once, on tiny targets and with reversed D32F at near 1e-3, far 1e4 (1:10^7)
  * and an infinite far plane: AO in [0, 1] and HDR finite everywhere. */
+/* tl_frame_stats counts by what a target is: G-buffer bytes are depth, RT0, RT1 and the fat targets,
+ * light-buffer bytes the light targets; the effects' targets (AO, DOF, bloom, SSR) and the light
+ * lists are neither, in every mode, with every effect on. */
+TL_TEST(effects_stats_count_effect_targets_apart)
+{
+    quads q;
+    corner_scene(&q);
+    q.light[0] = (tl_light){TL_LIGHT_POINT, {0, 2, 1}, {0, -1, 0}, {4, 4, 4}, 10.0f, 0, 0, 0};
+    q.s.lights = q.light;
+    q.s.light_count = 1;
+    const uint32_t gbuffer = BIT(TL_TARGET_DEPTH) | BIT(TL_TARGET_RT0) | BIT(TL_TARGET_RT1) | BIT(TL_TARGET_FAT_POSITION) |
+                             BIT(TL_TARGET_FAT_NORMAL) | BIT(TL_TARGET_FAT_ALBEDO) | BIT(TL_TARGET_FAT_MATERIAL);
+    const uint32_t light = BIT(TL_TARGET_LIGHT_DIFFUSE) | BIT(TL_TARGET_LIGHT_SPECULAR) | BIT(TL_TARGET_LIGHT_FRESNEL);
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
+        tl_renderer_desc d = {.width = 64, .height = 48, .mode = modes[m], .light_strategy = TL_LIGHT_STRATEGY_TILED,
+                              .synchronous_stats = 1, .lighting = TL_LIGHTING_GGX};
+        d.ssao.method = TL_SSAO_DISC;
+        d.dof.enabled = 1;
+        d.bloom.enabled = 1;
+        d.ssr.enabled = 1;
+        tl_renderer *r = tl_test_render_once(&q.s, d);
+        TL_CHECK(r != NULL);
+        if (!r) continue;
+        tl_frame_stats st;
+        TL_CHECK(tl_renderer_render(r, NULL, &st) == TL_OK);
+        size_t want_g = 0, want_l = 0, effects = 0;
+        for (int t = 0; t < TL_TARGET_COUNT; t++) {
+            if (gbuffer & BIT(t)) want_g += st.target_bytes[t];
+            else if (light & BIT(t)) want_l += st.target_bytes[t];
+            else if (t != TL_TARGET_HDR && t != TL_TARGET_LDR && t != TL_TARGET_OUTPUT) effects += st.target_bytes[t];
+        }
+        TL_CHECK(effects > 0); /* the frame has targets of neither kind: the test sees the difference */
+        TL_CHECK_EQ_U(st.gbuffer_bytes, want_g);
+        TL_CHECK_EQ_U(st.light_buffer_bytes, want_l);
+        tl_renderer_destroy(r);
+    }
+}
+
 TL_TEST(effects_finite_tiny_targets_and_extreme_depth)
 {
     quads q;
