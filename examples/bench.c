@@ -326,9 +326,7 @@ static int bench__check_doc(const char *path, const char *begin, const char *end
     size_t head;
     const char *tail;
     if (tl_tool_doc_split(BENCH_TOOL, path, *text, begin, end, &head, &tail)) return 1;
-    int e = tl_tool_probe_writable(path);
-    if (e) tl_tool_fail(BENCH_TOOL, "cannot write '%s': %s", path, strerror(e));
-    return e != 0;
+    return tl_tool_check_output(BENCH_TOOL, path);
 }
 
 static int bench__check_outputs(bench_options *o, char **doc_text, char **effects_text)
@@ -347,10 +345,7 @@ static int bench__check_outputs(bench_options *o, char **doc_text, char **effect
             return 1;
         }
     }
-    if (o->json && (e = tl_tool_probe_writable(o->json)) != 0) {
-        tl_tool_fail(BENCH_TOOL, "cannot write '%s': %s", o->json, strerror(e));
-        return 1;
-    }
+    if (o->json && tl_tool_check_output(BENCH_TOOL, o->json)) return 1;
     if (o->doc && bench__check_doc(o->doc, BENCH_DOC_BEGIN, BENCH_DOC_END, doc_text)) return 1;
     if (o->effects_doc && bench__check_doc(o->effects_doc, BENCH_EFFECTS_DOC_BEGIN, BENCH_EFFECTS_DOC_END, effects_text))
         return 1;
@@ -364,12 +359,10 @@ static int bench__check_outputs(bench_options *o, char **doc_text, char **effect
             return 1;
         }
         char *probe = tl_tool_strf("%s/bench_probe.png", o->out);
-        e = probe ? tl_tool_probe_writable(probe) : ENOMEM;
+        e = probe ? tl_tool_check_output(BENCH_TOOL, probe) : 1;
+        if (!probe) tl_tool_fail(BENCH_TOOL, "out of memory");
         free(probe);
-        if (e) {
-            tl_tool_fail(BENCH_TOOL, "cannot write into output directory '%s': %s", o->out, strerror(e));
-            return 1;
-        }
+        if (e) return 1;
     }
     if (o->doc && !o->no_plot) {
         char *dir = tl_tool_dir_of(o->doc), *img = dir ? tl_tool_strf("%s/img", dir) : NULL;
