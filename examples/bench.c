@@ -315,9 +315,11 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
 
 /* Everything that can fail for bad input is checked before the sweep; nothing is created unless
  * every check passes. */
-/* A doc the run will rewrite: readable, with both markers, writable. */
+/* A doc the run will rewrite: a regular file (checked first: a FIFO is never opened), readable,
+ * with both markers. */
 static int bench__check_doc(const char *path, const char *begin, const char *end, char **text)
 {
+    if (tl_tool_check_output(BENCH_TOOL, path)) return 1;
     *text = tl_tool_read_file(path, NULL);
     if (!*text) {
         tl_tool_fail(BENCH_TOOL, "cannot read '%s': %s", path, strerror(errno));
@@ -325,8 +327,7 @@ static int bench__check_doc(const char *path, const char *begin, const char *end
     }
     size_t head;
     const char *tail;
-    if (tl_tool_doc_split(BENCH_TOOL, path, *text, begin, end, &head, &tail)) return 1;
-    return tl_tool_check_output(BENCH_TOOL, path);
+    return tl_tool_doc_split(BENCH_TOOL, path, *text, begin, end, &head, &tail);
 }
 
 static int bench__check_outputs(bench_options *o, char **doc_text, char **effects_text)

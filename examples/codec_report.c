@@ -1045,7 +1045,8 @@ static int check_outputs(const options *o, char **doc_text)
         fail_line("gnuplot not found on PATH (install gnuplot-nox, or pass --no-plot)");
         return 1;
     }
-    if (o->doc) {
+    if (o->doc) { /* a regular file (checked first: a FIFO is never opened), readable, with markers */
+        if (tl_tool_check_output(TOOL, o->doc)) return 1;
         *doc_text = tl_tool_read_file(o->doc, NULL);
         if (!*doc_text) {
             fail_line("cannot read '%s': %s", o->doc, strerror(errno));
@@ -1054,7 +1055,6 @@ static int check_outputs(const options *o, char **doc_text)
         size_t head;
         const char *tail;
         if (doc_split(o->doc, *doc_text, &head, &tail)) return 1;
-        if (tl_tool_check_output(TOOL, o->doc)) return 1;
         if (!o->no_plot) {
             char *dir = tl_tool_dir_of(o->doc), *img = dir ? tl_tool_strf("%s/img", dir) : NULL;
             e = img ? tl_tool_make_dirs(img) : ENOMEM;

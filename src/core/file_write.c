@@ -67,7 +67,7 @@ static tl_result tl__out_begin(tl__out *o, const char *path, const tl_file_write
     if (!path || !path[0]) return tl__logger_fail(o->logger, TL_ERROR_INVALID_ARGUMENT, "tl_file_write: no path");
     if (!strcmp(path, "-"))
         return tl__logger_fail(o->logger, TL_ERROR_INVALID_ARGUMENT,
-                               "-: standard output is not written by thinlight (name a file; ./- for one named '-')");
+                               "-: standard output is not a file thinlight writes (name a file, ./- for one named '-')");
     const char *slash = strrchr(path, '/');
     if (slash && !slash[1]) return tl__logger_fail(o->logger, TL_ERROR_IO, "%s: names a directory, not a file", path);
     size_t dir_len = slash ? (size_t)(slash - path) : 0;
