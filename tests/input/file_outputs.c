@@ -45,26 +45,6 @@ static void work(const char *test, char *dir, size_t n)
     memcpy(dir, real, strlen(real) + 1);
 }
 
-static unsigned char *slurp(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    unsigned char *b = NULL;
-    size_t cap = 0, len = 0, got;
-    do {
-        if (len == cap) {
-            unsigned char *bigger = realloc(b, cap = cap ? 2 * cap : 65536);
-            if (!bigger) break;
-            b = bigger;
-        }
-        got = fread(b + len, 1, cap - len, f);
-        len += got;
-    } while (got > 0);
-    fclose(f);
-    *n = len;
-    return b;
-}
-
 /* EXR's capDate and TIFF's DateTime ("YYYY:MM:DD HH:MM:SS") are the time of writing: masked. */
 static void mask_dates(unsigned char *b, size_t n)
 {
@@ -83,7 +63,7 @@ static void mask_dates(unsigned char *b, size_t n)
 static int holds(const char *path, const unsigned char *want, size_t want_n)
 {
     size_t n = 0;
-    unsigned char *b = slurp(path, &n);
+    unsigned char *b = tlh_read(path, &n);
     int same = b && n == want_n;
     if (same) {
         unsigned char *w = malloc(n ? n : 1);
@@ -235,7 +215,7 @@ static int full_disk_every_k(fmt f, const char *name)
     outcome clean = run_child(f, ref, "write", 0, dir);
     TL_CHECK(clean.exited && clean.result == TL_OK);
     size_t ref_n = 0;
-    unsigned char *ref_bytes = slurp(ref, &ref_n);
+    unsigned char *ref_bytes = tlh_read(ref, &ref_n);
     TL_CHECK(ref_bytes && ref_n > 0);
     remove(ref);
     char sub[1100];
@@ -472,7 +452,7 @@ TL_TEST(file_write_killed_mid_write_leaves_old_or_new_nothing_else)
         kill(pid, SIGKILL);
         waitpid(pid, NULL, 0);
         size_t n = 0;
-        back = slurp(path, &n);
+        back = tlh_read(path, &n);
         torn += !back || n != BIG || memcmp(back, mine, BIG) != 0;
         free(back);
         if (listing(dir, list, sizeof list) != 1) {

@@ -34,26 +34,6 @@ static const char *const NAMES[] = {"out.exr",          "targets/depth.exr",    
                                     "targets/ldr.exr",  "targets/output.exr"};
 #define NAME_COUNT (sizeof NAMES / sizeof NAMES[0])
 
-static unsigned char *read_all(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    unsigned char *b = NULL;
-    size_t cap = 0, len = 0, got;
-    do {
-        if (len == cap) {
-            unsigned char *bigger = realloc(b, cap = cap ? 2 * cap : 65536);
-            if (!bigger) break;
-            b = bigger;
-        }
-        got = fread(b + len, 1, cap - len, f);
-        len += got;
-    } while (got > 0);
-    fclose(f);
-    *n = len;
-    return b;
-}
-
 /* The EXR header's capDate (the time of writing) is the one part two runs do not share. */
 static void mask_date(unsigned char *b, size_t n)
 {
@@ -64,7 +44,7 @@ static void mask_date(unsigned char *b, size_t n)
 static int same_file(const char *a, const char *b)
 {
     size_t na = 0, nb = 0;
-    unsigned char *x = read_all(a, &na), *y = read_all(b, &nb);
+    unsigned char *x = tlh_read(a, &na), *y = tlh_read(b, &nb);
     int same = x && y && na == nb;
     if (same) {
         mask_date(x, na);
@@ -97,27 +77,34 @@ static pid_t spawn_sized(const char *dir, const char *size)
 
 static pid_t spawn(const char *dir) { return spawn_sized(dir, SIZE_ARG); }
 
-/* Names in DIR and DIR/targets that are not outputs (a temporary file left behind), counted and
- * printed. */
-static int strays(const char *dir)
+/* Names in DIR and DIR/targets other than the outputs ("targets/NAME" for the latter), up to
+ * `max`; how many. */
+static int other_names(const char *dir, char names[][256], int max)
 {
     int n = 0;
-    char sub[2][1100];
-    snprintf(sub[0], sizeof sub[0], "%s", dir);
-    snprintf(sub[1], sizeof sub[1], "%s/targets", dir);
     for (int s = 0; s < 2; s++) {
-        DIR *d = opendir(sub[s]);
+        char sub[1100];
+        snprintf(sub, sizeof sub, "%s%s", dir, s ? "/targets" : "");
+        DIR *d = opendir(sub);
         struct dirent *e;
         while (d && (e = readdir(d)) != NULL) {
-            char name[300];
-            snprintf(name, sizeof name, "%s%s", s ? "targets/" : "", e->d_name);
-            int known = !strcmp(e->d_name, ".") || !strcmp(e->d_name, "..") || (!s && !strcmp(e->d_name, "targets"));
+            char name[256];
+            if (snprintf(name, sizeof name, "%s%s", s ? "targets/" : "", e->d_name) >= (int)sizeof name) continue;
+            int known = !strcmp(e->d_name, ".") || !strcmp(e->d_name, "..") || !strcmp(name, "targets");
             for (size_t i = 0; i < NAME_COUNT; i++) known |= !strcmp(name, NAMES[i]);
-            if (!known) fprintf(stderr, "left beside the outputs: %s/%s\n", dir, name);
-            n += !known;
+            if (!known && n < max) memcpy(names[n++], name, sizeof name);
         }
         if (d) closedir(d);
     }
+    return n;
+}
+
+/* What a killed run left beside the outputs, counted and printed. */
+static int strays(const char *dir)
+{
+    char names[64][256];
+    int n = other_names(dir, names, 64);
+    for (int i = 0; i < n; i++) fprintf(stderr, "left beside the outputs: %s/%s\n", dir, names[i]);
     return n;
 }
 
@@ -135,19 +122,13 @@ static int scan_temps(const char *dir, char seen[][256], int count)
         for (int k = 0; k < count; k++) known |= !strcmp(seen[k], NAMES[i]);
         if (!known && count < 64) snprintf(seen[count++], 256, "%s", NAMES[i]);
     }
-    char sub[2][1100];
-    snprintf(sub[0], sizeof sub[0], "%s", dir);
-    snprintf(sub[1], sizeof sub[1], "%s/targets", dir);
-    for (int s = 0; s < 2; s++) {
-        DIR *d = opendir(sub[s]);
-        struct dirent *e;
-        while (d && (e = readdir(d)) != NULL) {
-            if (!strstr(e->d_name, ".tmp")) continue;
-            int known = 0;
-            for (int i = 0; i < count; i++) known |= !strcmp(seen[i], e->d_name);
-            if (!known && count < 64) snprintf(seen[count++], 256, "%s", e->d_name);
-        }
-        if (d) closedir(d);
+    char others[64][256];
+    int n = other_names(dir, others, 64);
+    for (int j = 0; j < n; j++) {
+        if (!strstr(others[j], ".tmp")) continue;
+        int known = 0;
+        for (int i = 0; i < count; i++) known |= !strcmp(seen[i], others[j]);
+        if (!known && count < 64) memcpy(seen[count++], others[j], sizeof others[j]);
     }
     return count;
 }
@@ -175,7 +156,7 @@ static int check_outputs(const char *dir, const char *ref)
         snprintf(path, sizeof path, "%s/%s", dir, NAMES[i]);
         snprintf(want, sizeof want, "%s/%s", ref, NAMES[i]);
         size_t n = 0;
-        unsigned char *b = read_all(path, &n);
+        unsigned char *b = tlh_read(path, &n);
         int old = b && n == sizeof OLD - 1 && !memcmp(b, OLD, n);
         free(b);
         int whole = !old && same_file(path, want);
