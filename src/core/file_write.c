@@ -179,9 +179,9 @@ static int tl__out_finish(tl__out *o, const void *data, size_t size, tl_result *
 #ifdef O_TMPFILE
     if (o->unnamed && (err = tl__out_link(o)) != 0) {
         if (err == EEXIST) return *r = tl__out_fail(o, "appeared while written, not as a regular file", err), -1;
-        close(o->fd);
+        int fd = o->fd; /* discarded, but its close is checked like every other */
         o->fd = -1;
-        return 1;
+        return close(fd) == 0 ? 1 : (*r = tl__out_fail(o, "close failed", errno), -1);
     }
 #endif
     int fd = o->fd;

@@ -1,5 +1,6 @@
 /* A full disk on demand (fault_inject.h): an LD_PRELOAD library that makes the k-th write, fsync
- * or close of a regular file below one folder fail. write, pwrite, writev and pwritev are
+ * or close of a regular file below one folder fail, and on request a system without O_TMPFILE
+ * or without linkat. write, pwrite, writev and pwritev are
  * interposed; stdio streams opened for writing below the folder are made with fopencookie, so
  * that what fwrite/fprintf/fflush finally write comes through the same counted write (glibc's
  * own stdio calls its internal write, which no preload can reach). fileno() of such a stream
@@ -38,6 +39,8 @@ static struct {
     unsigned long at;     /* 1-based; 0: count only */
     unsigned long seen[KIND_COUNT];
     char report[PATH_MAX];
+    int no_tmpfile;       /* open(O_TMPFILE) fails with EOPNOTSUPP, as on a file system without it */
+    int no_link;          /* linkat fails with ENOENT, as without /proc and CAP_DAC_READ_SEARCH */
 } fi;
 static pthread_mutex_t fi_lock = PTHREAD_MUTEX_INITIALIZER;
 
@@ -109,6 +112,12 @@ static void configure(const char *dir, const char *call, unsigned long at)
 
 TLFI_EXPORT void tl_fault_arm(const char *dir, const char *call, unsigned long at) { configure(dir, call, at); }
 
+TLFI_EXPORT void tl_fault_without(const char *what)
+{
+    fi.no_tmpfile = what && strstr(what, "tmpfile") != NULL;
+    fi.no_link = what && strstr(what, "link") != NULL;
+}
+
 TLFI_EXPORT unsigned long tl_fault_seen(const char *call)
 {
     for (int k = 0; k <= KIND_COUNT; k++)
@@ -120,6 +129,7 @@ __attribute__((constructor)) static void fi_init(void)
 {
     const char *at = getenv(TL_FAULT_ENV_AT), *report = getenv(TL_FAULT_ENV_REPORT);
     configure(getenv(TL_FAULT_ENV_DIR), getenv(TL_FAULT_ENV_CALL), at ? strtoul(at, NULL, 10) : 0);
+    tl_fault_without(getenv(TL_FAULT_ENV_WITHOUT));
     if (report && strlen(report) < sizeof fi.report) strcpy(fi.report, report);
 }
 
@@ -200,6 +210,39 @@ TLFI_EXPORT int close(int fd)
     int r = REAL(close)(fd);
     if (fail && r == 0) return errno = EIO, -1;
     return r;
+}
+
+/* ---- what the writer falls back from ---------------------------------------------------------- */
+
+static int open_flags_mode(int flags, va_list ap)
+{
+    return (flags & O_CREAT) || (flags & O_TMPFILE) == O_TMPFILE ? va_arg(ap, int) : 0;
+}
+
+TLFI_EXPORT int open(const char *path, int flags, ...)
+{
+    va_list ap;
+    va_start(ap, flags);
+    int mode = open_flags_mode(flags, ap);
+    va_end(ap);
+    if (fi.no_tmpfile && (flags & O_TMPFILE) == O_TMPFILE) return errno = EOPNOTSUPP, -1;
+    return REAL(open)(path, flags, mode);
+}
+
+TLFI_EXPORT int open64(const char *path, int flags, ...)
+{
+    va_list ap;
+    va_start(ap, flags);
+    int mode = open_flags_mode(flags, ap);
+    va_end(ap);
+    if (fi.no_tmpfile && (flags & O_TMPFILE) == O_TMPFILE) return errno = EOPNOTSUPP, -1;
+    return REAL(open64)(path, flags, mode);
+}
+
+TLFI_EXPORT int linkat(int olddir, const char *oldpath, int newdir, const char *newpath, int flags)
+{
+    if (fi.no_link) return errno = ENOENT, -1;
+    return REAL(linkat)(olddir, oldpath, newdir, newpath, flags);
 }
 
 /* ---- stdio streams -------------------------------------------------------------------------- */

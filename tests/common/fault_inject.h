@@ -13,9 +13,13 @@
                                                  its bytes, later ones fail), fsync or close */
 #define TL_FAULT_ENV_AT "TL_FAULT_AT"         /* k >= 1; 0 or unset: count only */
 #define TL_FAULT_ENV_REPORT "TL_FAULT_REPORT" /* a file that gets "PID write N fsync N close N" at exit */
+#define TL_FAULT_ENV_WITHOUT "TL_FAULT_WITHOUT" /* "tmpfile": open(O_TMPFILE) fails (EOPNOTSUPP);
+                                                   "link": linkat fails (ENOENT); both may be named */
 
 /* Re-arms the injector of this process (the counts restart): `dir` NULL disarms it. */
 typedef void (*tl_fault_arm_fn)(const char *dir, const char *call, unsigned long at);
+/* tl_fault_without: what the process is to lack from now on ("tmpfile", "link", both, or NULL). */
+typedef void (*tl_fault_without_fn)(const char *what);
 /* The calls of one kind ("write" = "short", "fsync", "close") counted since the last arming. */
 typedef unsigned long (*tl_fault_seen_fn)(const char *call);
 

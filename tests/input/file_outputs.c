@@ -119,14 +119,19 @@ static void child_log(void *user, tl_log_level level, const char *message)
 }
 
 /* The write itself, in the child: the result, the lines and the count go up the pipe. */
-static void child(int fd, fmt f, const char *path, const char *call, unsigned long k, const char *dir)
+static void child(int fd, fmt f, const char *path, const char *call, unsigned long k, const char *dir,
+                  const char *lacking)
 {
     void *arm_sym = dlsym(RTLD_DEFAULT, "tl_fault_arm"), *seen_sym = dlsym(RTLD_DEFAULT, "tl_fault_seen");
+    void *without_sym = dlsym(RTLD_DEFAULT, "tl_fault_without");
     tl_fault_arm_fn arm;
     tl_fault_seen_fn seen;
-    if (!arm_sym || !seen_sym) _exit(90); /* the injector is not preloaded */
+    tl_fault_without_fn without;
+    if (!arm_sym || !seen_sym || !without_sym) _exit(90); /* the injector is not preloaded */
     memcpy(&arm, &arm_sym, sizeof arm);
     memcpy(&seen, &seen_sym, sizeof seen);
+    memcpy(&without, &without_sym, sizeof without);
+    without(lacking);
     static float fpx[W * H * 4];
     static uint8_t px[W * H * 4];
     for (size_t i = 0; i < W * H * 4; i++) {
@@ -179,7 +184,8 @@ static int read_lines(int fd, outcome *o, time_t deadline)
     }
 }
 
-static outcome run_child(fmt f, const char *path, const char *call, unsigned long k, const char *dir)
+static outcome run_child(fmt f, const char *path, const char *call, unsigned long k, const char *dir,
+                         const char *lacking)
 {
     outcome o = {0};
     o.result = TL_RESULT_COUNT_;
@@ -189,7 +195,7 @@ static outcome run_child(fmt f, const char *path, const char *call, unsigned lon
     pid_t pid = fork();
     if (pid == 0) {
         close(p[0]);
-        child(p[1], f, path, call, k, dir);
+        child(p[1], f, path, call, k, dir, lacking);
     }
     close(p[1]);
     /* a writer that calls exit() inside OIIO may hang in OIIO's exit handlers: 60 s at most */
@@ -206,13 +212,14 @@ static outcome run_child(fmt f, const char *path, const char *call, unsigned lon
 }
 
 /* Every k from 1 until the write succeeds, for each failing call: old file kept and alone, one
- * line naming it; the first success equals the reference. Returns the k values tried. */
-static int full_disk_every_k(fmt f, const char *name)
+ * line naming it; the first success equals the reference. `lacking`: what the system is to lack
+ * (tl_fault_without: "tmpfile", "link"), NULL for nothing. Returns the k values tried. */
+static int full_disk_every_k(fmt f, const char *name, const char *lacking)
 {
     char dir[1024], path[1200], ref[1200], list[4096];
     work(name, dir, sizeof dir);
     snprintf(ref, sizeof ref, "%s/reference.%s", dir, fmt_ext[f]);
-    outcome clean = run_child(f, ref, "write", 0, dir);
+    outcome clean = run_child(f, ref, "write", 0, dir, NULL);
     TL_CHECK(clean.exited && clean.result == TL_OK);
     size_t ref_n = 0;
     unsigned char *ref_bytes = tlh_read(ref, &ref_n);
@@ -229,7 +236,7 @@ static int full_disk_every_k(fmt f, const char *name)
         unsigned long k;
         for (k = 1; k <= 200 && !succeeded; k++, tried++) {
             TL_CHECK(tlh_write(path, OLD, sizeof OLD - 1) == 0);
-            outcome o = run_child(f, path, calls[c], k, sub);
+            outcome o = run_child(f, path, calls[c], k, sub, lacking);
             int n = listing(sub, list, sizeof list);
             succeeded = o.exited && o.result == TL_OK;
             if (!o.exited) {
@@ -260,11 +267,23 @@ static int full_disk_every_k(fmt f, const char *name)
     return tried;
 }
 
-TL_TEST(file_write_full_disk_every_k_png) { full_disk_every_k(FMT_PNG, "full_disk_png"); }
-TL_TEST(file_write_full_disk_every_k_exr) { full_disk_every_k(FMT_EXR, "full_disk_exr"); }
-TL_TEST(file_write_full_disk_every_k_jpeg) { full_disk_every_k(FMT_JPEG, "full_disk_jpeg"); }
-TL_TEST(file_write_full_disk_every_k_tiff) { full_disk_every_k(FMT_TIFF, "full_disk_tiff"); }
-TL_TEST(file_write_full_disk_every_k_raw_bytes) { full_disk_every_k(FMT_RAW, "full_disk_raw"); }
+TL_TEST(file_write_full_disk_every_k_png) { full_disk_every_k(FMT_PNG, "full_disk_png", NULL); }
+TL_TEST(file_write_full_disk_every_k_exr) { full_disk_every_k(FMT_EXR, "full_disk_exr", NULL); }
+TL_TEST(file_write_full_disk_every_k_jpeg) { full_disk_every_k(FMT_JPEG, "full_disk_jpeg", NULL); }
+TL_TEST(file_write_full_disk_every_k_tiff) { full_disk_every_k(FMT_TIFF, "full_disk_tiff", NULL); }
+TL_TEST(file_write_full_disk_every_k_raw_bytes) { full_disk_every_k(FMT_RAW, "full_disk_raw", NULL); }
+/* the fallbacks: a file system without O_TMPFILE (a temporary name from the start), and an
+ * unnamed file that cannot be linked (written again through a temporary name) */
+TL_TEST(file_write_full_disk_every_k_without_o_tmpfile)
+{
+    full_disk_every_k(FMT_PNG, "full_disk_no_tmpfile_png", "tmpfile");
+    full_disk_every_k(FMT_RAW, "full_disk_no_tmpfile_raw", "tmpfile");
+}
+TL_TEST(file_write_full_disk_every_k_without_linkat)
+{
+    full_disk_every_k(FMT_EXR, "full_disk_no_link_exr", "link");
+    full_disk_every_k(FMT_RAW, "full_disk_no_link_raw", "link");
+}
 
 /* libjpeg's default error handler calls exit(): an image it cannot hold is refused before. */
 TL_TEST(image_write_jpeg_too_large_refused_process_lives)
