@@ -315,9 +315,11 @@ static int bench__parse_args(int argc, char **argv, bench_options *o)
 
 /* Everything that can fail for bad input is checked before the sweep; nothing is created unless
  * every check passes. */
-/* A doc the run will rewrite: readable, with both markers, writable. */
+/* A doc the run will rewrite: a regular file (checked first: a FIFO is never opened), readable,
+ * with both markers. */
 static int bench__check_doc(const char *path, const char *begin, const char *end, char **text)
 {
+    if (tl_tool_check_output(BENCH_TOOL, path)) return 1;
     *text = tl_tool_read_file(path, NULL);
     if (!*text) {
         tl_tool_fail(BENCH_TOOL, "cannot read '%s': %s", path, strerror(errno));
@@ -325,10 +327,7 @@ static int bench__check_doc(const char *path, const char *begin, const char *end
     }
     size_t head;
     const char *tail;
-    if (tl_tool_doc_split(BENCH_TOOL, path, *text, begin, end, &head, &tail)) return 1;
-    int e = tl_tool_probe_writable(path);
-    if (e) tl_tool_fail(BENCH_TOOL, "cannot write '%s': %s", path, strerror(e));
-    return e != 0;
+    return tl_tool_doc_split(BENCH_TOOL, path, *text, begin, end, &head, &tail);
 }
 
 static int bench__check_outputs(bench_options *o, char **doc_text, char **effects_text)
@@ -347,10 +346,7 @@ static int bench__check_outputs(bench_options *o, char **doc_text, char **effect
             return 1;
         }
     }
-    if (o->json && (e = tl_tool_probe_writable(o->json)) != 0) {
-        tl_tool_fail(BENCH_TOOL, "cannot write '%s': %s", o->json, strerror(e));
-        return 1;
-    }
+    if (o->json && tl_tool_check_output(BENCH_TOOL, o->json)) return 1;
     if (o->doc && bench__check_doc(o->doc, BENCH_DOC_BEGIN, BENCH_DOC_END, doc_text)) return 1;
     if (o->effects_doc && bench__check_doc(o->effects_doc, BENCH_EFFECTS_DOC_BEGIN, BENCH_EFFECTS_DOC_END, effects_text))
         return 1;
@@ -364,12 +360,10 @@ static int bench__check_outputs(bench_options *o, char **doc_text, char **effect
             return 1;
         }
         char *probe = tl_tool_strf("%s/bench_probe.png", o->out);
-        e = probe ? tl_tool_probe_writable(probe) : ENOMEM;
+        e = probe ? tl_tool_check_output(BENCH_TOOL, probe) : 1;
+        if (!probe) tl_tool_fail(BENCH_TOOL, "out of memory");
         free(probe);
-        if (e) {
-            tl_tool_fail(BENCH_TOOL, "cannot write into output directory '%s': %s", o->out, strerror(e));
-            return 1;
-        }
+        if (e) return 1;
     }
     if (o->doc && !o->no_plot) {
         char *dir = tl_tool_dir_of(o->doc), *img = dir ? tl_tool_strf("%s/img", dir) : NULL;

@@ -47,9 +47,9 @@ static void bench__terminal(FILE *f, const tl_tool_plot *p, int width, int heigh
             "} else {\n"
             "  set terminal png size %d,%d noenhanced\n"
             "}\n"
-            "set output '%s'\n"
+            "%s\n"
             "set grid\n",
-            width, height, width, height, p->png_tmp);
+            width, height, width, height, p->set_output);
 }
 
 static void bench__value(FILE *f, double v)

@@ -861,7 +861,7 @@ static int write_plot_script(FILE *f, const void *ctx)
             "} else {\n"
             "  set terminal png size 1500,1100 noenhanced\n"
             "}\n"
-            "set output '%s'\n"
+            "%s\n"
             "set multiplot layout 2,2 title \"thinlight codec error vs time: point = p99, bar = mean..max"
             "  |  %s, %zu cores; %s %s\"\n"
             "set logscale y\n"
@@ -869,7 +869,7 @@ static int write_plot_script(FILE *f, const void *ctx)
             "set grid xtics ytics\n"
             "set key off\n"
             "set xlabel 'ns per element, encode + decode (median of runs)'\n",
-            plot->png_tmp, r->cpu, r->cores, TL_REPORT_COMPILER, build_flags());
+            plot->set_output, r->cpu, r->cores, TL_REPORT_COMPILER, build_flags());
     for (size_t c = 0; c < sizeof colours / sizeof colours[0]; c++)
         fprintf(f, "set linetype %zu lc rgb '%s' pt 7 ps 1.2 lw 1.2\n", c + 1, colours[c]);
     for (int k = 0; k < KIND_COUNT; k++) {
@@ -1035,22 +1035,18 @@ static int check_outputs(const options *o, char **doc_text)
     }
     if (o->out) {
         char *probe = tl_tool_strf("%s/" PLOT_NAME ".png", o->out);
-        e = probe ? tl_tool_probe_writable(probe) : ENOMEM;
+        e = probe ? tl_tool_check_output(TOOL, probe) : 1;
+        if (!probe) fail_line("out of memory");
         free(probe);
-        if (e) {
-            fail_line("cannot write into output directory '%s': %s", o->out, strerror(e));
-            return 1;
-        }
+        if (e) return 1;
     }
-    if (o->json && (e = tl_tool_probe_writable(o->json)) != 0) {
-        fail_line("cannot write '%s': %s", o->json, strerror(e));
-        return 1;
-    }
+    if (o->json && tl_tool_check_output(TOOL, o->json)) return 1;
     if (!o->no_plot && !tl_tool_have_gnuplot()) {
         fail_line("gnuplot not found on PATH (install gnuplot-nox, or pass --no-plot)");
         return 1;
     }
-    if (o->doc) {
+    if (o->doc) { /* a regular file (checked first: a FIFO is never opened), readable, with markers */
+        if (tl_tool_check_output(TOOL, o->doc)) return 1;
         *doc_text = tl_tool_read_file(o->doc, NULL);
         if (!*doc_text) {
             fail_line("cannot read '%s': %s", o->doc, strerror(errno));
@@ -1059,10 +1055,6 @@ static int check_outputs(const options *o, char **doc_text)
         size_t head;
         const char *tail;
         if (doc_split(o->doc, *doc_text, &head, &tail)) return 1;
-        if ((e = tl_tool_probe_writable(o->doc)) != 0) {
-            fail_line("cannot write '%s': %s", o->doc, strerror(e));
-            return 1;
-        }
         if (!o->no_plot) {
             char *dir = tl_tool_dir_of(o->doc), *img = dir ? tl_tool_strf("%s/img", dir) : NULL;
             e = img ? tl_tool_make_dirs(img) : ENOMEM;

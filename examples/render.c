@@ -287,12 +287,7 @@ static int check_inputs(render_args *a)
                 a->out ? "-o" : "--dump-targets", image, tl_tool_no_io_images);
         return 1;
     }
-    int e = a->out ? tl_tool_probe_writable(a->out) : 0;
-    if (e) {
-        fprintf(stderr, "thinlight-render: cannot write %s: %s\n", a->out, strerror(e));
-        return 1;
-    }
-    return 0;
+    return a->out ? tl_tool_check_output("thinlight-render", a->out) : 0;
 }
 
 /* The glTF file or the built-in crypt with the lights the command line asks for; 0 or 1. */

@@ -1,9 +1,9 @@
-/* File output for the tools: every output is written under a temporary name and renamed into
- * place, so that a failure never leaves a partial file; generated doc sections between markers. */
+/* File output for the tools: every output is made in memory and written by tl_file_write
+ * (thinlight/file.h), whole or not at all, never over anything but a regular file; generated doc
+ * sections between markers. */
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>
-#include <fcntl.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -12,6 +12,8 @@
 #include <sys/types.h>
 #include <unistd.h>
 
+#include "thinlight/file.h"
+#include "tool_log.h"
 #include "tool_util.h"
 
 void tl_tool_fail(const char *tool, const char *fmt, ...)
@@ -71,57 +73,34 @@ int tl_tool_make_dirs(const char *path)
     return err;
 }
 
-char *tl_tool_temp_name(const char *path) { return tl_tool_strf("%s.tmp.%ld", path, (long)getpid()); }
-
-int tl_tool_probe_writable(const char *path)
+int tl_tool_check_output(const char *tool, const char *path)
 {
-    char *tmp = tl_tool_temp_name(path);
-    if (!tmp) return ENOMEM;
-    FILE *f = fopen(tmp, "wb");
-    int err = f ? 0 : errno;
-    if (f) {
-        fclose(f);
-        remove(tmp);
-    }
-    free(tmp);
-    return err;
+    tl_file_write_desc d = {tl_tool_logger(tool)};
+    return tl_file_check_writable(path, &d) != TL_OK;
 }
 
-int tl_tool_fsync_file(const char *path)
+int tl_tool_write_bytes(const char *tool, const char *path, const void *data, size_t size)
 {
-    int fd = open(path, O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return errno;
-    int err = fsync(fd) == 0 ? 0 : errno;
-    close(fd);
-    return err;
+    tl_file_write_desc d = {tl_tool_logger(tool)}; /* its line: "TOOL: PATH: reason" */
+    return tl_file_write(path, data, size, &d) != TL_OK;
 }
 
 int tl_tool_write_atomic(const char *tool, const char *path, tl_tool_write_fn fn, const void *ctx)
 {
-    char *tmp = tl_tool_temp_name(path);
-    if (!tmp) {
-        tl_tool_fail(tool, "out of memory");
-        return 1;
-    }
-    FILE *f = fopen(tmp, "wb");
+    char *text = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&text, &size);
     if (!f) {
-        tl_tool_fail(tool, "cannot write '%s': %s", path, strerror(errno));
-        free(tmp);
+        tl_tool_fail(tool, "%s: out of memory", path);
         return 1;
     }
-    errno = 0;
     int bad = fn(f, ctx) != 0;
-    /* on disk before the rename: even a crash of the machine leaves the old file or the new one */
-    bad |= fflush(f) != 0 || ferror(f) != 0 || fsync(fileno(f)) != 0;
-    bad |= fclose(f) != 0;
-    if (bad || rename(tmp, path) != 0) {
-        tl_tool_fail(tool, "cannot write '%s': %s", path, errno ? strerror(errno) : "write error");
-        remove(tmp);
-        free(tmp);
-        return 1;
-    }
-    free(tmp);
-    return 0;
+    bad |= fflush(f) != 0 || ferror(f) != 0;
+    bad |= fclose(f) != 0; /* a memory stream fails only for want of memory */
+    int err = bad ? 1 : tl_tool_write_bytes(tool, path, text, size);
+    if (bad) tl_tool_fail(tool, "%s: out of memory", path);
+    free(text);
+    return err;
 }
 
 char *tl_tool_read_file(const char *path, size_t *size)
@@ -156,13 +135,6 @@ char *tl_tool_read_file(const char *path, size_t *size)
     return buf;
 }
 
-static int tl__write_span(FILE *f, const void *ctx)
-{
-    const char *const *span = ctx; /* [begin, end) */
-    size_t n = (size_t)(span[1] - span[0]);
-    return fwrite(span[0], 1, n, f) != n;
-}
-
 int tl_tool_copy_file(const char *tool, const char *src, const char *dst)
 {
     size_t size = 0;
@@ -171,8 +143,7 @@ int tl_tool_copy_file(const char *tool, const char *src, const char *dst)
         tl_tool_fail(tool, "cannot read '%s': %s", src, strerror(errno));
         return 1;
     }
-    const char *span[2] = {data, data + size};
-    int err = tl_tool_write_atomic(tool, dst, tl__write_span, span);
+    int err = tl_tool_write_bytes(tool, dst, data, size);
     free(data);
     return err;
 }

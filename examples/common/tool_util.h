@@ -1,5 +1,5 @@
-/* Helpers shared by the command-line tools in examples/: one-line failures, atomic file output
- * (temporary name + rename), generated doc sections between markers, a small JSON writer, gnuplot
+/* Helpers shared by the command-line tools in examples/: one-line failures, whole-or-absent file
+ * output (tl_file_write, thinlight/file.h), generated doc sections between markers, a small JSON writer, gnuplot
  * plots, a progress line on stderr and a description of the machine. Not part of the library. */
 #ifndef TL_TOOL_UTIL_H
 #define TL_TOOL_UTIL_H
@@ -29,15 +29,13 @@ typedef int (*tl_tool_write_fn)(FILE *f, const void *ctx);
 char *tl_tool_dir_of(const char *path);
 /* mkdir -p; 0 on success, else an errno value. */
 int tl_tool_make_dirs(const char *path);
-/* PATH.tmp.PID: where an output is written before it is renamed into place; caller frees. */
-char *tl_tool_temp_name(const char *path);
-/* Whether a file can be created at `path` without touching `path` itself; 0 or an errno value. */
-int tl_tool_probe_writable(const char *path);
-/* Flushes a written file to disk (fsync); 0 or an errno value. */
-int tl_tool_fsync_file(const char *path);
-/* Writes through `fn` into a temporary file, flushes it to disk and renames it over `path`; on
- * failure prints one line, removes the temporary file, leaves `path` untouched and returns
- * nonzero. A process killed at any point leaves `path` old or new, never partial. */
+/* Whether `path` can be written as an output (tl_file_check_writable: absent or a regular file,
+ * not `-`, in a folder where a file can be made); 0, or 1 after one line on stderr. */
+int tl_tool_check_output(const char *tool, const char *path);
+/* Replaces `path` with the bytes, whole or not at all (tl_file_write); 0, or 1 after one line. */
+int tl_tool_write_bytes(const char *tool, const char *path, const void *data, size_t size);
+/* Writes through `fn` into memory, then as tl_tool_write_bytes: on failure one line, `path`
+ * untouched and nothing left beside it; a process killed at any point leaves `path` old or new. */
 int tl_tool_write_atomic(const char *tool, const char *path, tl_tool_write_fn fn, const void *ctx);
 /* The whole file, NUL-terminated (size without the NUL); NULL with errno set on failure. */
 char *tl_tool_read_file(const char *path, size_t *size);
@@ -89,8 +87,9 @@ void tl_tool_json_end(tl_tool_json *j);
 int tl_tool_have_gnuplot(void);
 
 /* One plot: DIR/NAME.dat (from `data`, may be NULL), DIR/NAME.gp (from `script`), and gnuplot run
- * inside DIR makes DIR/NAME.png. The script must `set output` to `png_tmp` (a name relative to
- * DIR, filled in before the writers run); the PNG is renamed into place once gnuplot succeeds. */
+ * inside DIR makes DIR/NAME.png. The script must hold the line `set_output` (filled in before the
+ * writers run): run by the tool, gnuplot writes the PNG on its standard output, which the tool
+ * checks and writes with tl_file_write; run by a user, the script writes NAME.png itself. */
 typedef struct tl_tool_plot {
     const char *tool;
     const char *dir;
@@ -99,7 +98,7 @@ typedef struct tl_tool_plot {
     tl_tool_write_fn script; /* both receive this struct as ctx */
     const void *user;
     size_t max_bytes;        /* a larger PNG gets a warning; 0: no limit */
-    char png_tmp[128];
+    char set_output[256];
 } tl_tool_plot;
 
 /* Prints one line and returns nonzero on failure. */

@@ -1,11 +1,12 @@
 /* thinlight io: glTF 2.0 scenes through tinygltf and image files through OpenImageIO (C++ kept
  * inside src/io behind this C API). Errors are a tl_result plus one line to the logger in the
- * options; image writers go through a temporary file in the same directory and rename it into
- * place, so a failure never leaves a partial file behind. */
+ * options; images are encoded in memory and written by tl_file_write (thinlight/file.h), so an
+ * output is whole or absent. */
 #ifndef THINLIGHT_IO_H
 #define THINLIGHT_IO_H
 
 #include "thinlight/base.h"
+#include "thinlight/file.h"
 #include "thinlight/scene.h"
 
 #ifdef __cplusplus
@@ -31,12 +32,18 @@ typedef struct tl_image_desc {
 } tl_image_desc;
 
 /**
- * Writes an image; the file type follows the extension (.png, .exr, .tif, .jpg, ... as OIIO
+ * Writes an image; the file type follows the extension (.png, .exr, .jpg, .tif, ... as OIIO
  * supports). Float data written to an 8-bit format is clamped to [0,1] and rounded; alpha is
- * stored as given (straight, never divided out of or into the colour). The pixels go
- * to a temporary file in the same directory, flushed to disk and renamed over `path`, so `path`
- * holds either its old content or the whole new image, never part of one. On failure one line
- * naming the file and the reason goes to desc->logger.
+ * stored as given (straight, never divided out of or into the colour). OIIO encodes the image
+ * in memory and tl_file_write writes the bytes (thinlight/file.h): `path` holds either its old
+ * content or the whole new image, never part of one, even on a full disk or when the process is
+ * killed, and only an absent path or a regular file is replaced (a FIFO, a device, a directory
+ * or a symbolic link is refused; `-` is no file extension). Returns TL_OK,
+ * TL_ERROR_INVALID_ARGUMENT (NULL arguments, a layout out of range, no extension),
+ * TL_ERROR_UNSUPPORTED (no OIIO writer for the extension, one that cannot encode into memory, or
+ * a JPEG over 65500 pixels a side, which libjpeg would end the process for), TL_ERROR_IO (the
+ * encoder or the file failed) or TL_ERROR_OUT_OF_MEMORY. On failure one line naming the file
+ * and the reason goes to desc->logger.
  */
 TL_API tl_result tl_image_write(const char *path, const tl_image_desc *desc, const void *pixels);
 

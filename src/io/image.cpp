@@ -1,19 +1,19 @@
 // Image files through OpenImageIO: tl_image_write, and PNG/JPEG reading through the decoder the
 // glTF textures use (image_decode.h). Exceptions and OIIO error strings become a tl_result plus
 // one line to the logger here; nothing C++ crosses the C API.
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "core/alloc.h"
 #include "image_decode.h"
 #include "io_file.h"
+#include "thinlight/file.h"
 #include "thinlight/io.h"
 
 namespace {
@@ -33,36 +33,30 @@ std::string extension_of(const std::string &path)
     return path.substr(dot);
 }
 
-// The written temporary reaches the disk before it is renamed over the target, so that even a
-// crash of the machine leaves the old file or the new one.
-bool flush_to_disk(const std::string &path)
-{
-    int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC);
-    if (fd < 0) return false;
-    bool ok = fsync(fd) == 0;
-    close(fd);
-    return ok;
-}
-
 bool valid_layout(const tl_image_desc *d)
 {
     return d->width && d->height && d->channels >= 1 && d->channels <= 4 && d->width <= 65536 && d->height <= 65536 &&
            (unsigned)d->type < TL_PIXEL_TYPE_COUNT_;
 }
 
-// Writes the pixels into `tmp` with OIIO; "" or the reason.
-std::string write_pixels(OIIO::ImageOutput *out, const std::string &tmp, const std::string &ext, const tl_image_desc &desc,
-                         const void *pixels)
+// Encodes the pixels into `bytes` with OIIO, in memory: no OIIO writer or codec library ever
+// touches the disk (a full disk cannot reach libjpeg's error handler, which exits the process,
+// nor libpng's writes, whose errors OIIO ignores). "" or the reason.
+std::string encode(OIIO::ImageOutput *out, const tl_image_desc &desc, const void *pixels, std::vector<unsigned char> *bytes)
 {
     OIIO::TypeDesc in_type = desc.type == TL_PIXEL_F32 ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
     OIIO::TypeDesc file_type = in_type;
-    if (ext == ".png" || ext == ".jpg" || ext == ".jpeg") file_type = OIIO::TypeDesc::UINT8;
-    if (ext == ".exr") file_type = OIIO::TypeDesc::HALF;
+    std::string format = out->format_name();
+    if (format == "png" || format == "jpeg") file_type = OIIO::TypeDesc::UINT8;
+    if (format == "openexr") file_type = OIIO::TypeDesc::HALF;
     OIIO::ImageSpec spec((int)desc.width, (int)desc.height, (int)desc.channels, file_type);
     // The pixels are stored as given. Without this OIIO takes RGBA for premultiplied and divides
     // colour by alpha when it writes PNG (found by the test image_png_round_trip_*).
     spec.attribute("oiio:UnassociatedAlpha", 1);
-    if (!out->open(tmp, spec)) return "cannot write: " + out->geterror();
+    OIIO::Filesystem::IOVecOutput memory(*bytes);
+    void *proxy = &memory;
+    spec.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
+    if (!out->open("memory", spec)) return "cannot encode: " + out->geterror();
     size_t elem = desc.type == TL_PIXEL_F32 ? 4 : 1;
     OIIO::stride_t ystride = (OIIO::stride_t)(desc.width * desc.channels * elem);
     const char *base = static_cast<const char *>(pixels);
@@ -73,7 +67,20 @@ std::string write_pixels(OIIO::ImageOutput *out, const std::string &tmp, const s
     bool ok = out->write_image(in_type, base, OIIO::AutoStride, ystride);
     std::string e = ok ? "" : out->geterror();
     ok = out->close() && ok;
-    if (!ok) return "write failed: " + (e.empty() ? out->geterror() : e);
+    if (!ok) return "cannot encode: " + (e.empty() ? out->geterror() : e);
+    if (bytes->empty()) return "the encoder produced no bytes";
+    return "";
+}
+
+// What OIIO cannot write safely, before it is asked to: "" or the reason.
+std::string refuse(const OIIO::ImageOutput &out, const tl_image_desc &desc)
+{
+    // Through memory only; a writer that cannot take an ioproxy would write the file itself.
+    if (!out.supports("ioproxy"))
+        return std::string("OIIO's ") + out.format_name() + " writer cannot encode into memory";
+    // libjpeg ends the process (error_exit) on an image it cannot hold; OIIO installs no handler.
+    bool jpeg = !std::strcmp(out.format_name(), "jpeg");
+    if (jpeg && (desc.width > 65500 || desc.height > 65500)) return "JPEG holds at most 65500 pixels a side";
     return "";
 }
 
@@ -89,16 +96,16 @@ extern "C" tl_result tl_image_write(const char *path, const tl_image_desc *desc,
         if (ext.empty()) return report(logger, TL_ERROR_INVALID_ARGUMENT, target + ": no file extension");
         auto out = OIIO::ImageOutput::create(target);
         if (!out) return report(logger, TL_ERROR_UNSUPPORTED, target + ": no writer for '" + ext + "'");
-        // The temporary keeps the extension so that OIIO picks the same writer.
-        std::string tmp = target + ".tmp" + std::to_string(static_cast<long>(getpid())) + ext;
-        std::string why = write_pixels(out.get(), tmp, ext, *desc, pixels);
-        if (why.empty() && !flush_to_disk(tmp)) why = "cannot flush the temporary file to disk";
-        if (why.empty() && std::rename(tmp.c_str(), target.c_str()) != 0) why = "cannot rename the temporary file into place";
-        if (!why.empty()) {
-            std::remove(tmp.c_str());
-            return report(logger, TL_ERROR_IO, target + ": " + why);
-        }
-        return TL_OK;
+        std::string why = refuse(*out, *desc);
+        if (!why.empty()) return report(logger, TL_ERROR_UNSUPPORTED, target + ": " + why);
+        std::vector<unsigned char> bytes;
+        why = encode(out.get(), *desc, pixels, &bytes);
+        if (!why.empty()) return report(logger, TL_ERROR_IO, target + ": " + why);
+        // The one writer of every output (thinlight/file.h): whole or absent, regular files only.
+        tl_file_write_desc fd = {logger};
+        return tl_file_write(path, bytes.data(), bytes.size(), &fd);
+    } catch (const std::bad_alloc &) {
+        return report(logger, TL_ERROR_OUT_OF_MEMORY, std::string(path) + ": out of memory");
     } catch (const std::exception &ex) {
         return report(logger, TL_ERROR_IO, std::string(path) + ": " + ex.what());
     } catch (...) {

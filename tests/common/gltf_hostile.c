@@ -256,6 +256,35 @@ int tlh_write(const char *path, const void *data, size_t size)
     return fclose(f) == 0 && put == size ? 0 : -1;
 }
 
+unsigned char *tlh_read(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) return NULL;
+    unsigned char *b = NULL;
+    size_t cap = 0, len = 0, got;
+    do {
+        if (len == cap) {
+            unsigned char *bigger = realloc(b, cap = cap ? 2 * cap : 65536);
+            if (!bigger) {
+                free(b);
+                fclose(f);
+                return NULL;
+            }
+            b = bigger;
+        }
+        got = fread(b + len, 1, cap - len, f);
+        len += got;
+    } while (got > 0);
+    int bad = ferror(f);
+    fclose(f);
+    if (bad) {
+        free(b);
+        return NULL;
+    }
+    *size = len;
+    return b;
+}
+
 int tlh_mkdirs(const char *dir)
 {
     char tmp[1024];

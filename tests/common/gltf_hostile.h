@@ -52,6 +52,8 @@ void tlh_base64(tlh_text *t, const unsigned char *d, size_t n);
 
 /* Files: 0 on success. */
 int tlh_write(const char *path, const void *data, size_t size);
+/* The whole file, malloc'ed, *size its length; NULL when it cannot be read. */
+unsigned char *tlh_read(const char *path, size_t *size);
 int tlh_mkdirs(const char *dir);
 /* Removes a test's folder and everything in it (no symbolic link is followed). */
 void tlh_rmtree(const char *dir);

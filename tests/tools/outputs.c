@@ -1,8 +1,8 @@
 /* Outputs are never half-written: thinlight-render is killed (SIGKILL) in the middle of an EXR
- * dump (--dump-targets at 768x768), at several moments, over files from an earlier run. Every
- * output name must then hold either its old content or the whole new file (byte for byte what an
- * uninterrupted run writes, the EXR capDate aside), never a truncated one. Temporary files of the
- * killed process may stay behind; they have their own names (PATH.tmpPID.exr). */
+ * dump (--dump-targets), at several moments, over files from an earlier run. Every output name
+ * must then hold either its old content or the whole new file (byte for byte what an
+ * uninterrupted run writes, the EXR capDate aside), never a truncated one, and nothing else may
+ * be left beside the outputs: the writer's file has no name until it is whole (thinlight/file.h). */
 #define _POSIX_C_SOURCE 200809L
 
 #include <dirent.h>
@@ -27,31 +27,12 @@
 #endif
 
 #define SIZE_ARG "768x768"
+#define SMALL_SIZE_ARG "384x384" /* the 20 kills: shorter runs, the same writers */
 static const char OLD[] = "OLD CONTENT\n";
 static const char *const NAMES[] = {"out.exr",          "targets/depth.exr",          "targets/rt0_normal_gloss.exr",
                                     "targets/hdr.exr",  "targets/light_diffuse.exr",  "targets/light_specular.exr",
                                     "targets/ldr.exr",  "targets/output.exr"};
 #define NAME_COUNT (sizeof NAMES / sizeof NAMES[0])
-
-static unsigned char *read_all(const char *path, size_t *n)
-{
-    FILE *f = fopen(path, "rb");
-    if (!f) return NULL;
-    unsigned char *b = NULL;
-    size_t cap = 0, len = 0, got;
-    do {
-        if (len == cap) {
-            unsigned char *bigger = realloc(b, cap = cap ? 2 * cap : 65536);
-            if (!bigger) break;
-            b = bigger;
-        }
-        got = fread(b + len, 1, cap - len, f);
-        len += got;
-    } while (got > 0);
-    fclose(f);
-    *n = len;
-    return b;
-}
 
 /* The EXR header's capDate (the time of writing) is the one part two runs do not share. */
 static void mask_date(unsigned char *b, size_t n)
@@ -63,7 +44,7 @@ static void mask_date(unsigned char *b, size_t n)
 static int same_file(const char *a, const char *b)
 {
     size_t na = 0, nb = 0;
-    unsigned char *x = read_all(a, &na), *y = read_all(b, &nb);
+    unsigned char *x = tlh_read(a, &na), *y = tlh_read(b, &nb);
     int same = x && y && na == nb;
     if (same) {
         mask_date(x, na);
@@ -75,7 +56,7 @@ static int same_file(const char *a, const char *b)
     return same;
 }
 
-static pid_t spawn(const char *dir)
+static pid_t spawn_sized(const char *dir, const char *size)
 {
     char out[1100], targets[1100];
     snprintf(out, sizeof out, "%s/out.exr", dir);
@@ -87,11 +68,44 @@ static pid_t spawn(const char *dir)
             dup2(null, 1);
             dup2(null, 2);
         }
-        execl(TL_RENDER_TOOL, TL_RENDER_TOOL, "default", "--size", SIZE_ARG, "--lights", "8", "-o", out,
+        execl(TL_RENDER_TOOL, TL_RENDER_TOOL, "default", "--size", size, "--lights", "8", "-o", out,
               "--dump-targets", targets, (char *)NULL);
         _exit(127);
     }
     return pid;
+}
+
+static pid_t spawn(const char *dir) { return spawn_sized(dir, SIZE_ARG); }
+
+/* Names in DIR and DIR/targets other than the outputs ("targets/NAME" for the latter), up to
+ * `max`; how many. */
+static int other_names(const char *dir, char names[][256], int max)
+{
+    int n = 0;
+    for (int s = 0; s < 2; s++) {
+        char sub[1100];
+        snprintf(sub, sizeof sub, "%s%s", dir, s ? "/targets" : "");
+        DIR *d = opendir(sub);
+        struct dirent *e;
+        while (d && (e = readdir(d)) != NULL) {
+            char name[256];
+            if (snprintf(name, sizeof name, "%s%s", s ? "targets/" : "", e->d_name) >= (int)sizeof name) continue;
+            int known = !strcmp(e->d_name, ".") || !strcmp(e->d_name, "..") || !strcmp(name, "targets");
+            for (size_t i = 0; i < NAME_COUNT; i++) known |= !strcmp(name, NAMES[i]);
+            if (!known && n < max) memcpy(names[n++], name, sizeof name);
+        }
+        if (d) closedir(d);
+    }
+    return n;
+}
+
+/* What a killed run left beside the outputs, counted and printed. */
+static int strays(const char *dir)
+{
+    char names[64][256];
+    int n = other_names(dir, names, 64);
+    for (int i = 0; i < n; i++) fprintf(stderr, "left beside the outputs: %s/%s\n", dir, names[i]);
+    return n;
 }
 
 /* Distinct files seen being written so far (appended to `seen`): temporary names in DIR and
@@ -108,19 +122,13 @@ static int scan_temps(const char *dir, char seen[][256], int count)
         for (int k = 0; k < count; k++) known |= !strcmp(seen[k], NAMES[i]);
         if (!known && count < 64) snprintf(seen[count++], 256, "%s", NAMES[i]);
     }
-    char sub[2][1100];
-    snprintf(sub[0], sizeof sub[0], "%s", dir);
-    snprintf(sub[1], sizeof sub[1], "%s/targets", dir);
-    for (int s = 0; s < 2; s++) {
-        DIR *d = opendir(sub[s]);
-        struct dirent *e;
-        while (d && (e = readdir(d)) != NULL) {
-            if (!strstr(e->d_name, ".tmp")) continue;
-            int known = 0;
-            for (int i = 0; i < count; i++) known |= !strcmp(seen[i], e->d_name);
-            if (!known && count < 64) snprintf(seen[count++], 256, "%s", e->d_name);
-        }
-        if (d) closedir(d);
+    char others[64][256];
+    int n = other_names(dir, others, 64);
+    for (int j = 0; j < n; j++) {
+        if (!strstr(others[j], ".tmp")) continue;
+        int known = 0;
+        for (int i = 0; i < count; i++) known |= !strcmp(seen[i], others[j]);
+        if (!known && count < 64) memcpy(seen[count++], others[j], sizeof others[j]);
     }
     return count;
 }
@@ -148,7 +156,7 @@ static int check_outputs(const char *dir, const char *ref)
         snprintf(path, sizeof path, "%s/%s", dir, NAMES[i]);
         snprintf(want, sizeof want, "%s/%s", ref, NAMES[i]);
         size_t n = 0;
-        unsigned char *b = read_all(path, &n);
+        unsigned char *b = tlh_read(path, &n);
         int old = b && n == sizeof OLD - 1 && !memcmp(b, OLD, n);
         free(b);
         int whole = !old && same_file(path, want);
@@ -216,8 +224,57 @@ TL_TEST(outputs_killed_mid_exr_dump_leave_old_or_whole)
         int fresh = check_outputs(dir, ref);
         printf("killed while writing file %d (%s): %d of %zu outputs new, the rest old\n", moments[m], caught, fresh,
                NAME_COUNT);
+        TL_CHECK(strays(dir) == 0);
         mid_write += killed;
         TL_CHECK(fresh < (int)NAME_COUNT); /* it was killed before the end */
     }
     TL_CHECK(mid_write == 3);
+}
+
+static double now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return t.tv_sec * 1e3 + t.tv_nsec / 1e6;
+}
+
+/* 20 kills spread over the part of the run that writes (from the first new output to the end,
+ * as an uninterrupted run times it): every output old or whole, nothing left beside them. */
+TL_TEST(outputs_killed_20_times_leave_nothing_beside_them)
+{
+    char ref[512], dir[512];
+    snprintf(ref, sizeof ref, "%s/reference_small", TL_OUTPUTS_TEST_DIR);
+    snprintf(dir, sizeof dir, "%s/killed_small", TL_OUTPUTS_TEST_DIR);
+    prepare(ref);
+    char seen[64][256];
+    double t0 = now_ms(), first = -1, end = 0;
+    pid_t pid = spawn_sized(ref, SMALL_SIZE_ARG);
+    int status = -1;
+    TL_CHECK(pid > 0);
+    while (pid > 0 && waitpid(pid, &status, WNOHANG) == 0) {
+        if (first < 0 && scan_temps(ref, seen, 0) > 0) first = now_ms() - t0;
+        sleep_us(200);
+    }
+    end = now_ms() - t0;
+    TL_CHECK(WIFEXITED(status) && WEXITSTATUS(status) == 0 && strays(ref) == 0);
+    if (first < 0) first = 0.5 * end;
+    double from = 0.8 * first; /* the first write began before its file appeared */
+    int stray_runs = 0, partly_new = 0;
+    for (int i = 0; i < 20; i++) {
+        prepare(dir);
+        double at = from + (end - from) * (i + 0.5) / 20, start = now_ms();
+        pid = spawn_sized(dir, SMALL_SIZE_ARG);
+        TL_CHECK(pid > 0);
+        if (pid <= 0) return;
+        while (now_ms() - start < at && waitpid(pid, &status, WNOHANG) == 0) sleep_us(200);
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        int fresh = check_outputs(dir, ref);
+        partly_new += fresh > 0 && fresh < (int)NAME_COUNT;
+        int left = strays(dir);
+        stray_runs += left > 0;
+    }
+    printf("20 kills from %.0f to %.0f ms (a run: %.0f ms, first output at %.0f ms): %d with outputs partly new, "
+           "%d with files left beside them\n", from, end, end, first, partly_new, stray_runs);
+    TL_CHECK(stray_runs == 0);
 }
