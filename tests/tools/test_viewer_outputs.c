@@ -13,14 +13,6 @@
 
 static const char OLD[] = "OLD CONTENT\n";
 
-/* xvfb() with -noreset: without it Xvfb resets when the viewer disconnects and signals xvfb-run
- * again, which can land in xvfb-run's clean-up and turn the viewer's exit status into 5. */
-static const char *xvfb_noreset(void)
-{
-    const char *d = getenv("DISPLAY");
-    return d && d[0] ? VW_ENV : "xvfb-run -a -s '-screen 0 1280x1024x24 -noreset' " VW_ENV;
-}
-
 /* The viewer writing `shot` (absolute), the injector armed on its folder; exit status and the
  * lines it printed on stderr that name `shot`. */
 static int faulted_viewer(const char *shot, const char *call, int k, const char *counts, int *lines)
@@ -33,7 +25,7 @@ static int faulted_viewer(const char *shot, const char *call, int k, const char 
              "%senv LD_PRELOAD='%s' TL_FAULT_DIR='%s' TL_FAULT_CALL=%s TL_FAULT_AT=%d TL_FAULT_REPORT='%s' "
              "ASAN_OPTIONS=verify_asan_link_order=0 '%s' --no-panel --light-strategy tiled --frames 2 --size 64x48 "
              "--screenshot '%s' 2>'%s'",
-             xvfb_noreset(), TL_FAULT_INJECT, dir, call, k, counts, TL_VIEWER, shot, err);
+             xvfb(), TL_FAULT_INJECT, dir, call, k, counts, TL_VIEWER, shot, err);
     int status = run(cmd);
     *lines = 0;
     FILE *f = fopen(err, "r");
