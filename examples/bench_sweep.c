@@ -165,7 +165,8 @@ static double bench__peak(const float *rgb, size_t count)
 
 /* Plan figures: targets from what the renderer allocated, passes and the technique's bytes from
  * the plan (when the renderer can give it). */
-static void bench__plan_figures(tl_renderer *r, const tl_frame_stats *st, size_t pixels, bench_record *rec)
+static void bench__plan_figures(tl_tool_log *log, tl_renderer *r, const tl_frame_stats *st, size_t pixels,
+                                bench_record *rec)
 {
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         rec->target_bpp[t] = (uint32_t)((st->target_bytes[t] + pixels / 2) / pixels);
@@ -180,10 +181,13 @@ static void bench__plan_figures(tl_renderer *r, const tl_frame_stats *st, size_t
         rec->lighting = plan.lighting;
         rec->fresnel = plan.fresnel;
         for (int t = 0; t < TL_TARGET_COUNT; t++)
-            if (plan.target_bytes_per_pixel[t] != rec->target_bpp[t])
-                fprintf(stderr, BENCH_TOOL ": warning: %s %s: the plan says %u B/px, the renderer allocated %u B/px\n",
-                        bench_config_name(rec->config), tl_target_name((tl_target_id)t), plan.target_bytes_per_pixel[t],
-                        rec->target_bpp[t]);
+            if (plan.target_bytes_per_pixel[t] != rec->target_bpp[t]) { /* once, not per light count */
+                char line[256];
+                snprintf(line, sizeof line, "%s %s: the plan says %u B/px, the renderer allocated %u B/px",
+                         bench_config_name(rec->config), tl_target_name((tl_target_id)t),
+                         plan.target_bytes_per_pixel[t], rec->target_bpp[t]);
+                tl_tool_log_message(log, TL_LOG_WARNING, line);
+            }
     } else {
         for (int p = 0; p < TL_PASS_COUNT; p++)
             if (st->pass_ms[p] > 0.0) rec->passes |= 1u << p;
@@ -214,9 +218,10 @@ static int bench__frame(bench_run *run, tl_renderer *r, const bench_record *rec,
 
 /* Medians over the timed frames; counts, byte estimates and sizes from the last frame (they do not
  * change from frame to frame). */
-static void bench__summarise_frames(const bench_options *opt, tl_renderer *r, bench__samples *smp, size_t pixels,
+static void bench__summarise_frames(bench_run *run, tl_renderer *r, bench__samples *smp, size_t pixels,
                                     bench_record *rec)
 {
+    const bench_options *opt = &run->opt;
     uint32_t frames = opt->frames;
     const tl_frame_stats *st = &smp->last;
     rec->frame_ms = malloc(frames * sizeof *rec->frame_ms);
@@ -240,7 +245,7 @@ static void bench__summarise_frames(const bench_options *opt, tl_renderer *r, be
     rec->light_pairs = st->light_pairs;
     rec->draw_calls = st->draw_calls;
     rec->objects_drawn = st->objects_drawn;
-    bench__plan_figures(r, st, pixels, rec);
+    bench__plan_figures(&run->log, r, st, pixels, rec);
     rec->lighting_ms = rec->pass_ms[TL_PASS_LIGHT_CULL] +
                        (rec->mode == TL_MODE_FORWARD ? rec->pass_ms[TL_PASS_FORWARD]
                                                      : rec->pass_ms[TL_PASS_LIGHTS] + rec->pass_ms[TL_PASS_LIGHTS_TILED]);
@@ -436,7 +441,7 @@ static int bench__sweep_lights(bench_run *run, bench__size_state *s, const bench
     fb.ref_hdr += job->slot * fb.pixels * 4;
     for (size_t m = first; m < first + count; m++) {
         bench_record *rec = &job->recs[m];
-        bench__summarise_frames(opt, s->renderers[m], &s->samples[m], fb.pixels, rec);
+        bench__summarise_frames(run, s->renderers[m], &s->samples[m], fb.pixels, rec);
         if (bench__images(s->renderers[m], rec, &fb)) return 1;
         if (opt->out && job->lights == opt->lights[opt->light_count - 1] &&
             bench_images_write(run, rec, rec->mode == BENCH_REFERENCE ? fb.ref_ldr : fb.ldr, fb.ref_ldr, 1,
