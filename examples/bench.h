@@ -12,7 +12,9 @@
 #include "thinlight/metrics.h"
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
+#include "tool_budget.h"
 #include "tool_gl.h"
+#include "tool_log.h"
 #include "tool_util.h"
 
 #define BENCH_TOOL "thinlight-bench"
@@ -88,6 +90,8 @@ typedef enum bench_effect {
     BENCH_EFFECTS
 } bench_effect;
 const char *bench_effect_name(bench_effect e);
+/* Every effect's name in bench_effect order, then "none" (--effects) and NULL. */
+extern const char *const bench_effect_names[BENCH_EFFECTS + 2];
 
 typedef struct bench_options {
     const char *scene;        /* "default" or a glTF file */
@@ -102,17 +106,23 @@ typedef struct bench_options {
     uint32_t frames, warmup;
     uint64_t seed;
     const char *json, *out, *doc;
-    int quick, no_plot, help, list_devices;
+    int quick, no_plot;
     int small_light_buffer;   /* also thin-lpp/tiled with an R11G11B10F light buffer (--light-formats) */
     int fresnel_nv_variant;   /* also thin-lpp/tiled with the n.v Fresnel layout: set when the scene is
                                  lit with GGX and --fresnel was not given */
-    tl_tool_context_options context; /* --context, --device */
+    tl_tool_context_args context_args; /* --context, --device, --list-devices as given */
+    tl_tool_context_options context;   /* what they ask for */
+    tl_tool_budgets budgets;           /* --max-target-memory, --max-load-memory, --max-texture-pixels */
     tl_lighting_model lighting;      /* --lighting (auto: from the scene's materials) */
     tl_fresnel_layout fresnel;       /* --fresnel (thin-lpp with GGX) */
     unsigned effects;                /* --effects: bits (1u << bench_effect); 0: none measured */
     tl_renderer_desc effect_desc;    /* the effects' parameters (--ssao-*, --fog-*, --dof-*, --bloom-*, --ssr-*) */
     const char *effects_doc;         /* --effects-doc: the effects table between its markers */
 } bench_options;
+
+/* bench_args.c: the command line into `o`: 0; -1 after --help or --list-options (printed); or 2
+ * (bad usage) after one line on stderr. */
+int bench_parse_args(int argc, char **argv, bench_options *o);
 
 /* One effect in one configuration, at the first size and light count: the configuration rendered
  * with the effect and without it, frame by frame in turn; its error against fat with the same effect. */
@@ -196,6 +206,7 @@ typedef struct bench_planning {
 
 typedef struct bench_run {
     bench_options opt;
+    tl_tool_log log;               /* the loader's and the renderers' lines, each printed once */
     bench_record *records;         /* size-major, then lights, then modes in render order */
     size_t record_count, record_capacity;
     char gl_renderer[128], gl_version[128];
@@ -217,6 +228,11 @@ typedef struct bench_run {
     size_t effect_count;
 } bench_run;
 
+/* The most memory the renderers held at once may take in copies of the scene (each renderer uploads
+ * its own; on llvmpipe they are process memory): as many renderers as fit take turns frame by
+ * frame, at least one. */
+#define BENCH_SCENE_COPIES_BYTES ((size_t)512 << 20)
+
 /* bench_scene.c: the geometry of the sweep (built-in crypt or glTF file) and its lights for N. */
 typedef struct bench_scene bench_scene;
 /* 0, or BENCH_EXIT_BAD_INPUT after one line on stderr (an unreadable or invalid scene). */
@@ -225,10 +241,18 @@ const tl_scene *bench_scene_get(const bench_scene *s);
 /* The lights of a frame with `n` local lights; the array is owned by the scene until the next call. */
 int bench_scene_lights(bench_scene *s, uint32_t n, const tl_light **lights, size_t *count);
 void bench_scene_close(bench_scene *s);
+/* What one renderer's copy of the scene takes, estimated: its textures with their mip chains, its
+ * vertices and indices. */
+size_t bench_scene_bytes(const bench_scene *s);
 
 /* bench_sweep.c: renders everything and fills run->records (and the images under --out), then
  * times run->planning's modes planned and unplanned (so bench_planning_compare comes first). */
 int bench_sweep(bench_run *run, bench_scene *scene);
+/* How many renderers with the scene may be held at once: BENCH_SCENE_COPIES_BYTES over
+ * bench_scene_bytes, at least 1. */
+size_t bench_renderers_at_once(const bench_scene *scene);
+/* Fills what every renderer of the bench shares: the context's loader, the log, the budget. */
+void bench_renderer_desc(bench_run *run, tl_context *ctx, tl_renderer_desc *d);
 /* The configurations rendered (at most BENCH_CONFIGS), strategy by strategy: fat first (the
  * reference of the strategy's group), then the requested modes. */
 size_t bench_render_modes(const bench_options *opt, bench_config *modes);

@@ -13,9 +13,9 @@
 #include "bench.h"
 #include "tool_log.h"
 
-static const char *const bench__effect_names[BENCH_EFFECTS] = {"ssao", "fog", "dof", "bloom", "ssr"};
+const char *const bench_effect_names[BENCH_EFFECTS + 2] = {"ssao", "fog", "dof", "bloom", "ssr", "none", NULL};
 
-const char *bench_effect_name(bench_effect e) { return (unsigned)e < BENCH_EFFECTS ? bench__effect_names[e] : "?"; }
+const char *bench_effect_name(bench_effect e) { return (unsigned)e < BENCH_EFFECTS ? bench_effect_names[e] : "?"; }
 
 /* The passes each effect adds (their GPU time is its cost). */
 static double bench__effect_ms(bench_effect e, const tl_frame_stats *st)
@@ -119,16 +119,14 @@ static tl_renderer *bench__effect_renderer(bench_run *run, tl_context *ctx, cons
     const bench_options *opt = &run->opt;
     tl_renderer_desc d = {.mode = bench_config_mode(c), .light_strategy = bench_config_strategy(c),
                           .lighting = opt->lighting, .fresnel = bench_config_fresnel(c, opt->fresnel),
-                          .width = opt->sizes[0].width, .height = opt->sizes[0].height, .synchronous_stats = 1,
-                          .get_proc_address = tl_context_proc_loader, .get_proc_address_user = ctx,
-                          .logger = tl_tool_logger(BENCH_TOOL)};
+                          .width = opt->sizes[0].width, .height = opt->sizes[0].height, .synchronous_stats = 1};
+    bench_renderer_desc(run, ctx, &d);
     if (slot) bench_effect_enable(opt, list[slot - 1], &d);
     if (d.ssao.method != TL_SSAO_OFF) d.keep_targets = TL_TARGET_BIT(TL_TARGET_AO);
     tl_renderer *r = NULL;
     if (tl_renderer_create(&d, &r) != TL_OK) return NULL; /* the logger said why */
     if (tl_renderer_set_scene(r, scene) != TL_OK || tl_renderer_set_lights(r, lights, count) != TL_OK) {
-        tl_tool_fail(BENCH_TOOL, "%s with %s: %s", bench_config_name(c), slot ? bench_effect_name(list[slot - 1]) : "no effect",
-                     tl_renderer_last_error(r));
+        tl_tool_log_error(&run->log, "%s", tl_renderer_last_error(r)); /* once: the logger said it */
         tl_renderer_destroy(r);
         return NULL;
     }

@@ -31,11 +31,13 @@ struct bench_scene {
     size_t extra_count;
 };
 
-static int bench__load_file(const bench_options *opt, bench_scene *s)
+static int bench__load_file(const bench_options *opt, bench_scene *s, tl_tool_log *log)
 {
     char error[512] = "";
     uint32_t largest = opt->lights[opt->light_count - 1];
-    tl_result res = tl_tool_load_gltf(opt->scene, largest, opt->seed, &s->scene, error, sizeof error);
+    tl_gltf_options o = {.extra_lights = largest, .seed = opt->seed};
+    tl_tool_budget_gltf(&opt->budgets, &o);
+    tl_result res = tl_tool_load_gltf(opt->scene, &o, log, &s->scene, error, sizeof error);
     if (res != TL_OK) {
         if (error[0]) tl_tool_fail(BENCH_TOOL, "cannot load scene %s", error);
         else tl_tool_fail(BENCH_TOOL, "cannot load scene '%s': %s", opt->scene, tl_result_string(res));
@@ -84,7 +86,7 @@ int bench_scene_open(const bench_options *opt, bench_scene **out, bench_run *run
                  "lights = local lights per frame (point + spot, 1 in 8 a spot light), plus the crypt's directional "
                  "moonlight");
     } else {
-        int rc = bench__load_file(opt, s);
+        int rc = bench__load_file(opt, s, &run->log);
         if (rc) {
             bench_scene_close(s);
             return rc;
@@ -171,4 +173,13 @@ void bench_scene_close(bench_scene *s)
     free(s->lights);
     free(s->fixed);
     free(s);
+}
+
+size_t bench_scene_bytes(const bench_scene *s)
+{
+    const tl_scene *sc = s->scene;
+    double bytes = (double)sc->vertex_count * sizeof(tl_vertex) + (double)sc->index_count * sizeof(uint32_t);
+    for (size_t i = 0; i < sc->texture_count; i++)
+        bytes += (double)sc->textures[i].width * sc->textures[i].height * 4.0 * 4.0 / 3.0;
+    return bytes < (double)SIZE_MAX ? (size_t)bytes : SIZE_MAX;
 }

@@ -165,7 +165,8 @@ static double bench__peak(const float *rgb, size_t count)
 
 /* Plan figures: targets from what the renderer allocated, passes and the technique's bytes from
  * the plan (when the renderer can give it). */
-static void bench__plan_figures(tl_renderer *r, const tl_frame_stats *st, size_t pixels, bench_record *rec)
+static void bench__plan_figures(tl_tool_log *log, tl_renderer *r, const tl_frame_stats *st, size_t pixels,
+                                bench_record *rec)
 {
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         rec->target_bpp[t] = (uint32_t)((st->target_bytes[t] + pixels / 2) / pixels);
@@ -180,10 +181,13 @@ static void bench__plan_figures(tl_renderer *r, const tl_frame_stats *st, size_t
         rec->lighting = plan.lighting;
         rec->fresnel = plan.fresnel;
         for (int t = 0; t < TL_TARGET_COUNT; t++)
-            if (plan.target_bytes_per_pixel[t] != rec->target_bpp[t])
-                fprintf(stderr, BENCH_TOOL ": warning: %s %s: the plan says %u B/px, the renderer allocated %u B/px\n",
-                        bench_config_name(rec->config), tl_target_name((tl_target_id)t), plan.target_bytes_per_pixel[t],
-                        rec->target_bpp[t]);
+            if (plan.target_bytes_per_pixel[t] != rec->target_bpp[t]) { /* once, not per light count */
+                char line[256];
+                snprintf(line, sizeof line, "%s %s: the plan says %u B/px, the renderer allocated %u B/px",
+                         bench_config_name(rec->config), tl_target_name((tl_target_id)t),
+                         plan.target_bytes_per_pixel[t], rec->target_bpp[t]);
+                tl_tool_log_message(log, TL_LOG_WARNING, line);
+            }
     } else {
         for (int p = 0; p < TL_PASS_COUNT; p++)
             if (st->pass_ms[p] > 0.0) rec->passes |= 1u << p;
@@ -214,9 +218,10 @@ static int bench__frame(bench_run *run, tl_renderer *r, const bench_record *rec,
 
 /* Medians over the timed frames; counts, byte estimates and sizes from the last frame (they do not
  * change from frame to frame). */
-static void bench__summarise_frames(const bench_options *opt, tl_renderer *r, bench__samples *smp, size_t pixels,
+static void bench__summarise_frames(bench_run *run, tl_renderer *r, bench__samples *smp, size_t pixels,
                                     bench_record *rec)
 {
+    const bench_options *opt = &run->opt;
     uint32_t frames = opt->frames;
     const tl_frame_stats *st = &smp->last;
     rec->frame_ms = malloc(frames * sizeof *rec->frame_ms);
@@ -240,7 +245,7 @@ static void bench__summarise_frames(const bench_options *opt, tl_renderer *r, be
     rec->light_pairs = st->light_pairs;
     rec->draw_calls = st->draw_calls;
     rec->objects_drawn = st->objects_drawn;
-    bench__plan_figures(r, st, pixels, rec);
+    bench__plan_figures(&run->log, r, st, pixels, rec);
     rec->lighting_ms = rec->pass_ms[TL_PASS_LIGHT_CULL] +
                        (rec->mode == TL_MODE_FORWARD ? rec->pass_ms[TL_PASS_FORWARD]
                                                      : rec->pass_ms[TL_PASS_LIGHTS] + rec->pass_ms[TL_PASS_LIGHTS_TILED]);
@@ -283,16 +288,49 @@ static bench_record *bench__append(bench_run *run)
 
 /* ---- the sweep ------------------------------------------------------------------------------ */
 
+void bench_renderer_desc(bench_run *run, tl_context *ctx, tl_renderer_desc *d)
+{
+    d->get_proc_address = tl_context_proc_loader;
+    d->get_proc_address_user = ctx;
+    d->logger = tl_tool_log_logger(&run->log);
+    tl_tool_budget_renderer(&run->opt.budgets, d);
+}
+
+/* A configuration's renderer descriptor at one size (without the context). */
+static tl_renderer_desc bench__config_desc(const bench_run *run, bench_config c, bench_size size)
+{
+    const bench_options *opt = &run->opt;
+    tl_renderer_desc d = {.mode = bench_config_mode(c), .light_strategy = bench_config_strategy(c),
+                          .light_format = bench_config_light_format(c), .lighting = opt->lighting,
+                          .fresnel = bench_config_fresnel(c, opt->fresnel), .width = size.width,
+                          .height = size.height, .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR), .synchronous_stats = 1};
+    tl_tool_budget_renderer(&opt->budgets, &d);
+    return d;
+}
+
+/* A size's renderers (those of the configurations held at once: a batch), its images and samples.
+ * The fat images of a strategy are the references of the configurations after it: with every
+ * configuration in one batch one slot serves each light count in turn; with several batches each
+ * light count keeps its own. */
 typedef struct bench__size_state {
     tl_renderer *renderers[BENCH_CONFIGS];
     bench__samples samples[BENCH_CONFIGS];
     double *sample_memory;
-    bench__frame_buffers fb;
+    bench__frame_buffers fb; /* ref_ldr, ref_hdr: `slots` images each */
+    size_t slots;
 } bench__size_state;
+
+static void bench__batch_close(bench__size_state *s, size_t first, size_t count)
+{
+    for (size_t m = first; m < first + count; m++) {
+        tl_renderer_destroy(s->renderers[m]);
+        s->renderers[m] = NULL;
+    }
+}
 
 static void bench__size_release(bench__size_state *s, size_t modes)
 {
-    for (size_t m = 0; m < modes; m++) tl_renderer_destroy(s->renderers[m]);
+    bench__batch_close(s, 0, modes);
     free(s->fb.ldr);
     free(s->fb.ref_ldr);
     free(s->fb.hdr);
@@ -301,16 +339,16 @@ static void bench__size_release(bench__size_state *s, size_t modes)
     memset(s, 0, sizeof *s);
 }
 
-static int bench__size_setup(bench_run *run, tl_context *ctx, const tl_scene *scene, bench_size size,
-                             const bench_config *modes, size_t mode_count, bench__size_state *s)
+static int bench__size_setup(bench_run *run, bench_size size, size_t mode_count, size_t slots, bench__size_state *s)
 {
     memset(s, 0, sizeof *s);
     size_t n = (size_t)size.width * size.height;
+    s->slots = slots;
     s->fb.pixels = n;
     s->fb.ldr = malloc(n * 4);
-    s->fb.ref_ldr = malloc(n * 4);
+    s->fb.ref_ldr = malloc(slots * n * 4);
     s->fb.hdr = malloc(n * 4 * sizeof(float));
-    s->fb.ref_hdr = malloc(n * 4 * sizeof(float));
+    s->fb.ref_hdr = malloc(slots * n * 4 * sizeof(float));
     size_t per_mode = (3 + TL_PASS_COUNT) * (size_t)run->opt.frames;
     s->sample_memory = malloc(mode_count * per_mode * sizeof(double));
     for (size_t m = 0; s->sample_memory && m < mode_count; m++) {
@@ -324,16 +362,19 @@ static int bench__size_setup(bench_run *run, tl_context *ctx, const tl_scene *sc
         tl_tool_fail(BENCH_TOOL, "out of memory for %ux%u images", size.width, size.height);
         return 1;
     }
-    for (size_t m = 0; m < mode_count; m++) {
-        tl_renderer_desc desc = {.mode = bench_config_mode(modes[m]), .light_strategy = bench_config_strategy(modes[m]),
-                                 .light_format = bench_config_light_format(modes[m]),
-                                 .lighting = run->opt.lighting, .fresnel = bench_config_fresnel(modes[m], run->opt.fresnel),
-                                 .width = size.width, .height = size.height, .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR), .synchronous_stats = 1,
-                                 .get_proc_address = tl_context_proc_loader, .get_proc_address_user = ctx,
-                                 .logger = tl_tool_logger(BENCH_TOOL)};
+    return 0;
+}
+
+/* The renderers of modes[first, first + count), each with the scene uploaded. */
+static int bench__batch_open(bench_run *run, tl_context *ctx, const tl_scene *scene, bench_size size,
+                             const bench_config *modes, size_t first, size_t count, bench__size_state *s)
+{
+    for (size_t m = first; m < first + count; m++) {
+        tl_renderer_desc desc = bench__config_desc(run, modes[m], size);
+        bench_renderer_desc(run, ctx, &desc);
         if (tl_renderer_create(&desc, &s->renderers[m]) != TL_OK) return 1; /* the logger said why */
         if (tl_renderer_set_scene(s->renderers[m], scene) != TL_OK) {
-            tl_tool_fail(BENCH_TOOL, "%s: %s", bench_config_name(modes[m]), tl_renderer_last_error(s->renderers[m]));
+            tl_tool_log_error(&run->log, "%s", tl_renderer_last_error(s->renderers[m]));
             return 1;
         }
     }
@@ -350,100 +391,164 @@ static void bench__count_types(const tl_light *lights, size_t count, bench_recor
     }
 }
 
-/* One light count at one size: every mode's frames interleaved, then each mode's record. */
-static int bench__sweep_lights(bench_run *run, bench__size_state *s, const bench_config *modes, size_t mode_count,
-                               bench_size size, uint32_t n, bench_scene *scene, tl_tool_progress *progress,
-                               uint64_t *done)
+/* Where one light count's frames go: the records of every configuration at that count (in the
+ * configurations' order) and the reference slot of the count. */
+typedef struct bench__lights_job {
+    bench_size size;
+    uint32_t lights;
+    size_t slot;
+    bench_record *recs;
+} bench__lights_job;
+
+/* One light count at one size for the batch modes[first, first + count): their frames taking turns,
+ * then each one's record. */
+static int bench__sweep_lights(bench_run *run, bench__size_state *s, const bench_config *modes, size_t first,
+                               size_t count, const bench__lights_job *job, bench_scene *scene,
+                               tl_tool_progress *progress, uint64_t *done)
 {
     const bench_options *opt = &run->opt;
     const tl_light *lights;
-    size_t count;
-    if (bench_scene_lights(scene, n, &lights, &count)) return 1;
-    for (size_t m = 0; m < mode_count; m++)
-        if (!bench__append(run)) {
-            tl_tool_fail(BENCH_TOOL, "out of memory");
-            return 1;
-        }
-    bench_record *recs = &run->records[run->record_count - mode_count]; /* in the modes' order */
-    for (size_t m = 0; m < mode_count; m++) {
-        bench_record *rec = &recs[m];
+    size_t light_count;
+    if (bench_scene_lights(scene, job->lights, &lights, &light_count)) return 1;
+    for (size_t m = first; m < first + count; m++) {
+        bench_record *rec = &job->recs[m];
+        memset(rec, 0, sizeof *rec);
         rec->config = modes[m];
         rec->mode = bench_config_mode(modes[m]);
         rec->strategy = bench_config_strategy(modes[m]);
         rec->requested = bench_mode_requested(opt, rec->mode);
-        rec->lights = n;
-        rec->width = size.width;
-        rec->height = size.height;
+        rec->lights = job->lights;
+        rec->width = job->size.width;
+        rec->height = job->size.height;
         rec->frames = opt->frames;
-        bench__count_types(lights, count, rec);
-        if (tl_renderer_set_lights(s->renderers[m], lights, count) != TL_OK) {
-            tl_tool_fail(BENCH_TOOL, "%s: %s", bench_config_name(modes[m]), tl_renderer_last_error(s->renderers[m]));
+        bench__count_types(lights, light_count, rec);
+        if (tl_renderer_set_lights(s->renderers[m], lights, light_count) != TL_OK) {
+            tl_tool_log_error(&run->log, "%s", tl_renderer_last_error(s->renderers[m]));
             return 1;
         }
     }
     uint32_t total = opt->warmup + opt->frames;
-    char label[96];
+    char label[128];
     for (uint32_t f = 0; f < total; f++) {
-        snprintf(label, sizeof label, "%ux%u, %u lights, frame %u/%u of %zu configurations", size.width, size.height, n, f + 1,
-                 total, mode_count);
+        snprintf(label, sizeof label, "%ux%u, %u lights, frame %u/%u of %zu configuration%s", job->size.width,
+                 job->size.height, job->lights, f + 1, total, count, count == 1 ? "" : "s");
         tl_tool_progress_update(progress, *done, label, f == 0);
-        for (size_t m = 0; m < mode_count; m++, ++*done)
-            if (bench__frame(run, s->renderers[m], &recs[m], &s->samples[m], f)) return 1;
+        for (size_t m = first; m < first + count; m++, ++*done)
+            if (bench__frame(run, s->renderers[m], &job->recs[m], &s->samples[m], f)) return 1;
     }
-    for (size_t m = 0; m < mode_count; m++) {
-        bench_record *rec = &recs[m];
-        bench__summarise_frames(opt, s->renderers[m], &s->samples[m], s->fb.pixels, rec);
-        if (bench__images(s->renderers[m], rec, &s->fb)) return 1;
-        if (opt->out && n == opt->lights[opt->light_count - 1] &&
-            bench_images_write(run, rec, rec->mode == BENCH_REFERENCE ? s->fb.ref_ldr : s->fb.ldr, s->fb.ref_ldr, 1,
+    bench__frame_buffers fb = s->fb; /* the reference images of this light count */
+    fb.ref_ldr += job->slot * fb.pixels * 4;
+    fb.ref_hdr += job->slot * fb.pixels * 4;
+    for (size_t m = first; m < first + count; m++) {
+        bench_record *rec = &job->recs[m];
+        bench__summarise_frames(run, s->renderers[m], &s->samples[m], fb.pixels, rec);
+        if (bench__images(s->renderers[m], rec, &fb)) return 1;
+        if (opt->out && job->lights == opt->lights[opt->light_count - 1] &&
+            bench_images_write(run, rec, rec->mode == BENCH_REFERENCE ? fb.ref_ldr : fb.ldr, fb.ref_ldr, 1,
                                rec->mode != BENCH_REFERENCE))
             return 1;
     }
     return 0;
 }
 
+size_t bench_renderers_at_once(const bench_scene *scene)
+{
+    size_t bytes = bench_scene_bytes(scene), n = bytes ? BENCH_SCENE_COPIES_BYTES / bytes : BENCH_CONFIGS;
+    return n ? n : 1;
+}
+
+/* Every configuration at one size, a batch of them at a time (bench_renderers_at_once), every light
+ * count for each batch; the records land size-major, then lights, then configurations. */
 static int bench__sweep_size(bench_run *run, tl_context *ctx, bench_scene *scene, bench_size size,
                              tl_tool_progress *progress, uint64_t *done)
 {
     const bench_options *opt = &run->opt;
     bench_config modes[BENCH_CONFIGS];
-    size_t mode_count = bench_render_modes(opt, modes);
+    size_t mode_count = bench_render_modes(opt, modes), at_once = bench_renderers_at_once(scene);
+    if (at_once > mode_count) at_once = mode_count;
+    size_t first_record = run->record_count;
+    for (size_t k = 0; k < opt->light_count * mode_count; k++)
+        if (!bench__append(run)) {
+            tl_tool_fail(BENCH_TOOL, "out of memory");
+            return 1;
+        }
     bench__size_state s;
-    int err = bench__size_setup(run, ctx, bench_scene_get(scene), size, modes, mode_count, &s);
-    for (size_t li = 0; !err && li < opt->light_count; li++)
-        err = bench__sweep_lights(run, &s, modes, mode_count, size, opt->lights[li], scene, progress, done);
+    int err = bench__size_setup(run, size, mode_count, at_once == mode_count ? 1 : opt->light_count, &s);
+    for (size_t first = 0; !err && first < mode_count; first += at_once) {
+        size_t count = mode_count - first < at_once ? mode_count - first : at_once;
+        err = bench__batch_open(run, ctx, bench_scene_get(scene), size, modes, first, count, &s);
+        for (size_t li = 0; !err && li < opt->light_count; li++) {
+            bench__lights_job job = {size, opt->lights[li], s.slots == 1 ? 0 : li,
+                                     &run->records[first_record + li * mode_count]};
+            err = bench__sweep_lights(run, &s, modes, first, count, &job, scene, progress, done);
+        }
+        bench__batch_close(&s, first, count);
+    }
     bench__size_release(&s, mode_count);
     return err;
 }
 
-/* Refuses sizes whose renderers and images would not fit in memory (rather than being killed
- * halfway): every mode's plan for the scene plus the bench's own four images (40 B/px). */
-static int bench__check_memory(const bench_options *opt, const tl_scene *scene)
+/* Refuses, before any GL work, a size whose targets are over the target-memory budget in some
+ * configuration (one line naming both), and one whose renderers held at once and images would not
+ * fit in this machine's memory (rather than being killed halfway): the plans of the largest batch,
+ * the bench's own images (20 B/px) and the references it keeps (20 B/px each). */
+static int bench__check_memory(const bench_run *run, const bench_scene *bs)
 {
+    const bench_options *opt = &run->opt;
+    const tl_scene *scene = bench_scene_get(bs);
     long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
-    if (pages <= 0 || page <= 0) return 0;
-    double available = (double)pages * (double)page * 0.75;
+    double available = pages > 0 && page > 0 ? (double)pages * (double)page * 0.75 : INFINITY;
     tl_scene_feature_set features;
     tl_scene_features(scene, &features);
     bench_config modes[BENCH_CONFIGS];
-    size_t mode_count = bench_render_modes(opt, modes);
+    size_t mode_count = bench_render_modes(opt, modes), at_once = bench_renderers_at_once(bs);
+    if (at_once > mode_count) at_once = mode_count;
+    size_t slots = at_once == mode_count ? 1 : opt->light_count;
     for (size_t si = 0; si < opt->size_count; si++) {
         bench_size size = opt->sizes[si];
-        double bpp = 40.0;
+        double batch = 0.0, largest = 0.0;
         for (size_t m = 0; m < mode_count; m++) {
             tl_frame_plan plan;
-            tl_renderer_desc desc = {.mode = bench_config_mode(modes[m]), .light_strategy = bench_config_strategy(modes[m]),
-                                     .light_format = bench_config_light_format(modes[m]),
-                                     .lighting = opt->lighting, .fresnel = bench_config_fresnel(modes[m], opt->fresnel),
-                                     .width = size.width, .height = size.height};
-            if (tl_frame_plan_build(&desc, &features, &plan) == TL_OK) bpp += plan.bytes_per_pixel;
+            tl_renderer_desc desc = bench__config_desc(run, modes[m], size);
+            char what[64];
+            snprintf(what, sizeof what, "%ux%u, %s", size.width, size.height, bench_config_name(modes[m]));
+            if (tl_tool_budget_check(BENCH_TOOL, what, &desc, scene)) return 1;
+            if (m % at_once == 0) batch = 0.0;
+            if (tl_frame_plan_build(&desc, &features, &plan) == TL_OK) batch += plan.allocated_bytes_per_pixel;
+            if (batch > largest) largest = batch;
         }
-        double need = bpp * size.width * size.height;
+        double need = (largest + 20.0 + 20.0 * (double)slots) * size.width * size.height;
         if (need > available) {
             tl_tool_fail(BENCH_TOOL, "%ux%u needs about %.1f GiB for %zu renderers and the images, more than 3/4 of "
                                      "this machine's %.1f GiB",
-                         size.width, size.height, need / 1073741824.0, mode_count, available / 0.75 / 1073741824.0);
+                         size.width, size.height, need / 1073741824.0, at_once, available / 0.75 / 1073741824.0);
             return 1;
+        }
+    }
+    return 0;
+}
+
+/* The frames of the renderers r[0..count) taking turns (which goes first alternates), after the
+ * warm-up: ms[k * frames + f] (GPU timers, else the wall clock). */
+static int bench__planning_frames(bench_run *run, tl_renderer **r, const char *name, size_t count, uint32_t n,
+                                  double *ms, tl_tool_progress *progress, uint64_t *done)
+{
+    const bench_options *opt = &run->opt;
+    uint32_t total = opt->warmup + opt->frames;
+    char label[96];
+    for (uint32_t f = 0; f < total; f++) {
+        snprintf(label, sizeof label, "planning: %s, %u lights, frame %u/%u", name, n, f + 1, total);
+        tl_tool_progress_update(progress, *done, label, f == 0);
+        for (size_t j = 0; j < count; j++, ++*done) {
+            size_t k = (f + j) % count;
+            tl_frame_stats st;
+            if (tl_renderer_render(r[k], NULL, &st) != TL_OK) {
+                tl_tool_log_error(&run->log, "%s", tl_renderer_last_error(r[k]));
+                return 1;
+            }
+            if (f < opt->warmup) continue;
+            if (!(st.gpu_ms > 0.0)) run->timers_ok = 0;
+            ms[k * opt->frames + (f - opt->warmup)] = st.gpu_ms > 0.0 ? st.gpu_ms : st.wall_ms;
         }
     }
     return 0;
@@ -451,16 +556,16 @@ static int bench__check_memory(const bench_options *opt, const tl_scene *scene)
 
 /* What planning saves in time: each mode of run->planning rendered at the first size with the
  * largest light count by a planned renderer and by one with tl_renderer_desc.no_planning, the two
- * taking turns frame by frame (which one goes first alternates), after the same warm-up; medians
- * of the frame time (GPU timers, else the wall clock). */
+ * taking turns frame by frame when both fit beside each other (bench_renderers_at_once), else one
+ * after the other, after the same warm-up; medians of the frame time. */
 static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *scene, tl_tool_progress *progress,
                                  uint64_t *done)
 {
     const bench_options *opt = &run->opt;
     bench_size size = opt->sizes[0];
-    uint32_t n = opt->lights[opt->light_count - 1], total = opt->warmup + opt->frames;
+    uint32_t n = opt->lights[opt->light_count - 1];
     const tl_light *lights;
-    size_t count;
+    size_t count, together = bench_renderers_at_once(scene) >= 2 ? 2 : 1;
     if (!run->planning_count) return 0;
     if (bench_scene_lights(scene, n, &lights, &count)) return 1;
     double *ms = malloc(2 * (size_t)opt->frames * sizeof *ms); /* planned, then unplanned */
@@ -472,44 +577,29 @@ static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *s
     for (size_t i = 0; !err && i < run->planning_count; i++) {
         bench_planning *p = &run->planning[i];
         const char *name = tl_render_mode_name(p->mode);
-        tl_renderer *r[2] = {NULL, NULL};
-        for (int k = 0; !err && k < 2; k++) {
-            tl_renderer_desc desc = {.mode = p->mode, .width = size.width, .height = size.height, .no_planning = k,
-                                     .lighting = run->opt.lighting, .fresnel = run->opt.fresnel,
-                                     .synchronous_stats = 1, .get_proc_address = tl_context_proc_loader,
-                                     .get_proc_address_user = ctx, .logger = tl_tool_logger(BENCH_TOOL)};
-            if (tl_renderer_create(&desc, &r[k]) != TL_OK) {
-                err = 1; /* the logger said why */
-            } else if (tl_renderer_set_scene(r[k], bench_scene_get(scene)) != TL_OK ||
-                       tl_renderer_set_lights(r[k], lights, count) != TL_OK) {
-                tl_tool_fail(BENCH_TOOL, "%s%s: %s", name, k ? " (no_planning)" : "", tl_renderer_last_error(r[k]));
-                err = 1;
-            }
-        }
-        char label[96];
-        for (uint32_t f = 0; !err && f < total; f++) {
-            snprintf(label, sizeof label, "planning: %s, %u lights, frame %u/%u", name, n, f + 1, total);
-            tl_tool_progress_update(progress, *done, label, f == 0);
-            for (int j = 0; !err && j < 2; j++, ++*done) {
-                int k = (int)((f + (uint32_t)j) % 2);
-                tl_frame_stats st;
-                if (tl_renderer_render(r[k], NULL, &st) != TL_OK) {
-                    tl_tool_fail(BENCH_TOOL, "%s%s at %ux%u with %u lights: %s", name, k ? " (no_planning)" : "",
-                                 size.width, size.height, n, tl_renderer_last_error(r[k]));
+        for (size_t first = 0; !err && first < 2; first += together) {
+            tl_renderer *r[2] = {NULL, NULL};
+            for (size_t k = 0; !err && k < together; k++) {
+                tl_renderer_desc desc = {.mode = p->mode, .width = size.width, .height = size.height,
+                                         .no_planning = (int)(first + k), .lighting = run->opt.lighting,
+                                         .fresnel = run->opt.fresnel, .synchronous_stats = 1};
+                bench_renderer_desc(run, ctx, &desc);
+                if (tl_renderer_create(&desc, &r[k]) != TL_OK) err = 1; /* the logger said why */
+                else if (tl_renderer_set_scene(r[k], bench_scene_get(scene)) != TL_OK ||
+                         tl_renderer_set_lights(r[k], lights, count) != TL_OK) {
+                    tl_tool_log_error(&run->log, "%s", tl_renderer_last_error(r[k]));
                     err = 1;
-                } else if (f >= opt->warmup) {
-                    if (!(st.gpu_ms > 0.0)) run->timers_ok = 0;
-                    ms[(size_t)k * opt->frames + (f - opt->warmup)] = st.gpu_ms > 0.0 ? st.gpu_ms : st.wall_ms;
                 }
             }
+            if (!err) err = bench__planning_frames(run, r, name, together, n, ms + first * opt->frames, progress, done);
+            tl_renderer_destroy(r[0]);
+            tl_renderer_destroy(r[1]);
         }
         if (!err) {
             double unused;
             bench__median_p90(ms, opt->frames, &p->planned_ms, &unused);
             bench__median_p90(ms + opt->frames, opt->frames, &p->unplanned_ms, &unused);
         }
-        tl_renderer_destroy(r[0]);
-        tl_renderer_destroy(r[1]);
     }
     free(ms);
     return err;
@@ -518,7 +608,7 @@ static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *s
 int bench_sweep(bench_run *run, bench_scene *scene)
 {
     const bench_options *opt = &run->opt;
-    if (bench__check_memory(opt, bench_scene_get(scene))) return 1;
+    if (bench__check_memory(run, scene)) return 1;
     tl_context *ctx = NULL;
     if (tl_tool_context_open(BENCH_TOOL, &opt->context, 64, 64, &ctx)) return 1;
     snprintf(run->gl_renderer, sizeof run->gl_renderer, "%s", tl_context_renderer_string(ctx));

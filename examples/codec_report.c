@@ -18,6 +18,7 @@
 #include "thinlight/version.h"
 
 #include "test_images.h"
+#include "tool_args.h"
 #include "tool_util.h"
 
 #ifndef TL_REPORT_COMPILER
@@ -56,6 +57,7 @@ static const char usage_text[] =
     "  --doc FILE       replace the text between " DOC_BEGIN " and\n"
     "                   " DOC_END " in FILE with generated tables, and copy the\n"
     "                   plot to the img/ directory beside FILE\n"
+    "  --list-options   list every option and the values it takes, then exit\n"
     "  --help           this text\n"
     "\n"
     "This tool runs on the CPU only and makes no GL context: unlike the renderer tools it takes no\n"
@@ -991,37 +993,49 @@ typedef struct options {
     int quick, no_plot, help;
 } options;
 
+enum { OPT_HELP, OPT_LIST, OPT_QUICK, OPT_NO_PLOT, OPT_JSON, OPT_OUT, OPT_DOC, OPT_GL };
+
+static const tl_opt report_opts[] = {
+    {"--help", TL_OPT_FLAG, .id = OPT_HELP},
+    {"-h", TL_OPT_FLAG, .id = OPT_HELP},
+    {"--list-options", TL_OPT_FLAG, .id = OPT_LIST},
+    {"--quick", TL_OPT_FLAG, .id = OPT_QUICK},
+    {"--no-plot", TL_OPT_FLAG, .id = OPT_NO_PLOT},
+    {"--json", TL_OPT_TEXT, .id = OPT_JSON},
+    {"--out", TL_OPT_TEXT, .id = OPT_OUT},
+    {"--doc", TL_OPT_TEXT, .id = OPT_DOC},
+    /* the renderer tools' context options, refused by name */
+    {"--context", TL_OPT_FLAG, .id = OPT_GL},
+    {"--device", TL_OPT_FLAG, .id = OPT_GL},
+    {"--list-devices", TL_OPT_FLAG, .id = OPT_GL},
+};
+
+/* argv into `o`: 0; -1 after --list-options (printed); or EXIT_BAD_USAGE after one line. */
 static int parse_args(int argc, char **argv, options *o)
 {
     memset(o, 0, sizeof *o);
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        const char **value = NULL;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) o->help = 1;
-        else if (strcmp(a, "--quick") == 0) o->quick = 1;
-        else if (strcmp(a, "--no-plot") == 0) o->no_plot = 1;
-        else if (strcmp(a, "--json") == 0) value = &o->json;
-        else if (strcmp(a, "--out") == 0) value = &o->out;
-        else if (strcmp(a, "--doc") == 0) value = &o->doc;
-        else if (!strcmp(a, "--context") || !strcmp(a, "--device") || !strcmp(a, "--list-devices")) {
-            fprintf(stderr, TOOL ": %s: this tool makes no GL context (it runs on the CPU only; see --help)\n", a);
-            return EXIT_BAD_USAGE;
-        } else {
-            fprintf(stderr, TOOL ": %s '%s' (see --help)\n", a[0] == '-' ? "unknown option" : "unexpected argument", a);
-            return EXIT_BAD_USAGE;
-        }
-        if (value) {
-            if (i + 1 >= argc || argv[i + 1][0] == '\0') {
-                fprintf(stderr, TOOL ": %s needs a value (see --help)\n", a);
-                return EXIT_BAD_USAGE;
-            }
-            *value = argv[++i];
+    const tl_opt_table tables[] = {TL_OPT_TABLE(report_opts)};
+    tl_opt_parser p;
+    tl_opt_begin(&p, TOOL, argc, argv, tables, 1);
+    const tl_opt *opt;
+    tl_opt_value v;
+    int rc;
+    while ((rc = tl_opt_next(&p, &opt, &v)) == 1) {
+        if (!opt) return tl_opt_usage(TOOL, "unexpected argument '%s'", v.text);
+        switch (opt->id) {
+        case OPT_HELP: o->help = 1; break;
+        case OPT_LIST: tl_opt_list(stdout, tables, 1); return -1;
+        case OPT_QUICK: o->quick = 1; break;
+        case OPT_NO_PLOT: o->no_plot = 1; break;
+        case OPT_JSON: o->json = v.text; break;
+        case OPT_OUT: o->out = v.text; break;
+        case OPT_DOC: o->doc = v.text; break;
+        default: return tl_opt_usage(TOOL, "%s: this tool makes no GL context (it runs on the CPU only)", opt->name);
         }
     }
-    if (!o->help && !o->out && !o->no_plot) {
-        fputs(TOOL ": --out DIR is required for the plot (or pass --no-plot); see --help\n", stderr);
-        return EXIT_BAD_USAGE;
-    }
+    if (rc) return EXIT_BAD_USAGE;
+    if (!o->help && !o->out && !o->no_plot)
+        return tl_opt_usage(TOOL, "--out DIR is required for the plot (or pass --no-plot)");
     return 0;
 }
 
@@ -1088,7 +1102,7 @@ int main(int argc, char **argv)
 {
     options o;
     int rc = parse_args(argc, argv, &o);
-    if (rc) return rc;
+    if (rc) return rc < 0 ? 0 : rc;
     if (o.help) {
         fputs(usage_text, stdout);
         return 0;

@@ -1,5 +1,4 @@
 /* The renderer tools' --context, --device and --list-devices (tool_gl.h). */
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,36 +14,45 @@ static void tl_tool__keep_error(void *user, tl_log_level level, const char *mess
     if (level == TL_LOG_ERROR) snprintf(user, 1024, "%s", message);
 }
 
-static int tl_tool__parse_index(const char *s, uint32_t *out)
+static const tl_opt tl_tool__context_opts[] = {
+    {"--context", TL_OPT_TEXT, .id = 0},
+    {"--device", TL_OPT_UINT, .id = 0, .lo = 0, .hi = TL_TOOL_MAX_DEVICES - 1},
+    {"--list-devices", TL_OPT_FLAG, .id = 0},
+};
+
+const tl_opt_table tl_tool_context_option_table = TL_OPT_TABLE(tl_tool__context_opts);
+
+int tl_tool_context_option(tl_tool_context_args *a, const tl_opt *o, const tl_opt_value *v)
 {
-    char *end;
-    if (!s || *s < '0' || *s > '9') return 0;
-    errno = 0;
-    unsigned long long v = strtoull(s, &end, 10);
-    if (errno || *end || v >= TL_TOOL_MAX_DEVICES) return 0;
-    *out = (uint32_t)v;
+    if (!tl_opt_in(o, tl_tool_context_option_table)) return 0;
+    if (o == &tl_tool__context_opts[0]) a->context = v->text;
+    else if (o == &tl_tool__context_opts[1]) {
+        a->device_given = 1;
+        a->device = (uint32_t)v->u[0];
+    } else a->list_devices = 1;
     return 1;
 }
 
-static int tl_tool__check_device(const char *tool, const char *device, uint32_t index)
+static int tl_tool__check_device(const char *tool, uint32_t index)
 {
     char why[1024] = "";
     size_t count = 0;
     tl_logger keep = {tl_tool__keep_error, why};
     if (tl_context_egl_devices(NULL, 0, &count, &keep) != TL_OK) {
-        tl_tool_fail(tool, "--device %s: no EGL devices: %s", device, why);
+        tl_tool_fail(tool, "--device %u: no EGL devices: %s", index, why);
         return 2;
     }
     if (index >= count) {
-        tl_tool_fail(tool, "--device %s: EGL lists %zu device%s (see --list-devices)", device, count,
+        tl_tool_fail(tool, "--device %u: EGL lists %zu device%s (see --list-devices)", index, count,
                      count == 1 ? "" : "s");
         return 2;
     }
     return 0;
 }
 
-int tl_tool_context_parse(const char *tool, const char *context, const char *device, tl_tool_context_options *o)
+int tl_tool_context_parse(const char *tool, const tl_tool_context_args *a, tl_tool_context_options *o)
 {
+    const char *context = a->context;
     memset(o, 0, sizeof *o);
     o->backend = TL_CONTEXT_BACKEND_AUTO;
     if (context && (tl_context_backend_from_name(context, &o->backend) != TL_OK ||
@@ -61,23 +69,20 @@ int tl_tool_context_parse(const char *tool, const char *context, const char *dev
                                                              : "OSMESA and THINLIGHT_WITH_EGL");
         return 2;
     }
-    if (!device) return 0;
+    if (!a->device_given) return 0;
     if (o->backend != TL_CONTEXT_BACKEND_AUTO && o->backend != TL_CONTEXT_BACKEND_EGL) {
         tl_tool_fail(tool, "--device picks an EGL device: it goes with --context egl, not %s", context);
         return 2;
     }
-    if (!tl_tool__parse_index(device, &o->egl_device)) {
-        tl_tool_fail(tool, "--device wants an EGL device index (0, 1, ...; see --list-devices), got '%s'", device);
-        return 2;
-    }
     if (!tl_context_backend_available(TL_CONTEXT_BACKEND_EGL)) {
-        tl_tool_fail(tool, "--device %s: this thinlight was built without the EGL back end (THINLIGHT_WITH_EGL=OFF)",
-                     device);
+        tl_tool_fail(tool, "--device %u: this thinlight was built without the EGL back end (THINLIGHT_WITH_EGL=OFF)",
+                     a->device);
         return 2;
     }
     o->backend = TL_CONTEXT_BACKEND_EGL;
     o->egl_platform = TL_EGL_PLATFORM_DEVICE;
-    return tl_tool__check_device(tool, device, o->egl_device);
+    o->egl_device = a->device;
+    return tl_tool__check_device(tool, a->device);
 }
 
 int tl_tool_context_open(const char *tool, const tl_tool_context_options *o, uint32_t width, uint32_t height,

@@ -1,10 +1,8 @@
 /* The effect options of the tools (tool_effects.h). */
 #include "tool_effects.h"
 
-#include <errno.h>
-#include <math.h>
-#include <stdio.h>
-#include <stdlib.h>
+#include <float.h>
+#include <stddef.h>
 #include <string.h>
 
 const char tl_tool_effects_help[] =
@@ -23,131 +21,91 @@ const char tl_tool_effects_help[] =
     "                        --ssr-distance D (16), --ssr-thickness T (0.4), --ssr-min-gloss G (0.4),\n"
     "                        --ssr-intensity I (1)\n";
 
-static int tl__bad(const char *tool, const char *opt, const char *value, const char *want)
-{
-    fprintf(stderr, "%s: %s %s: %s\n", tool, opt, value ? value : "(missing)", want);
-    return -1;
-}
+/* Each valued option's id is the offset of its field in tl_renderer_desc. */
+#define FX(field) ((int)offsetof(tl_renderer_desc, field))
+/* Zero means "the default" in the descriptor: an explicit 0 is written as -1 (exactly 0). */
+#define FX_ZERO_IS_NEGATIVE TL_OPT_USER
+#define FX_POSITIVE .min = 0.0, .max = FLT_MAX, .flags = TL_OPT_MIN_OPEN
+#define FX_NONNEGATIVE .min = 0.0, .max = FLT_MAX
 
-static int tl__float(const char *s, float *out)
-{
-    char *end;
-    errno = 0;
-    float v = s ? strtof(s, &end) : 0.0f;
-    if (!s || errno || end == s || *end || !isfinite(v)) return 0;
-    *out = v;
-    return 1;
-}
+_Static_assert(sizeof(tl_ssao_method) == sizeof(int) && sizeof(tl_fog_mode) == sizeof(int), "enum fields are ints");
 
-static int tl__u32(const char *s, uint32_t *out)
-{
-    char *end;
-    errno = 0;
-    unsigned long v = s ? strtoul(s, &end, 10) : 0;
-    if (!s || errno || end == s || *end || s[0] == '-' || v > 0xFFFFFFFFul) return 0;
-    *out = (uint32_t)v;
-    return 1;
-}
+static const char *const fx_ssao_methods[] = {"disc", "hemisphere", NULL};
+static const int fx_ssao_values[] = {TL_SSAO_DISC, TL_SSAO_HEMISPHERE};
+static const char *const fx_fog_modes[] = {"distance", "height", NULL};
+static const int fx_fog_values[] = {TL_FOG_DISTANCE, TL_FOG_HEIGHT};
 
-static int tl__flag(tl_renderer_desc *d, const char *opt)
+static const tl_opt fx_opts[] = {
+    {"--ssao", TL_OPT_FLAG, .id = 0},
+    {"--ssao-diffuse", TL_OPT_FLAG, .id = 0},
+    {"--fog", TL_OPT_FLAG, .id = 0},
+    {"--dof", TL_OPT_FLAG, .id = 0},
+    {"--bloom", TL_OPT_FLAG, .id = 0},
+    {"--ssr", TL_OPT_FLAG, .id = 0},
+    {"--ssao-method", TL_OPT_TEXT, .id = FX(ssao.method), .choices = fx_ssao_methods, .values = fx_ssao_values},
+    {"--ssao-samples", TL_OPT_UINT, .id = FX(ssao.samples), .lo = 1, .hi = 64},
+    {"--ssao-radius", TL_OPT_REAL, .id = FX(ssao.radius), FX_POSITIVE},
+    {"--ssao-bias", TL_OPT_REAL, .id = FX(ssao.bias), FX_NONNEGATIVE},
+    {"--ssao-falloff", TL_OPT_REAL, .id = FX(ssao.falloff), FX_POSITIVE},
+    {"--ssao-exponent", TL_OPT_REAL, .id = FX(ssao.exponent), FX_POSITIVE},
+    {"--ssao-blur", TL_OPT_UINT, .id = FX(ssao.blur_radius), .lo = 1, .hi = 8},
+    {"--fog-mode", TL_OPT_TEXT, .id = FX(fog.mode), .choices = fx_fog_modes, .values = fx_fog_values},
+    {"--fog-density", TL_OPT_REAL, .id = FX(fog.density), FX_POSITIVE},
+    {"--fog-height", TL_OPT_REAL, .id = FX(fog.height), .min = -FLT_MAX, .max = FLT_MAX},
+    {"--fog-falloff", TL_OPT_REAL, .id = FX(fog.height_falloff), FX_POSITIVE},
+    {"--fog-noise", TL_OPT_REAL, .id = FX(fog.noise), .min = 0.0, .max = 1.0},
+    {"--fog-color", TL_OPT_REALS, .id = FX(fog.color), FX_NONNEGATIVE, .items = 3},
+    {"--dof-focus", TL_OPT_REAL, .id = FX(dof.focus_distance), FX_POSITIVE},
+    {"--dof-aperture", TL_OPT_REAL, .id = FX(dof.aperture), .min = 0.0, .max = 1.0, .flags = TL_OPT_MIN_OPEN},
+    {"--dof-max", TL_OPT_REAL, .id = FX(dof.max_radius), .min = 0.0, .max = 1.0, .flags = TL_OPT_MIN_OPEN},
+    {"--dof-samples", TL_OPT_UINT, .id = FX(dof.samples), .lo = 8, .hi = 128},
+    {"--bloom-threshold", TL_OPT_REAL, .id = FX(bloom.threshold), .min = 0.0, .max = FLT_MAX,
+     .flags = FX_ZERO_IS_NEGATIVE},
+    {"--bloom-knee", TL_OPT_REAL, .id = FX(bloom.knee), .min = 0.0, .max = 1.0, .flags = FX_ZERO_IS_NEGATIVE},
+    {"--bloom-intensity", TL_OPT_REAL, .id = FX(bloom.intensity), FX_POSITIVE},
+    {"--bloom-scatter", TL_OPT_REAL, .id = FX(bloom.scatter), .min = 0.0, .max = 1.0, .flags = TL_OPT_MIN_OPEN},
+    {"--bloom-levels", TL_OPT_UINT, .id = FX(bloom.levels), .lo = 1, .hi = 8},
+    {"--ssr-steps", TL_OPT_UINT, .id = FX(ssr.steps), .lo = 4, .hi = 256},
+    {"--ssr-distance", TL_OPT_REAL, .id = FX(ssr.max_distance), FX_POSITIVE},
+    {"--ssr-thickness", TL_OPT_REAL, .id = FX(ssr.thickness), FX_POSITIVE},
+    {"--ssr-min-gloss", TL_OPT_REAL, .id = FX(ssr.min_gloss), .min = 0.0, .max = 1.0,
+     .flags = TL_OPT_MAX_OPEN | FX_ZERO_IS_NEGATIVE},
+    {"--ssr-intensity", TL_OPT_REAL, .id = FX(ssr.intensity), FX_POSITIVE},
+};
+
+const tl_opt_table tl_tool_effect_options = TL_OPT_TABLE(fx_opts);
+
+int tl_tool_effect_flag(tl_renderer_desc *d, const char *flag)
 {
-    if (!strcmp(opt, "--ssao")) {
+    if (!strcmp(flag, "--ssao")) {
         if (d->ssao.method == TL_SSAO_OFF) d->ssao.method = TL_SSAO_DISC;
-    } else if (!strcmp(opt, "--ssao-diffuse")) d->ssao.diffuse = 1;
-    else if (!strcmp(opt, "--fog")) {
+    } else if (!strcmp(flag, "--ssao-diffuse")) d->ssao.diffuse = 1;
+    else if (!strcmp(flag, "--fog")) {
         if (d->fog.mode == TL_FOG_OFF) d->fog.mode = TL_FOG_DISTANCE;
-    } else if (!strcmp(opt, "--dof")) d->dof.enabled = 1;
-    else if (!strcmp(opt, "--bloom")) d->bloom.enabled = 1;
-    else if (!strcmp(opt, "--ssr")) d->ssr.enabled = 1;
+    } else if (!strcmp(flag, "--dof")) d->dof.enabled = 1;
+    else if (!strcmp(flag, "--bloom")) d->bloom.enabled = 1;
+    else if (!strcmp(flag, "--ssr")) d->ssr.enabled = 1;
     else return 0;
     return 1;
 }
 
-static int tl__ssao_value(const char *tool, tl_ssao_desc *s, const char *opt, const char *v)
+int tl_tool_effect_apply(tl_renderer_desc *d, const tl_opt *o, const tl_opt_value *v)
 {
-    int ok = 1;
-    if (!strcmp(opt, "--ssao-method")) {
-        if (v && !strcmp(v, "disc")) s->method = TL_SSAO_DISC;
-        else if (v && !strcmp(v, "hemisphere")) s->method = TL_SSAO_HEMISPHERE;
-        else return tl__bad(tool, opt, v, "wants disc or hemisphere");
-    } else if (!strcmp(opt, "--ssao-samples")) ok = tl__u32(v, &s->samples) && s->samples >= 1 && s->samples <= 64;
-    else if (!strcmp(opt, "--ssao-radius")) ok = tl__float(v, &s->radius) && s->radius > 0.0f;
-    else if (!strcmp(opt, "--ssao-bias")) ok = tl__float(v, &s->bias) && s->bias >= 0.0f;
-    else if (!strcmp(opt, "--ssao-falloff")) ok = tl__float(v, &s->falloff) && s->falloff > 0.0f;
-    else if (!strcmp(opt, "--ssao-exponent")) ok = tl__float(v, &s->exponent) && s->exponent > 0.0f;
-    else if (!strcmp(opt, "--ssao-blur")) ok = tl__u32(v, &s->blur_radius) && s->blur_radius >= 1 && s->blur_radius <= 8;
-    else return 0;
-    return ok ? 2 : tl__bad(tool, opt, v, "out of range (see --help)");
-}
-
-static int tl__fog_value(const char *tool, tl_fog_desc *f, const char *opt, const char *v)
-{
-    int ok = 1;
-    if (!strcmp(opt, "--fog-mode")) {
-        if (v && !strcmp(v, "distance")) f->mode = TL_FOG_DISTANCE;
-        else if (v && !strcmp(v, "height")) f->mode = TL_FOG_HEIGHT;
-        else return tl__bad(tool, opt, v, "wants distance or height");
-    } else if (!strcmp(opt, "--fog-density")) ok = tl__float(v, &f->density) && f->density > 0.0f;
-    else if (!strcmp(opt, "--fog-height")) ok = tl__float(v, &f->height);
-    else if (!strcmp(opt, "--fog-falloff")) ok = tl__float(v, &f->height_falloff) && f->height_falloff > 0.0f;
-    else if (!strcmp(opt, "--fog-noise")) ok = tl__float(v, &f->noise) && f->noise >= 0.0f && f->noise <= 1.0f;
-    else if (!strcmp(opt, "--fog-color")) {
-        char extra;
-        ok = v && sscanf(v, "%f,%f,%f%c", &f->color[0], &f->color[1], &f->color[2], &extra) == 3;
-        for (int k = 0; ok && k < 3; k++) ok = isfinite(f->color[k]) && f->color[k] >= 0.0f;
-    } else return 0;
-    return ok ? 2 : tl__bad(tool, opt, v, "out of range (see --help)");
-}
-
-static int tl__dof_value(const char *tool, tl_dof_desc *f, const char *opt, const char *v)
-{
-    int ok = 1;
-    if (!strcmp(opt, "--dof-focus")) ok = tl__float(v, &f->focus_distance) && f->focus_distance > 0.0f;
-    else if (!strcmp(opt, "--dof-aperture")) ok = tl__float(v, &f->aperture) && f->aperture > 0.0f && f->aperture <= 1.0f;
-    else if (!strcmp(opt, "--dof-max")) ok = tl__float(v, &f->max_radius) && f->max_radius > 0.0f && f->max_radius <= 1.0f;
-    else if (!strcmp(opt, "--dof-samples")) ok = tl__u32(v, &f->samples) && f->samples >= 8 && f->samples <= 128;
-    else return 0;
-    return ok ? 2 : tl__bad(tool, opt, v, "out of range (see --help)");
-}
-
-/* Zero means "the default" in tl_bloom_desc: an explicit 0 threshold or knee is passed as -1 (exactly 0). */
-static int tl__bloom_value(const char *tool, tl_bloom_desc *b, const char *opt, const char *v)
-{
-    int ok = 1;
-    if (!strcmp(opt, "--bloom-threshold")) {
-        ok = tl__float(v, &b->threshold) && b->threshold >= 0.0f;
-        if (ok && b->threshold == 0.0f) b->threshold = -1.0f;
-    } else if (!strcmp(opt, "--bloom-knee")) {
-        ok = tl__float(v, &b->knee) && b->knee >= 0.0f && b->knee <= 1.0f;
-        if (ok && b->knee == 0.0f) b->knee = -1.0f;
-    } else if (!strcmp(opt, "--bloom-intensity")) ok = tl__float(v, &b->intensity) && b->intensity > 0.0f;
-    else if (!strcmp(opt, "--bloom-scatter")) ok = tl__float(v, &b->scatter) && b->scatter > 0.0f && b->scatter <= 1.0f;
-    else if (!strcmp(opt, "--bloom-levels")) ok = tl__u32(v, &b->levels) && b->levels >= 1 && b->levels <= 8;
-    else return 0;
-    return ok ? 2 : tl__bad(tool, opt, v, "out of range (see --help)");
-}
-
-static int tl__ssr_value(const char *tool, tl_ssr_desc *f, const char *opt, const char *v)
-{
-    int ok = 1;
-    if (!strcmp(opt, "--ssr-steps")) ok = tl__u32(v, &f->steps) && f->steps >= 4 && f->steps <= 256;
-    else if (!strcmp(opt, "--ssr-distance")) ok = tl__float(v, &f->max_distance) && f->max_distance > 0.0f;
-    else if (!strcmp(opt, "--ssr-thickness")) ok = tl__float(v, &f->thickness) && f->thickness > 0.0f;
-    else if (!strcmp(opt, "--ssr-min-gloss")) {
-        ok = tl__float(v, &f->min_gloss) && f->min_gloss >= 0.0f && f->min_gloss < 1.0f;
-        if (ok && f->min_gloss == 0.0f) f->min_gloss = -1.0f; /* exactly 0 (zero is the default, 0.4) */
-    } else if (!strcmp(opt, "--ssr-intensity")) ok = tl__float(v, &f->intensity) && f->intensity > 0.0f;
-    else return 0;
-    return ok ? 2 : tl__bad(tool, opt, v, "out of range (see --help)");
-}
-
-int tl_tool_effect_option(const char *tool, tl_renderer_desc *d, const char *opt, const char *value)
-{
-    if (tl__flag(d, opt)) return 1;
-    int rc = tl__ssao_value(tool, &d->ssao, opt, value);
-    if (!rc) rc = tl__fog_value(tool, &d->fog, opt, value);
-    if (!rc) rc = tl__dof_value(tool, &d->dof, opt, value);
-    if (!rc) rc = tl__bloom_value(tool, &d->bloom, opt, value);
-    if (!rc) rc = tl__ssr_value(tool, &d->ssr, opt, value);
-    return rc;
+    if (!tl_opt_in(o, tl_tool_effect_options)) return 0;
+    if (o->kind == TL_OPT_FLAG) return tl_tool_effect_flag(d, o->name);
+    unsigned char *field = (unsigned char *)d + o->id;
+    if (o->kind == TL_OPT_TEXT) {
+        int e = (int)v->u[0];
+        memcpy(field, &e, sizeof e);
+    } else if (o->kind == TL_OPT_UINT) {
+        uint32_t u = (uint32_t)v->u[0];
+        memcpy(field, &u, sizeof u);
+    } else {
+        for (size_t i = 0; i < v->count; i++) {
+            float f = (float)v->f[i];
+            if (f == 0.0f && (o->flags & FX_ZERO_IS_NEGATIVE)) f = -1.0f;
+            memcpy(field + i * sizeof f, &f, sizeof f);
+        }
+    }
+    return 1;
 }

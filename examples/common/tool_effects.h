@@ -4,12 +4,18 @@
 #define TL_TOOL_EFFECTS_H
 
 #include "thinlight/renderer.h"
+#include "tool_args.h"
 
 /* Help lines for the options. */
 extern const char tl_tool_effects_help[];
 
-/* One option: 0 when `opt` is not an effect option, 1 when it was a flag (value unused), 2 when
- * it took `value` (NULL: missing), -1 after printing "TOOL: message" for a bad value. */
-int tl_tool_effect_option(const char *tool, tl_renderer_desc *d, const char *opt, const char *value);
+/* The options, for a tool's parser (tool_args.h). */
+extern const tl_opt_table tl_tool_effect_options;
+
+/* A parsed option into `d`: 1 when `o` is one of tl_tool_effect_options, 0 otherwise. */
+int tl_tool_effect_apply(tl_renderer_desc *d, const tl_opt *o, const tl_opt_value *v);
+
+/* Turns on the effect of a flag ("--ssao", ...) with its defaults; 0 when `flag` is none. */
+int tl_tool_effect_flag(tl_renderer_desc *d, const char *flag);
 
 #endif

@@ -20,24 +20,27 @@ int tl_tool_write_image(const char *tool, const char *path, const tl_image_desc 
     return tl_image_write(path, &d, pixels) == TL_OK ? 0 : 1;
 }
 
-/* Where the loader's error line goes: the caller's buffer. */
-typedef struct tool_error_buffer {
-    char *text;
+/* Where the loader's lines go: the error into the caller's buffer, warnings to the tool's log. */
+typedef struct tool_load_lines {
+    char *error;
     size_t size;
-} tool_error_buffer;
+    tl_tool_log *log;
+} tool_load_lines;
 
-static void tool_keep_error(void *user, tl_log_level level, const char *message)
+static void tool_load_line(void *user, tl_log_level level, const char *message)
 {
-    const tool_error_buffer *b = (const tool_error_buffer *)user;
-    if (level == TL_LOG_ERROR && b->size) snprintf(b->text, b->size, "%s", message);
+    const tool_load_lines *b = (const tool_load_lines *)user;
+    if (level == TL_LOG_ERROR && b->size) snprintf(b->error, b->size, "%s", message);
+    else if (level == TL_LOG_WARNING) tl_tool_log_message(b->log, level, message);
 }
 
-tl_result tl_tool_load_gltf(const char *path, uint32_t extra_lights, uint64_t seed, tl_scene **out, char *error,
-                            size_t error_size)
+tl_result tl_tool_load_gltf(const char *path, const tl_gltf_options *options, tl_tool_log *log, tl_scene **out,
+                            char *error, size_t error_size)
 {
-    tool_error_buffer b = {error, error_size};
+    tool_load_lines b = {error, error_size, log};
     if (error_size) error[0] = '\0';
-    tl_gltf_options o = {.extra_lights = extra_lights, .seed = seed, .logger = {tool_keep_error, &b}};
+    tl_gltf_options o = *options;
+    o.logger = (tl_logger){tool_load_line, &b};
     return tl_scene_load_gltf(path, &o, out);
 }
 
@@ -51,11 +54,11 @@ int tl_tool_write_image(const char *tool, const char *path, const tl_image_desc 
     return 1;
 }
 
-tl_result tl_tool_load_gltf(const char *path, uint32_t extra_lights, uint64_t seed, tl_scene **out, char *error,
-                            size_t error_size)
+tl_result tl_tool_load_gltf(const char *path, const tl_gltf_options *options, tl_tool_log *log, tl_scene **out,
+                            char *error, size_t error_size)
 {
-    (void)extra_lights;
-    (void)seed;
+    (void)options;
+    (void)log;
     *out = NULL;
     snprintf(error, error_size, "%s: loading glTF needs a thinlight built with THINLIGHT_WITH_IO=ON (use the "
                                 "built-in scene 'default')", path);

@@ -5,19 +5,15 @@
 
 #include "args.h"
 #include "tool_effects.h"
+#include "tool_settings.h"
+
+#define VW_TOOL "thinlight-viewer"
 
 static const char vw_usage[] =
     "usage: thinlight-viewer [SCENE.gltf|SCENE.glb|crypt] [options]\n"
     "Opens a window on the built-in crypt (default) or a glTF 2.0 file.\n"
-    "  --size WxH            window size (default 1280x720)\n"
-    "  --mode MODE           thin-lpp (default), thin-deferred, fat or forward\n"
-    "  --light-strategy S    auto (default), volumes or tiled\n"
-    "  --depth FMT           d24 (default) or d32f-reversed\n"
-    "  --rt0 FMT             rgba8 (default) or rgb10a2\n"
-    "  --light-buffer L      exact (default) or compact\n"
-    "  --fxaa P              off, 12, 29 (default) or 39\n"
-    "  --exposure E          exposure before tone mapping (default 1)\n"
-    "  --lights N            crypt: point lights (default 64); glTF: seeded point lights added\n"
+    "  --size WxH            window size (default 1280x720; 16..8192 per side)\n"
+    "  --lights N            crypt: point lights (default 64); glTF: seeded point lights added (0..65536)\n"
     "  --view V              final (default), normals, gloss, luma, chroma, albedo, depth, position,\n"
     "                        light-diffuse, light-specular, tile-lights, hdr, before-fxaa, diff-fat,\n"
     "                        ao-raw, ao (with --ssao), dof-coc (with --dof), ssr (with --ssr),\n"
@@ -28,11 +24,21 @@ static const char vw_usage[] =
     "  --no-panel            hide the panel\n"
     "  --screenshot FILE     write the view (without the panel) as PNG after --frames and exit\n"
     "  --screenshot-window FILE  the same with the panel, as the window shows it\n"
-    "  --frames N            frames to render before the screenshot (default 3); alone: exit after N\n"
+    "  --frames N            frames to render before the screenshot (default 3; 1..100000); alone: exit\n"
+    "                        after N\n"
     "  --resize WxH          resize the window after the first frames (tests)\n"
     "  --print-targets       print the targets' size and bytes whenever they are (re)allocated\n"
+    "  --list-options        list every option and the values it takes, then exit\n"
     "  --help                this text\n"
+    "The renderer's settings:\n";
+static const char vw_usage_effects[] =
     "Screen-space effects (as thinlight-render; the panel's Effects section changes them live):\n";
+static const char vw_usage_budgets[] =
+    "Memory budgets (as thinlight-render):\n";
+static const char vw_usage_tail[] =
+    "The glTF loader's and the renderers' warnings go to stderr, each once.\n"
+    "Exit status: 0 success, 1 bad input (an unreadable scene, no window), 2 bad usage (an unknown\n"
+    "option, a malformed or out-of-range value).\n";
 
 static const char vw_keys[] =
     "Keys (when the panel does not have the keyboard):\n"
@@ -59,111 +65,96 @@ static const char vw_keys[] =
 void vw_print_usage(FILE *f)
 {
     fputs(vw_usage, f);
+    fputs(tl_tool_settings_help, f);
+    fputs(vw_usage_effects, f);
     fputs(tl_tool_effects_help, f);
+    fputs(vw_usage_budgets, f);
+    fputs(tl_tool_budget_help, f);
+    fputs(vw_usage_tail, f);
     fputs(vw_keys, f);
 }
 
-static int vw_bad(const char *what, const char *value)
-{
-    fprintf(stderr, "thinlight-viewer: %s%s%s (see --help)\n", what, value ? ": " : "", value ? value : "");
-    return 2;
-}
+enum { V_HELP, V_LIST, V_SIZE, V_RESIZE, V_LIGHTS, V_FRAMES, V_VIEW, V_SPLIT, V_SCREENSHOT, V_SCREENSHOT_WINDOW,
+       V_GRID, V_ANIMATE, V_NO_PANEL, V_PRINT_TARGETS };
 
-static int vw_parse_u32(const char *s, uint32_t *out, uint32_t max)
-{
-    char *end;
-    unsigned long v = strtoul(s, &end, 10);
-    if (!*s || *end || s[0] == '-' || v > max) return 0;
-    *out = (uint32_t)v;
-    return 1;
-}
+static const tl_opt vw_opts[] = {
+    {"--help", TL_OPT_FLAG, .id = V_HELP},
+    {"-h", TL_OPT_FLAG, .id = V_HELP},
+    {"--list-options", TL_OPT_FLAG, .id = V_LIST},
+    {"--size", TL_OPT_SIZE, .id = V_SIZE, .lo = 16, .hi = 8192},
+    {"--resize", TL_OPT_SIZE, .id = V_RESIZE, .lo = 16, .hi = 8192},
+    {"--lights", TL_OPT_UINT, .id = V_LIGHTS, .lo = 0, .hi = 65536},
+    {"--frames", TL_OPT_UINT, .id = V_FRAMES, .lo = 1, .hi = 100000},
+    {"--view", TL_OPT_TEXT, .id = V_VIEW},
+    {"--split", TL_OPT_TEXT, .id = V_SPLIT},
+    {"--screenshot", TL_OPT_TEXT, .id = V_SCREENSHOT},
+    {"--screenshot-window", TL_OPT_TEXT, .id = V_SCREENSHOT_WINDOW},
+    {"--grid", TL_OPT_FLAG, .id = V_GRID},
+    {"--animate", TL_OPT_FLAG, .id = V_ANIMATE},
+    {"--no-panel", TL_OPT_FLAG, .id = V_NO_PANEL},
+    {"--print-targets", TL_OPT_FLAG, .id = V_PRINT_TARGETS},
+};
 
-static int vw_parse_size(const char *s, uint32_t *w, uint32_t *h)
+/* One option of vw_opts; -1 to go on, else the exit status (0 after --help or --list-options). */
+static int vw_option(vw_args *a, const tl_opt_table *tables, size_t ntables, const tl_opt *o, const tl_opt_value *v)
 {
-    unsigned a, b;
-    char extra;
-    if (sscanf(s, "%ux%u%c", &a, &b, &extra) != 2 || a < 16 || b < 16 || a > 8192 || b > 8192) return 0;
-    *w = a;
-    *h = b;
-    return 1;
-}
-
-/* The renderer settings: 1 when `opt` was one of them, -1 for a bad value. */
-static int vw_parse_setting(vw_args *a, const char *opt, const char *v)
-{
-    tl_renderer_desc *d = &a->desc;
-    if (!strcmp(opt, "--mode")) return tl_render_mode_from_name(v, &d->mode) == TL_OK ? 1 : -1;
-    if (!strcmp(opt, "--light-strategy")) return tl_light_strategy_from_name(v, &d->light_strategy) == TL_OK ? 1 : -1;
-    if (!strcmp(opt, "--depth")) {
-        if (!strcmp(v, "d24")) d->depth_format = TL_DEPTH_FORMAT_D24;
-        else if (!strcmp(v, "d32f-reversed")) d->depth_format = TL_DEPTH_FORMAT_D32F_REVERSED;
-        else return -1;
-    } else if (!strcmp(opt, "--rt0")) {
-        if (!strcmp(v, "rgba8")) d->rt0 = TL_RT0_RGBA8;
-        else if (!strcmp(v, "rgb10a2")) d->rt0 = TL_RT0_RGB10A2;
-        else return -1;
-    } else if (!strcmp(opt, "--light-buffer")) {
-        if (!strcmp(v, "exact")) d->light_buffer = TL_LIGHT_BUFFER_EXACT;
-        else if (!strcmp(v, "compact")) d->light_buffer = TL_LIGHT_BUFFER_COMPACT;
-        else return -1;
-    } else if (!strcmp(opt, "--fxaa")) {
-        static const char *names[] = {"off", "12", "29", "39"};
-        int found = 0;
-        for (int i = 0; i < 4; i++)
-            if (!strcmp(v, names[i])) { d->fxaa = (tl_fxaa_preset)(TL_FXAA_OFF + i); found = 1; }
-        if (!found) return -1;
-    } else if (!strcmp(opt, "--exposure")) {
-        char *end;
-        d->exposure = strtof(v, &end);
-        if (*end || !(d->exposure > 0.0f) || d->exposure > 1e6f) return -1;
-    } else {
-        return 0;
+    switch (o->id) {
+    case V_HELP: vw_print_usage(stdout); return 0;
+    case V_LIST: tl_opt_list(stdout, tables, ntables); return 0;
+    case V_SIZE: a->width = v->w[0], a->height = v->h[0]; break;
+    case V_RESIZE: a->resize_w = v->w[0], a->resize_h = v->h[0]; break;
+    case V_LIGHTS: a->lights = (uint32_t)v->u[0], a->lights_set = 1; break;
+    case V_FRAMES: a->frames = (uint32_t)v->u[0]; break;
+    case V_VIEW:
+        if (!vw_view_from_name(v->text, &a->view)) return tl_opt_usage(VW_TOOL, "--view '%s': unknown view", v->text);
+        break;
+    case V_SPLIT:
+        if (tl_render_mode_from_name(v->text, &a->split_mode) != TL_OK)
+            return tl_opt_usage(VW_TOOL, "--split '%s': wants thin-lpp, thin-deferred, fat or forward", v->text);
+        a->split = 1;
+        break;
+    case V_SCREENSHOT: a->screenshot = v->text; break;
+    case V_SCREENSHOT_WINDOW: a->screenshot = v->text, a->screenshot_window = 1; break;
+    case V_GRID: a->grid = 1; break;
+    case V_ANIMATE: a->animate = 1; break;
+    case V_NO_PANEL: a->no_panel = 1; break;
+    case V_PRINT_TARGETS: a->print_targets = 1; break;
+    default: break;
     }
-    return 1;
+    return -1;
 }
 
-/* Options with a value; the step's status, or -1 to go on. */
-static int vw_parse_valued(vw_args *a, const char *opt, const char *v)
+/* Any option of the tables; -1 to go on, else the exit status. */
+static int vw_apply(vw_args *a, const tl_opt_table *tables, size_t ntables, const tl_opt *o, const tl_opt_value *v)
 {
-    int s = vw_parse_setting(a, opt, v);
-    if (s < 0) return vw_bad(opt, v);
-    if (s > 0) return -1;
-    if (!strcmp(opt, "--size")) { if (!vw_parse_size(v, &a->width, &a->height)) return vw_bad("--size wants WxH, 16..8192", v); }
-    else if (!strcmp(opt, "--resize")) { if (!vw_parse_size(v, &a->resize_w, &a->resize_h)) return vw_bad("--resize wants WxH", v); }
-    else if (!strcmp(opt, "--lights")) { if (!vw_parse_u32(v, &a->lights, 65536)) return vw_bad("--lights wants 0..65536", v); a->lights_set = 1; }
-    else if (!strcmp(opt, "--frames")) { if (!vw_parse_u32(v, &a->frames, 100000) || !a->frames) return vw_bad("--frames wants 1..100000", v); }
-    else if (!strcmp(opt, "--view")) { if (!vw_view_from_name(v, &a->view)) return vw_bad("unknown view", v); }
-    else if (!strcmp(opt, "--split")) { if (tl_render_mode_from_name(v, &a->split_mode) != TL_OK) return vw_bad("--split wants a mode", v); a->split = 1; }
-    else if (!strcmp(opt, "--screenshot")) a->screenshot = v;
-    else if (!strcmp(opt, "--screenshot-window")) { a->screenshot = v; a->screenshot_window = 1; }
-    else return vw_bad("unknown option", opt);
-    return -1;
+    int rc = tl_tool_settings_apply(VW_TOOL, &a->desc, o, v);
+    if (rc) return rc == 1 ? -1 : rc;
+    if (tl_tool_effect_apply(&a->desc, o, v) || tl_tool_budget_option(&a->budgets, o, v)) return -1;
+    return vw_option(a, tables, ntables, o, v);
 }
 
 int vw_parse_args(int argc, char **argv, vw_args *a)
 {
     memset(a, 0, sizeof *a);
-    int fx;
     a->width = 1280;
     a->height = 720;
-    for (int i = 1; i < argc; i++) {
-        const char *o = argv[i];
-        if (!strcmp(o, "--help") || !strcmp(o, "-h")) { vw_print_usage(stdout); return 0; }
-        if (!strcmp(o, "--grid")) a->grid = 1;
-        else if (!strcmp(o, "--animate")) a->animate = 1;
-        else if (!strcmp(o, "--no-panel")) a->no_panel = 1;
-        else if (!strcmp(o, "--print-targets")) a->print_targets = 1;
-        else if (o[0] == '-' && o[1] == '-' && (fx = tl_tool_effect_option("thinlight-viewer", &a->desc, o,
-                                                                            i + 1 < argc ? argv[i + 1] : NULL)) != 0) {
-            if (fx < 0) return 2; /* the line is printed */
-            i += fx - 1;          /* 2: it took the value */
-        } else if (o[0] == '-' && o[1] == '-') {
-            if (i + 1 >= argc) return vw_bad("missing value for", o);
-            int s = vw_parse_valued(a, o, argv[++i]);
-            if (s >= 0) return s;
-        } else if (!a->scene) a->scene = o;
-        else return vw_bad("more than one scene", o);
+    const tl_opt_table tables[] = {TL_OPT_TABLE(vw_opts), tl_tool_settings_option_table, tl_tool_effect_options,
+                                   tl_tool_budget_option_table};
+    size_t ntables = sizeof tables / sizeof tables[0];
+    tl_opt_parser p;
+    tl_opt_begin(&p, VW_TOOL, argc, argv, tables, ntables);
+    const tl_opt *o;
+    tl_opt_value v;
+    int rc;
+    while ((rc = tl_opt_next(&p, &o, &v)) == 1) {
+        if (!o) {
+            if (a->scene) return tl_opt_usage(VW_TOOL, "more than one scene: '%s'", v.text);
+            a->scene = v.text;
+        } else if ((rc = vw_apply(a, tables, ntables, o, &v)) >= 0) {
+            return rc;
+        }
     }
+    if (rc) return rc;
     if (a->scene && !strcmp(a->scene, "crypt")) a->scene = NULL;
     if (a->screenshot && !a->frames) a->frames = 3;
     return -1;

@@ -4,12 +4,14 @@
 
 #include <stdio.h>
 
+#include "tool_budget.h"
 #include "viewer.h"
 
 typedef struct vw_args {
     const char *scene;           /* NULL: the crypt */
     uint32_t width, height;
     tl_renderer_desc desc;       /* the settings given */
+    tl_tool_budgets budgets;     /* --max-target-memory, --max-load-memory, --max-texture-pixels */
     uint32_t lights;
     int lights_set;
     vw_view view;

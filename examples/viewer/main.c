@@ -204,6 +204,9 @@ static void vw_settings(vw_run *run)
     const vw_args *a = &run->args;
     app->scene_path = a->scene;
     app->desc = a->desc;
+    app->budgets = a->budgets;
+    app->log.tool = "thinlight-viewer";
+    tl_tool_budget_renderer(&app->budgets, &app->desc);
     app->desc.get_proc_address = vw_proc;
     /* the defaults, spelled out for the panel */
     if (!app->desc.mode) app->desc.mode = TL_MODE_THIN_LPP;

@@ -8,12 +8,18 @@
 #include "session.h"
 #include "thinlight/io.h"
 
+/* Each line once (renderers are made again on every change of settings, and a scene reloaded on
+ * every change of the light count: their warnings would repeat); an error also for the panel. */
 static void vw_log(void *user, tl_log_level level, const char *message)
 {
     vw_app *app = (vw_app *)user;
-    if (level == TL_LOG_INFO) return;
-    fprintf(stderr, "thinlight-viewer: %s\n", message);
-    if (level == TL_LOG_ERROR && app) snprintf(app->status, sizeof app->status, "%s", message);
+    if (!app) {
+        tl_logger plain = tl_tool_logger("thinlight-viewer");
+        plain.fn(plain.user, level, message);
+        return;
+    }
+    tl_tool_log_message(&app->log, level, message);
+    if (level == TL_LOG_ERROR) snprintf(app->status, sizeof app->status, "%s", message);
 }
 
 tl_logger vw_logger(vw_app *app) { return (tl_logger){.fn = vw_log, .user = app}; }
@@ -36,6 +42,7 @@ int vw_load_scene(vw_app *app)
     tl_result res;
     if (app->scene_path) {
         tl_gltf_options o = {.logger = vw_logger(app), .extra_lights = app->gltf_extra_lights};
+        tl_tool_budget_gltf(&app->budgets, &o);
         res = tl_scene_load_gltf(app->scene_path, &o, &s);
     } else {
         res = tl_scene_create_default(&app->crypt, &s);

@@ -208,7 +208,7 @@ static bool vw_ui_effect_toggle(vw_app *app, int e)
         int was;
         memcpy(&was, saved, sizeof was);
         if (was) memcpy(at, saved, fx.size);
-        else tl_tool_effect_option("thinlight-viewer", &app->desc, fx.flag, nullptr);
+        else tl_tool_effect_flag(&app->desc, fx.flag);
     }
     return true;
 }

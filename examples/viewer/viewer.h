@@ -13,6 +13,9 @@
 extern "C" {
 #endif
 
+#include "tool_budget.h"
+#include "tool_log.h"
+
 /** What the window shows (view_table in views.c holds the names and what each reads). */
 typedef enum vw_view {
     VW_VIEW_FINAL,          /* the output, after FXAA */
@@ -73,6 +76,8 @@ typedef struct vw_app {
     float center[3], extent;         /* scene bounds: centre and diagonal */
     /* renderers */
     tl_renderer_desc desc;           /* the settings the panel edits (get_proc_address set once) */
+    tl_tool_budgets budgets;         /* the memory budgets (the target budget is in desc) */
+    tl_tool_log log;                 /* the loader's and the renderers' lines, each printed once */
     tl_renderer *r;                  /* the main one */
     tl_renderer *fat;                /* fat, for the difference view (created on demand) */
     tl_renderer *split;              /* the split view's right half (created on demand) */

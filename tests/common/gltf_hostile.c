@@ -246,6 +246,81 @@ unsigned char *tlh_png_header(uint32_t w, uint32_t h, size_t idat_bytes, size_t 
     return png;
 }
 
+/* Bits into a byte array, least significant first (deflate's order). */
+typedef struct bit_writer {
+    unsigned char *p;
+    size_t at;
+    uint32_t acc;
+    int n;
+} bit_writer;
+
+static void bits(bit_writer *b, uint32_t v, int n)
+{
+    b->acc |= v << b->n;
+    b->n += n;
+    while (b->n >= 8) {
+        b->p[b->at++] = (unsigned char)b->acc;
+        b->acc >>= 8;
+        b->n -= 8;
+    }
+}
+
+/* A Huffman code goes most significant bit first. */
+static void code(bit_writer *b, uint32_t c, int n)
+{
+    uint32_t r = 0;
+    for (int i = 0; i < n; i++) r |= ((c >> i) & 1u) << (n - 1 - i);
+    bits(b, r, n);
+}
+
+static void literal(bit_writer *b, unsigned v)
+{
+    if (v < 144) code(b, 0x30 + v, 8);
+    else code(b, 0x190 + (v - 144), 9);
+}
+
+unsigned char *tlh_png_flat(uint32_t w, uint32_t h, const uint8_t rgba[4], size_t *size)
+{
+    /* one fixed-Huffman block: per row the filter byte and the first pixel as literals, then
+     * copies of 258 bytes from 4 back, the rest as literals */
+    size_t row = 1 + (size_t)w * 4, copies = (row - 5) / 258, rest = row - 5 - copies * 258;
+    size_t n = 2 + 1 + h * ((5 + rest) * 9 + copies * 13) / 8 + 8 + 4;
+    unsigned char *z = malloc(n);
+    if (!z || !w || !h) {
+        free(z);
+        return NULL;
+    }
+    z[0] = 0x78;
+    z[1] = 0x01;
+    bit_writer b = {z, 2, 0, 0};
+    bits(&b, 1, 1); /* BFINAL */
+    bits(&b, 1, 2); /* fixed Huffman codes */
+    /* Adler-32 of identical rows: a row adds sum1 to a and row * a + sum2 to s (mod 65521) */
+    uint64_t sum1 = 0, sum2 = 0;
+    for (size_t i = 1; i < row; i++) {
+        sum1 += rgba[(i - 1) % 4];
+        sum2 += (uint64_t)(row - i) * rgba[(i - 1) % 4];
+    }
+    uint64_t a = 1, s = 0;
+    for (uint32_t y = 0; y < h; y++) {
+        literal(&b, 0);
+        for (int c = 0; c < 4; c++) literal(&b, rgba[c]);
+        for (size_t k = 0; k < copies; k++) {
+            code(&b, 0xC0 + 5, 8); /* length 258: symbol 285 */
+            code(&b, 3, 5);        /* distance 4 */
+        }
+        for (size_t k = 0; k < rest; k++) literal(&b, rgba[(copies * 258 + k) % 4]);
+        s = (s + (uint64_t)row % 65521u * a + sum2) % 65521u;
+        a = (a + sum1) % 65521u;
+    }
+    code(&b, 0, 7); /* end of block */
+    if (b.n) bits(&b, 0, 8 - b.n);
+    be32(z + b.at, (uint32_t)(s << 16 | a));
+    unsigned char *png = png_with_idat(w, h, z, b.at + 4, size);
+    free(z);
+    return png;
+}
+
 /* ---- files --------------------------------------------------------------------------------- */
 
 int tlh_write(const char *path, const void *data, size_t size)

@@ -45,6 +45,9 @@ void tlh_repeat(tlh_text *t, const char *s, size_t times);
 unsigned char *tlh_glb(const char *json, const void *bin, size_t bin_size, size_t *size);
 /* An 8-bit RGBA PNG of w*h pixels (stored, uncompressed), malloc'ed. */
 unsigned char *tlh_png(uint32_t w, uint32_t h, const uint8_t *rgba, size_t *size);
+/* An 8-bit RGBA PNG of w*h pixels of one colour, compressed (an 8192x8192 texture in 4 MiB),
+ * malloc'ed. */
+unsigned char *tlh_png_flat(uint32_t w, uint32_t h, const uint8_t rgba[4], size_t *size);
 /* A PNG whose IHDR says w*h RGBA but whose IDAT holds `idat_bytes` bytes only, malloc'ed. */
 unsigned char *tlh_png_header(uint32_t w, uint32_t h, size_t idat_bytes, size_t *size);
 /* Base64 of the bytes appended to `t`. */

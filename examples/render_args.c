@@ -1,0 +1,115 @@
+/* thinlight-render's command line: its options (a table for the tools' one parser, tool_args.h)
+ * and --help. */
+#include <stdio.h>
+#include <string.h>
+
+#include "render.h"
+#include "tool_effects.h"
+#include "tool_settings.h"
+
+static const char usage_head[] =
+    "usage: thinlight-render SCENE.gltf|SCENE.glb|default -o OUT.png|OUT.exr [options]\n"
+    "       thinlight-render SCENE.gltf|SCENE.glb|default --stats|--print-plan [options]\n"
+    "       thinlight-render --list-devices\n"
+    "  --size WxH            image size (default 1280x720; 1..16384 per side)\n"
+    "  --lights N            point lights of the built-in scene (default 64; 0..65536); for a glTF\n"
+    "                        file, N seeded point lights added within its bounds\n"
+    "  --spots N             spot lights (default lights/8; 0..65536)\n"
+    "  --no-directional      leave out the directional light\n"
+    "  --seed S              scene seed (default 1)\n"
+    "  --frames N            render N frames and report the last (default 1; 1..100000)\n"
+    "  --stats               print per-pass GPU times and target bytes\n"
+    "  --print-plan          print the frame plan: passes, inputs, outputs, targets, programs\n"
+    "  --dump-targets DIR    write every intermediate target as EXR into DIR\n";
+static const char usage_tail[] =
+    "  --list-options        list every option and the values it takes, then exit\n"
+    "  --help                this text\n"
+    "An .exr output holds the HDR image before tone mapping; .png the final image. The context used\n"
+    "is printed on stderr, and the glTF loader's and the renderer's warnings, each once. A build\n"
+    "without THINLIGHT_WITH_IO (docs/gpu-servers.md) reads no glTF and writes no image: -o,\n"
+    "--dump-targets and a glTF scene fail with one line; --stats and --print-plan work.\n"
+    "Exit status: 0 success, 1 bad input (an unreadable scene, an unwritable output, a frame over\n"
+    "the target-memory budget), 2 bad usage (an unknown option, a malformed or out-of-range value).\n";
+
+enum { R_HELP, R_LIST, R_OUT, R_DUMP, R_SIZE, R_LIGHTS, R_SPOTS, R_NO_DIRECTIONAL, R_SEED, R_FRAMES, R_STATS, R_PLAN };
+
+static const tl_opt render_opts[] = {
+    {"--help", TL_OPT_FLAG, .id = R_HELP},
+    {"-h", TL_OPT_FLAG, .id = R_HELP},
+    {"--list-options", TL_OPT_FLAG, .id = R_LIST},
+    {"-o", TL_OPT_TEXT, .id = R_OUT},
+    {"--dump-targets", TL_OPT_TEXT, .id = R_DUMP},
+    {"--size", TL_OPT_SIZE, .id = R_SIZE, .lo = 1, .hi = 16384},
+    {"--lights", TL_OPT_UINT, .id = R_LIGHTS, .lo = 0, .hi = 65536},
+    {"--spots", TL_OPT_UINT, .id = R_SPOTS, .lo = 0, .hi = 65536},
+    {"--no-directional", TL_OPT_FLAG, .id = R_NO_DIRECTIONAL},
+    {"--seed", TL_OPT_UINT, .id = R_SEED, .lo = 0, .hi = UINT64_MAX},
+    {"--frames", TL_OPT_UINT, .id = R_FRAMES, .lo = 1, .hi = 100000},
+    {"--stats", TL_OPT_FLAG, .id = R_STATS},
+    {"--print-plan", TL_OPT_FLAG, .id = R_PLAN},
+};
+
+/* One option of render_opts; 0, or -1 after --help or --list-options. */
+static int render_option(render_args *a, const tl_opt_table *tables, size_t ntables, const tl_opt *o,
+                         const tl_opt_value *v)
+{
+    switch (o->id) {
+    case R_HELP:
+        printf("%s%s%s%s%s%s", usage_head, tl_tool_settings_help, tl_tool_effects_help, TL_TOOL_CONTEXT_HELP,
+               tl_tool_budget_help, usage_tail);
+        return -1;
+    case R_LIST: tl_opt_list(stdout, tables, ntables); return -1;
+    case R_OUT: a->out = v->text; break;
+    case R_DUMP: a->dump = v->text; break;
+    case R_SIZE: a->rd.width = v->w[0], a->rd.height = v->h[0]; break;
+    case R_LIGHTS: a->sd.point_lights = (uint32_t)v->u[0], a->zero_points = v->u[0] == 0; break;
+    case R_SPOTS: a->sd.spot_lights = (uint32_t)v->u[0], a->zero_spots = v->u[0] == 0; break;
+    case R_NO_DIRECTIONAL: a->sd.no_directional = 1; break;
+    case R_SEED: a->sd.seed = v->u[0]; break;
+    case R_FRAMES: a->frames = (uint32_t)v->u[0]; break;
+    case R_STATS: a->stats = 1; break;
+    case R_PLAN: a->plan = 1; break;
+    default: break;
+    }
+    return 0;
+}
+
+/* Any option of the tables; 0, -1 after --help or --list-options, or 2 after one line. */
+static int render_apply(render_args *a, const tl_opt_table *tables, size_t ntables, const tl_opt *o,
+                        const tl_opt_value *v)
+{
+    int rc = tl_tool_settings_apply(RENDER_TOOL, &a->rd, o, v);
+    if (rc) return rc == 1 ? 0 : rc;
+    if (tl_tool_effect_apply(&a->rd, o, v) || tl_tool_context_option(&a->context_args, o, v) ||
+        tl_tool_budget_option(&a->budgets, o, v))
+        return 0;
+    return render_option(a, tables, ntables, o, v);
+}
+
+int render_parse_args(int argc, char **argv, render_args *a)
+{
+    memset(a, 0, sizeof *a);
+    a->frames = 1;
+    const tl_opt_table tables[] = {TL_OPT_TABLE(render_opts), tl_tool_settings_option_table, tl_tool_effect_options,
+                                   tl_tool_context_option_table, tl_tool_budget_option_table};
+    size_t ntables = sizeof tables / sizeof tables[0];
+    tl_opt_parser p;
+    tl_opt_begin(&p, RENDER_TOOL, argc, argv, tables, ntables);
+    const tl_opt *o;
+    tl_opt_value v;
+    int rc;
+    while ((rc = tl_opt_next(&p, &o, &v)) == 1) {
+        if (!o) {
+            if (a->scene) return tl_opt_usage(RENDER_TOOL, "unexpected argument '%s'", v.text);
+            a->scene = v.text;
+        } else if ((rc = render_apply(a, tables, ntables, o, &v)) != 0) {
+            return rc;
+        }
+    }
+    if (rc) return rc;
+    if (a->context_args.list_devices) return 0;
+    if (!a->scene) return tl_opt_usage(RENDER_TOOL, "no scene given (use 'default' for the built-in one)");
+    if (!a->out && !a->stats && !a->plan)
+        return tl_opt_usage(RENDER_TOOL, "no output given (-o OUT.png or OUT.exr, or --stats or --print-plan)");
+    return tl_tool_context_parse(RENDER_TOOL, &a->context_args, &a->ctx);
+}
