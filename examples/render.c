@@ -45,21 +45,36 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         fprintf(stderr, "thinlight-render: out of memory\n");
         return 1;
     }
+    /* file names (the light lists are a storage buffer: no image) */
     static const char *const names[TL_TARGET_COUNT] = {
-        "depth",        "rt0_normal_gloss", "rt1_albedo", "light_diffuse", "light_specular", "fat_position",
-        "fat_normal",   "fat_albedo",       "fat_material", "hdr",         "ldr",            "output", NULL,
-        "ao_raw",       "ao",               "dof",          "light_fresnel", "bloom"};
+        [TL_TARGET_DEPTH] = "depth",           [TL_TARGET_RT0] = "rt0_normal_gloss",
+        [TL_TARGET_RT1] = "rt1_albedo",        [TL_TARGET_LIGHT_DIFFUSE] = "light_diffuse",
+        [TL_TARGET_LIGHT_SPECULAR] = "light_specular", [TL_TARGET_FAT_POSITION] = "fat_position",
+        [TL_TARGET_FAT_NORMAL] = "fat_normal", [TL_TARGET_FAT_ALBEDO] = "fat_albedo",
+        [TL_TARGET_FAT_MATERIAL] = "fat_material", [TL_TARGET_HDR] = "hdr",
+        [TL_TARGET_LDR] = "ldr",               [TL_TARGET_OUTPUT] = "output",
+        [TL_TARGET_AO_RAW] = "ao_raw",         [TL_TARGET_AO] = "ao",
+        [TL_TARGET_DOF] = "dof",               [TL_TARGET_LIGHT_FRESNEL] = "light_fresnel",
+        [TL_TARGET_BLOOM] = "bloom",           [TL_TARGET_SSR] = "ssr"};
     tl_frame_plan plan;
     if (tl_renderer_get_plan(r, &plan) != TL_OK) memset(&plan, 0, sizeof plan);
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         size_t size = n * sizeof *buf;
         uint32_t tw = plan.target_info[t].width ? plan.target_info[t].width : w; /* bloom: half size */
         uint32_t th = plan.target_info[t].height ? plan.target_info[t].height : h;
-        if (!names[t]) continue; /* a storage buffer */
-        if (tl_renderer_read_target(r, (tl_target_id)t, buf, &size) != TL_OK) continue; /* not allocated */
+        if (!names[t] || !(plan.targets & TL_TARGET_BIT(t))) continue; /* a storage buffer, or not planned */
+        if (tl_renderer_read_target(r, (tl_target_id)t, buf, &size) != TL_OK) { /* the renderer logged why */
+            free(buf);
+            return 1;
+        }
         char path[4096];
         snprintf(path, sizeof path, "%s/%s.exr", dir, names[t]);
-        tl_image_desc id = {.width = tw, .height = th, .channels = 4, .type = TL_PIXEL_F32, .bottom_up = 1};
+        /* each at its own precision: half floats hold 16F targets and 8-bit channels exactly; depth
+         * (24 or 32 bits, read as window depth and distance), the decoded RT0 normal (2 x 10 or 12
+         * bits) and 32-bit float targets need full floats */
+        int full = t == TL_TARGET_DEPTH || t == TL_TARGET_RT0 || plan.target_bytes_per_pixel[t] >= 16;
+        tl_image_desc id = {.width = tw, .height = th, .channels = 4, .type = TL_PIXEL_F32, .bottom_up = 1,
+                            .full_float = full};
         if (tl_tool_write_image("thinlight-render", path, &id, buf)) {
             free(buf);
             return 1;

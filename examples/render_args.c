@@ -20,7 +20,8 @@ static const char usage_head[] =
     "  --frames N            render N frames and report the last (default 1; 1..100000)\n"
     "  --stats               print per-pass GPU times and target bytes\n"
     "  --print-plan          print the frame plan: passes, inputs, outputs, targets, programs\n"
-    "  --dump-targets DIR    write every intermediate target as EXR into DIR\n";
+    "  --dump-targets DIR    write every target of the plan as EXR into DIR (depth, decoded\n"
+    "                        normals and 32-bit targets as 32-bit floats, the others as half)\n";
 static const char usage_tail[] =
     "  --list-options        list every option and the values it takes, then exit\n"
     "  --help                this text\n"

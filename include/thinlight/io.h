@@ -29,6 +29,9 @@ typedef struct tl_image_desc {
     tl_pixel_type type;     /**< component type in memory */
     int bottom_up;          /**< 1 when the first row in memory is the bottom one (GL readback) */
     tl_logger logger;       /**< receives the error line on failure ("PATH: reason"); zeroed: silent */
+    /** EXR only, with TL_PIXEL_F32 data: 1 stores 32-bit floats (depth, positions, decoded
+     *  normals: what half floats would round); 0 (default) stores half floats. */
+    int full_float;
 } tl_image_desc;
 
 /**

@@ -48,7 +48,8 @@ std::string encode(OIIO::ImageOutput *out, const tl_image_desc &desc, const void
     OIIO::TypeDesc file_type = in_type;
     std::string format = out->format_name();
     if (format == "png" || format == "jpeg") file_type = OIIO::TypeDesc::UINT8;
-    if (format == "openexr") file_type = OIIO::TypeDesc::HALF;
+    if (format == "openexr") file_type = desc.full_float && in_type == OIIO::TypeDesc::FLOAT ? OIIO::TypeDesc::FLOAT
+                                                                                          : OIIO::TypeDesc::HALF;
     OIIO::ImageSpec spec((int)desc.width, (int)desc.height, (int)desc.channels, file_type);
     // The pixels are stored as given. Without this OIIO takes RGBA for premultiplied and divides
     // colour by alpha when it writes PNG (found by the test image_png_round_trip_*).
