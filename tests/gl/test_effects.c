@@ -3,7 +3,8 @@
  * exactly open beyond k_b + k_d from the wall; ssao_reference.c has every pixel against the CPU
  * estimator), finite on 1x1 and 7x3 targets
  * and with reversed D32F at 1:10^7; fog at a known distance against exp(-density d) in double and
- * at an infinite far plane; depth of field leaving its focus plane bit for bit. */
+ * at an infinite far plane; depth of field leaving its focus plane bit for bit; SSAO, fog and depth
+ * of field off with their other fields set change no byte of the image. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -78,6 +79,47 @@ TL_TEST(effects_off_plan_nothing_on_plan_their_passes)
     TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
     bad = (tl_renderer_desc){.width = 8, .height = 8, .fog = {.mode = TL_FOG_DISTANCE, .noise = 2.0f}};
     TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
+}
+
+/* The image side of the same claim: SSAO, fog and depth of field off with every other field set
+ * render the bytes of the plain frame (output and HDR), in every mode and light strategy, with a
+ * light so that the frame is not flat. */
+TL_TEST(effects_off_change_no_byte)
+{
+    quads q;
+    corner_scene(&q);
+    q.light[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {0.5f, 1.5f, -1}, .color = {3, 2, 1}, .radius = 4};
+    q.s.lights = q.light;
+    q.s.light_count = 1;
+    const uint32_t w = 64, h = 48;
+    const size_t n = (size_t)w * h;
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
+        for (int st = TL_LIGHT_STRATEGY_VOLUMES; st <= TL_LIGHT_STRATEGY_TILED; st++) {
+            tl_renderer_desc plain = {.width = w, .height = h, .mode = modes[m], .light_strategy = (tl_light_strategy)st};
+            tl_renderer_desc off = plain;
+            off.ssao = (tl_ssao_desc){.samples = 9, .radius = 3, .bias = 0.1f, .falloff = 2, .exponent = 2,
+                                      .blur_radius = 3, .diffuse = 1};
+            off.fog = (tl_fog_desc){.color = {1, 0.5f, 0.25f}, .density = 1, .height = 1, .height_falloff = 2,
+                                    .noise = 0.5f, .noise_scale = 2, .noise_speed = 1};
+            off.dof = (tl_dof_desc){.focus_distance = 3, .aperture = 0.5f, .max_radius = 0.5f, .samples = 9};
+            tl_renderer *a = tl_test_render_once(&q.s, plain), *b = tl_test_render_once(&q.s, off);
+            TL_CHECK(a && b);
+            uint8_t *oa = malloc(n * 4), *ob = malloc(n * 4);
+            float *ha = a ? tl_test_read_target(a, TL_TARGET_HDR, n) : NULL, *hb = b ? tl_test_read_target(b, TL_TARGET_HDR, n) : NULL;
+            int read = a && b && oa && ob && ha && hb && tl_renderer_read_output(a, oa, &(size_t){n * 4}) == TL_OK &&
+                       tl_renderer_read_output(b, ob, &(size_t){n * 4}) == TL_OK;
+            TL_CHECK(read);
+            size_t differ = 0;
+            for (size_t i = 0; read && i < n * 4; i++) differ += (oa[i] != ob[i]) + (memcmp(&ha[i], &hb[i], sizeof ha[i]) != 0);
+            if (differ) printf("  %s, %s: %zu values differ\n", tl_render_mode_name(modes[m]), tl_light_strategy_name((tl_light_strategy)st), differ);
+            TL_CHECK_EQ_U(differ, 0);
+            free(oa);
+            free(ob);
+            free(ha);
+            free(hb);
+            tl_renderer_destroy(a);
+            tl_renderer_destroy(b);
+        }
 }
 
 /* ---- SSAO ---------------------------------------------------------------------------------------- */
