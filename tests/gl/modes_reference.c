@@ -71,7 +71,8 @@ int modes_render(const tl_scene *s, tl_renderer_desc d, modes_frame *f)
         f->material = read_target(r, TL_TARGET_FAT_MATERIAL, n);
         ok = f->position && f->normal && f->albedo && f->material;
     }
-    if (ok && (d.mode == TL_MODE_THIN_LPP || d.mode == TL_MODE_THIN_DEFERRED)) ok = (f->normal = read_target(r, TL_TARGET_RT0, n)) != NULL;
+    if (ok && (d.mode == TL_MODE_THIN_LPP || d.mode == TL_MODE_THIN_DEFERRED))
+        ok = (f->normal = read_target(r, TL_TARGET_RT0, n)) != NULL;
     tl_renderer_destroy(r);
     return ok && f->hdr && f->ldr && f->out && f->depth;
 }
@@ -150,7 +151,8 @@ static int frame_position(const modes_frame *f, const tl_projection *pr, size_t 
     float d = f->depth[4 * i], q[3];
     if (d == (f->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ? 0.0f : 1.0f)) return 0;
     if (step) d = nextafterf(d, step > 0 ? 2.0f : -1.0f);
-    float ndc_x = ((float)x + 0.5f) * (1.0f / (float)f->w) * 2.0f - 1.0f, ndc_y = ((float)y + 0.5f) * (1.0f / (float)f->h) * 2.0f - 1.0f;
+    float ndc_x = ((float)x + 0.5f) * (1.0f / (float)f->w) * 2.0f - 1.0f;
+    float ndc_y = ((float)y + 0.5f) * (1.0f / (float)f->h) * 2.0f - 1.0f;
     tl_view_position_from_depth(pr, ndc_x, ndc_y, d, q);
     for (int k = 0; k < 3; k++) p[k] = q[k];
     return 1;

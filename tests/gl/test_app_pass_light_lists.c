@@ -142,8 +142,14 @@ TL_TEST(app_pass_reads_tile_light_lists)
 
 typedef enum tri { TRI_NO, TRI_YES, TRI_MAYBE } tri;
 
-static tri tri_and(tri a, tri b) { return a == TRI_NO || b == TRI_NO ? TRI_NO : a == TRI_YES && b == TRI_YES ? TRI_YES : TRI_MAYBE; }
-static tri tri_or(tri a, tri b) { return a == TRI_YES || b == TRI_YES ? TRI_YES : a == TRI_NO && b == TRI_NO ? TRI_NO : TRI_MAYBE; }
+static tri tri_and(tri a, tri b)
+{
+    return a == TRI_NO || b == TRI_NO ? TRI_NO : a == TRI_YES && b == TRI_YES ? TRI_YES : TRI_MAYBE;
+}
+static tri tri_or(tri a, tri b)
+{
+    return a == TRI_YES || b == TRI_YES ? TRI_YES : a == TRI_NO && b == TRI_NO ? TRI_NO : TRI_MAYBE;
+}
 static tri tri_not(tri a) { return a == TRI_MAYBE ? TRI_MAYBE : a == TRI_YES ? TRI_NO : TRI_YES; }
 /* x > 0, with x known within e */
 static tri tri_pos(double x, double e) { return x > e ? TRI_YES : x < -e ? TRI_NO : TRI_MAYBE; }
@@ -162,7 +168,8 @@ typedef struct cull_view {
 static double cull_distance(const cull_view *v, float d, double *e)
 {
     double z = -(double)tl_depth_linearize(&v->pr, d);
-    double a = -(double)tl_depth_linearize(&v->pr, nextafterf(d, 2.0f)), b = -(double)tl_depth_linearize(&v->pr, nextafterf(d, -1.0f));
+    double a = -(double)tl_depth_linearize(&v->pr, nextafterf(d, 2.0f));
+    double b = -(double)tl_depth_linearize(&v->pr, nextafterf(d, -1.0f));
     *e = fmax(fabs(a - z), fabs(b - z)) + FLOAT_ROUNDINGS * z;
     return z;
 }
@@ -216,7 +223,8 @@ static void tile_setup(const cull_view *v, uint32_t tx, uint32_t ty, cull_tile *
     double n0x = (float)x0 * iw * 2.0f - 1.0f, n1x = (float)x1 * iw * 2.0f - 1.0f;
     double n0y = (float)y0 * ih * 2.0f - 1.0f, n1y = (float)y1 * ih * 2.0f - 1.0f;
     const float *m = v->proj;
-    double raw[4][3] = {{m[0], 0.0, m[8] + n0x}, {-m[0], 0.0, -(m[8] + n1x)}, {0.0, m[5], m[9] + n0y}, {0.0, -m[5], -(m[9] + n1y)}};
+    double raw[4][3] = {{m[0], 0.0, m[8] + n0x}, {-m[0], 0.0, -(m[8] + n1x)},
+                        {0.0, m[5], m[9] + n0y}, {0.0, -m[5], -(m[9] + n1y)}};
     for (int i = 0; i < 4; i++) {
         double l = sqrt(raw[i][0] * raw[i][0] + raw[i][1] * raw[i][1] + raw[i][2] * raw[i][2]);
         for (int k = 0; k < 3; k++) t->planes[i][k] = raw[i][k] / l;
@@ -256,7 +264,8 @@ static void light_to_view(const cull_view *v, const tl_light *l, cull_light *o)
     double mag = 0.0, dir[3] = {l->direction[0], l->direction[1], l->direction[2]};
     double dl = sqrt(dir[0] * dir[0] + dir[1] * dir[1] + dir[2] * dir[2]);
     for (int k = 0; k < 3; k++) {
-        o->c[k] = (double)m[k] * l->position[0] + (double)m[4 + k] * l->position[1] + (double)m[8 + k] * l->position[2] + m[12 + k];
+        o->c[k] = (double)m[k] * l->position[0] + (double)m[4 + k] * l->position[1] + (double)m[8 + k] * l->position[2] +
+                  m[12 + k];
         o->d[k] = ((double)m[k] * dir[0] + (double)m[4 + k] * dir[1] + (double)m[8 + k] * dir[2]) / dl;
         mag += fabs(l->position[k]) + fabs(m[12 + k]);
     }
@@ -297,7 +306,8 @@ static tri cone_meets_tile(const cull_tile *t, const cull_light *l)
         len2 += v[k] * v[k];
         along += v[k] * l->d[k];
     }
-    double sin_a = sqrt(fmax(1.0 - cos_a * cos_a, 0.0)), closest = cos_a * sqrt(fmax(len2 - along * along, 0.0)) - along * sin_a;
+    double sin_a = sqrt(fmax(1.0 - cos_a * cos_a, 0.0));
+    double closest = cos_a * sqrt(fmax(len2 - along * along, 0.0)) - along * sin_a;
     double e = l->e + (t->ezmax + t->ezmin) * 2.0 + FLOAT_ROUNDINGS * (sqrt(len2) + t->sphere[3]);
     tri closer = tri_pos(closest - t->sphere[3], e), beyond = tri_pos(along - (t->sphere[3] + l->r), e);
     tri behind = tri_pos(-t->sphere[3] - along, e);
@@ -321,10 +331,12 @@ static int reaches_tile(const cull_view *v, uint32_t tx, uint32_t ty, const cull
         for (uint32_t x = tx * v->tile; x < (tx + 1) * v->tile && x < v->w; x++) {
             float d = v->depth[4 * ((size_t)y * v->w + x)];
             if (d == v->clear) continue;
-            float ndc_x = ((float)x + 0.5f) / (float)v->w * 2.0f - 1.0f, ndc_y = ((float)y + 0.5f) / (float)v->h * 2.0f - 1.0f;
+            float ndc_x = ((float)x + 0.5f) / (float)v->w * 2.0f - 1.0f;
+            float ndc_y = ((float)y + 0.5f) / (float)v->h * 2.0f - 1.0f;
             float p[3];
             tl_view_position_from_depth(&v->pr, ndc_x, ndc_y, d, p);
-            double q[3] = {p[0] - l->c[0], p[1] - l->c[1], p[2] - l->c[2]}, dist = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+            double q[3] = {p[0] - l->c[0], p[1] - l->c[1], p[2] - l->c[2]};
+            double dist = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
             double margin = 1e-3 * l->r; /* far beyond a D24 position's error at these distances */
             if (dist >= l->r - margin) continue;
             if (l->spot && (q[0] * l->d[0] + q[1] * l->d[1] + q[2] * l->d[2]) / dist <= l->cos_outer + 1e-3) continue;
@@ -402,7 +414,8 @@ TL_TEST(tile_light_counts_match_cpu_cull)
         return;
     }
     tl_scene *s = NULL;
-    TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 96, .spot_lights = 24, .detail = 1}, &s) == TL_OK);
+    const tl_default_scene_desc sd = {.point_lights = 96, .spot_lights = 24, .detail = 1};
+    TL_CHECK(tl_scene_create_default(&sd, &s) == TL_OK);
     if (!s) return;
     const struct { tl_render_mode mode; tl_depth_format depth; uint32_t tile; } runs[] = {
         {TL_MODE_THIN_LPP, TL_DEPTH_FORMAT_D24, 8},  {TL_MODE_THIN_LPP, TL_DEPTH_FORMAT_D24, 16},
@@ -437,7 +450,7 @@ TL_TEST(tile_light_counts_match_cpu_cull)
             memcpy(v.view, p.view, sizeof v.view);
             memcpy(v.proj, p.proj, sizeof v.proj);
             memcpy(v.pr.m, p.proj, sizeof v.pr.m);
-            v.pr.format = runs[k].depth == TL_DEPTH_FORMAT_D32F_REVERSED ? TL_DEPTH_FORMAT_D32F_REVERSED : TL_DEPTH_FORMAT_D24;
+            v.pr.format = runs[k].depth;
             cull_result res = {0};
             compare_tiles(&v, s, p.headers, &res);
             printf("%-9s %-13s %2u px tiles: %zu tiles, %zu list entries (CPU cull: %zu sure, %zu at most); %zu tiles "

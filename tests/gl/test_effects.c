@@ -105,13 +105,17 @@ TL_TEST(effects_off_change_no_byte)
             tl_renderer *a = tl_test_render_once(&q.s, plain), *b = tl_test_render_once(&q.s, off);
             TL_CHECK(a && b);
             uint8_t *oa = malloc(n * 4), *ob = malloc(n * 4);
-            float *ha = a ? tl_test_read_target(a, TL_TARGET_HDR, n) : NULL, *hb = b ? tl_test_read_target(b, TL_TARGET_HDR, n) : NULL;
+            float *ha = a ? tl_test_read_target(a, TL_TARGET_HDR, n) : NULL;
+            float *hb = b ? tl_test_read_target(b, TL_TARGET_HDR, n) : NULL;
             int read = a && b && oa && ob && ha && hb && tl_renderer_read_output(a, oa, &(size_t){n * 4}) == TL_OK &&
                        tl_renderer_read_output(b, ob, &(size_t){n * 4}) == TL_OK;
             TL_CHECK(read);
             size_t differ = 0;
-            for (size_t i = 0; read && i < n * 4; i++) differ += (oa[i] != ob[i]) + (memcmp(&ha[i], &hb[i], sizeof ha[i]) != 0);
-            if (differ) printf("  %s, %s: %zu values differ\n", tl_render_mode_name(modes[m]), tl_light_strategy_name((tl_light_strategy)st), differ);
+            for (size_t i = 0; read && i < n * 4; i++)
+                differ += (oa[i] != ob[i]) + (memcmp(&ha[i], &hb[i], sizeof ha[i]) != 0);
+            if (differ)
+                printf("  %s, %s: %zu values differ\n", tl_render_mode_name(modes[m]),
+                       tl_light_strategy_name((tl_light_strategy)st), differ);
             TL_CHECK_EQ_U(differ, 0);
             free(oa);
             free(ob);

@@ -521,7 +521,8 @@ TL_TEST(modes_match_fat_gltf_scenes)
         o.objects = opaque;
         o.object_count = 0;
         for (size_t i = 0; opaque && i < s->object_count; i++)
-            if (!(s->materials[s->objects[i].material].flags & TL_MATERIAL_ALPHA_BLEND)) opaque[o.object_count++] = s->objects[i];
+            if (!(s->materials[s->objects[i].material].flags & TL_MATERIAL_ALPHA_BLEND))
+                opaque[o.object_count++] = s->objects[i];
         TL_CHECK(opaque != NULL);
         if (opaque) compare_scene_to_fat(&o, w, h, 1000, 40.0, files[f]); /* objects on the background */
         free(opaque);
