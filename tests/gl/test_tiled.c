@@ -16,8 +16,9 @@
 #define BIT(t) TL_TARGET_BIT(t)
 
 /* llvmpipe stores FP16 rounding toward zero: one store is off by less than one FP16 step
- * (TL_HALF_REL_STEP relative); a sum of n blended terms by less than n steps. */
-static double fp16_sum_tol(double value, double stores) { return value * stores * TL_HALF_REL_STEP + 1e-6; }
+ * (TL_HALF_REL_STEP relative, or FP16's smallest subnormal step 2^-24 below 2^-14); a sum of n
+ * blended terms by less than n steps. */
+static double fp16_sum_tol(double value, double stores) { return value * stores * TL_HALF_REL_STEP + stores * 0x1.0p-24; }
 
 static float *read(tl_renderer *r, tl_target_id id, size_t n)
 {
