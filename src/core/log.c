@@ -4,11 +4,35 @@
 #include <stdarg.h>
 #include <stdio.h>
 
+/* The logger contract (thinlight/base.h): one line, no trailing newline. Each run of line breaks
+ * inside becomes one space (a path, a driver's or a parser's message may hold some); trailing
+ * breaks and spaces go. */
+static void tl__one_line(char *s)
+{
+    char *w = s;
+    for (const char *r = s; *r;) {
+        if (*r == '\n' || *r == '\r') {
+            while (*r == '\n' || *r == '\r') r++;
+            *w++ = ' ';
+        } else {
+            *w++ = *r++;
+        }
+    }
+    while (w > s && (w[-1] == ' ' || w[-1] == '\t')) w--;
+    *w = '\0';
+}
+
+static void tl__format(char *line, size_t size, const char *fmt, va_list ap)
+{
+    vsnprintf(line, size, fmt, ap);
+    tl__one_line(line);
+}
+
 tl_result tl__log_fail(tl__log *log, tl_result result, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(log->last_error, sizeof log->last_error, fmt, ap);
+    tl__format(log->last_error, sizeof log->last_error, fmt, ap);
     va_end(ap);
     if (log->logger.fn) log->logger.fn(log->logger.user, TL_LOG_ERROR, log->last_error);
     return result;
@@ -20,7 +44,7 @@ void tl__log_message(const tl__log *log, tl_log_level level, const char *fmt, ..
     char line[TL__LOG_MESSAGE_SIZE];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(line, sizeof line, fmt, ap);
+    tl__format(line, sizeof line, fmt, ap);
     va_end(ap);
     log->logger.fn(log->logger.user, level, line);
 }
@@ -31,8 +55,19 @@ tl_result tl__logger_fail(const tl_logger *logger, tl_result result, const char 
     char line[TL__LOG_MESSAGE_SIZE];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(line, sizeof line, fmt, ap);
+    tl__format(line, sizeof line, fmt, ap);
     va_end(ap);
     logger->fn(logger->user, TL_LOG_ERROR, line);
     return result;
+}
+
+void tl__logger_message(const tl_logger *logger, tl_log_level level, const char *fmt, ...)
+{
+    if (!logger || !logger->fn) return;
+    char line[TL__LOG_MESSAGE_SIZE];
+    va_list ap;
+    va_start(ap, fmt);
+    tl__format(line, sizeof line, fmt, ap);
+    va_end(ap);
+    logger->fn(logger->user, level, line);
 }

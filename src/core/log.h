@@ -1,6 +1,10 @@
-/* An object's last error and its logger, shared by every layer: a failing call records one line
- * (which file, which limit, which pass) as the object's last error and sends it to the logger of
- * the descriptor the object was made with. */
+/* The one error channel of every layer (render, platform, scene, io; docs/getting-started.md,
+ * "Errors, logging and memory"): a failing call returns its tl_result, records one line (which
+ * file, which limit, which pass) as its object's last error and sends it to the logger of the
+ * descriptor the object was made with; a call with no object to keep it (a failing create, a
+ * load) sends the line to its descriptor's logger only. Nothing else is written anywhere: no
+ * stderr, no global or thread-local error. Every message is made one line here (line breaks
+ * inside become spaces) and cut at TL__LOG_MESSAGE_SIZE - 1 bytes. */
 #ifndef TL_CORE_LOG_H
 #define TL_CORE_LOG_H
 
@@ -29,8 +33,11 @@ typedef struct tl__log {
 tl_result tl__log_fail(tl__log *log, tl_result result, const char *fmt, ...) TL__PRINTF_LIKE(3, 4);
 /* Sends a warning or information line to the logger only. */
 void tl__log_message(const tl__log *log, tl_log_level level, const char *fmt, ...) TL__PRINTF_LIKE(3, 4);
-/* For calls that have no object yet (a failing create): logs an error line, returns `result`. */
+/* For calls that have no object (a failing create, a load): logs an error line, returns `result`.
+ * `logger` may be NULL or zeroed (silent). */
 tl_result tl__logger_fail(const tl_logger *logger, tl_result result, const char *fmt, ...) TL__PRINTF_LIKE(3, 4);
+/* A warning or information line for calls that have no object; `logger` may be NULL or zeroed. */
+void tl__logger_message(const tl_logger *logger, tl_log_level level, const char *fmt, ...) TL__PRINTF_LIKE(3, 4);
 
 #ifdef __cplusplus
 }
