@@ -5,11 +5,12 @@
  *
  * Every back end gives OpenGL 4.5 core. The renderer never creates a context; applications and
  * tools use these (or their own) and load GL through tl_context_get_proc_address or, with the
- * shape the renderer and glad expect, tl_context_proc_loader. A create call that fails has no
- * object to ask: it reports why through the descriptor's logger.
+ * shape the renderer and glad expect, tl_context_proc_loader.
  *
- * A failed create has no object to ask: its message goes to the descriptor's logger (my_logger
- * below, e.g. a function printing `message` to stderr when `level` is TL_LOG_ERROR).
+ * Errors as everywhere in thinlight: a tl_result, one line to the descriptor's logger, and, for
+ * calls on a context, the same line in tl_context_last_error. A failed create has no object to
+ * ask: its message goes to the descriptor's logger only (my_logger below, e.g. a function
+ * printing `message` to stderr when `level` is TL_LOG_ERROR). The library itself prints nothing.
  *
  * @code
  * tl_context *ctx = NULL;
@@ -52,7 +53,8 @@ typedef enum tl_context_backend {
     TL_CONTEXT_BACKEND_EGL,
     /** Headless, best first: the first EGL GPU device (one that is not Mesa's software
      *  rasteriser), then OSMesa, then EGL's surfaceless platform. egl_platform and egl_device are
-     *  ignored; tl_context_get_backend tells which one was made. */
+     *  ignored; tl_context_get_backend tells which one was made. A step that runs out of memory
+     *  ends the search (TL_ERROR_OUT_OF_MEMORY), rather than falling back to the next. */
     TL_CONTEXT_BACKEND_AUTO,
     TL_CONTEXT_BACKEND_COUNT_       /**< number of values (not a back end) */
 } tl_context_backend;
@@ -86,11 +88,13 @@ typedef struct tl_context_desc {
     /** EGL with TL_EGL_PLATFORM_DEVICE: the device's index in tl_context_egl_devices' list
      *  (0: the first). An index beyond the list is TL_ERROR_INVALID_ARGUMENT. */
     uint32_t egl_device;
-    /** Zeroed: malloc/free. Used for the tl_context and the OSMesa colour buffer; the platform
-     *  libraries (Mesa, EGL, GLFW) allocate with their own allocators. Give both functions or none. */
+    /** Zeroed: malloc/free. Used for everything thinlight allocates for the context (the
+     *  tl_context, each back end's state, the OSMesa colour buffer); the platform libraries
+     *  (Mesa, EGL, GLFW) allocate with their own allocators. Give both functions or none. */
     tl_allocator allocator;
-    /** Zeroed: silent. Receives every failure's message: a failed tl_context_create reports only
-     *  here; failures of calls on a context are also kept for tl_context_last_error. */
+    /** Zeroed: silent. Receives every failure's message, one line each: a failed
+     *  tl_context_create reports only here; failures of calls on a context are also kept for
+     *  tl_context_last_error. */
     tl_logger logger;
 } tl_context_desc;
 
@@ -160,9 +164,9 @@ TL_API tl_result tl_context_swap(tl_context *ctx);
  *  with. NULL is allowed. */
 TL_API void tl_context_destroy(tl_context *ctx);
 
-/** A detailed message about the last failure of a call on `ctx`; "" when there was none, and
- *  for NULL (a failed tl_context_create reports through its descriptor's logger). Valid until
- *  the next call on `ctx`. */
+/** The message of the last failure of a call on `ctx` (the line its logger received), kept until
+ *  the next failure, as tl_renderer_last_error; "" when no call has failed, and for NULL (a
+ *  failed tl_context_create reports through its descriptor's logger). Owned by the context. */
 TL_API const char *tl_context_last_error(const tl_context *ctx);
 
 /** GL_RENDERER as read at creation, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"; "" for NULL.

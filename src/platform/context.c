@@ -1,8 +1,5 @@
 /* tl_context: the back-end table, descriptor defaults, the AUTO order, dispatch, the strings read
  * at creation. */
-#include <stdlib.h>
-#include <string.h>
-
 #include "platform.h"
 
 #define TL__DEFAULT_WIDTH 640u
@@ -118,38 +115,13 @@ static void tl__read_strings(tl_context *ctx)
     }
 }
 
-/* Hands why tl_context_create failed to the desc's logger: there is no object to keep it. */
-#if defined(__GNUC__)
-__attribute__((format(printf, 3, 4)))
-#endif
-static tl_result tl__create_failed(const tl_context_desc *desc, tl_result r, const char *fmt, ...)
-{
-    if (!desc || !desc->logger.fn) return r;
-    char message[1024];
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(message, sizeof message, fmt, ap);
-    va_end(ap);
-    desc->logger.fn(desc->logger.user, TL_LOG_ERROR, message);
-    return r;
-}
-
-/* Hands a failure of a call on `ctx` (already in ctx->error) to its logger. */
-static inline tl_result tl__context_failed(tl_context *ctx, tl_result r)
-{
-    if (r != TL_OK && ctx->logger.fn) ctx->logger.fn(ctx->logger.user, TL_LOG_ERROR, ctx->error);
-    return r;
-}
-
-/* One back end (not DEFAULT or AUTO) into ctx; its message in ctx->error on failure. */
+/* One back end (not DEFAULT or AUTO) into ctx; why it failed in ctx->log. */
 static tl_result tl__create_with(tl_context *ctx, const tl__context_config *cfg, tl_context_backend backend)
 {
     const tl__backend_entry *b = &tl__backends[backend];
-    ctx->error[0] = '\0';
-    if (!b->ops) {
-        tl__context_error(ctx, "the %s back end is not built into this thinlight (%s)", b->label, b->how_to_build);
-        return TL_ERROR_UNSUPPORTED;
-    }
+    if (!b->ops)
+        return tl__log_fail(&ctx->log, TL_ERROR_UNSUPPORTED, "the %s back end is not built into this thinlight (%s)",
+                            b->label, b->how_to_build);
     ctx->backend = backend;
     ctx->ops = b->ops;
     tl_result r = b->ops->create(ctx, cfg);
@@ -157,10 +129,12 @@ static tl_result tl__create_with(tl_context *ctx, const tl__context_config *cfg,
     return r;
 }
 
-/* AUTO: the steps in order until one gives a context; otherwise every step's reason. */
+/* AUTO: the steps in order until one gives a context; otherwise every step's reason. Running
+ * out of memory ends the search: it says nothing about the back end, and going on would hide a
+ * GPU behind a software rasteriser. */
 static tl_result tl__create_auto(tl_context *ctx, const tl__context_config *cfg)
 {
-    char reasons[sizeof ctx->error] = "";
+    char reasons[sizeof ctx->log.last_error] = "";
     size_t used = 0;
     tl_result r = TL_ERROR_UNSUPPORTED;
     for (size_t i = 0; i < sizeof tl__auto_steps / sizeof tl__auto_steps[0]; i++) {
@@ -171,55 +145,58 @@ static tl_result tl__create_auto(tl_context *ctx, const tl__context_config *cfg)
         if (r == TL_OK) return TL_OK;
         if (used < sizeof reasons)
             used += (size_t)snprintf(reasons + used, sizeof reasons - used, "%s%s: %s", used ? "; " : "",
-                                     tl__auto_steps[i].label, ctx->error);
+                                     tl__auto_steps[i].label, ctx->log.last_error);
+        if (r == TL_ERROR_OUT_OF_MEMORY) break;
     }
-    memcpy(ctx->error, reasons, sizeof reasons);
-    return r;
+    return tl__log_fail(&ctx->log, r, "%s", reasons);
 }
 
 /* The descriptor's checks that need no back end; TL_OK or the failure, logged. */
 static tl_result tl__check_desc(const tl_context_desc *desc, const tl__context_config *cfg)
 {
+    const tl_logger *logger = &cfg->logger;
     if (desc && !desc->allocator.alloc != !desc->allocator.free)
-        return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT,
+        return tl__logger_fail(logger, TL_ERROR_INVALID_ARGUMENT,
                                  "tl_context_create: the allocator needs both alloc and free, or neither");
     if ((unsigned)cfg->backend >= TL_CONTEXT_BACKEND_COUNT_)
-        return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: unknown back end %d",
+        return tl__logger_fail(logger, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: unknown back end %d",
                                  (int)cfg->backend);
     if ((unsigned)cfg->egl_platform >= TL_EGL_PLATFORM_COUNT_)
-        return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: unknown EGL platform %d",
+        return tl__logger_fail(logger, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: unknown EGL platform %d",
                                  (int)cfg->egl_platform);
     if (cfg->major < 3 || (cfg->major == 3 && cfg->minor < 3) || cfg->minor < 0 || cfg->major > 4 ||
         cfg->minor > 9)
-        return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT,
+        return tl__logger_fail(logger, TL_ERROR_INVALID_ARGUMENT,
                                  "tl_context_create: OpenGL %d.%d requested, core profiles are 3.3 to 4.6",
                                  cfg->major, cfg->minor);
     if (cfg->width > 65536 || cfg->height > 65536)
-        return tl__create_failed(desc, TL_ERROR_LIMIT, "tl_context_create: %ux%u is beyond any back end's limit",
+        return tl__logger_fail(logger, TL_ERROR_LIMIT, "tl_context_create: %ux%u is beyond any back end's limit",
                                  (unsigned)cfg->width, (unsigned)cfg->height);
     return TL_OK;
 }
 
 tl_result tl_context_create(const tl_context_desc *desc, tl_context **out)
 {
-    if (out) *out = NULL;
-    if (!out) return tl__create_failed(desc, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: NULL output");
     tl__context_config cfg = tl__context_desc_defaults(desc);
+    if (out) *out = NULL;
+    if (!out) return tl__logger_fail(&cfg.logger, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: NULL output");
     tl_result r = tl__check_desc(desc, &cfg);
     if (r != TL_OK) return r;
+    tl__allocator_resolve(&cfg.allocator, &cfg.allocator); /* tl__check_desc refused a half one */
 
-    tl_context *ctx = tl__alloc_zeroed(&cfg.allocator, sizeof *ctx);
-    if (!ctx) return tl__create_failed(desc, TL_ERROR_OUT_OF_MEMORY, "tl_context_create: out of memory");
+    tl_context *ctx = tl__calloc(&cfg.allocator, 1, sizeof *ctx);
+    if (!ctx) return tl__logger_fail(&cfg.logger, TL_ERROR_OUT_OF_MEMORY, "tl_context_create: out of memory");
     ctx->allocator = cfg.allocator;
-    ctx->logger = cfg.logger;
     ctx->width = cfg.width;
     ctx->height = cfg.height;
     r = cfg.backend == TL_CONTEXT_BACKEND_AUTO ? tl__create_auto(ctx, &cfg) : tl__create_with(ctx, &cfg, cfg.backend);
     if (r != TL_OK) {
-        tl__create_failed(desc, r, "%s: %s", tl__backends[cfg.backend].label, ctx->error);
+        /* one line for the whole create, to the desc's logger: there is no object to keep it */
+        tl__logger_fail(&cfg.logger, r, "%s: %s", tl__backends[cfg.backend].label, ctx->log.last_error);
         tl__free(&cfg.allocator, ctx);
         return r;
     }
+    ctx->log = (tl__log){.logger = cfg.logger}; /* no failure yet: the fallbacks tried do not count */
     tl__read_strings(ctx);
     *out = ctx;
     return TL_OK;
@@ -232,8 +209,7 @@ tl_result tl_context_make_current(tl_context *ctx)
             if (tl__backends[b].ops) tl__backends[b].ops->release();
         return TL_OK;
     }
-    ctx->error[0] = '\0';
-    return tl__context_failed(ctx, ctx->ops->make_current(ctx));
+    return ctx->ops->make_current(ctx);
 }
 
 bool tl_context_is_current(const tl_context *ctx) { return ctx && ctx->ops->is_current(ctx); }
@@ -247,9 +223,8 @@ tl_gl_proc tl_context_get_proc_address(tl_context *ctx, const char *name)
 tl_result tl_context_swap(tl_context *ctx)
 {
     if (!ctx) return TL_ERROR_INVALID_ARGUMENT;
-    ctx->error[0] = '\0';
     /* OSMesa renders straight into its buffer; EGL has no default framebuffer */
-    return ctx->ops->swap ? tl__context_failed(ctx, ctx->ops->swap(ctx)) : TL_OK;
+    return ctx->ops->swap ? ctx->ops->swap(ctx) : TL_OK;
 }
 
 void tl_context_destroy(tl_context *ctx)
@@ -265,7 +240,7 @@ tl_gl_proc tl_context_proc_loader(void *ctx, const char *name)
     return tl_context_get_proc_address(ctx, name);
 }
 
-const char *tl_context_last_error(const tl_context *ctx) { return ctx ? ctx->error : ""; }
+const char *tl_context_last_error(const tl_context *ctx) { return ctx ? ctx->log.last_error : ""; }
 
 const char *tl_context_renderer_string(const tl_context *ctx) { return ctx ? ctx->renderer : ""; }
 
@@ -319,20 +294,15 @@ bool tl_context_backend_available(tl_context_backend backend)
 
 tl_result tl_context_egl_devices(tl_egl_device *devices, size_t capacity, size_t *count, const tl_logger *logger)
 {
-    if (!count) {
-        if (logger && logger->fn) logger->fn(logger->user, TL_LOG_ERROR, "tl_context_egl_devices: NULL count");
-        return TL_ERROR_INVALID_ARGUMENT;
-    }
+    if (!count) return tl__logger_fail(logger, TL_ERROR_INVALID_ARGUMENT, "tl_context_egl_devices: NULL count");
 #if defined(TL_HAVE_EGL)
     return tl__egl_devices(devices, capacity, count, logger);
 #else
     (void)devices;
     (void)capacity;
     *count = 0;
-    if (logger && logger->fn)
-        logger->fn(logger->user, TL_LOG_ERROR,
-                   "tl_context_egl_devices: the EGL back end is not built into this thinlight (configure with "
-                   "-DTHINLIGHT_WITH_EGL=ON and libegl-dev)");
-    return TL_ERROR_UNSUPPORTED;
+    return tl__logger_fail(logger, TL_ERROR_UNSUPPORTED,
+                           "tl_context_egl_devices: the EGL back end is not built into this thinlight (configure "
+                           "with -DTHINLIGHT_WITH_EGL=ON and libegl-dev)");
 #endif
 }

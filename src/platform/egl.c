@@ -74,16 +74,14 @@ static const char *tl__egl_error_name(EGLint e)
     return "an unknown EGL error";
 }
 
-/* The client's extensions; false with `why` when EGL cannot pick a platform at all. */
-static bool tl__egl_api_load(tl__egl_api *api, char *why, size_t size)
+/* The client's extensions; NULL, or the reason EGL cannot pick a platform at all. */
+static const char *tl__egl_api_load(tl__egl_api *api)
 {
     memset(api, 0, sizeof *api);
     api->client_extensions = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
-    if (!api->client_extensions || !tl__egl_has(api->client_extensions, "EGL_EXT_platform_base")) {
-        snprintf(why, size, "this EGL has no EGL_EXT_platform_base (no eglGetPlatformDisplayEXT): "
-                            "it cannot open a display without a window system");
-        return false;
-    }
+    if (!api->client_extensions || !tl__egl_has(api->client_extensions, "EGL_EXT_platform_base"))
+        return "this EGL has no EGL_EXT_platform_base (no eglGetPlatformDisplayEXT): it cannot open a display "
+               "without a window system";
     api->get_platform_display = (PFNEGLGETPLATFORMDISPLAYEXTPROC)eglGetProcAddress("eglGetPlatformDisplayEXT");
     if (tl__egl_has(api->client_extensions, "EGL_EXT_device_enumeration") ||
         tl__egl_has(api->client_extensions, "EGL_EXT_device_base")) {
@@ -93,11 +91,8 @@ static bool tl__egl_api_load(tl__egl_api *api, char *why, size_t size)
     api->platform_device = api->query_devices && api->query_device_string &&
                            tl__egl_has(api->client_extensions, "EGL_EXT_platform_device");
     api->platform_surfaceless = tl__egl_has(api->client_extensions, "EGL_MESA_platform_surfaceless");
-    if (!api->get_platform_display) {
-        snprintf(why, size, "eglGetProcAddress found no eglGetPlatformDisplayEXT");
-        return false;
-    }
-    return true;
+    if (!api->get_platform_display) return "eglGetProcAddress found no eglGetPlatformDisplayEXT";
+    return NULL;
 }
 
 /* Every device EGL lists (at most TL__EGL_MAX_DEVICES); 0 without device enumeration. */
@@ -154,17 +149,11 @@ static void tl__egl_describe(const tl__egl_api *api, EGLDeviceEXT device, uint32
 tl_result tl__egl_devices(tl_egl_device *devices, size_t capacity, size_t *count, const tl_logger *logger)
 {
     tl__egl_api api;
-    char why[256];
     *count = 0;
-    bool ok = tl__egl_api_load(&api, why, sizeof why);
-    if (ok && (!api.query_devices || !api.query_device_string)) {
-        snprintf(why, sizeof why, "this EGL lists no devices (no EGL_EXT_device_enumeration)");
-        ok = false;
-    }
-    if (!ok) {
-        if (logger && logger->fn) logger->fn(logger->user, TL_LOG_ERROR, why);
-        return TL_ERROR_UNSUPPORTED;
-    }
+    const char *why = tl__egl_api_load(&api);
+    if (!why && (!api.query_devices || !api.query_device_string))
+        why = "this EGL lists no devices (no EGL_EXT_device_enumeration)";
+    if (why) return tl__logger_fail(logger, TL_ERROR_UNSUPPORTED, "tl_context_egl_devices: %s", why);
     EGLDeviceEXT list[TL__EGL_MAX_DEVICES];
     EGLint n = tl__egl_query_devices(&api, list);
     *count = (size_t)n;
@@ -181,27 +170,26 @@ static tl_result tl__egl_pick_display(tl_context *ctx, const tl__context_config 
     EGLint n = api->platform_device ? tl__egl_query_devices(api, list) : 0;
     EGLint chosen = -1;
     if (cfg->egl_platform == TL_EGL_PLATFORM_DEVICE) {
-        if (!api->platform_device) {
-            tl__context_error(ctx, "EGL device %u asked for, but this EGL has no device platform "
-                                   "(EGL_EXT_device_enumeration, EGL_EXT_platform_device)", (unsigned)cfg->egl_device);
-            return TL_ERROR_UNSUPPORTED;
-        }
-        if ((EGLint)cfg->egl_device >= n || cfg->egl_device >= TL__EGL_MAX_DEVICES) {
-            tl__context_error(ctx, "there is no EGL device %u: EGL lists %d (0 to %d)", (unsigned)cfg->egl_device,
-                              (int)n, (int)n - 1);
-            return TL_ERROR_INVALID_ARGUMENT;
-        }
+        if (!api->platform_device)
+            return tl__log_fail(&ctx->log, TL_ERROR_UNSUPPORTED,
+                                "EGL device %u asked for, but this EGL has no device platform "
+                                "(EGL_EXT_device_enumeration, EGL_EXT_platform_device)",
+                                (unsigned)cfg->egl_device);
+        if ((EGLint)cfg->egl_device >= n || cfg->egl_device >= TL__EGL_MAX_DEVICES)
+            return tl__log_fail(&ctx->log, TL_ERROR_INVALID_ARGUMENT,
+                                "there is no EGL device %u: EGL lists %d (0 to %d)", (unsigned)cfg->egl_device,
+                                (int)n, (int)n - 1);
         chosen = (EGLint)cfg->egl_device;
     } else if (cfg->egl_platform == TL_EGL_PLATFORM_DEFAULT) {
         for (EGLint i = 0; chosen < 0 && i < n; i++)
             if (!tl__egl_device_is_software(api, list[i])) chosen = i;
         if (chosen < 0 && cfg->egl_gpu_only) {
             if (!api->platform_device)
-                tl__context_error(ctx, "this EGL has no device platform (EGL_EXT_platform_device)");
-            else
-                tl__context_error(ctx, "EGL lists no GPU device (%d device%s, Mesa's software rasteriser)", (int)n,
-                                  n == 1 ? "" : "s");
-            return TL_ERROR_UNSUPPORTED;
+                return tl__log_fail(&ctx->log, TL_ERROR_UNSUPPORTED,
+                                    "this EGL has no device platform (EGL_EXT_platform_device)");
+            return tl__log_fail(&ctx->log, TL_ERROR_UNSUPPORTED,
+                                "EGL lists no GPU device (%d device%s, Mesa's software rasteriser)", (int)n,
+                                n == 1 ? "" : "s");
         }
     }
     if (chosen >= 0) {
@@ -214,15 +202,13 @@ static tl_result tl__egl_pick_display(tl_context *ctx, const tl__context_config 
         snprintf(ctx->platform, sizeof ctx->platform, "EGL surfaceless");
         *display = api->get_platform_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, NULL);
     } else {
-        tl__context_error(ctx, "this EGL has neither a GPU device nor Mesa's surfaceless platform "
-                               "(EGL_MESA_platform_surfaceless)");
-        return TL_ERROR_UNSUPPORTED;
+        return tl__log_fail(&ctx->log, TL_ERROR_UNSUPPORTED,
+                            "this EGL has neither a GPU device nor Mesa's surfaceless platform "
+                            "(EGL_MESA_platform_surfaceless)");
     }
-    if (*display == EGL_NO_DISPLAY) {
-        tl__context_error(ctx, "eglGetPlatformDisplayEXT gave no display for %s: %s", ctx->platform,
-                          tl__egl_error_name(eglGetError()));
-        return TL_ERROR_GL;
-    }
+    if (*display == EGL_NO_DISPLAY)
+        return tl__log_fail(&ctx->log, TL_ERROR_GL, "eglGetPlatformDisplayEXT gave no display for %s: %s",
+                            ctx->platform, tl__egl_error_name(eglGetError()));
     return TL_OK;
 }
 
@@ -230,10 +216,9 @@ static tl_result tl__egl_pick_display(tl_context *ctx, const tl__context_config 
 static tl_result tl__egl_init_display(tl_context *ctx, EGLDisplay display, bool *egl15)
 {
     EGLint major = 0, minor = 0;
-    if (!eglInitialize(display, &major, &minor)) {
-        tl__context_error(ctx, "eglInitialize failed on %s: %s", ctx->platform, tl__egl_error_name(eglGetError()));
-        return TL_ERROR_GL;
-    }
+    if (!eglInitialize(display, &major, &minor))
+        return tl__log_fail(&ctx->log, TL_ERROR_GL, "eglInitialize failed on %s: %s", ctx->platform,
+                            tl__egl_error_name(eglGetError()));
     const char *ext = eglQueryString(display, EGL_EXTENSIONS);
     const char *apis = eglQueryString(display, EGL_CLIENT_APIS);
     *egl15 = major > 1 || (major == 1 && minor >= 5);
@@ -241,10 +226,9 @@ static tl_result tl__egl_init_display(tl_context *ctx, EGLDisplay display, bool 
     if (!apis || !strstr(apis, "OpenGL") || !eglBindAPI(EGL_OPENGL_API)) missing = "desktop OpenGL (EGL_OPENGL_API)";
     else if (!*egl15 && !tl__egl_has(ext, "EGL_KHR_create_context")) missing = "EGL_KHR_create_context";
     else if (!tl__egl_has(ext, "EGL_KHR_surfaceless_context")) missing = "EGL_KHR_surfaceless_context";
-    if (missing) {
-        tl__context_error(ctx, "%s (EGL %d.%d) lacks %s", ctx->platform, (int)major, (int)minor, missing);
-        return TL_ERROR_UNSUPPORTED;
-    }
+    if (missing)
+        return tl__log_fail(&ctx->log, TL_ERROR_UNSUPPORTED, "%s (EGL %d.%d) lacks %s", ctx->platform, (int)major,
+                            (int)minor, missing);
     char vendor[96] = "", driver[64] = "";
     tl__egl_display_names(display, vendor, sizeof vendor, driver, sizeof driver);
     size_t used = strlen(ctx->platform);
@@ -285,10 +269,8 @@ static tl_result tl__egl_make_context(tl_context *ctx, const tl__context_config 
 {
     static const int fallbacks[][2] = TL__CONTEXT_FALLBACKS;
     EGLConfig config;
-    if (!tl__egl_config(e->display, &config)) {
-        tl__context_error(ctx, "%s offers no desktop OpenGL config", ctx->platform);
-        return TL_ERROR_UNSUPPORTED;
-    }
+    if (!tl__egl_config(e->display, &config))
+        return tl__log_fail(&ctx->log, TL_ERROR_UNSUPPORTED, "%s offers no desktop OpenGL config", ctx->platform);
     int major = cfg->major, minor = cfg->minor;
     e->context = tl__egl_try(e->display, config, major, minor, cfg->debug, egl15);
     EGLint first_error = e->context == EGL_NO_CONTEXT ? eglGetError() : EGL_SUCCESS;
@@ -301,10 +283,10 @@ static tl_result tl__egl_make_context(tl_context *ctx, const tl__context_config 
         e->context = tl__egl_try(e->display, config, major, minor, cfg->debug, egl15);
     }
     if (e->context == EGL_NO_CONTEXT) {
-        tl__context_error(ctx, "eglCreateContext refused OpenGL %d.%d core%s on %s: %s", cfg->major, cfg->minor,
-                          cfg->exact_version ? "" : " and every core version down to 3.3", ctx->platform,
-                          tl__egl_error_name(first_error));
-        return TL_ERROR_GL;
+        eglGetError(); /* the last fallback's error is not left behind for the application */
+        return tl__log_fail(&ctx->log, TL_ERROR_GL, "eglCreateContext refused OpenGL %d.%d core%s on %s: %s",
+                            cfg->major, cfg->minor, cfg->exact_version ? "" : " and every core version down to 3.3",
+                            ctx->platform, tl__egl_error_name(first_error));
     }
     ctx->major = major;
     ctx->minor = minor;
@@ -314,21 +296,18 @@ static tl_result tl__egl_make_context(tl_context *ctx, const tl__context_config 
 static tl_result tl__egl_create(tl_context *ctx, const tl__context_config *cfg)
 {
     tl__egl_api api;
-    if (!tl__egl_api_load(&api, ctx->error, sizeof ctx->error)) return TL_ERROR_UNSUPPORTED;
-    tl__egl *e = tl__alloc_zeroed(&ctx->allocator, sizeof *e);
-    if (!e) {
-        tl__context_error(ctx, "out of memory");
-        return TL_ERROR_OUT_OF_MEMORY;
-    }
+    const char *why = tl__egl_api_load(&api);
+    if (why) return tl__log_fail(&ctx->log, TL_ERROR_UNSUPPORTED, "%s", why);
+    tl__egl *e = tl__calloc(&ctx->allocator, 1, sizeof *e);
+    if (!e) return tl__log_fail(&ctx->log, TL_ERROR_OUT_OF_MEMORY, "out of memory");
     bool egl15 = false;
     tl_result r = tl__egl_pick_display(ctx, cfg, &api, &e->display);
     if (r == TL_OK) r = tl__egl_init_display(ctx, e->display, &egl15);
     if (r == TL_OK) r = tl__egl_make_context(ctx, cfg, e, egl15);
     if (r == TL_OK && !eglMakeCurrent(e->display, EGL_NO_SURFACE, EGL_NO_SURFACE, e->context)) {
-        tl__context_error(ctx, "eglMakeCurrent with no surface failed on %s: %s", ctx->platform,
-                          tl__egl_error_name(eglGetError()));
+        r = tl__log_fail(&ctx->log, TL_ERROR_GL, "eglMakeCurrent with no surface failed on %s: %s", ctx->platform,
+                         tl__egl_error_name(eglGetError()));
         eglDestroyContext(e->display, e->context);
-        r = TL_ERROR_GL;
     }
     if (r != TL_OK) {
         ctx->platform[0] = '\0';
@@ -342,10 +321,8 @@ static tl_result tl__egl_create(tl_context *ctx, const tl__context_config *cfg)
 static tl_result tl__egl_make_current(tl_context *ctx)
 {
     tl__egl *e = ctx->impl;
-    if (!eglBindAPI(EGL_OPENGL_API) || !eglMakeCurrent(e->display, EGL_NO_SURFACE, EGL_NO_SURFACE, e->context)) {
-        tl__context_error(ctx, "eglMakeCurrent failed: %s", tl__egl_error_name(eglGetError()));
-        return TL_ERROR_GL;
-    }
+    if (!eglBindAPI(EGL_OPENGL_API) || !eglMakeCurrent(e->display, EGL_NO_SURFACE, EGL_NO_SURFACE, e->context))
+        return tl__log_fail(&ctx->log, TL_ERROR_GL, "eglMakeCurrent failed: %s", tl__egl_error_name(eglGetError()));
     return TL_OK;
 }
 

@@ -5,7 +5,6 @@
  * reset and set under the same lock. GLFW itself demands that init, terminate and window
  * creation happen on the main thread; the lock does not lift that rule. Errors are read with
  * glfwGetError (per thread), so no global error callback is installed. */
-#include <stdlib.h>
 #include <threads.h>
 
 #define GLFW_INCLUDE_NONE
@@ -51,22 +50,17 @@ static tl_result tl__glfw_create(tl_context *ctx, const tl__context_config *cfg)
 {
     static const int fallbacks[][2] = TL__CONTEXT_FALLBACKS;
     call_once(&tl__glfw_once, tl__glfw_init_lock);
-    if (!tl__glfw_lock_ok) {
-        tl__context_error(ctx, "could not create the mutex guarding glfwInit");
-        return TL_ERROR_OUT_OF_MEMORY;
-    }
-    tl__glfw *g = tl__alloc_zeroed(&ctx->allocator, sizeof *g);
-    if (!g) {
-        tl__context_error(ctx, "out of memory");
-        return TL_ERROR_OUT_OF_MEMORY;
-    }
+    if (!tl__glfw_lock_ok)
+        return tl__log_fail(&ctx->log, TL_ERROR_OUT_OF_MEMORY, "could not create the mutex guarding glfwInit");
+    tl__glfw *g = tl__calloc(&ctx->allocator, 1, sizeof *g);
+    if (!g) return tl__log_fail(&ctx->log, TL_ERROR_OUT_OF_MEMORY, "out of memory");
 
     mtx_lock(&tl__glfw_lock);
     if (tl__glfw_users == 0 && !glfwInit()) {
-        tl__context_error(ctx, "glfwInit failed: %s", tl__glfw_error());
+        tl_result r = tl__log_fail(&ctx->log, TL_ERROR_GL, "glfwInit failed: %s", tl__glfw_error());
         mtx_unlock(&tl__glfw_lock);
         tl__free(&ctx->allocator, g);
-        return TL_ERROR_GL;
+        return r;
     }
     tl__glfw_users++;
 
@@ -85,13 +79,14 @@ static tl_result tl__glfw_create(tl_context *ctx, const tl__context_config *cfg)
     }
     glfwDefaultWindowHints();
     if (!g->window) {
-        tl__context_error(ctx, "glfwCreateWindow refused OpenGL %d.%d core%s: %s", cfg->major,
-                          cfg->minor, cfg->exact_version ? "" : " and every core version down to 3.3",
-                          first);
+        tl_result r = tl__log_fail(&ctx->log, TL_ERROR_GL, "glfwCreateWindow refused OpenGL %d.%d core%s: %s",
+                                   cfg->major, cfg->minor,
+                                   cfg->exact_version ? "" : " and every core version down to 3.3", first);
+        glfwGetError(NULL); /* the last fallback's error is not left behind for the application */
         if (--tl__glfw_users == 0) glfwTerminate();
         mtx_unlock(&tl__glfw_lock);
         tl__free(&ctx->allocator, g);
-        return TL_ERROR_GL;
+        return r;
     }
     mtx_unlock(&tl__glfw_lock);
 
@@ -107,10 +102,8 @@ static tl_result tl__glfw_make_current(tl_context *ctx)
 {
     tl__glfw *g = ctx->impl;
     glfwMakeContextCurrent(g->window);
-    if (glfwGetCurrentContext() != g->window) {
-        tl__context_error(ctx, "glfwMakeContextCurrent failed: %s", tl__glfw_error());
-        return TL_ERROR_GL;
-    }
+    if (glfwGetCurrentContext() != g->window)
+        return tl__log_fail(&ctx->log, TL_ERROR_GL, "glfwMakeContextCurrent failed: %s", tl__glfw_error());
     return TL_OK;
 }
 

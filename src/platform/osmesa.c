@@ -1,7 +1,5 @@
 /* OSMesa back end: an off-screen core-profile context (llvmpipe) current on an RGBA8
  * buffer. No display, no window system. */
-#include <stdlib.h>
-
 #include <GL/osmesa.h>
 
 #include "platform.h"
@@ -26,14 +24,20 @@ static OSMesaContext tl__osmesa_try(int major, int minor)
     return OSMesaCreateContextAttribs(attribs, NULL);
 }
 
+/* Undoes a create that failed after its state was allocated; returns `r`. */
+static tl_result tl__osmesa_undo(tl_context *ctx, tl__osmesa *o, tl_result r)
+{
+    if (o->context) OSMesaDestroyContext(o->context);
+    tl__free(&ctx->allocator, o->buffer);
+    tl__free(&ctx->allocator, o);
+    return r;
+}
+
 static tl_result tl__osmesa_create(tl_context *ctx, const tl__context_config *cfg)
 {
     static const int fallbacks[][2] = TL__CONTEXT_FALLBACKS;
-    tl__osmesa *o = tl__alloc_zeroed(&ctx->allocator, sizeof *o);
-    if (!o) {
-        tl__context_error(ctx, "out of memory");
-        return TL_ERROR_OUT_OF_MEMORY;
-    }
+    tl__osmesa *o = tl__calloc(&ctx->allocator, 1, sizeof *o);
+    if (!o) return tl__log_fail(&ctx->log, TL_ERROR_OUT_OF_MEMORY, "out of memory");
 
     int major = cfg->major, minor = cfg->minor;
     o->context = tl__osmesa_try(major, minor);
@@ -45,47 +49,32 @@ static tl_result tl__osmesa_create(tl_context *ctx, const tl__context_config *cf
         minor = fi;
         o->context = tl__osmesa_try(major, minor);
     }
-    if (!o->context) {
-        if (cfg->exact_version)
-            tl__context_error(ctx, "OSMesaCreateContextAttribs refused an OpenGL %d.%d core context",
-                              cfg->major, cfg->minor);
-        else
-            tl__context_error(ctx,
-                              "OSMesaCreateContextAttribs refused OpenGL %d.%d core and every "
-                              "core version down to 3.3 (is this Mesa built with llvmpipe?)",
-                              cfg->major, cfg->minor);
-        tl__free(&ctx->allocator, o);
-        return TL_ERROR_GL;
-    }
+    if (!o->context)
+        return tl__osmesa_undo(ctx, o,
+                               tl__log_fail(&ctx->log, TL_ERROR_GL,
+                                            "OSMesaCreateContextAttribs refused OpenGL %d.%d core%s", cfg->major,
+                                            cfg->minor,
+                                            cfg->exact_version ? " (exact_version)"
+                                                               : " and every core version down to 3.3 (is this "
+                                                                 "Mesa built with llvmpipe?)"));
 
     /* The screen behind every OSMesa context answers this before anything is current. */
     GLint max_w = 0, max_h = 0;
     OSMesaGetIntegerv(OSMESA_MAX_WIDTH, &max_w);
     OSMesaGetIntegerv(OSMESA_MAX_HEIGHT, &max_h);
-    if ((max_w > 0 && cfg->width > (uint32_t)max_w) || (max_h > 0 && cfg->height > (uint32_t)max_h)) {
-        tl__context_error(ctx, "%ux%u exceeds the OSMesa maximum of %dx%d", (unsigned)cfg->width,
-                          (unsigned)cfg->height, (int)max_w, (int)max_h);
-        OSMesaDestroyContext(o->context);
-        tl__free(&ctx->allocator, o);
-        return TL_ERROR_LIMIT;
-    }
-    o->buffer = tl__alloc(&ctx->allocator, (size_t)cfg->width * cfg->height * 4u);
-    if (!o->buffer) {
-        tl__context_error(ctx, "out of memory for a %ux%u RGBA8 buffer", (unsigned)cfg->width,
-                          (unsigned)cfg->height);
-        OSMesaDestroyContext(o->context);
-        tl__free(&ctx->allocator, o);
-        return TL_ERROR_OUT_OF_MEMORY;
-    }
-    if (!OSMesaMakeCurrent(o->context, o->buffer, GL_UNSIGNED_BYTE, (GLsizei)cfg->width,
-                           (GLsizei)cfg->height)) {
-        tl__context_error(ctx, "OSMesaMakeCurrent failed for a %ux%u RGBA8 buffer",
-                          (unsigned)cfg->width, (unsigned)cfg->height);
-        OSMesaDestroyContext(o->context);
-        tl__free(&ctx->allocator, o->buffer);
-        tl__free(&ctx->allocator, o);
-        return TL_ERROR_GL;
-    }
+    if ((max_w > 0 && cfg->width > (uint32_t)max_w) || (max_h > 0 && cfg->height > (uint32_t)max_h))
+        return tl__osmesa_undo(ctx, o,
+                               tl__log_fail(&ctx->log, TL_ERROR_LIMIT, "%ux%u exceeds the OSMesa maximum of %dx%d",
+                                            (unsigned)cfg->width, (unsigned)cfg->height, (int)max_w, (int)max_h));
+    o->buffer = tl__alloc_array(&ctx->allocator, (size_t)cfg->width * cfg->height, 4);
+    if (!o->buffer)
+        return tl__osmesa_undo(ctx, o,
+                               tl__log_fail(&ctx->log, TL_ERROR_OUT_OF_MEMORY, "out of memory for a %ux%u RGBA8 buffer",
+                                            (unsigned)cfg->width, (unsigned)cfg->height));
+    if (!OSMesaMakeCurrent(o->context, o->buffer, GL_UNSIGNED_BYTE, (GLsizei)cfg->width, (GLsizei)cfg->height))
+        return tl__osmesa_undo(ctx, o,
+                               tl__log_fail(&ctx->log, TL_ERROR_GL, "OSMesaMakeCurrent failed for a %ux%u RGBA8 buffer",
+                                            (unsigned)cfg->width, (unsigned)cfg->height));
     ctx->impl = o;
     ctx->major = major;
     ctx->minor = minor;
@@ -96,11 +85,9 @@ static tl_result tl__osmesa_create(tl_context *ctx, const tl__context_config *cf
 static tl_result tl__osmesa_make_current(tl_context *ctx)
 {
     tl__osmesa *o = ctx->impl;
-    if (!OSMesaMakeCurrent(o->context, o->buffer, GL_UNSIGNED_BYTE, (GLsizei)ctx->width,
-                           (GLsizei)ctx->height)) {
-        tl__context_error(ctx, "OSMesaMakeCurrent failed");
-        return TL_ERROR_GL;
-    }
+    if (!OSMesaMakeCurrent(o->context, o->buffer, GL_UNSIGNED_BYTE, (GLsizei)ctx->width, (GLsizei)ctx->height))
+        return tl__log_fail(&ctx->log, TL_ERROR_GL, "OSMesaMakeCurrent failed for a %ux%u RGBA8 buffer",
+                            (unsigned)ctx->width, (unsigned)ctx->height);
     return TL_OK;
 }
 

@@ -1,12 +1,15 @@
-/* Private: the context object shared by the back ends (osmesa.c, egl.c, glfw.c) and context.c. */
+/* Private: the context object shared by the back ends (osmesa.c, egl.c, glfw.c) and context.c.
+ * Errors and memory go through src/core as in every layer: a back end fails with
+ * tl__log_fail(&ctx->log, result, ...) and allocates with tl__alloc / tl__calloc / tl__free on
+ * ctx->allocator. */
 #ifndef TL_PLATFORM_PLATFORM_H
 #define TL_PLATFORM_PLATFORM_H
 
-#include <stdarg.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 
+#include "core/alloc.h"
+#include "core/log.h"
 #include "thinlight/context.h"
 
 typedef struct tl__context_ops tl__context_ops;
@@ -19,10 +22,11 @@ struct tl_context {
     char renderer[128];     /* GL_RENDERER */
     char version[128];      /* GL_VERSION */
     char platform[256];     /* tl_context_platform_string, written by the back end */
-    char error[512];        /* last failure on this context */
     void *impl;             /* back-end state */
-    tl_allocator allocator; /* from the desc; zeroed: malloc/free */
-    tl_logger logger;       /* from the desc; zeroed: silent */
+    tl_allocator allocator; /* from the desc, resolved: both functions set */
+    /* tl_context_last_error and the desc's logger. Silent while tl_context_create runs the back
+     * ends (AUTO tries several; the create sends one line for all of them when it fails). */
+    tl__log log;
 };
 
 /* Descriptor with defaults resolved (tl__context_desc_defaults). */
@@ -42,39 +46,9 @@ typedef struct tl__context_config {
 /* Core versions tried, best first, after the requested one (unless exact_version). */
 #define TL__CONTEXT_FALLBACKS {{4, 6}, {4, 5}, {4, 4}, {4, 3}, {4, 2}, {4, 1}, {4, 0}, {3, 3}}
 
-#if defined(__GNUC__)
-__attribute__((format(printf, 2, 3)))
-#endif
-static inline void tl__context_error(tl_context *ctx, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    vsnprintf(ctx->error, sizeof ctx->error, fmt, ap);
-    va_end(ap);
-}
-
-/* Allocation through an allocator (zeroed: malloc/free). tl__alloc_zeroed clears the memory. */
-static inline void *tl__alloc(const tl_allocator *a, size_t size)
-{
-    return a->alloc ? a->alloc(size, a->user) : malloc(size);
-}
-static inline void *tl__alloc_zeroed(const tl_allocator *a, size_t size)
-{
-    void *p = tl__alloc(a, size);
-    if (p) memset(p, 0, size);
-    return p;
-}
-static inline void tl__free(const tl_allocator *a, void *ptr)
-{
-    if (!ptr) return;
-    if (a->free)
-        a->free(ptr, a->user);
-    else
-        free(ptr);
-}
-
 /* One back end. create fills ctx->impl, major/minor and ctx->platform and makes the context
- * current; on failure it leaves ctx->impl NULL, writes ctx->error and cleans up after itself.
+ * current; on failure it leaves ctx->impl NULL, records why (tl__log_fail) and cleans up after
+ * itself. Every other call that fails records why the same way, which also logs it.
  * release makes no context of this back end current on the calling thread; is_current tells whether
  * ctx is the current one. swap and size may be NULL: nothing to present, and the size asked for. */
 struct tl__context_ops {
