@@ -1,19 +1,11 @@
 // The C entry points, tl_scene_load_gltf and tl_scene_parse_gltf: argument checks, options
 // resolved into one context, the load (gltf_load.cpp) run inside one try block, and every failure
-// turned into a tl_result plus one line to the logger. The path load is the memory load with the
-// file's bytes and the default file callbacks (gltf_folder.cpp).
-#include "core/alloc.h"
+// turned into a tl_result plus one line to the logger (core/log.h, as every layer). The path load
+// is the memory load with the file's bytes and the default file callbacks (gltf_folder.cpp).
 #include "gltf_internal.h"
 
 namespace tl_gltf {
 namespace {
-
-void log_error(const tl_logger &logger, std::string line)
-{
-    for (char &ch : line)
-        if (ch == '\n' || ch == '\r') ch = ' ';
-    if (logger.fn) logger.fn(logger.user, TL_LOG_ERROR, line.c_str());
-}
 
 // Checks what can be checked without a context; nullptr when the options are usable.
 const char *bad_options(const tl_gltf_options &o)
@@ -64,19 +56,16 @@ template <class F> tl_result run(const tl_gltf_options &o, const char *name, tl_
             r = TL_ERROR_PARSE;
             message = "unknown error";
         }
-        log_error(c.logger, c.name + ": " + message);
-        return r;
+        return tl__logger_fail(&c.logger, r, "%s: %s", c.name.c_str(), message.c_str());
     } catch (...) {
         // Only reachable when even the context or the message could not be built.
-        if (o.logger.fn) o.logger.fn(o.logger.user, TL_LOG_ERROR, "glTF load: out of memory");
-        return TL_ERROR_OUT_OF_MEMORY;
+        return tl__logger_fail(&o.logger, TL_ERROR_OUT_OF_MEMORY, "%s: out of memory", name);
     }
 }
 
 tl_result early(const tl_gltf_options &o, tl_result r, const std::string &message)
 {
-    log_error(o.logger, message);
-    return r;
+    return tl__logger_fail(&o.logger, r, "%s", message.c_str());
 }
 
 } // namespace

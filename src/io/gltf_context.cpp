@@ -12,15 +12,14 @@ void fail(tl_result result, const std::string &message) { throw failure{result, 
 void warn(const context &c, const std::string &message)
 {
     if (!c.logger.fn) return;
-    // The logger takes one line per call; tinygltf's warnings can hold several.
+    // tinygltf's warnings can hold several, one a line: each is a warning of its own.
     size_t start = 0;
     while (start <= message.size()) {
         size_t end = message.find_first_of("\r\n", start);
         if (end == std::string::npos) end = message.size();
-        if (end > start) {
-            std::string line = c.name + ": " + message.substr(start, end - start);
-            c.logger.fn(c.logger.user, TL_LOG_WARNING, line.c_str());
-        }
+        if (end > start)
+            tl__logger_message(&c.logger, TL_LOG_WARNING, "%s: %s", c.name.c_str(),
+                               message.substr(start, end - start).c_str());
         start = end + 1;
     }
 }
@@ -58,7 +57,7 @@ void *alloc_bytes(const context &c, size_t count, size_t size, const std::string
                                  " bytes overflow the address space");
     size_t bytes = count * size;
     charge(c, bytes, what);
-    void *p = c.alloc.alloc(bytes ? bytes : 1, c.alloc.user);
+    void *p = tl__alloc(&c.alloc, bytes);
     if (!p) {
         uncharge(c, bytes);
         fail(TL_ERROR_OUT_OF_MEMORY, what + ": out of memory (" + std::to_string(bytes) + " bytes)");
@@ -70,7 +69,7 @@ void free_bytes(const context &c, void *ptr, size_t bytes)
 {
     if (!ptr) return;
     uncharge(c, bytes);
-    c.alloc.free(ptr, c.alloc.user);
+    tl__free(&c.alloc, ptr);
 }
 
 } // namespace tl_gltf

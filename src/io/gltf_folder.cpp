@@ -79,10 +79,10 @@ tl_result folder_read(void *user, const char *uri, size_t max_size, void **data,
         return refuse(r, TL_ERROR_LIMIT,
                       byte_size(f.size) + ", more than the load's memory budget allows (" + byte_size(max_size) + " left)",
                       why);
-    void *p = r.c->alloc.alloc(f.size ? f.size : 1, r.c->alloc.user);
+    void *p = tl__alloc(&r.c->alloc, f.size);
     if (!p) return refuse(r, TL_ERROR_OUT_OF_MEMORY, "out of memory", why);
     if (tl_io::read_all(f, p, &reason) != TL_OK) {
-        r.c->alloc.free(p, r.c->alloc.user);
+        tl__free(&r.c->alloc, p);
         return refuse(r, TL_ERROR_IO, reason, why);
     }
     *data = p;
@@ -93,7 +93,7 @@ tl_result folder_read(void *user, const char *uri, size_t max_size, void **data,
 void folder_release(void *user, void *data, size_t)
 {
     folder_reader &r = *static_cast<folder_reader *>(user);
-    r.c->alloc.free(data, r.c->alloc.user);
+    tl__free(&r.c->alloc, data);
 }
 
 } // namespace

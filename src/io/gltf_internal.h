@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "core/alloc.h"
+#include "core/log.h"
 #include "thinlight/io.h"
 
 namespace tl_gltf {
@@ -20,8 +22,8 @@ namespace tl_gltf {
 
 // Everything one load needs; options are resolved (no zero "defaults" left).
 struct context {
-    tl_allocator alloc{};           // both functions set
-    tl_logger logger{};
+    tl_allocator alloc{};           // resolved (both functions set); used through core/alloc.h
+    tl_logger logger{};             // errors and warnings go through core/log.h
     std::string name;               // the path, or options.name for memory loads; prefixes every message
     tl_gltf_files files{};          // external buffers and images; read == nullptr: none
     tl_gltf_normals normals = TL_GLTF_NORMALS_FLAT;
@@ -44,7 +46,8 @@ struct context {
 constexpr size_t max_json_depth = 64;
 
 // A failure: thrown anywhere inside the adapter, turned into a tl_result and one message line at
-// the C boundary. `message` is "element: what", without the file name.
+// the C boundary (tl__logger_fail, core/log.h). `message` is "element: what", without the file
+// name.
 struct failure {
     tl_result result;
     std::string message;
@@ -104,7 +107,7 @@ template <class T> struct stl_allocator {
         if (n > std::numeric_limits<size_t>::max() / sizeof(T)) throw std::bad_alloc();
         size_t bytes = n * sizeof(T);
         charge(*c, bytes, "temporary arrays");
-        void *p = c->alloc.alloc(bytes != 0 ? bytes : 1, c->alloc.user);
+        void *p = tl__alloc(&c->alloc, bytes);
         if (!p) {
             uncharge(*c, bytes);
             throw std::bad_alloc();
@@ -114,7 +117,7 @@ template <class T> struct stl_allocator {
     void deallocate(T *p, size_t n) noexcept
     {
         uncharge(*c, n * sizeof(T));
-        c->alloc.free(p, c->alloc.user);
+        tl__free(&c->alloc, p);
     }
     template <class U> bool operator==(const stl_allocator<U> &o) const noexcept { return c == o.c; }
     template <class U> bool operator!=(const stl_allocator<U> &o) const noexcept { return c != o.c; }

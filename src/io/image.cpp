@@ -1,6 +1,7 @@
 // Image files through OpenImageIO: tl_image_write, and PNG/JPEG reading through the decoder the
 // glTF textures use (image_decode.h). Exceptions and OIIO error strings become a tl_result plus
-// one line to the logger here; nothing C++ crosses the C API.
+// one line to the logger here (core/log.h, as every layer), and OIIO's per-thread error is left
+// empty; nothing C++ crosses the C API. Memory comes from the caller's allocator (core/alloc.h).
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include "core/alloc.h"
+#include "core/log.h"
 #include "image_decode.h"
 #include "io_file.h"
 #include "thinlight/file.h"
@@ -18,12 +20,9 @@
 
 namespace {
 
-tl_result report(const tl_logger &logger, tl_result r, std::string msg)
+tl_result report(const tl_logger &logger, tl_result r, const std::string &msg)
 {
-    for (char &ch : msg)
-        if (ch == '\n' || ch == '\r') ch = ' ';
-    if (logger.fn) logger.fn(logger.user, TL_LOG_ERROR, msg.c_str());
-    return r;
+    return tl__logger_fail(&logger, r, "%s", msg.c_str());
 }
 
 std::string extension_of(const std::string &path)
@@ -96,7 +95,10 @@ extern "C" tl_result tl_image_write(const char *path, const tl_image_desc *desc,
         std::string target(path), ext = extension_of(target);
         if (ext.empty()) return report(logger, TL_ERROR_INVALID_ARGUMENT, target + ": no file extension");
         auto out = OIIO::ImageOutput::create(target);
-        if (!out) return report(logger, TL_ERROR_UNSUPPORTED, target + ": no writer for '" + ext + "'");
+        if (!out) {
+            OIIO::geterror(); // said below; not left in OIIO's per-thread error for the application
+            return report(logger, TL_ERROR_UNSUPPORTED, target + ": no writer for '" + ext + "'");
+        }
         std::string why = refuse(*out, *desc);
         if (!why.empty()) return report(logger, TL_ERROR_UNSUPPORTED, target + ": " + why);
         std::vector<unsigned char> bytes;
@@ -123,11 +125,11 @@ struct allocator_sink final : tl_io::pixel_sink {
     explicit allocator_sink(const tl_allocator &alloc) : a(alloc) {}
     ~allocator_sink()
     {
-        if (px) a.free(px, a.user);
+        tl__free(&a, px);
     }
     uint8_t *pixels(size_t width, size_t height) override
     {
-        px = static_cast<uint8_t *>(a.alloc(width * height * 4, a.user));
+        px = static_cast<uint8_t *>(tl__alloc_array(&a, width * height, 4));
         return px;
     }
 };
@@ -204,7 +206,7 @@ extern "C" tl_result tl_image_read_rgba8(const char *path, const tl_image_read_d
         std::string why;
         if (tl_io::open_regular(path, &f, &why) != TL_OK) return report(d.logger, TL_ERROR_IO, name + ": " + why);
         if (f.size > ((size_t)1 << 30)) return report(d.logger, TL_ERROR_LIMIT, name + ": larger than 1 GiB");
-        bytes = a.alloc(f.size ? f.size : 1, a.user);
+        bytes = tl__alloc(&a, f.size);
         if (!bytes) return report(d.logger, TL_ERROR_OUT_OF_MEMORY, name + ": out of memory");
         r = tl_io::read_all(f, bytes, &why) == TL_OK
                 ? decode(static_cast<const unsigned char *>(bytes), f.size, d, name, out)
@@ -216,13 +218,13 @@ extern "C" tl_result tl_image_read_rgba8(const char *path, const tl_image_read_d
     } catch (...) {
         r = report(d.logger, TL_ERROR_PARSE, name + ": unknown error");
     }
-    if (bytes) a.free(bytes, a.user);
+    tl__free(&a, bytes);
     return r;
 }
 
 extern "C" void tl_rgba8_image_free(tl_rgba8_image *image)
 {
     if (!image) return;
-    if (image->rgba && image->allocator.free) image->allocator.free(image->rgba, image->allocator.user);
+    if (image->rgba) tl__free(&image->allocator, image->rgba);
     *image = tl_rgba8_image{};
 }

@@ -109,6 +109,7 @@ decode_status decode_rgba8(const unsigned char *data, size_t size, const std::st
     // The proxy outlives the reader, which may still touch it when it closes.
     OIIO::Filesystem::IOMemReader proxy(data, size);
     auto in = OIIO::ImageInput::create(format);
+    if (!in) OIIO::geterror(); // said below; not left in OIIO's per-thread error for the application
     if (!in || !in->supports("ioproxy")) {
         *why = std::string("no reader for ") + format + " images in memory";
         return decode_status::unsupported;
