@@ -157,21 +157,21 @@ static tl_result tl__check_desc(const tl_context_desc *desc, const tl__context_c
     const tl_logger *logger = &cfg->logger;
     if (desc && !desc->allocator.alloc != !desc->allocator.free)
         return tl__logger_fail(logger, TL_ERROR_INVALID_ARGUMENT,
-                                 "tl_context_create: the allocator needs both alloc and free, or neither");
+                               "tl_context_create: the allocator needs both alloc and free, or neither");
     if ((unsigned)cfg->backend >= TL_CONTEXT_BACKEND_COUNT_)
         return tl__logger_fail(logger, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: unknown back end %d",
-                                 (int)cfg->backend);
+                               (int)cfg->backend);
     if ((unsigned)cfg->egl_platform >= TL_EGL_PLATFORM_COUNT_)
         return tl__logger_fail(logger, TL_ERROR_INVALID_ARGUMENT, "tl_context_create: unknown EGL platform %d",
-                                 (int)cfg->egl_platform);
+                               (int)cfg->egl_platform);
     if (cfg->major < 3 || (cfg->major == 3 && cfg->minor < 3) || cfg->minor < 0 || cfg->major > 4 ||
         cfg->minor > 9)
         return tl__logger_fail(logger, TL_ERROR_INVALID_ARGUMENT,
-                                 "tl_context_create: OpenGL %d.%d requested, core profiles are 3.3 to 4.6",
-                                 cfg->major, cfg->minor);
+                               "tl_context_create: OpenGL %d.%d requested, core profiles are 3.3 to 4.6",
+                               cfg->major, cfg->minor);
     if (cfg->width > 65536 || cfg->height > 65536)
         return tl__logger_fail(logger, TL_ERROR_LIMIT, "tl_context_create: %ux%u is beyond any back end's limit",
-                                 (unsigned)cfg->width, (unsigned)cfg->height);
+                               (unsigned)cfg->width, (unsigned)cfg->height);
     return TL_OK;
 }
 
