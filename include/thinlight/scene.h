@@ -31,14 +31,22 @@ typedef struct tl_texture {
     char name[64];   /**< for debug labels and messages, NUL-terminated */
 } tl_texture;
 
-/** A texture index meaning "no texture". */
-#define TL_NO_TEXTURE UINT32_MAX
+/** A material's reference to texture `index` of tl_scene.textures: the index + 1, so that 0, the
+ *  zeroed field, means "no texture" (`.albedo_map = TL_TEXTURE_MAP(0)` is texture 0). */
+#define TL_TEXTURE_MAP(index) ((uint32_t)(index) + 1u)
+
+/** The albedo of a material with no colour at all (tl_material): plain grey, linear. */
+#define TL_MATERIAL_DEFAULT_ALBEDO 0.8f
 
 /**
  * The renderer's material: Lambert diffuse + normalised Blinn-Phong specular (docs/renderer.md).
- * Textures are indices into the scene's textures or TL_NO_TEXTURE; any other index past
- * texture_count is refused by tl_renderer_set_scene. Colour textures (albedo,
- * emissive) hold sRGB-encoded values; data textures (normal, metallic-roughness, occlusion) linear.
+ * Every field's zero is its default, so a zeroed tl_material is plain grey: albedo
+ * TL_MATERIAL_DEFAULT_ALBEDO, no specular, no emission, opaque, no texture.
+ *
+ * Textures are maps: a texture's index in the scene's textures + 1 (TL_TEXTURE_MAP), 0 for none; a
+ * map past texture_count is refused by tl_renderer_set_scene, naming the field. Colour textures
+ * (albedo, emissive) hold sRGB-encoded values; data textures (normal, metallic-roughness,
+ * occlusion) linear.
  *
  * With TL_MATERIAL_METALLIC_ROUGHNESS the material is glTF's metallic-roughness model, converted
  * per pixel by the one function of docs/gltf.md: base = albedo * albedo texture,
@@ -47,23 +55,29 @@ typedef struct tl_texture {
  * are used as they are (the loader has already converted constant factors).
  */
 typedef struct tl_material {
-    float albedo[3];          /**< linear diffuse colour (glTF: base colour), times the texture */
+    /** Linear diffuse colour (glTF: base colour), times the albedo map. All three zero with
+     *  specular and emissive zero too (a material with no colour at all, as a zeroed one):
+     *  TL_MATERIAL_DEFAULT_ALBEDO. A negative component means exactly 0: `.albedo = {-1, -1, -1}`
+     *  is a black material that reflects and emits nothing. */
+    float albedo[3];
     float specular[3];        /**< linear specular colour (F0); all zero = no specular */
     float gloss;              /**< [0,1], see tl_gloss_to_specular_power */
-    float emissive[3];        /**< linear emitted radiance, times the emissive texture */
-    float alpha;              /**< opacity for ALPHA_MASK / ALPHA_BLEND, times the albedo texture's alpha */
+    float emissive[3];        /**< linear emitted radiance, times the emissive map; zero: none */
+    /** Opacity, times the albedo map's alpha; read only with TL_MATERIAL_ALPHA_MASK or
+     *  TL_MATERIAL_ALPHA_BLEND (without them, the default, the material is opaque). */
+    float alpha;
     float alpha_cutoff;       /**< alpha-test threshold (alpha mode MASK) */
     float metallic;           /**< TL_MATERIAL_METALLIC_ROUGHNESS only */
     float roughness;          /**< TL_MATERIAL_METALLIC_ROUGHNESS only */
     float normal_scale;       /**< scales the normal map's xy (glTF normalTexture.scale); 0 = 1 */
     float occlusion_strength; /**< glTF occlusionTexture.strength, scales the ambient term; 0 = 1 */
-    uint32_t albedo_texture;  /**< RGBA: colour, alpha; or TL_NO_TEXTURE */
-    uint32_t normal_texture;  /**< tangent-space normal map, or TL_NO_TEXTURE */
-    uint32_t metallic_roughness_texture; /**< G roughness, B metallic (glTF), or TL_NO_TEXTURE */
-    uint32_t emissive_texture;  /**< or TL_NO_TEXTURE */
-    uint32_t occlusion_texture; /**< R ambient occlusion, or TL_NO_TEXTURE */
-    uint32_t flags;           /**< TL_MATERIAL_* */
-    char name[64];            /**< for messages, NUL-terminated */
+    uint32_t albedo_map;      /**< RGBA: colour, alpha; TL_TEXTURE_MAP(index), 0 = none */
+    uint32_t normal_map;      /**< tangent-space normal map (the plan adds tangents); 0 = none */
+    uint32_t metallic_roughness_map; /**< G roughness, B metallic (glTF); 0 = none */
+    uint32_t emissive_map;    /**< times emissive; 0 = none */
+    uint32_t occlusion_map;   /**< R ambient occlusion; 0 = none */
+    uint32_t flags;           /**< TL_MATERIAL_*; 0: single-sided, opaque, Blinn-Phong */
+    char name[64];            /**< for messages, NUL-terminated; may be empty */
 } tl_material;
 
 /** Material flag: no back-face culling; back faces are shaded with the flipped normal. */

@@ -141,7 +141,7 @@ static tl_result tl__scene_counts(tl_renderer *r, const tl_scene *s)
         {s->index_count, TL__MAX_SCENE_INDICES, "indices (a 2 GiB index buffer)"},
         {s->object_count, UINT32_MAX, "objects"},
         {s->material_count, UINT32_MAX, "materials"},
-        {s->texture_count, UINT32_MAX - 1u, "textures"},
+        {s->texture_count, UINT32_MAX, "textures (materials name texture i as map i + 1, a uint32_t)"},
     };
     for (size_t i = 0; i < sizeof c / sizeof c[0]; i++)
         if (c[i].count > c[i].limit)
@@ -202,7 +202,8 @@ tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s)
     if ((res = tl__lights_count(r, s->light_count)) != TL_OK) return res;
     for (size_t i = 0; i < s->object_count; i++) {
         const tl_object *o = &s->objects[i];
-        if ((uint64_t)o->first_index + o->index_count > s->index_count || o->material >= s->material_count)
+        int no_material = o->material >= s->material_count && !(s->material_count == 0 && o->material == 0);
+        if ((uint64_t)o->first_index + o->index_count > s->index_count || no_material)
             return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
                             "renderer: object %zu draws indices %u..%llu or material %u, outside the scene's %zu "
                             "indices and %zu materials", i, o->first_index,
@@ -247,7 +248,7 @@ static GLuint tl__upload_texture(tl_renderer *r, const tl_texture *tx, int srgb)
 
 static GLuint tl__slot_texture(tl_renderer *r, const tl_scene *s, uint32_t index, int srgb)
 {
-    if (index == TL_NO_TEXTURE) return 0;
+    if (index == TL__NO_TEXTURE) return 0;
     GLuint *slot = srgb ? &r->tex_srgb[index] : &r->tex_linear[index];
     if (!*slot) *slot = tl__upload_texture(r, &s->textures[index], srgb);
     return *slot;
@@ -270,15 +271,18 @@ static void tl__material_record(const tl_material *m, int texture_mask, tl__mate
     u->texture_mask = texture_mask;
 }
 
-/* Textures and one std140 record per material, in one immutable uniform buffer. */
+/* Textures and one std140 record per material (a scene without materials: the zeroed one), with
+ * their zero defaults resolved, in one immutable uniform buffer. */
 static tl_result tl__upload_materials(tl_renderer *r, const tl_scene *s)
 {
     size_t n = s->material_count ? s->material_count : 1;
     r->material_stride = (sizeof(tl__material_ubo) + r->ubo_align - 1) / r->ubo_align * r->ubo_align;
     uint8_t *records = (uint8_t *)tl__calloc(&r->alloc, n, r->material_stride);
     if (!records) return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for %zu materials", n);
-    for (size_t i = 0; i < s->material_count; i++) {
-        const tl_material *m = &s->materials[i];
+    for (size_t i = 0; i < n; i++) {
+        tl_material resolved;
+        tl__material_defaults(s->material_count ? &s->materials[i] : &(tl_material){0}, &resolved);
+        const tl_material *m = &resolved;
         int mask = 0;
         r->materials[i].flags = m->flags;
         for (int k = 0; k < TL__MATERIAL_TEXTURES; k++) {

@@ -225,30 +225,54 @@ tl_result tl__texture_check(const tl_texture *t, const char *what, uint32_t max_
 }
 
 const tl__texture_slot tl__material_texture_slots[TL__MATERIAL_TEXTURE_SLOTS] = {
-    {"albedo_texture", offsetof(tl_material, albedo_texture), 1},
-    {"normal_texture", offsetof(tl_material, normal_texture), 0},
-    {"metallic_roughness_texture", offsetof(tl_material, metallic_roughness_texture), 0},
-    {"emissive_texture", offsetof(tl_material, emissive_texture), 1},
-    {"occlusion_texture", offsetof(tl_material, occlusion_texture), 0},
+    {"albedo_map", offsetof(tl_material, albedo_map), 1},
+    {"normal_map", offsetof(tl_material, normal_map), 0},
+    {"metallic_roughness_map", offsetof(tl_material, metallic_roughness_map), 0},
+    {"emissive_map", offsetof(tl_material, emissive_map), 1},
+    {"occlusion_map", offsetof(tl_material, occlusion_map), 0},
 };
+
+static uint32_t tl__material_map(const tl_material *m, int k)
+{
+    uint32_t map;
+    memcpy(&map, (const char *)m + tl__material_texture_slots[k].offset, sizeof map);
+    return map;
+}
 
 uint32_t tl__material_texture(const tl_material *m, int k)
 {
-    uint32_t index;
-    memcpy(&index, (const char *)m + tl__material_texture_slots[k].offset, sizeof index);
-    return index;
+    uint32_t map = tl__material_map(m, k);
+    return map ? map - 1u : TL__NO_TEXTURE;
+}
+
+int tl__material_has_texture(const tl_material *m, int k, size_t texture_count)
+{
+    uint32_t map = tl__material_map(m, k);
+    return map != 0 && map - 1u < texture_count;
 }
 
 tl_result tl__material_check(const tl_material *m, const char *what, size_t texture_count, char *message, size_t size)
 {
     for (int k = 0; k < TL__MATERIAL_TEXTURE_SLOTS; k++) {
-        uint32_t index = tl__material_texture(m, k);
-        if (index != TL_NO_TEXTURE && index >= texture_count)
+        uint32_t map = tl__material_map(m, k);
+        if (map != 0 && map - 1u >= texture_count)
             return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size,
-                           "%s.%s = %u: past the scene's %zu textures (TL_NO_TEXTURE for none)", what,
-                           tl__material_texture_slots[k].name, index, texture_count);
+                           "%s.%s = %u: texture %u, past the scene's %zu textures (a map is a texture's index + 1, "
+                           "TL_TEXTURE_MAP; 0 for none)",
+                           what, tl__material_texture_slots[k].name, map, map - 1u, texture_count);
     }
     return TL_OK;
+}
+
+void tl__material_defaults(const tl_material *in, tl_material *out)
+{
+    *out = *in;
+    int colour = 0;
+    for (int k = 0; k < 3; k++) colour |= in->albedo[k] != 0.0f || in->specular[k] != 0.0f || in->emissive[k] != 0.0f;
+    for (int k = 0; k < 3; k++)
+        out->albedo[k] = !colour ? TL_MATERIAL_DEFAULT_ALBEDO : in->albedo[k] < 0.0f ? 0.0f : in->albedo[k];
+    if (out->normal_scale == 0.0f) out->normal_scale = 1.0f;
+    if (out->occlusion_strength == 0.0f) out->occlusion_strength = 1.0f;
 }
 
 /* ---- lights ------------------------------------------------------------------------------------ */

@@ -57,20 +57,29 @@ void tl__camera_view_matrix(const tl__camera_view *v, float m[16]);
  * or TL_ERROR_LIMIT (over max_side) with the message naming the field after `what`. */
 tl_result tl__texture_check(const tl_texture *t, const char *what, uint32_t max_side, char *message, size_t size);
 
-/* The texture slots of tl_material, in the renderer's order (albedo, normal, metallic-roughness,
+/* The texture maps of tl_material, in the renderer's order (albedo, normal, metallic-roughness,
  * emissive, occlusion), and whether each holds sRGB-encoded colour. */
 #define TL__MATERIAL_TEXTURE_SLOTS 5
+enum { TL__MAP_ALBEDO, TL__MAP_NORMAL, TL__MAP_METALLIC_ROUGHNESS, TL__MAP_EMISSIVE, TL__MAP_OCCLUSION };
 typedef struct tl__texture_slot {
     const char *name; /* the field's name */
-    size_t offset;    /* of its uint32_t index in tl_material */
+    size_t offset;    /* of its uint32_t map (texture index + 1) in tl_material */
     int srgb;
 } tl__texture_slot;
 extern const tl__texture_slot tl__material_texture_slots[TL__MATERIAL_TEXTURE_SLOTS];
-/* The index in slot k of `m`. */
+/* What tl__material_texture gives for a map of 0. */
+#define TL__NO_TEXTURE UINT32_MAX
+/* The texture index that map k of `m` names (the map - 1), or TL__NO_TEXTURE. */
 uint32_t tl__material_texture(const tl_material *m, int k);
+/* Whether map k of `m` names one of `texture_count` textures. */
+int tl__material_has_texture(const tl_material *m, int k, size_t texture_count);
 
-/* Every texture index of a material is TL_NO_TEXTURE or below texture_count. */
+/* Every map of a material is 0 or names a texture below texture_count. */
 tl_result tl__material_check(const tl_material *m, const char *what, size_t texture_count, char *message, size_t size);
+/* A material with its zeroes resolved as tl_material documents them: a material with no colour
+ * (albedo, specular and emissive all zero) gets TL_MATERIAL_DEFAULT_ALBEDO, a negative albedo
+ * component is 0, normal_scale and occlusion_strength 0 are 1. */
+void tl__material_defaults(const tl_material *in, tl_material *out);
 
 /* A light's type and values: finite position, direction and colour (a negative colour is allowed:
  * the renderer takes it as 0); point and spot: a finite radius > 0 and source_radius >= 0; spot and

@@ -538,13 +538,10 @@ TL_TEST(scene_features)
     TL_CHECK_EQ_U(f.directional_lights, 0);
     tl_scene_destroy(s);
 
-    /* a hand-made scene: only materials that objects draw with count; a texture index past the
-     * array is no texture; TL_LIGHT_DEFAULT is a point light */
-    tl_material mats[2] = {{.albedo = {1, 1, 1}, .albedo_texture = 5, .normal_texture = TL_NO_TEXTURE,
-                            .flags = TL_MATERIAL_ALPHA_MASK},
-                           {.specular = {0.5f, 0.5f, 0.5f}, .emissive = {1, 0, 0},
-                            .albedo_texture = TL_NO_TEXTURE, .normal_texture = TL_NO_TEXTURE,
-                            .flags = TL_MATERIAL_ALPHA_BLEND}};
+    /* a hand-made scene: only materials that objects draw with count; a map past the array is no
+     * texture; TL_LIGHT_DEFAULT is a point light */
+    tl_material mats[2] = {{.albedo = {1, 1, 1}, .albedo_map = TL_TEXTURE_MAP(5), .flags = TL_MATERIAL_ALPHA_MASK},
+                           {.specular = {0.5f, 0.5f, 0.5f}, .emissive = {1, 0, 0}, .flags = TL_MATERIAL_ALPHA_BLEND}};
     tl_object objs[1] = {{.first_index = 0, .index_count = 3, .material = 0}};
     uint32_t idx[3] = {0, 0, 0};
     tl_light lights[2] = {{.type = TL_LIGHT_DEFAULT, .radius = 1}, {.type = TL_LIGHT_SPOT, .radius = 1}};
@@ -574,12 +571,12 @@ TL_TEST(scene_materials_textures_valid)
         }
         TL_CHECK(mt->gloss >= 0.0f && mt->gloss <= 1.0f);
         TL_CHECK_EQ_U(mt->flags, 0); /* all opaque, single-sided */
-        TL_CHECK(mt->albedo_texture == TL_NO_TEXTURE || mt->albedo_texture < s->texture_count);
-        TL_CHECK(mt->normal_texture == TL_NO_TEXTURE);
+        TL_CHECK(mt->albedo_map == 0 || mt->albedo_map - 1 < s->texture_count);
+        TL_CHECK(mt->normal_map == 0 && mt->metallic_roughness_map == 0 && mt->emissive_map == 0 && mt->occlusion_map == 0);
         glossy += mt->gloss >= 0.75f && mt->specular[0] >= 0.04f && mt->specular[0] <= 0.08f;
         matte += mt->gloss <= 0.25f && mt->specular[0] <= 0.03f;
         coloured_specular += mt->specular[0] != mt->specular[2];
-        textured += mt->albedo_texture != TL_NO_TEXTURE;
+        textured += mt->albedo_map != 0;
         emissive += mt->emissive[0] > 0.0f;
     }
     TL_CHECK(glossy >= 1 && matte >= 2 && coloured_specular >= 1 && textured >= 4 && emissive >= 1);
