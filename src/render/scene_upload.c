@@ -186,7 +186,7 @@ static tl_result tl__scene_parts(tl_renderer *r, const tl_scene *s)
 
 tl_result tl__scene_camera(tl_renderer *r, const tl_scene *s, tl__scene_frame *out)
 {
-    out->has_bounds = tl__objects_bounds(s->objects, s->object_count, out->bounds_min, out->bounds_max);
+    out->has_bounds = tl__scene_objects_bounds(s, out->bounds_min, out->bounds_max); /* zero bounds computed */
     tl_result res = tl__camera_resolve(&s->camera, "scene.camera", r->desc.depth_format,
                                        out->has_bounds ? out->bounds_min : NULL, out->has_bounds ? out->bounds_max : NULL,
                                        &out->camera, out->warning, sizeof out->warning);
@@ -212,6 +212,9 @@ tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s)
         if (o->index_count % 3)
             return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: object %zu draws %u indices, not whole triangles",
                             i, o->index_count);
+        char what[32], msg[TL__CHECK_MESSAGE_SIZE];
+        snprintf(what, sizeof what, "objects[%zu]", i);
+        if ((res = tl__object_check(o, what, msg, sizeof msg)) != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
     }
     for (size_t i = 0; i < s->index_count; i++)
         if (s->indices[i] >= s->vertex_count)
@@ -337,6 +340,7 @@ tl_result tl__scene_upload(tl_renderer *r, const tl_scene *s)
         return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for the scene");
     }
     if (s->object_count) memcpy(r->objects, s->objects, s->object_count * sizeof *r->objects);
+    for (size_t i = 0; i < s->object_count; i++) tl__object_defaults(s, &r->objects[i]); /* zero: identity, computed */
     r->object_count = s->object_count;
     r->texture_count = s->texture_count;
     tl_result res = tl__upload_materials(r, s);

@@ -35,13 +35,42 @@ typedef struct tl__camera_view {
 /* The union of the objects' bounds (non-finite boxes left out); 0 when nothing is left. */
 int tl__objects_bounds(const tl_object *objects, size_t count, float min[3], float max[3]);
 
+/* ---- objects: their defaults (bounds.c) and their check (validate.c) ---- */
+
+/* Whether all 16 entries of a transform are zero (the default: the identity). */
+int tl__transform_is_zero(const float m[16]);
+/* Whether all six bounds of an object are zero (the default: computed from its vertices). */
+int tl__bounds_are_zero(const tl_object *o);
+/* An object's transform (finite) and its bounds unless zero (finite, min <= max on every axis;
+ * checked for objects with indices only: an empty object is never drawn). TL_ERROR_INVALID_ARGUMENT
+ * naming the field after `what` ("objects[3].bounds_min = (1, nan, 0): not finite"). */
+tl_result tl__object_check(const tl_object *o, const char *what, char *message, size_t size);
+/* tl_object_compute_bounds for an object whose index range, indices and positions the caller has
+ * checked: no error. */
+void tl__object_bounds_compute(const tl_scene *s, const tl_object *o, float min[3], float max[3]);
+/* An object as the renderer draws it: a zero transform made the identity, zero bounds computed.
+ * `o` must be valid in `s` (tl_renderer_set_scene's checks). */
+void tl__object_defaults(const tl_scene *s, tl_object *o);
+/* The union of the bounds of the scene's objects that have indices, zero bounds computed (as
+ * tl__object_defaults); 0 when no object has indices. Objects must be valid in `s`. */
+int tl__scene_objects_bounds(const tl_scene *s, float min[3], float max[3]);
+
+/* The default view (tl_camera): from the front, right and above the bounds (glTF: +Z front, +Y
+ * up), far enough that their bounding sphere fits the vertical field of view `fov_y` with 5% to
+ * spare; near_z half the distance to the sphere, far_z twice the distance to its far side, up +Y,
+ * fov_y as given. The glTF loader's camera for a file without one. */
+void tl__camera_frame(const float bmin[3], const float bmax[3], double fov_y, tl_camera *out);
+
 /*
  * Resolves a camera as a frame uses it. Errors (TL_ERROR_INVALID_ARGUMENT, the message naming the
- * field after `what`, e.g. "camera"): a non-finite position, target or up; position == target;
- * fov_y negative, NaN, not below pi or too narrow for a float projection; near_z negative or not
- * finite; far_z negative, NaN, or finite and not beyond near_z. Defaults: fov_y 0 = 60 degrees,
- * near_z 0 = 0.1, far_z 0 or +Inf = infinite, up 0 = +Y; an up parallel to the view is replaced
- * by the limit of views tilted towards -Z (or +Y when up is along Z), so the view stays defined.
+ * field after `what`, e.g. "camera"): a non-finite position, target or up; position == target
+ * (not both zero); fov_y negative, NaN, not below pi or too narrow for a float projection;
+ * near_z negative or not finite; far_z negative, NaN, or finite and not beyond near_z.
+ * Defaults: fov_y 0 = 60 degrees,
+ * near_z 0 = 0.1, far_z 0 or +Inf = infinite, up 0 = +Y; position and target both zero: the
+ * default view, tl__camera_frame of the bounds (near_z 0 = its near plane), or with NULL bounds
+ * the origin looking down -Z; an up parallel to the view is replaced by the limit of views
+ * tilted towards -Z (or +Y when up is along Z), so the view stays defined.
  * Fallback (TL_OK, out->near_raised, the warning in `message`): a near_z below the floor of
  * `depth` (2^-24 of the distance to the bounds' farthest corner, or the far plane when nearer, for
  * D24; 2^-126 for reversed D32F), where the depth holds nothing of the scene, is raised to 2^-16 of
