@@ -361,8 +361,9 @@ TL_TEST(scene_compute_bounds_fills_objects_and_scene)
     TL_CHECK(memcmp(b.s.bounds_min, lo, sizeof lo) == 0 && memcmp(b.s.bounds_max, hi, sizeof hi) == 0);
 }
 
-/* Bounds that are not zero must be finite with min <= max on every axis: anything else is refused
- * naming the object and the field (NaN bounds were accepted and the object silently culled). */
+/* Bounds that are not zero must be finite with min <= max on every axis, and a transform finite:
+ * anything else is refused naming the object and the field (NaN bounds were accepted and the
+ * object silently culled; a non-finite transform was accepted without a word). */
 TL_TEST(object_bounds_nan_or_inverted_refused_naming_the_field)
 {
     static boxes b;
@@ -378,6 +379,11 @@ TL_TEST(object_bounds_nan_or_inverted_refused_naming_the_field)
     fprintf(stderr, "  inverted: %s\n", s.error);
     TL_CHECK(s.set == TL_ERROR_INVALID_ARGUMENT && strstr(s.error, "objects[1].bounds_max = (18.5, 2, -2): below "
                                                                     "bounds_min = (16.5, 0, -1) on z"));
+    build_boxes(&b, WITH_BOUNDS);
+    b.obj[2].transform[5] = INFINITY;
+    take(&b.s, NULL, &s);
+    fprintf(stderr, "  infinite transform: %s\n", s.error);
+    TL_CHECK(s.set == TL_ERROR_INVALID_ARGUMENT && strstr(s.error, "objects[2].transform[5] = inf: not finite"));
 }
 
 /* ---- tl_camera, tl_scene ----------------------------------------------------------------------- */
