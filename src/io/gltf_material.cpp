@@ -93,7 +93,8 @@ tl_material convert_material(const context &c, const tinygltf::Model &m, int ind
     }
     // Black on purpose (a black metal that emits nothing): all-zero colour is tl_material's grey
     bool colour = false;
-    for (int i = 0; i < 3; i++) colour = colour || out.albedo[i] != 0.0f || out.specular[i] != 0.0f || out.emissive[i] != 0.0f;
+    for (int i = 0; i < 3; i++)
+        colour = colour || out.albedo[i] != 0.0f || out.specular[i] != 0.0f || out.emissive[i] != 0.0f;
     if (!colour)
         for (float &a : out.albedo) a = -1.0f;
     out.gloss = 1.0f - rough;

@@ -45,7 +45,8 @@ void tl__object_bounds_compute(const tl_scene *s, const tl_object *o, float min[
 void tl__object_defaults(const tl_scene *s, tl_object *o)
 {
     if (tl__bounds_are_zero(o)) tl__object_bounds_compute(s, o, o->bounds_min, o->bounds_max);
-    if (tl__transform_is_zero(o->transform)) o->transform[0] = o->transform[5] = o->transform[10] = o->transform[15] = 1.0f;
+    if (tl__transform_is_zero(o->transform))
+        o->transform[0] = o->transform[5] = o->transform[10] = o->transform[15] = 1.0f;
 }
 
 int tl__scene_objects_bounds(const tl_scene *s, float min[3], float max[3])

@@ -57,7 +57,8 @@ tl_result tl__object_check(const tl_object *o, const char *what, char *message, 
             return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size, "%s.transform[%d] = %g: not finite", what, k,
                            (double)o->transform[k]);
     if (!o->index_count || tl__bounds_are_zero(o)) return TL_OK;
-    const struct { const float *v; const char *name; } b[2] = {{o->bounds_min, "bounds_min"}, {o->bounds_max, "bounds_max"}};
+    const struct { const float *v; const char *name; } b[2] = {{o->bounds_min, "bounds_min"},
+                                                                {o->bounds_max, "bounds_max"}};
     for (int i = 0; i < 2; i++)
         if (!tl__finite3(b[i].v))
             return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size, "%s.%s = %s: not finite (all six zero: computed)",

@@ -572,7 +572,8 @@ TL_TEST(scene_materials_textures_valid)
         TL_CHECK(mt->gloss >= 0.0f && mt->gloss <= 1.0f);
         TL_CHECK_EQ_U(mt->flags, 0); /* all opaque, single-sided */
         TL_CHECK(mt->albedo_map == 0 || mt->albedo_map - 1 < s->texture_count);
-        TL_CHECK(mt->normal_map == 0 && mt->metallic_roughness_map == 0 && mt->emissive_map == 0 && mt->occlusion_map == 0);
+        TL_CHECK(mt->normal_map == 0 && mt->metallic_roughness_map == 0);
+        TL_CHECK(mt->emissive_map == 0 && mt->occlusion_map == 0);
         glossy += mt->gloss >= 0.75f && mt->specular[0] >= 0.04f && mt->specular[0] <= 0.08f;
         matte += mt->gloss <= 0.25f && mt->specular[0] <= 0.03f;
         coloured_specular += mt->specular[0] != mt->specular[2];
@@ -734,7 +735,8 @@ TL_TEST(object_bounds_bad_arguments)
     tl_vertex v[3] = {{.position = {1, 2, 3}}, {.position = {4, 5, 6}}, {.position = {7, 8, NAN}}};
     uint32_t idx[6] = {0, 1, 0, 0, 1, 5};
     tl_object objs[2] = {{.index_count = 3, .bounds_max = {9, 9, 9}}, {.first_index = 3, .index_count = 3}};
-    tl_scene s = {.vertices = v, .vertex_count = 3, .indices = idx, .index_count = 6, .objects = objs, .object_count = 2};
+    tl_scene s = {.vertices = v, .vertex_count = 3, .indices = idx, .index_count = 6, .objects = objs,
+                  .object_count = 2};
     float lo[3] = {7, 7, 7}, hi[3] = {7, 7, 7};
     TL_CHECK(tl_object_compute_bounds(NULL, &objs[0], lo, hi) == TL_ERROR_INVALID_ARGUMENT);
     TL_CHECK(tl_object_compute_bounds(&s, NULL, lo, hi) == TL_ERROR_INVALID_ARGUMENT);
