@@ -522,12 +522,15 @@ TL_API const char *tl_renderer_last_error(const tl_renderer *r);
  *  materials or textures, more than 2^29 indices (a 2 GiB index buffer), or more than
  *  TL_RENDERER_MAX_LIGHTS lights is TL_ERROR_LIMIT; a count whose array is NULL, an index count
  *  or object range that is not whole triangles, an index >= vertex_count, an object whose index
- *  range or material lies outside the arrays, or a non-finite position is
- *  TL_ERROR_INVALID_ARGUMENT. Then textures (a side 0 or over GL_MAX_TEXTURE_SIZE: TL_ERROR_LIMIT,
- *  no pixels), materials' texture indices, lights and the camera are checked as tl_texture,
+ *  range or material lies outside the arrays (a scene without materials draws material 0 as the
+ *  zeroed tl_material), or a non-finite position is TL_ERROR_INVALID_ARGUMENT. Then objects'
+ *  transforms and bounds, textures (a side 0 or over GL_MAX_TEXTURE_SIZE: TL_ERROR_LIMIT, no
+ *  pixels), materials' texture maps, lights and the camera are checked as tl_object, tl_texture,
  *  tl_material, tl_light and tl_camera say, each refusal naming the field ("textures[3].width =
- *  0: outside 1..16384"; docs/renderer-limits.md). A refused scene leaves the previous one in
- *  place. */
+ *  0: outside 1..16384"; docs/renderer-limits.md). Zeroes are resolved in the renderer's copy
+ *  (the scene is not written): a zero transform is the identity, zero bounds are computed from
+ *  the object's triangles, a zeroed material is plain grey, a zeroed camera frames the objects. A
+ *  refused scene leaves the previous one in place. */
 TL_API tl_result tl_renderer_set_scene(tl_renderer *r, const tl_scene *scene);
 /** The most lights a scene or tl_renderer_set_lights may hold: 2^20, or fewer where the GL's
  *  GL_MAX_SHADER_STORAGE_BLOCK_SIZE (or tl_renderer_desc.max_storage_block_bytes) holds fewer

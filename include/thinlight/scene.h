@@ -31,14 +31,22 @@ typedef struct tl_texture {
     char name[64];   /**< for debug labels and messages, NUL-terminated */
 } tl_texture;
 
-/** A texture index meaning "no texture". */
-#define TL_NO_TEXTURE UINT32_MAX
+/** A material's reference to texture `index` of tl_scene.textures: the index + 1, so that 0, the
+ *  zeroed field, means "no texture" (`.albedo_map = TL_TEXTURE_MAP(0)` is texture 0). */
+#define TL_TEXTURE_MAP(index) ((uint32_t)(index) + 1u)
+
+/** The albedo of a material with no colour at all (tl_material): plain grey, linear. */
+#define TL_MATERIAL_DEFAULT_ALBEDO 0.8f
 
 /**
  * The renderer's material: Lambert diffuse + normalised Blinn-Phong specular (docs/renderer.md).
- * Textures are indices into the scene's textures or TL_NO_TEXTURE; any other index past
- * texture_count is refused by tl_renderer_set_scene. Colour textures (albedo,
- * emissive) hold sRGB-encoded values; data textures (normal, metallic-roughness, occlusion) linear.
+ * Every field's zero is its default, so a zeroed tl_material is plain grey: albedo
+ * TL_MATERIAL_DEFAULT_ALBEDO, no specular, no emission, opaque, no texture.
+ *
+ * Textures are maps: a texture's index in the scene's textures + 1 (TL_TEXTURE_MAP), 0 for none; a
+ * map past texture_count is refused by tl_renderer_set_scene, naming the field. Colour textures
+ * (albedo, emissive) hold sRGB-encoded values; data textures (normal, metallic-roughness,
+ * occlusion) linear.
  *
  * With TL_MATERIAL_METALLIC_ROUGHNESS the material is glTF's metallic-roughness model, converted
  * per pixel by the one function of docs/gltf.md: base = albedo * albedo texture,
@@ -47,23 +55,29 @@ typedef struct tl_texture {
  * are used as they are (the loader has already converted constant factors).
  */
 typedef struct tl_material {
-    float albedo[3];          /**< linear diffuse colour (glTF: base colour), times the texture */
+    /** Linear diffuse colour (glTF: base colour), times the albedo map. All three zero with
+     *  specular and emissive zero too (a material with no colour at all, as a zeroed one):
+     *  TL_MATERIAL_DEFAULT_ALBEDO. A negative component means exactly 0: `.albedo = {-1, -1, -1}`
+     *  is a black material that reflects and emits nothing. */
+    float albedo[3];
     float specular[3];        /**< linear specular colour (F0); all zero = no specular */
     float gloss;              /**< [0,1], see tl_gloss_to_specular_power */
-    float emissive[3];        /**< linear emitted radiance, times the emissive texture */
-    float alpha;              /**< opacity for ALPHA_MASK / ALPHA_BLEND, times the albedo texture's alpha */
+    float emissive[3];        /**< linear emitted radiance, times the emissive map; zero: none */
+    /** Opacity, times the albedo map's alpha; read only with TL_MATERIAL_ALPHA_MASK or
+     *  TL_MATERIAL_ALPHA_BLEND (without them, the default, the material is opaque). */
+    float alpha;
     float alpha_cutoff;       /**< alpha-test threshold (alpha mode MASK) */
     float metallic;           /**< TL_MATERIAL_METALLIC_ROUGHNESS only */
     float roughness;          /**< TL_MATERIAL_METALLIC_ROUGHNESS only */
     float normal_scale;       /**< scales the normal map's xy (glTF normalTexture.scale); 0 = 1 */
     float occlusion_strength; /**< glTF occlusionTexture.strength, scales the ambient term; 0 = 1 */
-    uint32_t albedo_texture;  /**< RGBA: colour, alpha; or TL_NO_TEXTURE */
-    uint32_t normal_texture;  /**< tangent-space normal map, or TL_NO_TEXTURE */
-    uint32_t metallic_roughness_texture; /**< G roughness, B metallic (glTF), or TL_NO_TEXTURE */
-    uint32_t emissive_texture;  /**< or TL_NO_TEXTURE */
-    uint32_t occlusion_texture; /**< R ambient occlusion, or TL_NO_TEXTURE */
-    uint32_t flags;           /**< TL_MATERIAL_* */
-    char name[64];            /**< for messages, NUL-terminated */
+    uint32_t albedo_map;      /**< RGBA: colour, alpha; TL_TEXTURE_MAP(index), 0 = none */
+    uint32_t normal_map;      /**< tangent-space normal map (the plan adds tangents); 0 = none */
+    uint32_t metallic_roughness_map; /**< G roughness, B metallic (glTF); 0 = none */
+    uint32_t emissive_map;    /**< times emissive; 0 = none */
+    uint32_t occlusion_map;   /**< R ambient occlusion; 0 = none */
+    uint32_t flags;           /**< TL_MATERIAL_*; 0: single-sided, opaque, Blinn-Phong */
+    char name[64];            /**< for messages, NUL-terminated; may be empty */
 } tl_material;
 
 /** Material flag: no back-face culling; back faces are shaded with the flipped normal. */
@@ -81,11 +95,18 @@ typedef struct tl_material {
 /** A drawable object: a range of the scene's index buffer with one material and a world transform. */
 typedef struct tl_object {
     uint32_t first_index;  /**< first index in tl_scene.indices */
-    uint32_t index_count;  /**< a multiple of 3 */
-    uint32_t material;     /**< index into tl_scene.materials */
-    float transform[16];   /**< column-major object-to-world */
-    float bounds_min[3];   /**< world-space axis-aligned bounds (culling, light lists) */
-    float bounds_max[3];   /**< world-space axis-aligned bounds */
+    uint32_t index_count;  /**< a multiple of 3; 0: an empty object, never drawn */
+    /** Index into tl_scene.materials; in a scene with no materials, 0 is the zeroed (plain grey)
+     *  material. */
+    uint32_t material;
+    float transform[16];   /**< column-major object-to-world; all zero = the identity */
+    /** World-space axis-aligned bounds (culling, light lists), or all six zero: the renderer
+     *  computes them from the object's vertices at tl_renderer_set_scene, as
+     *  tl_object_compute_bounds does (one pass over its indices). Otherwise finite with
+     *  bounds_min <= bounds_max on every axis, else refused, naming the field; bounds that do not
+     *  contain the object let culling drop it where it is visible. */
+    float bounds_min[3];
+    float bounds_max[3];   /**< see bounds_min */
 } tl_object;
 
 /** Kinds of light; each is drawn as its own instanced light volume. */
@@ -122,22 +143,29 @@ typedef struct tl_light {
 
 /** A perspective camera looking from position at target. The renderer refuses, naming the field,
  *  a camera it cannot draw (tl_renderer_render, and set_scene for the scene's); the table of
- *  what is refused and what falls back is in docs/renderer-limits.md. Every field is finite. */
+ *  what is refused and what falls back is in docs/renderer-limits.md. Every field is finite.
+ *  A zeroed camera is the default view: position and target both zero frame the scene's objects
+ *  (from the front, right and above, the glTF loader's default camera; at the origin looking
+ *  down -Z in a scene that draws nothing), and the other fields keep their own defaults. */
 typedef struct tl_camera {
     float position[3]; /**< world space eye */
-    float target[3];   /**< a world-space point the camera looks at; not the position */
+    /** A world-space point the camera looks at; not the position, unless both are zero (the
+     *  default view above). */
+    float target[3];
     /** World-space up; zero = +Y. Parallel to the view (looking straight down or up) the view is
      *  the limit of views whose target moves towards -Z (+Y when up lies along Z). */
     float up[3];
     float fov_y;  /**< vertical field of view in radians, in (0, pi); 0 = 60 degrees */
-    /** Near plane distance, > 0; 0 = 0.1. One so small that the depth format holds nothing of the
+    /** Near plane distance, > 0; 0 = 0.1 (the default view: half the distance to the sphere
+     *  around the scene's objects). One so small that the depth format holds nothing of the
      *  scene (below 2^-24 of the distance to its farthest point with D24) is raised to 2^-16 of
      *  that distance, with one warning. */
     float near_z;
     float far_z;  /**< beyond near_z; 0 or +Inf: an infinite far plane */
 } tl_camera;
 
-/** A scene: every array is owned by the scene and freed by tl_scene_destroy() with `allocator`. */
+/** A scene: every array is owned by the scene and freed by tl_scene_destroy() with `allocator`
+ *  (a scene the application builds itself it frees itself). A zeroed scene is an empty one. */
 typedef struct tl_scene {
     tl_vertex *vertices;      /**< vertex_count vertices */
     size_t vertex_count;      /**< at most 2^32 - 1 */
@@ -151,10 +179,12 @@ typedef struct tl_scene {
     size_t texture_count;     /**< number of textures */
     tl_light *lights;         /**< light_count lights */
     size_t light_count;       /**< number of lights */
-    tl_camera camera;         /**< the default view (tl_renderer_render with a NULL camera) */
-    float ambient[3];         /**< linear ambient radiance */
-    float bounds_min[3];      /**< world-space bounds of all objects */
-    float bounds_max[3];      /**< world-space bounds of all objects */
+    tl_camera camera;         /**< the view of tl_renderer_render with a NULL camera; zeroed: the default view */
+    float ambient[3];         /**< linear ambient radiance; zero: none */
+    /** World-space bounds of all objects, for the application (the renderer uses the objects'):
+     *  filled by the built-in scene, the glTF loader and tl_scene_compute_bounds. */
+    float bounds_min[3];
+    float bounds_max[3];      /**< see bounds_min */
     tl_allocator allocator;   /**< what allocated the arrays; zeroed: malloc/free */
 } tl_scene;
 
@@ -181,6 +211,23 @@ typedef struct tl_scene_feature_set {
 
 /** Fills *out with what `scene` uses; a NULL scene gives all zeros. */
 TL_API void tl_scene_features(const tl_scene *scene, tl_scene_feature_set *out);
+
+/**
+ * The world-space axis-aligned bounds of `object`'s triangles in `scene`: its vertices, as its
+ * indices name them, through its transform (all zero: the identity), in double precision rounded
+ * to float. An object with no indices gets zero bounds. TL_ERROR_INVALID_ARGUMENT for NULL
+ * pointers, an index range outside scene->indices, an index past scene->vertex_count or a
+ * position that is not finite; the bounds are then left as they were.
+ */
+TL_API tl_result tl_object_compute_bounds(const tl_scene *scene, const tl_object *object, float bounds_min[3],
+                                          float bounds_max[3]);
+/**
+ * Computes every object's bounds (tl_object_compute_bounds) and the scene's (their union over the
+ * objects that have indices; zero when none has). Call it after building a scene or moving its
+ * objects; tl_renderer_set_scene computes bounds left zero itself, in its own copy. Errors as
+ * tl_object_compute_bounds, for the first object that has one; the scene is then unchanged.
+ */
+TL_API tl_result tl_scene_compute_bounds(tl_scene *scene);
 
 /** Parameters of the built-in scene; zero means the default. */
 typedef struct tl_default_scene_desc {

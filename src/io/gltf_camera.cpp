@@ -13,25 +13,11 @@ namespace {
 
 const double pi = 3.14159265358979323846;
 
-// From the front, right and above (glTF: +Z front, +Y up), 60 degrees vertically, far enough that
-// the bounding sphere fits the vertical field of view with 5% to spare.
+// The renderer's default view (a zeroed tl_camera, scene/validate.h) at 60 degrees: from the front,
+// right and above, the bounding sphere in the vertical field of view with 5% to spare.
 void framing_camera(const float bmin[3], const float bmax[3], tl_camera *out)
 {
-    double c[3], r;
-    scene_frame(bmin, bmax, c, &r);
-    double fov = pi / 3.0;
-    double dist = 1.05 * r / std::sin(0.5 * fov);
-    double dir[3] = {0.5, 0.4, 1.0};
-    normalize3(dir);
-    *out = tl_camera{};
-    for (int k = 0; k < 3; k++) {
-        out->position[k] = to_float(c[k] + dir[k] * dist);
-        out->target[k] = to_float(c[k]);
-    }
-    out->up[1] = 1.0f;
-    out->fov_y = (float)fov;
-    out->near_z = to_float(0.5 * (dist - r)); // the sphere starts at dist - r > 0
-    out->far_z = to_float(2.0 * (dist + r));
+    tl__camera_frame(bmin, bmax, pi / 3.0, out);
 }
 
 // The file's camera as the renderer will resolve it (scene/validate.h, with the default D24

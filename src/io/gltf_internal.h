@@ -272,13 +272,13 @@ struct texture_table {
     texture_table &operator=(const texture_table &) = delete;
     const context *c;
     vec<tl_texture> textures;
-    vec<uint32_t> image_slot; // per glTF image: index into textures, TL_NO_TEXTURE, or unset
+    vec<uint32_t> image_slot; // per glTF image: its map (index into textures + 1), 0 for none, or unset
 };
-constexpr uint32_t image_unset = TL_NO_TEXTURE - 1;
+constexpr uint32_t image_unset = UINT32_MAX;
 
-// The scene texture for glTF texture `index` (decoded once per image), or TL_NO_TEXTURE after a
-// warning naming `what` when the image is missing or undecodable. Throws on bad references and
-// limits.
+// The map (tl_material: the scene texture's index + 1) for glTF texture `index` (decoded once per
+// image), or 0 after a warning naming `what` when the image is missing or undecodable; 0 for
+// index -1 (no texture). Throws on bad references and limits.
 uint32_t texture_for(const context &c, const tinygltf::Model &m, texture_table *t, int index, const std::string &what);
 
 // ---- materials (gltf_material.cpp) ----------------------------------------------------------

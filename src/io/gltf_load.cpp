@@ -126,7 +126,8 @@ void plan_meshes(const context &c, const tinygltf::Model &model, load_state *st)
 void plan_materials(const context &c, const tinygltf::Model &model, load_state *st)
 {
     vec<uint32_t> material_slot = make_vec<uint32_t>(c);
-    material_slot.assign(model.materials.size() + 1, TL_NO_TEXTURE);
+    const uint32_t unset = UINT32_MAX;
+    material_slot.assign(model.materials.size() + 1, unset);
     for (primitive_plan &p : st->plans) {
         if (p.skipped) continue;
         if (p.gltf_material >= 0 && (size_t)p.gltf_material >= model.materials.size())
@@ -134,12 +135,12 @@ void plan_materials(const context &c, const tinygltf::Model &model, load_state *
                                      ": material " + std::to_string(p.gltf_material) + " out of range (" +
                                      std::to_string(model.materials.size()) + " materials)");
         size_t slot = p.gltf_material >= 0 ? (size_t)p.gltf_material : model.materials.size();
-        if (material_slot[slot] == TL_NO_TEXTURE) {
+        if (material_slot[slot] == unset) {
             st->materials.push_back(convert_material(c, model, p.gltf_material, &st->textures));
             material_slot[slot] = (uint32_t)(st->materials.size() - 1);
         }
         p.material = material_slot[slot];
-        p.needs_tangents = st->materials[p.material].normal_texture != TL_NO_TEXTURE;
+        p.needs_tangents = st->materials[p.material].normal_map != 0;
     }
 }
 

@@ -26,7 +26,8 @@ const tinygltf::Material &default_material()
     return d;
 }
 
-// A texture slot: the scene texture, with a warning for the texture coordinate sets we ignore.
+// A texture slot: the scene texture's map (index + 1, 0 = none), with a warning for the texture
+// coordinate sets we ignore.
 uint32_t slot(const context &c, const tinygltf::Model &m, texture_table *t, int index, int tex_coord,
               const std::string &what)
 {
@@ -75,14 +76,14 @@ tl_material convert_material(const context &c, const tinygltf::Model &m, int ind
     }
 
     tl_material out = {};
-    out.albedo_texture = slot(c, m, t, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, name + ".baseColorTexture");
-    out.metallic_roughness_texture = slot(c, m, t, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                                          name + ".metallicRoughnessTexture");
-    out.normal_texture = slot(c, m, t, g.normalTexture.index, g.normalTexture.texCoord, name + ".normalTexture");
-    out.occlusion_texture = slot(c, m, t, g.occlusionTexture.index, g.occlusionTexture.texCoord, name + ".occlusionTexture");
-    out.emissive_texture = slot(c, m, t, g.emissiveTexture.index, g.emissiveTexture.texCoord, name + ".emissiveTexture");
+    out.albedo_map = slot(c, m, t, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, name + ".baseColorTexture");
+    out.metallic_roughness_map = slot(c, m, t, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
+                                      name + ".metallicRoughnessTexture");
+    out.normal_map = slot(c, m, t, g.normalTexture.index, g.normalTexture.texCoord, name + ".normalTexture");
+    out.occlusion_map = slot(c, m, t, g.occlusionTexture.index, g.occlusionTexture.texCoord, name + ".occlusionTexture");
+    out.emissive_map = slot(c, m, t, g.emissiveTexture.index, g.emissiveTexture.texCoord, name + ".emissiveTexture");
 
-    bool mr_map = out.metallic_roughness_texture != TL_NO_TEXTURE;
+    bool mr_map = out.metallic_roughness_map != 0;
     for (int i = 0; i < 3; i++) {
         // With the map, the renderer converts per pixel; without it, here (docs/gltf.md). The
         // specular and gloss fields hold the constant conversion in both cases.
@@ -90,6 +91,12 @@ tl_material convert_material(const context &c, const tinygltf::Model &m, int ind
         out.specular[i] = 0.04f + (base[i] - 0.04f) * metal;
         out.emissive[i] = emissive[i];
     }
+    // Black on purpose (a black metal that emits nothing): all-zero colour is tl_material's grey
+    bool colour = false;
+    for (int i = 0; i < 3; i++)
+        colour = colour || out.albedo[i] != 0.0f || out.specular[i] != 0.0f || out.emissive[i] != 0.0f;
+    if (!colour)
+        for (float &a : out.albedo) a = -1.0f;
     out.gloss = 1.0f - rough;
     out.metallic = metal;
     out.roughness = rough;

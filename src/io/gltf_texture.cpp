@@ -1,6 +1,6 @@
 // glTF textures to scene textures: each glTF image is decoded at most once, only when a material
-// uses it. A missing or undecodable image is a warning and TL_NO_TEXTURE (the material keeps its flat
-// colour); a broken reference in the JSON is an error.
+// uses it. A missing or undecodable image is a warning and map 0, no texture (the material keeps
+// its flat colour); a broken reference in the JSON is an error.
 #include <cstring>
 
 #include "gltf_internal.h"
@@ -87,7 +87,7 @@ texture_table::~texture_table()
 
 uint32_t texture_for(const context &c, const tinygltf::Model &m, texture_table *t, int index, const std::string &what)
 {
-    if (index < 0) return TL_NO_TEXTURE;
+    if (index < 0) return 0;
     if ((size_t)index >= m.textures.size())
         fail(TL_ERROR_PARSE, what + ": texture " + std::to_string(index) + " out of range (" +
                                  std::to_string(m.textures.size()) + " textures)");
@@ -95,7 +95,7 @@ uint32_t texture_for(const context &c, const tinygltf::Model &m, texture_table *
     if (tex.source < 0) {
         // e.g. only an extension's source (KTX2, WebP) that we do not read
         warn(c, element("textures", (size_t)index) + ": no image source we can read; using the flat colour");
-        return TL_NO_TEXTURE;
+        return 0;
     }
     if ((size_t)tex.source >= m.images.size())
         fail(TL_ERROR_PARSE, element("textures", (size_t)index) + ": source " + std::to_string(tex.source) +
@@ -109,8 +109,8 @@ uint32_t texture_for(const context &c, const tinygltf::Model &m, texture_table *
     std::string why;
     if (!decode_gltf_image(c, m, ii, &d, &why)) {
         warn(c, element("images", ii) + ": " + one_line(why) + "; using the flat colour");
-        t->image_slot[ii] = TL_NO_TEXTURE;
-        return TL_NO_TEXTURE;
+        t->image_slot[ii] = 0;
+        return 0;
     }
     tl_texture out = {};
     out.width = d.width;
@@ -125,11 +125,11 @@ uint32_t texture_for(const context &c, const tinygltf::Model &m, texture_table *
     if (tl__texture_check(&out, element("images", ii).c_str(), TL__GL45_MAX_TEXTURE_SIZE, msg, sizeof msg) != TL_OK) {
         free_bytes(c, out.rgba, (size_t)out.width * out.height * 4);
         warn(c, std::string(msg) + "; using the flat colour");
-        t->image_slot[ii] = TL_NO_TEXTURE;
-        return TL_NO_TEXTURE;
+        t->image_slot[ii] = 0;
+        return 0;
     }
     t->textures.push_back(out);
-    t->image_slot[ii] = (uint32_t)(t->textures.size() - 1);
+    t->image_slot[ii] = TL_TEXTURE_MAP(t->textures.size() - 1);
     return t->image_slot[ii];
 }
 

@@ -141,7 +141,7 @@ static tl_result tl__scene_counts(tl_renderer *r, const tl_scene *s)
         {s->index_count, TL__MAX_SCENE_INDICES, "indices (a 2 GiB index buffer)"},
         {s->object_count, UINT32_MAX, "objects"},
         {s->material_count, UINT32_MAX, "materials"},
-        {s->texture_count, UINT32_MAX - 1u, "textures"},
+        {s->texture_count, UINT32_MAX, "textures (materials name texture i as map i + 1, a uint32_t)"},
     };
     for (size_t i = 0; i < sizeof c / sizeof c[0]; i++)
         if (c[i].count > c[i].limit)
@@ -186,7 +186,7 @@ static tl_result tl__scene_parts(tl_renderer *r, const tl_scene *s)
 
 tl_result tl__scene_camera(tl_renderer *r, const tl_scene *s, tl__scene_frame *out)
 {
-    out->has_bounds = tl__objects_bounds(s->objects, s->object_count, out->bounds_min, out->bounds_max);
+    out->has_bounds = tl__scene_objects_bounds(s, out->bounds_min, out->bounds_max); /* zero bounds computed */
     tl_result res = tl__camera_resolve(&s->camera, "scene.camera", r->desc.depth_format,
                                        out->has_bounds ? out->bounds_min : NULL, out->has_bounds ? out->bounds_max : NULL,
                                        &out->camera, out->warning, sizeof out->warning);
@@ -202,7 +202,8 @@ tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s)
     if ((res = tl__lights_count(r, s->light_count)) != TL_OK) return res;
     for (size_t i = 0; i < s->object_count; i++) {
         const tl_object *o = &s->objects[i];
-        if ((uint64_t)o->first_index + o->index_count > s->index_count || o->material >= s->material_count)
+        int no_material = o->material >= s->material_count && !(s->material_count == 0 && o->material == 0);
+        if ((uint64_t)o->first_index + o->index_count > s->index_count || no_material)
             return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
                             "renderer: object %zu draws indices %u..%llu or material %u, outside the scene's %zu "
                             "indices and %zu materials", i, o->first_index,
@@ -211,6 +212,9 @@ tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s)
         if (o->index_count % 3)
             return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: object %zu draws %u indices, not whole triangles",
                             i, o->index_count);
+        char what[32], msg[TL__CHECK_MESSAGE_SIZE];
+        snprintf(what, sizeof what, "objects[%zu]", i);
+        if ((res = tl__object_check(o, what, msg, sizeof msg)) != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
     }
     for (size_t i = 0; i < s->index_count; i++)
         if (s->indices[i] >= s->vertex_count)
@@ -247,7 +251,7 @@ static GLuint tl__upload_texture(tl_renderer *r, const tl_texture *tx, int srgb)
 
 static GLuint tl__slot_texture(tl_renderer *r, const tl_scene *s, uint32_t index, int srgb)
 {
-    if (index == TL_NO_TEXTURE) return 0;
+    if (index == TL__NO_TEXTURE) return 0;
     GLuint *slot = srgb ? &r->tex_srgb[index] : &r->tex_linear[index];
     if (!*slot) *slot = tl__upload_texture(r, &s->textures[index], srgb);
     return *slot;
@@ -270,15 +274,18 @@ static void tl__material_record(const tl_material *m, int texture_mask, tl__mate
     u->texture_mask = texture_mask;
 }
 
-/* Textures and one std140 record per material, in one immutable uniform buffer. */
+/* Textures and one std140 record per material (a scene without materials: the zeroed one), with
+ * their zero defaults resolved, in one immutable uniform buffer. */
 static tl_result tl__upload_materials(tl_renderer *r, const tl_scene *s)
 {
     size_t n = s->material_count ? s->material_count : 1;
     r->material_stride = (sizeof(tl__material_ubo) + r->ubo_align - 1) / r->ubo_align * r->ubo_align;
     uint8_t *records = (uint8_t *)tl__calloc(&r->alloc, n, r->material_stride);
     if (!records) return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for %zu materials", n);
-    for (size_t i = 0; i < s->material_count; i++) {
-        const tl_material *m = &s->materials[i];
+    for (size_t i = 0; i < n; i++) {
+        tl_material resolved;
+        tl__material_defaults(s->material_count ? &s->materials[i] : &(tl_material){0}, &resolved);
+        const tl_material *m = &resolved;
         int mask = 0;
         r->materials[i].flags = m->flags;
         for (int k = 0; k < TL__MATERIAL_TEXTURES; k++) {
@@ -333,6 +340,7 @@ tl_result tl__scene_upload(tl_renderer *r, const tl_scene *s)
         return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for the scene");
     }
     if (s->object_count) memcpy(r->objects, s->objects, s->object_count * sizeof *r->objects);
+    for (size_t i = 0; i < s->object_count; i++) tl__object_defaults(s, &r->objects[i]); /* zero: identity, computed */
     r->object_count = s->object_count;
     r->texture_count = s->texture_count;
     tl_result res = tl__upload_materials(r, s);

@@ -608,11 +608,7 @@ static void tl__crypt_material_table(tl_scene *scene)
         memcpy(mat->emissive, def->emissive, sizeof(mat->emissive));
         mat->gloss = def->gloss;
         mat->alpha_cutoff = 0.5f;
-        mat->albedo_texture = def->texture >= 0 ? (uint32_t)def->texture : TL_NO_TEXTURE;
-        mat->normal_texture = TL_NO_TEXTURE;
-        mat->metallic_roughness_texture = TL_NO_TEXTURE;
-        mat->emissive_texture = TL_NO_TEXTURE;
-        mat->occlusion_texture = TL_NO_TEXTURE;
+        mat->albedo_map = def->texture >= 0 ? TL_TEXTURE_MAP(def->texture) : 0;
         mat->alpha = 1.0f;
         strncpy(mat->name, def->name, sizeof(mat->name) - 1);
     }

@@ -21,6 +21,9 @@ static tl_result tl__say(tl_result res, char *message, size_t size, const char *
 
 static int tl__finite3(const float v[3]) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
 
+/* A double as a float, saturated at float's largest finite magnitude. */
+static float tl__to_float(double v) { return v > FLT_MAX ? FLT_MAX : v < -FLT_MAX ? -FLT_MAX : (float)v; }
+
 /* "(x, y, z)" for messages. */
 typedef struct tl__vec_text { char s[80]; } tl__vec_text;
 static tl__vec_text tl__v3(const float v[3])
@@ -45,6 +48,26 @@ int tl__objects_bounds(const tl_object *objects, size_t count, float min[3], flo
         any = 1;
     }
     return any;
+}
+
+tl_result tl__object_check(const tl_object *o, const char *what, char *message, size_t size)
+{
+    for (int k = 0; k < 16; k++)
+        if (!isfinite(o->transform[k]))
+            return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size, "%s.transform[%d] = %g: not finite", what, k,
+                           (double)o->transform[k]);
+    if (!o->index_count || tl__bounds_are_zero(o)) return TL_OK;
+    const struct { const float *v; const char *name; } b[2] = {{o->bounds_min, "bounds_min"},
+                                                                {o->bounds_max, "bounds_max"}};
+    for (int i = 0; i < 2; i++)
+        if (!tl__finite3(b[i].v))
+            return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size, "%s.%s = %s: not finite (all six zero: computed)",
+                           what, b[i].name, tl__v3(b[i].v).s);
+    for (int k = 0; k < 3; k++)
+        if (o->bounds_max[k] < o->bounds_min[k])
+            return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size, "%s.bounds_max = %s: below bounds_min = %s on %c",
+                           what, tl__v3(o->bounds_max).s, tl__v3(o->bounds_min).s, "xyz"[k]);
+    return TL_OK;
 }
 
 /* ---- cameras ----------------------------------------------------------------------------------- */
@@ -99,6 +122,50 @@ static void tl__fallback_up(const double f[3], const double up[3], double out[3]
     tl__normalize3(out);
     for (int k = 0; k < 3; k++) out[k] *= s;
 }
+
+void tl__camera_frame(const float bmin[3], const float bmax[3], double fov_y, tl_camera *out)
+{
+    double c[3], d2 = 0.0;
+    for (int k = 0; k < 3; k++) {
+        c[k] = 0.5 * ((double)bmin[k] + bmax[k]);
+        double e = (double)bmax[k] - bmin[k];
+        d2 += e * e;
+    }
+    double r = 0.5 * sqrt(d2);
+    r = r > 1e-6 ? (r < 1e18 ? r : 1e18) : 0.5;
+    double dist = 1.05 * r / sin(0.5 * fov_y);
+    double dir[3] = {0.5, 0.4, 1.0};
+    tl__normalize3(dir);
+    memset(out, 0, sizeof *out);
+    for (int k = 0; k < 3; k++) {
+        out->position[k] = tl__to_float(c[k] + dir[k] * dist);
+        out->target[k] = tl__to_float(c[k]);
+    }
+    out->up[1] = 1.0f;
+    out->fov_y = (float)fov_y;
+    out->near_z = tl__to_float(0.5 * (dist - r)); /* the sphere starts at dist - r > 0 */
+    out->far_z = tl__to_float(2.0 * (dist + r));
+}
+
+/* The default view of a camera whose position and target are both zero (tl_camera): the framing
+ * camera of the bounds with the camera's own fov_y (already resolved in `v`) and, unless given,
+ * its near plane; without bounds, the origin looking down -Z. */
+static tl_camera tl__camera_default_view(const tl_camera *c, const float *bmin, const float *bmax, tl__camera_view *v)
+{
+    tl_camera out = *c;
+    if (!bmin || !bmax) {
+        out.target[2] = -1.0f;
+        return out;
+    }
+    tl_camera frame;
+    tl__camera_frame(bmin, bmax, v->fov_y, &frame);
+    memcpy(out.position, frame.position, sizeof out.position);
+    memcpy(out.target, frame.target, sizeof out.target);
+    if (c->near_z == 0.0f && (v->far_z == 0.0f || frame.near_z < v->far_z)) v->near_z = frame.near_z;
+    return out;
+}
+
+static int tl__zero3(const float v[3]) { return v[0] == 0.0f && v[1] == 0.0f && v[2] == 0.0f; }
 
 /* The orthonormal basis from position, target and up (already finite). */
 static tl_result tl__camera_basis(const tl_camera *c, const char *what, tl__camera_view *out, char *message, size_t size)
@@ -187,7 +254,10 @@ tl_result tl__camera_resolve(const tl_camera *c, const char *what, tl_depth_form
             return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size, "%s.%s = %s: not finite", what, fields[i].name,
                            tl__v3(fields[i].v).s);
     tl_result res = tl__camera_lens(c, what, out, message, size);
-    if (res == TL_OK) res = tl__camera_basis(c, what, out, message, size);
+    tl_camera view = *c;
+    if (res == TL_OK && tl__zero3(c->position) && tl__zero3(c->target))
+        view = tl__camera_default_view(c, bounds_min, bounds_max, out);
+    if (res == TL_OK) res = tl__camera_basis(&view, what, out, message, size);
     if (res == TL_OK) tl__camera_near_floor(what, depth, bounds_min, bounds_max, out, message, size);
     return res;
 }
@@ -225,30 +295,54 @@ tl_result tl__texture_check(const tl_texture *t, const char *what, uint32_t max_
 }
 
 const tl__texture_slot tl__material_texture_slots[TL__MATERIAL_TEXTURE_SLOTS] = {
-    {"albedo_texture", offsetof(tl_material, albedo_texture), 1},
-    {"normal_texture", offsetof(tl_material, normal_texture), 0},
-    {"metallic_roughness_texture", offsetof(tl_material, metallic_roughness_texture), 0},
-    {"emissive_texture", offsetof(tl_material, emissive_texture), 1},
-    {"occlusion_texture", offsetof(tl_material, occlusion_texture), 0},
+    {"albedo_map", offsetof(tl_material, albedo_map), 1},
+    {"normal_map", offsetof(tl_material, normal_map), 0},
+    {"metallic_roughness_map", offsetof(tl_material, metallic_roughness_map), 0},
+    {"emissive_map", offsetof(tl_material, emissive_map), 1},
+    {"occlusion_map", offsetof(tl_material, occlusion_map), 0},
 };
+
+static uint32_t tl__material_map(const tl_material *m, int k)
+{
+    uint32_t map;
+    memcpy(&map, (const char *)m + tl__material_texture_slots[k].offset, sizeof map);
+    return map;
+}
 
 uint32_t tl__material_texture(const tl_material *m, int k)
 {
-    uint32_t index;
-    memcpy(&index, (const char *)m + tl__material_texture_slots[k].offset, sizeof index);
-    return index;
+    uint32_t map = tl__material_map(m, k);
+    return map ? map - 1u : TL__NO_TEXTURE;
+}
+
+int tl__material_has_texture(const tl_material *m, int k, size_t texture_count)
+{
+    uint32_t map = tl__material_map(m, k);
+    return map != 0 && map - 1u < texture_count;
 }
 
 tl_result tl__material_check(const tl_material *m, const char *what, size_t texture_count, char *message, size_t size)
 {
     for (int k = 0; k < TL__MATERIAL_TEXTURE_SLOTS; k++) {
-        uint32_t index = tl__material_texture(m, k);
-        if (index != TL_NO_TEXTURE && index >= texture_count)
+        uint32_t map = tl__material_map(m, k);
+        if (map != 0 && map - 1u >= texture_count)
             return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size,
-                           "%s.%s = %u: past the scene's %zu textures (TL_NO_TEXTURE for none)", what,
-                           tl__material_texture_slots[k].name, index, texture_count);
+                           "%s.%s = %u: texture %u, past the scene's %zu textures (a map is a texture's index + 1, "
+                           "TL_TEXTURE_MAP; 0 for none)",
+                           what, tl__material_texture_slots[k].name, map, map - 1u, texture_count);
     }
     return TL_OK;
+}
+
+void tl__material_defaults(const tl_material *in, tl_material *out)
+{
+    *out = *in;
+    int colour = 0;
+    for (int k = 0; k < 3; k++) colour |= in->albedo[k] != 0.0f || in->specular[k] != 0.0f || in->emissive[k] != 0.0f;
+    for (int k = 0; k < 3; k++)
+        out->albedo[k] = !colour ? TL_MATERIAL_DEFAULT_ALBEDO : in->albedo[k] < 0.0f ? 0.0f : in->albedo[k];
+    if (out->normal_scale == 0.0f) out->normal_scale = 1.0f;
+    if (out->occlusion_strength == 0.0f) out->occlusion_strength = 1.0f;
 }
 
 /* ---- lights ------------------------------------------------------------------------------------ */

@@ -133,9 +133,8 @@ void check_geometry(const tl_scene *s)
     }
     for (size_t i = 0; i < s->material_count; i++) {
         const tl_material *m = &s->materials[i];
-        const uint32_t t[5] = {m->albedo_texture, m->normal_texture, m->metallic_roughness_texture, m->emissive_texture,
-                               m->occlusion_texture};
-        for (int k = 0; k < 5; k++) TL_CHECK(t[k] == TL_NO_TEXTURE || t[k] < s->texture_count);
+        const uint32_t t[5] = {m->albedo_map, m->normal_map, m->metallic_roughness_map, m->emissive_map, m->occlusion_map};
+        for (int k = 0; k < 5; k++) TL_CHECK(t[k] == 0 || t[k] - 1 < s->texture_count); /* index + 1, 0 = none */
     }
     for (size_t i = 0; i < s->texture_count; i++) {
         TL_CHECK(s->textures[i].rgba != NULL);

@@ -51,9 +51,7 @@ void build_room(test_scene *t)
     t->obj[1] = (tl_object){(uint32_t)room_indices, (uint32_t)(ni - room_indices), 1, {0}, {-B, 0, -B}, {B, BH, B}};
     memcpy(t->obj[0].transform, id, sizeof id);
     memcpy(t->obj[1].transform, id, sizeof id);
-    const tl_material plain = {.alpha = 1.0f, .albedo_texture = TL_NO_TEXTURE, .normal_texture = TL_NO_TEXTURE,
-                               .metallic_roughness_texture = TL_NO_TEXTURE, .emissive_texture = TL_NO_TEXTURE,
-                               .occlusion_texture = TL_NO_TEXTURE};
+    const tl_material plain = {.alpha = 1.0f};
     t->mat[0] = plain;
     t->mat[1] = plain;
     t->mat[0].albedo[0] = t->mat[0].albedo[1] = t->mat[0].albedo[2] = 0.7f;

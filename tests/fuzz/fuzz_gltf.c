@@ -13,9 +13,9 @@
 
 static int finite3(const float v[3]) { return isfinite(v[0]) && isfinite(v[1]) && isfinite(v[2]); }
 
-static void check_textures(const tl_scene *s, uint32_t index)
+static void check_textures(const tl_scene *s, uint32_t map)
 {
-    FUZZ_REQUIRE(index == TL_NO_TEXTURE || index < s->texture_count);
+    FUZZ_REQUIRE(map == 0 || map - 1 < s->texture_count); /* a map is a texture index + 1, 0 = none */
 }
 
 static void check_scene(const tl_scene *s)
@@ -34,11 +34,11 @@ static void check_scene(const tl_scene *s)
     }
     for (size_t i = 0; i < s->material_count; i++) {
         const tl_material *m = &s->materials[i];
-        check_textures(s, m->albedo_texture);
-        check_textures(s, m->normal_texture);
-        check_textures(s, m->metallic_roughness_texture);
-        check_textures(s, m->emissive_texture);
-        check_textures(s, m->occlusion_texture);
+        check_textures(s, m->albedo_map);
+        check_textures(s, m->normal_map);
+        check_textures(s, m->metallic_roughness_map);
+        check_textures(s, m->emissive_map);
+        check_textures(s, m->occlusion_map);
         FUZZ_REQUIRE(memchr(m->name, 0, sizeof m->name) != NULL);
     }
     for (size_t i = 0; i < s->texture_count; i++) {

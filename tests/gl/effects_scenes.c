@@ -28,9 +28,7 @@ static void quads_finish(quads *q, const tl_camera *cam)
     q->obj[0] = (tl_object){0, (uint32_t)q->ni, 0, {0}, {-1000, -1000, -1000}, {1000, 1000, 1000}};
     const float id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     memcpy(q->obj[0].transform, id, sizeof id);
-    q->mat[0] = (tl_material){.alpha = 1.0f, .albedo = {0.5f, 0.5f, 0.5f}, .albedo_texture = TL_NO_TEXTURE,
-                              .normal_texture = TL_NO_TEXTURE, .metallic_roughness_texture = TL_NO_TEXTURE,
-                              .emissive_texture = TL_NO_TEXTURE, .occlusion_texture = TL_NO_TEXTURE};
+    q->mat[0] = (tl_material){.alpha = 1.0f, .albedo = {0.5f, 0.5f, 0.5f}};
     q->s.vertices = q->v;
     q->s.vertex_count = q->nv;
     q->s.indices = q->idx;

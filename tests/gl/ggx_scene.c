@@ -55,9 +55,7 @@ void ggx_scene_build(ggx_scene *g)
     g->obj[1] = (tl_object){6, (uint32_t)(ni - 6), 1, {0}, {-1, 0.3f, -1}, {1, 2.3f, 1}};
     memcpy(g->obj[0].transform, id, sizeof id);
     memcpy(g->obj[1].transform, id, sizeof id);
-    const tl_material none = {.alpha = 1.0f, .albedo_texture = TL_NO_TEXTURE, .normal_texture = TL_NO_TEXTURE,
-                              .metallic_roughness_texture = TL_NO_TEXTURE, .emissive_texture = TL_NO_TEXTURE,
-                              .occlusion_texture = TL_NO_TEXTURE};
+    const tl_material none = {.alpha = 1.0f};
     g->mat[0] = none;
     g->mat[0].albedo[0] = g->mat[0].albedo[1] = g->mat[0].albedo[2] = 0.5f;
     g->mat[0].specular[0] = g->mat[0].specular[1] = g->mat[0].specular[2] = 0.04f;

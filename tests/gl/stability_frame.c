@@ -25,9 +25,7 @@ tl_renderer *make_renderer(tl_renderer_desc d)
 
 tl_material plain_material(float albedo, float specular, float gloss)
 {
-    tl_material m = {.alpha = 1.0f, .albedo_texture = TL_NO_TEXTURE, .normal_texture = TL_NO_TEXTURE,
-                     .metallic_roughness_texture = TL_NO_TEXTURE, .emissive_texture = TL_NO_TEXTURE,
-                     .occlusion_texture = TL_NO_TEXTURE};
+    tl_material m = {.alpha = 1.0f};
     for (int k = 0; k < 3; k++) {
         m.albedo[k] = albedo;
         m.specular[k] = specular;

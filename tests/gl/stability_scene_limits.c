@@ -344,8 +344,8 @@ TL_TEST(stability_missing_textures)
         {"rgba NULL", "textures[0].rgba = NULL", TL_ERROR_INVALID_ARGUMENT},
         {"width 0", "textures[0].width = 0", TL_ERROR_INVALID_ARGUMENT},
         {"20000 x 1 (over the limit)", "textures[0].width = 20000: over the largest texture side", TL_ERROR_LIMIT},
-        {"index out of range", "materials[0].albedo_texture = 7: past the scene's 1 textures", TL_ERROR_INVALID_ARGUMENT},
-        {"every texture index out of range", "materials[0].normal_texture = 9", TL_ERROR_INVALID_ARGUMENT},
+        {"map out of range", "materials[0].albedo_map = 8: texture 7, past the scene's 1 textures", TL_ERROR_INVALID_ARGUMENT},
+        {"every other map out of range", "materials[0].normal_map = 10: texture 9", TL_ERROR_INVALID_ARGUMENT},
     };
     for (int c = 0; c < 5; c++) {
         mini_scene t = m;
@@ -359,11 +359,11 @@ TL_TEST(stability_missing_textures)
         t.tex[0] = (tl_texture){4, 4, c == 0 ? NULL : wide, "missing"};
         if (c == 1) t.tex[0] = (tl_texture){0, 4, wide, "empty"};
         if (c == 2) t.tex[0] = (tl_texture){20000, 1, wide, "too wide"};
-        t.mat[0].albedo_texture = c >= 3 ? 7u : 0u;
+        t.mat[0].albedo_map = TL_TEXTURE_MAP(c >= 3 ? 7u : 0u);
         if (c == 4) {
-            t.mat[0].albedo_texture = 0u;
-            t.mat[0].normal_texture = t.mat[0].metallic_roughness_texture = 9u;
-            t.mat[0].emissive_texture = t.mat[0].occlusion_texture = 1u;
+            t.mat[0].albedo_map = TL_TEXTURE_MAP(0);
+            t.mat[0].normal_map = t.mat[0].metallic_roughness_map = TL_TEXTURE_MAP(9);
+            t.mat[0].emissive_map = t.mat[0].occlusion_map = TL_TEXTURE_MAP(1);
         }
         tl_result res = tl_renderer_set_scene(ref.r, &t.s);
         printf("  texture %s: %s, \"%s\"\n", cases[c].what, tl_result_string(res), tl_renderer_last_error(ref.r));

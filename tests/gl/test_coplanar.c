@@ -88,9 +88,7 @@ static void add_object(coplanar_scene *t, const plane_basis *p, const float uv[4
 
 static tl_material coloured(float r, float g, float b, float spec, float gloss)
 {
-    tl_material m = {.alpha = 1.0f, .albedo_texture = TL_NO_TEXTURE, .normal_texture = TL_NO_TEXTURE,
-                     .metallic_roughness_texture = TL_NO_TEXTURE, .emissive_texture = TL_NO_TEXTURE,
-                     .occlusion_texture = TL_NO_TEXTURE, .gloss = gloss};
+    tl_material m = {.alpha = 1.0f, .gloss = gloss};
     m.albedo[0] = r;
     m.albedo[1] = g;
     m.albedo[2] = b;

@@ -51,9 +51,7 @@ static void quad(mirror_scene *m, int q, const float o[3], const float du[3], co
     const float id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     m->obj[q] = (tl_object){(uint32_t)(6 * q), 6, (uint32_t)q, {0}, {-100, -100, -100}, {100, 100, 100}};
     memcpy(m->obj[q].transform, id, sizeof id);
-    m->mat[q] = (tl_material){.alpha = 1.0f, .albedo_texture = TL_NO_TEXTURE, .normal_texture = TL_NO_TEXTURE,
-                              .metallic_roughness_texture = TL_NO_TEXTURE, .emissive_texture = TL_NO_TEXTURE,
-                              .occlusion_texture = TL_NO_TEXTURE};
+    m->mat[q] = (tl_material){.alpha = 1.0f};
 }
 
 static void mirror(mirror_scene *m, float cam_y)

@@ -29,7 +29,7 @@ TL_TEST(gltf_missing_image)
     TL_CHECK(strstr(l.log.warnings_text, "images[0]") != NULL);
     if (l.result == TL_OK) {
         TL_CHECK_EQ_U(l.scene->texture_count, 0);
-        TL_CHECK(l.scene->materials[0].albedo_texture == TL_NO_TEXTURE);
+        TL_CHECK(l.scene->materials[0].albedo_map == 0);
         TL_CHECK(near3(l.scene->materials[0].albedo, 0.25f, 0.5f, 0.75f, 1e-6f)); /* the flat colour */
     }
     unload(&l);
@@ -97,7 +97,7 @@ TL_TEST(gltf_texture_unsupported_format)
     TL_CHECK(strstr(l.log.warnings_text, "images[0]") != NULL);
     if (l.result == TL_OK) {
         TL_CHECK_EQ_U(l.scene->texture_count, 0);
-        TL_CHECK(l.scene->materials[0].albedo_texture == TL_NO_TEXTURE);
+        TL_CHECK(l.scene->materials[0].albedo_map == 0);
     }
     unload(&l);
 }
@@ -126,7 +126,7 @@ TL_TEST(gltf_texture_truncated_png)
     load(&l, "gltf_texture_truncated_png", "texture_truncated_png");
     TL_CHECK(l.result == TL_OK);
     TL_CHECK(strstr(l.log.warnings_text, "images[0]: truncated PNG") != NULL);
-    if (l.result == TL_OK) TL_CHECK(l.scene->materials[0].albedo_texture == TL_NO_TEXTURE);
+    if (l.result == TL_OK) TL_CHECK(l.scene->materials[0].albedo_map == 0);
     unload(&l);
 }
 

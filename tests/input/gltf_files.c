@@ -132,7 +132,7 @@ static void expect_image_refused(const char *sub, const char *uri, const char *w
     TL_CHECK(l.result == TL_OK);
     if (!strstr(l.log.warnings_text, why)) fprintf(stderr, "image '%s': %s\n", uri, l.log.warnings_text);
     TL_CHECK(strstr(l.log.warnings_text, why) != NULL);
-    if (l.scene) TL_CHECK(l.scene->texture_count == 0 && l.scene->materials[0].albedo_texture == TL_NO_TEXTURE);
+    if (l.scene) TL_CHECK(l.scene->texture_count == 0 && l.scene->materials[0].albedo_map == 0);
     check_silent_about_outside(&l);
     unload(&l);
 }

@@ -240,7 +240,7 @@ TL_TEST(gltf_texture_over_16384_is_the_flat_colour_with_a_warning)
                 TL_CHECK(l.log.warnings == 1);
                 TL_CHECK(strstr(l.log.warnings_text, "images[0].width = 16385: over the largest texture side, 16384 "
                                                      "(GL_MAX_TEXTURE_SIZE); using the flat colour") != NULL);
-                TL_CHECK(l.s->texture_count == 0 && l.s->materials[0].albedo_texture == TL_NO_TEXTURE);
+                TL_CHECK(l.s->texture_count == 0 && l.s->materials[0].albedo_map == 0);
                 TL_CHECK(same);
             } else {
                 TL_CHECK(l.log.warnings == 0 && l.s->texture_count == 1);

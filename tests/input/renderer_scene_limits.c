@@ -107,9 +107,10 @@ TL_TEST(renderer_scene_counts_past_32_bits_refused_before_reading)
     s.material_count = SIZE_MAX;
     refused(r, &c, &s, TL_ERROR_LIMIT, "materials exceed");
     s = t.s;
-    s.texture_count = UINT32_MAX; /* TL_NO_TEXTURE is not an index */
+    s.texture_count = (size_t)UINT32_MAX + 1; /* texture i is map i + 1 in a uint32_t */
     s.textures = (tl_texture *)t.v;
-    refused(r, &c, &s, TL_ERROR_LIMIT, "4294967295 textures exceed the limit of 4294967294");
+    refused(r, &c, &s, TL_ERROR_LIMIT, "4294967296 textures (materials name texture i as map i + 1, a uint32_t) exceed "
+                                       "the limit of 4294967295");
     s = t.s;
     s.light_count = SIZE_MAX;
     refused(r, &c, &s, TL_ERROR_LIMIT, "lights exceed the limit of");

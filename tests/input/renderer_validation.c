@@ -303,8 +303,10 @@ TL_TEST(renderer_set_scene_bad_textures_refused_naming_them)
         {1, TL_ERROR_INVALID_ARGUMENT, "textures[1].height = 0: outside 1.."},
         {2, TL_ERROR_INVALID_ARGUMENT, "textures[1].rgba = NULL: a "},
         {3, TL_ERROR_LIMIT, widest},
-        {4, TL_ERROR_INVALID_ARGUMENT, "materials[1].occlusion_texture = 2: past the scene's 2 textures"},
-        {5, TL_ERROR_INVALID_ARGUMENT, "materials[0].albedo_texture = 4294967294: past the scene's 2 textures"},
+        {4, TL_ERROR_INVALID_ARGUMENT, "materials[1].occlusion_map = 3: texture 2, past the scene's 2 textures"},
+        /* UINT32_MAX: what TL_NO_TEXTURE was before maps, in a program built against that header */
+        {5, TL_ERROR_INVALID_ARGUMENT, "materials[0].albedo_map = 4294967295: texture 4294967294, past the scene's 2 "
+                                       "textures (a map is a texture's index + 1, TL_TEXTURE_MAP; 0 for none)"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
         test_scene u = t;
@@ -312,13 +314,13 @@ TL_TEST(renderer_set_scene_bad_textures_refused_naming_them)
         tl_texture x[2] = {tex[0], tex[1]};
         u.s.textures = x;
         u.s.texture_count = 2;
-        u.mat[1].albedo_texture = 1;
+        u.mat[1].albedo_map = TL_TEXTURE_MAP(1);
         if (cases[i].what == 0) x[1].width = 0;
         if (cases[i].what == 1) x[1].height = 0;
         if (cases[i].what == 2) x[1].rgba = NULL;
         if (cases[i].what == 3) x[1].width = max + 1;
-        if (cases[i].what == 4) u.mat[1].occlusion_texture = 2;
-        if (cases[i].what == 5) u.mat[0].albedo_texture = TL_NO_TEXTURE - 1;
+        if (cases[i].what == 4) u.mat[1].occlusion_map = TL_TEXTURE_MAP(2);
+        if (cases[i].what == 5) u.mat[0].albedo_map = UINT32_MAX;
         log.error[0] = 0;
         tl_result res = tl_renderer_set_scene(r, &u.s);
         if (res != cases[i].want || !strstr(log.error, cases[i].message))
@@ -334,7 +336,7 @@ TL_TEST(renderer_set_scene_bad_textures_refused_naming_them)
     u.s.vertices = u.v, u.s.indices = u.idx, u.s.objects = u.obj, u.s.materials = u.mat, u.s.lights = u.lights;
     u.s.textures = tex;
     u.s.texture_count = 2;
-    u.mat[1].albedo_texture = 1;
+    u.mat[1].albedo_map = TL_TEXTURE_MAP(1);
     u.mat[1].albedo[0] = u.mat[1].albedo[1] = u.mat[1].albedo[2] = 1.0f;
     TL_CHECK(tl_renderer_set_scene(r, &u.s) == TL_OK);
     uint8_t *textured = frame(r, NULL);

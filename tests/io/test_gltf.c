@@ -90,15 +90,16 @@ TL_TEST(gltf_textured_boxes_materials_textures)
     TL_CHECK(near3(m->albedo, 1.0f, 0.9f, 0.8f, 1e-6f)); /* base colour, converted per pixel */
     TL_CHECK(near(m->metallic, 0.5f, 1e-6f) && near(m->roughness, 0.75f, 1e-6f));
     TL_CHECK(near(m->normal_scale, 0.8f, 1e-6f));
-    TL_CHECK(m->albedo_texture == 0 && m->metallic_roughness_texture == 1 && m->normal_texture == 2);
-    TL_CHECK(m->emissive_texture == TL_NO_TEXTURE && m->occlusion_texture == TL_NO_TEXTURE);
+    /* maps are texture indices + 1: albedo.png is texture 0, the metallic-roughness map 1, the normal map 2 */
+    TL_CHECK(m->albedo_map == 1 && m->metallic_roughness_map == 2 && m->normal_map == 3);
+    TL_CHECK(m->emissive_map == 0 && m->occlusion_map == 0);
     m = &s->materials[1];
     TL_CHECK(strcmp(m->name, "painted") == 0);
     TL_CHECK(m->flags == TL_MATERIAL_MICROFACET); /* every glTF material is authored for GGX */
     TL_CHECK(near3(m->albedo, 0.2f, 0.4f, 0.6f, 1e-6f)); /* metal 0: diffuse = base */
     TL_CHECK(near3(m->specular, 0.04f, 0.04f, 0.04f, 1e-6f));
     TL_CHECK(near(m->gloss, 0.5f, 1e-6f));
-    TL_CHECK(m->albedo_texture == 0 && m->normal_texture == TL_NO_TEXTURE);
+    TL_CHECK(m->albedo_map == TL_TEXTURE_MAP(0) && m->normal_map == 0);
 
     const tl_texture *t = &s->textures[0];
     TL_CHECK(t->width == 4 && t->height == 4);
@@ -158,7 +159,7 @@ TL_TEST(gltf_materials_conversion)
     for (int i = 0; i < 3; i++) TL_CHECK(m[i].flags == TL_MATERIAL_MICROFACET);
     TL_CHECK(m[3].flags == (TL_MATERIAL_MICROFACET | TL_MATERIAL_ALPHA_MASK));
     TL_CHECK(near(m[3].alpha_cutoff, 0.3f, 1e-6f) && near(m[3].alpha, 0.9f, 1e-6f));
-    TL_CHECK(m[3].albedo_texture == 0);
+    TL_CHECK(m[3].albedo_map == TL_TEXTURE_MAP(0));
     TL_CHECK(m[4].flags == (TL_MATERIAL_MICROFACET | TL_MATERIAL_ALPHA_BLEND | TL_MATERIAL_DOUBLE_SIDED));
     TL_CHECK(near(m[4].alpha, 0.5f, 1e-6f));
     TL_CHECK(m[5].flags == (TL_MATERIAL_MICROFACET | TL_MATERIAL_DOUBLE_SIDED));
@@ -166,7 +167,7 @@ TL_TEST(gltf_materials_conversion)
     TL_CHECK(m[6].flags == (TL_MATERIAL_MICROFACET | TL_MATERIAL_METALLIC_ROUGHNESS));
     TL_CHECK(near3(m[6].albedo, 1, 1, 1, 1e-6f));
     TL_CHECK(near(m[6].metallic, 0.7f, 1e-6f) && near(m[6].roughness, 0.6f, 1e-6f));
-    TL_CHECK(m[6].metallic_roughness_texture == 1 && m[6].occlusion_texture == 1);
+    TL_CHECK(m[6].metallic_roughness_map == TL_TEXTURE_MAP(1) && m[6].occlusion_map == TL_TEXTURE_MAP(1));
     TL_CHECK(near(m[6].occlusion_strength, 0.5f, 1e-6f));
     /* glTF's default material: white, metallic 1, roughness 1 */
     TL_CHECK(strcmp(m[7].name, "default material") == 0);

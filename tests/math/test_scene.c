@@ -538,13 +538,10 @@ TL_TEST(scene_features)
     TL_CHECK_EQ_U(f.directional_lights, 0);
     tl_scene_destroy(s);
 
-    /* a hand-made scene: only materials that objects draw with count; a texture index past the
-     * array is no texture; TL_LIGHT_DEFAULT is a point light */
-    tl_material mats[2] = {{.albedo = {1, 1, 1}, .albedo_texture = 5, .normal_texture = TL_NO_TEXTURE,
-                            .flags = TL_MATERIAL_ALPHA_MASK},
-                           {.specular = {0.5f, 0.5f, 0.5f}, .emissive = {1, 0, 0},
-                            .albedo_texture = TL_NO_TEXTURE, .normal_texture = TL_NO_TEXTURE,
-                            .flags = TL_MATERIAL_ALPHA_BLEND}};
+    /* a hand-made scene: only materials that objects draw with count; a map past the array is no
+     * texture; TL_LIGHT_DEFAULT is a point light */
+    tl_material mats[2] = {{.albedo = {1, 1, 1}, .albedo_map = TL_TEXTURE_MAP(5), .flags = TL_MATERIAL_ALPHA_MASK},
+                           {.specular = {0.5f, 0.5f, 0.5f}, .emissive = {1, 0, 0}, .flags = TL_MATERIAL_ALPHA_BLEND}};
     tl_object objs[1] = {{.first_index = 0, .index_count = 3, .material = 0}};
     uint32_t idx[3] = {0, 0, 0};
     tl_light lights[2] = {{.type = TL_LIGHT_DEFAULT, .radius = 1}, {.type = TL_LIGHT_SPOT, .radius = 1}};
@@ -574,12 +571,13 @@ TL_TEST(scene_materials_textures_valid)
         }
         TL_CHECK(mt->gloss >= 0.0f && mt->gloss <= 1.0f);
         TL_CHECK_EQ_U(mt->flags, 0); /* all opaque, single-sided */
-        TL_CHECK(mt->albedo_texture == TL_NO_TEXTURE || mt->albedo_texture < s->texture_count);
-        TL_CHECK(mt->normal_texture == TL_NO_TEXTURE);
+        TL_CHECK(mt->albedo_map == 0 || mt->albedo_map - 1 < s->texture_count);
+        TL_CHECK(mt->normal_map == 0 && mt->metallic_roughness_map == 0);
+        TL_CHECK(mt->emissive_map == 0 && mt->occlusion_map == 0);
         glossy += mt->gloss >= 0.75f && mt->specular[0] >= 0.04f && mt->specular[0] <= 0.08f;
         matte += mt->gloss <= 0.25f && mt->specular[0] <= 0.03f;
         coloured_specular += mt->specular[0] != mt->specular[2];
-        textured += mt->albedo_texture != TL_NO_TEXTURE;
+        textured += mt->albedo_map != 0;
         emissive += mt->emissive[0] > 0.0f;
     }
     TL_CHECK(glossy >= 1 && matte >= 2 && coloured_specular >= 1 && textured >= 4 && emissive >= 1);
@@ -637,4 +635,131 @@ TL_TEST(scene_camera_inside)
     }
     TL_CHECK_EQ_U(inside, 0);
     tl_scene_destroy(s);
+}
+
+/* ---- bounds (tl_object_compute_bounds, tl_scene_compute_bounds) ------------------------------- */
+
+/* The smallest box around every vertex an object's indices name, through its transform: each
+ * vertex (transformed here in double, per vertex, with the zero transform taken as the identity)
+ * lies inside the computed box, and every face of the box is touched by a vertex, both within
+ * float's rounding of the coordinate (2^-24 relative, half a step each way). */
+static void check_box_brute_force(const tl_scene *s, const tl_object *o, const float lo[3], const float hi[3],
+                                  double *worst)
+{
+    int zero = 1;
+    for (int k = 0; k < 16; k++) zero &= o->transform[k] == 0.0f;
+    double seen_lo[3] = {INFINITY, INFINITY, INFINITY}, seen_hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (uint32_t i = 0; i < o->index_count; i++) {
+        const float *p = s->vertices[s->indices[o->first_index + i]].position;
+        for (int r = 0; r < 3; r++) {
+            double w = p[r];
+            if (!zero)
+                w = (double)o->transform[r] * p[0] + (double)o->transform[4 + r] * p[1] +
+                    (double)o->transform[8 + r] * p[2] + (double)o->transform[12 + r];
+            seen_lo[r] = fmin(seen_lo[r], w);
+            seen_hi[r] = fmax(seen_hi[r], w);
+        }
+    }
+    for (int r = 0; r < 3; r++) {
+        double tol_lo = fabs(seen_lo[r]) * 0x1.0p-24, tol_hi = fabs(seen_hi[r]) * 0x1.0p-24;
+        TL_CHECK_LE(fabs((double)lo[r] - seen_lo[r]), tol_lo); /* inside and touching, within rounding */
+        TL_CHECK_LE(fabs((double)hi[r] - seen_hi[r]), tol_hi);
+        *worst = fmax(*worst, fmax(fabs((double)lo[r] - seen_lo[r]), fabs((double)hi[r] - seen_hi[r])));
+    }
+}
+
+/* Every object of the crypt (identity transforms), then the same objects under seeded rotations,
+ * scales and translations, and under the zero transform: the helper against the brute force; the
+ * crypt's own bounds (over each object's vertex range) contain the helper's. */
+TL_TEST(object_bounds_match_brute_force)
+{
+    tl_scene *s = make(&(tl_default_scene_desc){.detail = 1, .point_lights = 8});
+    if (!s) return;
+    double worst = 0.0;
+    size_t checked = 0;
+    tl_rng rng = {7};
+    for (int pass = 0; pass < 3; pass++) {
+        for (size_t i = 0; i < s->object_count; i++) {
+            tl_object o = s->objects[i];
+            if (pass == 1) { /* rotation about a random axis, scale 0.1 .. 10, translation up to 1000 */
+                double a = tl_rng_unit(&rng) * 6.283185307179586, c = cos(a), sn = sin(a);
+                double sc = pow(10.0, 2.0 * tl_rng_unit(&rng) - 1.0);
+                double ax[3] = {tl_rng_unit(&rng) - 0.5, tl_rng_unit(&rng) - 0.5, tl_rng_unit(&rng) - 0.5};
+                double l = sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
+                for (int k = 0; k < 3; k++) ax[k] /= l;
+                const double cross[3][3] = {{0, -ax[2], ax[1]}, {ax[2], 0, -ax[0]}, {-ax[1], ax[0], 0}};
+                for (int col = 0; col < 3; col++) /* Rodrigues: c I + s [a]x + (1 - c) a a^T */
+                    for (int row = 0; row < 3; row++)
+                        o.transform[col * 4 + row] = (float)(sc * ((row == col ? c : 0.0) + sn * cross[row][col] +
+                                                                  (1.0 - c) * ax[row] * ax[col]));
+                o.transform[15] = 1.0f;
+                for (int k = 0; k < 3; k++) o.transform[12 + k] = (float)(2000.0 * tl_rng_unit(&rng) - 1000.0);
+            }
+            if (pass == 2) memset(o.transform, 0, sizeof o.transform);
+            float lo[3] = {7, 7, 7}, hi[3] = {7, 7, 7};
+            TL_CHECK(tl_object_compute_bounds(s, &o, lo, hi) == TL_OK);
+            check_box_brute_force(s, &o, lo, hi, &worst);
+            checked++;
+            if (pass == 0 && o.index_count)
+                for (int k = 0; k < 3; k++)
+                    TL_CHECK(lo[k] >= s->objects[i].bounds_min[k] && hi[k] <= s->objects[i].bounds_max[k]);
+        }
+    }
+    printf("  %zu objects, largest distance from the brute force's box: %g\n", checked, worst);
+
+    /* tl_scene_compute_bounds: each object as tl_object_compute_bounds, the scene as their union */
+    float scene_lo[3], scene_hi[3];
+    memcpy(scene_lo, s->bounds_min, sizeof scene_lo);
+    memcpy(scene_hi, s->bounds_max, sizeof scene_hi);
+    for (size_t i = 0; i < s->object_count; i++) memset(s->objects[i].bounds_min, 0, 6 * sizeof(float));
+    TL_CHECK(tl_scene_compute_bounds(s) == TL_OK);
+    float u_lo[3] = {INFINITY, INFINITY, INFINITY}, u_hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t i = 0; i < s->object_count; i++) {
+        float lo[3], hi[3];
+        TL_CHECK(tl_object_compute_bounds(s, &s->objects[i], lo, hi) == TL_OK);
+        TL_CHECK(memcmp(lo, s->objects[i].bounds_min, sizeof lo) == 0);
+        TL_CHECK(memcmp(hi, s->objects[i].bounds_max, sizeof hi) == 0);
+        for (int k = 0; k < 3 && s->objects[i].index_count; k++) {
+            u_lo[k] = fminf(u_lo[k], lo[k]);
+            u_hi[k] = fmaxf(u_hi[k], hi[k]);
+        }
+    }
+    TL_CHECK(memcmp(u_lo, s->bounds_min, sizeof u_lo) == 0 && memcmp(u_hi, s->bounds_max, sizeof u_hi) == 0);
+    for (int k = 0; k < 3; k++) TL_CHECK(s->bounds_min[k] >= scene_lo[k] && s->bounds_max[k] <= scene_hi[k]);
+    tl_scene_destroy(s);
+}
+
+/* What the helpers refuse, leaving their outputs and the scene as they were. */
+TL_TEST(object_bounds_bad_arguments)
+{
+    tl_vertex v[3] = {{.position = {1, 2, 3}}, {.position = {4, 5, 6}}, {.position = {7, 8, NAN}}};
+    uint32_t idx[6] = {0, 1, 0, 0, 1, 5};
+    tl_object objs[2] = {{.index_count = 3, .bounds_max = {9, 9, 9}}, {.first_index = 3, .index_count = 3}};
+    tl_scene s = {.vertices = v, .vertex_count = 3, .indices = idx, .index_count = 6, .objects = objs,
+                  .object_count = 2};
+    float lo[3] = {7, 7, 7}, hi[3] = {7, 7, 7};
+    TL_CHECK(tl_object_compute_bounds(NULL, &objs[0], lo, hi) == TL_ERROR_INVALID_ARGUMENT);
+    TL_CHECK(tl_object_compute_bounds(&s, NULL, lo, hi) == TL_ERROR_INVALID_ARGUMENT);
+    TL_CHECK(tl_object_compute_bounds(&s, &objs[0], NULL, hi) == TL_ERROR_INVALID_ARGUMENT);
+    TL_CHECK(tl_object_compute_bounds(&s, &objs[1], lo, hi) == TL_ERROR_INVALID_ARGUMENT); /* index 5 of 3 vertices */
+    tl_object past = {.first_index = 4, .index_count = 3};
+    TL_CHECK(tl_object_compute_bounds(&s, &past, lo, hi) == TL_ERROR_INVALID_ARGUMENT); /* indices 4..7 of 6 */
+    idx[2] = 2;
+    TL_CHECK(tl_object_compute_bounds(&s, &objs[0], lo, hi) == TL_ERROR_INVALID_ARGUMENT); /* a NaN position */
+    tl_object nan_transform = {.index_count = 2};
+    nan_transform.transform[5] = NAN;
+    TL_CHECK(tl_object_compute_bounds(&s, &nan_transform, lo, hi) == TL_ERROR_INVALID_ARGUMENT);
+    TL_CHECK(lo[0] == 7 && hi[2] == 7);
+    TL_CHECK(tl_scene_compute_bounds(NULL) == TL_ERROR_INVALID_ARGUMENT);
+    TL_CHECK(tl_scene_compute_bounds(&s) == TL_ERROR_INVALID_ARGUMENT);
+    TL_CHECK(objs[0].bounds_max[0] == 9 && objs[0].bounds_min[0] == 0); /* unchanged */
+    /* an empty object has zero bounds; a scene of empty objects zero bounds too */
+    idx[2] = 0;
+    objs[1].index_count = 0;
+    TL_CHECK(tl_scene_compute_bounds(&s) == TL_OK);
+    TL_CHECK(objs[0].bounds_min[0] == 1 && objs[0].bounds_max[2] == 6 && objs[1].bounds_max[0] == 0);
+    TL_CHECK(s.bounds_min[0] == 1 && s.bounds_max[1] == 5);
+    objs[0].index_count = 0;
+    TL_CHECK(tl_scene_compute_bounds(&s) == TL_OK);
+    TL_CHECK(s.bounds_min[0] == 0 && s.bounds_max[1] == 0 && objs[0].bounds_max[2] == 0);
 }
