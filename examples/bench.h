@@ -192,7 +192,7 @@ typedef struct bench_image_file {
     uint32_t lights, width, height;
 } bench_image_file;
 
-/* What planning saves for one mode (the plan against tl_renderer_desc.no_planning), for the scene
+/* What planning saves for one mode (the plan against tl_renderer_options.no_planning), for the scene
  * with the largest light count. */
 typedef struct bench_planning {
     tl_render_mode mode;

@@ -36,24 +36,24 @@ void bench_effect_enable(const bench_options *opt, bench_effect e, tl_renderer_d
     const tl_renderer_desc *t = &opt->effect_desc;
     switch (e) {
     case BENCH_EFFECT_SSAO:
-        d->ssao = t->ssao;
-        if (d->ssao.method == TL_SSAO_OFF) d->ssao.method = TL_SSAO_DISC;
+        d->options.ssao = t->options.ssao;
+        if (d->options.ssao.method == TL_SSAO_OFF) d->options.ssao.method = TL_SSAO_DISC;
         break;
     case BENCH_EFFECT_FOG:
-        d->fog = t->fog;
-        if (d->fog.mode == TL_FOG_OFF) d->fog.mode = TL_FOG_DISTANCE;
+        d->options.fog = t->options.fog;
+        if (d->options.fog.mode == TL_FOG_OFF) d->options.fog.mode = TL_FOG_DISTANCE;
         break;
     case BENCH_EFFECT_DOF:
-        d->dof = t->dof;
-        d->dof.enabled = 1;
+        d->options.dof = t->options.dof;
+        d->options.dof.enabled = 1;
         break;
     case BENCH_EFFECT_BLOOM:
-        d->bloom = t->bloom;
-        d->bloom.enabled = 1;
+        d->options.bloom = t->options.bloom;
+        d->options.bloom.enabled = 1;
         break;
     default:
-        d->ssr = t->ssr;
-        d->ssr.enabled = 1;
+        d->options.ssr = t->options.ssr;
+        d->options.ssr.enabled = 1;
         break;
     }
 }
@@ -117,12 +117,12 @@ static tl_renderer *bench__effect_renderer(bench_run *run, tl_context *ctx, cons
                                            size_t count, bench_config c, int slot, const bench_effect *list)
 {
     const bench_options *opt = &run->opt;
-    tl_renderer_desc d = {.mode = bench_config_mode(c), .light_strategy = bench_config_strategy(c),
-                          .lighting = opt->lighting, .fresnel = bench_config_fresnel(c, opt->fresnel),
-                          .width = opt->sizes[0].width, .height = opt->sizes[0].height, .synchronous_stats = 1};
+    tl_renderer_desc d = {.options.mode = bench_config_mode(c), .options.light_strategy = bench_config_strategy(c),
+                          .options.lighting = opt->lighting, .options.fresnel = bench_config_fresnel(c, opt->fresnel),
+                          .width = opt->sizes[0].width, .height = opt->sizes[0].height, .options.synchronous_stats = 1};
     bench_renderer_desc(run, ctx, &d);
     if (slot) bench_effect_enable(opt, list[slot - 1], &d);
-    if (d.ssao.method != TL_SSAO_OFF) d.keep_targets = TL_TARGET_BIT(TL_TARGET_AO);
+    if (d.options.ssao.method != TL_SSAO_OFF) d.options.keep_targets = TL_TARGET_BIT(TL_TARGET_AO);
     tl_renderer *r = NULL;
     if (tl_renderer_create(&d, &r) != TL_OK) return NULL; /* the logger said why */
     if (tl_renderer_set_scene(r, scene) != TL_OK || tl_renderer_set_lights(r, lights, count) != TL_OK) {

@@ -3,7 +3,7 @@
  * every mode see the same share of whatever else the machine is doing. Then medians of the GPU
  * timers and the wall clock, the plan's targets, the renderer's fragment and byte counts, and the
  * error of the final and HDR images against fat's images of the same frame. Last, what planning
- * saves in time: each mode planned against tl_renderer_desc.no_planning, on the same context. */
+ * saves in time: each mode planned against tl_renderer_options.no_planning, on the same context. */
 #define _DEFAULT_SOURCE /* sysconf(_SC_PHYS_PAGES) */
 
 #include <math.h>
@@ -300,10 +300,11 @@ void bench_renderer_desc(bench_run *run, tl_context *ctx, tl_renderer_desc *d)
 static tl_renderer_desc bench__config_desc(const bench_run *run, bench_config c, bench_size size)
 {
     const bench_options *opt = &run->opt;
-    tl_renderer_desc d = {.mode = bench_config_mode(c), .light_strategy = bench_config_strategy(c),
-                          .light_format = bench_config_light_format(c), .lighting = opt->lighting,
-                          .fresnel = bench_config_fresnel(c, opt->fresnel), .width = size.width,
-                          .height = size.height, .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR), .synchronous_stats = 1};
+    tl_renderer_desc d = {.options.mode = bench_config_mode(c), .options.light_strategy = bench_config_strategy(c),
+                          .options.light_format = bench_config_light_format(c), .options.lighting = opt->lighting,
+                          .options.fresnel = bench_config_fresnel(c, opt->fresnel), .width = size.width,
+                          .height = size.height, .options.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
+                          .options.synchronous_stats = 1};
     tl_tool_budget_renderer(&opt->budgets, &d);
     return d;
 }
@@ -555,7 +556,7 @@ static int bench__planning_frames(bench_run *run, tl_renderer **r, const char *n
 }
 
 /* What planning saves in time: each mode of run->planning rendered at the first size with the
- * largest light count by a planned renderer and by one with tl_renderer_desc.no_planning, the two
+ * largest light count by a planned renderer and by one with tl_renderer_options.no_planning, the two
  * taking turns frame by frame when both fit beside each other (bench_renderers_at_once), else one
  * after the other, after the same warm-up; medians of the frame time. */
 static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *scene, tl_tool_progress *progress,
@@ -580,9 +581,9 @@ static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *s
         for (size_t first = 0; !err && first < 2; first += together) {
             tl_renderer *r[2] = {NULL, NULL};
             for (size_t k = 0; !err && k < together; k++) {
-                tl_renderer_desc desc = {.mode = p->mode, .width = size.width, .height = size.height,
-                                         .no_planning = (int)(first + k), .lighting = run->opt.lighting,
-                                         .fresnel = run->opt.fresnel, .synchronous_stats = 1};
+                tl_renderer_desc desc = {.options.mode = p->mode, .width = size.width, .height = size.height,
+                                         .options.no_planning = (int)(first + k), .options.lighting = run->opt.lighting,
+                                         .options.fresnel = run->opt.fresnel, .options.synchronous_stats = 1};
                 bench_renderer_desc(run, ctx, &desc);
                 if (tl_renderer_create(&desc, &r[k]) != TL_OK) err = 1; /* the logger said why */
                 else if (tl_renderer_set_scene(r[k], bench_scene_get(scene)) != TL_OK ||

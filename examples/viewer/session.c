@@ -72,10 +72,10 @@ void vw_destroy_renderers(vw_app *app)
 static tl_renderer *vw_make(vw_app *app, tl_render_mode mode, uint32_t keep)
 {
     tl_renderer_desc d = app->desc;
-    d.mode = mode;
+    d.options.mode = mode;
     d.width = app->width;
     d.height = app->height;
-    d.keep_targets = keep;
+    d.options.keep_targets = keep;
     d.logger = vw_logger(app);
     tl_renderer *r = NULL;
     if (tl_renderer_create(&d, &r) != TL_OK) return NULL;
@@ -106,7 +106,7 @@ int vw_make_renderers(vw_app *app)
 {
     vw_destroy_renderers(app);
     app->kept = vw_needs_kept(app);
-    app->r = vw_make(app, app->desc.mode, app->kept ? TL_TARGETS_ALL : 0);
+    app->r = vw_make(app, app->desc.options.mode, app->kept ? TL_TARGETS_ALL : 0);
     if (!app->r) return -1;
     if (app->split_on) app->split = vw_make(app, app->split_mode, 0);
     if (!app->split_on && (app->grid || app->view == VW_VIEW_DIFF_FAT)) app->fat = vw_make(app, TL_MODE_FAT, 0);

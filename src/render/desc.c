@@ -97,44 +97,44 @@ static int tl__ssr_resolve(tl_ssr_desc *s)
 
 static tl_result tl__effects_resolve(tl_renderer_desc *d)
 {
-    int ok = tl__ssao_resolve(&d->ssao);
-    ok &= tl__fog_resolve(&d->fog);
-    ok &= tl__dof_resolve(&d->dof);
-    ok &= tl__bloom_resolve(&d->bloom);
-    ok &= tl__ssr_resolve(&d->ssr);
+    int ok = tl__ssao_resolve(&d->options.ssao);
+    ok &= tl__fog_resolve(&d->options.fog);
+    ok &= tl__dof_resolve(&d->options.dof);
+    ok &= tl__bloom_resolve(&d->options.bloom);
+    ok &= tl__ssr_resolve(&d->options.ssr);
     return ok ? TL_OK : TL_ERROR_INVALID_ARGUMENT;
 }
 
 tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc *d)
 {
     *d = *in;
-    if (d->mode == TL_MODE_DEFAULT) d->mode = TL_MODE_THIN_LPP;
+    if (d->options.mode == TL_MODE_DEFAULT) d->options.mode = TL_MODE_THIN_LPP;
     if (!d->width) d->width = 1280;
     if (!d->height) d->height = 720;
-    if (d->depth_format == TL_DEPTH_FORMAT_DEFAULT) d->depth_format = TL_DEPTH_FORMAT_D24;
-    if (d->rt0 == TL_RT0_DEFAULT) d->rt0 = TL_RT0_RGBA8;
-    if (d->light_buffer == TL_LIGHT_BUFFER_DEFAULT) d->light_buffer = TL_LIGHT_BUFFER_EXACT;
-    if (d->light_format == TL_LIGHT_FORMAT_DEFAULT) d->light_format = TL_LIGHT_FORMAT_RGBA16F;
-    if (d->tiled_shading == TL_TILED_SHADING_DEFAULT) d->tiled_shading = TL_TILED_SHADING_FRAGMENT;
-    if (d->fresnel == TL_FRESNEL_DEFAULT) d->fresnel = TL_FRESNEL_TWO_SUMS;
-    if (!d->tile_size) d->tile_size = TL__TILE_SIZE_DEFAULT;
-    if (d->fxaa == TL_FXAA_DEFAULT) d->fxaa = TL_FXAA_29;
-    if (d->fxaa_edge_threshold <= 0.0f) d->fxaa_edge_threshold = 0.166f;
-    if (d->fxaa_edge_threshold_min <= 0.0f) d->fxaa_edge_threshold_min = 0.0833f;
-    if (d->fxaa_subpix == 0.0f) d->fxaa_subpix = 0.75f;
-    if (d->fxaa_subpix < 0.0f) d->fxaa_subpix = 0.0f;
-    if (!(d->exposure > 0.0f)) d->exposure = 1.0f;
-    if ((unsigned)d->mode >= TL_MODE_COUNT_ || (unsigned)d->depth_format >= TL_DEPTH_FORMAT_COUNT_ ||
-        (unsigned)d->rt0 >= TL_RT0_COUNT_ || (unsigned)d->light_buffer >= TL_LIGHT_BUFFER_COUNT_ ||
-        (unsigned)d->fxaa >= TL_FXAA_COUNT_ || (unsigned)d->light_format >= TL_LIGHT_FORMAT_COUNT_ ||
-        (unsigned)d->light_strategy >= TL_LIGHT_STRATEGY_COUNT_ || (unsigned)d->tiled_shading >= TL_TILED_SHADING_COUNT_ ||
-        (unsigned)d->lighting >= TL_LIGHTING_COUNT_ || (unsigned)d->fresnel >= TL_FRESNEL_COUNT_)
+    if (d->options.depth_format == TL_DEPTH_FORMAT_DEFAULT) d->options.depth_format = TL_DEPTH_FORMAT_D24;
+    if (d->options.rt0 == TL_RT0_DEFAULT) d->options.rt0 = TL_RT0_RGBA8;
+    if (d->options.light_buffer == TL_LIGHT_BUFFER_DEFAULT) d->options.light_buffer = TL_LIGHT_BUFFER_EXACT;
+    if (d->options.light_format == TL_LIGHT_FORMAT_DEFAULT) d->options.light_format = TL_LIGHT_FORMAT_RGBA16F;
+    if (d->options.tiled_shading == TL_TILED_SHADING_DEFAULT) d->options.tiled_shading = TL_TILED_SHADING_FRAGMENT;
+    if (d->options.fresnel == TL_FRESNEL_DEFAULT) d->options.fresnel = TL_FRESNEL_TWO_SUMS;
+    if (!d->options.tile_size) d->options.tile_size = TL__TILE_SIZE_DEFAULT;
+    if (d->options.fxaa == TL_FXAA_DEFAULT) d->options.fxaa = TL_FXAA_29;
+    if (d->options.fxaa_edge_threshold <= 0.0f) d->options.fxaa_edge_threshold = 0.166f;
+    if (d->options.fxaa_edge_threshold_min <= 0.0f) d->options.fxaa_edge_threshold_min = 0.0833f;
+    if (d->options.fxaa_subpix == 0.0f) d->options.fxaa_subpix = 0.75f;
+    if (d->options.fxaa_subpix < 0.0f) d->options.fxaa_subpix = 0.0f;
+    if (!(d->options.exposure > 0.0f)) d->options.exposure = 1.0f;
+    if ((unsigned)d->options.mode >= TL_MODE_COUNT_ || (unsigned)d->options.depth_format >= TL_DEPTH_FORMAT_COUNT_ ||
+        (unsigned)d->options.rt0 >= TL_RT0_COUNT_ || (unsigned)d->options.light_buffer >= TL_LIGHT_BUFFER_COUNT_ ||
+        (unsigned)d->options.fxaa >= TL_FXAA_COUNT_ || (unsigned)d->options.light_format >= TL_LIGHT_FORMAT_COUNT_ ||
+        (unsigned)d->options.light_strategy >= TL_LIGHT_STRATEGY_COUNT_ || (unsigned)d->options.tiled_shading >= TL_TILED_SHADING_COUNT_ ||
+        (unsigned)d->options.lighting >= TL_LIGHTING_COUNT_ || (unsigned)d->options.fresnel >= TL_FRESNEL_COUNT_)
         return TL_ERROR_INVALID_ARGUMENT;
     for (int k = 0; k < 3; k++)
-        if (!isfinite(d->ambient[k])) return TL_ERROR_INVALID_ARGUMENT;
-    if (d->tile_size != 8 && d->tile_size != 16 && d->tile_size != 32) return TL_ERROR_INVALID_ARGUMENT;
+        if (!isfinite(d->options.ambient[k])) return TL_ERROR_INVALID_ARGUMENT;
+    if (d->options.tile_size != 8 && d->options.tile_size != 16 && d->options.tile_size != 32) return TL_ERROR_INVALID_ARGUMENT;
     /* R11G11B10F has no alpha for the compact layout's specular luminance */
-    if (d->light_format == TL_LIGHT_FORMAT_R11G11B10F && d->light_buffer != TL_LIGHT_BUFFER_EXACT)
+    if (d->options.light_format == TL_LIGHT_FORMAT_R11G11B10F && d->options.light_buffer != TL_LIGHT_BUFFER_EXACT)
         return TL_ERROR_INVALID_ARGUMENT;
     if (d->width > TL__MAX_SIZE || d->height > TL__MAX_SIZE) return TL_ERROR_LIMIT;
     return tl__effects_resolve(d);

@@ -20,7 +20,7 @@ static void tl__clear(tl_renderer *r, const tl__compiled_pass *cp)
     tl__state_apply(gl, &r->state, &masks);
     for (uint8_t k = 0; k < cp->clear_count; k++) gl->ClearNamedFramebufferfv(cp->fbo, GL_COLOR, cp->clear_locations[k], tl__zero);
     if (cp->clear_depth) {
-        float far = r->desc.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ? 0.0f : 1.0f;
+        float far = r->desc.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ? 0.0f : 1.0f;
         gl->ClearNamedFramebufferfi(cp->fbo, GL_DEPTH_STENCIL, 0, far, 0);
     }
 }
@@ -190,7 +190,7 @@ tl_result tl__frame(tl_renderer *r, const tl_camera *camera, const tl_render_out
     if (res != TL_OK) return res;
     if (!r->programs_ready && (res = tl__graph_programs(r)) != TL_OK) return res;
     double t0 = tl__now_ms(), c0 = tl__thread_cpu_ms();
-    int measure = stats || r->desc.synchronous_stats;
+    int measure = stats || r->desc.options.synchronous_stats;
     uint64_t frame = ++r->frame_index;
     tl__query_slot *slot = measure ? tl__queries_slot(r, frame) : NULL;
     tl__frame_record *rec = slot ? &slot->rec : &r->last;
@@ -206,7 +206,7 @@ tl_result tl__frame(tl_renderer *r, const tl_camera *camera, const tl_render_out
         slot->pending = 1;
         r->last_slot = (unsigned)(frame % TL__QUERY_RING);
     }
-    if (r->desc.synchronous_stats) return tl__frame_wait(r, stats);
+    if (r->desc.options.synchronous_stats) return tl__frame_wait(r, stats);
     if (stats && !tl__queries_newest(r, stats)) {
         memset(stats, 0, sizeof *stats);
     }

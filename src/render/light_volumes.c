@@ -138,7 +138,7 @@ static int tl__light_side(const tl_renderer *r, const tl__view *v, const tl_ligh
     float d2 = 0.0f;
     for (int a = 0; a < 3; a++) d2 += (l->position[a] - v->eye[a]) * (l->position[a] - v->eye[a]);
     float margin = bound + 4.0f * v->near_z;
-    return !r->desc.fullscreen_lights && d2 > margin * margin;
+    return !r->desc.options.fullscreen_lights && d2 > margin * margin;
 }
 
 static void tl__instance_fill(const tl_light *l, int type, tl__instance *in)

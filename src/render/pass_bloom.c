@@ -14,7 +14,7 @@
 
 static void tl__bloom_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!in->d.bloom.enabled) return;
+    if (!in->d.options.bloom.enabled) return;
     d->reads = d->samples = TL__B(HDR);
     d->writes = TL__B(BLOOM);
     d->state = tl__pipeline_fullscreen;

@@ -21,7 +21,7 @@ static tl__pipeline tl__geometry_state(const tl__plan_input *in, tl__depth_test 
     p.depth_test = (uint8_t)test;
     p.depth_write = (uint8_t)write;
     p.blend = (uint8_t)blend;
-    p.clip_zero_one = in->d.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
+    p.clip_zero_one = in->d.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
     return p;
 }
 

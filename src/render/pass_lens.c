@@ -10,7 +10,7 @@
 
 static void tl__fog_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (in->d.fog.mode == TL_FOG_OFF) return;
+    if (in->d.options.fog.mode == TL_FOG_OFF) return;
     d->samples = TL__B(DEPTH);
     d->reads = TL__B(DEPTH) | TL__B(HDR);
     d->writes = TL__B(HDR);
@@ -22,8 +22,8 @@ static void tl__fog_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", in->d.fog.mode == TL_FOG_HEIGHT ? "TL_FOG_HEIGHT" : "TL_FOG_DISTANCE",
-             in->d.fog.noise > 0.0f ? " TL_FOG_NOISE" : "");
+    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", in->d.options.fog.mode == TL_FOG_HEIGHT ? "TL_FOG_HEIGHT" : "TL_FOG_DISTANCE",
+             in->d.options.fog.noise > 0.0f ? " TL_FOG_NOISE" : "");
 }
 
 const tl__pass_def tl__pass_fog = {
@@ -39,7 +39,7 @@ const tl__pass_def tl__pass_fog = {
 
 static void tl__dof_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!in->d.dof.enabled) return;
+    if (!in->d.options.dof.enabled) return;
     d->reads = d->samples = TL__B(DEPTH) | TL__B(HDR);
     d->writes = TL__B(DOF);
     d->state = tl__pipeline_fullscreen;
@@ -49,7 +49,7 @@ static void tl__dof_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_DOF_SAMPLES=%u", in->d.dof.samples);
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_DOF_SAMPLES=%u", in->d.options.dof.samples);
 }
 
 const tl__pass_def tl__pass_dof = {
@@ -63,7 +63,7 @@ const tl__pass_def tl__pass_dof = {
 
 static void tl__dof_apply_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!in->d.dof.enabled) return;
+    if (!in->d.options.dof.enabled) return;
     d->reads = d->samples = TL__B(DOF);
     d->writes = TL__B(HDR);
     d->state = tl__pipeline_fullscreen;

@@ -15,7 +15,7 @@ void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
 {
     const tl__mode_def *m = in->mode;
     uint32_t spec_targets = TL__B(LIGHT_SPECULAR) | TL__B(FAT_MATERIAL);
-    int exact_spec = in->spec && in->d.light_buffer == TL_LIGHT_BUFFER_EXACT;
+    int exact_spec = in->spec && in->d.options.light_buffer == TL_LIGHT_BUFFER_EXACT;
     d->writes = m->light_writes & (exact_spec ? ~0u : ~TL__B(LIGHT_SPECULAR));
     if (in->fresnel != TL_FRESNEL_TWO_SUMS) d->writes &= ~TL__B(LIGHT_FRESNEL); /* S2: GGX's two sums only */
     d->reads = m->light_reads & (in->spec ? ~0u : ~spec_targets);
@@ -31,13 +31,13 @@ static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
     if (!(d->writes & TL__B(HDR))) d->clears = d->writes;
     d->attach_depth = 1;
     d->state = (tl__pipeline){.depth_write = 0, .color_write = 1, .blend = TL__BLEND_ADD,
-                              .clip_zero_one = in->d.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED};
+                              .clip_zero_one = in->d.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED};
 }
 
 static void tl__lights_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     const size_t counts[3] = {in->f.point_lights, in->f.spot_lights, in->f.directional_lights};
-    const char *fullscreen = in->d.fullscreen_lights ? " TL_LIGHT_FULLSCREEN" : "";
+    const char *fullscreen = in->d.options.fullscreen_lights ? " TL_LIGHT_FULLSCREEN" : "";
     for (int k = 0; k < 3; k++) {
         if (!counts[k]) continue;
         out->used[k] = 1;
@@ -85,7 +85,7 @@ static void tl__lights_execute(tl_renderer *r, const tl__pass_ctx *ctx)
         }
         tl__state_program(gl, &r->state, p);
         tl__state_vertex_array(gl, &r->state, r->vao_light[k]);
-        if (k == 2 || r->desc.fullscreen_lights) {
+        if (k == 2 || r->desc.options.fullscreen_lights) {
             tl__state_apply(gl, &r->state, &base); /* no depth test, no culling */
             gl->DrawArraysInstanced(GL_TRIANGLES, 0, 3, (GLsizei)r->instance_count[k]);
             ctx->rec->st.draw_calls++;

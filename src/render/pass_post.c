@@ -10,8 +10,8 @@
 
 static void tl__tonemap_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    d->reads = d->samples = TL__B(HDR) | (in->d.bloom.enabled ? TL__B(BLOOM) : 0u);
-    d->writes = in->d.fxaa != TL_FXAA_OFF ? TL__B(LDR) : TL__B(OUTPUT);
+    d->reads = d->samples = TL__B(HDR) | (in->d.options.bloom.enabled ? TL__B(BLOOM) : 0u);
+    d->writes = in->d.options.fxaa != TL_FXAA_OFF ? TL__B(LDR) : TL__B(OUTPUT);
     d->state = tl__pipeline_fullscreen;
 }
 
@@ -43,7 +43,7 @@ const tl__pass_def tl__pass_tonemap = {
 
 static void tl__fxaa_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (in->d.fxaa == TL_FXAA_OFF) return;
+    if (in->d.options.fxaa == TL_FXAA_OFF) return;
     d->reads = d->samples = TL__B(LDR);
     d->writes = TL__B(OUTPUT);
     d->state = tl__pipeline_fullscreen;
@@ -53,8 +53,8 @@ static void tl__fxaa_permute(const tl__plan_input *in, const tl__pass_decl *d, t
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", in->d.fxaa == TL_FXAA_12 ? "TL_FXAA_STEPS=5" : "TL_FXAA_STEPS=12",
-             in->d.fxaa == TL_FXAA_39 ? " TL_FXAA_FINE" : "");
+    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", in->d.options.fxaa == TL_FXAA_12 ? "TL_FXAA_STEPS=5" : "TL_FXAA_STEPS=12",
+             in->d.options.fxaa == TL_FXAA_39 ? " TL_FXAA_FINE" : "");
 }
 
 /* FXAA samples between texels: linear filtering always. */

@@ -30,7 +30,7 @@ static void tl__ssao_permute(const tl__plan_input *in, const tl__pass_decl *d, t
     const char *source = tl__ssao_fat(in) ? "TL_SSAO_FAT" : in->mode->forward ? "TL_SSAO_DEPTH_NORMALS" : in->rt0_define;
     out->used[0] = 1;
     snprintf(out->slot[0], sizeof out->slot[0], "%s TL_SSAO_SAMPLES=%u %s",
-             in->d.ssao.method == TL_SSAO_HEMISPHERE ? "TL_SSAO_HEMISPHERE" : "TL_SSAO_DISC", in->d.ssao.samples, source);
+             in->d.options.ssao.method == TL_SSAO_HEMISPHERE ? "TL_SSAO_HEMISPHERE" : "TL_SSAO_DISC", in->d.options.ssao.samples, source);
 }
 
 const tl__pass_def tl__pass_ssao = {
@@ -56,7 +56,7 @@ static void tl__ssao_blur_permute(const tl__plan_input *in, const tl__pass_decl 
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_SSAO_BLUR_RADIUS=%u", in->d.ssao.blur_radius);
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_SSAO_BLUR_RADIUS=%u", in->d.options.ssao.blur_radius);
 }
 
 const tl__pass_def tl__pass_ssao_blur = {

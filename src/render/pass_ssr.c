@@ -9,7 +9,7 @@
 
 static int tl__ssr_fat(const tl__plan_input *in) { return (in->mode->gbuffer_writes & TL__B(FAT_POSITION)) != 0; }
 
-static int tl__ssr_on(const tl__plan_input *in) { return in->d.ssr.enabled && !in->mode->forward; }
+static int tl__ssr_on(const tl__plan_input *in) { return in->d.options.ssr.enabled && !in->mode->forward; }
 
 static void tl__ssr_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
@@ -24,8 +24,8 @@ static void tl__ssr_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_SSR_STEPS=%u TL_SSR_REFINE=%u %s", in->d.ssr.steps,
-             in->d.ssr.refine, tl__ssr_fat(in) ? "TL_SSAO_FAT" : in->rt0_define);
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_SSR_STEPS=%u TL_SSR_REFINE=%u %s", in->d.options.ssr.steps,
+             in->d.options.ssr.refine, tl__ssr_fat(in) ? "TL_SSAO_FAT" : in->rt0_define);
 }
 
 const tl__pass_def tl__pass_ssr = {

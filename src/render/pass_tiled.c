@@ -41,7 +41,7 @@ const tl__pass_def tl__pass_light_cull = {
 
 /* ---- the tiled light pass ---------------------------------------------------------------------- */
 
-static int tl__compute_shading(const tl__plan_input *in) { return in->d.tiled_shading == TL_TILED_SHADING_COMPUTE; }
+static int tl__compute_shading(const tl__plan_input *in) { return in->d.options.tiled_shading == TL_TILED_SHADING_COMPUTE; }
 
 static void tl__tiled_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
@@ -62,7 +62,7 @@ static void tl__tiled_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__tiled_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     int slot = tl__compute_shading(in);
-    const char *image_format = in->d.light_format == TL_LIGHT_FORMAT_R11G11B10F ? "r11f_g11f_b10f" : "rgba16f";
+    const char *image_format = in->d.options.light_format == TL_LIGHT_FORMAT_R11G11B10F ? "r11f_g11f_b10f" : "rgba16f";
     out->used[slot] = 1;
     snprintf(out->slot[slot], sizeof out->slot[slot], "%s%s%s %s%s%s", in->mode->light_define,
              (d->reads & TL__B(RT0)) ? " " : "", (d->reads & TL__B(RT0)) ? in->rt0_define : "", in->spec_define,

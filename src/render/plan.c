@@ -25,7 +25,7 @@ static void tl__material_defines(const tl_scene_feature_set *f, char *out, size_
 static void tl__plan_strategy(tl__plan_input *in)
 {
     size_t local = in->f.point_lights + in->f.spot_lights;
-    tl_light_strategy s = in->d.light_strategy;
+    tl_light_strategy s = in->d.options.light_strategy;
     if (s != TL_LIGHT_STRATEGY_DEFAULT) {
         snprintf(in->strategy_reason, sizeof in->strategy_reason, "forced by the options");
     } else if (local >= TL__TILED_CROSSOVER) {
@@ -38,7 +38,7 @@ static void tl__plan_strategy(tl__plan_input *in)
                  TL__TILED_CROSSOVER);
     }
     in->strategy = s;
-    in->tile_size = in->d.tile_size;
+    in->tile_size = in->d.options.tile_size;
     in->tiles_x = (in->d.width + in->tile_size - 1) / in->tile_size;
     in->tiles_y = (in->d.height + in->tile_size - 1) / in->tile_size;
 }
@@ -47,8 +47,8 @@ static void tl__plan_strategy(tl__plan_input *in)
 static void tl__plan_lighting(tl__plan_input *in)
 {
     const tl_renderer_desc *d = &in->d;
-    in->lighting = d->lighting;
-    if (d->lighting != TL_LIGHTING_DEFAULT) {
+    in->lighting = d->options.lighting;
+    if (d->options.lighting != TL_LIGHTING_DEFAULT) {
         snprintf(in->lighting_reason, sizeof in->lighting_reason, "forced by the options");
     } else if (in->f.has_microfacet) {
         in->lighting = TL_LIGHTING_GGX;
@@ -57,8 +57,8 @@ static void tl__plan_lighting(tl__plan_input *in)
         in->lighting = TL_LIGHTING_BLINN_PHONG;
         snprintf(in->lighting_reason, sizeof in->lighting_reason, "auto: no material authored for GGX");
     }
-    int ggx = in->lighting == TL_LIGHTING_GGX, exact = d->light_buffer == TL_LIGHT_BUFFER_EXACT;
-    if (ggx && in->spec && in->mode->material_pass) in->fresnel = exact ? d->fresnel : TL_FRESNEL_NV;
+    int ggx = in->lighting == TL_LIGHTING_GGX, exact = d->options.light_buffer == TL_LIGHT_BUFFER_EXACT;
+    if (ggx && in->spec && in->mode->material_pass) in->fresnel = exact ? d->options.fresnel : TL_FRESNEL_NV;
     snprintf(in->spec_define, sizeof in->spec_define, "%s%s%s",
              !in->spec ? "TL_SPECULAR_NONE" : exact ? "TL_SPECULAR_EXACT" : "TL_SPECULAR_COMPACT", ggx ? " TL_GGX" : "",
              in->fresnel == TL_FRESNEL_TWO_SUMS ? " TL_FRESNEL_SUMS" : in->fresnel == TL_FRESNEL_NV ? " TL_FRESNEL_NV" : "");
@@ -70,19 +70,19 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     in->d = *d;
     in->f = *features;
     tl_scene_feature_set *f = &in->f;
-    if (d->no_planning) { /* plan for every feature, as a renderer without a planner would */
+    if (d->options.no_planning) { /* plan for every feature, as a renderer without a planner would */
         f->point_lights += !f->point_lights;
         f->spot_lights += !f->spot_lights;
         f->directional_lights += !f->directional_lights;
         f->has_specular = f->has_textures = f->has_normal_maps = f->has_emissive = f->has_alpha_mask = 1;
         f->has_metallic_roughness = f->has_occlusion = f->has_emissive_texture = 1;
     }
-    in->mode = &tl__modes[d->mode];
+    in->mode = &tl__modes[d->options.mode];
     in->lights = f->point_lights + f->spot_lights + f->directional_lights > 0;
     tl__plan_strategy(in);
     in->spec = f->has_specular != 0;
     tl__plan_lighting(in);
-    in->rt0_define = d->rt0 == TL_RT0_RGB10A2 ? "TL_RT0_RGB10A2" : "TL_RT0_RGBA8";
+    in->rt0_define = d->options.rt0 == TL_RT0_RGB10A2 ? "TL_RT0_RGB10A2" : "TL_RT0_RGBA8";
     tl__material_defines(f, in->material_defines, sizeof in->material_defines);
 }
 
@@ -307,11 +307,11 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     tl__plan_input in;
     tl__plan_input_init(&d, features, &in);
     memset(p, 0, sizeof *p);
-    p->pub.mode = d.mode;
+    p->pub.mode = d.options.mode;
     p->pub.width = d.width;
     p->pub.height = d.height;
     /* the output is read after the frame; kept targets too, when the plan has them at all */
-    uint32_t kept = TL__BIT(TL_TARGET_OUTPUT) | (d.keep_targets & (TL__BIT(TL_TARGET_COUNT) - 1u));
+    uint32_t kept = TL__BIT(TL_TARGET_OUTPUT) | (d.options.keep_targets & (TL__BIT(TL_TARGET_COUNT) - 1u));
     p->pub.light_strategy = in.strategy;
     p->pub.lighting = in.lighting;
     p->pub.fresnel = in.fresnel;

@@ -33,7 +33,7 @@ static tl_result tl__readable(tl_renderer *r, tl_target_id id)
     if (r->plan.shared & TL_TARGET_BIT(id))
         return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
                         "renderer: target %s shares its memory with a target written later in the frame; list it in "
-                        "tl_renderer_desc.keep_targets to read it",
+                        "tl_renderer_options.keep_targets to read it",
                         tl_target_name(id));
     return TL_OK;
 }
@@ -59,7 +59,7 @@ static tl_result tl__read_depth(tl_renderer *r, float *rgba, size_t n, char *msg
     if (res != TL_OK) return res;
     tl_projection pr; /* of the camera the depth was rendered with (set_scene: the scene's) */
     const tl__camera_view *c = &r->frame_camera;
-    res = tl_projection_perspective(r->desc.depth_format, c->fov_y, (float)r->desc.width / (float)r->desc.height,
+    res = tl_projection_perspective(r->desc.options.depth_format, c->fov_y, (float)r->desc.width / (float)r->desc.height,
                                     c->near_z, c->far_z, &pr);
     if (res != TL_OK) {
         snprintf(msg, msg_size, "no camera has been resolved yet");
@@ -80,7 +80,7 @@ static tl_result tl__read_rt0(tl_renderer *r, float *rgba, size_t n, char *msg, 
 {
     uint8_t *bytes = (uint8_t *)tl__alloc_array(&r->alloc, n, 4);
     if (!bytes) return TL_ERROR_OUT_OF_MEMORY;
-    int ten = r->desc.rt0 == TL_RT0_RGB10A2;
+    int ten = r->desc.options.rt0 == TL_RT0_RGB10A2;
     tl_result res = tl__target_read(&r->gl, &r->targets[TL_TARGET_RT0], GL_RGBA,
                                     ten ? GL_UNSIGNED_INT_2_10_10_10_REV : GL_UNSIGNED_BYTE, bytes, n * 4, msg, msg_size);
     for (size_t i = 0; res == TL_OK && i < n; i++) {

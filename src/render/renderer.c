@@ -93,7 +93,7 @@ static tl_result tl__create_objects(tl_renderer *r)
     r->ubo_align = ubo_align > 16 ? (size_t)ubo_align : 16;
     r->ssbo_align = ssbo_align > 16 ? (size_t)ssbo_align : 16;
     tl__storage_limits(r);
-    r->state.reversed = r->desc.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
+    r->state.reversed = r->desc.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
     tl__light_volumes_create(r);
     gl->CreateVertexArrays(1, &r->vao_empty);
     tl__gl_label(gl, GL_VERTEX_ARRAY, r->vao_empty, "vao.fullscreen");
@@ -132,6 +132,7 @@ tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out)
     if (!r) return tl__logger_fail(&desc->logger, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory");
     r->alloc = a;
     r->desc = d;
+    r->options_given = desc->options;
     r->desc.allocator = a;
     r->log.logger = d.logger;
     tl__context_check_init(r);
@@ -259,6 +260,41 @@ tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height)
     /* refused before anything changed (the budget): the old size stays with the old plan */
     if (res != TL_OK && r->plan.pub.width == old.width && r->plan.pub.height == old.height) r->desc = old;
     return res;
+}
+
+/* ---- options ------------------------------------------------------------------------------- */
+
+tl_result tl_renderer_set_options(tl_renderer *r, const tl_renderer_options *options)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__need_context(r, "tl_renderer_set_options");
+    if (res != TL_OK) return res;
+    if (!options) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: set_options needs options");
+    tl_renderer_desc d = r->desc;
+    d.options = *options;
+    if ((res = tl__renderer_desc_resolve(&d, &d)) != TL_OK)
+        return tl__fail(r, res, "renderer: an option is out of range");
+    tl_renderer_desc old = r->desc;
+    r->desc = d;
+    r->state.reversed = d.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
+    res = tl__replan(r);
+    if (res != TL_OK) { /* the old options, with the plan they had */
+        r->desc = old;
+        r->state.reversed = old.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
+        tl__replan(r);
+        return res;
+    }
+    r->options_given = *options;
+    r->state.reversed = d.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
+    tl__ambient_resolve(d.options.ambient, r->scene_ambient, r->ambient);
+    return res;
+}
+
+void tl_renderer_get_options(const tl_renderer *r, tl_renderer_options *options)
+{
+    if (!options) return;
+    if (r) *options = r->options_given;
+    else memset(options, 0, sizeof *options);
 }
 
 /* ---- application passes ---------------------------------------------------------------------- */

@@ -156,6 +156,7 @@ struct tl_renderer {
     tl_allocator alloc;
     tl__log log;
     tl_renderer_desc desc; /* defaults resolved */
+    tl_renderer_options options_given; /* as the caller gave them (tl_renderer_get_options) */
     GladGLContext gl;
     tl__state state;
     size_t ubo_align, ssbo_align;
@@ -209,7 +210,8 @@ struct tl_renderer {
     int has_bounds;
     tl__camera_view frame_camera; /* the last frame's camera as resolved (after set_scene: the scene's) */
     unsigned warned;              /* TL__WARNED_* given since the scene was set */
-    float ambient[3];
+    float ambient[3];       /* resolved: the options' or the scene's */
+    float scene_ambient[3]; /* the scene's own */
     int has_scene;
 
     /* lights (light_volumes.c) */

@@ -187,7 +187,7 @@ static tl_result tl__scene_parts(tl_renderer *r, const tl_scene *s)
 tl_result tl__scene_camera(tl_renderer *r, const tl_scene *s, tl__scene_frame *out)
 {
     out->has_bounds = tl__objects_bounds(s->objects, s->object_count, out->bounds_min, out->bounds_max);
-    tl_result res = tl__camera_resolve(&s->camera, "scene.camera", r->desc.depth_format,
+    tl_result res = tl__camera_resolve(&s->camera, "scene.camera", r->desc.options.depth_format,
                                        out->has_bounds ? out->bounds_min : NULL, out->has_bounds ? out->bounds_max : NULL,
                                        &out->camera, out->warning, sizeof out->warning);
     if (res != TL_OK) return tl__fail(r, res, "renderer: %s", out->warning);
@@ -306,8 +306,8 @@ static GLuint tl__static_buffer(const GladGLContext *gl, size_t bytes, const voi
     return b;
 }
 
-/* tl_renderer_desc.ambient: all zero keeps the scene's; otherwise it replaces it, negative = 0. */
-static void tl__ambient_resolve(const float desc[3], const float scene[3], float out[3])
+/* tl_renderer_options.ambient: all zero keeps the scene's; otherwise it replaces it, negative = 0. */
+void tl__ambient_resolve(const float desc[3], const float scene[3], float out[3])
 {
     int set = desc[0] != 0.0f || desc[1] != 0.0f || desc[2] != 0.0f;
     for (int k = 0; k < 3; k++) out[k] = !set ? scene[k] : desc[k] < 0.0f ? 0.0f : desc[k];
@@ -348,7 +348,8 @@ tl_result tl__scene_upload(tl_renderer *r, const tl_scene *s)
     r->vbo_object_ids = tl__static_buffer(gl, no * sizeof(uint32_t), ids, "buffer.object_ids");
     tl__free(&r->alloc, ids);
     r->camera = s->camera;
-    tl__ambient_resolve(r->desc.ambient, s->ambient, r->ambient);
+    memcpy(r->scene_ambient, s->ambient, sizeof r->scene_ambient);
+    tl__ambient_resolve(r->desc.options.ambient, s->ambient, r->ambient);
     tl_scene_features(s, &r->features);
     return TL_OK;
 }

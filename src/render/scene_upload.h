@@ -28,5 +28,7 @@ void tl__scene_vao(tl_renderer *r);
 /* Validates and copies the lights (with per-frame scratch for them); counts them per type. */
 tl_result tl__lights_store(tl_renderer *r, const tl_light *lights, size_t count, size_t kinds[TL__LIGHT_KINDS]);
 void tl__lights_release(tl_renderer *r);
+/* tl_renderer_options.ambient over the scene's: all zero keeps the scene's, negative = 0. */
+void tl__ambient_resolve(const float options[3], const float scene[3], float out[3]);
 
 #endif

@@ -39,13 +39,13 @@ uint32_t tl__target_format(const tl_renderer_desc *d, tl_target_id id)
     if (id == TL_TARGET_DEPTH) {
         /* fat is the full-float reference: D32F. No pass uses stencil, so float depth carries
          * none (D32F_S8 would cost 8 B/px); D24 comes packed with its stencil byte. */
-        int f32 = d->mode == TL_MODE_FAT || d->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ||
-                  d->depth_format == TL_DEPTH_FORMAT_D32F;
+        int f32 = d->options.mode == TL_MODE_FAT || d->options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ||
+                  d->options.depth_format == TL_DEPTH_FORMAT_D32F;
         return f32 ? GL_DEPTH_COMPONENT32F : GL_DEPTH24_STENCIL8;
     }
-    if (id == TL_TARGET_RT0) return d->rt0 == TL_RT0_RGB10A2 ? GL_RGB10_A2 : GL_RGBA8;
+    if (id == TL_TARGET_RT0) return d->options.rt0 == TL_RT0_RGB10A2 ? GL_RGB10_A2 : GL_RGBA8;
     if ((id == TL_TARGET_LIGHT_DIFFUSE || id == TL_TARGET_LIGHT_SPECULAR || id == TL_TARGET_LIGHT_FRESNEL) &&
-        d->light_format == TL_LIGHT_FORMAT_R11G11B10F)
+        d->options.light_format == TL_LIGHT_FORMAT_R11G11B10F)
         return GL_R11F_G11F_B10F;
     return tl__targets[id].format;
 }
@@ -57,7 +57,7 @@ void tl__target_size(const tl_renderer_desc *d, tl_target_id id, uint32_t *width
     uint32_t h = (uint32_t)(((uint64_t)d->height + (1u << shift) - 1u) >> shift);
     *width = w ? w : 1u;
     *height = h ? h : 1u;
-    uint32_t want = id == TL_TARGET_BLOOM ? d->bloom.levels : 1u, n = 1;
+    uint32_t want = id == TL_TARGET_BLOOM ? d->options.bloom.levels : 1u, n = 1;
     /* GL halves each level rounding down, to 1x1 at the least: a level exists while the larger side is >= 2^level */
     while (n < want && n < TL__MAX_LEVELS && ((*width > *height ? *width : *height) >> n) >= 1u) n++;
     *levels = n;

@@ -4,7 +4,7 @@
 
 #include "renderer_internal.h"
 
-static int tl__reversed(const tl_renderer *r) { return r->desc.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED; }
+static int tl__reversed(const tl_renderer *r) { return r->desc.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED; }
 
 static void tl__view_info(const tl_renderer *r, tl__view *v)
 {
@@ -23,7 +23,7 @@ static void tl__view_info(const tl_renderer *r, tl__view *v)
 tl_result tl__camera_check(tl_renderer *r, const tl_camera *c, const char *what, tl__camera_view *out)
 {
     char msg[TL__CHECK_MESSAGE_SIZE];
-    tl_result res = tl__camera_resolve(c, what, r->desc.depth_format, r->has_bounds ? r->bounds_min : NULL,
+    tl_result res = tl__camera_resolve(c, what, r->desc.options.depth_format, r->has_bounds ? r->bounds_min : NULL,
                                        r->has_bounds ? r->bounds_max : NULL, out, msg, sizeof msg);
     if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
     if (out->near_raised && !(r->warned & TL__WARNED_NEAR)) { /* once per scene: not every frame */
@@ -38,7 +38,7 @@ tl_result tl__view_setup(tl_renderer *r, const tl_camera *c, const char *what, t
     tl__camera_view cam;
     tl_result res = tl__camera_check(r, c, what, &cam);
     if (res != TL_OK) return res;
-    res = tl_projection_perspective(r->desc.depth_format, cam.fov_y, (float)r->desc.width / (float)r->desc.height,
+    res = tl_projection_perspective(r->desc.options.depth_format, cam.fov_y, (float)r->desc.width / (float)r->desc.height,
                                     cam.near_z, cam.far_z, &v->projection);
     if (res != TL_OK) /* the camera was resolved for this: a failure here is the renderer's bug */
         return tl__fail(r, res, "renderer: no projection for fov %g, near %g, far %g", (double)cam.fov_y,
@@ -69,10 +69,10 @@ void tl__frame_ubo_post(const tl_renderer *r, tl__frame_ubo *u)
     memset(u, 0, sizeof *u);
     u->inv_size[0] = 1.0f / (float)r->desc.width;
     u->inv_size[1] = 1.0f / (float)r->desc.height;
-    u->exposure = r->desc.exposure;
-    u->fxaa_subpix = r->desc.fxaa_subpix;
-    u->fxaa_edge_threshold = r->desc.fxaa_edge_threshold;
-    u->fxaa_edge_threshold_min = r->desc.fxaa_edge_threshold_min;
+    u->exposure = r->desc.options.exposure;
+    u->fxaa_subpix = r->desc.options.fxaa_subpix;
+    u->fxaa_edge_threshold = r->desc.options.fxaa_edge_threshold;
+    u->fxaa_edge_threshold_min = r->desc.options.fxaa_edge_threshold_min;
 }
 
 void tl__frame_ubo_fill(const tl_renderer *r, const tl__view *v, tl__frame_ubo *u)
