@@ -17,7 +17,13 @@ const tl__pass_def *const tl__pass_table[TL_PASS_COUNT] = {
     &tl__pass_dof_apply,     &tl__pass_bloom,     &tl__pass_tonemap,   &tl__pass_fxaa,
 };
 
-const char *tl_pass_name(tl_pass pass) { return (unsigned)pass < TL_PASS_COUNT ? tl__pass_table[pass]->name : "unknown"; }
+/* The table's order is the frame's; a pass's public id only names it (statistics, plans). */
+const char *tl_pass_name(tl_pass pass)
+{
+    for (int i = 0; i < TL_PASS_COUNT; i++)
+        if (tl__pass_table[i]->id == pass) return tl__pass_table[i]->name;
+    return "unknown";
+}
 
 int tl__pass_table_find(const char *name)
 {

@@ -25,7 +25,7 @@ static void tl__material_defines(const tl_scene_feature_set *f, char *out, size_
 static void tl__plan_strategy(tl__plan_input *in)
 {
     size_t local = in->f.point_lights + in->f.spot_lights;
-    tl_light_strategy s = in->d.options.light_strategy;
+    tl_light_strategy s = in->o->light_strategy;
     if (s != TL_LIGHT_STRATEGY_DEFAULT) {
         snprintf(in->strategy_reason, sizeof in->strategy_reason, "forced by the options");
     } else if (local >= TL__TILED_CROSSOVER) {
@@ -38,7 +38,7 @@ static void tl__plan_strategy(tl__plan_input *in)
                  TL__TILED_CROSSOVER);
     }
     in->strategy = s;
-    in->tile_size = in->d.options.tile_size;
+    in->tile_size = in->o->tile_size;
     in->tiles_x = (in->d.width + in->tile_size - 1) / in->tile_size;
     in->tiles_y = (in->d.height + in->tile_size - 1) / in->tile_size;
 }
@@ -68,6 +68,7 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
 {
     memset(in, 0, sizeof *in);
     in->d = *d;
+    in->o = &in->d.options;
     in->f = *features;
     tl_scene_feature_set *f = &in->f;
     if (d->options.no_planning) { /* plan for every feature, as a renderer without a planner would */
@@ -176,18 +177,19 @@ static void tl__cull_passes(tl__plan *p, uint32_t sinks)
 
 /* Format, size, levels and bytes of a target; a storage buffer's or a reduced target's bytes per
  * pixel are its bytes over the frame's pixels, rounded up. */
-static void tl__target_memory(const tl_renderer_desc *d, const tl_frame_plan *fp, tl_target_id t, tl_plan_target *ti)
+static void tl__target_memory(const tl_renderer_desc *d, const tl__target_def *def, const tl_frame_plan *fp,
+                              tl_plan_target *ti)
 {
     size_t px = (size_t)d->width * d->height, bpp;
-    ti->format = tl__target_format(d, t);
+    ti->format = tl__target_format(def, &d->options);
     bpp = tl__format_bytes_per_pixel(ti->format);
-    tl__target_size(d, t, &ti->width, &ti->height, &ti->levels);
+    tl__target_size(def, &d->options, d->width, d->height, &ti->width, &ti->height, &ti->levels);
     ti->bytes = 0;
     for (uint32_t k = 0; k < ti->levels; k++) {
         size_t w = ti->width >> k, h = ti->height >> k;
         ti->bytes += (w ? w : 1u) * (h ? h : 1u) * bpp;
     }
-    if (tl__targets[t].buffer) ti->bytes = tl__light_lists_bytes((size_t)fp->tiles_x * fp->tiles_y);
+    if (def->buffer_bytes) ti->bytes = def->buffer_bytes((size_t)fp->tiles_x * fp->tiles_y);
     ti->bytes_per_pixel = (uint32_t)((ti->bytes + px - 1) / px);
 }
 
@@ -198,10 +200,10 @@ static void tl__lifetimes(tl__plan *p, const tl_renderer_desc *d, uint32_t sinks
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         tl_plan_target *ti = &fp->target_info[t];
         if (!(fp->targets & TL__BIT(t))) continue;
-        tl__target_memory(d, fp, (tl_target_id)t, ti);
+        tl__target_memory(d, p->targets[t], fp, ti);
         fp->target_bytes_per_pixel[t] = ti->bytes_per_pixel;
         fp->bytes_per_pixel += ti->bytes_per_pixel;
-        if (tl__targets[t].store != TL__STORE_NONE) fp->gbuffer_bytes_per_pixel += ti->bytes_per_pixel;
+        if (p->targets[t]->store != TL__STORE_NONE) fp->gbuffer_bytes_per_pixel += ti->bytes_per_pixel;
         ti->first_pass = (uint32_t)fp->pass_count;
         for (size_t i = 0; i < fp->pass_count; i++) {
             if (!((fp->passes[i].reads | fp->passes[i].writes) & TL__BIT(t))) continue;
@@ -233,7 +235,7 @@ static void tl__share_memory(tl__plan *p)
             tl_plan_target *ti = &fp->target_info[t];
             if (!ti->bytes_per_pixel || ti->first_pass != step) continue;
             /* a block is one texture of the frame's size and one level: a reduced target keeps its own */
-            unsigned cls = tl__targets[t].shift || ti->levels > 1 ? 0u : tl__format_view_class(ti->format);
+            unsigned cls = p->targets[t]->shift || ti->levels > 1 ? 0u : tl__format_view_class(ti->format);
             size_t b = fp->block_count;
             for (size_t k = 0; cls && k < fp->block_count; k++)
                 if (block_class[k] == cls && block_end[k] < ti->first_pass) {
@@ -258,14 +260,14 @@ static void tl__share_memory(tl__plan *p)
 /* ---- programs ------------------------------------------------------------------------------- */
 
 /* TL_OUT_<TARGET>=<location> for every colour write: attachments in tl_target_id order. */
-static void tl__output_defines(uint32_t writes, char *out, size_t size)
+static void tl__output_defines(const tl__plan *p, uint32_t writes, char *out, size_t size)
 {
     size_t len = 0;
     int loc = 0;
     out[0] = '\0';
     for (int t = 0; t < TL_TARGET_COUNT; t++)
-        if (t != TL_TARGET_DEPTH && !tl__targets[t].buffer && (writes & TL__BIT(t))) {
-            int n = snprintf(out + len, size - len, "%sTL_OUT_%s=%d", len ? " " : "", tl__targets[t].macro, loc++);
+        if (t != TL_TARGET_DEPTH && !p->targets[t]->buffer_bytes && (writes & TL__BIT(t))) {
+            int n = snprintf(out + len, size - len, "%sTL_OUT_%s=%d", len ? " " : "", p->targets[t]->macro, loc++);
             if (n > 0 && (size_t)n < size - len) len += (size_t)n;
         }
 }
@@ -282,7 +284,7 @@ static tl_result tl__programs(const tl__plan_input *in, tl__plan *p)
         memset(&defs, 0, sizeof defs);
         def->permute(in, &p->decl[i], &defs);
         char outs[160];
-        tl__output_defines(p->decl[i].writes, outs, sizeof outs);
+        tl__output_defines(p, p->decl[i].writes, outs, sizeof outs);
         for (uint32_t s = 0; s < TL__PASS_MAX_PROGRAMS && fp->program_count < TL_PLAN_MAX_PROGRAMS; s++) {
             if (!defs.used[s]) continue;
             tl_plan_program *pr = &fp->programs[fp->program_count++];
@@ -302,11 +304,12 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
 {
     if (!desc || !features || !p) return TL_ERROR_INVALID_ARGUMENT;
     tl_renderer_desc d;
-    tl_result res = tl__renderer_desc_resolve(desc, &d);
+    tl_result res = tl__renderer_desc_resolve(desc, &d, NULL);
     if (res != TL_OK) return res;
     tl__plan_input in;
     tl__plan_input_init(&d, features, &in);
     memset(p, 0, sizeof *p);
+    tl__target_defs(p->targets);
     p->pub.mode = d.options.mode;
     p->pub.width = d.width;
     p->pub.height = d.height;
