@@ -113,6 +113,7 @@ typedef struct bench__effect_images {
     float *ao, *ref_ao; /* R of the AO target */
 } bench__effect_images;
 
+/* The run's renderer `slot` (bench_renderer) with the configuration's options and effect. */
 static tl_renderer *bench__effect_renderer(bench_run *run, tl_context *ctx, const tl_scene *scene, const tl_light *lights,
                                            size_t count, bench_config c, int slot, const bench_effect *list)
 {
@@ -120,14 +121,11 @@ static tl_renderer *bench__effect_renderer(bench_run *run, tl_context *ctx, cons
     tl_renderer_desc d = {.options.mode = bench_config_mode(c), .options.light_strategy = bench_config_strategy(c),
                           .options.lighting = opt->lighting, .options.fresnel = bench_config_fresnel(c, opt->fresnel),
                           .width = opt->sizes[0].width, .height = opt->sizes[0].height, .options.synchronous_stats = 1};
-    bench_renderer_desc(run, ctx, &d);
     if (slot) bench_effect_enable(opt, list[slot - 1], &d);
     if (d.options.ssao.method != TL_SSAO_OFF) d.options.keep_targets = TL_TARGET_BIT(TL_TARGET_AO);
-    tl_renderer *r = NULL;
-    if (tl_renderer_create(&d, &r) != TL_OK) return NULL; /* the logger said why */
-    if (tl_renderer_set_scene(r, scene) != TL_OK || tl_renderer_set_lights(r, lights, count) != TL_OK) {
+    tl_renderer *r = bench_renderer(run, ctx, (size_t)slot, d, scene);
+    if (r && tl_renderer_set_lights(r, lights, count) != TL_OK) {
         tl_tool_log_error(&run->log, "%s", tl_renderer_last_error(r)); /* once: the logger said it */
-        tl_renderer_destroy(r);
         return NULL;
     }
     return r;
@@ -230,8 +228,7 @@ static int bench__effect_config(bench_run *run, tl_context *ctx, bench_scene *sc
         err = !(r[s] = bench__effect_renderer(run, ctx, bench_scene_get(scene), lights, count, c, (int)s, list));
     if (!err) err = bench__effect_frames(run, r, slots, list, ms, effect, progress, done, bench_config_name(c));
     if (!err) err = bench__effect_summarise(run, c, r, slots, list, ms, effect, im);
-    for (size_t s = 0; s < slots; s++) tl_renderer_destroy(r[s]);
-    free(ms);
+    free(ms); /* the renderers stay the run's for the next configuration */
     return err;
 }
 

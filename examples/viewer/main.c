@@ -140,7 +140,7 @@ static void vw_apply_changes(vw_run *run)
     }
     in->pending_w = in->pending_h = 0;
     if (app->rebuild) {
-        if (vw_make_renderers(app)) fprintf(stderr, "thinlight-viewer: the new settings failed\n");
+        if (vw_apply_settings(app)) fprintf(stderr, "thinlight-viewer: the new settings failed\n");
         run->print_pending = run->args.print_targets;
     }
 }

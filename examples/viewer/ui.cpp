@@ -249,7 +249,7 @@ static void vw_ui_views(vw_app *app)
     ImGui::SameLine();
     ImGui::SetNextItemWidth(120);
     if (vw_combo("##split", &app->split_mode, modes, TL_MODE_THIN_LPP, 4) && app->split_on)
-        app->rebuild = 1; // a new right-hand renderer
+        app->rebuild = 1; // the right-hand renderer's mode
     ImGui::SliderFloat("difference scale", &app->diff_scale, 1.0f, 64.0f, "x%.0f", ImGuiSliderFlags_Logarithmic);
     if (c) vw_update_view(app);
 }

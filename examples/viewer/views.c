@@ -681,7 +681,7 @@ void vw_views_tile_pass(vw_app *app, tl_renderer *r)
     int has = 0, want = app->view == VW_VIEW_TILE_LIGHTS || app->grid;
     if (tl_renderer_get_plan(r, p) != TL_OK) return;
     for (size_t i = 0; i < p->pass_count; i++) has |= !strcmp(p->passes[i].name, d.name);
-    if (has && !want) tl_renderer_remove_pass(r, d.name);
+    if (has && (!want || p->light_strategy != TL_LIGHT_STRATEGY_TILED)) tl_renderer_remove_pass(r, d.name);
     if (!has && want && p->light_strategy == TL_LIGHT_STRATEGY_TILED) tl_renderer_add_pass(r, &d);
     tl_renderer_get_plan(r, p);
 }
