@@ -61,6 +61,9 @@ static void tl__pass_ctx_make(tl_renderer *r, const tl__compiled_pass *cp, const
     ctx->level_textures = cp->level_textures;
     ctx->level_width = cp->level_width;
     ctx->level_height = cp->level_height;
+    ctx->write_count = cp->write_count;
+    ctx->write_fbos = cp->write_fbos;
+    ctx->write_textures = cp->write_textures;
     ctx->width = r->desc.width;
     ctx->height = r->desc.height;
     ctx->fullscreen_vao = r->dev.vao_empty;

@@ -24,6 +24,7 @@ static void tl__graph_release_objects(tl__device *dev, tl__graph *r, tl__storage
     for (size_t i = 0; i < r->pass_count; i++) {
         tl__framebuffer_destroy(gl, &r->passes[i].fbo);
         for (uint8_t k = 1; k < r->passes[i].level_count; k++) tl__framebuffer_destroy(gl, &r->passes[i].level_fbos[k]);
+        for (uint8_t k = 0; k < r->passes[i].write_count; k++) tl__framebuffer_destroy(gl, &r->passes[i].write_fbos[k]);
     }
     tl__framebuffer_destroy(gl, &r->luma.fbo);
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
@@ -150,6 +151,20 @@ static tl_result tl__graph_levels(tl__device *dev, tl__graph *r, tl__compiled_pa
     return TL_OK;
 }
 
+/* A pass that renders its colour writes one at a time gets a framebuffer with each alone. */
+static tl_result tl__graph_split(tl__device *dev, tl__compiled_pass *cp, const tl__target *const *colors, size_t n)
+{
+    for (size_t k = 0; k < n; k++) {
+        char label[64], msg[256];
+        snprintf(label, sizeof label, "fbo.%s.write%zu", cp->plan->name, k);
+        tl_result res = tl__framebuffer_create(&dev->gl, label, &colors[k], 1, NULL, &cp->write_fbos[k], msg, sizeof msg);
+        if (res != TL_OK) return tl__fail(dev, res, "renderer: %s", msg);
+        cp->write_textures[k] = colors[k]->texture;
+        cp->write_count = (uint8_t)(k + 1);
+    }
+    return TL_OK;
+}
+
 /* Framebuffer, clears and texture bindings of one pass. */
 static tl_result tl__graph_pass(tl__device *dev, tl__graph *r, tl__compiled_pass *cp, const tl_plan_pass *pp,
                                 const tl__pass_decl *d)
@@ -179,7 +194,8 @@ static tl_result tl__graph_pass(tl__device *dev, tl__graph *r, tl__compiled_pass
     const tl__target *depth = d->attach_depth ? &r->targets[TL_TARGET_DEPTH] : NULL;
     tl_result res = tl__framebuffer_create(&dev->gl, label, colors, n, depth, &cp->fbo, msg, sizeof msg);
     if (res != TL_OK) return tl__fail(dev, res, "renderer: %s", msg);
-    return tl__graph_levels(dev, r, cp, colors, n);
+    if (res == TL_OK && d->split_writes) res = tl__graph_split(dev, cp, colors, n);
+    return res == TL_OK ? tl__graph_levels(dev, r, cp, colors, n) : res;
 }
 
 tl_result tl__graph_programs(tl__device *dev, tl__graph *r)

@@ -34,6 +34,10 @@ typedef struct tl__compiled_pass {
     uint32_t level_width, level_height;
     GLuint level_fbos[TL__MAX_LEVELS];
     GLuint level_textures[TL__MAX_LEVELS];
+    /* it splits its writes (tl__pass_decl.split_writes): a framebuffer per colour write */
+    uint8_t write_count;
+    GLuint write_fbos[TL__FRAMEBUFFER_MAX_COLORS];
+    GLuint write_textures[TL__FRAMEBUFFER_MAX_COLORS];
 } tl__compiled_pass;
 
 typedef struct tl__graph {

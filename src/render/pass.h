@@ -77,6 +77,7 @@ typedef struct tl__pass_decl {
     uint8_t attach_depth;  /* the depth target is attached (tested or written) */
     uint8_t compute;       /* a compute pass: no framebuffer, no clears, no raster state */
     uint8_t light_data;    /* TL__LIGHTS_* it reads */
+    uint8_t split_writes;  /* it renders its colour writes one at a time: a framebuffer per write too */
     uint32_t images;       /* writes bound as images (compute passes) */
     tl__pipeline state;    /* fixed state; a pass may change cull, depth test and clamp per draw */
 } tl__pass_decl;
@@ -107,6 +108,9 @@ typedef struct tl__pass_ctx {
     uint32_t level_count;
     const GLuint *level_fbos, *level_textures;
     uint32_t level_width, level_height; /* the first level's size */
+    /* split_writes: a framebuffer with each colour write alone, and its texture (tl_target_id order) */
+    uint32_t write_count;
+    const GLuint *write_fbos, *write_textures;
     uint32_t width, height;       /* the frame's size */
     GLuint fullscreen_vao, linear_sampler;
     const void *params;           /* its slice of the resolved options (tl__pass_def.options_offset), or NULL */
