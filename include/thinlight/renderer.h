@@ -225,6 +225,15 @@ typedef struct tl_ssr_desc {
     float intensity;    /**< scale of the added reflection; default 1 */
 } tl_ssr_desc;
 
+/** Vignette: HDR darkened towards the corners, by 1 - strength * smoothstep(radius, radius + softness, d)
+ *  with d the distance from the image's centre as a fraction of its half-diagonal. Zeroed: off. */
+typedef struct tl_vignette_desc {
+    int enabled;    /**< 1: on */
+    float strength; /**< darkening at full fall-off, 0..1; default 0.5 */
+    float radius;   /**< where the fall-off starts (fraction of the half-diagonal); default 0.5 */
+    float softness; /**< the fall-off's width (same unit); default 0.5 */
+} tl_vignette_desc;
+
 /** A GL entry point as a loader returns it. */
 typedef void (*tl_gl_function)(void);
 /** Loader for GL entry points, e.g. tl_context_proc_loader or a wrapper of glfwGetProcAddress. */
@@ -283,6 +292,7 @@ typedef struct tl_renderer_options {
     tl_dof_desc dof;                   /**< depth of field; zeroed: off */
     tl_bloom_desc bloom;               /**< bloom; zeroed: off */
     tl_ssr_desc ssr;                   /**< screen-space reflections; zeroed: off */
+    tl_vignette_desc vignette;         /**< vignette; zeroed: off */
 } tl_renderer_options;
 
 /** What tl_renderer_create() needs: the first options and what only creation decides (the
@@ -341,6 +351,7 @@ typedef enum tl_pass {
     TL_PASS_BLOOM,         /**< bloom: threshold and the downsample / upsample chain of HDR into bloom */
     TL_PASS_TONEMAP,       /**< (bloom added), exposure, tone curve, sRGB encoding */
     TL_PASS_FXAA,          /**< FXAA, when it is on */
+    TL_PASS_VIGNETTE,      /**< vignette: its mask, then HDR darkened by it (runs before the tone map) */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
@@ -366,6 +377,7 @@ typedef enum tl_target_id {
     TL_TARGET_LIGHT_FRESNEL,  /**< thin-lpp with GGX, two-sums layout: S2, the Schlick part of specular */
     TL_TARGET_BLOOM,          /**< RGBA16F bloom chain: half size (odd sizes round up), tl_bloom_desc.levels mip levels */
     TL_TARGET_SSR,            /**< RGBA16F reflected radiance as added to HDR; alpha: its weight */
+    TL_TARGET_VIGNETTE,       /**< R16F vignette factor (1: untouched) */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
