@@ -3,8 +3,9 @@
  * exactly open beyond k_b + k_d from the wall; ssao_reference.c has every pixel against the CPU
  * estimator), finite on 1x1 and 7x3 targets
  * and with reversed D32F at 1:10^7; fog at a known distance against exp(-density d) in double and
- * at an infinite far plane; depth of field leaving its focus plane bit for bit; SSAO, fog and depth
- * of field off with their other fields set change no byte of the image. */
+ * at an infinite far plane; depth of field leaving its focus plane bit for bit; the vignette against
+ * its formula in double; SSAO, fog, depth of field and the vignette off with their other fields set
+ * change no byte of the image. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,12 +30,12 @@ static int plan_has_effects(const tl_frame_plan *p)
     for (size_t i = 0; i < p->pass_count; i++) {
         tl_pass id = p->passes[i].pass;
         if (id == TL_PASS_SSAO || id == TL_PASS_SSAO_BLUR || id == TL_PASS_SSAO_APPLY || id == TL_PASS_FOG ||
-            id == TL_PASS_DOF || id == TL_PASS_DOF_APPLY)
+            id == TL_PASS_DOF || id == TL_PASS_DOF_APPLY || id == TL_PASS_VIGNETTE)
             return 1;
     }
     for (size_t k = 0; k < p->program_count; k++)
         if (strstr(p->programs[k].defines, "SSAO") || strstr(p->programs[k].defines, "TL_AO_STORE")) return 1;
-    return (p->targets & (BIT(TL_TARGET_AO_RAW) | BIT(TL_TARGET_AO) | BIT(TL_TARGET_DOF))) != 0;
+    return (p->targets & (BIT(TL_TARGET_AO_RAW) | BIT(TL_TARGET_AO) | BIT(TL_TARGET_DOF) | BIT(TL_TARGET_VIGNETTE))) != 0;
 }
 
 /* Effects off: no pass, target or define, and the other fields of an effect that is off change
@@ -51,6 +52,7 @@ TL_TEST(effects_off_plan_nothing_on_plan_their_passes)
         n.options.ssao = (tl_ssao_desc){.samples = 9, .radius = 3, .exponent = 2};
         n.options.fog = (tl_fog_desc){.density = 1, .noise = 0.5f};
         n.options.dof = (tl_dof_desc){.aperture = 0.5f, .samples = 9};
+        n.options.vignette = (tl_vignette_desc){.strength = 1, .radius = 0.1f, .softness = 0.2f};
         TL_CHECK(tl_frame_plan_build(&n, &f, &noise) == TL_OK);
         TL_CHECK(memcmp(&base, &noise, sizeof base) == 0);
         tl_renderer_desc e = d;
@@ -67,6 +69,10 @@ TL_TEST(effects_off_plan_nothing_on_plan_their_passes)
         e.options.dof.enabled = 1;
         TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
         TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel + 8u);
+        e = d;
+        e.options.vignette.enabled = 1;
+        TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
+        TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel + 2u); /* its factor, R16F */
         /* forward without a depth pre-pass has no depth to estimate from: no SSAO */
         e = d;
         e.options.ssao.method = TL_SSAO_DISC;
@@ -78,6 +84,8 @@ TL_TEST(effects_off_plan_nothing_on_plan_their_passes)
     tl_frame_plan p;
     TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
     bad = (tl_renderer_desc){.width = 8, .height = 8, .options.fog = {.mode = TL_FOG_DISTANCE, .noise = 2.0f}};
+    TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
+    bad = (tl_renderer_desc){.width = 8, .height = 8, .options.vignette = {.enabled = 1, .strength = 1.5f}};
     TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
 }
 
@@ -103,6 +111,7 @@ TL_TEST(effects_off_change_no_byte)
             off.options.fog = (tl_fog_desc){.color = {1, 0.5f, 0.25f}, .density = 1, .height = 1, .height_falloff = 2,
                                     .noise = 0.5f, .noise_scale = 2, .noise_speed = 1};
             off.options.dof = (tl_dof_desc){.focus_distance = 3, .aperture = 0.5f, .max_radius = 0.5f, .samples = 9};
+            off.options.vignette = (tl_vignette_desc){.strength = 1, .radius = 0.1f, .softness = 0.2f};
             tl_renderer *a = tl_test_render_once(&q.s, plain), *b = tl_test_render_once(&q.s, off);
             TL_CHECK(a && b);
             uint8_t *oa = malloc(n * 4), *ob = malloc(n * 4);
@@ -334,6 +343,48 @@ TL_TEST(fog_known_depth_matches_formula_infinite_far_finite)
         for (int c = 0; c < 3; c++) TL_CHECK(fabs(h[i * 4 + c] - fog[c]) <= fog[c] * TL_HALF_REL_STEP);
     free(h);
     tl_renderer_destroy(r);
+}
+
+/* ---- vignette ----------------------------------------------------------------------------------- */
+
+/* HDR with the vignette is HDR without it times 1 - s smoothstep(r, r + w, d), d the pixel centre's
+ * distance from the image's centre over the half-diagonal, evaluated in double: within the factor's
+ * R16F rounding and the blend's FP16 rounding (half a step each), in every mode and depth format. */
+TL_TEST(vignette_matches_formula_every_mode)
+{
+    quads q;
+    wall_scene(&q, 5.0f);
+    const tl_vignette_desc v = {.enabled = 1, .strength = 0.8f, .radius = 0.2f, .softness = 0.6f};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
+        for (size_t z = 0; z < 2; z++) {
+            tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m], .options.depth_format = depths[z]};
+            tl_renderer *plain = tl_test_render_once(&q.s, d);
+            d.options.vignette = v;
+            tl_renderer *dark = tl_test_render_once(&q.s, d);
+            float *a = plain ? tl_test_read_target(plain, TL_TARGET_HDR, (size_t)W * H) : NULL;
+            float *b = dark ? tl_test_read_target(dark, TL_TARGET_HDR, (size_t)W * H) : NULL;
+            TL_CHECK(a && b);
+            double worst = 0.0;
+            for (int y = 0; a && b && y < H; y++)
+                for (int x = 0; x < W; x++) {
+                    double u = (x + 0.5) / W * 2.0 - 1.0, w = (y + 0.5) / H * 2.0 - 1.0;
+                    double dist = sqrt(u * u + w * w) * sqrt(0.5), t = (dist - v.radius) / v.softness;
+                    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+                    double f = 1.0 - v.strength * t * t * (3.0 - 2.0 * t);
+                    for (int c = 0; c < 3; c++) {
+                        size_t i = ((size_t)y * W + x) * 4 + c;
+                        double want = a[i] * f, tol = 2.0 * want * TL_HALF_REL_STEP + 1e-6;
+                        worst = fmax(worst, fabs(b[i] - want) / tol);
+                    }
+                }
+            printf("  vignette, %s, depth %d: worst error %.3f of the tolerance\n", tl_render_mode_name(modes[m]),
+                   (int)depths[z], worst);
+            TL_CHECK(worst <= 1.0);
+            free(a);
+            free(b);
+            tl_renderer_destroy(plain);
+            tl_renderer_destroy(dark);
+        }
 }
 
 /* ---- depth of field ------------------------------------------------------------------------------ */
