@@ -330,7 +330,10 @@ typedef struct tl_renderer_desc {
     tl_logger logger;                  /**< zeroed: silent; every failure is also in tl_renderer_last_error */
 } tl_renderer_desc;
 
-/** Passes a frame may run, in execution order; a plan holds the ones its mode and scene need. */
+/** Passes a frame may run, by a stable index (statistics arrays, tl_plan_pass.pass): a new pass is
+ *  appended and no value is ever renumbered. The order a frame runs them is the plan's
+ *  (tl_frame_plan.passes, the renderer's pass table), not this enum's; a plan holds the ones its
+ *  mode, options and scene need. Application passes name their place by pass name. */
 typedef enum tl_pass {
     TL_PASS_DEPTH_PREPASS, /**< forward: depth only */
     TL_PASS_GBUFFER,       /**< thin or fat G-buffer (deferred modes also write emissive + ambient into HDR) */
@@ -355,7 +358,8 @@ typedef enum tl_pass {
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
-/** Render targets the renderer may allocate. */
+/** Render targets the renderer may allocate, by a stable index (TL_TARGET_BIT sets, statistics,
+ *  readbacks): a new target is appended and no value is ever renumbered. */
 typedef enum tl_target_id {
     TL_TARGET_DEPTH,          /**< D24S8, or D32F reversed; fat: D32F */
     TL_TARGET_RT0,            /**< octahedral normal + gloss */
@@ -519,8 +523,12 @@ typedef struct tl_frame_stats {
 
 /** "gbuffer", "lights", ... ("unknown" out of range); the names of debug groups and timers. */
 TL_API const char *tl_pass_name(tl_pass pass);
+/** The pass named `name` (tl_pass_name); TL_ERROR_INVALID_ARGUMENT for any other name. */
+TL_API tl_result tl_pass_from_name(const char *name, tl_pass *pass);
 /** "depth", "rt0", "light.diffuse", ... ("unknown" out of range). */
 TL_API const char *tl_target_name(tl_target_id target);
+/** The target named `name` (tl_target_name); TL_ERROR_INVALID_ARGUMENT for any other name. */
+TL_API tl_result tl_target_from_name(const char *name, tl_target_id *target);
 
 /** Creates the renderer in the current context. On failure *out is NULL and the message naming
  *  the problem goes to desc->logger (there is no object to ask). Every call that uses GL then

@@ -25,6 +25,14 @@ const char *tl_pass_name(tl_pass pass)
     return "unknown";
 }
 
+tl_result tl_pass_from_name(const char *name, tl_pass *pass)
+{
+    int i = tl__pass_table_find(name);
+    if (i < 0 || !pass) return TL_ERROR_INVALID_ARGUMENT;
+    *pass = tl__pass_table[i]->id;
+    return TL_OK;
+}
+
 int tl__pass_table_find(const char *name)
 {
     for (int i = 0; name && i < TL_PASS_COUNT; i++)

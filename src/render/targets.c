@@ -1,4 +1,6 @@
 /* Targets as the passes declare them (targets.h). */
+#include <string.h>
+
 #include "targets.h"
 #include "bindings.h"
 #include "pass.h"
@@ -21,6 +23,18 @@ const char *tl_target_name(tl_target_id t)
     const tl__target_def *defs[TL_TARGET_COUNT];
     tl__target_defs(defs);
     return (unsigned)t < TL_TARGET_COUNT && defs[t] ? defs[t]->name : "unknown";
+}
+
+tl_result tl_target_from_name(const char *name, tl_target_id *target)
+{
+    const tl__target_def *defs[TL_TARGET_COUNT];
+    tl__target_defs(defs);
+    for (int t = 0; name && target && t < TL_TARGET_COUNT; t++)
+        if (defs[t] && strcmp(defs[t]->name, name) == 0) {
+            *target = (tl_target_id)t;
+            return TL_OK;
+        }
+    return TL_ERROR_INVALID_ARGUMENT;
 }
 
 uint32_t tl__target_format(const tl__target_def *def, const tl_renderer_options *o)

@@ -686,20 +686,37 @@ TL_TEST(frame_graph_plan_lifetimes_exhaustive)
         }
 }
 
-/* The table is in execution order and names its passes once. */
+/* The table names every public pass and target id once, names and ids convert both ways, and a
+ * plan runs a pass once; the order is the table's, not the enum's (the vignette, appended to the
+ * enum, runs before the tone map). */
 TL_TEST(frame_graph_pass_table)
 {
     for (int i = 0; i < TL_PASS_COUNT; i++) {
+        tl_pass back = TL_PASS_COUNT;
         TL_CHECK(strcmp(tl_pass_name((tl_pass)i), "unknown") != 0);
+        TL_CHECK(tl_pass_from_name(tl_pass_name((tl_pass)i), &back) == TL_OK && back == (tl_pass)i);
         for (int j = 0; j < i; j++) TL_CHECK(strcmp(tl_pass_name((tl_pass)i), tl_pass_name((tl_pass)j)) != 0);
     }
+    for (int t = 0; t < TL_TARGET_COUNT; t++) {
+        tl_target_id back = TL_TARGET_COUNT;
+        TL_CHECK(tl_target_from_name(tl_target_name((tl_target_id)t), &back) == TL_OK && back == (tl_target_id)t);
+    }
     TL_CHECK(strcmp(tl_pass_name(TL_PASS_COUNT), "unknown") == 0);
+    TL_CHECK(tl_pass_from_name("no such pass", &(tl_pass){0}) == TL_ERROR_INVALID_ARGUMENT);
+    TL_CHECK(tl_target_from_name("unknown", &(tl_target_id){0}) == TL_ERROR_INVALID_ARGUMENT);
     tl_scene_feature_set f = {.point_lights = 1, .has_alpha_blend = 1};
     for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++) {
         tl_frame_plan p;
-        TL_CHECK(tl_frame_plan_build(&(tl_renderer_desc){.options.mode = (tl_render_mode)mode}, &f, &p) == TL_OK);
-        for (size_t i = 1; i < p.pass_count; i++) TL_CHECK(p.passes[i - 1].pass < p.passes[i].pass);
-        for (size_t i = 0; i < p.pass_count; i++) TL_CHECK(strcmp(p.passes[i].name, tl_pass_name(p.passes[i].pass)) == 0);
+        tl_renderer_desc d = {.options.mode = (tl_render_mode)mode, .options.vignette.enabled = 1};
+        TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
+        size_t vignette = p.pass_count, tonemap = p.pass_count;
+        for (size_t i = 0; i < p.pass_count; i++) {
+            TL_CHECK(strcmp(p.passes[i].name, tl_pass_name(p.passes[i].pass)) == 0);
+            for (size_t j = 0; j < i; j++) TL_CHECK(p.passes[j].pass != p.passes[i].pass);
+            if (p.passes[i].pass == TL_PASS_VIGNETTE) vignette = i;
+            if (p.passes[i].pass == TL_PASS_TONEMAP) tonemap = i;
+        }
+        TL_CHECK(vignette < tonemap && tonemap < p.pass_count && TL_PASS_VIGNETTE > TL_PASS_TONEMAP);
     }
 }
 
