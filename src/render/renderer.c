@@ -52,6 +52,8 @@ static tl_result tl__replan(tl_renderer *r)
         const tl_frame_plan *p = &g->plan.pub;
         if (res == TL_OK && (p->targets & TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS)))
             res = tl__tiles_configure(&r->dev, &r->lights.tiles, p->tile_size, p->tiles_x, p->tiles_y);
+        else if (res == TL_OK) /* no tiles in this plan: nothing kept for them */
+            tl__tiles_release(&r->dev, &r->lights.tiles);
     } else if (r->scene.loaded && !g->programs_ready) {
         res = tl__graph_programs(&r->dev, g);
     }
