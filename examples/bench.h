@@ -192,7 +192,7 @@ typedef struct bench_image_file {
     uint32_t lights, width, height;
 } bench_image_file;
 
-/* What planning saves for one mode (the plan against tl_renderer_desc.no_planning), for the scene
+/* What planning saves for one mode (the plan against tl_renderer_options.no_planning), for the scene
  * with the largest light count. */
 typedef struct bench_planning {
     tl_render_mode mode;
@@ -226,6 +226,8 @@ typedef struct bench_run {
     size_t planning_count;
     bench_effect_record *effects;  /* --effects: per configuration (fat first), per effect */
     size_t effect_count;
+    /* renderers made once and given each configuration's options and size in turn (bench_renderer) */
+    tl_renderer *renderers[BENCH_CONFIGS + 1];
 } bench_run;
 
 /* The most memory the renderers held at once may take in copies of the scene (each renderer uploads
@@ -253,6 +255,13 @@ int bench_sweep(bench_run *run, bench_scene *scene);
 size_t bench_renderers_at_once(const bench_scene *scene);
 /* Fills what every renderer of the bench shares: the context's loader, the log, the budget. */
 void bench_renderer_desc(bench_run *run, tl_context *ctx, tl_renderer_desc *d);
+/* Renderer `slot` of the run with the size and options of `d` (context, logger and budget are
+ * bench_renderer_desc's): made with `scene` the first time the slot is asked for, afterwards given
+ * d's options (tl_renderer_set_options) and size, so the scene is uploaded once per slot for the whole
+ * run and every renderer keeps its programs. NULL after the log said why. */
+tl_renderer *bench_renderer(bench_run *run, tl_context *ctx, size_t slot, tl_renderer_desc d, const tl_scene *scene);
+/* Destroys the run's renderers (before its context). */
+void bench_renderers_close(bench_run *run);
 /* The configurations rendered (at most BENCH_CONFIGS), strategy by strategy: fat first (the
  * reference of the strategy's group), then the requested modes. */
 size_t bench_render_modes(const bench_options *opt, bench_config *modes);

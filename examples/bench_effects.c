@@ -36,24 +36,24 @@ void bench_effect_enable(const bench_options *opt, bench_effect e, tl_renderer_d
     const tl_renderer_desc *t = &opt->effect_desc;
     switch (e) {
     case BENCH_EFFECT_SSAO:
-        d->ssao = t->ssao;
-        if (d->ssao.method == TL_SSAO_OFF) d->ssao.method = TL_SSAO_DISC;
+        d->options.ssao = t->options.ssao;
+        if (d->options.ssao.method == TL_SSAO_OFF) d->options.ssao.method = TL_SSAO_DISC;
         break;
     case BENCH_EFFECT_FOG:
-        d->fog = t->fog;
-        if (d->fog.mode == TL_FOG_OFF) d->fog.mode = TL_FOG_DISTANCE;
+        d->options.fog = t->options.fog;
+        if (d->options.fog.mode == TL_FOG_OFF) d->options.fog.mode = TL_FOG_DISTANCE;
         break;
     case BENCH_EFFECT_DOF:
-        d->dof = t->dof;
-        d->dof.enabled = 1;
+        d->options.dof = t->options.dof;
+        d->options.dof.enabled = 1;
         break;
     case BENCH_EFFECT_BLOOM:
-        d->bloom = t->bloom;
-        d->bloom.enabled = 1;
+        d->options.bloom = t->options.bloom;
+        d->options.bloom.enabled = 1;
         break;
     default:
-        d->ssr = t->ssr;
-        d->ssr.enabled = 1;
+        d->options.ssr = t->options.ssr;
+        d->options.ssr.enabled = 1;
         break;
     }
 }
@@ -113,21 +113,19 @@ typedef struct bench__effect_images {
     float *ao, *ref_ao; /* R of the AO target */
 } bench__effect_images;
 
+/* The run's renderer `slot` (bench_renderer) with the configuration's options and effect. */
 static tl_renderer *bench__effect_renderer(bench_run *run, tl_context *ctx, const tl_scene *scene, const tl_light *lights,
                                            size_t count, bench_config c, int slot, const bench_effect *list)
 {
     const bench_options *opt = &run->opt;
-    tl_renderer_desc d = {.mode = bench_config_mode(c), .light_strategy = bench_config_strategy(c),
-                          .lighting = opt->lighting, .fresnel = bench_config_fresnel(c, opt->fresnel),
-                          .width = opt->sizes[0].width, .height = opt->sizes[0].height, .synchronous_stats = 1};
-    bench_renderer_desc(run, ctx, &d);
+    tl_renderer_desc d = {.options.mode = bench_config_mode(c), .options.light_strategy = bench_config_strategy(c),
+                          .options.lighting = opt->lighting, .options.fresnel = bench_config_fresnel(c, opt->fresnel),
+                          .width = opt->sizes[0].width, .height = opt->sizes[0].height, .options.synchronous_stats = 1};
     if (slot) bench_effect_enable(opt, list[slot - 1], &d);
-    if (d.ssao.method != TL_SSAO_OFF) d.keep_targets = TL_TARGET_BIT(TL_TARGET_AO);
-    tl_renderer *r = NULL;
-    if (tl_renderer_create(&d, &r) != TL_OK) return NULL; /* the logger said why */
-    if (tl_renderer_set_scene(r, scene) != TL_OK || tl_renderer_set_lights(r, lights, count) != TL_OK) {
+    if (d.options.ssao.method != TL_SSAO_OFF) d.options.keep_targets = TL_TARGET_BIT(TL_TARGET_AO);
+    tl_renderer *r = bench_renderer(run, ctx, (size_t)slot, d, scene);
+    if (r && tl_renderer_set_lights(r, lights, count) != TL_OK) {
         tl_tool_log_error(&run->log, "%s", tl_renderer_last_error(r)); /* once: the logger said it */
-        tl_renderer_destroy(r);
         return NULL;
     }
     return r;
@@ -230,8 +228,7 @@ static int bench__effect_config(bench_run *run, tl_context *ctx, bench_scene *sc
         err = !(r[s] = bench__effect_renderer(run, ctx, bench_scene_get(scene), lights, count, c, (int)s, list));
     if (!err) err = bench__effect_frames(run, r, slots, list, ms, effect, progress, done, bench_config_name(c));
     if (!err) err = bench__effect_summarise(run, c, r, slots, list, ms, effect, im);
-    for (size_t s = 0; s < slots; s++) tl_renderer_destroy(r[s]);
-    free(ms);
+    free(ms); /* the renderers stay the run's for the next configuration */
     return err;
 }
 

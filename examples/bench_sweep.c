@@ -3,7 +3,7 @@
  * every mode see the same share of whatever else the machine is doing. Then medians of the GPU
  * timers and the wall clock, the plan's targets, the renderer's fragment and byte counts, and the
  * error of the final and HDR images against fat's images of the same frame. Last, what planning
- * saves in time: each mode planned against tl_renderer_desc.no_planning, on the same context. */
+ * saves in time: each mode planned against tl_renderer_options.no_planning, on the same context. */
 #define _DEFAULT_SOURCE /* sysconf(_SC_PHYS_PAGES) */
 
 #include <math.h>
@@ -296,14 +296,39 @@ void bench_renderer_desc(bench_run *run, tl_context *ctx, tl_renderer_desc *d)
     tl_tool_budget_renderer(&run->opt.budgets, d);
 }
 
+tl_renderer *bench_renderer(bench_run *run, tl_context *ctx, size_t slot, tl_renderer_desc d, const tl_scene *scene)
+{
+    tl_renderer **r = &run->renderers[slot];
+    if (!*r) {
+        bench_renderer_desc(run, ctx, &d);
+        if (tl_renderer_create(&d, r) != TL_OK) return NULL; /* the logger said why */
+        if (tl_renderer_set_scene(*r, scene) == TL_OK) return *r;
+    } else if (tl_renderer_set_options(*r, &d.options) == TL_OK && tl_renderer_resize(*r, d.width, d.height) == TL_OK) {
+        return *r;
+    }
+    tl_tool_log_error(&run->log, "%s", tl_renderer_last_error(*r));
+    tl_renderer_destroy(*r);
+    *r = NULL;
+    return NULL;
+}
+
+void bench_renderers_close(bench_run *run)
+{
+    for (size_t i = 0; i < sizeof run->renderers / sizeof run->renderers[0]; i++) {
+        tl_renderer_destroy(run->renderers[i]);
+        run->renderers[i] = NULL;
+    }
+}
+
 /* A configuration's renderer descriptor at one size (without the context). */
 static tl_renderer_desc bench__config_desc(const bench_run *run, bench_config c, bench_size size)
 {
     const bench_options *opt = &run->opt;
-    tl_renderer_desc d = {.mode = bench_config_mode(c), .light_strategy = bench_config_strategy(c),
-                          .light_format = bench_config_light_format(c), .lighting = opt->lighting,
-                          .fresnel = bench_config_fresnel(c, opt->fresnel), .width = size.width,
-                          .height = size.height, .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR), .synchronous_stats = 1};
+    tl_renderer_desc d = {.options.mode = bench_config_mode(c), .options.light_strategy = bench_config_strategy(c),
+                          .options.light_format = bench_config_light_format(c), .options.lighting = opt->lighting,
+                          .options.fresnel = bench_config_fresnel(c, opt->fresnel), .width = size.width,
+                          .height = size.height, .options.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
+                          .options.synchronous_stats = 1};
     tl_tool_budget_renderer(&opt->budgets, &d);
     return d;
 }
@@ -320,12 +345,10 @@ typedef struct bench__size_state {
     size_t slots;
 } bench__size_state;
 
+/* The batch's renderers stay the run's (bench_renderer): the next batch gives them its options. */
 static void bench__batch_close(bench__size_state *s, size_t first, size_t count)
 {
-    for (size_t m = first; m < first + count; m++) {
-        tl_renderer_destroy(s->renderers[m]);
-        s->renderers[m] = NULL;
-    }
+    for (size_t m = first; m < first + count; m++) s->renderers[m] = NULL;
 }
 
 static void bench__size_release(bench__size_state *s, size_t modes)
@@ -365,19 +388,14 @@ static int bench__size_setup(bench_run *run, bench_size size, size_t mode_count,
     return 0;
 }
 
-/* The renderers of modes[first, first + count), each with the scene uploaded. */
+/* The renderers of modes[first, first + count): the run's first `count` renderers with these
+ * configurations' options (made, with the scene, the first time). */
 static int bench__batch_open(bench_run *run, tl_context *ctx, const tl_scene *scene, bench_size size,
                              const bench_config *modes, size_t first, size_t count, bench__size_state *s)
 {
-    for (size_t m = first; m < first + count; m++) {
-        tl_renderer_desc desc = bench__config_desc(run, modes[m], size);
-        bench_renderer_desc(run, ctx, &desc);
-        if (tl_renderer_create(&desc, &s->renderers[m]) != TL_OK) return 1; /* the logger said why */
-        if (tl_renderer_set_scene(s->renderers[m], scene) != TL_OK) {
-            tl_tool_log_error(&run->log, "%s", tl_renderer_last_error(s->renderers[m]));
+    for (size_t m = first; m < first + count; m++)
+        if (!(s->renderers[m] = bench_renderer(run, ctx, m - first, bench__config_desc(run, modes[m], size), scene)))
             return 1;
-        }
-    }
     return 0;
 }
 
@@ -555,7 +573,7 @@ static int bench__planning_frames(bench_run *run, tl_renderer **r, const char *n
 }
 
 /* What planning saves in time: each mode of run->planning rendered at the first size with the
- * largest light count by a planned renderer and by one with tl_renderer_desc.no_planning, the two
+ * largest light count by a planned renderer and by one with tl_renderer_options.no_planning, the two
  * taking turns frame by frame when both fit beside each other (bench_renderers_at_once), else one
  * after the other, after the same warm-up; medians of the frame time. */
 static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *scene, tl_tool_progress *progress,
@@ -580,20 +598,17 @@ static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *s
         for (size_t first = 0; !err && first < 2; first += together) {
             tl_renderer *r[2] = {NULL, NULL};
             for (size_t k = 0; !err && k < together; k++) {
-                tl_renderer_desc desc = {.mode = p->mode, .width = size.width, .height = size.height,
-                                         .no_planning = (int)(first + k), .lighting = run->opt.lighting,
-                                         .fresnel = run->opt.fresnel, .synchronous_stats = 1};
-                bench_renderer_desc(run, ctx, &desc);
-                if (tl_renderer_create(&desc, &r[k]) != TL_OK) err = 1; /* the logger said why */
-                else if (tl_renderer_set_scene(r[k], bench_scene_get(scene)) != TL_OK ||
-                         tl_renderer_set_lights(r[k], lights, count) != TL_OK) {
+                tl_renderer_desc desc = {.options.mode = p->mode, .width = size.width, .height = size.height,
+                                         .options.no_planning = (int)(first + k), .options.lighting = run->opt.lighting,
+                                         .options.fresnel = run->opt.fresnel, .options.synchronous_stats = 1};
+                r[k] = bench_renderer(run, ctx, k, desc, bench_scene_get(scene));
+                if (!r[k]) err = 1;
+                else if (tl_renderer_set_lights(r[k], lights, count) != TL_OK) {
                     tl_tool_log_error(&run->log, "%s", tl_renderer_last_error(r[k]));
                     err = 1;
                 }
             }
             if (!err) err = bench__planning_frames(run, r, name, together, n, ms + first * opt->frames, progress, done);
-            tl_renderer_destroy(r[0]);
-            tl_renderer_destroy(r[1]);
         }
         if (!err) {
             double unused;
@@ -633,6 +648,7 @@ int bench_sweep(bench_run *run, bench_scene *scene)
     run->seconds = (tl_tool_now_ms() - t0) * 1e-3;
     run->load_end = tl_tool_load_average();
     tl_tool_progress_end(&progress);
+    bench_renderers_close(run);
     tl_context_destroy(ctx);
     return err;
 }

@@ -220,9 +220,9 @@ static int describe_renderer(render_args *a, const tl_scene *scene, tl_tool_log 
         a->rd.height = 720;
     }
     a->rd.logger = tl_tool_log_logger(log);
-    a->rd.synchronous_stats = a->stats || a->plan; /* their figures describe the frame just rendered */
-    if (a->dump) a->rd.keep_targets = TL_TARGETS_ALL;
-    if (a->hdr_out) a->rd.keep_targets |= TL_TARGET_BIT(TL_TARGET_HDR);
+    a->rd.options.synchronous_stats = a->stats || a->plan; /* their figures describe the frame just rendered */
+    if (a->dump) a->rd.options.keep_targets = TL_TARGETS_ALL;
+    if (a->hdr_out) a->rd.options.keep_targets |= TL_TARGET_BIT(TL_TARGET_HDR);
     tl_tool_budget_renderer(&a->budgets, &a->rd);
     return tl_tool_budget_check(RENDER_TOOL, NULL, &a->rd, scene);
 }

@@ -7,6 +7,10 @@
 //                       (blended SRC_ALPHA, ONE_MINUS_SRC_ALPHA over the finer level).
 #include "frame.glsl"
 
+layout(std140, binding = TL_UBO_PASS) uniform tl_bloom_block {
+    vec4 u_bloom; // threshold, knee (absolute), intensity, scatter
+};
+
 in vec2 v_uv;
 #ifdef TL_BLOOM_PREFILTER
 layout(binding = TL_UNIT_HDR) uniform sampler2D u_src;

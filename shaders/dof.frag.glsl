@@ -7,20 +7,24 @@
 // farther than its own disc. A pixel no other tap reaches keeps its colour exactly.
 #include "effects.glsl"
 
+layout(std140, binding = TL_UBO_PASS) uniform tl_dof_block {
+    vec4 u_dof; // focus distance, aperture, largest CoC (fractions of the height), 0
+};
+
 in vec2 v_uv;
 layout(binding = TL_UNIT_HDR) uniform sampler2D u_hdr;
 layout(location = TL_OUT_DOF) out vec4 o_dof;
 
 float tl_coc(float z, float height)
 {
-    float f = u_effects.z, c = isinf(z) ? u_effects.w : u_effects.w * abs(z - f) / max(z, 1e-30);
-    return min(c, u_dof_params.x) * height;
+    float f = u_dof.x, c = isinf(z) ? u_dof.y : u_dof.y * abs(z - f) / max(z, 1e-30);
+    return min(c, u_dof.z) * height;
 }
 
 void main()
 {
     ivec2 px = ivec2(gl_FragCoord.xy), size = textureSize(u_hdr, 0);
-    float height = float(size.y), big = u_dof_params.x * height;
+    float height = float(size.y), big = u_dof.z * height;
     vec4 c0 = texelFetch(u_hdr, px, 0);
     float z0 = tl_fx_linear_depth(px), coc0 = tl_coc(z0, height);
     float w0 = 1.0 / max(3.14159265 * coc0 * coc0, 1.0), area = 3.14159265 * big * big / float(TL_DOF_SAMPLES);

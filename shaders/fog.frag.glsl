@@ -7,6 +7,12 @@
 // of the world position, drifting with the camera's time.
 #include "effects.glsl"
 
+layout(std140, binding = TL_UBO_PASS) uniform tl_fog_block {
+    vec4 u_fog_color;  // rgb, density
+    vec4 u_fog;        // height, height falloff, noise, noise scale
+    vec4 u_fog_motion; // noise speed, the camera's time, 0, 0
+};
+
 in vec2 v_uv;
 layout(location = TL_OUT_HDR) out vec4 o_fog;
 
@@ -57,7 +63,7 @@ void main()
     vec3 eye = -(to_world * u_view[3].xyz), dir_w = to_world * dir;
     float density = u_fog_color.a;
 #ifdef TL_FOG_NOISE
-    vec3 at = (eye + dir_w * min(d, 20.0)) * u_fog.w + vec3(1.0, 0.2, 0.7) * (u_effects.x * u_effects.y);
+    vec3 at = (eye + dir_w * min(d, 20.0)) * u_fog.w + vec3(1.0, 0.2, 0.7) * (u_fog_motion.x * u_fog_motion.y);
     density *= 1.0 + u_fog.z * (2.0 * tl_fbm(at) - 1.0);
 #endif
 #ifdef TL_FOG_HEIGHT

@@ -5,6 +5,12 @@
 in vec2 v_uv;
 #include "frame.glsl"
 
+layout(std140, binding = TL_UBO_PASS) uniform tl_fxaa_block {
+    float u_fxaa_subpix;
+    float u_fxaa_edge_threshold;
+    float u_fxaa_edge_threshold_min;
+};
+
 layout(binding = TL_UNIT_LDR) uniform sampler2D u_ldr; // bilinear filtering
 #define u_rcp_size u_inv_size
 #define u_edge_threshold u_fxaa_edge_threshold

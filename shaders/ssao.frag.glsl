@@ -7,6 +7,10 @@
 // The spiral is rotated per pixel; ssao-blur removes the noise.
 #include "effects.glsl"
 
+layout(std140, binding = TL_UBO_PASS) uniform tl_ssao_block {
+    vec4 u_ssao; // radius, k_b, k_d, exponent
+};
+
 in vec2 v_uv;
 layout(location = TL_OUT_AO_RAW) out vec4 o_ao;
 

@@ -10,6 +10,11 @@
 // fifth. Output: the weighted colour and, in alpha, its weight.
 #include "effects.glsl"
 
+layout(std140, binding = TL_UBO_PASS) uniform tl_ssr_block {
+    vec4 u_ssr_march;  // max distance, thickness, min gloss, edge fade
+    vec4 u_ssr_weight; // intensity, near plane distance, 0, 0
+};
+
 in vec2 v_uv;
 layout(binding = TL_UNIT_HDR) uniform sampler2D u_hdr;
 layout(location = TL_OUT_SSR) out vec4 o_ssr;

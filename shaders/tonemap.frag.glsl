@@ -2,6 +2,11 @@
 // gamma-encoded luma in alpha for FXAA.
 #include "frame.glsl"
 
+layout(std140, binding = TL_UBO_PASS) uniform tl_tonemap_block {
+    float u_exposure;
+    float u_bloom_intensity; // bloom's weight (tl_bloom_desc.intensity)
+};
+
 in vec2 v_uv;
 layout(binding = TL_UNIT_HDR) uniform sampler2D u_hdr;
 #ifdef TL_BLOOM
@@ -30,7 +35,7 @@ void main()
     vec3 c = textureLod(u_hdr, v_uv, 0.0).rgb;
     c = vec3(isnan(c.r) ? 0.0 : c.r, isnan(c.g) ? 0.0 : c.g, isnan(c.b) ? 0.0 : c.b);
 #ifdef TL_BLOOM
-    c = clamp(c, vec3(0.0), vec3(65504.0)) + u_bloom.z * textureLod(u_bloom_image, v_uv, 0.0).rgb;
+    c = clamp(c, vec3(0.0), vec3(65504.0)) + u_bloom_intensity * textureLod(u_bloom_image, v_uv, 0.0).rgb;
 #endif
     vec3 hdr = clamp(c, vec3(0.0), vec3(65504.0)) * u_exposure;
     vec3 l = tl_aces(hdr);

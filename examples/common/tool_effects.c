@@ -21,8 +21,8 @@ const char tl_tool_effects_help[] =
     "                        --ssr-distance D (16), --ssr-thickness T (0.4), --ssr-min-gloss G (0.4),\n"
     "                        --ssr-intensity I (1)\n";
 
-/* Each valued option's id is the offset of its field in tl_renderer_desc. */
-#define FX(field) ((int)offsetof(tl_renderer_desc, field))
+/* Each valued option's id is the offset of its field in tl_renderer_desc (options.ssao.radius, ...). */
+#define FX(field) ((int)offsetof(tl_renderer_desc, options.field))
 /* Zero means "the default" in the descriptor: an explicit 0 is written as -1 (exactly 0). */
 #define FX_ZERO_IS_NEGATIVE TL_OPT_USER
 #define FX_POSITIVE .min = 0.0, .max = FLT_MAX, .flags = TL_OPT_MIN_OPEN
@@ -78,13 +78,13 @@ const tl_opt_table tl_tool_effect_options = TL_OPT_TABLE(fx_opts);
 int tl_tool_effect_flag(tl_renderer_desc *d, const char *flag)
 {
     if (!strcmp(flag, "--ssao")) {
-        if (d->ssao.method == TL_SSAO_OFF) d->ssao.method = TL_SSAO_DISC;
-    } else if (!strcmp(flag, "--ssao-diffuse")) d->ssao.diffuse = 1;
+        if (d->options.ssao.method == TL_SSAO_OFF) d->options.ssao.method = TL_SSAO_DISC;
+    } else if (!strcmp(flag, "--ssao-diffuse")) d->options.ssao.diffuse = 1;
     else if (!strcmp(flag, "--fog")) {
-        if (d->fog.mode == TL_FOG_OFF) d->fog.mode = TL_FOG_DISTANCE;
-    } else if (!strcmp(flag, "--dof")) d->dof.enabled = 1;
-    else if (!strcmp(flag, "--bloom")) d->bloom.enabled = 1;
-    else if (!strcmp(flag, "--ssr")) d->ssr.enabled = 1;
+        if (d->options.fog.mode == TL_FOG_OFF) d->options.fog.mode = TL_FOG_DISTANCE;
+    } else if (!strcmp(flag, "--dof")) d->options.dof.enabled = 1;
+    else if (!strcmp(flag, "--bloom")) d->options.bloom.enabled = 1;
+    else if (!strcmp(flag, "--ssr")) d->options.ssr.enabled = 1;
     else return 0;
     return 1;
 }

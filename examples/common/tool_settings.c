@@ -61,13 +61,13 @@ const tl_opt_table tl_tool_settings_option_table = TL_OPT_TABLE(settings_opts);
 /* The options whose names the library knows (tl_*_from_name): 1, or 2 after one line. */
 static int tl__settings_named(const char *tool, tl_renderer_desc *d, int id, const char *v)
 {
-    if (id == S_MODE && tl_render_mode_from_name(v, &d->mode) != TL_OK)
+    if (id == S_MODE && tl_render_mode_from_name(v, &d->options.mode) != TL_OK)
         return tl_opt_usage(tool, "--mode '%s': wants thin-lpp, thin-deferred, fat or forward", v);
-    if (id == S_STRATEGY && tl_light_strategy_from_name(v, &d->light_strategy) != TL_OK)
+    if (id == S_STRATEGY && tl_light_strategy_from_name(v, &d->options.light_strategy) != TL_OK)
         return tl_opt_usage(tool, "--light-strategy '%s': wants volumes, tiled or auto", v);
-    if (id == S_LIGHTING && tl_lighting_model_from_name(v, &d->lighting) != TL_OK)
+    if (id == S_LIGHTING && tl_lighting_model_from_name(v, &d->options.lighting) != TL_OK)
         return tl_opt_usage(tool, "--lighting '%s': wants blinn-phong, ggx or auto", v);
-    if (id == S_FRESNEL && tl_fresnel_layout_from_name(v, &d->fresnel) != TL_OK)
+    if (id == S_FRESNEL && tl_fresnel_layout_from_name(v, &d->options.fresnel) != TL_OK)
         return tl_opt_usage(tool, "--fresnel '%s': wants two-sums or nv", v);
     return 1;
 }
@@ -77,18 +77,18 @@ int tl_tool_settings_apply(const char *tool, tl_renderer_desc *d, const tl_opt *
     if (!tl_opt_in(o, tl_tool_settings_option_table)) return 0;
     int u = (int)v->u[0];
     switch (o->id) {
-    case S_NO_PREPASS: d->forward_no_depth_prepass = 1; break;
-    case S_DEPTH: d->depth_format = (tl_depth_format)u; break;
-    case S_RT0: d->rt0 = (tl_rt0_packing)u; break;
-    case S_LIGHT_BUFFER: d->light_buffer = (tl_light_buffer)u; break;
-    case S_LIGHT_FORMAT: d->light_format = (tl_light_format)u; break;
+    case S_NO_PREPASS: d->options.forward_no_depth_prepass = 1; break;
+    case S_DEPTH: d->options.depth_format = (tl_depth_format)u; break;
+    case S_RT0: d->options.rt0 = (tl_rt0_packing)u; break;
+    case S_LIGHT_BUFFER: d->options.light_buffer = (tl_light_buffer)u; break;
+    case S_LIGHT_FORMAT: d->options.light_format = (tl_light_format)u; break;
     case S_AMBIENT: /* zero is "the scene's" in the descriptor; a negative value means exactly 0 */
-        d->ambient[0] = d->ambient[1] = d->ambient[2] = v->f[0] > 0.0 ? (float)v->f[0] : -1.0f;
+        d->options.ambient[0] = d->options.ambient[1] = d->options.ambient[2] = v->f[0] > 0.0 ? (float)v->f[0] : -1.0f;
         break;
-    case S_TILE_SIZE: d->tile_size = (uint32_t)u; break;
-    case S_TILED_SHADING: d->tiled_shading = (tl_tiled_shading)u; break;
-    case S_FXAA: d->fxaa = (tl_fxaa_preset)u; break;
-    case S_EXPOSURE: d->exposure = (float)v->f[0]; break;
+    case S_TILE_SIZE: d->options.tile_size = (uint32_t)u; break;
+    case S_TILED_SHADING: d->options.tiled_shading = (tl_tiled_shading)u; break;
+    case S_FXAA: d->options.fxaa = (tl_fxaa_preset)u; break;
+    case S_EXPOSURE: d->options.exposure = (float)v->f[0]; break;
     default: return tl__settings_named(tool, d, o->id, v->text);
     }
     return 1;

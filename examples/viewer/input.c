@@ -17,7 +17,8 @@ static void vw_set_view(vw_app *app, vw_view v)
 
 static void vw_cycle_strategy(vw_app *app)
 {
-    app->desc.light_strategy = (tl_light_strategy)((app->desc.light_strategy + 1) % TL_LIGHT_STRATEGY_COUNT_);
+    tl_renderer_options *o = &app->desc.options;
+    o->light_strategy = (tl_light_strategy)((o->light_strategy + 1) % TL_LIGHT_STRATEGY_COUNT_);
     app->rebuild = 1;
 }
 
@@ -42,7 +43,7 @@ static void vw_key_view(vw_app *app, int key, int mods)
 static void vw_key_settings(vw_app *app, int key)
 {
     if (key >= GLFW_KEY_1 && key <= GLFW_KEY_4) {
-        app->desc.mode = (tl_render_mode)(TL_MODE_THIN_LPP + (key - GLFW_KEY_1));
+        app->desc.options.mode = (tl_render_mode)(TL_MODE_THIN_LPP + (key - GLFW_KEY_1));
         app->rebuild = 1;
     } else if (key == GLFW_KEY_T) {
         vw_cycle_strategy(app);
@@ -53,8 +54,8 @@ static void vw_key_settings(vw_app *app, int key)
     } else if (key == GLFW_KEY_L) {
         app->animate = !app->animate;
     } else if (key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_RIGHT_BRACKET) {
-        float e = app->desc.exposure > 0 ? app->desc.exposure : 1.0f;
-        app->desc.exposure = key == GLFW_KEY_RIGHT_BRACKET ? e * 1.25f : e / 1.25f;
+        float e = app->desc.options.exposure > 0 ? app->desc.options.exposure : 1.0f;
+        app->desc.options.exposure = key == GLFW_KEY_RIGHT_BRACKET ? e * 1.25f : e / 1.25f;
         app->rebuild = 1;
     }
 }

@@ -140,7 +140,7 @@ static void vw_apply_changes(vw_run *run)
     }
     in->pending_w = in->pending_h = 0;
     if (app->rebuild) {
-        if (vw_make_renderers(app)) fprintf(stderr, "thinlight-viewer: the new settings failed\n");
+        if (vw_apply_settings(app)) fprintf(stderr, "thinlight-viewer: the new settings failed\n");
         run->print_pending = run->args.print_targets;
     }
 }
@@ -209,12 +209,12 @@ static void vw_settings(vw_run *run)
     tl_tool_budget_renderer(&app->budgets, &app->desc);
     app->desc.get_proc_address = vw_proc;
     /* the defaults, spelled out for the panel */
-    if (!app->desc.mode) app->desc.mode = TL_MODE_THIN_LPP;
-    if (!app->desc.depth_format) app->desc.depth_format = TL_DEPTH_FORMAT_D24;
-    if (!app->desc.rt0) app->desc.rt0 = TL_RT0_RGBA8;
-    if (!app->desc.light_buffer) app->desc.light_buffer = TL_LIGHT_BUFFER_EXACT;
-    if (!app->desc.fxaa) app->desc.fxaa = TL_FXAA_29;
-    if (!(app->desc.exposure > 0)) app->desc.exposure = 1.0f;
+    if (!app->desc.options.mode) app->desc.options.mode = TL_MODE_THIN_LPP;
+    if (!app->desc.options.depth_format) app->desc.options.depth_format = TL_DEPTH_FORMAT_D24;
+    if (!app->desc.options.rt0) app->desc.options.rt0 = TL_RT0_RGBA8;
+    if (!app->desc.options.light_buffer) app->desc.options.light_buffer = TL_LIGHT_BUFFER_EXACT;
+    if (!app->desc.options.fxaa) app->desc.options.fxaa = TL_FXAA_29;
+    if (!(app->desc.options.exposure > 0)) app->desc.options.exposure = 1.0f;
     if (a->scene) app->gltf_extra_lights = a->lights;
     else if (a->lights_set) app->crypt.point_lights = a->lights ? a->lights : 1;
     app->view = a->view;

@@ -1,5 +1,6 @@
-/* The viewer's scene and renderers: loading the crypt or a glTF file, making the renderers the
- * current settings and view need, animating the lights. */
+/* The viewer's scene and renderers: loading the crypt or a glTF file, the renderers the current
+ * settings and view need (made once, then given new options with tl_renderer_set_options),
+ * animating the lights. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -8,8 +9,8 @@
 #include "session.h"
 #include "thinlight/io.h"
 
-/* Each line once (renderers are made again on every change of settings, and a scene reloaded on
- * every change of the light count: their warnings would repeat); an error also for the panel. */
+/* Each line once (a change of settings plans the frames again, and a scene is set again on every
+ * change of the light count: their warnings would repeat); an error also for the panel. */
 static void vw_log(void *user, tl_log_level level, const char *message)
 {
     vw_app *app = (vw_app *)user;
@@ -69,13 +70,21 @@ void vw_destroy_renderers(vw_app *app)
     app->r = app->fat = app->split = NULL;
 }
 
+/* The panel's options for a renderer in a role: its mode, what it must keep for the views. */
+static tl_renderer_options vw_options(const vw_app *app, tl_render_mode mode, uint32_t keep)
+{
+    tl_renderer_options o = app->desc.options;
+    o.mode = mode;
+    o.keep_targets = keep;
+    return o;
+}
+
 static tl_renderer *vw_make(vw_app *app, tl_render_mode mode, uint32_t keep)
 {
     tl_renderer_desc d = app->desc;
-    d.mode = mode;
+    d.options = vw_options(app, mode, keep);
     d.width = app->width;
     d.height = app->height;
-    d.keep_targets = keep;
     d.logger = vw_logger(app);
     tl_renderer *r = NULL;
     if (tl_renderer_create(&d, &r) != TL_OK) return NULL;
@@ -84,6 +93,20 @@ static tl_renderer *vw_make(vw_app *app, tl_render_mode mode, uint32_t keep)
         return NULL;
     }
     return r;
+}
+
+/* The renderer of a role: made when it is wanted and missing, destroyed when it is not wanted, and
+ * otherwise given the options (the scene, its lights and the tile pass stay). */
+static int vw_role(vw_app *app, tl_renderer **r, int wanted, tl_render_mode mode, uint32_t keep)
+{
+    if (!wanted) {
+        tl_renderer_destroy(*r);
+        *r = NULL;
+        return 0;
+    }
+    if (!*r) return (*r = vw_make(app, mode, keep)) ? 0 : -1;
+    tl_renderer_options o = vw_options(app, mode, keep);
+    return tl_renderer_set_options(*r, &o) == TL_OK ? 0 : -1;
 }
 
 /* The debug views read targets back after the frame: those must not share memory. */
@@ -102,14 +125,14 @@ static void vw_refresh_plan(vw_app *app)
     tl_frame_plan_format(&app->plan, app->plan_text, app->plan_text_size);
 }
 
-int vw_make_renderers(vw_app *app)
+int vw_apply_settings(vw_app *app)
 {
-    vw_destroy_renderers(app);
     app->kept = vw_needs_kept(app);
-    app->r = vw_make(app, app->desc.mode, app->kept ? TL_TARGETS_ALL : 0);
-    if (!app->r) return -1;
-    if (app->split_on) app->split = vw_make(app, app->split_mode, 0);
-    if (!app->split_on && (app->grid || app->view == VW_VIEW_DIFF_FAT)) app->fat = vw_make(app, TL_MODE_FAT, 0);
+    int fat_needed = !app->split_on && (app->grid || app->view == VW_VIEW_DIFF_FAT);
+    int err = vw_role(app, &app->r, 1, app->desc.options.mode, app->kept ? TL_TARGETS_ALL : 0);
+    if (!err) err = vw_role(app, &app->split, app->split_on, app->split_mode, 0);
+    if (!err) err = vw_role(app, &app->fat, fat_needed, TL_MODE_FAT, 0);
+    if (err) return -1;
     vw_views_tile_pass(app, app->r);
     vw_refresh_plan(app);
     memset(&app->timings, 0, sizeof app->timings);
@@ -117,18 +140,15 @@ int vw_make_renderers(vw_app *app)
     return 0;
 }
 
-/* After a view change: only a change of what must be kept or of the helper renderers costs a new
- * renderer; otherwise the tile pass is added or removed. */
-int vw_update_view(vw_app *app)
+int vw_make_renderers(vw_app *app)
 {
-    int fat_needed = !app->split_on && (app->grid || app->view == VW_VIEW_DIFF_FAT);
-    if (app->kept != vw_needs_kept(app) || (fat_needed && !app->fat) || (app->split_on && !app->split) ||
-        (!app->split_on && app->split))
-        return vw_make_renderers(app);
-    vw_views_tile_pass(app, app->r);
-    vw_refresh_plan(app);
-    return 0;
+    vw_destroy_renderers(app);
+    return vw_apply_settings(app);
 }
+
+/* After a view change: what must be kept and which helper renderers exist may change; none is made
+ * again. */
+int vw_update_view(vw_app *app) { return vw_apply_settings(app); }
 
 int vw_resize(vw_app *app, uint32_t w, uint32_t h)
 {
@@ -171,5 +191,8 @@ int vw_scale_lights(vw_app *app, int up)
     *n = next;
     if (!app->scene_path) app->crypt.spot_lights = next >= 8 ? next / 8 : 0;
     if (vw_load_scene(app)) return -1;
-    return vw_make_renderers(app);
+    tl_renderer *all[3] = {app->r, app->fat, app->split};
+    for (int i = 0; i < 3; i++) /* the same renderers, with the new scene */
+        if (all[i] && tl_renderer_set_scene(all[i], app->scene) != TL_OK) return -1;
+    return vw_apply_settings(app);
 }

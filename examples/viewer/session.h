@@ -10,6 +10,9 @@ int vw_load_scene(vw_app *app);
 /** Makes the main renderer and the helpers the view needs (fat for the difference, the split
  *  view's second mode) at app->width x app->height. 0 or -1. */
 int vw_make_renderers(vw_app *app);
+/** The settings into the renderers: each is given its options (tl_renderer_set_options), and the
+ *  helper renderers the view needs are made or destroyed; none is made again. 0 or -1. */
+int vw_apply_settings(vw_app *app);
 void vw_destroy_renderers(vw_app *app);
 /** After app->view, grid or split_on changed. */
 int vw_update_view(vw_app *app);

@@ -69,15 +69,15 @@ static void vw_ui_settings(vw_app *app)
     static const char *buffers[] = {"exact (diffuse + specular)", "compact (one RGBA16F)"};
     static const char *fxaas[] = {"off", "12", "29", "39"};
     tl_renderer_desc *d = &app->desc;
-    bool c = vw_combo("mode", &d->mode, modes, TL_MODE_THIN_LPP, 4);
-    c |= vw_combo("light strategy", &d->light_strategy, strategies, TL_LIGHT_STRATEGY_DEFAULT, 3);
+    bool c = vw_combo("mode", &d->options.mode, modes, TL_MODE_THIN_LPP, 4);
+    c |= vw_combo("light strategy", &d->options.light_strategy, strategies, TL_LIGHT_STRATEGY_DEFAULT, 3);
     ImGui::TextDisabled("  planned: %s (%s)", tl_light_strategy_name(app->plan.light_strategy), app->plan.strategy_reason);
-    c |= vw_combo("depth", &d->depth_format, depths, TL_DEPTH_FORMAT_D24, 3);
-    c |= vw_combo("RT0 packing", &d->rt0, rt0s, TL_RT0_RGBA8, 2);
-    c |= vw_combo("light buffer", &d->light_buffer, buffers, TL_LIGHT_BUFFER_EXACT, 2);
-    c |= vw_combo("FXAA", &d->fxaa, fxaas, TL_FXAA_OFF, 4);
-    if (d->exposure <= 0) d->exposure = 1.0f;
-    ImGui::SliderFloat("exposure", &d->exposure, 0.05f, 20.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
+    c |= vw_combo("depth", &d->options.depth_format, depths, TL_DEPTH_FORMAT_D24, 3);
+    c |= vw_combo("RT0 packing", &d->options.rt0, rt0s, TL_RT0_RGBA8, 2);
+    c |= vw_combo("light buffer", &d->options.light_buffer, buffers, TL_LIGHT_BUFFER_EXACT, 2);
+    c |= vw_combo("FXAA", &d->options.fxaa, fxaas, TL_FXAA_OFF, 4);
+    if (d->options.exposure <= 0) d->options.exposure = 1.0f;
+    ImGui::SliderFloat("exposure", &d->options.exposure, 0.05f, 20.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
     c |= ImGui::IsItemDeactivatedAfterEdit();
     ImGui::Text("lights: %zu", app->light_count);
     ImGui::SameLine();
@@ -101,11 +101,11 @@ struct vw_effect {
 };
 #define VW_FX(field) offsetof(tl_renderer_desc, field), sizeof(tl_renderer_desc::field)
 static const vw_effect vw_effects[] = {
-    {"SSAO", "--ssao", VW_FX(ssao)},
-    {"fog", "--fog", VW_FX(fog)},
-    {"depth of field", "--dof", VW_FX(dof)},
-    {"reflections", "--ssr", VW_FX(ssr)},
-    {"bloom", "--bloom", VW_FX(bloom)},
+    {"SSAO", "--ssao", VW_FX(options.ssao)},
+    {"fog", "--fog", VW_FX(options.fog)},
+    {"depth of field", "--dof", VW_FX(options.dof)},
+    {"reflections", "--ssr", VW_FX(options.ssr)},
+    {"bloom", "--bloom", VW_FX(options.bloom)},
 };
 static const int vw_effect_count = static_cast<int>(sizeof vw_effects / sizeof vw_effects[0]);
 
@@ -124,33 +124,33 @@ struct vw_param {
 static const char *const vw_ssao_methods[] = {"disc (slides)", "hemisphere", nullptr};
 static const char *const vw_fog_modes[] = {"distance", "height", nullptr};
 static const vw_param vw_params[] = {
-    {"SSAO", "estimator", VW_ENUM, VW_AT(ssao.method), 0, 0, 1, vw_ssao_methods},
-    {"SSAO", "samples", VW_U32, VW_AT(ssao.samples), 1, 64, 16, nullptr},
-    {"SSAO", "radius", VW_F32_LOG, VW_AT(ssao.radius), 0.05f, 10, 1, nullptr},
-    {"SSAO", "bias k_b", VW_F32, VW_AT(ssao.bias), 0, 2, 0, nullptr},
-    {"SSAO", "falloff k_d", VW_F32, VW_AT(ssao.falloff), 0, 20, -1, nullptr},
-    {"SSAO", "exponent x", VW_F32, VW_AT(ssao.exponent), 0.25f, 8, 3, nullptr},
-    {"SSAO", "blur half-width", VW_U32, VW_AT(ssao.blur_radius), 1, 8, 2, nullptr},
-    {"SSAO", "on diffuse light too", VW_BOOL, VW_AT(ssao.diffuse), 0, 1, 0, nullptr},
-    {"fog", "kind", VW_ENUM, VW_AT(fog.mode), 0, 0, 1, vw_fog_modes},
-    {"fog", "density", VW_F32_LOG, VW_AT(fog.density), 0.001f, 1, 0.05f, nullptr},
-    {"fog", "colour", VW_RGB, VW_AT(fog.color), 0, 0, 0, nullptr},
-    {"fog", "height", VW_F32, VW_AT(fog.height), -20, 20, 0, nullptr},
-    {"fog", "height falloff", VW_F32_LOG, VW_AT(fog.height_falloff), 0.01f, 5, 0.5f, nullptr},
-    {"fog", "noise", VW_F32, VW_AT(fog.noise), 0, 1, 0, nullptr},
-    {"depth of field", "focus distance", VW_F32, VW_AT(dof.focus_distance), 0, 100, -1, nullptr},
-    {"depth of field", "aperture", VW_F32_LOG, VW_AT(dof.aperture), 0.001f, 0.1f, 0.01f, nullptr},
-    {"depth of field", "largest CoC", VW_F32, VW_AT(dof.max_radius), 0, 0.2f, -1, nullptr},
-    {"depth of field", "taps", VW_U32, VW_AT(dof.samples), 8, 128, 48, nullptr},
-    {"reflections", "steps", VW_U32, VW_AT(ssr.steps), 4, 256, 48, nullptr},
-    {"reflections", "distance", VW_F32_LOG, VW_AT(ssr.max_distance), 0.5f, 100, 16, nullptr},
-    {"reflections", "thickness", VW_F32_LOG, VW_AT(ssr.thickness), 0.01f, 5, 0.4f, nullptr},
-    {"reflections", "least gloss", VW_F32, VW_AT(ssr.min_gloss), 0, 0.99f, 0.4f, nullptr},
-    {"reflections", "intensity", VW_F32_LOG, VW_AT(ssr.intensity), 0.1f, 10, 1, nullptr},
-    {"bloom", "threshold", VW_F32_LOG, VW_AT(bloom.threshold), 0.05f, 20, 1, nullptr},
-    {"bloom", "intensity", VW_F32_LOG, VW_AT(bloom.intensity), 0.02f, 4, 0.5f, nullptr},
-    {"bloom", "scatter", VW_F32, VW_AT(bloom.scatter), 0.05f, 1, 0.7f, nullptr},
-    {"bloom", "levels", VW_U32, VW_AT(bloom.levels), 1, 8, 6, nullptr},
+    {"SSAO", "estimator", VW_ENUM, VW_AT(options.ssao.method), 0, 0, 1, vw_ssao_methods},
+    {"SSAO", "samples", VW_U32, VW_AT(options.ssao.samples), 1, 64, 16, nullptr},
+    {"SSAO", "radius", VW_F32_LOG, VW_AT(options.ssao.radius), 0.05f, 10, 1, nullptr},
+    {"SSAO", "bias k_b", VW_F32, VW_AT(options.ssao.bias), 0, 2, 0, nullptr},
+    {"SSAO", "falloff k_d", VW_F32, VW_AT(options.ssao.falloff), 0, 20, -1, nullptr},
+    {"SSAO", "exponent x", VW_F32, VW_AT(options.ssao.exponent), 0.25f, 8, 3, nullptr},
+    {"SSAO", "blur half-width", VW_U32, VW_AT(options.ssao.blur_radius), 1, 8, 2, nullptr},
+    {"SSAO", "on diffuse light too", VW_BOOL, VW_AT(options.ssao.diffuse), 0, 1, 0, nullptr},
+    {"fog", "kind", VW_ENUM, VW_AT(options.fog.mode), 0, 0, 1, vw_fog_modes},
+    {"fog", "density", VW_F32_LOG, VW_AT(options.fog.density), 0.001f, 1, 0.05f, nullptr},
+    {"fog", "colour", VW_RGB, VW_AT(options.fog.color), 0, 0, 0, nullptr},
+    {"fog", "height", VW_F32, VW_AT(options.fog.height), -20, 20, 0, nullptr},
+    {"fog", "height falloff", VW_F32_LOG, VW_AT(options.fog.height_falloff), 0.01f, 5, 0.5f, nullptr},
+    {"fog", "noise", VW_F32, VW_AT(options.fog.noise), 0, 1, 0, nullptr},
+    {"depth of field", "focus distance", VW_F32, VW_AT(options.dof.focus_distance), 0, 100, -1, nullptr},
+    {"depth of field", "aperture", VW_F32_LOG, VW_AT(options.dof.aperture), 0.001f, 0.1f, 0.01f, nullptr},
+    {"depth of field", "largest CoC", VW_F32, VW_AT(options.dof.max_radius), 0, 0.2f, -1, nullptr},
+    {"depth of field", "taps", VW_U32, VW_AT(options.dof.samples), 8, 128, 48, nullptr},
+    {"reflections", "steps", VW_U32, VW_AT(options.ssr.steps), 4, 256, 48, nullptr},
+    {"reflections", "distance", VW_F32_LOG, VW_AT(options.ssr.max_distance), 0.5f, 100, 16, nullptr},
+    {"reflections", "thickness", VW_F32_LOG, VW_AT(options.ssr.thickness), 0.01f, 5, 0.4f, nullptr},
+    {"reflections", "least gloss", VW_F32, VW_AT(options.ssr.min_gloss), 0, 0.99f, 0.4f, nullptr},
+    {"reflections", "intensity", VW_F32_LOG, VW_AT(options.ssr.intensity), 0.1f, 10, 1, nullptr},
+    {"bloom", "threshold", VW_F32_LOG, VW_AT(options.bloom.threshold), 0.05f, 20, 1, nullptr},
+    {"bloom", "intensity", VW_F32_LOG, VW_AT(options.bloom.intensity), 0.02f, 4, 0.5f, nullptr},
+    {"bloom", "scatter", VW_F32, VW_AT(options.bloom.scatter), 0.05f, 1, 0.7f, nullptr},
+    {"bloom", "levels", VW_U32, VW_AT(options.bloom.levels), 1, 8, 6, nullptr},
 };
 
 // One parameter's widget; true when an edit is finished (the renderer is then made again).
@@ -249,7 +249,7 @@ static void vw_ui_views(vw_app *app)
     ImGui::SameLine();
     ImGui::SetNextItemWidth(120);
     if (vw_combo("##split", &app->split_mode, modes, TL_MODE_THIN_LPP, 4) && app->split_on)
-        app->rebuild = 1; // a new right-hand renderer
+        app->rebuild = 1; // the right-hand renderer's mode
     ImGui::SliderFloat("difference scale", &app->diff_scale, 1.0f, 64.0f, "x%.0f", ImGuiSliderFlags_Logarithmic);
     if (c) vw_update_view(app);
 }
@@ -309,7 +309,7 @@ static void vw_ui_labels(vw_app *app, ImDrawList *dl, ImVec2 size)
             dl->AddText(ImVec2((v % VW_GRID_COLS) * size.x / VW_GRID_COLS + 4, (v / VW_GRID_COLS) * size.y / VW_GRID_ROWS + 2),
                         IM_COL32_WHITE, vw_view_name(static_cast<vw_view>(v)));
     } else if (app->split_on) {
-        const char *left = tl_render_mode_name(app->desc.mode); // beside the dividing line
+        const char *left = tl_render_mode_name(app->desc.options.mode); // beside the dividing line
         dl->AddText(ImVec2(size.x / 2 - 8 - ImGui::CalcTextSize(left).x, size.y - 24), IM_COL32_WHITE, left);
         dl->AddText(ImVec2(size.x / 2 + 8, size.y - 24), IM_COL32_WHITE, tl_render_mode_name(app->split_mode));
     }

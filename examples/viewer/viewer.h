@@ -82,7 +82,7 @@ typedef struct vw_app {
     tl_renderer *fat;                /* fat, for the difference view (created on demand) */
     tl_renderer *split;              /* the split view's right half (created on demand) */
     int kept;                        /* r was made with keep_targets = all (a debug view is on) */
-    int rebuild;                     /* settings changed: make the renderers again */
+    int rebuild;                     /* settings changed: give the renderers their options (vw_apply_settings) */
     int reload;                      /* light count changed: make the scene again */
     uint32_t width, height;          /* framebuffer size */
     /* what is shown */

@@ -69,7 +69,7 @@ static const float *vw_read(vw_app *app, tl_renderer *r, tl_target_id t, int slo
 
 static int vw_is_background(const vw_app *app, const float *depth, size_t i)
 {
-    float clear = app->desc.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ? 0.0f : 1.0f;
+    float clear = app->desc.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ? 0.0f : 1.0f;
     return depth[4 * i] == clear;
 }
 
@@ -79,7 +79,7 @@ static int vw_unavailable(vw_app *app, const char *why)
     return 1;
 }
 
-static int vw_fat(const vw_app *app) { return app->desc.mode == TL_MODE_FAT; }
+static int vw_fat(const vw_app *app) { return app->desc.options.mode == TL_MODE_FAT; }
 
 /* ---- the views ------------------------------------------------------------------------------ */
 
@@ -276,9 +276,9 @@ static int vw_view_light(vw_app *app, tl_renderer *r, uint8_t *out, int specular
     const float *spec = specular ? vw_read(app, r, TL_TARGET_LIGHT_SPECULAR, 2) : NULL;
     if (!dif) return vw_unavailable(app, "the light buffer exists in thin-lpp only");
     int compact = specular && !spec;
-    if (compact && app->desc.light_buffer != TL_LIGHT_BUFFER_COMPACT)
+    if (compact && app->desc.options.light_buffer != TL_LIGHT_BUFFER_COMPACT)
         return vw_unavailable(app, "no specular light buffer (no specular material)");
-    float e = app->desc.exposure > 0 ? app->desc.exposure : 1.0f;
+    float e = app->desc.options.exposure > 0 ? app->desc.options.exposure : 1.0f;
     for (size_t i = 0, n = vw_pixels(app); i < n; i++) {
         const float *p = spec ? spec + 4 * i : dif + 4 * i;
         if (compact) vw_put_hdr(out + 4 * i, e, p[3], p[3], p[3], 1);
@@ -329,7 +329,7 @@ static int vw_view_hdr(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_
     (void)cam;
     const float *h = vw_read(app, r, TL_TARGET_HDR, 0);
     if (!h) return vw_unavailable(app, "no HDR target");
-    float e = app->desc.exposure > 0 ? app->desc.exposure : 1.0f;
+    float e = app->desc.options.exposure > 0 ? app->desc.options.exposure : 1.0f;
     for (size_t i = 0, n = vw_pixels(app); i < n; i++) vw_put_hdr(out + 4 * i, e, h[4 * i], h[4 * i + 1], h[4 * i + 2], 0);
     return 0;
 }
@@ -366,7 +366,8 @@ static int vw_view_diff_fat(vw_app *app, tl_renderer *r, const tl_camera *cam, u
 /* SSAO's targets: AO as grey, black 0 (occluded) to white 1 (open). */
 static int vw_view_ao_target(vw_app *app, tl_renderer *r, uint8_t *out, tl_target_id t)
 {
-    if (app->desc.ssao.method == TL_SSAO_OFF) return vw_unavailable(app, "SSAO is off (--ssao, or the Effects panel)");
+    if (app->desc.options.ssao.method == TL_SSAO_OFF)
+        return vw_unavailable(app, "SSAO is off (--ssao, or the Effects panel)");
     const float *ao = vw_read(app, r, t, 0);
     const float *d = vw_read(app, r, TL_TARGET_DEPTH, 1);
     if (!ao || !d) return vw_unavailable(app, "no AO target in this plan");
@@ -392,7 +393,7 @@ static int vw_view_ao(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t
 /* The largest circle of confusion, in pixels (tl_dof_desc's defaults resolved). */
 static float vw_coc_max(const vw_app *app)
 {
-    const tl_dof_desc *f = &app->desc.dof;
+    const tl_dof_desc *f = &app->desc.options.dof;
     float aperture = f->aperture > 0 ? f->aperture : 0.01f;
     return (f->max_radius > 0 ? f->max_radius : 2.0f * aperture) * (float)app->height;
 }
@@ -401,7 +402,8 @@ static float vw_coc_max(const vw_app *app)
 static int vw_view_dof_coc(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
 {
     (void)cam;
-    if (!app->desc.dof.enabled) return vw_unavailable(app, "depth of field is off (--dof, or the Effects panel)");
+    if (!app->desc.options.dof.enabled) return vw_unavailable(app,
+                                                              "depth of field is off (--dof, or the Effects panel)");
     const float *f = vw_read(app, r, TL_TARGET_DOF, 0);
     if (!f) return vw_unavailable(app, "no dof target in this plan");
     float most = vw_coc_max(app);
@@ -416,10 +418,10 @@ static int vw_view_dof_coc(vw_app *app, tl_renderer *r, const tl_camera *cam, ui
 static int vw_view_ssr(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
 {
     (void)cam;
-    if (!app->desc.ssr.enabled) return vw_unavailable(app, "reflections are off (--ssr, or the Effects panel)");
+    if (!app->desc.options.ssr.enabled) return vw_unavailable(app, "reflections are off (--ssr, or the Effects panel)");
     const float *t = vw_read(app, r, TL_TARGET_SSR, 0);
     if (!t) return vw_unavailable(app, "no ssr target (forward mode plans no reflections)");
-    float e = app->desc.exposure > 0 ? app->desc.exposure : 1.0f;
+    float e = app->desc.options.exposure > 0 ? app->desc.options.exposure : 1.0f;
     for (size_t i = 0, n = vw_pixels(app); i < n; i++) vw_put_hdr(out + 4 * i, e, t[4 * i], t[4 * i + 1], t[4 * i + 2], 1);
     return 0;
 }
@@ -447,12 +449,13 @@ static void vw_bilinear(const float *img, uint32_t w, uint32_t h, float u, float
 static int vw_view_bloom(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
 {
     (void)cam;
-    if (!app->desc.bloom.enabled) return vw_unavailable(app, "bloom is off (--bloom, or the Effects panel)");
+    if (!app->desc.options.bloom.enabled) return vw_unavailable(app, "bloom is off (--bloom, or the Effects panel)");
     const float *b = vw_read(app, r, TL_TARGET_BLOOM, 0);
     if (!b) return vw_unavailable(app, "no bloom target in this plan");
     const tl_plan_target *t = &app->plan.target_info[TL_TARGET_BLOOM];
-    float k = app->desc.bloom.intensity > 0 ? app->desc.bloom.intensity : 0.5f; /* tl_bloom_desc's default */
-    k *= app->desc.exposure > 0 ? app->desc.exposure : 1.0f;
+    const tl_renderer_options *o = &app->desc.options;
+    float k = o->bloom.intensity > 0 ? o->bloom.intensity : 0.5f; /* tl_bloom_desc's default */
+    k *= o->exposure > 0 ? o->exposure : 1.0f;
     float sx = (float)t->width / (float)app->width, sy = (float)t->height / (float)app->height;
     for (uint32_t y = 0; y < app->height; y++)
         for (uint32_t x = 0; x < app->width; x++) {
@@ -678,7 +681,7 @@ void vw_views_tile_pass(vw_app *app, tl_renderer *r)
     int has = 0, want = app->view == VW_VIEW_TILE_LIGHTS || app->grid;
     if (tl_renderer_get_plan(r, p) != TL_OK) return;
     for (size_t i = 0; i < p->pass_count; i++) has |= !strcmp(p->passes[i].name, d.name);
-    if (has && !want) tl_renderer_remove_pass(r, d.name);
+    if (has && (!want || p->light_strategy != TL_LIGHT_STRATEGY_TILED)) tl_renderer_remove_pass(r, d.name);
     if (!has && want && p->light_strategy == TL_LIGHT_STRATEGY_TILED) tl_renderer_add_pass(r, &d);
     tl_renderer_get_plan(r, p);
 }

@@ -225,6 +225,15 @@ typedef struct tl_ssr_desc {
     float intensity;    /**< scale of the added reflection; default 1 */
 } tl_ssr_desc;
 
+/** Vignette: HDR darkened towards the corners, by 1 - strength * smoothstep(radius, radius + softness, d)
+ *  with d the distance from the image's centre as a fraction of its half-diagonal. Zeroed: off. */
+typedef struct tl_vignette_desc {
+    int enabled;    /**< 1: on */
+    float strength; /**< darkening at full fall-off, 0..1; default 0.5 */
+    float radius;   /**< where the fall-off starts (fraction of the half-diagonal); default 0.5 */
+    float softness; /**< the fall-off's width (same unit); default 0.5 */
+} tl_vignette_desc;
+
 /** A GL entry point as a loader returns it. */
 typedef void (*tl_gl_function)(void);
 /** Loader for GL entry points, e.g. tl_context_proc_loader or a wrapper of glfwGetProcAddress. */
@@ -233,16 +242,15 @@ typedef tl_gl_function (*tl_get_proc_address_fn)(void *user, const char *name);
  *  wrapper of `glfwGetCurrentContext() == window`; called with get_proc_address_user. */
 typedef int (*tl_is_current_fn)(void *user);
 
-/** Bits of tl_target_id, for tl_renderer_desc.keep_targets and the plan's read/write sets. */
+/** Bits of tl_target_id, for tl_renderer_options.keep_targets and the plan's read/write sets. */
 #define TL_TARGET_BIT(target) (1u << (target))
-/** Every target (tl_renderer_desc.keep_targets): each gets memory of its own. */
+/** Every target (tl_renderer_options.keep_targets): each gets memory of its own. */
 #define TL_TARGETS_ALL 0xFFFFFFFFu
 
-/** Options of tl_renderer_create(); every zeroed field means its default. */
-typedef struct tl_renderer_desc {
+/** How the renderer draws a frame: every field may change between frames (tl_renderer_set_options)
+ *  and every zeroed field means its default. tl_renderer_desc.options holds the first ones. */
+typedef struct tl_renderer_options {
     tl_render_mode mode;               /**< default thin-lpp */
-    uint32_t width;                    /**< default 1280 */
-    uint32_t height;                   /**< default 720 */
     tl_depth_format depth_format;      /**< default D24 (D24S8); D32F_REVERSED for reversed Z */
     tl_rt0_packing rt0;                /**< default RGBA8 */
     tl_light_buffer light_buffer;      /**< default EXACT */
@@ -284,11 +292,20 @@ typedef struct tl_renderer_desc {
     tl_dof_desc dof;                   /**< depth of field; zeroed: off */
     tl_bloom_desc bloom;               /**< bloom; zeroed: off */
     tl_ssr_desc ssr;                   /**< screen-space reflections; zeroed: off */
+    tl_vignette_desc vignette;         /**< vignette; zeroed: off */
+} tl_renderer_options;
+
+/** What tl_renderer_create() needs: the first options and what only creation decides (the
+ *  context, memory, logging and limits); every zeroed field means its default. */
+typedef struct tl_renderer_desc {
+    uint32_t width;                    /**< default 1280 (tl_renderer_resize changes it) */
+    uint32_t height;                   /**< default 720 */
+    tl_renderer_options options;       /**< the first frame's options (tl_renderer_set_options changes them) */
     /** The most memory, in bytes, the frame's targets may take (the memory blocks of the plan,
      *  tl_frame_plan.allocated_bytes_per_pixel times the pixels, light lists included): a plan
      *  that needs more is TL_ERROR_LIMIT naming both sizes, from create, set_scene, set_lights,
-     *  resize or add_pass; the renderer keeps its previous plan, size and passes (after a
-     *  refused set_scene it has no scene). 0: no budget
+     *  resize, add_pass or set_options; the renderer keeps its previous plan, size, passes and
+     *  options (after a refused set_scene it has no scene). 0: no budget
      *  beyond GL's own limits (docs/renderer-limits.md). */
     size_t max_target_bytes;
     /** The most bytes one storage buffer binding of the renderer may hold: the frame's lights (64 B
@@ -300,7 +317,8 @@ typedef struct tl_renderer_desc {
     tl_get_proc_address_fn get_proc_address; /**< required */
     void *get_proc_address_user;       /**< passed to get_proc_address (and is_current) */
     /** Asked at the start of every call that uses GL (create, destroy, set_scene, set_lights,
-     *  resize, add_pass, remove_pass, render, render_to, wait, the reads and apply_fxaa): when the
+     *  set_options, resize, add_pass, remove_pass, render, render_to, wait, the reads and
+     *  apply_fxaa): when the
      *  context is not current the call fails with TL_ERROR_GL and a message that says so, and
      *  changes nothing (destroy frees nothing; call it again where the context is current).
      *  Zeroed: with tl_context_proc_loader as get_proc_address, the context's own answer
@@ -312,7 +330,10 @@ typedef struct tl_renderer_desc {
     tl_logger logger;                  /**< zeroed: silent; every failure is also in tl_renderer_last_error */
 } tl_renderer_desc;
 
-/** Passes a frame may run, in execution order; a plan holds the ones its mode and scene need. */
+/** Passes a frame may run, by a stable index (statistics arrays, tl_plan_pass.pass): a new pass is
+ *  appended and no value is ever renumbered. The order a frame runs them is the plan's
+ *  (tl_frame_plan.passes, the renderer's pass table), not this enum's; a plan holds the ones its
+ *  mode, options and scene need. Application passes name their place by pass name. */
 typedef enum tl_pass {
     TL_PASS_DEPTH_PREPASS, /**< forward: depth only */
     TL_PASS_GBUFFER,       /**< thin or fat G-buffer (deferred modes also write emissive + ambient into HDR) */
@@ -333,10 +354,12 @@ typedef enum tl_pass {
     TL_PASS_BLOOM,         /**< bloom: threshold and the downsample / upsample chain of HDR into bloom */
     TL_PASS_TONEMAP,       /**< (bloom added), exposure, tone curve, sRGB encoding */
     TL_PASS_FXAA,          /**< FXAA, when it is on */
+    TL_PASS_VIGNETTE,      /**< vignette: its mask, then HDR darkened by it (runs before the tone map) */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
-/** Render targets the renderer may allocate. */
+/** Render targets the renderer may allocate, by a stable index (TL_TARGET_BIT sets, statistics,
+ *  readbacks): a new target is appended and no value is ever renumbered. */
 typedef enum tl_target_id {
     TL_TARGET_DEPTH,          /**< D24S8, or D32F reversed; fat: D32F */
     TL_TARGET_RT0,            /**< octahedral normal + gloss */
@@ -358,6 +381,7 @@ typedef enum tl_target_id {
     TL_TARGET_LIGHT_FRESNEL,  /**< thin-lpp with GGX, two-sums layout: S2, the Schlick part of specular */
     TL_TARGET_BLOOM,          /**< RGBA16F bloom chain: half size (odd sizes round up), tl_bloom_desc.levels mip levels */
     TL_TARGET_SSR,            /**< RGBA16F reflected radiance as added to HDR; alpha: its weight */
+    TL_TARGET_VIGNETTE,       /**< R16F vignette factor (1: untouched) */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -499,8 +523,12 @@ typedef struct tl_frame_stats {
 
 /** "gbuffer", "lights", ... ("unknown" out of range); the names of debug groups and timers. */
 TL_API const char *tl_pass_name(tl_pass pass);
+/** The pass named `name` (tl_pass_name); TL_ERROR_INVALID_ARGUMENT for any other name. */
+TL_API tl_result tl_pass_from_name(const char *name, tl_pass *pass);
 /** "depth", "rt0", "light.diffuse", ... ("unknown" out of range). */
 TL_API const char *tl_target_name(tl_target_id target);
+/** The target named `name` (tl_target_name); TL_ERROR_INVALID_ARGUMENT for any other name. */
+TL_API tl_result tl_target_from_name(const char *name, tl_target_id *target);
 
 /** Creates the renderer in the current context. On failure *out is NULL and the message naming
  *  the problem goes to desc->logger (there is no object to ask). Every call that uses GL then
@@ -542,6 +570,20 @@ TL_API tl_result tl_renderer_set_scene(tl_renderer *r, const tl_scene *scene);
  *  tl_light does not allow is TL_ERROR_INVALID_ARGUMENT naming it and the field
  *  ("lights[3].radius = 0: a point light needs a finite radius > 0"); the renderer keeps its lights. */
 TL_API tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t count);
+/**
+ * Changes the options from the next frame on (and for tl_renderer_apply_fxaa): mode, depth format,
+ * light strategy, lighting model, effects, FXAA, ... Every zeroed field means its default, as in
+ * tl_renderer_desc.options. The scene, its lights and the application passes stay; the frame is
+ * planned again, and only what the new plan changes is made again: targets whose format or size
+ * changed, programs not built before (each permutation is built once per renderer and kept), the
+ * scene's vertex array when the plan binds other attributes. An option out of range is
+ * TL_ERROR_INVALID_ARGUMENT naming it, a plan over tl_renderer_desc.max_target_bytes
+ * TL_ERROR_LIMIT; either way the renderer keeps its options. NULL is TL_ERROR_INVALID_ARGUMENT.
+ */
+TL_API tl_result tl_renderer_set_options(tl_renderer *r, const tl_renderer_options *options);
+/** The options as last given (to tl_renderer_create or tl_renderer_set_options), zeroed fields
+ *  as they were: change a field and give them back. A zeroed struct for NULL. */
+TL_API void tl_renderer_get_options(const tl_renderer *r, tl_renderer_options *options);
 /** Changes the target size (a resized window): re-plans and reallocates the targets. */
 TL_API tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height);
 
@@ -551,7 +593,7 @@ TL_API tl_result tl_renderer_get_plan(const tl_renderer *r, tl_frame_plan *plan)
 /** Renders one frame with `camera` (NULL: the scene's) into the renderer's own targets. A camera
  *  tl_camera does not allow is TL_ERROR_INVALID_ARGUMENT naming the field ("camera.fov_y =
  *  3.14159: outside (0, pi)"); a near plane below the depth format's floor is raised, with one
- *  warning per scene. It does not wait for the GPU unless tl_renderer_desc.synchronous_stats is set. `stats` may be NULL (the
+ *  warning per scene. It does not wait for the GPU unless tl_renderer_options.synchronous_stats is set. `stats` may be NULL (the
  *  frame then issues no queries); otherwise it receives the newest frame whose queries are ready
  *  (stats->frame says which; CPU figures are of that frame too). */
 TL_API tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_frame_stats *stats);
@@ -666,7 +708,7 @@ TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *
  * LDR and OUTPUT their colour in [0,1]. *size is the
  * buffer's size in bytes and receives the bytes written; a NULL `rgba` asks for the size needed.
  * TL_ERROR_INVALID_ARGUMENT for a target the plan did not allocate, or one whose memory a later
- * pass of the frame reused (list it in tl_renderer_desc.keep_targets to read it).
+ * pass of the frame reused (list it in tl_renderer_options.keep_targets to read it).
  */
 TL_API tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id target, float *rgba, size_t *size);
 /** The renderer's target size (0 x 0 for NULL); either pointer may be NULL. */

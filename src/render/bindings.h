@@ -9,6 +9,7 @@
 #define TL__BINDING_LIST(X)                                                                       \
     X(UBO_FRAME, 0)              /* per frame and view: matrices, depth, sizes, post parameters */ \
     X(UBO_MATERIAL, 1)           /* per material: one std140 record, bound as a range */          \
+    X(UBO_PASS, 2)               /* the running pass's parameter block (tl__pass_def.params) */     \
     X(SSBO_OBJECTS, 0)           /* per object: model and normal matrices, forward light range */ \
     X(SSBO_LIGHTS, 1)            /* the visible lights, view space, directional ones first */     \
     X(SSBO_FORWARD_INDICES, 2)   /* forward: per-object light index lists */                      \

@@ -2,15 +2,15 @@
  * render_to is given exists and is complete (renderer.h, docs/getting-started.md). */
 #include "thinlight/context.h"
 
-#include "renderer_internal.h"
+#include "device.h"
 
 static int tl__own_context_current(void *user) { return tl_context_is_current((const tl_context *)user); }
 
-void tl__context_check_init(tl_renderer *r)
+void tl__context_check_init(tl__device *r, tl_is_current_fn is_current)
 {
-    r->is_current = r->desc.is_current;
+    r->is_current = is_current;
     /* thinlight's own contexts can always tell */
-    if (!r->is_current && r->desc.get_proc_address == tl_context_proc_loader) r->is_current = tl__own_context_current;
+    if (!r->is_current && r->get_proc_address == tl_context_proc_loader) r->is_current = tl__own_context_current;
     r->thread = thrd_current();
     r->thread_known = 1;
 }
@@ -18,7 +18,7 @@ void tl__context_check_init(tl_renderer *r)
 /* Without a callback: the thread that last had the context may use it. On any other thread one GL
  * query (a vertex array of the renderer's exists only in its context; with no context current it
  * answers false) before the thread is trusted, so a steady frame makes none. */
-static int tl__thread_has_context(tl_renderer *r)
+static int tl__thread_has_context(tl__device *r)
 {
     thrd_t self = thrd_current();
     if (r->thread_known && thrd_equal(self, r->thread)) return 1;
@@ -28,13 +28,13 @@ static int tl__thread_has_context(tl_renderer *r)
     return 1;
 }
 
-int tl__context_current(tl_renderer *r)
+int tl__context_current(tl__device *r)
 {
-    if (r->is_current) return r->is_current(r->desc.get_proc_address_user) != 0;
+    if (r->is_current) return r->is_current(r->get_proc_address_user) != 0;
     return tl__thread_has_context(r);
 }
 
-tl_result tl__need_context(tl_renderer *r, const char *call)
+tl_result tl__need_context(tl__device *r, const char *call)
 {
     if (tl__context_current(r)) return TL_OK;
     return tl__fail(r, TL_ERROR_GL,
@@ -46,14 +46,14 @@ tl_result tl__need_context(tl_renderer *r, const char *call)
 /* A name render_to checked: glIsFramebuffer and glCheckNamedFramebufferStatus return values, so
  * on a driver with a command thread each would wait for it; a steady frame into the same few
  * framebuffers asks neither again. */
-static int tl__output_known(const tl_renderer *r, GLuint fb)
+static int tl__output_known(const tl__device *r, GLuint fb)
 {
     for (unsigned i = 0; i < r->output_known_count; i++)
         if (r->outputs_known[i] == fb) return 1;
     return 0;
 }
 
-tl_result tl__output_check(tl_renderer *r, const tl_render_output *out)
+tl_result tl__output_check(tl__device *r, const tl_render_output *out)
 {
     GLuint fb = out->framebuffer;
     if (tl__output_known(r, fb)) return TL_OK;

@@ -1,141 +1,84 @@
-/* Renderer options with their defaults resolved (the one place a zeroed field becomes a value). */
+/* Renderer options with their defaults resolved (the one place a zeroed field becomes a value):
+ * the options of the frame as a whole here, each pass's own options (its slice of
+ * tl_renderer_options) by its pass (tl__pass_def.resolve). */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
 #include "plan_internal.h"
-#include "targets.h"
 
-static int tl__finite4(float a, float b, float c, float d) { return isfinite(a) && isfinite(b) && isfinite(c) && isfinite(d); }
-
-/* The effects' defaults (docs/effects.md); 0 for values out of range. An effect that is off keeps
- * its zeroes, so that its other fields cannot change a plan. */
-static int tl__ssao_resolve(tl_ssao_desc *s)
+/* The general options: their defaults, and the first one out of range named in *bad. */
+static int tl__general_resolve(tl_renderer_options *o, const char **bad)
 {
-    if ((unsigned)s->method >= TL_SSAO_COUNT_) return 0;
-    if (s->method == TL_SSAO_OFF) {
-        memset(s, 0, sizeof *s);
-        return 1;
+    if (o->mode == TL_MODE_DEFAULT) o->mode = TL_MODE_THIN_LPP;
+    if (o->depth_format == TL_DEPTH_FORMAT_DEFAULT) o->depth_format = TL_DEPTH_FORMAT_D24;
+    if (o->rt0 == TL_RT0_DEFAULT) o->rt0 = TL_RT0_RGBA8;
+    if (o->light_buffer == TL_LIGHT_BUFFER_DEFAULT) o->light_buffer = TL_LIGHT_BUFFER_EXACT;
+    if (o->light_format == TL_LIGHT_FORMAT_DEFAULT) o->light_format = TL_LIGHT_FORMAT_RGBA16F;
+    if (o->tiled_shading == TL_TILED_SHADING_DEFAULT) o->tiled_shading = TL_TILED_SHADING_FRAGMENT;
+    if (o->fresnel == TL_FRESNEL_DEFAULT) o->fresnel = TL_FRESNEL_TWO_SUMS;
+    if (!o->tile_size) o->tile_size = TL__TILE_SIZE_DEFAULT;
+    if (o->fxaa == TL_FXAA_DEFAULT) o->fxaa = TL_FXAA_29;
+    if (o->fxaa_edge_threshold <= 0.0f) o->fxaa_edge_threshold = 0.166f;
+    if (o->fxaa_edge_threshold_min <= 0.0f) o->fxaa_edge_threshold_min = 0.0833f;
+    if (o->fxaa_subpix == 0.0f) o->fxaa_subpix = 0.75f;
+    if (o->fxaa_subpix < 0.0f) o->fxaa_subpix = 0.0f;
+    if (!(o->exposure > 0.0f)) o->exposure = 1.0f;
+    const struct { int bad; const char *name; } checks[] = {
+        {(unsigned)o->mode >= TL_MODE_COUNT_, "mode"},
+        {(unsigned)o->depth_format >= TL_DEPTH_FORMAT_COUNT_, "depth_format"},
+        {(unsigned)o->rt0 >= TL_RT0_COUNT_, "rt0"},
+        {(unsigned)o->light_buffer >= TL_LIGHT_BUFFER_COUNT_, "light_buffer"},
+        {(unsigned)o->fxaa >= TL_FXAA_COUNT_, "fxaa"},
+        {(unsigned)o->light_format >= TL_LIGHT_FORMAT_COUNT_, "light_format"},
+        {(unsigned)o->light_strategy >= TL_LIGHT_STRATEGY_COUNT_, "light_strategy"},
+        {(unsigned)o->tiled_shading >= TL_TILED_SHADING_COUNT_, "tiled_shading"},
+        {(unsigned)o->lighting >= TL_LIGHTING_COUNT_, "lighting"},
+        {(unsigned)o->fresnel >= TL_FRESNEL_COUNT_, "fresnel"},
+        {!isfinite(o->ambient[0]) || !isfinite(o->ambient[1]) || !isfinite(o->ambient[2]), "ambient"},
+        {o->tile_size != 8 && o->tile_size != 16 && o->tile_size != 32, "tile_size (8, 16 or 32)"},
+        /* R11G11B10F has no alpha for the compact layout's specular luminance */
+        {o->light_format == TL_LIGHT_FORMAT_R11G11B10F && o->light_buffer != TL_LIGHT_BUFFER_EXACT,
+         "light_format (R11G11B10F needs the exact light buffer)"},
+    };
+    for (size_t i = 0; i < sizeof checks / sizeof checks[0]; i++)
+        if (checks[i].bad) {
+            *bad = checks[i].name;
+            return 0;
+        }
+    return 1;
+}
+
+tl_result tl__options_resolve(const tl_renderer_options *in, tl_renderer_options *out, const char **bad)
+{
+    const char *unused;
+    if (!bad) bad = &unused;
+    *out = *in;
+    if (!tl__general_resolve(out, bad)) return TL_ERROR_INVALID_ARGUMENT;
+    for (int i = 0; i < TL_PASS_COUNT; i++) {
+        const tl__pass_def *def = tl__pass_table[i];
+        if (def->resolve && !def->resolve((char *)out + def->options_offset)) {
+            *bad = def->options_name;
+            return TL_ERROR_INVALID_ARGUMENT;
+        }
     }
-    if (!s->samples) s->samples = 16;
-    if (!(s->radius > 0.0f)) s->radius = 1.0f;
-    if (!(s->falloff > 0.0f)) s->falloff = 2.0f * s->radius;
-    if (!(s->exponent > 0.0f)) s->exponent = 3.0f;
-    if (!(s->bias > 0.0f)) s->bias = 0.0f;
-    if (!s->blur_radius) s->blur_radius = 2;
-    s->diffuse = s->diffuse != 0;
-    return s->samples <= 64 && s->blur_radius <= 8 && tl__finite4(s->radius, s->falloff, s->exponent, s->bias);
+    return TL_OK;
 }
 
-static int tl__fog_resolve(tl_fog_desc *f)
+tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc *d, const char **bad)
 {
-    if ((unsigned)f->mode >= TL_FOG_COUNT_) return 0;
-    if (f->mode == TL_FOG_OFF) {
-        memset(f, 0, sizeof *f);
-        return 1;
+    const char *unused;
+    if (!bad) bad = &unused;
+    *bad = "size";
+    tl_renderer_desc r = *in;
+    if (!r.width) r.width = 1280;
+    if (!r.height) r.height = 720;
+    tl_result res = tl__options_resolve(&in->options, &r.options, bad);
+    *d = r;
+    if (res != TL_OK) return res;
+    if (r.width > TL__MAX_SIZE || r.height > TL__MAX_SIZE) {
+        *bad = "size";
+        return TL_ERROR_LIMIT;
     }
-    if (!(f->density > 0.0f)) f->density = 0.05f;
-    if (!(f->height_falloff > 0.0f)) f->height_falloff = 0.5f;
-    if (!(f->noise > 0.0f)) f->noise = 0.0f;
-    if (!(f->noise_scale > 0.0f)) f->noise_scale = 0.5f;
-    if (f->noise_speed == 0.0f) f->noise_speed = 0.3f;
-    for (int k = 0; k < 3; k++)
-        if (!(f->color[k] >= 0.0f) || !isfinite(f->color[k])) return 0;
-    return f->noise <= 1.0f && tl__finite4(f->density, f->height, f->height_falloff, f->noise_scale) &&
-           isfinite(f->noise_speed);
-}
-
-static int tl__dof_resolve(tl_dof_desc *f)
-{
-    if (!f->enabled) {
-        memset(f, 0, sizeof *f);
-        return 1;
-    }
-    f->enabled = 1;
-    if (!(f->focus_distance > 0.0f)) f->focus_distance = 0.0f; /* 0: the camera's target, per frame */
-    if (!(f->aperture > 0.0f)) f->aperture = 0.01f;
-    if (!(f->max_radius > 0.0f)) f->max_radius = 2.0f * f->aperture;
-    if (!f->samples) f->samples = 48;
-    return f->samples >= 8 && f->samples <= 128 && isfinite(f->focus_distance) && f->aperture <= 1.0f &&
-           f->max_radius <= 1.0f;
-}
-
-static int tl__bloom_resolve(tl_bloom_desc *b)
-{
-    if (!b->enabled) {
-        memset(b, 0, sizeof *b);
-        return 1;
-    }
-    b->enabled = 1;
-    if (b->threshold == 0.0f) b->threshold = 1.0f;
-    if (b->threshold < 0.0f) b->threshold = 0.0f;
-    if (b->knee == 0.0f) b->knee = 0.5f;
-    if (b->knee < 0.0f) b->knee = 0.0f;
-    if (!(b->intensity > 0.0f)) b->intensity = 0.5f;
-    if (!(b->scatter > 0.0f)) b->scatter = 0.7f;
-    if (!b->levels) b->levels = 6;
-    return b->levels <= TL__MAX_LEVELS && b->knee <= 1.0f && b->scatter <= 1.0f &&
-           tl__finite4(b->threshold, b->knee, b->intensity, b->scatter);
-}
-
-static int tl__ssr_resolve(tl_ssr_desc *s)
-{
-    if (!s->enabled) {
-        memset(s, 0, sizeof *s);
-        return 1;
-    }
-    s->enabled = 1;
-    if (!s->steps) s->steps = 48;
-    if (!s->refine) s->refine = 4;
-    if (!(s->max_distance > 0.0f)) s->max_distance = 16.0f;
-    if (!(s->thickness > 0.0f)) s->thickness = 0.4f;
-    if (!(s->min_gloss > 0.0f)) s->min_gloss = s->min_gloss == 0.0f ? 0.4f : 0.0f;
-    if (!(s->edge_fade > 0.0f)) s->edge_fade = 0.1f;
-    if (!(s->intensity > 0.0f)) s->intensity = 1.0f;
-    return s->steps >= 4 && s->steps <= 256 && s->refine <= 8 && s->min_gloss < 1.0f && s->edge_fade <= 0.5f &&
-           tl__finite4(s->max_distance, s->thickness, s->intensity, s->min_gloss);
-}
-
-static tl_result tl__effects_resolve(tl_renderer_desc *d)
-{
-    int ok = tl__ssao_resolve(&d->ssao);
-    ok &= tl__fog_resolve(&d->fog);
-    ok &= tl__dof_resolve(&d->dof);
-    ok &= tl__bloom_resolve(&d->bloom);
-    ok &= tl__ssr_resolve(&d->ssr);
-    return ok ? TL_OK : TL_ERROR_INVALID_ARGUMENT;
-}
-
-tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc *d)
-{
-    *d = *in;
-    if (d->mode == TL_MODE_DEFAULT) d->mode = TL_MODE_THIN_LPP;
-    if (!d->width) d->width = 1280;
-    if (!d->height) d->height = 720;
-    if (d->depth_format == TL_DEPTH_FORMAT_DEFAULT) d->depth_format = TL_DEPTH_FORMAT_D24;
-    if (d->rt0 == TL_RT0_DEFAULT) d->rt0 = TL_RT0_RGBA8;
-    if (d->light_buffer == TL_LIGHT_BUFFER_DEFAULT) d->light_buffer = TL_LIGHT_BUFFER_EXACT;
-    if (d->light_format == TL_LIGHT_FORMAT_DEFAULT) d->light_format = TL_LIGHT_FORMAT_RGBA16F;
-    if (d->tiled_shading == TL_TILED_SHADING_DEFAULT) d->tiled_shading = TL_TILED_SHADING_FRAGMENT;
-    if (d->fresnel == TL_FRESNEL_DEFAULT) d->fresnel = TL_FRESNEL_TWO_SUMS;
-    if (!d->tile_size) d->tile_size = TL__TILE_SIZE_DEFAULT;
-    if (d->fxaa == TL_FXAA_DEFAULT) d->fxaa = TL_FXAA_29;
-    if (d->fxaa_edge_threshold <= 0.0f) d->fxaa_edge_threshold = 0.166f;
-    if (d->fxaa_edge_threshold_min <= 0.0f) d->fxaa_edge_threshold_min = 0.0833f;
-    if (d->fxaa_subpix == 0.0f) d->fxaa_subpix = 0.75f;
-    if (d->fxaa_subpix < 0.0f) d->fxaa_subpix = 0.0f;
-    if (!(d->exposure > 0.0f)) d->exposure = 1.0f;
-    if ((unsigned)d->mode >= TL_MODE_COUNT_ || (unsigned)d->depth_format >= TL_DEPTH_FORMAT_COUNT_ ||
-        (unsigned)d->rt0 >= TL_RT0_COUNT_ || (unsigned)d->light_buffer >= TL_LIGHT_BUFFER_COUNT_ ||
-        (unsigned)d->fxaa >= TL_FXAA_COUNT_ || (unsigned)d->light_format >= TL_LIGHT_FORMAT_COUNT_ ||
-        (unsigned)d->light_strategy >= TL_LIGHT_STRATEGY_COUNT_ || (unsigned)d->tiled_shading >= TL_TILED_SHADING_COUNT_ ||
-        (unsigned)d->lighting >= TL_LIGHTING_COUNT_ || (unsigned)d->fresnel >= TL_FRESNEL_COUNT_)
-        return TL_ERROR_INVALID_ARGUMENT;
-    for (int k = 0; k < 3; k++)
-        if (!isfinite(d->ambient[k])) return TL_ERROR_INVALID_ARGUMENT;
-    if (d->tile_size != 8 && d->tile_size != 16 && d->tile_size != 32) return TL_ERROR_INVALID_ARGUMENT;
-    /* R11G11B10F has no alpha for the compact layout's specular luminance */
-    if (d->light_format == TL_LIGHT_FORMAT_R11G11B10F && d->light_buffer != TL_LIGHT_BUFFER_EXACT)
-        return TL_ERROR_INVALID_ARGUMENT;
-    if (d->width > TL__MAX_SIZE || d->height > TL__MAX_SIZE) return TL_ERROR_LIMIT;
-    return tl__effects_resolve(d);
+    return TL_OK;
 }

@@ -1,36 +1,79 @@
-/* The compile step of the frame graph: runs when the plan changes, never per frame. It allocates
- * each memory block of the plan (one texture; several targets with disjoint lifetimes see it
- * through texture views of their own formats), makes one framebuffer per pass from its declared
- * writes (colour attachments in tl_target_id order, the order of the shaders' TL_OUT_* locations),
- * and records each pass's clears and the texture units of the targets it samples (unit = target
- * id, as bindings.h promises the shaders). */
+/* The compile step of the frame graph: runs when the plan changes, never per frame. It gives each
+ * memory block of the plan a texture (several targets with disjoint lifetimes see it through
+ * texture views of their own formats), keeping the textures of the previous plan whose format,
+ * size, levels and filtering a block of the new one asks for; makes one framebuffer per pass from
+ * its declared writes (colour attachments in tl_target_id order, the order of the shaders' TL_OUT_*
+ * locations), and records each pass's clears and the texture units of the targets it samples
+ * (unit = target id, as bindings.h promises the shaders). */
 #include <stdio.h>
 #include <string.h>
 
-#include "renderer_internal.h"
-#include "targets.h"
+#include "graph.h"
 
-void tl__graph_release(tl_renderer *r)
+/* Textures of a plan that the next plan may take again. */
+typedef struct tl__storage_pool {
+    tl__target storage[TL_TARGET_COUNT];
+    uint8_t linear[TL_TARGET_COUNT];
+    size_t count;
+} tl__storage_pool;
+
+/* Framebuffers, views and one-level views go; the blocks' storage goes into `pool` (NULL: freed). */
+static void tl__graph_release_objects(tl__device *dev, tl__graph *r, tl__storage_pool *pool)
 {
-    const GladGLContext *gl = &r->gl;
-    tl__tiles_release(r);
+    const GladGLContext *gl = &dev->gl;
     for (size_t i = 0; i < r->pass_count; i++) {
         tl__framebuffer_destroy(gl, &r->passes[i].fbo);
         for (uint8_t k = 1; k < r->passes[i].level_count; k++) tl__framebuffer_destroy(gl, &r->passes[i].level_fbos[k]);
+        for (uint8_t k = 0; k < r->passes[i].write_count; k++) tl__framebuffer_destroy(gl, &r->passes[i].write_fbos[k]);
     }
     tl__framebuffer_destroy(gl, &r->luma.fbo);
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
-        tl__target_destroy(gl, &r->targets[t]);
-        tl__target_destroy(gl, &r->blocks[t]);
+        if (r->views & TL_TARGET_BIT(t)) tl__target_destroy(gl, &r->targets[t]);
+        memset(&r->targets[t], 0, sizeof r->targets[t]);
         for (uint32_t k = 0; k < TL__MAX_LEVELS; k++) tl__target_destroy(gl, &r->levels[t][k]);
+        if (!r->blocks[t].texture) continue;
+        if (pool) {
+            pool->linear[pool->count] = r->block_linear[t];
+            pool->storage[pool->count++] = r->blocks[t];
+            memset(&r->blocks[t], 0, sizeof r->blocks[t]);
+        } else {
+            tl__target_destroy(gl, &r->blocks[t]);
+        }
     }
+    r->views = 0;
     memset(r->passes, 0, sizeof r->passes);
     memset(&r->luma, 0, sizeof r->luma);
     r->pass_count = 0;
     r->programs_ready = 0;
 }
 
-static tl_result tl__graph_block(tl_renderer *r, size_t b)
+void tl__graph_release(tl__device *dev, tl__graph *r) { tl__graph_release_objects(dev, r, NULL); }
+
+/* Block b's storage: a texture of the previous plan with the same format, size, levels and
+ * filtering, or a new one. */
+static tl_result tl__graph_storage(tl__device *dev, tl__graph *r, tl__storage_pool *pool, size_t b,
+                                   const tl__target_desc *td, uint32_t levels, int linear)
+{
+    for (size_t i = 0; i < pool->count; i++) {
+        const tl__target *t = &pool->storage[i];
+        if (t->internal_format != td->internal_format || t->width != td->width || t->height != td->height ||
+            t->levels != levels || pool->linear[i] != linear)
+            continue;
+        r->blocks[b] = *t;
+        pool->storage[i] = pool->storage[--pool->count];
+        pool->linear[i] = pool->linear[pool->count];
+        tl__gl_label(&dev->gl, GL_TEXTURE, r->blocks[b].texture, td->label);
+        r->block_linear[b] = (uint8_t)linear;
+        return TL_OK;
+    }
+    char msg[256];
+    tl_result res = tl__target_create_levels(&dev->gl, td, levels, linear, &r->blocks[b], msg, sizeof msg);
+    if (res != TL_OK) return tl__fail(dev, res, "renderer: %s", msg);
+    r->block_linear[b] = (uint8_t)linear;
+    return TL_OK;
+}
+
+static tl_result tl__graph_block(tl__device *dev, tl__graph *r, tl__storage_pool *pool, size_t b)
 {
     const tl_frame_plan *p = &r->plan.pub;
     const tl_plan_block *blk = &p->blocks[b];
@@ -41,35 +84,36 @@ static tl_result tl__graph_block(tl_renderer *r, size_t b)
             if (first < 0) first = t;
             members++;
         }
-    if (tl__targets[first].buffer) return TL_OK; /* storage buffers: tl__tiles_create */
+    if (r->plan.targets[first]->buffer_bytes) return TL_OK; /* storage buffers: lights.h, tl__tiles_configure */
     const tl_plan_target *ti = &p->target_info[first];
     tl__target_desc td = {label, ti->format, ti->width, ti->height};
     tl_result res;
     if (members == 1) { /* memory of its own: the target is the texture, with a view per level */
         snprintf(label, sizeof label, "target.%s", tl_target_name((tl_target_id)first));
-        res = tl__target_create_levels(&r->gl, &td, ti->levels, tl__targets[first].linear, &r->targets[first], msg,
-                                       sizeof msg);
+        res = tl__graph_storage(dev, r, pool, b, &td, ti->levels, r->plan.targets[first]->linear);
+        if (res == TL_OK) r->targets[first] = r->blocks[b];
         for (uint32_t k = 0; res == TL_OK && ti->levels > 1 && k < ti->levels; k++) {
             snprintf(label, sizeof label, "target.%s.level%u", tl_target_name((tl_target_id)first), k);
-            res = tl__target_create_level(&r->gl, &r->targets[first], k, label, &r->levels[first][k], msg, sizeof msg);
+            res = tl__target_create_level(&dev->gl, &r->blocks[b], k, label, &r->levels[first][k], msg, sizeof msg);
+            if (res != TL_OK) return tl__fail(dev, res, "renderer: %s", msg);
         }
-        if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
-        return TL_OK;
+        return res;
     }
     snprintf(label, sizeof label, "memory.%ubit.%zu", tl__format_view_class(td.internal_format), b);
-    res = tl__target_create(&r->gl, &td, &r->blocks[b], msg, sizeof msg);
+    res = tl__graph_storage(dev, r, pool, b, &td, 1, 0);
     for (int t = 0; res == TL_OK && t < TL_TARGET_COUNT; t++)
         if (blk->targets & TL_TARGET_BIT(t)) {
             snprintf(label, sizeof label, "target.%s", tl_target_name((tl_target_id)t));
-            res = tl__target_create_view(&r->gl, &r->blocks[b], p->target_info[t].format, label, &r->targets[t], msg,
+            res = tl__target_create_view(&dev->gl, &r->blocks[b], p->target_info[t].format, label, &r->targets[t], msg,
                                          sizeof msg);
+            if (res != TL_OK) return tl__fail(dev, res, "renderer: %s", msg);
+            r->views |= TL_TARGET_BIT(t);
         }
-    if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
-    return TL_OK;
+    return res;
 }
 
 /* Image units of a compute pass's writes (bindings.h). */
-static void tl__graph_images(tl_renderer *r, tl__compiled_pass *cp, const tl__pass_decl *d)
+static void tl__graph_images(tl__graph *r, tl__compiled_pass *cp, const tl__pass_decl *d)
 {
     static const struct { tl_target_id t; uint8_t unit; } map[] = {{TL_TARGET_LIGHT_DIFFUSE, TL__IMAGE_LIGHT_DIFFUSE},
                                                                    {TL_TARGET_LIGHT_SPECULAR, TL__IMAGE_LIGHT_SPECULAR},
@@ -83,25 +127,47 @@ static void tl__graph_images(tl_renderer *r, tl__compiled_pass *cp, const tl__pa
         }
 }
 
-/* A pass whose one colour write has mip levels renders each level through a framebuffer of its own. */
-static tl_result tl__graph_levels(tl_renderer *r, tl__compiled_pass *cp, const tl__target *const *colors, size_t n)
+/* A pass whose one colour write has mip levels renders each level through a framebuffer of its own
+ * and samples the level above through a one-level view. */
+static tl_result tl__graph_levels(tl__device *dev, tl__graph *r, tl__compiled_pass *cp, const tl__target *const *colors,
+                                  size_t n)
 {
+    if (n) {
+        cp->level_width = colors[0]->width;
+        cp->level_height = colors[0]->height;
+    }
     if (n != 1 || colors[0]->levels < 2) return TL_OK;
     size_t t = (size_t)(colors[0] - r->targets);
     cp->level_fbos[0] = cp->fbo;
     cp->level_count = (uint8_t)colors[0]->levels;
+    for (uint8_t k = 0; k < cp->level_count; k++) cp->level_textures[k] = r->levels[t][k].texture;
     for (uint8_t k = 1; k < cp->level_count; k++) {
         char label[64], msg[256];
         const tl__target *level = &r->levels[t][k];
         snprintf(label, sizeof label, "fbo.%s.level%u", cp->plan->name, (unsigned)k);
-        tl_result res = tl__framebuffer_create(&r->gl, label, &level, 1, NULL, &cp->level_fbos[k], msg, sizeof msg);
-        if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
+        tl_result res = tl__framebuffer_create(&dev->gl, label, &level, 1, NULL, &cp->level_fbos[k], msg, sizeof msg);
+        if (res != TL_OK) return tl__fail(dev, res, "renderer: %s", msg);
+    }
+    return TL_OK;
+}
+
+/* A pass that renders its colour writes one at a time gets a framebuffer with each alone. */
+static tl_result tl__graph_split(tl__device *dev, tl__compiled_pass *cp, const tl__target *const *colors, size_t n)
+{
+    for (size_t k = 0; k < n; k++) {
+        char label[64], msg[256];
+        snprintf(label, sizeof label, "fbo.%s.write%zu", cp->plan->name, k);
+        tl_result res = tl__framebuffer_create(&dev->gl, label, &colors[k], 1, NULL, &cp->write_fbos[k], msg, sizeof msg);
+        if (res != TL_OK) return tl__fail(dev, res, "renderer: %s", msg);
+        cp->write_textures[k] = colors[k]->texture;
+        cp->write_count = (uint8_t)(k + 1);
     }
     return TL_OK;
 }
 
 /* Framebuffer, clears and texture bindings of one pass. */
-static tl_result tl__graph_pass(tl_renderer *r, tl__compiled_pass *cp, const tl_plan_pass *pp, const tl__pass_decl *d)
+static tl_result tl__graph_pass(tl__device *dev, tl__graph *r, tl__compiled_pass *cp, const tl_plan_pass *pp,
+                                const tl__pass_decl *d)
 {
     const tl__target *colors[TL__FRAMEBUFFER_MAX_COLORS];
     size_t n = 0;
@@ -126,12 +192,13 @@ static tl_result tl__graph_pass(tl_renderer *r, tl__compiled_pass *cp, const tl_
     char label[64], msg[256];
     snprintf(label, sizeof label, "fbo.%s", pp->name);
     const tl__target *depth = d->attach_depth ? &r->targets[TL_TARGET_DEPTH] : NULL;
-    tl_result res = tl__framebuffer_create(&r->gl, label, colors, n, depth, &cp->fbo, msg, sizeof msg);
-    if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
-    return tl__graph_levels(r, cp, colors, n);
+    tl_result res = tl__framebuffer_create(&dev->gl, label, colors, n, depth, &cp->fbo, msg, sizeof msg);
+    if (res != TL_OK) return tl__fail(dev, res, "renderer: %s", msg);
+    if (res == TL_OK && d->split_writes) res = tl__graph_split(dev, cp, colors, n);
+    return res == TL_OK ? tl__graph_levels(dev, r, cp, colors, n) : res;
 }
 
-tl_result tl__graph_programs(tl_renderer *r)
+tl_result tl__graph_programs(tl__device *dev, tl__graph *r)
 {
     const tl_frame_plan *p = &r->plan.pub;
     for (size_t k = 0; k < p->program_count; k++) {
@@ -140,7 +207,7 @@ tl_result tl__graph_programs(tl_renderer *r)
             tl__compiled_pass *cp = &r->passes[i];
             if (!cp->def || cp->def->id != pr->pass) continue;
             const tl__program_src *src = &cp->def->programs[pr->slot];
-            tl_result res = tl__program_get(r, pr->name, src, pr->defines, &cp->programs[pr->slot]);
+            tl_result res = tl__program_get(dev, pr->name, src, pr->defines, &cp->programs[pr->slot]);
             if (res != TL_OK) return res;
         }
     }
@@ -149,7 +216,7 @@ tl_result tl__graph_programs(tl_renderer *r)
 }
 
 /* apply_fxaa's luma pass: the caller's image (in OUTPUT) into LDR. */
-static tl_result tl__graph_luma(tl_renderer *r)
+static tl_result tl__graph_luma(tl__device *dev, tl__graph *r)
 {
     if (!r->targets[TL_TARGET_LDR].texture) return TL_OK;
     tl__plan_input in;
@@ -163,31 +230,28 @@ static tl_result tl__graph_luma(tl_renderer *r)
     r->luma_plan.writes = r->luma_decl.writes;
     r->luma.def = &tl__pass_luma;
     r->luma.app = -1;
-    return tl__graph_pass(r, &r->luma, &r->luma_plan, &r->luma_decl);
+    return tl__graph_pass(dev, r, &r->luma, &r->luma_plan, &r->luma_decl);
 }
 
-tl_result tl__graph_compile(tl_renderer *r)
+tl_result tl__graph_compile(tl__device *dev, tl__graph *r, int programs)
 {
-    tl__graph_release(r);
+    tl__storage_pool pool;
+    pool.count = 0;
+    tl__graph_release_objects(dev, r, &pool);
     const tl__plan *plan = &r->plan;
     tl_result res = TL_OK;
-    for (size_t b = 0; res == TL_OK && b < plan->pub.block_count; b++) res = tl__graph_block(r, b);
-    if (res == TL_OK && (plan->pub.targets & TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS))) {
-        size_t tiles = (size_t)plan->pub.tiles_x * plan->pub.tiles_y;
-        res = tl__tiles_create(r, plan->pub.tile_size, plan->pub.tiles_x, plan->pub.tiles_y,
-                               tiles * TL__TILE_START_ENTRIES);
-    }
-    r->object_lists = 0;
-    for (size_t i = 0; i < plan->pub.pass_count; i++) r->object_lists |= plan->decl[i].object_lights;
+    for (size_t b = 0; res == TL_OK && b < plan->pub.block_count; b++) res = tl__graph_block(dev, r, &pool, b);
+    for (size_t i = 0; i < pool.count; i++) tl__target_destroy(&dev->gl, &pool.storage[i]);
+    r->light_data = 0;
+    for (size_t i = 0; i < plan->pub.pass_count; i++) r->light_data |= plan->decl[i].light_data;
     for (size_t i = 0; res == TL_OK && i < plan->pub.pass_count; i++) {
         tl__compiled_pass *cp = &r->passes[i];
         cp->def = plan->def[i];
         cp->app = plan->app[i];
-        res = tl__graph_pass(r, cp, &plan->pub.passes[i], &plan->decl[i]);
+        res = tl__graph_pass(dev, r, cp, &plan->pub.passes[i], &plan->decl[i]);
         r->pass_count = i + 1;
     }
-    if (res == TL_OK) res = tl__graph_luma(r);
-    /* programs are compiled once a scene says which are needed (apply_fxaa compiles its own) */
-    if (res == TL_OK && r->has_scene) res = tl__graph_programs(r);
+    if (res == TL_OK) res = tl__graph_luma(dev, r);
+    if (res == TL_OK && programs) res = tl__graph_programs(dev, r);
     return res;
 }

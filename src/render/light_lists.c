@@ -4,7 +4,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "renderer_internal.h"
+#include "lights.h"
 
 /* Range of a light for culling: the sphere around a point light; the cone's bounding sphere
  * (centred half-way along the axis) for a spot. Directional: infinite. */
@@ -45,41 +45,37 @@ static void tl__view_light(const tl__view *v, const tl_light *l, int type, tl__f
 }
 
 /* Appends the visible lights of one kind (directional or local); returns the new count. */
-static size_t tl__add_visible(tl_renderer *r, const tl__view *v, int directional, size_t n)
+static size_t tl__add_visible(tl__lights *r, const tl__view *v, int directional, size_t n)
 {
-    for (size_t i = 0; i < r->light_count; i++) {
+    for (size_t i = 0; i < r->count; i++) {
         const tl_light *l = &r->lights[i];
         int type = l->type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : (int)l->type;
         if ((type == TL_LIGHT_DIRECTIONAL) != directional) continue;
         float c[3], rad;
         tl__light_sphere(l, c, &rad);
         if (!directional && (rad <= 0.0f || !tl__sphere_visible((float(*)[4])v->planes, c, rad))) continue;
-        tl__view_light(v, l, type, &r->view_lights[n]);
-        memcpy(r->view_light_spheres[n], c, sizeof c);
-        r->view_light_spheres[n][3] = directional ? -1.0f : rad;
-        r->view_light_index[n++] = (uint32_t)i;
+        tl__view_light(v, l, type, &r->view[n]);
+        memcpy(r->view_spheres[n], c, sizeof c);
+        r->view_spheres[n][3] = directional ? -1.0f : rad;
+        r->view_index[n++] = (uint32_t)i;
     }
     return n;
 }
 
-void tl__visible_lights(tl_renderer *r, const tl__view *v, tl__frame_record *rec)
+void tl__visible_lights(tl__device *dev, tl__lights *r, const tl__view *v, size_t *stream_bytes)
 {
-    if (r->view_lights_frame == r->frame_index) return;
     r->view_dir_count = tl__add_visible(r, v, 1, 0);
-    r->view_light_count = tl__add_visible(r, v, 0, r->view_dir_count);
-    r->view_lights_frame = r->frame_index;
-    rec->stream_bytes += (r->view_light_count + 1) * sizeof(tl__forward_light) + r->ssbo_align;
+    r->view_count = tl__add_visible(r, v, 0, r->view_dir_count);
+    *stream_bytes += (r->view_count + 1) * sizeof(tl__forward_light) + dev->lim.ssbo_align;
 }
 
-void tl__visible_lights_upload(tl_renderer *r)
+void tl__visible_lights_upload(tl__device *dev, tl__lights *r)
 {
-    if (r->view_lights_uploaded == r->frame_index) return;
-    size_t n = r->view_light_count ? r->view_light_count : 1, offset = 0;
-    void *dst = tl__stream_reserve(&r->stream, n * sizeof(tl__forward_light), r->ssbo_align, &offset);
+    size_t n = r->view_count ? r->view_count : 1, offset = 0;
+    void *dst = tl__stream_reserve(&dev->stream, n * sizeof(tl__forward_light), dev->lim.ssbo_align, &offset);
     if (!dst) return;
-    if (r->view_light_count) memcpy(dst, r->view_lights, r->view_light_count * sizeof(tl__forward_light));
+    if (r->view_count) memcpy(dst, r->view, r->view_count * sizeof(tl__forward_light));
     else memset(dst, 0, sizeof(tl__forward_light));
-    tl__stream_bind_range(&r->gl, &r->stream, GL_SHADER_STORAGE_BUFFER, TL__SSBO_LIGHTS, offset,
+    tl__stream_bind_range(&dev->gl, &dev->stream, GL_SHADER_STORAGE_BUFFER, TL__SSBO_LIGHTS, offset,
                           n * sizeof(tl__forward_light));
-    r->view_lights_uploaded = r->frame_index;
 }

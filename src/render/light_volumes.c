@@ -8,7 +8,7 @@
 #include <string.h>
 
 #include "light_volumes.h"
-#include "renderer_internal.h"
+#include "lights.h"
 
 static float tl__plane_distance(const float *a, const float *b, const float *c)
 {
@@ -78,9 +78,9 @@ void tl__cone_volume(tl__volume_mesh *m)
     m->index_count = ni;
 }
 
-void tl__light_volumes_create(tl_renderer *r)
+void tl__light_volumes_create(tl__device *dev, tl__lights *r)
 {
-    const GladGLContext *gl = &r->gl;
+    const GladGLContext *gl = &dev->gl;
     tl__volume_mesh mesh;
     for (int v = 0; v < 2; v++) {
         if (v == 0) tl__sphere_volume(&mesh);
@@ -93,12 +93,12 @@ void tl__light_volumes_create(tl_renderer *r)
         tl__gl_label(gl, GL_BUFFER, r->ibo_volume[v], v ? "buffer.volume.cone.indices" : "buffer.volume.sphere.indices");
         r->volume_index_count[v] = mesh.index_count;
     }
-    gl->CreateVertexArrays(TL__LIGHT_KINDS, r->vao_light);
+    gl->CreateVertexArrays(TL__LIGHT_KINDS, r->vao);
     static const char *const names[TL__LIGHT_KINDS] = {"vao.lights.point", "vao.lights.spot", "vao.lights.directional"};
     const GLuint offs[4] = {offsetof(tl__instance, position_radius), offsetof(tl__instance, color),
                             offsetof(tl__instance, direction_cos_outer), offsetof(tl__instance, cos_inner)};
     for (int k = 0; k < TL__LIGHT_KINDS; k++) {
-        GLuint vao = r->vao_light[k];
+        GLuint vao = r->vao[k];
         if (k < 2) {
             gl->VertexArrayVertexBuffer(vao, 0, r->vbo_volume[k], 0, 12);
             gl->VertexArrayElementBuffer(vao, r->ibo_volume[k]);
@@ -116,19 +116,19 @@ void tl__light_volumes_create(tl_renderer *r)
     }
 }
 
-void tl__light_volumes_destroy(tl_renderer *r)
+void tl__light_volumes_destroy(tl__device *dev, tl__lights *r)
 {
-    const GladGLContext *gl = &r->gl;
-    if (r->vao_light[0]) gl->DeleteVertexArrays(TL__LIGHT_KINDS, r->vao_light);
+    const GladGLContext *gl = &dev->gl;
+    if (r->vao[0]) gl->DeleteVertexArrays(TL__LIGHT_KINDS, r->vao);
     if (r->vbo_volume[0]) gl->DeleteBuffers(2, r->vbo_volume);
     if (r->ibo_volume[0]) gl->DeleteBuffers(2, r->ibo_volume);
-    memset(r->vao_light, 0, sizeof r->vao_light);
+    memset(r->vao, 0, sizeof r->vao);
     memset(r->vbo_volume, 0, sizeof r->vbo_volume);
     memset(r->ibo_volume, 0, sizeof r->ibo_volume);
 }
 
 /* -1: culled; 0: the camera is inside or the near plane may cut it; 1: outside (front faces). */
-static int tl__light_side(const tl_renderer *r, const tl__view *v, const tl_light *l, int type)
+static int tl__light_side(const tl__lights *r, const tl__view *v, const tl_light *l, int type)
 {
     if (type == TL_LIGHT_DIRECTIONAL) return 0;
     if (l->radius <= 0.0f || !tl__sphere_visible((float(*)[4])v->planes, l->position, l->radius * 1.2f)) return -1;
@@ -138,7 +138,7 @@ static int tl__light_side(const tl_renderer *r, const tl__view *v, const tl_ligh
     float d2 = 0.0f;
     for (int a = 0; a < 3; a++) d2 += (l->position[a] - v->eye[a]) * (l->position[a] - v->eye[a]);
     float margin = bound + 4.0f * v->near_z;
-    return !r->desc.fullscreen_lights && d2 > margin * margin;
+    return !r->fullscreen && d2 > margin * margin;
 }
 
 static void tl__instance_fill(const tl_light *l, int type, tl__instance *in)
@@ -156,14 +156,14 @@ static void tl__instance_fill(const tl_light *l, int type, tl__instance *in)
     in->source_radius = type == TL_LIGHT_DIRECTIONAL ? 0.0f : l->source_radius;
 }
 
-tl_result tl__lights_prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec)
+void tl__volumes_prepare(tl__lights *r, const tl__view *v, tl_frame_stats *st, size_t *stream_bytes)
 {
     size_t n = 0;
     for (int k = 0; k < TL__LIGHT_KINDS; k++) {
         r->instance_base[k] = n;
         r->instance_count[k] = r->instance_outside[k] = 0;
         for (int pass = 0; pass < 2; pass++)
-            for (size_t i = 0; i < r->light_count; i++) {
+            for (size_t i = 0; i < r->count; i++) {
                 const tl_light *l = &r->lights[i];
                 int type = l->type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : (int)l->type;
                 if (type - 1 != k) continue;
@@ -173,24 +173,23 @@ tl_result tl__lights_prepare(tl_renderer *r, const tl__view *v, tl__frame_record
                 r->instance_count[k]++;
                 r->instance_outside[k] += (size_t)side;
             }
-        rec->st.lights_drawn[k + 1] = (uint32_t)r->instance_count[k];
+        st->lights_drawn[k + 1] = (uint32_t)r->instance_count[k];
     }
-    rec->stream_bytes += n * sizeof(tl__instance) + 16;
-    return TL_OK;
+    *stream_bytes += n * sizeof(tl__instance) + 16;
 }
 
-void tl__lights_upload(tl_renderer *r)
+void tl__volumes_upload(tl__device *dev, tl__lights *r)
 {
-    const GladGLContext *gl = &r->gl;
+    const GladGLContext *gl = &dev->gl;
     size_t total = 0;
     for (int k = 0; k < TL__LIGHT_KINDS; k++) total += r->instance_count[k];
     size_t offset = 0;
-    uint8_t *dst = total ? (uint8_t *)tl__stream_reserve(&r->stream, total * sizeof(tl__instance), 16, &offset) : NULL;
+    uint8_t *dst = total ? (uint8_t *)tl__stream_reserve(&dev->stream, total * sizeof(tl__instance), 16, &offset) : NULL;
     if (!dst) return;
     memcpy(dst, r->instances, total * sizeof(tl__instance));
     for (int k = 0; k < TL__LIGHT_KINDS; k++)
         if (r->instance_count[k])
-            gl->VertexArrayVertexBuffer(r->vao_light[k], 1, r->stream.buffer,
+            gl->VertexArrayVertexBuffer(r->vao[k], 1, dev->stream.buffer,
                                         (GLintptr)(offset + r->instance_base[k] * sizeof(tl__instance)),
                                         sizeof(tl__instance));
 }

@@ -102,11 +102,11 @@ void tl__permute_one_program(const tl__plan_input *in, const tl__pass_decl *d, t
 
 int tl__forward_plus(const tl__plan_input *in) { return in->lights && in->strategy == TL_LIGHT_STRATEGY_TILED; }
 
-int tl__forward_prepass(const tl__plan_input *in) { return !in->d.forward_no_depth_prepass || tl__forward_plus(in); }
+int tl__forward_prepass(const tl__plan_input *in) { return !in->o->forward_no_depth_prepass || tl__forward_plus(in); }
 
 int tl__ssao_pass(const tl__plan_input *in)
 {
-    if (in->d.ssao.method == TL_SSAO_OFF) return 0;
+    if (in->o->ssao.method == TL_SSAO_OFF) return 0;
     if (in->mode->forward) return tl__forward_prepass(in) ? 1 : 0;
     return in->mode->material_pass ? 1 : 2;
 }
@@ -114,5 +114,5 @@ int tl__ssao_pass(const tl__plan_input *in)
 const char *tl__ssao_defines(const tl__plan_input *in, const tl__pass_decl *d)
 {
     if (!(d->samples & TL__B(AO))) return "";
-    return in->d.ssao.diffuse ? " TL_SSAO_AMBIENT TL_SSAO_DIFFUSE" : " TL_SSAO_AMBIENT";
+    return in->o->ssao.diffuse ? " TL_SSAO_AMBIENT TL_SSAO_DIFFUSE" : " TL_SSAO_AMBIENT";
 }

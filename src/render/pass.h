@@ -1,19 +1,25 @@
-/* The frame graph's vocabulary: a pass is declared once in the pass table (pass_table.c) with its
- * name, its programs, a declare step (which targets it reads, samples, writes and clears, and its
- * fixed state, for a given configuration and scene), a permute step (its programs' #defines once
- * the plan is final) and an execute step (its GL work). The planner (plan.c) selects and orders
- * passes from the table, the compile step (graph.c) turns the plan into GL objects, the frame
- * (frame.c) runs them. Nothing else knows which pass is which. */
+/* The frame graph's vocabulary (Filament's FrameGraph setup/execute, in C): a pass is declared once
+ * in the pass table (pass_table.c) with its name, its programs, a declare step (which targets it
+ * reads, samples, writes and clears, its fixed state and what it needs of the lights, for a given
+ * configuration and scene), a permute step (its programs' #defines once the plan is final) and an
+ * execute step (its GL work). The planner (plan.c) selects and orders passes from the table, the
+ * compile step (graph.c) turns the plan into GL objects, the frame (frame.c) runs them, handing each
+ * execute step only what its pass declared (tl__pass_ctx): never the renderer. */
 #ifndef TL_RENDER_PASS_H
 #define TL_RENDER_PASS_H
 
-#include "gl/state.h"
-#include "thinlight/renderer.h"
+#include <stddef.h>
+
+#include "device.h"
+#include "targets.h"
 
 #define TL__PASS_MAX_PROGRAMS 3 /* programs of one pass (lights: one per light type) */
 #define TL__PASS_MAX_QUERIES 3  /* samples-passed queries a pass issues itself */
+#define TL__PASS_MAX_TARGETS 8  /* targets one pass declares (the G-buffer pass: depth, RT0, RT1, fat's, HDR) */
 
-typedef struct tl_renderer tl_renderer;
+typedef struct tl__scene_gpu tl__scene_gpu; /* scene_gpu.h */
+typedef struct tl__lights tl__lights;       /* lights.h */
+typedef struct tl__view tl__view;           /* view.h */
 
 /* How a mode lays out the frame: one row per mode (modes.c), read by the passes' declare steps. */
 typedef struct tl__mode_def {
@@ -32,7 +38,8 @@ extern const tl__mode_def tl__modes[TL_MODE_COUNT_];
 /* What planning starts from: resolved options and the scene's features (all of them with
  * no_planning), with facts several passes share. */
 typedef struct tl__plan_input {
-    tl_renderer_desc d;
+    tl_renderer_desc d;         /* resolved: size and options */
+    const tl_renderer_options *o; /* &d.options: what the passes read */
     tl_scene_feature_set f;
     const tl__mode_def *mode;
     int lights;                 /* any light to draw */
@@ -50,6 +57,15 @@ typedef struct tl__plan_input {
     char material_defines[96];  /* the geometry passes' material switches (leading space each) */
 } tl__plan_input;
 
+/* What a pass needs of the lights module each frame (tl__pass_decl.light_data). */
+enum {
+    TL__LIGHTS_INSTANCES = 1u,    /* light-volume instances by type (light_volumes.c) */
+    TL__LIGHTS_VIEW = 2u,         /* the visible lights in view space, bound as a storage block */
+    TL__LIGHTS_INDEX_BUFFER = 4u, /* the per-object lists' storage block bound (forward.frag declares it) */
+    TL__LIGHTS_OBJECT_LISTS = 8u, /* per-object light lists built (forward, transparent) */
+    TL__LIGHTS_TILES = 16u        /* the tiled light lists, grown as frames need */
+};
+
 /* One pass as declared for a plan (target sets are TL_TARGET_BIT bits). */
 typedef struct tl__pass_decl {
     uint32_t writes;       /* 0: the pass is not in this frame */
@@ -60,7 +76,8 @@ typedef struct tl__pass_decl {
     uint32_t neighbourhood; /* samples read as a 5-texel cross per fragment (bytes estimate) */
     uint8_t attach_depth;  /* the depth target is attached (tested or written) */
     uint8_t compute;       /* a compute pass: no framebuffer, no clears, no raster state */
-    uint8_t object_lights; /* it reads the per-object light lists (forward_lists.c) */
+    uint8_t light_data;    /* TL__LIGHTS_* it reads */
+    uint8_t split_writes;  /* it renders its colour writes one at a time: a framebuffer per write too */
     uint32_t images;       /* writes bound as images (compute passes) */
     tl__pipeline state;    /* fixed state; a pass may change cull, depth test and clamp per draw */
 } tl__pass_decl;
@@ -71,42 +88,70 @@ typedef struct tl__pass_defines {
     uint8_t used[TL__PASS_MAX_PROGRAMS];
 } tl__pass_defines;
 
-typedef struct tl__program_src {
-    const char *name; /* NULL ends the list */
-    const char *vs, *fs;
-    const char *cs;   /* a compute program instead */
-} tl__program_src;
+/* What a pass's execute step counts. */
+typedef struct tl__pass_out {
+    uint32_t draw_calls;
+    size_t indices;   /* scene indices drawn (vertex fetch) */
+    size_t instances; /* light instances drawn */
+} tl__pass_out;
 
-typedef struct tl__compiled_pass tl__compiled_pass;
-typedef struct tl__frame_record tl__frame_record;
-typedef struct tl__view tl__view;
-
-/* What a pass's execute step gets. */
+/* What a pass's execute step gets: the GL objects its declaration resolved to (its framebuffer
+ * bound, its samples on their units, its images bound, its state applied), its programs, and the
+ * services its definition asked for. */
 typedef struct tl__pass_ctx {
-    const tl__compiled_pass *cp;
-    const tl__view *view;
-    tl__frame_record *rec;  /* CPU counters of the frame */
-    size_t index;           /* the pass's position in the plan */
-    const GLuint *queries;  /* its own samples-passed queries (query_count), NULL when not measured */
-    int to_caller;          /* it writes the output into the caller's framebuffer */
+    const GladGLContext *gl;
+    tl__state *state;
+    const GLuint *programs;       /* by slot; 0 where the plan has none */
+    const tl__pipeline *pipeline; /* its declared state, as applied */
+    GLuint fbo;                   /* its framebuffer (0 for compute passes) */
+    /* its one colour write with mip levels: a framebuffer and a one-level view per level */
+    uint32_t level_count;
+    const GLuint *level_fbos, *level_textures;
+    uint32_t level_width, level_height; /* the first level's size */
+    /* split_writes: a framebuffer with each colour write alone, and its texture (tl_target_id order) */
+    uint32_t write_count;
+    const GLuint *write_fbos, *write_textures;
+    uint32_t width, height;       /* the frame's size */
+    GLuint fullscreen_vao, linear_sampler;
+    const void *params;           /* its slice of the resolved options (tl__pass_def.options_offset), or NULL */
+    const GLuint *queries;        /* its own samples-passed queries (query_count), NULL when not measured */
+    int to_caller;                /* it writes the output into the caller's framebuffer */
+    uint64_t frame;               /* the frame's index */
+    tl__pass_out *out;
+    const tl__scene_gpu *scene;   /* TL__PASS_SCENE: the visible objects, to draw */
+    tl__lights *lights;           /* TL__PASS_LIGHTS: the frame's light data */
 } tl__pass_ctx;
 
+/* Services a pass's definition asks for (tl__pass_def.services). */
+enum { TL__PASS_SCENE = 1u, TL__PASS_LIGHTS = 2u };
+
+/* A pass's slice of tl_renderer_options, e.g. `TL__OPTIONS(ssao)` in its definition. */
+#define TL__OPTIONS(field)                                                                        \
+    .options_name = #field, .options_offset = offsetof(tl_renderer_options, field),               \
+    .options_size = sizeof(((tl_renderer_options *)0)->field)
+
 typedef struct tl__pass_def {
-    tl_pass id;
+    tl_pass id;       /* its stable public index (statistics); the table's order is the frame's */
     const char *name;
     tl__program_src programs[TL__PASS_MAX_PROGRAMS + 1];
+    const tl__target_def *targets[TL__PASS_MAX_TARGETS]; /* the targets it owns (declares) */
+    /* its options (TL__OPTIONS): resolve gives zeroed fields their defaults and returns 0 for a
+     * value out of range (an effect that is off is zeroed whole, so its other fields cannot change
+     * a plan) */
+    const char *options_name;
+    size_t options_offset, options_size;
+    int (*resolve)(void *options);
+    /* its std140 parameter block, bound at TL_UBO_PASS while it runs (frame.glsl has the frame's):
+     * params writes it from the resolved options and the view (NULL outside a frame) */
+    uint32_t params_size;
+    void (*params)(const tl_renderer_options *o, const tl__view *v, void *block);
     void (*declare)(const tl__plan_input *in, tl__pass_decl *d);
     void (*permute)(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out);
-    /* optional CPU work before the frame's passes run (once per frame however many passes share
-     * it), adding the bytes it will put in the frame's stream to rec->stream_bytes; then upload
-     * writes them once the stream has room */
-    tl_result (*prepare)(tl_renderer *r, const tl__view *v, tl__frame_record *rec);
-    void (*upload)(tl_renderer *r);
-    void (*execute)(tl_renderer *r, const tl__pass_ctx *ctx);
-    /* optional: files its results into the stats: its own queries' (query_count of them) and
-     * whatever else it measured for that frame */
-    void (*collect)(tl_renderer *r, const uint64_t *results, tl_frame_stats *st);
+    void (*execute)(const tl__pass_ctx *ctx);
+    /* optional: files its own queries' results (query_count of them) into the stats */
+    void (*collect)(const uint64_t *results, tl_frame_stats *st);
     uint8_t query_count;
+    uint8_t services; /* TL__PASS_* its execute step reads */
 } tl__pass_def;
 
 /* What the light pass reads and writes in a mode, whichever strategy gathers the lights
@@ -125,10 +170,18 @@ void tl__permute_one_program(const tl__plan_input *in, const tl__pass_decl *d, t
 int tl__ssao_pass(const tl__plan_input *in);
 const char *tl__ssao_defines(const tl__plan_input *in, const tl__pass_decl *d);
 
+/* Execute steps several passes share (draw.c): a full-screen triangle with the first program;
+ * the scene's visible opaque or transparent objects with the first program. */
+void tl__draw_fullscreen(const tl__pass_ctx *ctx);
+void tl__draw_opaque(const tl__pass_ctx *ctx);
+void tl__draw_transparent(const tl__pass_ctx *ctx);
+
 /* The table, in execution order; application passes go between its entries. */
 extern const tl__pass_def *const tl__pass_table[TL_PASS_COUNT];
 /* Private passes the frame never plans: luma for tl_renderer_apply_fxaa. */
 extern const tl__pass_def tl__pass_luma;
+/* Index in tl__pass_table of the built-in pass named `name`, -1 for none (pass_table.c). */
+int tl__pass_table_find(const char *name);
 
 /* An application pass as the renderer keeps it. */
 typedef struct tl__app_pass {
@@ -141,6 +194,7 @@ typedef struct tl__app_pass {
 /* A plan with what the compile step needs beyond the public description. */
 typedef struct tl__plan {
     tl_frame_plan pub;
+    const tl__target_def *targets[TL_TARGET_COUNT]; /* every target's definition (targets.h) */
     tl__pass_decl decl[TL_PLAN_MAX_PASSES];
     const tl__pass_def *def[TL_PLAN_MAX_PASSES]; /* NULL for application passes */
     int8_t app[TL_PLAN_MAX_PASSES];              /* application pass index, -1 for built-in ones */

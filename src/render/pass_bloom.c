@@ -6,15 +6,57 @@
  * is Unity URP's). Level 0 then holds the bloom image, which the tone-map pass adds to HDR. Every
  * filter's weights sum to 1 and both resamplings keep the image's mean, so the chain conserves
  * energy. Each draw samples a one-level view of the level it reads, never the level it writes. */
+#include <math.h>
 #include <stdio.h>
+#include <string.h>
 
-#include "renderer_internal.h"
+#include "gl/gl.h"
+#include "pass.h"
+#include "view.h"
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
+static uint32_t tl__bloom_levels(const tl_renderer_options *o) { return o->bloom.levels; }
+
+/* Half size, its levels from the options; sampled bilinearly by the tone map (the 2x upsample). */
+static const tl__target_def tl__target_bloom = {TL__TARGET(BLOOM, "bloom"), .format = GL_RGBA16F,
+                                                .levels_of = tl__bloom_levels, .shift = 1, .linear = 1};
+
+/* tl_bloom_desc's defaults (docs/effects.md); 0 for values out of range. */
+static int tl__bloom_resolve(void *options)
+{
+    tl_bloom_desc *b = (tl_bloom_desc *)options;
+    if (!b->enabled) {
+        memset(b, 0, sizeof *b);
+        return 1;
+    }
+    b->enabled = 1;
+    if (b->threshold == 0.0f) b->threshold = 1.0f;
+    if (b->threshold < 0.0f) b->threshold = 0.0f;
+    if (b->knee == 0.0f) b->knee = 0.5f;
+    if (b->knee < 0.0f) b->knee = 0.0f;
+    if (!(b->intensity > 0.0f)) b->intensity = 0.5f;
+    if (!(b->scatter > 0.0f)) b->scatter = 0.7f;
+    if (!b->levels) b->levels = 6;
+    return b->levels <= TL__MAX_LEVELS && b->knee <= 1.0f && b->scatter <= 1.0f && isfinite(b->threshold) &&
+           isfinite(b->knee) && isfinite(b->intensity) && isfinite(b->scatter);
+}
+
+/* std140 block tl_bloom_block of shaders/bloom.frag.glsl: threshold, knee (absolute), intensity, scatter. */
+static void tl__bloom_params(const tl_renderer_options *o, const tl__view *v, void *block)
+{
+    (void)v;
+    const tl_bloom_desc *d = &o->bloom;
+    float *b = (float *)block;
+    b[0] = d->threshold;
+    b[1] = d->knee * d->threshold;
+    b[2] = d->intensity;
+    b[3] = d->scatter;
+}
+
 static void tl__bloom_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!in->d.bloom.enabled) return;
+    if (!in->o->bloom.enabled) return;
     d->reads = d->samples = TL__B(HDR);
     d->writes = TL__B(BLOOM);
     d->state = tl__pipeline_fullscreen;
@@ -32,34 +74,32 @@ static void tl__bloom_permute(const tl__plan_input *in, const tl__pass_decl *d, 
 }
 
 /* One full-screen draw of `program` into `level`, sampling `source` (0: what the pass bound). */
-static void tl__bloom_draw(tl_renderer *r, const tl__pass_ctx *ctx, GLuint program, uint32_t level, GLuint source)
+static void tl__bloom_draw(const tl__pass_ctx *ctx, GLuint program, uint32_t level, GLuint source)
 {
-    const GladGLContext *gl = &r->gl;
-    const tl__target *t = &r->targets[TL_TARGET_BLOOM];
-    uint32_t w = t->width >> level, h = t->height >> level;
-    tl__state_framebuffer(gl, &r->state, level ? ctx->cp->level_fbos[level] : ctx->cp->fbo);
-    tl__state_viewport(gl, &r->state, 0, 0, (GLsizei)(w ? w : 1u), (GLsizei)(h ? h : 1u));
+    const GladGLContext *gl = ctx->gl;
+    uint32_t w = ctx->level_width >> level, h = ctx->level_height >> level;
+    tl__state_framebuffer(gl, ctx->state, level ? ctx->level_fbos[level] : ctx->fbo);
+    tl__state_viewport(gl, ctx->state, 0, 0, (GLsizei)(w ? w : 1u), (GLsizei)(h ? h : 1u));
     if (source) gl->BindTextureUnit(TL_TARGET_BLOOM, source);
-    tl__state_program(gl, &r->state, program);
+    tl__state_program(gl, ctx->state, program);
     gl->DrawArrays(GL_TRIANGLES, 0, 3);
-    ctx->rec->st.draw_calls++;
+    ctx->out->draw_calls++;
 }
 
-static void tl__bloom_execute(tl_renderer *r, const tl__pass_ctx *ctx)
+static void tl__bloom_execute(const tl__pass_ctx *ctx)
 {
-    const GladGLContext *gl = &r->gl;
-    const tl__compiled_pass *cp = ctx->cp;
-    const tl__target *lv = r->levels[TL_TARGET_BLOOM];
-    uint32_t n = cp->level_count ? cp->level_count : 1u;
-    tl__state_vertex_array(gl, &r->state, r->vao_empty);
-    gl->BindSampler(TL_TARGET_HDR, r->sampler_linear); /* the 13 taps fall between texels */
-    tl__bloom_draw(r, ctx, cp->programs[0], 0, 0);
+    const GladGLContext *gl = ctx->gl;
+    const GLuint *lv = ctx->level_textures;
+    uint32_t n = ctx->level_count ? ctx->level_count : 1u;
+    tl__state_vertex_array(gl, ctx->state, ctx->fullscreen_vao);
+    gl->BindSampler(TL_TARGET_HDR, ctx->linear_sampler); /* the 13 taps fall between texels */
+    tl__bloom_draw(ctx, ctx->programs[0], 0, 0);
     gl->BindSampler(TL_TARGET_HDR, 0);
-    for (uint32_t k = 1; k < n; k++) tl__bloom_draw(r, ctx, cp->programs[1], k, lv[k - 1].texture);
-    tl__pipeline blend = cp->decl->state;
+    for (uint32_t k = 1; k < n; k++) tl__bloom_draw(ctx, ctx->programs[1], k, lv[k - 1]);
+    tl__pipeline blend = *ctx->pipeline;
     blend.blend = TL__BLEND_ALPHA; /* finer = scatter * tent(coarser) + (1 - scatter) * finer */
-    tl__state_apply(gl, &r->state, &blend);
-    for (uint32_t k = n - 1; k-- > 0;) tl__bloom_draw(r, ctx, cp->programs[2], k, lv[k + 1].texture);
+    tl__state_apply(gl, ctx->state, &blend);
+    for (uint32_t k = n - 1; k-- > 0;) tl__bloom_draw(ctx, ctx->programs[2], k, lv[k + 1]);
 }
 
 const tl__pass_def tl__pass_bloom = {
@@ -68,6 +108,11 @@ const tl__pass_def tl__pass_bloom = {
     .programs = {{"bloom.prefilter", "fullscreen.vert.glsl", "bloom.frag.glsl"},
                  {"bloom.down", "fullscreen.vert.glsl", "bloom.frag.glsl"},
                  {"bloom.up", "fullscreen.vert.glsl", "bloom.frag.glsl"}},
+    .targets = {&tl__target_bloom},
+    TL__OPTIONS(bloom),
+    .resolve = tl__bloom_resolve,
+    .params_size = 4 * sizeof(float),
+    .params = tl__bloom_params,
     .declare = tl__bloom_declare,
     .permute = tl__bloom_permute,
     .execute = tl__bloom_execute,

@@ -1,11 +1,42 @@
 /* The geometry passes of the table: depth pre-pass, G-buffer, material (the light pre-pass's
  * second geometry pass), forward and transparent. Each declares its targets and state for a mode
- * (the mode table says what the G-buffer holds) and draws the visible objects. */
+ * (the mode table says what the G-buffer holds) and draws the visible objects. The G-buffer pass
+ * owns the targets geometry writes: depth, the thin and fat G-buffers and HDR. */
 #include <stdio.h>
 
-#include "renderer_internal.h"
+#include "gl/gl.h"
+#include "pass.h"
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
+
+/* fat is the full-float reference: D32F. No pass uses stencil, so float depth carries none
+ * (D32F_S8 would cost 8 B/px); D24 comes packed with its stencil byte. */
+static uint32_t tl__depth_format(const tl_renderer_options *o)
+{
+    int f32 = o->mode == TL_MODE_FAT || o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ||
+              o->depth_format == TL_DEPTH_FORMAT_D32F;
+    return f32 ? GL_DEPTH_COMPONENT32F : GL_DEPTH24_STENCIL8;
+}
+
+static uint32_t tl__rt0_format(const tl_renderer_options *o)
+{
+    return o->rt0 == TL_RT0_RGB10A2 ? GL_RGB10_A2 : GL_RGBA8;
+}
+
+static const tl__target_def tl__target_depth = {TL__TARGET(DEPTH, "depth"), .format_of = tl__depth_format,
+                                                .store = TL__STORE_GBUFFER};
+static const tl__target_def tl__target_rt0 = {TL__TARGET(RT0, "rt0"), .format_of = tl__rt0_format,
+                                              .store = TL__STORE_GBUFFER};
+static const tl__target_def tl__target_rt1 = {TL__TARGET(RT1, "rt1"), .format = GL_RGBA8, .store = TL__STORE_GBUFFER};
+static const tl__target_def tl__target_fat_position = {TL__TARGET(FAT_POSITION, "fat.position"), .format = GL_RGBA32F,
+                                                       .store = TL__STORE_GBUFFER};
+static const tl__target_def tl__target_fat_normal = {TL__TARGET(FAT_NORMAL, "fat.normal"), .format = GL_RGBA16F,
+                                                     .store = TL__STORE_GBUFFER};
+static const tl__target_def tl__target_fat_albedo = {TL__TARGET(FAT_ALBEDO, "fat.albedo"), .format = GL_RGBA16F,
+                                                     .store = TL__STORE_GBUFFER};
+static const tl__target_def tl__target_fat_material = {TL__TARGET(FAT_MATERIAL, "fat.material"), .format = GL_RGBA16F,
+                                                       .store = TL__STORE_GBUFFER};
+static const tl__target_def tl__target_hdr = {TL__TARGET(HDR, "hdr"), .format = GL_RGBA16F};
 
 /* Every geometry pass that decides visibility tests LEQUAL (GEQUAL reversed): of fragments at the
  * same stored depth the last drawn wins, as it does in a later pass at EQUAL, which draws the same
@@ -21,11 +52,9 @@ static tl__pipeline tl__geometry_state(const tl__plan_input *in, tl__depth_test 
     p.depth_test = (uint8_t)test;
     p.depth_write = (uint8_t)write;
     p.blend = (uint8_t)blend;
-    p.clip_zero_one = in->d.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
+    p.clip_zero_one = in->o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
     return p;
 }
-
-static void tl__draw_opaque(tl_renderer *r, const tl__pass_ctx *ctx) { tl__draw_objects(r, ctx, TL__DRAW_OPAQUE); }
 
 /* Forward+ (forward with tiled lights): the tiles' depth bounds come from the depth pre-pass. */
 
@@ -54,6 +83,7 @@ const tl__pass_def tl__pass_depth_prepass = {
     .declare = tl__prepass_declare,
     .permute = tl__prepass_permute,
     .execute = tl__draw_opaque,
+    .services = TL__PASS_SCENE,
 };
 
 /* ---- G-buffer -------------------------------------------------------------------------------- */
@@ -80,9 +110,12 @@ const tl__pass_def tl__pass_gbuffer = {
     .id = TL_PASS_GBUFFER,
     .name = "gbuffer",
     .programs = {{"gbuffer", "gbuffer.vert.glsl", "gbuffer.frag.glsl"}},
+    .targets = {&tl__target_depth, &tl__target_rt0, &tl__target_rt1, &tl__target_fat_position, &tl__target_fat_normal,
+                &tl__target_fat_albedo, &tl__target_fat_material, &tl__target_hdr},
     .declare = tl__gbuffer_declare,
     .permute = tl__gbuffer_permute,
     .execute = tl__draw_opaque,
+    .services = TL__PASS_SCENE,
 };
 
 /* ---- material: the light pre-pass's second geometry pass ------------------------------------- */
@@ -112,6 +145,7 @@ const tl__pass_def tl__pass_material = {
     .declare = tl__material_declare,
     .permute = tl__material_permute,
     .execute = tl__draw_opaque,
+    .services = TL__PASS_SCENE,
 };
 
 /* ---- forward, and transparent objects in every mode ------------------------------------------ */
@@ -125,7 +159,7 @@ static void tl__forward_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->samples = tl__ssao_pass(in) ? TL__B(AO) : 0u;
     d->reads |= d->samples;
     d->attach_depth = 1;
-    d->object_lights = !plus;
+    d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | (plus ? 0u : TL__LIGHTS_OBJECT_LISTS);
     d->state = tl__geometry_state(in, prepass ? TL__DEPTH_EQUAL : TL__DEPTH_LEQUAL, !prepass, TL__BLEND_OFF);
 }
 
@@ -142,9 +176,8 @@ const tl__pass_def tl__pass_forward = {
     .programs = {{"forward", "gbuffer.vert.glsl", "forward.frag.glsl"}},
     .declare = tl__forward_declare,
     .permute = tl__forward_permute,
-    .prepare = tl__forward_prepare,
-    .upload = tl__forward_upload,
     .execute = tl__draw_opaque,
+    .services = TL__PASS_SCENE,
 };
 
 static void tl__transparent_declare(const tl__plan_input *in, tl__pass_decl *d)
@@ -153,7 +186,8 @@ static void tl__transparent_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->writes = TL__B(HDR);
     d->reads = TL__B(DEPTH) | TL__B(HDR); /* blended onto */
     d->attach_depth = 1;
-    d->object_lights = 1; /* tiles hold lights for the opaque surfaces' depths only */
+    /* per-object lists: tiles hold lights for the opaque surfaces' depths only */
+    d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | TL__LIGHTS_OBJECT_LISTS;
     d->state = tl__geometry_state(in, TL__DEPTH_LEQUAL, 0, TL__BLEND_ALPHA);
 }
 
@@ -164,18 +198,12 @@ static void tl__transparent_permute(const tl__plan_input *in, const tl__pass_dec
     snprintf(out->slot[0], sizeof out->slot[0], "TL_FORWARD TL_TRANSPARENT %s%s", in->spec_define, in->material_defines);
 }
 
-static void tl__draw_transparent(tl_renderer *r, const tl__pass_ctx *ctx)
-{
-    tl__draw_objects(r, ctx, TL__DRAW_TRANSPARENT);
-}
-
 const tl__pass_def tl__pass_transparent = {
     .id = TL_PASS_TRANSPARENT,
     .name = "transparent",
     .programs = {{"transparent", "gbuffer.vert.glsl", "forward.frag.glsl"}},
     .declare = tl__transparent_declare,
     .permute = tl__transparent_permute,
-    .prepare = tl__forward_prepare,
-    .upload = tl__forward_upload,
     .execute = tl__draw_transparent,
+    .services = TL__PASS_SCENE,
 };

@@ -1,16 +1,62 @@
 /* Effects over the finished HDR image (docs/effects.md): fog from linear depth blended over it,
  * and depth of field (a gather blur into the dof target, then copied back into HDR). */
+#include <math.h>
 #include <stdio.h>
+#include <string.h>
 
-#include "renderer_internal.h"
+#include "gl/gl.h"
+#include "pass.h"
+#include "view.h"
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
 /* ---- fog: HDR = HDR T + colour (1 - T) ------------------------------------------------------- */
 
+/* tl_fog_desc's defaults (docs/effects.md); 0 for values out of range. */
+static int tl__fog_resolve(void *options)
+{
+    tl_fog_desc *f = (tl_fog_desc *)options;
+    if ((unsigned)f->mode >= TL_FOG_COUNT_) return 0;
+    if (f->mode == TL_FOG_OFF) {
+        memset(f, 0, sizeof *f);
+        return 1;
+    }
+    if (!(f->density > 0.0f)) f->density = 0.05f;
+    if (!(f->height_falloff > 0.0f)) f->height_falloff = 0.5f;
+    if (!(f->noise > 0.0f)) f->noise = 0.0f;
+    if (!(f->noise_scale > 0.0f)) f->noise_scale = 0.5f;
+    if (f->noise_speed == 0.0f) f->noise_speed = 0.3f;
+    for (int k = 0; k < 3; k++)
+        if (!(f->color[k] >= 0.0f) || !isfinite(f->color[k])) return 0;
+    return f->noise <= 1.0f && isfinite(f->density) && isfinite(f->height) && isfinite(f->height_falloff) &&
+           isfinite(f->noise_scale) && isfinite(f->noise_speed);
+}
+
+/* std140 block tl_fog_block of shaders/fog.frag.glsl. */
+typedef struct tl__fog_block {
+    float color_density[4]; /* rgb, density */
+    float shape[4];         /* height, height falloff, noise, noise scale */
+    float motion[4];        /* noise speed, time, 0, 0 */
+} tl__fog_block;
+
+static void tl__fog_params(const tl_renderer_options *o, const tl__view *v, void *block)
+{
+    const tl_fog_desc *f = &o->fog;
+    tl__fog_block *b = (tl__fog_block *)block;
+    memset(b, 0, sizeof *b);
+    memcpy(b->color_density, f->color, sizeof f->color);
+    b->color_density[3] = f->density;
+    b->shape[0] = f->height;
+    b->shape[1] = f->height_falloff;
+    b->shape[2] = f->noise;
+    b->shape[3] = f->noise_scale;
+    b->motion[0] = f->noise_speed;
+    b->motion[1] = v ? v->time : 0.0f;
+}
+
 static void tl__fog_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (in->d.fog.mode == TL_FOG_OFF) return;
+    if (in->o->fog.mode == TL_FOG_OFF) return;
     d->samples = TL__B(DEPTH);
     d->reads = TL__B(DEPTH) | TL__B(HDR);
     d->writes = TL__B(HDR);
@@ -22,14 +68,18 @@ static void tl__fog_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", in->d.fog.mode == TL_FOG_HEIGHT ? "TL_FOG_HEIGHT" : "TL_FOG_DISTANCE",
-             in->d.fog.noise > 0.0f ? " TL_FOG_NOISE" : "");
+    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", in->o->fog.mode == TL_FOG_HEIGHT ? "TL_FOG_HEIGHT" : "TL_FOG_DISTANCE",
+             in->o->fog.noise > 0.0f ? " TL_FOG_NOISE" : "");
 }
 
 const tl__pass_def tl__pass_fog = {
     .id = TL_PASS_FOG,
     .name = "fog",
     .programs = {{"fog", "fullscreen.vert.glsl", "fog.frag.glsl"}},
+    TL__OPTIONS(fog),
+    .resolve = tl__fog_resolve,
+    .params_size = sizeof(tl__fog_block),
+    .params = tl__fog_params,
     .declare = tl__fog_declare,
     .permute = tl__fog_permute,
     .execute = tl__draw_fullscreen,
@@ -37,9 +87,39 @@ const tl__pass_def tl__pass_fog = {
 
 /* ---- depth of field -------------------------------------------------------------------------- */
 
+static const tl__target_def tl__target_dof = {TL__TARGET(DOF, "dof"), .format = GL_RGBA16F};
+
+/* tl_dof_desc's defaults (docs/effects.md); 0 for values out of range. */
+static int tl__dof_resolve(void *options)
+{
+    tl_dof_desc *f = (tl_dof_desc *)options;
+    if (!f->enabled) {
+        memset(f, 0, sizeof *f);
+        return 1;
+    }
+    f->enabled = 1;
+    if (!(f->focus_distance > 0.0f)) f->focus_distance = 0.0f; /* 0: the camera's target, per frame */
+    if (!(f->aperture > 0.0f)) f->aperture = 0.01f;
+    if (!(f->max_radius > 0.0f)) f->max_radius = 2.0f * f->aperture;
+    if (!f->samples) f->samples = 48;
+    return f->samples >= 8 && f->samples <= 128 && isfinite(f->focus_distance) && f->aperture <= 1.0f &&
+           f->max_radius <= 1.0f;
+}
+
+/* std140 block tl_dof_block of shaders/dof.frag.glsl: focus distance, aperture, largest CoC, 0. */
+static void tl__dof_params(const tl_renderer_options *o, const tl__view *v, void *block)
+{
+    const tl_dof_desc *d = &o->dof;
+    float *b = (float *)block;
+    b[0] = d->focus_distance > 0.0f ? d->focus_distance : v ? v->target_distance : 0.0f;
+    b[1] = d->aperture;
+    b[2] = d->max_radius;
+    b[3] = 0.0f;
+}
+
 static void tl__dof_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!in->d.dof.enabled) return;
+    if (!in->o->dof.enabled) return;
     d->reads = d->samples = TL__B(DEPTH) | TL__B(HDR);
     d->writes = TL__B(DOF);
     d->state = tl__pipeline_fullscreen;
@@ -49,13 +129,18 @@ static void tl__dof_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_DOF_SAMPLES=%u", in->d.dof.samples);
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_DOF_SAMPLES=%u", in->o->dof.samples);
 }
 
 const tl__pass_def tl__pass_dof = {
     .id = TL_PASS_DOF,
     .name = "dof",
     .programs = {{"dof", "fullscreen.vert.glsl", "dof.frag.glsl"}},
+    .targets = {&tl__target_dof},
+    TL__OPTIONS(dof),
+    .resolve = tl__dof_resolve,
+    .params_size = 4 * sizeof(float),
+    .params = tl__dof_params,
     .declare = tl__dof_declare,
     .permute = tl__dof_permute,
     .execute = tl__draw_fullscreen,
@@ -63,7 +148,7 @@ const tl__pass_def tl__pass_dof = {
 
 static void tl__dof_apply_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!in->d.dof.enabled) return;
+    if (!in->o->dof.enabled) return;
     d->reads = d->samples = TL__B(DOF);
     d->writes = TL__B(HDR);
     d->state = tl__pipeline_fullscreen;

@@ -6,16 +6,30 @@
  * shade into HDR) is the mode table's. */
 #include <stdio.h>
 
-#include "renderer_internal.h"
+#include "gl/gl.h"
+#include "lights.h"
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
+
+/* The light buffer (thin-lpp): R11G11B10F keeps each value to 6 or 5 mantissa bits in 4 bytes. */
+static uint32_t tl__light_format(const tl_renderer_options *o)
+{
+    return o->light_format == TL_LIGHT_FORMAT_R11G11B10F ? GL_R11F_G11F_B10F : GL_RGBA16F;
+}
+
+static const tl__target_def tl__target_light_diffuse = {TL__TARGET(LIGHT_DIFFUSE, "light.diffuse"),
+                                                        .format_of = tl__light_format, .store = TL__STORE_LIGHT};
+static const tl__target_def tl__target_light_specular = {TL__TARGET(LIGHT_SPECULAR, "light.specular"),
+                                                         .format_of = tl__light_format, .store = TL__STORE_LIGHT};
+static const tl__target_def tl__target_light_fresnel = {TL__TARGET(LIGHT_FRESNEL, "light.fresnel"),
+                                                        .format_of = tl__light_format, .store = TL__STORE_LIGHT};
 
 /* What the light pass reads and writes in this mode, whatever the strategy (the tiled pass too). */
 void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
 {
     const tl__mode_def *m = in->mode;
     uint32_t spec_targets = TL__B(LIGHT_SPECULAR) | TL__B(FAT_MATERIAL);
-    int exact_spec = in->spec && in->d.light_buffer == TL_LIGHT_BUFFER_EXACT;
+    int exact_spec = in->spec && in->o->light_buffer == TL_LIGHT_BUFFER_EXACT;
     d->writes = m->light_writes & (exact_spec ? ~0u : ~TL__B(LIGHT_SPECULAR));
     if (in->fresnel != TL_FRESNEL_TWO_SUMS) d->writes &= ~TL__B(LIGHT_FRESNEL); /* S2: GGX's two sums only */
     d->reads = m->light_reads & (in->spec ? ~0u : ~spec_targets);
@@ -30,14 +44,15 @@ static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
     tl__light_pass_targets(in, d);
     if (!(d->writes & TL__B(HDR))) d->clears = d->writes;
     d->attach_depth = 1;
+    d->light_data = TL__LIGHTS_INSTANCES;
     d->state = (tl__pipeline){.depth_write = 0, .color_write = 1, .blend = TL__BLEND_ADD,
-                              .clip_zero_one = in->d.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED};
+                              .clip_zero_one = in->o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED};
 }
 
 static void tl__lights_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     const size_t counts[3] = {in->f.point_lights, in->f.spot_lights, in->f.directional_lights};
-    const char *fullscreen = in->d.fullscreen_lights ? " TL_LIGHT_FULLSCREEN" : "";
+    const char *fullscreen = in->o->fullscreen_lights ? " TL_LIGHT_FULLSCREEN" : "";
     for (int k = 0; k < 3; k++) {
         if (!counts[k]) continue;
         out->used[k] = 1;
@@ -48,58 +63,58 @@ static void tl__lights_permute(const tl__plan_input *in, const tl__pass_decl *d,
 }
 
 /* One type's instances: outside volumes by front faces, inside ones by back faces. */
-static void tl__draw_volumes(tl_renderer *r, int k, tl__frame_record *rec)
+static void tl__draw_volumes(const tl__pass_ctx *ctx, int k)
 {
-    const GladGLContext *gl = &r->gl;
-    GLsizei nidx = (GLsizei)r->volume_index_count[k];
-    size_t count = r->instance_count[k], outside = r->instance_outside[k];
+    const GladGLContext *gl = ctx->gl;
+    const tl__lights *l = ctx->lights;
+    GLsizei nidx = (GLsizei)l->volume_index_count[k];
+    size_t count = l->instance_count[k], outside = l->instance_outside[k];
     tl__pipeline p = {.depth_write = 0, .color_write = 1, .blend = TL__BLEND_ADD, .depth_clamp = 1,
-                      .clip_zero_one = r->state.p.clip_zero_one};
+                      .clip_zero_one = ctx->pipeline->clip_zero_one};
     if (outside) {
         p.depth_test = TL__DEPTH_LEQUAL;
         p.cull = TL__CULL_BACK;
-        tl__state_apply(gl, &r->state, &p);
+        tl__state_apply(gl, ctx->state, &p);
         gl->DrawElementsInstancedBaseInstance(GL_TRIANGLES, nidx, GL_UNSIGNED_INT, NULL, (GLsizei)outside, 0);
-        rec->st.draw_calls++;
+        ctx->out->draw_calls++;
     }
     if (count > outside) {
         p.depth_test = TL__DEPTH_GEQUAL;
         p.cull = TL__CULL_FRONT;
-        tl__state_apply(gl, &r->state, &p);
+        tl__state_apply(gl, ctx->state, &p);
         gl->DrawElementsInstancedBaseInstance(GL_TRIANGLES, nidx, GL_UNSIGNED_INT, NULL, (GLsizei)(count - outside),
                                               (GLuint)outside);
-        rec->st.draw_calls++;
+        ctx->out->draw_calls++;
     }
 }
 
-static void tl__lights_execute(tl_renderer *r, const tl__pass_ctx *ctx)
+static void tl__lights_execute(const tl__pass_ctx *ctx)
 {
-    const GladGLContext *gl = &r->gl;
-    const tl__pipeline base = r->state.p;
+    const GladGLContext *gl = ctx->gl;
+    const tl__lights *l = ctx->lights;
     for (int k = 0; k < TL__LIGHT_KINDS; k++) {
-        GLuint p = ctx->cp->programs[k];
+        GLuint p = ctx->programs[k];
         if (ctx->queries) gl->BeginQuery(GL_SAMPLES_PASSED, ctx->queries[k]); /* every type's: read later */
-        if (!r->instance_count[k] || !p) {
+        if (!l->instance_count[k] || !p) {
             if (ctx->queries) gl->EndQuery(GL_SAMPLES_PASSED);
             continue;
         }
-        tl__state_program(gl, &r->state, p);
-        tl__state_vertex_array(gl, &r->state, r->vao_light[k]);
-        if (k == 2 || r->desc.fullscreen_lights) {
-            tl__state_apply(gl, &r->state, &base); /* no depth test, no culling */
-            gl->DrawArraysInstanced(GL_TRIANGLES, 0, 3, (GLsizei)r->instance_count[k]);
-            ctx->rec->st.draw_calls++;
+        tl__state_program(gl, ctx->state, p);
+        tl__state_vertex_array(gl, ctx->state, l->vao[k]);
+        if (k == 2 || l->fullscreen) {
+            tl__state_apply(gl, ctx->state, ctx->pipeline); /* no depth test, no culling */
+            gl->DrawArraysInstanced(GL_TRIANGLES, 0, 3, (GLsizei)l->instance_count[k]);
+            ctx->out->draw_calls++;
         } else {
-            tl__draw_volumes(r, k, ctx->rec);
+            tl__draw_volumes(ctx, k);
         }
         if (ctx->queries) gl->EndQuery(GL_SAMPLES_PASSED);
-        ctx->rec->instances[ctx->index] += r->instance_count[k];
+        ctx->out->instances += l->instance_count[k];
     }
 }
 
-static void tl__lights_collect(tl_renderer *r, const uint64_t *results, tl_frame_stats *st)
+static void tl__lights_collect(const uint64_t *results, tl_frame_stats *st)
 {
-    (void)r;
     for (int k = 0; k < TL__LIGHT_KINDS; k++) {
         st->light_fragments[k + 1] = results[k];
         st->light_pairs += results[k];
@@ -112,11 +127,11 @@ const tl__pass_def tl__pass_lights = {
     .programs = {{"lights.point", "light.vert.glsl", "light.frag.glsl"},
                  {"lights.spot", "light.vert.glsl", "light.frag.glsl"},
                  {"lights.directional", "light.vert.glsl", "light.frag.glsl"}},
+    .targets = {&tl__target_light_diffuse, &tl__target_light_specular, &tl__target_light_fresnel},
     .declare = tl__lights_declare,
     .permute = tl__lights_permute,
-    .prepare = tl__lights_prepare,
-    .upload = tl__lights_upload,
     .execute = tl__lights_execute,
     .collect = tl__lights_collect,
     .query_count = TL__LIGHT_KINDS,
+    .services = TL__PASS_LIGHTS,
 };

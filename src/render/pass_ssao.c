@@ -3,11 +3,50 @@
  * (forward) depth alone with normals rebuilt from it; a depth-aware blur (ssao-blur); and in the
  * modes that write the ambient term in the G-buffer pass, ssao-apply, which takes the occluded
  * part of it from HDR. In thin-lpp and forward the shading pass reads the AO target itself. */
+#include <math.h>
 #include <stdio.h>
+#include <string.h>
 
-#include "renderer_internal.h"
+#include "gl/gl.h"
+#include "pass.h"
+#include "view.h"
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
+
+static const tl__target_def tl__target_ao_raw = {TL__TARGET(AO_RAW, "ao.raw"), .format = GL_R16F};
+static const tl__target_def tl__target_ao = {TL__TARGET(AO, "ao"), .format = GL_R16F};
+
+/* tl_ssao_desc's defaults (docs/effects.md); 0 for values out of range. */
+static int tl__ssao_resolve(void *options)
+{
+    tl_ssao_desc *s = (tl_ssao_desc *)options;
+    if ((unsigned)s->method >= TL_SSAO_COUNT_) return 0;
+    if (s->method == TL_SSAO_OFF) {
+        memset(s, 0, sizeof *s);
+        return 1;
+    }
+    if (!s->samples) s->samples = 16;
+    if (!(s->radius > 0.0f)) s->radius = 1.0f;
+    if (!(s->falloff > 0.0f)) s->falloff = 2.0f * s->radius;
+    if (!(s->exponent > 0.0f)) s->exponent = 3.0f;
+    if (!(s->bias > 0.0f)) s->bias = 0.0f;
+    if (!s->blur_radius) s->blur_radius = 2;
+    s->diffuse = s->diffuse != 0;
+    return s->samples <= 64 && s->blur_radius <= 8 && isfinite(s->radius) && isfinite(s->falloff) &&
+           isfinite(s->exponent) && isfinite(s->bias);
+}
+
+/* std140 block tl_ssao_block of shaders/ssao.frag.glsl: radius, k_b, k_d, exponent. */
+static void tl__ssao_params(const tl_renderer_options *o, const tl__view *v, void *block)
+{
+    (void)v;
+    const tl_ssao_desc *s = &o->ssao;
+    float *b = (float *)block;
+    b[0] = s->radius;
+    b[1] = s->bias;
+    b[2] = s->falloff;
+    b[3] = s->exponent;
+}
 
 static int tl__ssao_fat(const tl__plan_input *in) { return (in->mode->gbuffer_writes & TL__B(FAT_POSITION)) != 0; }
 
@@ -30,13 +69,18 @@ static void tl__ssao_permute(const tl__plan_input *in, const tl__pass_decl *d, t
     const char *source = tl__ssao_fat(in) ? "TL_SSAO_FAT" : in->mode->forward ? "TL_SSAO_DEPTH_NORMALS" : in->rt0_define;
     out->used[0] = 1;
     snprintf(out->slot[0], sizeof out->slot[0], "%s TL_SSAO_SAMPLES=%u %s",
-             in->d.ssao.method == TL_SSAO_HEMISPHERE ? "TL_SSAO_HEMISPHERE" : "TL_SSAO_DISC", in->d.ssao.samples, source);
+             in->o->ssao.method == TL_SSAO_HEMISPHERE ? "TL_SSAO_HEMISPHERE" : "TL_SSAO_DISC", in->o->ssao.samples, source);
 }
 
 const tl__pass_def tl__pass_ssao = {
     .id = TL_PASS_SSAO,
     .name = "ssao",
     .programs = {{"ssao", "fullscreen.vert.glsl", "ssao.frag.glsl"}},
+    .targets = {&tl__target_ao_raw, &tl__target_ao},
+    TL__OPTIONS(ssao),
+    .resolve = tl__ssao_resolve,
+    .params_size = 4 * sizeof(float),
+    .params = tl__ssao_params,
     .declare = tl__ssao_declare,
     .permute = tl__ssao_permute,
     .execute = tl__draw_fullscreen,
@@ -56,7 +100,7 @@ static void tl__ssao_blur_permute(const tl__plan_input *in, const tl__pass_decl 
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_SSAO_BLUR_RADIUS=%u", in->d.ssao.blur_radius);
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_SSAO_BLUR_RADIUS=%u", in->o->ssao.blur_radius);
 }
 
 const tl__pass_def tl__pass_ssao_blur = {

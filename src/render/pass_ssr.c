@@ -1,15 +1,54 @@
 /* Screen-space reflections (docs/effects.md): the ray march from depth and RT0 (fat: its position
  * and normal targets) into the ssr target, then ssr-apply adds it to HDR. Forward mode has no
  * gloss to read and plans neither. */
+#include <math.h>
 #include <stdio.h>
+#include <string.h>
 
-#include "renderer_internal.h"
+#include "gl/gl.h"
+#include "pass.h"
+#include "view.h"
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
+static const tl__target_def tl__target_ssr = {TL__TARGET(SSR, "ssr"), .format = GL_RGBA16F};
+
+/* tl_ssr_desc's defaults (docs/effects.md); 0 for values out of range. */
+static int tl__ssr_resolve(void *options)
+{
+    tl_ssr_desc *s = (tl_ssr_desc *)options;
+    if (!s->enabled) {
+        memset(s, 0, sizeof *s);
+        return 1;
+    }
+    s->enabled = 1;
+    if (!s->steps) s->steps = 48;
+    if (!s->refine) s->refine = 4;
+    if (!(s->max_distance > 0.0f)) s->max_distance = 16.0f;
+    if (!(s->thickness > 0.0f)) s->thickness = 0.4f;
+    if (!(s->min_gloss > 0.0f)) s->min_gloss = s->min_gloss == 0.0f ? 0.4f : 0.0f;
+    if (!(s->edge_fade > 0.0f)) s->edge_fade = 0.1f;
+    if (!(s->intensity > 0.0f)) s->intensity = 1.0f;
+    return s->steps >= 4 && s->steps <= 256 && s->refine <= 8 && s->min_gloss < 1.0f && s->edge_fade <= 0.5f &&
+           isfinite(s->max_distance) && isfinite(s->thickness) && isfinite(s->intensity) && isfinite(s->min_gloss);
+}
+
+/* std140 block tl_ssr_block of shaders/ssr.frag.glsl. */
+typedef struct tl__ssr_block {
+    float march[4];  /* max distance, thickness, min gloss, edge fade */
+    float weight[4]; /* intensity, near plane distance, 0, 0 */
+} tl__ssr_block;
+
+static void tl__ssr_params(const tl_renderer_options *o, const tl__view *v, void *block)
+{
+    const tl_ssr_desc *s = &o->ssr;
+    *(tl__ssr_block *)block = (tl__ssr_block){{s->max_distance, s->thickness, s->min_gloss, s->edge_fade},
+                                              {s->intensity, v ? v->near_z : 0.0f, 0.0f, 0.0f}};
+}
+
 static int tl__ssr_fat(const tl__plan_input *in) { return (in->mode->gbuffer_writes & TL__B(FAT_POSITION)) != 0; }
 
-static int tl__ssr_on(const tl__plan_input *in) { return in->d.ssr.enabled && !in->mode->forward; }
+static int tl__ssr_on(const tl__plan_input *in) { return in->o->ssr.enabled && !in->mode->forward; }
 
 static void tl__ssr_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
@@ -24,14 +63,19 @@ static void tl__ssr_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_SSR_STEPS=%u TL_SSR_REFINE=%u %s", in->d.ssr.steps,
-             in->d.ssr.refine, tl__ssr_fat(in) ? "TL_SSAO_FAT" : in->rt0_define);
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_SSR_STEPS=%u TL_SSR_REFINE=%u %s", in->o->ssr.steps,
+             in->o->ssr.refine, tl__ssr_fat(in) ? "TL_SSAO_FAT" : in->rt0_define);
 }
 
 const tl__pass_def tl__pass_ssr = {
     .id = TL_PASS_SSR,
     .name = "ssr",
     .programs = {{"ssr", "fullscreen.vert.glsl", "ssr.frag.glsl"}},
+    .targets = {&tl__target_ssr},
+    TL__OPTIONS(ssr),
+    .resolve = tl__ssr_resolve,
+    .params_size = sizeof(tl__ssr_block),
+    .params = tl__ssr_params,
     .declare = tl__ssr_declare,
     .permute = tl__ssr_permute,
     .execute = tl__draw_fullscreen,

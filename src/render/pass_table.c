@@ -8,16 +8,30 @@
 extern const tl__pass_def tl__pass_depth_prepass, tl__pass_gbuffer, tl__pass_light_cull, tl__pass_lights,
     tl__pass_lights_tiled, tl__pass_material, tl__pass_forward, tl__pass_transparent, tl__pass_tonemap, tl__pass_fxaa;
 extern const tl__pass_def tl__pass_ssao, tl__pass_ssao_blur, tl__pass_ssao_apply, tl__pass_fog, tl__pass_dof,
-    tl__pass_dof_apply, tl__pass_ssr, tl__pass_ssr_apply, tl__pass_bloom;
+    tl__pass_dof_apply, tl__pass_ssr, tl__pass_ssr_apply, tl__pass_bloom, tl__pass_vignette;
 
 const tl__pass_def *const tl__pass_table[TL_PASS_COUNT] = {
     &tl__pass_depth_prepass, &tl__pass_gbuffer,   &tl__pass_ssao,      &tl__pass_ssao_blur,   &tl__pass_ssao_apply,
     &tl__pass_light_cull,    &tl__pass_lights,    &tl__pass_lights_tiled, &tl__pass_material, &tl__pass_forward,
     &tl__pass_transparent,   &tl__pass_ssr,       &tl__pass_ssr_apply, &tl__pass_fog,         &tl__pass_dof,
-    &tl__pass_dof_apply,     &tl__pass_bloom,     &tl__pass_tonemap,   &tl__pass_fxaa,
+    &tl__pass_dof_apply,     &tl__pass_bloom,     &tl__pass_vignette,  &tl__pass_tonemap,   &tl__pass_fxaa,
 };
 
-const char *tl_pass_name(tl_pass pass) { return (unsigned)pass < TL_PASS_COUNT ? tl__pass_table[pass]->name : "unknown"; }
+/* The table's order is the frame's; a pass's public id only names it (statistics, plans). */
+const char *tl_pass_name(tl_pass pass)
+{
+    for (int i = 0; i < TL_PASS_COUNT; i++)
+        if (tl__pass_table[i]->id == pass) return tl__pass_table[i]->name;
+    return "unknown";
+}
+
+tl_result tl_pass_from_name(const char *name, tl_pass *pass)
+{
+    int i = tl__pass_table_find(name);
+    if (i < 0 || !pass) return TL_ERROR_INVALID_ARGUMENT;
+    *pass = tl__pass_table[i]->id;
+    return TL_OK;
+}
 
 int tl__pass_table_find(const char *name)
 {

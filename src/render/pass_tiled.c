@@ -4,11 +4,17 @@
  * the volumes' would in the mode, so the strategies differ only in how lights are gathered. */
 #include <stdio.h>
 
-#include "renderer_internal.h"
+#include "lights.h"
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
 static int tl__tiled(const tl__plan_input *in) { return in->lights && in->strategy == TL_LIGHT_STRATEGY_TILED; }
+
+/* The light lists' bytes for a number of tiles: 4 counters, (offset, count) per tile, entries. */
+static size_t tl__light_lists_bytes(size_t tiles) { return 16u + 8u * tiles + 4u * TL__TILE_START_ENTRIES * tiles; }
+
+static const tl__target_def tl__target_light_lists = {TL__TARGET(LIGHT_LISTS, "light.lists"),
+                                                      .buffer_bytes = tl__light_lists_bytes, .store = TL__STORE_LISTS};
 
 /* ---- light-cull -------------------------------------------------------------------------------- */
 
@@ -18,6 +24,7 @@ static void tl__cull_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->reads = d->samples = TL__B(DEPTH);
     d->writes = TL__B(LIGHT_LISTS);
     d->compute = 1;
+    d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_TILES;
 }
 
 static void tl__cull_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
@@ -31,23 +38,23 @@ const tl__pass_def tl__pass_light_cull = {
     .id = TL_PASS_LIGHT_CULL,
     .name = "light-cull",
     .programs = {{"light-cull", NULL, NULL, "light_cull.comp.glsl"}},
+    .targets = {&tl__target_light_lists},
     .declare = tl__cull_declare,
     .permute = tl__cull_permute,
-    .prepare = tl__tiles_prepare,
-    .upload = tl__tiles_upload,
     .execute = tl__tiles_cull,
-    .collect = tl__tiles_collect,
+    .services = TL__PASS_LIGHTS,
 };
 
 /* ---- the tiled light pass ---------------------------------------------------------------------- */
 
-static int tl__compute_shading(const tl__plan_input *in) { return in->d.tiled_shading == TL_TILED_SHADING_COMPUTE; }
+static int tl__compute_shading(const tl__plan_input *in) { return in->o->tiled_shading == TL_TILED_SHADING_COMPUTE; }
 
 static void tl__tiled_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
     if (!tl__tiled(in) || in->mode->forward) return;
     tl__light_pass_targets(in, d);
     d->reads |= TL__B(LIGHT_LISTS);
+    d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_TILES;
     int shade = (d->writes & TL__B(HDR)) != 0;
     if (tl__compute_shading(in)) {
         d->compute = 1;
@@ -62,26 +69,25 @@ static void tl__tiled_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__tiled_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     int slot = tl__compute_shading(in);
-    const char *image_format = in->d.light_format == TL_LIGHT_FORMAT_R11G11B10F ? "r11f_g11f_b10f" : "rgba16f";
+    const char *image_format = in->o->light_format == TL_LIGHT_FORMAT_R11G11B10F ? "r11f_g11f_b10f" : "rgba16f";
     out->used[slot] = 1;
     snprintf(out->slot[slot], sizeof out->slot[slot], "%s%s%s %s%s%s", in->mode->light_define,
              (d->reads & TL__B(RT0)) ? " " : "", (d->reads & TL__B(RT0)) ? in->rt0_define : "", in->spec_define,
              slot ? " TL_LIGHT_IMAGE_FORMAT=" : "", slot ? image_format : "");
 }
 
-static void tl__tiled_execute(tl_renderer *r, const tl__pass_ctx *ctx)
+static void tl__tiled_execute(const tl__pass_ctx *ctx)
 {
-    const GladGLContext *gl = &r->gl;
-    const tl__compiled_pass *cp = ctx->cp;
-    if (cp->programs[0]) { /* fragment */
-        tl__state_program(gl, &r->state, cp->programs[0]);
-        tl__state_vertex_array(gl, &r->state, r->vao_empty);
+    const GladGLContext *gl = ctx->gl;
+    if (ctx->programs[0]) { /* fragment */
+        tl__state_program(gl, ctx->state, ctx->programs[0]);
+        tl__state_vertex_array(gl, ctx->state, ctx->fullscreen_vao);
         gl->DrawArrays(GL_TRIANGLES, 0, 3);
-        ctx->rec->st.draw_calls++;
+        ctx->out->draw_calls++;
         return;
     }
-    tl__state_program(gl, &r->state, cp->programs[1]);
-    gl->DispatchCompute((r->desc.width + 7) / 8, (r->desc.height + 7) / 8, 1);
+    tl__state_program(gl, ctx->state, ctx->programs[1]);
+    gl->DispatchCompute((ctx->width + 7) / 8, (ctx->height + 7) / 8, 1);
     gl->MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
 

@@ -25,7 +25,7 @@ static void tl__material_defines(const tl_scene_feature_set *f, char *out, size_
 static void tl__plan_strategy(tl__plan_input *in)
 {
     size_t local = in->f.point_lights + in->f.spot_lights;
-    tl_light_strategy s = in->d.light_strategy;
+    tl_light_strategy s = in->o->light_strategy;
     if (s != TL_LIGHT_STRATEGY_DEFAULT) {
         snprintf(in->strategy_reason, sizeof in->strategy_reason, "forced by the options");
     } else if (local >= TL__TILED_CROSSOVER) {
@@ -38,7 +38,7 @@ static void tl__plan_strategy(tl__plan_input *in)
                  TL__TILED_CROSSOVER);
     }
     in->strategy = s;
-    in->tile_size = in->d.tile_size;
+    in->tile_size = in->o->tile_size;
     in->tiles_x = (in->d.width + in->tile_size - 1) / in->tile_size;
     in->tiles_y = (in->d.height + in->tile_size - 1) / in->tile_size;
 }
@@ -47,8 +47,8 @@ static void tl__plan_strategy(tl__plan_input *in)
 static void tl__plan_lighting(tl__plan_input *in)
 {
     const tl_renderer_desc *d = &in->d;
-    in->lighting = d->lighting;
-    if (d->lighting != TL_LIGHTING_DEFAULT) {
+    in->lighting = d->options.lighting;
+    if (d->options.lighting != TL_LIGHTING_DEFAULT) {
         snprintf(in->lighting_reason, sizeof in->lighting_reason, "forced by the options");
     } else if (in->f.has_microfacet) {
         in->lighting = TL_LIGHTING_GGX;
@@ -57,8 +57,8 @@ static void tl__plan_lighting(tl__plan_input *in)
         in->lighting = TL_LIGHTING_BLINN_PHONG;
         snprintf(in->lighting_reason, sizeof in->lighting_reason, "auto: no material authored for GGX");
     }
-    int ggx = in->lighting == TL_LIGHTING_GGX, exact = d->light_buffer == TL_LIGHT_BUFFER_EXACT;
-    if (ggx && in->spec && in->mode->material_pass) in->fresnel = exact ? d->fresnel : TL_FRESNEL_NV;
+    int ggx = in->lighting == TL_LIGHTING_GGX, exact = d->options.light_buffer == TL_LIGHT_BUFFER_EXACT;
+    if (ggx && in->spec && in->mode->material_pass) in->fresnel = exact ? d->options.fresnel : TL_FRESNEL_NV;
     snprintf(in->spec_define, sizeof in->spec_define, "%s%s%s",
              !in->spec ? "TL_SPECULAR_NONE" : exact ? "TL_SPECULAR_EXACT" : "TL_SPECULAR_COMPACT", ggx ? " TL_GGX" : "",
              in->fresnel == TL_FRESNEL_TWO_SUMS ? " TL_FRESNEL_SUMS" : in->fresnel == TL_FRESNEL_NV ? " TL_FRESNEL_NV" : "");
@@ -68,21 +68,22 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
 {
     memset(in, 0, sizeof *in);
     in->d = *d;
+    in->o = &in->d.options;
     in->f = *features;
     tl_scene_feature_set *f = &in->f;
-    if (d->no_planning) { /* plan for every feature, as a renderer without a planner would */
+    if (d->options.no_planning) { /* plan for every feature, as a renderer without a planner would */
         f->point_lights += !f->point_lights;
         f->spot_lights += !f->spot_lights;
         f->directional_lights += !f->directional_lights;
         f->has_specular = f->has_textures = f->has_normal_maps = f->has_emissive = f->has_alpha_mask = 1;
         f->has_metallic_roughness = f->has_occlusion = f->has_emissive_texture = 1;
     }
-    in->mode = &tl__modes[d->mode];
+    in->mode = &tl__modes[d->options.mode];
     in->lights = f->point_lights + f->spot_lights + f->directional_lights > 0;
     tl__plan_strategy(in);
     in->spec = f->has_specular != 0;
     tl__plan_lighting(in);
-    in->rt0_define = d->rt0 == TL_RT0_RGB10A2 ? "TL_RT0_RGB10A2" : "TL_RT0_RGBA8";
+    in->rt0_define = d->options.rt0 == TL_RT0_RGB10A2 ? "TL_RT0_RGB10A2" : "TL_RT0_RGBA8";
     tl__material_defines(f, in->material_defines, sizeof in->material_defines);
 }
 
@@ -176,18 +177,19 @@ static void tl__cull_passes(tl__plan *p, uint32_t sinks)
 
 /* Format, size, levels and bytes of a target; a storage buffer's or a reduced target's bytes per
  * pixel are its bytes over the frame's pixels, rounded up. */
-static void tl__target_memory(const tl_renderer_desc *d, const tl_frame_plan *fp, tl_target_id t, tl_plan_target *ti)
+static void tl__target_memory(const tl_renderer_desc *d, const tl__target_def *def, const tl_frame_plan *fp,
+                              tl_plan_target *ti)
 {
     size_t px = (size_t)d->width * d->height, bpp;
-    ti->format = tl__target_format(d, t);
+    ti->format = tl__target_format(def, &d->options);
     bpp = tl__format_bytes_per_pixel(ti->format);
-    tl__target_size(d, t, &ti->width, &ti->height, &ti->levels);
+    tl__target_size(def, &d->options, d->width, d->height, &ti->width, &ti->height, &ti->levels);
     ti->bytes = 0;
     for (uint32_t k = 0; k < ti->levels; k++) {
         size_t w = ti->width >> k, h = ti->height >> k;
         ti->bytes += (w ? w : 1u) * (h ? h : 1u) * bpp;
     }
-    if (tl__targets[t].buffer) ti->bytes = tl__light_lists_bytes((size_t)fp->tiles_x * fp->tiles_y);
+    if (def->buffer_bytes) ti->bytes = def->buffer_bytes((size_t)fp->tiles_x * fp->tiles_y);
     ti->bytes_per_pixel = (uint32_t)((ti->bytes + px - 1) / px);
 }
 
@@ -198,10 +200,10 @@ static void tl__lifetimes(tl__plan *p, const tl_renderer_desc *d, uint32_t sinks
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         tl_plan_target *ti = &fp->target_info[t];
         if (!(fp->targets & TL__BIT(t))) continue;
-        tl__target_memory(d, fp, (tl_target_id)t, ti);
+        tl__target_memory(d, p->targets[t], fp, ti);
         fp->target_bytes_per_pixel[t] = ti->bytes_per_pixel;
         fp->bytes_per_pixel += ti->bytes_per_pixel;
-        if (tl__targets[t].store != TL__STORE_NONE) fp->gbuffer_bytes_per_pixel += ti->bytes_per_pixel;
+        if (p->targets[t]->store != TL__STORE_NONE) fp->gbuffer_bytes_per_pixel += ti->bytes_per_pixel;
         ti->first_pass = (uint32_t)fp->pass_count;
         for (size_t i = 0; i < fp->pass_count; i++) {
             if (!((fp->passes[i].reads | fp->passes[i].writes) & TL__BIT(t))) continue;
@@ -233,7 +235,7 @@ static void tl__share_memory(tl__plan *p)
             tl_plan_target *ti = &fp->target_info[t];
             if (!ti->bytes_per_pixel || ti->first_pass != step) continue;
             /* a block is one texture of the frame's size and one level: a reduced target keeps its own */
-            unsigned cls = tl__targets[t].shift || ti->levels > 1 ? 0u : tl__format_view_class(ti->format);
+            unsigned cls = p->targets[t]->shift || ti->levels > 1 ? 0u : tl__format_view_class(ti->format);
             size_t b = fp->block_count;
             for (size_t k = 0; cls && k < fp->block_count; k++)
                 if (block_class[k] == cls && block_end[k] < ti->first_pass) {
@@ -258,14 +260,14 @@ static void tl__share_memory(tl__plan *p)
 /* ---- programs ------------------------------------------------------------------------------- */
 
 /* TL_OUT_<TARGET>=<location> for every colour write: attachments in tl_target_id order. */
-static void tl__output_defines(uint32_t writes, char *out, size_t size)
+static void tl__output_defines(const tl__plan *p, uint32_t writes, char *out, size_t size)
 {
     size_t len = 0;
     int loc = 0;
     out[0] = '\0';
     for (int t = 0; t < TL_TARGET_COUNT; t++)
-        if (t != TL_TARGET_DEPTH && !tl__targets[t].buffer && (writes & TL__BIT(t))) {
-            int n = snprintf(out + len, size - len, "%sTL_OUT_%s=%d", len ? " " : "", tl__targets[t].macro, loc++);
+        if (t != TL_TARGET_DEPTH && !p->targets[t]->buffer_bytes && (writes & TL__BIT(t))) {
+            int n = snprintf(out + len, size - len, "%sTL_OUT_%s=%d", len ? " " : "", p->targets[t]->macro, loc++);
             if (n > 0 && (size_t)n < size - len) len += (size_t)n;
         }
 }
@@ -282,7 +284,7 @@ static tl_result tl__programs(const tl__plan_input *in, tl__plan *p)
         memset(&defs, 0, sizeof defs);
         def->permute(in, &p->decl[i], &defs);
         char outs[160];
-        tl__output_defines(p->decl[i].writes, outs, sizeof outs);
+        tl__output_defines(p, p->decl[i].writes, outs, sizeof outs);
         for (uint32_t s = 0; s < TL__PASS_MAX_PROGRAMS && fp->program_count < TL_PLAN_MAX_PROGRAMS; s++) {
             if (!defs.used[s]) continue;
             tl_plan_program *pr = &fp->programs[fp->program_count++];
@@ -302,16 +304,17 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
 {
     if (!desc || !features || !p) return TL_ERROR_INVALID_ARGUMENT;
     tl_renderer_desc d;
-    tl_result res = tl__renderer_desc_resolve(desc, &d);
+    tl_result res = tl__renderer_desc_resolve(desc, &d, NULL);
     if (res != TL_OK) return res;
     tl__plan_input in;
     tl__plan_input_init(&d, features, &in);
     memset(p, 0, sizeof *p);
-    p->pub.mode = d.mode;
+    tl__target_defs(p->targets);
+    p->pub.mode = d.options.mode;
     p->pub.width = d.width;
     p->pub.height = d.height;
     /* the output is read after the frame; kept targets too, when the plan has them at all */
-    uint32_t kept = TL__BIT(TL_TARGET_OUTPUT) | (d.keep_targets & (TL__BIT(TL_TARGET_COUNT) - 1u));
+    uint32_t kept = TL__BIT(TL_TARGET_OUTPUT) | (d.options.keep_targets & (TL__BIT(TL_TARGET_COUNT) - 1u));
     p->pub.light_strategy = in.strategy;
     p->pub.lighting = in.lighting;
     p->pub.fresnel = in.fresnel;

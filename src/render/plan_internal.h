@@ -10,15 +10,14 @@
 #define TL__TILE_SIZE_DEFAULT 16u
 #define TL__TILED_CROSSOVER 32u
 
-/* Resolves zeroed fields to their defaults; TL_ERROR_INVALID_ARGUMENT for an enum out of range,
- * TL_ERROR_LIMIT for a size of 0 after defaults or over TL__MAX_SIZE (desc.c). */
-tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc *out);
+/* Resolves zeroed options to their defaults (desc.c; each pass resolves its own slice):
+ * TL_ERROR_INVALID_ARGUMENT for a value out of range, naming the option (or group) in *bad. */
+tl_result tl__options_resolve(const tl_renderer_options *in, tl_renderer_options *out, const char **bad);
+/* The same for a descriptor, with its size: TL_ERROR_LIMIT over TL__MAX_SIZE (*bad "size"). */
+tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc *out, const char **bad);
 
 /* The whole plan, with the application passes (plan.c). Pure: no GL, no allocation. */
 tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_set *features,
                          const tl__app_pass *apps, size_t app_count, tl__plan *plan);
-
-/* Index in tl__pass_table of the built-in pass named `name`, -1 for none (pass_table.c). */
-int tl__pass_table_find(const char *name);
 
 #endif

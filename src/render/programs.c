@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "renderer_internal.h"
+#include "device.h"
 #include "targets.h"
 
 #define TL__MAX_DEFINES 64
@@ -19,9 +19,12 @@ static const char *const tl__binding_defines[] = {TL__BINDING_LIST(TL__BINDING_S
 static size_t tl__define_list(const char *defines, char *buf, size_t buf_size, char units[][32], const char **out)
 {
     size_t n = 0;
+    const tl__target_def *defs[TL_TARGET_COUNT];
+    tl__target_defs(defs);
     for (size_t i = 0; i < TL__BINDING_DEFINE_COUNT; i++) out[n++] = tl__binding_defines[i];
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
-        snprintf(units[t], 32, "TL_UNIT_%s=%d", tl__targets[t].macro, t);
+        if (!defs[t]) continue;
+        snprintf(units[t], 32, "TL_UNIT_%s=%d", defs[t]->macro, t);
         out[n++] = units[t];
     }
     snprintf(buf, buf_size, "%s", defines);
@@ -34,7 +37,7 @@ static size_t tl__define_list(const char *defines, char *buf, size_t buf_size, c
     return n;
 }
 
-static tl_result tl__cache_grow(tl_renderer *r)
+static tl_result tl__cache_grow(tl__device *r)
 {
     if (r->cache_count < r->cache_capacity) return TL_OK;
     size_t cap = r->cache_capacity ? r->cache_capacity * 2 : 16;
@@ -47,7 +50,7 @@ static tl_result tl__cache_grow(tl_renderer *r)
     return TL_OK;
 }
 
-tl_result tl__program_get(tl_renderer *r, const char *label, const tl__program_src *src, const char *defines,
+tl_result tl__program_get(tl__device *r, const char *label, const tl__program_src *src, const char *defines,
                           GLuint *out)
 {
     char key[512];
@@ -84,7 +87,7 @@ tl_result tl__program_get(tl_renderer *r, const char *label, const tl__program_s
     return TL_OK;
 }
 
-void tl__program_cache_destroy(tl_renderer *r)
+void tl__program_cache_destroy(tl__device *r)
 {
     for (size_t i = 0; i < r->cache_count; i++) r->gl.DeleteProgram(r->cache[i].program);
     tl__free(&r->alloc, r->cache);

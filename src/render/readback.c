@@ -8,8 +8,10 @@
 
 /* The size protocol shared by every readback: *size gets `need`; a NULL buffer only asks, a buffer
  * smaller than `need` is TL_ERROR_LIMIT. Returns 1 when the caller should go on and read. */
-static int tl__size_check(tl_renderer *r, const void *dst, size_t *size, size_t need, const char *what, tl_result *res)
+static int tl__size_check(tl_renderer *rr, const void *dst, size_t *size, size_t need, const char *what,
+                          tl_result *res)
 {
+    tl__device *r = &rr->dev;
     *res = TL_OK;
     if (!size) {
         *res = tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: reading %s needs a size", what);
@@ -28,12 +30,12 @@ static int tl__size_check(tl_renderer *r, const void *dst, size_t *size, size_t 
 /* A target that shares its memory with one written later in the frame holds that one's pixels. */
 static tl_result tl__readable(tl_renderer *r, tl_target_id id)
 {
-    if ((unsigned)id >= TL_TARGET_COUNT || !r->targets[id].texture)
-        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: target %s is not in the plan", tl_target_name(id));
-    if (r->plan.shared & TL_TARGET_BIT(id))
-        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
+    if ((unsigned)id >= TL_TARGET_COUNT || !r->graph.targets[id].texture)
+        return tl__fail(&r->dev, TL_ERROR_INVALID_ARGUMENT, "renderer: target %s is not in the plan", tl_target_name(id));
+    if (r->graph.plan.shared & TL_TARGET_BIT(id))
+        return tl__fail(&r->dev, TL_ERROR_INVALID_ARGUMENT,
                         "renderer: target %s shares its memory with a target written later in the frame; list it in "
-                        "tl_renderer_desc.keep_targets to read it",
+                        "tl_renderer_options.keep_targets to read it",
                         tl_target_name(id));
     return TL_OK;
 }
@@ -43,10 +45,11 @@ tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *size)
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
     tl_result res;
     if (!tl__size_check(r, rgba, size, (size_t)r->desc.width * r->desc.height * 4, "the output", &res)) return res;
-    if ((res = tl__need_context(r, "tl_renderer_read_output")) != TL_OK) return res;
+    if ((res = tl__need_context(&r->dev, "tl_renderer_read_output")) != TL_OK) return res;
     char msg[256];
-    res = tl__target_read(&r->gl, &r->targets[TL_TARGET_OUTPUT], GL_RGBA, GL_UNSIGNED_BYTE, rgba, *size, msg, sizeof msg);
-    if (res != TL_OK) return tl__fail(r, res, "renderer: reading the output: %s", msg);
+    res = tl__target_read(&r->dev.gl, &r->graph.targets[TL_TARGET_OUTPUT], GL_RGBA, GL_UNSIGNED_BYTE, rgba, *size, msg,
+                          sizeof msg);
+    if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: reading the output: %s", msg);
     return TL_OK;
 }
 
@@ -54,12 +57,12 @@ tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *size)
 static tl_result tl__read_depth(tl_renderer *r, float *rgba, size_t n, char *msg, size_t msg_size)
 {
     float *d = rgba + n * 3;
-    tl_result res = tl__target_read(&r->gl, &r->targets[TL_TARGET_DEPTH], GL_DEPTH_COMPONENT, GL_FLOAT, d,
+    tl_result res = tl__target_read(&r->dev.gl, &r->graph.targets[TL_TARGET_DEPTH], GL_DEPTH_COMPONENT, GL_FLOAT, d,
                                     n * sizeof(float), msg, msg_size);
     if (res != TL_OK) return res;
     tl_projection pr; /* of the camera the depth was rendered with (set_scene: the scene's) */
-    const tl__camera_view *c = &r->frame_camera;
-    res = tl_projection_perspective(r->desc.depth_format, c->fov_y, (float)r->desc.width / (float)r->desc.height,
+    const tl__camera_view *c = &r->scene.frame_camera;
+    res = tl_projection_perspective(r->desc.options.depth_format, c->fov_y, (float)r->desc.width / (float)r->desc.height,
                                     c->near_z, c->far_z, &pr);
     if (res != TL_OK) {
         snprintf(msg, msg_size, "no camera has been resolved yet");
@@ -78,10 +81,10 @@ static tl_result tl__read_depth(tl_renderer *r, float *rgba, size_t n, char *msg
 /* RT0 decoded on the CPU with the codec: normal and gloss. */
 static tl_result tl__read_rt0(tl_renderer *r, float *rgba, size_t n, char *msg, size_t msg_size)
 {
-    uint8_t *bytes = (uint8_t *)tl__alloc_array(&r->alloc, n, 4);
+    uint8_t *bytes = (uint8_t *)tl__alloc_array(&r->dev.alloc, n, 4);
     if (!bytes) return TL_ERROR_OUT_OF_MEMORY;
-    int ten = r->desc.rt0 == TL_RT0_RGB10A2;
-    tl_result res = tl__target_read(&r->gl, &r->targets[TL_TARGET_RT0], GL_RGBA,
+    int ten = r->desc.options.rt0 == TL_RT0_RGB10A2;
+    tl_result res = tl__target_read(&r->dev.gl, &r->graph.targets[TL_TARGET_RT0], GL_RGBA,
                                     ten ? GL_UNSIGNED_INT_2_10_10_10_REV : GL_UNSIGNED_BYTE, bytes, n * 4, msg, msg_size);
     for (size_t i = 0; res == TL_OK && i < n; i++) {
         float nv[3], g;
@@ -95,7 +98,7 @@ static tl_result tl__read_rt0(tl_renderer *r, float *rgba, size_t n, char *msg, 
         memcpy(&rgba[4 * i], nv, sizeof nv);
         rgba[4 * i + 3] = g;
     }
-    tl__free(&r->alloc, bytes);
+    tl__free(&r->dev.alloc, bytes);
     return res;
 }
 
@@ -104,63 +107,77 @@ tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id id, float *rgba, 
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
     tl_result res = tl__readable(r, id);
     if (res != TL_OK) return res;
-    size_t n = (size_t)r->targets[id].width * r->targets[id].height; /* a reduced target: its first level */
+    const tl__target *t = &r->graph.targets[id];
+    size_t n = (size_t)t->width * t->height; /* a reduced target: its first level */
     if (!tl__size_check(r, rgba, size, n * 4 * sizeof(float), tl_target_name(id), &res)) return res;
-    if ((res = tl__need_context(r, "tl_renderer_read_target")) != TL_OK) return res;
+    if ((res = tl__need_context(&r->dev, "tl_renderer_read_target")) != TL_OK) return res;
     char msg[256] = "";
     if (id == TL_TARGET_DEPTH) res = tl__read_depth(r, rgba, n, msg, sizeof msg);
     else if (id == TL_TARGET_RT0) res = tl__read_rt0(r, rgba, n, msg, sizeof msg);
-    else res = tl__target_read(&r->gl, &r->targets[id], GL_RGBA, GL_FLOAT, rgba, *size, msg, sizeof msg);
-    if (res != TL_OK) return tl__fail(r, res, "renderer: reading %s: %s", tl_target_name(id), msg);
+    else res = tl__target_read(&r->dev.gl, t, GL_RGBA, GL_FLOAT, rgba, *size, msg, sizeof msg);
+    if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: reading %s: %s", tl_target_name(id), msg);
     return TL_OK;
 }
 
-static const tl__compiled_pass *tl__fxaa_pass(const tl_renderer *r, size_t *index)
+static const tl__compiled_pass *tl__fxaa_pass(const tl__graph *g, size_t *index)
 {
-    for (size_t i = 0; i < r->pass_count; i++)
-        if (r->passes[i].def && r->passes[i].def->id == TL_PASS_FXAA) {
+    for (size_t i = 0; i < g->pass_count; i++)
+        if (g->passes[i].def && g->passes[i].def->id == TL_PASS_FXAA) {
             *index = i;
-            return &r->passes[i];
+            return &g->passes[i];
         }
     return NULL;
+}
+
+/* The luma pass's program, and the caller's image in the output target. */
+static tl_result tl__fxaa_input(tl_renderer *r, const uint8_t *rgba)
+{
+    tl__device *dev = &r->dev;
+    tl__graph *g = &r->graph;
+    tl_result res = TL_OK;
+    if (!g->programs_ready && (res = tl__graph_programs(dev, g)) != TL_OK) return res;
+    if (!g->luma.programs[0] &&
+        (res = tl__program_get(dev, "luma", &tl__pass_luma.programs[0], "TL_OUT_LDR=0", &g->luma.programs[0])) != TL_OK)
+        return res;
+    tl__pixel_store saved;
+    tl__pixel_store_enter(&dev->gl, 1, &saved);
+    dev->gl.TextureSubImage2D(g->targets[TL_TARGET_OUTPUT].texture, 0, 0, 0, (GLsizei)r->desc.width,
+                              (GLsizei)r->desc.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
+    tl__pixel_store_leave(&dev->gl, &saved);
+    return TL_OK;
 }
 
 tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *out, size_t *size)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl__device *dev = &r->dev;
     tl_result res;
     if (!tl__size_check(r, out, size, (size_t)r->desc.width * r->desc.height * 4, "the FXAA image", &res)) return res;
-    if (!rgba) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: apply_fxaa needs an input image");
-    if ((res = tl__need_context(r, "tl_renderer_apply_fxaa")) != TL_OK) return res;
+    if (!rgba) return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: apply_fxaa needs an input image");
+    if ((res = tl__need_context(dev, "tl_renderer_apply_fxaa")) != TL_OK) return res;
     size_t fxaa_index = 0;
-    const tl__compiled_pass *fxaa = tl__fxaa_pass(r, &fxaa_index);
-    if (!fxaa || !r->luma.fbo) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: FXAA is off in this renderer");
-    if (!r->programs_ready && (res = tl__graph_programs(r)) != TL_OK) return res;
-    if (!r->luma.programs[0] &&
-        (res = tl__program_get(r, "luma", &tl__pass_luma.programs[0], "TL_OUT_LDR=0", &r->luma.programs[0])) != TL_OK)
-        return res;
-    const GladGLContext *gl = &r->gl;
-    tl__pixel_store saved;
-    tl__pixel_store_enter(gl, 1, &saved);
-    gl->TextureSubImage2D(r->targets[TL_TARGET_OUTPUT].texture, 0, 0, 0, (GLsizei)r->desc.width,
-                          (GLsizei)r->desc.height, GL_RGBA, GL_UNSIGNED_BYTE, rgba);
-    tl__pixel_store_leave(gl, &saved);
+    const tl__compiled_pass *fxaa = tl__fxaa_pass(&r->graph, &fxaa_index);
+    if (!fxaa || !r->graph.luma.fbo)
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: FXAA is off in this renderer");
+    if ((res = tl__fxaa_input(r, rgba)) != TL_OK) return res;
+    const GladGLContext *gl = &dev->gl;
     size_t offset = 0;
-    if (tl__stream_begin(gl, &r->stream, sizeof(tl__frame_ubo) + r->ubo_align, "buffer.frame") != TL_OK)
-        return tl__fail(r, TL_ERROR_GL, "renderer: could not map the per-frame buffer");
-    tl__frame_ubo *u = (tl__frame_ubo *)tl__stream_reserve(&r->stream, sizeof *u, r->ubo_align, &offset);
-    tl__frame_ubo_post(r, u);
-    tl__stream_bind_range(gl, &r->stream, GL_UNIFORM_BUFFER, TL__UBO_FRAME, offset, sizeof *u);
+    size_t need = sizeof(tl__frame_ubo) + dev->lim.ubo_align + tl__params_bytes(r, fxaa, 1);
+    if (tl__stream_begin(gl, &dev->stream, need, "buffer.frame") != TL_OK)
+        return tl__fail(dev, TL_ERROR_GL, "renderer: could not map the per-frame buffer");
+    tl__frame_ubo *u = (tl__frame_ubo *)tl__stream_reserve(&dev->stream, sizeof *u, dev->lim.ubo_align, &offset);
+    tl__frame_ubo_post(&r->desc, u);
+    tl__stream_bind_range(gl, &dev->stream, GL_UNIFORM_BUFFER, TL__UBO_FRAME, offset, sizeof *u);
     tl__frame_record rec;
     memset(&rec, 0, sizeof rec);
-    tl__state_enter(gl, &r->state, TL__TEXTURE_UNITS_USED);
-    tl__run_pass(r, &r->luma, &rec, 0, NULL);
-    tl__run_pass(r, fxaa, &rec, fxaa_index, NULL);
-    tl__state_reset(gl, &r->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED,
-                    TL__IMAGE_UNITS_USED);
-    tl__stream_end(gl, &r->stream);
+    tl__state_enter(gl, &dev->state, TL__TEXTURE_UNITS_USED);
+    tl__run_pass(r, &r->graph.luma, &rec, 0);
+    tl__run_pass(r, fxaa, &rec, fxaa_index);
+    tl__state_reset(gl, &dev->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED, TL__IMAGE_UNITS_USED);
+    tl__stream_end(gl, &dev->stream);
     res = tl_renderer_read_output(r, out, size);
     GLenum e = gl->GetError();
-    if (res == TL_OK && e != GL_NO_ERROR) return tl__fail(r, TL_ERROR_GL, "renderer: %s in FXAA", tl__gl_error_string(e));
+    if (res == TL_OK && e != GL_NO_ERROR)
+        return tl__fail(dev, TL_ERROR_GL, "renderer: %s in FXAA", tl__gl_error_string(e));
     return res;
 }

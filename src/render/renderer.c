@@ -1,14 +1,14 @@
-/* The renderer's public entry points: creation in the caller's context, scenes and lights,
- * application passes, re-planning, frames. The work is in the files below: plan.c (what a frame
- * is), graph.c (its GL objects), frame.c (running it), scene_upload.c, readback.c. */
+/* The renderer's public entry points: creation in the caller's context, scenes and lights, options,
+ * application passes, re-planning, frames. The work is in the modules: device.c, scene_upload.c
+ * (the scene on the GPU), lights.c, plan.c and graph.c (what a frame is, and its GL objects),
+ * frame.c (running it), readback.c. */
 #include <stdio.h>
 #include <string.h>
 
 #include "plan_internal.h"
 #include "renderer_internal.h"
-#include "scene_upload.h"
 
-const char *tl_renderer_last_error(const tl_renderer *r) { return r ? r->log.last_error : "no renderer"; }
+const char *tl_renderer_last_error(const tl_renderer *r) { return r ? r->dev.log.last_error : "no renderer"; }
 
 void tl_renderer_get_size(const tl_renderer *r, uint32_t *w, uint32_t *h)
 {
@@ -18,8 +18,8 @@ void tl_renderer_get_size(const tl_renderer *r, uint32_t *w, uint32_t *h)
 
 tl_result tl_renderer_get_plan(const tl_renderer *r, tl_frame_plan *plan)
 {
-    if (!r || !plan || !r->has_scene) return TL_ERROR_INVALID_ARGUMENT;
-    *plan = r->plan.pub;
+    if (!r || !plan || !r->scene.loaded) return TL_ERROR_INVALID_ARGUMENT;
+    *plan = r->graph.plan.pub;
     return TL_OK;
 }
 
@@ -29,7 +29,7 @@ static tl_result tl__plan_budget(tl_renderer *r, const tl__plan *plan)
     const tl_frame_plan *p = &plan->pub;
     size_t need = (size_t)p->allocated_bytes_per_pixel * r->desc.width * r->desc.height;
     if (!r->desc.max_target_bytes || need <= r->desc.max_target_bytes) return TL_OK;
-    return tl__fail(r, TL_ERROR_LIMIT,
+    return tl__fail(&r->dev, TL_ERROR_LIMIT,
                     "renderer: the targets of a %ux%u frame need %zu bytes (%.1f MiB, %u B/px), over max_target_bytes "
                     "%zu", r->desc.width, r->desc.height, need, (double)need / 1048576.0, p->allocated_bytes_per_pixel,
                     r->desc.max_target_bytes);
@@ -41,74 +41,41 @@ static tl_result tl__plan_budget(tl_renderer *r, const tl__plan *plan)
 static tl_result tl__replan(tl_renderer *r)
 {
     tl__plan plan;
-    tl_result res = tl__plan_build(&r->desc, &r->features, r->apps, r->app_count, &plan);
-    if (res != TL_OK) return tl__fail(r, res, "renderer: planning the frame failed");
+    tl__graph *g = &r->graph;
+    tl_result res = tl__plan_build(&r->desc, &r->scene.features, g->apps, g->app_count, &plan);
+    if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: planning the frame failed");
     if ((res = tl__plan_budget(r, &plan)) != TL_OK) return res;
-    int same = r->pass_count && memcmp(&plan, &r->plan, sizeof plan) == 0;
+    int same = g->pass_count && memcmp(&plan, &g->plan, sizeof plan) == 0;
     if (!same) {
-        tl__queries_drain(r); /* the ring's frames refer to the old passes */
-        r->plan = plan;
-        res = tl__graph_compile(r);
-    } else if (r->has_scene && !r->programs_ready) {
-        res = tl__graph_programs(r);
+        g->plan = plan;
+        res = tl__graph_compile(&r->dev, g, r->scene.loaded);
+        const tl_frame_plan *p = &g->plan.pub;
+        if (res == TL_OK && (p->targets & TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS)))
+            res = tl__tiles_configure(&r->dev, &r->lights.tiles, p->tile_size, p->tiles_x, p->tiles_y);
+        else if (res == TL_OK) /* no tiles in this plan: nothing kept for them */
+            tl__tiles_release(&r->dev, &r->lights.tiles);
+    } else if (r->scene.loaded && !g->programs_ready) {
+        res = tl__graph_programs(&r->dev, g);
     }
     if (res != TL_OK) return res;
-    tl__scene_vao(r);
+    tl__scene_vao(&r->dev, &r->scene, g->plan.pub.vertex_attributes);
     return TL_OK;
 }
 
 /* ---- create / destroy ----------------------------------------------------------------------- */
 
-static GLADapiproc tl__load_thunk(void *user, const char *name)
+static tl_result tl__create_objects(tl_renderer *r, const tl_renderer_desc *desc)
 {
-    tl_renderer *r = (tl_renderer *)user;
-    return (GLADapiproc)r->desc.get_proc_address(r->desc.get_proc_address_user, name);
-}
-
-/* What one storage block may hold (GL's limit, or the descriptor's lower one; at most 4 GiB - 1,
- * since the shaders index with uint), and so how many lights of 64 bytes the renderer takes. */
-static void tl__storage_limits(tl_renderer *r)
-{
-    GLint64 gl_max = 0;
-    r->gl.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &gl_max);
-    size_t m = gl_max > 0 ? (size_t)gl_max : (size_t)1 << 24; /* GL 4.3's minimum */
-    if (m > UINT32_MAX) m = UINT32_MAX;
-    if (r->desc.max_storage_block_bytes && r->desc.max_storage_block_bytes < m) m = r->desc.max_storage_block_bytes;
-    r->storage_max = m;
-    size_t lights = m / sizeof(tl__forward_light);
-    r->max_lights = lights < TL_RENDERER_MAX_LIGHTS ? lights : TL_RENDERER_MAX_LIGHTS;
-}
-
-static tl_result tl__create_objects(tl_renderer *r)
-{
-    const GladGLContext *gl = &r->gl;
-    GLint max_size = 0, ubo_align = 0, ssbo_align = 0;
-    gl->GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_size);
-    r->max_texture_size = max_size;
-    if ((GLint)r->desc.width > max_size || (GLint)r->desc.height > max_size)
-        return tl__fail(r, TL_ERROR_LIMIT, "renderer: %ux%u exceeds GL_MAX_TEXTURE_SIZE %d", r->desc.width,
-                        r->desc.height, max_size);
-    gl->GetIntegerv(GL_UNIFORM_BUFFER_OFFSET_ALIGNMENT, &ubo_align);
-    gl->GetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &ssbo_align);
-    r->ubo_align = ubo_align > 16 ? (size_t)ubo_align : 16;
-    r->ssbo_align = ssbo_align > 16 ? (size_t)ssbo_align : 16;
-    tl__storage_limits(r);
-    r->state.reversed = r->desc.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
-    tl__light_volumes_create(r);
-    gl->CreateVertexArrays(1, &r->vao_empty);
-    tl__gl_label(gl, GL_VERTEX_ARRAY, r->vao_empty, "vao.fullscreen");
-    gl->CreateSamplers(1, &r->sampler_linear);
-    tl__gl_label(gl, GL_SAMPLER, r->sampler_linear, "sampler.linear");
-    gl->SamplerParameteri(r->sampler_linear, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    gl->SamplerParameteri(r->sampler_linear, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    gl->SamplerParameteri(r->sampler_linear, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    gl->SamplerParameteri(r->sampler_linear, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    tl__queries_create(r);
+    tl_result res = tl__device_init(&r->dev, desc);
+    if (res != TL_OK) return res;
+    r->dev.state.reversed = r->desc.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
+    tl__light_volumes_create(&r->dev, &r->lights);
+    tl__queries_create(&r->dev, &r->queries, &r->lights.tiles);
     /* until a scene arrives: the plan of an empty scene (tone map and FXAA targets) */
-    tl_result res = tl__replan(r);
-    GLenum e = gl->GetError();
+    res = tl__replan(r);
+    GLenum e = r->dev.gl.GetError();
     if (res == TL_OK && e != GL_NO_ERROR)
-        res = tl__fail(r, TL_ERROR_GL, "renderer: %s while creating resources", tl__gl_error_string(e));
+        res = tl__fail(&r->dev, TL_ERROR_GL, "renderer: %s while creating resources", tl__gl_error_string(e));
     return res;
 }
 
@@ -124,32 +91,33 @@ tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out)
         return tl__logger_fail(&desc->logger, TL_ERROR_INVALID_ARGUMENT,
                                "renderer: the allocator needs both alloc and free");
     tl_renderer_desc d;
-    tl_result res = tl__renderer_desc_resolve(desc, &d);
-    if (res != TL_OK)
-        return tl__logger_fail(&desc->logger, res, "renderer: size %ux%u or an option is out of range (at most %u per side)",
-                               d.width, d.height, TL__MAX_SIZE);
+    const char *bad = "";
+    tl_result res = tl__renderer_desc_resolve(desc, &d, &bad);
+    if (res == TL_ERROR_LIMIT)
+        return tl__logger_fail(&desc->logger, res, "renderer: size %ux%u is over %u per side", d.width, d.height,
+                               TL__MAX_SIZE);
+    if (res != TL_OK) return tl__logger_fail(&desc->logger, res, "renderer: options.%s is out of range", bad);
     tl_renderer *r = (tl_renderer *)tl__calloc(&a, 1, sizeof *r);
     if (!r) return tl__logger_fail(&desc->logger, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory");
-    r->alloc = a;
     r->desc = d;
     r->desc.allocator = a;
-    r->log.logger = d.logger;
-    tl__context_check_init(r);
-    if (r->is_current && !tl__context_current(r)) { /* without a callback GL loading tells */
+    r->given = desc->options;
+    r->dev.alloc = a;
+    r->dev.log.logger = d.logger;
+    r->dev.get_proc_address = d.get_proc_address;
+    r->dev.get_proc_address_user = d.get_proc_address_user;
+    tl__context_check_init(&r->dev, d.is_current);
+    if (r->dev.is_current && !tl__context_current(&r->dev)) { /* without a callback GL loading tells */
         tl__logger_fail(&d.logger, TL_ERROR_GL, "renderer: tl_renderer_create: no GL context is current on this thread "
                                                 "(the renderer is created in the current context)");
         tl__free(&a, r);
         return TL_ERROR_GL;
     }
-    char msg[512];
-    res = tl__gl_load(&r->gl, tl__load_thunk, r, msg, sizeof msg);
-    if (res != TL_OK) {
-        tl__logger_fail(&d.logger, res, "renderer: %s", msg);
-        tl__free(&a, r);
+    if ((res = tl__device_load(&r->dev)) != TL_OK) {
+        tl__free(&a, r); /* no GL: nothing to free in it (the message went to the logger) */
         return res;
     }
-    res = tl__create_objects(r);
-    if (res != TL_OK) {
+    if ((res = tl__create_objects(r, &d)) != TL_OK) {
         tl_renderer_destroy(r); /* the message went to the logger with tl__fail */
         return res;
     }
@@ -161,76 +129,65 @@ void tl_renderer_destroy(tl_renderer *r)
 {
     if (!r) return;
     /* GL names mean other objects in another context: leave everything for a call that can */
-    if (tl__need_context(r, "tl_renderer_destroy") != TL_OK) return;
-    const GladGLContext *gl = &r->gl;
-    tl__scene_release(r);
-    tl__lights_release(r);
-    tl__graph_release(r);
-    tl__program_cache_destroy(r);
-    tl__light_volumes_destroy(r);
-    tl__queries_destroy(r);
-    tl__stream_destroy(gl, &r->stream);
-    if (r->vao_empty) gl->DeleteVertexArrays(1, &r->vao_empty);
-    if (r->sampler_linear) gl->DeleteSamplers(1, &r->sampler_linear);
-    tl_allocator a = r->alloc;
+    if (tl__need_context(&r->dev, "tl_renderer_destroy") != TL_OK) return;
+    tl__scene_release(&r->dev, &r->scene);
+    tl__lights_release(&r->dev, &r->lights);
+    tl__graph_release(&r->dev, &r->graph);
+    tl__queries_destroy(&r->dev, &r->queries);
+    tl__device_release(&r->dev);
+    tl_allocator a = r->dev.alloc;
     tl__free(&a, r);
 }
 
 /* ---- scene, lights, size -------------------------------------------------------------------- */
 
-/* The scene's camera, bounds and warnings replace the previous scene's. */
-static void tl__scene_frame_take(tl_renderer *r, const tl__scene_frame *f)
-{
-    memcpy(r->bounds_min, f->bounds_min, sizeof r->bounds_min);
-    memcpy(r->bounds_max, f->bounds_max, sizeof r->bounds_max);
-    r->has_bounds = f->has_bounds;
-    r->frame_camera = f->camera;
-    r->warned = f->warning[0] ? TL__WARNED_NEAR : 0;
-    if (f->warning[0]) tl__log_message(&r->log, TL_LOG_WARNING, "renderer: %s", f->warning);
-}
-
 tl_result tl_renderer_set_scene(tl_renderer *r, const tl_scene *s)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
-    tl_result res = tl__need_context(r, "tl_renderer_set_scene");
+    tl__device *dev = &r->dev;
+    tl_result res = tl__need_context(dev, "tl_renderer_set_scene");
     if (res != TL_OK) return res;
-    if (!s) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: no scene");
+    if (!s) return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: no scene");
     tl__scene_frame frame;
-    res = tl__scene_validate(r, s);
-    if (res == TL_OK) res = tl__scene_camera(r, s, &frame);
-    size_t kinds[TL__LIGHT_KINDS];
-    if (res == TL_OK) res = tl__lights_store(r, s->lights, s->light_count, kinds);
+    res = tl__scene_validate(dev, s);
+    if (res == TL_OK) res = tl__scene_camera(dev, s, r->desc.options.depth_format, &frame);
+    if (res == TL_OK) res = tl__lights_store(dev, &r->lights, s->lights, s->light_count);
     if (res != TL_OK) return res;
-    tl__queries_drain(r);
-    tl__scene_release(r);
+    tl__scene_release(dev, &r->scene);
     tl__pixel_store saved; /* textures upload with GL's unpack defaults; the application's come back */
-    tl__pixel_store_enter(&r->gl, 1, &saved);
-    res = tl__scene_upload(r, s);
-    tl__pixel_store_leave(&r->gl, &saved);
-    if (res != TL_OK) return res;
-    tl__scene_frame_take(r, &frame);
-    r->has_scene = 1;
-    r->programs_ready = 0;
-    if ((res = tl__replan(r)) != TL_OK) {
-        r->has_scene = 0;
+    tl__pixel_store_enter(&dev->gl, 1, &saved);
+    res = tl__scene_upload(dev, &r->scene, s);
+    tl__pixel_store_leave(&dev->gl, &saved);
+    if (res == TL_OK) res = tl__lights_objects(dev, &r->lights, s->object_count);
+    if (res != TL_OK) {
+        tl__scene_release(dev, &r->scene);
         return res;
     }
-    GLenum e = r->gl.GetError();
+    tl__scene_take_frame(dev, &r->scene, &frame);
+    tl__ambient_resolve(r->desc.options.ambient, r->scene.ambient, r->ambient);
+    r->graph.programs_ready = 0;
+    if ((res = tl__replan(r)) != TL_OK) {
+        r->scene.loaded = 0;
+        return res;
+    }
+    GLenum e = dev->gl.GetError();
     if (e != GL_NO_ERROR)
-        return tl__fail(r, TL_ERROR_GL, "renderer: %s while uploading the scene", tl__gl_error_string(e));
+        return tl__fail(dev, TL_ERROR_GL, "renderer: %s while uploading the scene", tl__gl_error_string(e));
     return TL_OK;
 }
 
 tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t count)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
-    size_t kinds[TL__LIGHT_KINDS];
-    tl_result res = tl__need_context(r, "tl_renderer_set_lights");
-    if (res == TL_OK) res = tl__lights_store(r, lights, count, kinds);
-    if (res != TL_OK || !r->has_scene) return res;
-    tl_scene_feature_set *f = &r->features;
-    int changed = (f->point_lights > 0) != (kinds[0] > 0) || (f->spot_lights > 0) != (kinds[1] > 0) ||
-                  (f->directional_lights > 0) != (kinds[2] > 0);
+    size_t before[TL__LIGHT_KINDS];
+    memcpy(before, r->lights.kinds, sizeof before);
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_set_lights");
+    if (res == TL_OK) res = tl__lights_store(&r->dev, &r->lights, lights, count);
+    if (res != TL_OK || !r->scene.loaded) return res;
+    const size_t *kinds = r->lights.kinds;
+    tl_scene_feature_set *f = &r->scene.features;
+    int changed = (before[0] > 0) != (kinds[0] > 0) || (before[1] > 0) != (kinds[1] > 0) ||
+                  (before[2] > 0) != (kinds[2] > 0);
     f->point_lights = kinds[0];
     f->spot_lights = kinds[1];
     f->directional_lights = kinds[2];
@@ -241,24 +198,63 @@ tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t 
 tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
-    tl_result need = tl__need_context(r, "tl_renderer_resize");
+    tl_result need = tl__need_context(&r->dev, "tl_renderer_resize");
     if (need != TL_OK) return need;
-    tl_renderer_desc d = r->desc;
-    d.width = width;
-    d.height = height;
-    GLint max_size = r->max_texture_size;
+    GLint max_size = r->dev.lim.max_texture_size;
     if (!width || !height || width > TL__MAX_SIZE || height > TL__MAX_SIZE || (GLint)width > max_size ||
         (GLint)height > max_size)
-        return tl__fail(r, width && height ? TL_ERROR_LIMIT : TL_ERROR_INVALID_ARGUMENT,
+        return tl__fail(&r->dev, width && height ? TL_ERROR_LIMIT : TL_ERROR_INVALID_ARGUMENT,
                         "renderer: size %ux%u outside 1..%d", width, height,
                         max_size < (GLint)TL__MAX_SIZE ? max_size : (int)TL__MAX_SIZE);
     if (width == r->desc.width && height == r->desc.height) return TL_OK;
-    tl_renderer_desc old = r->desc;
-    r->desc = d;
+    uint32_t old_w = r->desc.width, old_h = r->desc.height;
+    r->desc.width = width;
+    r->desc.height = height;
     tl_result res = tl__replan(r);
     /* refused before anything changed (the budget): the old size stays with the old plan */
-    if (res != TL_OK && r->plan.pub.width == old.width && r->plan.pub.height == old.height) r->desc = old;
+    const tl_frame_plan *p = &r->graph.plan.pub;
+    if (res != TL_OK && p->width == old_w && p->height == old_h) {
+        r->desc.width = old_w;
+        r->desc.height = old_h;
+    }
     return res;
+}
+
+/* ---- options ------------------------------------------------------------------------------- */
+
+/* The options of `d` in effect: the depth comparisons and the ambient term follow them. */
+static void tl__options_take(tl_renderer *r, const tl_renderer_desc *d)
+{
+    r->desc = *d;
+    r->dev.state.reversed = d->options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
+    tl__ambient_resolve(d->options.ambient, r->scene.ambient, r->ambient);
+}
+
+tl_result tl_renderer_set_options(tl_renderer *r, const tl_renderer_options *options)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_set_options");
+    if (res != TL_OK) return res;
+    if (!options) return tl__fail(&r->dev, TL_ERROR_INVALID_ARGUMENT, "renderer: set_options needs options");
+    tl_renderer_desc d = r->desc, old = r->desc;
+    const char *bad = "";
+    if ((res = tl__options_resolve(options, &d.options, &bad)) != TL_OK)
+        return tl__fail(&r->dev, res, "renderer: set_options: options.%s is out of range", bad);
+    tl__options_take(r, &d);
+    if ((res = tl__replan(r)) != TL_OK) { /* the old options, with the plan they had */
+        tl__options_take(r, &old);
+        tl__replan(r);
+        return res;
+    }
+    r->given = *options;
+    return TL_OK;
+}
+
+void tl_renderer_get_options(const tl_renderer *r, tl_renderer_options *options)
+{
+    if (!options) return;
+    if (r) *options = r->given;
+    else memset(options, 0, sizeof *options);
 }
 
 /* ---- application passes ---------------------------------------------------------------------- */
@@ -267,22 +263,27 @@ static tl_result tl__app_check(tl_renderer *r, const tl_app_pass_desc *d, int *a
 {
     const uint32_t writable = TL_TARGET_BIT(TL_TARGET_HDR) | TL_TARGET_BIT(TL_TARGET_OUTPUT);
     const uint32_t all = TL_TARGET_BIT(TL_TARGET_COUNT) - 1u;
+    tl__device *dev = &r->dev;
+    const tl__graph *g = &r->graph;
     if (!d->name || !d->name[0] || strlen(d->name) > 31 || !d->execute)
-        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: an application pass needs a name (1..31 characters) and execute");
-    for (size_t i = 0; i < r->app_count; i++)
-        if (strcmp(r->apps[i].name, d->name) == 0)
-            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: an application pass \"%s\" exists already", d->name);
-    if (r->app_count == TL_MAX_APP_PASSES)
-        return tl__fail(r, TL_ERROR_LIMIT, "renderer: at most %d application passes", TL_MAX_APP_PASSES);
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT,
+                        "renderer: an application pass needs a name (1..31 characters) and execute");
+    for (size_t i = 0; i < g->app_count; i++)
+        if (strcmp(g->apps[i].name, d->name) == 0)
+            return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: an application pass \"%s\" exists already",
+                            d->name);
+    if (g->app_count == TL_MAX_APP_PASSES)
+        return tl__fail(dev, TL_ERROR_LIMIT, "renderer: at most %d application passes", TL_MAX_APP_PASSES);
     if (!d->writes || (d->writes & ~writable) || (d->reads & ~all) || (d->reads & d->writes))
-        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
-                        "renderer: application pass \"%s\" may write only hdr and output, and not read what it writes", d->name);
-    if (!d->after == !d->before)
-        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: application pass \"%s\" needs exactly one of after and before",
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT,
+                        "renderer: application pass \"%s\" may write only hdr and output, and not read what it writes",
                         d->name);
+    if (!d->after == !d->before)
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT,
+                        "renderer: application pass \"%s\" needs exactly one of after and before", d->name);
     *anchor = tl__pass_table_find(d->after ? d->after : d->before);
     if (*anchor < 0)
-        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: application pass \"%s\": no pass \"%s\"", d->name,
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: application pass \"%s\": no pass \"%s\"", d->name,
                         d->after ? d->after : d->before);
     return TL_OK;
 }
@@ -290,13 +291,14 @@ static tl_result tl__app_check(tl_renderer *r, const tl_app_pass_desc *d, int *a
 tl_result tl_renderer_add_pass(tl_renderer *r, const tl_app_pass_desc *desc)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
-    tl_result res = tl__need_context(r, "tl_renderer_add_pass");
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_add_pass");
     if (res != TL_OK) return res;
-    if (!desc) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: no application pass");
+    if (!desc) return tl__fail(&r->dev, TL_ERROR_INVALID_ARGUMENT, "renderer: no application pass");
     int anchor = -1;
     res = tl__app_check(r, desc, &anchor);
     if (res != TL_OK) return res;
-    tl__app_pass *a = &r->apps[r->app_count++];
+    tl__graph *g = &r->graph;
+    tl__app_pass *a = &g->apps[g->app_count++];
     memset(a, 0, sizeof *a);
     a->desc = *desc;
     snprintf(a->name, sizeof a->name, "%s", desc->name);
@@ -305,37 +307,38 @@ tl_result tl_renderer_add_pass(tl_renderer *r, const tl_app_pass_desc *desc)
     a->anchor = anchor;
     a->after = desc->after != NULL;
     res = tl__replan(r);
-    if (res != TL_OK) r->app_count--; /* not added (over the target budget, say) */
+    if (res != TL_OK) g->app_count--; /* not added (over the target budget, say) */
     return res;
 }
 
 tl_result tl_renderer_remove_pass(tl_renderer *r, const char *name)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
-    tl_result res = tl__need_context(r, "tl_renderer_remove_pass");
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_remove_pass");
     if (res != TL_OK) return res;
-    for (size_t i = 0; name && i < r->app_count; i++)
-        if (strcmp(r->apps[i].name, name) == 0) {
-            memmove(&r->apps[i], &r->apps[i + 1], (r->app_count - i - 1) * sizeof r->apps[0]);
-            r->app_count--;
-            for (size_t k = i; k < r->app_count; k++) r->apps[k].desc.name = r->apps[k].name;
+    tl__graph *g = &r->graph;
+    for (size_t i = 0; name && i < g->app_count; i++)
+        if (strcmp(g->apps[i].name, name) == 0) {
+            memmove(&g->apps[i], &g->apps[i + 1], (g->app_count - i - 1) * sizeof g->apps[0]);
+            g->app_count--;
+            for (size_t k = i; k < g->app_count; k++) g->apps[k].desc.name = g->apps[k].name;
             return tl__replan(r);
         }
-    return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: no application pass \"%s\"", name ? name : "(null)");
+    return tl__fail(&r->dev, TL_ERROR_INVALID_ARGUMENT, "renderer: no application pass \"%s\"", name ? name : "(null)");
 }
 
 /* ---- frames ---------------------------------------------------------------------------------- */
 
 static tl_result tl__need_scene(tl_renderer *r)
 {
-    if (r->has_scene) return TL_OK;
-    return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: no scene (call tl_renderer_set_scene first)");
+    if (r->scene.loaded) return TL_OK;
+    return tl__fail(&r->dev, TL_ERROR_INVALID_ARGUMENT, "renderer: no scene (call tl_renderer_set_scene first)");
 }
 
 tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_frame_stats *stats)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
-    tl_result res = tl__need_context(r, "tl_renderer_render");
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_render");
     if (res == TL_OK) res = tl__need_scene(r);
     return res == TL_OK ? tl__frame(r, camera, NULL, stats) : res;
 }
@@ -344,17 +347,17 @@ tl_result tl_renderer_render_to(tl_renderer *r, const tl_camera *camera, const t
                                 tl_frame_stats *stats)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
-    tl_result res = tl__need_context(r, "tl_renderer_render_to");
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_render_to");
     if (res != TL_OK) return res;
-    if (!output) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: render_to needs an output");
+    if (!output) return tl__fail(&r->dev, TL_ERROR_INVALID_ARGUMENT, "renderer: render_to needs an output");
     res = tl__need_scene(r);
-    if (res == TL_OK) res = tl__output_check(r, output);
+    if (res == TL_OK) res = tl__output_check(&r->dev, output);
     return res == TL_OK ? tl__frame(r, camera, output, stats) : res;
 }
 
 tl_result tl_renderer_wait(tl_renderer *r, tl_frame_stats *stats)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
-    tl_result res = tl__need_context(r, "tl_renderer_wait");
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_wait");
     return res == TL_OK ? tl__frame_wait(r, stats) : res;
 }

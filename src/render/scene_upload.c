@@ -1,139 +1,63 @@
 /* Scene upload: validation, geometry buffers, the per-object instance ids, textures (sRGB or linear
- * by use), the materials' uniform blocks, lights. The renderer plans the frame afterwards. */
+ * by use), the materials' uniform blocks. The renderer plans the frame afterwards. */
 #include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 
-#include "renderer_internal.h"
-#include "scene_upload.h"
+#include "lights.h"
+#include "scene_gpu.h"
 
 _Static_assert(TL__MATERIAL_TEXTURES == TL__MATERIAL_TEXTURE_SLOTS, "one texture unit per material texture slot");
 
-void tl__scene_release(tl_renderer *r)
+void tl__scene_release(tl__device *dev, tl__scene_gpu *g)
 {
-    const GladGLContext *gl = &r->gl;
-    GLuint buffers[4] = {r->vbo_scene, r->ibo_scene, r->vbo_object_ids, r->ubo_materials};
+    const GladGLContext *gl = &dev->gl;
+    GLuint buffers[4] = {g->vbo, g->ibo, g->vbo_object_ids, g->ubo_materials};
     for (int i = 0; i < 4; i++)
         if (buffers[i]) gl->DeleteBuffers(1, &buffers[i]);
-    if (r->vao_scene) gl->DeleteVertexArrays(1, &r->vao_scene);
-    for (size_t i = 0; i < r->texture_count; i++) {
-        if (r->tex_srgb && r->tex_srgb[i]) gl->DeleteTextures(1, &r->tex_srgb[i]);
-        if (r->tex_linear && r->tex_linear[i]) gl->DeleteTextures(1, &r->tex_linear[i]);
+    if (g->vao) gl->DeleteVertexArrays(1, &g->vao);
+    for (size_t i = 0; i < g->texture_count; i++) {
+        if (g->tex_srgb && g->tex_srgb[i]) gl->DeleteTextures(1, &g->tex_srgb[i]);
+        if (g->tex_linear && g->tex_linear[i]) gl->DeleteTextures(1, &g->tex_linear[i]);
     }
-    void *arrays[] = {r->tex_srgb, r->tex_linear, r->objects, r->materials, r->visible, r->draw_keys, r->fwd_first,
-                      r->fwd_count};
-    for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) tl__free(&r->alloc, arrays[i]);
-    r->vao_scene = r->vbo_scene = r->ibo_scene = r->vbo_object_ids = r->ubo_materials = 0;
-    r->tex_srgb = r->tex_linear = NULL;
-    r->objects = NULL;
-    r->materials = NULL;
-    r->visible = NULL;
-    r->draw_keys = NULL;
-    r->fwd_first = r->fwd_count = NULL;
-    r->texture_count = r->object_count = r->material_count = 0;
-    r->has_scene = 0;
-}
-
-void tl__lights_release(tl_renderer *r)
-{
-    void *arrays[] = {r->lights, r->instances, r->view_lights, r->view_light_index, r->view_light_spheres, r->fwd_indices};
-    for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) tl__free(&r->alloc, arrays[i]);
-    r->lights = NULL;
-    r->instances = NULL;
-    r->view_lights = NULL;
-    r->view_light_index = NULL;
-    r->view_light_spheres = NULL;
-    r->fwd_indices = NULL;
-    r->fwd_index_capacity = r->light_count = 0;
+    void *arrays[] = {g->tex_srgb, g->tex_linear, g->objects, g->materials, g->visible, g->draw_keys};
+    for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) tl__free(&dev->alloc, arrays[i]);
+    memset(g, 0, sizeof *g);
 }
 
 /* The vertex array binds only the attributes the plan needs, plus the object id (location 4, one
  * per instance: draw i uses base instance i). */
-void tl__scene_vao(tl_renderer *r)
+void tl__scene_vao(tl__device *dev, tl__scene_gpu *g, uint32_t attributes)
 {
-    if (!r->vbo_scene) return;
-    const GladGLContext *gl = &r->gl;
-    if (r->vao_scene) gl->DeleteVertexArrays(1, &r->vao_scene);
-    gl->CreateVertexArrays(1, &r->vao_scene);
-    gl->VertexArrayVertexBuffer(r->vao_scene, 0, r->vbo_scene, 0, sizeof(tl_vertex));
-    gl->VertexArrayElementBuffer(r->vao_scene, r->ibo_scene);
+    if (!g->vbo || (g->vao && g->vao_attributes == attributes)) return;
+    const GladGLContext *gl = &dev->gl;
+    if (g->vao) gl->DeleteVertexArrays(1, &g->vao);
+    gl->CreateVertexArrays(1, &g->vao);
+    gl->VertexArrayVertexBuffer(g->vao, 0, g->vbo, 0, sizeof(tl_vertex));
+    gl->VertexArrayElementBuffer(g->vao, g->ibo);
     const GLuint offs[4] = {offsetof(tl_vertex, position), offsetof(tl_vertex, normal), offsetof(tl_vertex, uv),
                             offsetof(tl_vertex, tangent)};
     const GLint sizes[4] = {3, 3, 2, 4};
     for (GLuint a = 0; a < 4; a++) {
-        if (!(r->plan.pub.vertex_attributes & (1u << a))) continue;
-        gl->EnableVertexArrayAttrib(r->vao_scene, a);
-        gl->VertexArrayAttribFormat(r->vao_scene, a, sizes[a], GL_FLOAT, GL_FALSE, offs[a]);
-        gl->VertexArrayAttribBinding(r->vao_scene, a, 0);
+        if (!(attributes & (1u << a))) continue;
+        gl->EnableVertexArrayAttrib(g->vao, a);
+        gl->VertexArrayAttribFormat(g->vao, a, sizes[a], GL_FLOAT, GL_FALSE, offs[a]);
+        gl->VertexArrayAttribBinding(g->vao, a, 0);
     }
-    gl->VertexArrayVertexBuffer(r->vao_scene, 1, r->vbo_object_ids, 0, sizeof(uint32_t));
-    gl->VertexArrayBindingDivisor(r->vao_scene, 1, 1);
-    gl->EnableVertexArrayAttrib(r->vao_scene, 4);
-    gl->VertexArrayAttribIFormat(r->vao_scene, 4, 1, GL_UNSIGNED_INT, 0);
-    gl->VertexArrayAttribBinding(r->vao_scene, 4, 1);
-    tl__gl_label(gl, GL_VERTEX_ARRAY, r->vao_scene, "vao.scene");
-}
-
-/* The light count against what the light buffers hold, before the array is read. */
-static tl_result tl__lights_count(tl_renderer *r, size_t count)
-{
-    if (count <= r->max_lights) return TL_OK;
-    return tl__fail(r, TL_ERROR_LIMIT,
-                    "renderer: %zu lights exceed the limit of %zu (TL_RENDERER_MAX_LIGHTS, or a storage block of %zu "
-                    "bytes at %zu bytes a light)", count, r->max_lights, r->storage_max, sizeof(tl__forward_light));
-}
-
-tl_result tl__lights_store(tl_renderer *r, const tl_light *lights, size_t count, size_t kinds[TL__LIGHT_KINDS])
-{
-    tl_result res = tl__lights_count(r, count);
-    if (res != TL_OK) return res;
-    if (count && !lights) return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: %zu lights but no array", count);
-    memset(kinds, 0, TL__LIGHT_KINDS * sizeof kinds[0]);
-    for (size_t i = 0; i < count; i++) {
-        char what[32], msg[TL__CHECK_MESSAGE_SIZE];
-        snprintf(what, sizeof what, "lights[%zu]", i);
-        if ((res = tl__light_check(&lights[i], what, msg, sizeof msg)) != TL_OK)
-            return tl__fail(r, res, "renderer: %s", msg);
-        kinds[(lights[i].type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : lights[i].type) - 1]++;
-    }
-    size_t n = count ? count : 1;
-    tl_light *copy = (tl_light *)tl__alloc_array(&r->alloc, n, sizeof *copy);
-    tl__instance *inst = (tl__instance *)tl__alloc_array(&r->alloc, n, sizeof *inst);
-    tl__forward_light *fl = (tl__forward_light *)tl__alloc_array(&r->alloc, n, sizeof *fl);
-    uint32_t *vis = (uint32_t *)tl__alloc_array(&r->alloc, n, sizeof *vis);
-    float(*sph)[4] = (float(*)[4])tl__alloc_array(&r->alloc, n, sizeof *sph);
-    if (!copy || !inst || !fl || !vis || !sph) {
-        void *arrays[] = {copy, inst, fl, vis, sph};
-        for (size_t i = 0; i < 5; i++) tl__free(&r->alloc, arrays[i]);
-        return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for %zu lights", count);
-    }
-    if (count) memcpy(copy, lights, count * sizeof *copy);
-    /* negative light is clamped to none (docs/renderer-limits.md): -inf otherwise in FP16 targets;
-     * directions are made unit (in double: any finite non-zero vector) */
-    for (size_t i = 0; i < count; i++) {
-        double d[3], l2 = 0.0;
-        for (int k = 0; k < 3; k++) {
-            copy[i].color[k] = copy[i].color[k] > 0.0f ? copy[i].color[k] : 0.0f;
-            d[k] = copy[i].direction[k];
-            l2 += d[k] * d[k];
-        }
-        for (int k = 0; k < 3 && l2 > 0.0; k++) copy[i].direction[k] = (float)(d[k] / sqrt(l2));
-    }
-    tl__lights_release(r);
-    r->lights = copy;
-    r->instances = inst;
-    r->view_lights = fl;
-    r->view_light_index = vis;
-    r->view_light_spheres = sph;
-    r->light_count = count;
-    return TL_OK;
+    gl->VertexArrayVertexBuffer(g->vao, 1, g->vbo_object_ids, 0, sizeof(uint32_t));
+    gl->VertexArrayBindingDivisor(g->vao, 1, 1);
+    gl->EnableVertexArrayAttrib(g->vao, 4);
+    gl->VertexArrayAttribIFormat(g->vao, 4, 1, GL_UNSIGNED_INT, 0);
+    gl->VertexArrayAttribBinding(g->vao, 4, 1);
+    tl__gl_label(gl, GL_VERTEX_ARRAY, g->vao, "vao.scene");
+    g->vao_attributes = attributes;
 }
 
 /* Counts past what 32-bit indices, GL sizes and the light buffers take: checked before any array is
  * read (the renderer trusts an array to hold its count, not the count to be sane). */
-static tl_result tl__scene_counts(tl_renderer *r, const tl_scene *s)
+static tl_result tl__scene_counts(tl__device *r, const tl_scene *s)
 {
     const struct { size_t count, limit; const char *what; } c[] = {
         {s->vertex_count, UINT32_MAX, "vertices (indices are 32-bit)"},
@@ -147,11 +71,11 @@ static tl_result tl__scene_counts(tl_renderer *r, const tl_scene *s)
         if (c[i].count > c[i].limit)
             return tl__fail(r, TL_ERROR_LIMIT, "renderer: %zu %s exceed the limit of %zu", c[i].count, c[i].what,
                             c[i].limit);
-    size_t max_objects = r->storage_max / sizeof(tl__object_gpu); /* the frame's per-object storage block */
+    size_t max_objects = r->lim.storage_max / sizeof(tl__object_gpu); /* the frame's per-object storage block */
     if (s->object_count > max_objects)
         return tl__fail(r, TL_ERROR_LIMIT,
                         "renderer: %zu objects exceed the limit of %zu (a storage block of %zu bytes at %zu bytes an "
-                        "object)", s->object_count, max_objects, r->storage_max, sizeof(tl__object_gpu));
+                        "object)", s->object_count, max_objects, r->lim.storage_max, sizeof(tl__object_gpu));
     const struct { size_t count; const void *array; const char *what; } a[] = {
         {s->vertex_count, s->vertices, "vertices"}, {s->index_count, s->indices, "indices"},
         {s->object_count, s->objects, "objects"},   {s->material_count, s->materials, "materials"},
@@ -167,13 +91,13 @@ static tl_result tl__scene_counts(tl_renderer *r, const tl_scene *s)
 
 /* Textures (sizes against this context's GL_MAX_TEXTURE_SIZE, pixels present) and the materials'
  * indices into them, as scene/validate.h checks them for the loader too. */
-static tl_result tl__scene_parts(tl_renderer *r, const tl_scene *s)
+static tl_result tl__scene_parts(tl__device *r, const tl_scene *s)
 {
     char what[48], msg[TL__CHECK_MESSAGE_SIZE];
     tl_result res;
     for (size_t i = 0; i < s->texture_count; i++) {
         snprintf(what, sizeof what, "textures[%zu]", i);
-        if ((res = tl__texture_check(&s->textures[i], what, (uint32_t)r->max_texture_size, msg, sizeof msg)) != TL_OK)
+        if ((res = tl__texture_check(&s->textures[i], what, (uint32_t)r->lim.max_texture_size, msg, sizeof msg)) != TL_OK)
             return tl__fail(r, res, "renderer: %s", msg);
     }
     for (size_t i = 0; i < s->material_count; i++) {
@@ -184,10 +108,10 @@ static tl_result tl__scene_parts(tl_renderer *r, const tl_scene *s)
     return TL_OK;
 }
 
-tl_result tl__scene_camera(tl_renderer *r, const tl_scene *s, tl__scene_frame *out)
+tl_result tl__scene_camera(tl__device *r, const tl_scene *s, tl_depth_format depth, tl__scene_frame *out)
 {
     out->has_bounds = tl__scene_objects_bounds(s, out->bounds_min, out->bounds_max); /* zero bounds computed */
-    tl_result res = tl__camera_resolve(&s->camera, "scene.camera", r->desc.depth_format,
+    tl_result res = tl__camera_resolve(&s->camera, "scene.camera", depth,
                                        out->has_bounds ? out->bounds_min : NULL, out->has_bounds ? out->bounds_max : NULL,
                                        &out->camera, out->warning, sizeof out->warning);
     if (res != TL_OK) return tl__fail(r, res, "renderer: %s", out->warning);
@@ -195,11 +119,11 @@ tl_result tl__scene_camera(tl_renderer *r, const tl_scene *s, tl__scene_frame *o
     return TL_OK;
 }
 
-tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s)
+tl_result tl__scene_validate(tl__device *r, const tl_scene *s)
 {
     tl_result res = tl__scene_counts(r, s);
     if (res != TL_OK) return res;
-    if ((res = tl__lights_count(r, s->light_count)) != TL_OK) return res;
+    if ((res = tl__lights_count_check(r, s->light_count)) != TL_OK) return res;
     for (size_t i = 0; i < s->object_count; i++) {
         const tl_object *o = &s->objects[i];
         int no_material = o->material >= s->material_count && !(s->material_count == 0 && o->material == 0);
@@ -228,9 +152,9 @@ tl_result tl__scene_validate(tl_renderer *r, const tl_scene *s)
 }
 
 /* A texture tl__scene_parts accepted. */
-static GLuint tl__upload_texture(tl_renderer *r, const tl_texture *tx, int srgb)
+static GLuint tl__upload_texture(tl__device *dev, const tl_texture *tx, int srgb)
 {
-    const GladGLContext *gl = &r->gl;
+    const GladGLContext *gl = &dev->gl;
     GLuint id;
     gl->CreateTextures(GL_TEXTURE_2D, 1, &id);
     uint32_t levels = 1, m = tx->width > tx->height ? tx->width : tx->height;
@@ -249,11 +173,11 @@ static GLuint tl__upload_texture(tl_renderer *r, const tl_texture *tx, int srgb)
     return id;
 }
 
-static GLuint tl__slot_texture(tl_renderer *r, const tl_scene *s, uint32_t index, int srgb)
+static GLuint tl__slot_texture(tl__device *dev, tl__scene_gpu *g, const tl_scene *s, uint32_t index, int srgb)
 {
     if (index == TL__NO_TEXTURE) return 0;
-    GLuint *slot = srgb ? &r->tex_srgb[index] : &r->tex_linear[index];
-    if (!*slot) *slot = tl__upload_texture(r, &s->textures[index], srgb);
+    GLuint *slot = srgb ? &g->tex_srgb[index] : &g->tex_linear[index];
+    if (!*slot) *slot = tl__upload_texture(dev, &s->textures[index], srgb);
     return *slot;
 }
 
@@ -276,31 +200,31 @@ static void tl__material_record(const tl_material *m, int texture_mask, tl__mate
 
 /* Textures and one std140 record per material (a scene without materials: the zeroed one), with
  * their zero defaults resolved, in one immutable uniform buffer. */
-static tl_result tl__upload_materials(tl_renderer *r, const tl_scene *s)
+static tl_result tl__upload_materials(tl__device *dev, tl__scene_gpu *g, const tl_scene *s)
 {
-    size_t n = s->material_count ? s->material_count : 1;
-    r->material_stride = (sizeof(tl__material_ubo) + r->ubo_align - 1) / r->ubo_align * r->ubo_align;
-    uint8_t *records = (uint8_t *)tl__calloc(&r->alloc, n, r->material_stride);
-    if (!records) return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for %zu materials", n);
+    size_t n = s->material_count ? s->material_count : 1, align = dev->lim.ubo_align;
+    g->material_stride = (sizeof(tl__material_ubo) + align - 1) / align * align;
+    uint8_t *records = (uint8_t *)tl__calloc(&dev->alloc, n, g->material_stride);
+    if (!records) return tl__fail(dev, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for %zu materials", n);
     for (size_t i = 0; i < n; i++) {
         tl_material resolved;
         tl__material_defaults(s->material_count ? &s->materials[i] : &(tl_material){0}, &resolved);
         const tl_material *m = &resolved;
         int mask = 0;
-        r->materials[i].flags = m->flags;
+        g->materials[i].flags = m->flags;
         for (int k = 0; k < TL__MATERIAL_TEXTURES; k++) {
-            r->materials[i].textures[k] =
-                tl__slot_texture(r, s, tl__material_texture(m, k), tl__material_texture_slots[k].srgb);
-            if (r->materials[i].textures[k]) mask |= 1 << k;
+            g->materials[i].textures[k] =
+                tl__slot_texture(dev, g, s, tl__material_texture(m, k), tl__material_texture_slots[k].srgb);
+            if (g->materials[i].textures[k]) mask |= 1 << k;
         }
-        tl__material_record(m, mask, (tl__material_ubo *)(records + i * r->material_stride));
+        tl__material_record(m, mask, (tl__material_ubo *)(records + i * g->material_stride));
     }
-    const GladGLContext *gl = &r->gl;
-    gl->CreateBuffers(1, &r->ubo_materials);
-    gl->NamedBufferStorage(r->ubo_materials, (GLsizeiptr)(n * r->material_stride), records, 0);
-    tl__gl_label(gl, GL_BUFFER, r->ubo_materials, "buffer.materials");
-    tl__free(&r->alloc, records);
-    r->material_count = s->material_count;
+    const GladGLContext *gl = &dev->gl;
+    gl->CreateBuffers(1, &g->ubo_materials);
+    gl->NamedBufferStorage(g->ubo_materials, (GLsizeiptr)(n * g->material_stride), records, 0);
+    tl__gl_label(gl, GL_BUFFER, g->ubo_materials, "buffer.materials");
+    tl__free(&dev->alloc, records);
+    g->material_count = s->material_count;
     return TL_OK;
 }
 
@@ -313,50 +237,58 @@ static GLuint tl__static_buffer(const GladGLContext *gl, size_t bytes, const voi
     return b;
 }
 
-/* tl_renderer_desc.ambient: all zero keeps the scene's; otherwise it replaces it, negative = 0. */
-static void tl__ambient_resolve(const float desc[3], const float scene[3], float out[3])
+/* tl_renderer_options.ambient: all zero keeps the scene's; otherwise it replaces it, negative = 0. */
+void tl__ambient_resolve(const float options[3], const float scene[3], float out[3])
 {
-    int set = desc[0] != 0.0f || desc[1] != 0.0f || desc[2] != 0.0f;
-    for (int k = 0; k < 3; k++) out[k] = !set ? scene[k] : desc[k] < 0.0f ? 0.0f : desc[k];
+    int set = options[0] != 0.0f || options[1] != 0.0f || options[2] != 0.0f;
+    for (int k = 0; k < 3; k++) out[k] = !set ? scene[k] : options[k] < 0.0f ? 0.0f : options[k];
 }
 
-tl_result tl__scene_upload(tl_renderer *r, const tl_scene *s)
+tl_result tl__scene_upload(tl__device *dev, tl__scene_gpu *g, const tl_scene *s)
 {
+    tl_allocator *a = &dev->alloc;
     size_t no = s->object_count ? s->object_count : 1, nt = s->texture_count ? s->texture_count : 1;
-    r->objects = (tl_object *)tl__alloc_array(&r->alloc, no, sizeof *r->objects);
-    r->materials = (tl__gpu_material *)tl__calloc(&r->alloc, s->material_count ? s->material_count : 1,
-                                                  sizeof *r->materials);
-    r->tex_srgb = (GLuint *)tl__calloc(&r->alloc, nt, sizeof(GLuint));
-    r->tex_linear = (GLuint *)tl__calloc(&r->alloc, nt, sizeof(GLuint));
-    r->visible = (uint32_t *)tl__alloc_array(&r->alloc, no, sizeof(uint32_t));
-    r->draw_keys = (float *)tl__alloc_array(&r->alloc, no, sizeof(float));
-    r->fwd_first = (uint32_t *)tl__calloc(&r->alloc, no, sizeof(uint32_t));
-    r->fwd_count = (uint32_t *)tl__calloc(&r->alloc, no, sizeof(uint32_t));
-    uint32_t *ids = (uint32_t *)tl__alloc_array(&r->alloc, no, sizeof(uint32_t));
-    if (!r->objects || !r->materials || !r->tex_srgb || !r->tex_linear || !r->visible || !r->draw_keys ||
-        !r->fwd_first || !r->fwd_count || !ids) {
-        tl__free(&r->alloc, ids);
-        tl__scene_release(r);
-        return tl__fail(r, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for the scene");
+    g->objects = (tl_object *)tl__alloc_array(a, no, sizeof *g->objects);
+    g->materials = (tl__gpu_material *)tl__calloc(a, s->material_count ? s->material_count : 1, sizeof *g->materials);
+    g->tex_srgb = (GLuint *)tl__calloc(a, nt, sizeof(GLuint));
+    g->tex_linear = (GLuint *)tl__calloc(a, nt, sizeof(GLuint));
+    g->visible = (uint32_t *)tl__alloc_array(a, no, sizeof(uint32_t));
+    g->draw_keys = (float *)tl__alloc_array(a, no, sizeof(float));
+    uint32_t *ids = (uint32_t *)tl__alloc_array(a, no, sizeof(uint32_t));
+    if (!g->objects || !g->materials || !g->tex_srgb || !g->tex_linear || !g->visible || !g->draw_keys || !ids) {
+        tl__free(a, ids);
+        tl__scene_release(dev, g);
+        return tl__fail(dev, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for the scene");
     }
-    if (s->object_count) memcpy(r->objects, s->objects, s->object_count * sizeof *r->objects);
-    for (size_t i = 0; i < s->object_count; i++) tl__object_defaults(s, &r->objects[i]); /* zero: identity, computed */
-    r->object_count = s->object_count;
-    r->texture_count = s->texture_count;
-    tl_result res = tl__upload_materials(r, s);
+    if (s->object_count) memcpy(g->objects, s->objects, s->object_count * sizeof *g->objects);
+    for (size_t i = 0; i < s->object_count; i++) tl__object_defaults(s, &g->objects[i]); /* zero: identity, computed */
+    g->object_count = s->object_count;
+    g->texture_count = s->texture_count;
+    tl_result res = tl__upload_materials(dev, g, s);
     if (res != TL_OK) {
-        tl__free(&r->alloc, ids);
-        tl__scene_release(r);
+        tl__free(a, ids);
+        tl__scene_release(dev, g);
         return res;
     }
-    const GladGLContext *gl = &r->gl;
+    const GladGLContext *gl = &dev->gl;
     for (size_t i = 0; i < no; i++) ids[i] = (uint32_t)i;
-    r->vbo_scene = tl__static_buffer(gl, s->vertex_count * sizeof(tl_vertex), s->vertices, "buffer.vertices");
-    r->ibo_scene = tl__static_buffer(gl, s->index_count * 4u, s->indices, "buffer.indices");
-    r->vbo_object_ids = tl__static_buffer(gl, no * sizeof(uint32_t), ids, "buffer.object_ids");
-    tl__free(&r->alloc, ids);
-    r->camera = s->camera;
-    tl__ambient_resolve(r->desc.ambient, s->ambient, r->ambient);
-    tl_scene_features(s, &r->features);
+    g->vbo = tl__static_buffer(gl, s->vertex_count * sizeof(tl_vertex), s->vertices, "buffer.vertices");
+    g->ibo = tl__static_buffer(gl, s->index_count * 4u, s->indices, "buffer.indices");
+    g->vbo_object_ids = tl__static_buffer(gl, no * sizeof(uint32_t), ids, "buffer.object_ids");
+    tl__free(a, ids);
+    g->camera = s->camera;
+    memcpy(g->ambient, s->ambient, sizeof g->ambient);
+    tl_scene_features(s, &g->features);
+    g->loaded = 1;
     return TL_OK;
+}
+
+void tl__scene_take_frame(tl__device *dev, tl__scene_gpu *g, const tl__scene_frame *f)
+{
+    memcpy(g->bounds_min, f->bounds_min, sizeof g->bounds_min);
+    memcpy(g->bounds_max, f->bounds_max, sizeof g->bounds_max);
+    g->has_bounds = f->has_bounds;
+    g->frame_camera = f->camera;
+    g->warned = f->warning[0] ? TL__WARNED_NEAR : 0;
+    if (f->warning[0]) tl__log_message(&dev->log, TL_LOG_WARNING, "renderer: %s", f->warning);
 }

@@ -1,12 +1,13 @@
 /* Frame statistics without waiting: each measured frame's timer and samples-passed queries go into
- * a slot of a small ring and are read when they are ready, a few frames later; only
- * waiting for the frames (or synchronous statistics) blocks. The bytes-moved estimate of
+ * a slot of a small ring with a copy of what reading them needs of the plan, and are read when
+ * they are ready, a few frames later; only waiting for the frames (or synchronous statistics)
+ * blocks, and a plan may change while frames are in flight. The bytes-moved estimate of
  * docs/bandwidth.md is derived from each pass's declared targets and state, not per pass kind. */
 #define _POSIX_C_SOURCE 199309L
 #include <string.h>
 #include <time.h>
 
-#include "renderer_internal.h"
+#include "stats.h"
 
 double tl__now_ms(void)
 {
@@ -27,13 +28,14 @@ static void tl__label_queries(const GladGLContext *gl, const GLuint *q, size_t n
     for (size_t i = 0; i < n; i++) tl__gl_label(gl, GL_QUERY, q[i], label);
 }
 
-void tl__queries_create(tl_renderer *r)
+void tl__queries_create(tl__device *dev, tl__queries *r, tl__tiles *tiles)
 {
-    const GladGLContext *gl = &r->gl;
+    const GladGLContext *gl = &dev->gl;
     GLint bits = 0;
     gl->GetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &bits);
     r->timestamps = bits > 0;
     r->timestamp_bits = bits;
+    r->tiles = tiles;
     for (int s = 0; s < TL__QUERY_RING; s++) {
         tl__query_slot *q = &r->ring[s];
         if (r->timestamps) gl->CreateQueries(GL_TIMESTAMP, 2 * TL_PLAN_MAX_PASSES, &q->time[0][0]);
@@ -43,9 +45,9 @@ void tl__queries_create(tl_renderer *r)
     }
 }
 
-void tl__queries_destroy(tl_renderer *r)
+void tl__queries_destroy(tl__device *dev, tl__queries *r)
 {
-    const GladGLContext *gl = &r->gl;
+    const GladGLContext *gl = &dev->gl;
     for (int s = 0; s < TL__QUERY_RING; s++) {
         tl__query_slot *q = &r->ring[s];
         if (q->time[0][0]) gl->DeleteQueries(2 * TL_PLAN_MAX_PASSES, &q->time[0][0]);
@@ -56,7 +58,7 @@ void tl__queries_destroy(tl_renderer *r)
 
 /* ---- bytes moved ----------------------------------------------------------------------------- */
 
-static double tl__bpp(const tl_frame_plan *p, uint32_t bits)
+static double tl__bpp(const tl__slot_plan *p, uint32_t bits)
 {
     double b = 0.0;
     for (int t = 0; t < TL_TARGET_COUNT; t++)
@@ -75,7 +77,7 @@ static uint32_t tl__attribute_bytes(uint32_t attrs)
  * neighbourhood reads), the colour writes (twice when blended: read and write) + vertex fetch
  * (indices drawn x (4 + attribute bytes)) + light instances (52 B each). Texture and constant
  * reads of materials are left out (caches absorb them). */
-static double tl__pass_bytes(const tl_frame_plan *p, const tl__pass_decl *d, double frags, size_t indices,
+static double tl__pass_bytes(const tl__slot_plan *p, const tl__pass_decl *d, double frags, size_t indices,
                              size_t instances)
 {
     const uint32_t depth_bit = TL_TARGET_BIT(TL_TARGET_DEPTH);
@@ -90,10 +92,10 @@ static double tl__pass_bytes(const tl_frame_plan *p, const tl__pass_decl *d, dou
 
 /* ---- reading a slot ---------------------------------------------------------------------------- */
 
-static int tl__slot_ready(const tl_renderer *r, const tl__query_slot *q)
+static int tl__slot_ready(const tl__device *dev, const tl__queries *r, const tl__query_slot *q)
 {
-    const GladGLContext *gl = &r->gl;
-    size_t n = r->pass_count;
+    const GladGLContext *gl = &dev->gl;
+    size_t n = q->plan.pass_count;
     if (!n) return 1;
     GLuint a = GL_TRUE, b = GL_TRUE;
     if (r->timestamps) gl->GetQueryObjectuiv(q->time[n - 1][1], GL_QUERY_RESULT_AVAILABLE, &a);
@@ -101,71 +103,90 @@ static int tl__slot_ready(const tl_renderer *r, const tl__query_slot *q)
     return a && b;
 }
 
-static uint64_t tl__pass_queries(const tl_renderer *r, const tl__query_slot *q, size_t i, uint64_t *results)
+static uint64_t tl__pass_queries(const tl__device *dev, const tl__query_slot *q, size_t i, uint64_t *results)
 {
-    const tl__compiled_pass *cp = &r->passes[i];
-    size_t nq = cp->def && cp->def->query_count ? cp->def->query_count : 1;
+    const tl__pass_def *def = q->plan.def[i];
+    size_t nq = def && def->query_count ? def->query_count : 1;
     uint64_t sum = 0;
     for (size_t k = 0; k < nq; k++) {
         GLuint64 v = 0;
-        r->gl.GetQueryObjectui64v(q->samples[i][k], GL_QUERY_RESULT, &v);
+        dev->gl.GetQueryObjectui64v(q->samples[i][k], GL_QUERY_RESULT, &v);
         results[k] = v;
         sum += v;
     }
     return sum;
 }
 
-static double tl__pass_ms(const tl_renderer *r, const tl__query_slot *q, size_t i)
+static double tl__pass_ms(const tl__device *dev, const tl__queries *r, const tl__query_slot *q, size_t i)
 {
     if (!r->timestamps) return -1.0;
     GLuint64 begin = 0, end = 0;
-    r->gl.GetQueryObjectui64v(q->time[i][0], GL_QUERY_RESULT, &begin);
-    r->gl.GetQueryObjectui64v(q->time[i][1], GL_QUERY_RESULT, &end);
+    dev->gl.GetQueryObjectui64v(q->time[i][0], GL_QUERY_RESULT, &begin);
+    dev->gl.GetQueryObjectui64v(q->time[i][1], GL_QUERY_RESULT, &end);
     GLuint64 mask = r->timestamp_bits >= 64 ? ~(GLuint64)0 : (((GLuint64)1 << r->timestamp_bits) - 1);
     return (double)((end - begin) & mask) * 1e-6;
 }
 
 /* Reads a pending slot's results into its record (blocking when they are not ready). */
-static void tl__slot_read(tl_renderer *r, tl__query_slot *q)
+static void tl__slot_read(tl__device *dev, tl__queries *r, tl__query_slot *q)
 {
     tl_frame_stats *st = &q->rec.st;
-    const tl_frame_plan *p = &r->plan.pub;
-    for (size_t i = 0; i < r->pass_count; i++) {
-        const tl__compiled_pass *cp = &r->passes[i];
+    const tl__slot_plan *p = &q->plan;
+    for (size_t i = 0; i < p->pass_count; i++) {
+        const tl__pass_def *def = p->def[i];
         uint64_t results[TL__PASS_MAX_QUERIES] = {0};
-        uint64_t frags = tl__pass_queries(r, q, i, results);
-        if (cp->def && cp->def->collect) cp->def->collect(r, results, st);
-        double ms = tl__pass_ms(r, q, i), bytes = tl__pass_bytes(p, cp->decl, (double)frags, q->rec.indices[i],
-                                                                   q->rec.instances[i]);
-        if (cp->app >= 0) {
-            st->app_pass_ms[cp->app] = ms;
+        uint64_t frags = tl__pass_queries(dev, q, i, results);
+        if (def && def->collect) def->collect(results, st);
+        double ms = tl__pass_ms(dev, r, q, i),
+               bytes = tl__pass_bytes(p, &p->decl[i], (double)frags, q->rec.indices[i], q->rec.instances[i]);
+        if (p->app[i] >= 0) {
+            st->app_pass_ms[p->app[i]] = ms;
         } else {
-            st->pass_ms[cp->def->id] = ms;
-            st->pass_fragments[cp->def->id] = frags;
-            st->pass_bytes[cp->def->id] = bytes;
+            st->pass_ms[def->id] = ms;
+            st->pass_fragments[def->id] = frags;
+            st->pass_bytes[def->id] = bytes;
         }
         if (ms > 0.0) st->gpu_ms += ms;
         st->bytes_moved += bytes;
     }
+    if (p->light_lists) tl__tiles_collect(dev, r->tiles, st);
     st->gpu_valid = 1;
     q->pending = 0;
 }
 
 /* ---- the ring ---------------------------------------------------------------------------------- */
 
-tl__query_slot *tl__queries_slot(tl_renderer *r, uint64_t frame)
+static void tl__slot_take_plan(tl__query_slot *q, const tl__graph *g)
+{
+    tl__slot_plan *p = &q->plan;
+    const tl_frame_plan *fp = &g->plan.pub;
+    p->pass_count = g->pass_count;
+    for (size_t i = 0; i < g->pass_count; i++) {
+        p->def[i] = g->passes[i].def;
+        p->app[i] = (int8_t)g->passes[i].app;
+        p->decl[i] = *g->passes[i].decl;
+    }
+    memcpy(p->target_bytes_per_pixel, fp->target_bytes_per_pixel, sizeof p->target_bytes_per_pixel);
+    p->width = fp->width;
+    p->height = fp->height;
+    p->vertex_attributes = fp->vertex_attributes;
+    p->light_lists = (fp->targets & TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS)) != 0;
+}
+
+tl__query_slot *tl__queries_slot(tl__device *dev, tl__queries *r, const tl__graph *g, uint64_t frame)
 {
     tl__query_slot *q = &r->ring[frame % TL__QUERY_RING];
-    if (q->pending) tl__slot_read(r, q); /* a whole ring behind: the oldest frame must be read now */
+    if (q->pending) tl__slot_read(dev, r, q); /* a whole ring behind: the oldest frame must be read now */
+    tl__slot_take_plan(q, g);
     return q;
 }
 
-int tl__queries_newest(tl_renderer *r, tl_frame_stats *out)
+int tl__queries_newest(tl__device *dev, tl__queries *r, tl_frame_stats *out)
 {
     tl__query_slot *best = NULL;
     for (int s = 0; s < TL__QUERY_RING; s++) {
         tl__query_slot *q = &r->ring[s];
-        if (q->pending && tl__slot_ready(r, q)) tl__slot_read(r, q);
+        if (q->pending && tl__slot_ready(dev, r, q)) tl__slot_read(dev, r, q);
         if (!q->pending && q->rec.st.gpu_valid && (!best || q->rec.st.frame > best->rec.st.frame)) best = q;
     }
     if (!best) return 0;
@@ -173,8 +194,8 @@ int tl__queries_newest(tl_renderer *r, tl_frame_stats *out)
     return 1;
 }
 
-void tl__queries_drain(tl_renderer *r)
+void tl__queries_drain(tl__device *dev, tl__queries *r)
 {
     for (int s = 0; s < TL__QUERY_RING; s++)
-        if (r->ring[s].pending) tl__slot_read(r, &r->ring[s]);
+        if (r->ring[s].pending) tl__slot_read(dev, r, &r->ring[s]);
 }

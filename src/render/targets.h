@@ -1,8 +1,10 @@
-/* The render targets as one table: name, the macro shaders know it by (TL_UNIT_<M>, TL_OUT_<M>),
- * what it counts as, and its format in a configuration. */
+/* Render targets: each is declared by the pass that owns it, in that pass's file (tl__pass_def.targets):
+ * its name, the macro shaders know it by (TL_UNIT_<M>, TL_OUT_<M>), what it counts as, and its
+ * format and size in a configuration. Its id is its public tl_target_id, a stable index. */
 #ifndef TL_RENDER_TARGETS_H
 #define TL_RENDER_TARGETS_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "thinlight/renderer.h"
@@ -17,30 +19,36 @@ typedef enum tl__store {
 } tl__store;
 
 typedef struct tl__target_def {
+    tl_target_id id;
     const char *name;   /* tl_target_name */
     const char *macro;  /* "RT0": TL_UNIT_RT0 (texture unit = id), TL_OUT_RT0 (colour location) */
-    uint32_t format;    /* GL internal format; 0: depends on the options (tl__target_format) */
+    uint32_t format;    /* GL internal format, unless format_of decides */
+    uint32_t (*format_of)(const tl_renderer_options *o); /* the format in a configuration (NULL: format) */
+    uint32_t (*levels_of)(const tl_renderer_options *o); /* mip levels wanted (NULL: 1) */
+    size_t (*buffer_bytes)(size_t tiles); /* a storage buffer, not a texture: its bytes for a tile count */
     uint8_t store;      /* tl__store: what the technique stores, and as which part */
-    uint8_t buffer;     /* a storage buffer, not a texture: no attachment, unit or memory sharing */
     uint8_t shift;      /* its first level is the frame's size divided by 2^shift, rounded up */
     uint8_t linear;     /* sampled with bilinear filtering (of its first level) */
 } tl__target_def;
 
+/* The first fields of a definition: `{TL__TARGET(HDR, "hdr"), .format = GL_RGBA16F}`. */
+#define TL__TARGET(id_, name_) .id = TL_TARGET_##id_, .name = name_, .macro = #id_
+
 /* Most mip levels a target may have. */
 #define TL__MAX_LEVELS 8u
 
-extern const tl__target_def tl__targets[TL_TARGET_COUNT];
+/* Every target's definition, found in the pass table by id (NULL for an id no pass declares). */
+void tl__target_defs(const tl__target_def *out[TL_TARGET_COUNT]);
 
 /* The GL internal format of a target in a resolved configuration (0 for buffers). */
-uint32_t tl__target_format(const tl_renderer_desc *d, tl_target_id id);
+uint32_t tl__target_format(const tl__target_def *def, const tl_renderer_options *o);
 
-/* The size of a target's first level and its mip levels in a resolved configuration: a reduced
+/* The size of a target's first level and its mip levels for a frame of width x height: a reduced
  * target rounds up and is never 0 wide; levels stop before a level would be smaller than 1x1. */
-void tl__target_size(const tl_renderer_desc *d, tl_target_id id, uint32_t *width, uint32_t *height, uint32_t *levels);
+void tl__target_size(const tl__target_def *def, const tl_renderer_options *o, uint32_t width, uint32_t height,
+                     uint32_t *out_width, uint32_t *out_height, uint32_t *levels);
 
 /* Tiled light lists: entries each tile starts with (the buffer grows when a frame needs more). */
 #define TL__TILE_START_ENTRIES 32u
-/* Bytes of the light lists for a number of tiles: 4 counters, (offset, count) per tile, entries. */
-size_t tl__light_lists_bytes(size_t tiles);
 
 #endif

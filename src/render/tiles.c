@@ -5,7 +5,8 @@
  * read back a few frames later without waiting, and the buffer grows for the frames after. */
 #include <string.h>
 
-#include "renderer_internal.h"
+#include "lights.h"
+#include "targets.h"
 
 #define TL__TILE_HEADER_BYTES(lists) (16u + 8u * (size_t)(lists))
 
@@ -17,10 +18,9 @@ _Static_assert((16384 + 7) / 8 <= 65535, "compute groups across a side");
 
 static size_t tl__tile_count(const tl__tiles *t) { return (size_t)t->x * t->y; }
 
-void tl__tiles_release(tl_renderer *r)
+void tl__tiles_release(tl__device *dev, tl__tiles *t)
 {
-    const GladGLContext *gl = &r->gl;
-    tl__tiles *t = &r->tiles;
+    const GladGLContext *gl = &dev->gl;
     for (int i = 0; i < TL__QUERY_RING; i++)
         if (t->fences[i]) gl->DeleteSync(t->fences[i]);
     GLuint buffers[3] = {t->headers, t->entries, t->readback};
@@ -29,10 +29,9 @@ void tl__tiles_release(tl_renderer *r)
     memset(t, 0, sizeof *t);
 }
 
-static tl_result tl__tiles_entries(tl_renderer *r, size_t capacity)
+static tl_result tl__tiles_entries(tl__device *dev, tl__tiles *t, size_t capacity)
 {
-    const GladGLContext *gl = &r->gl;
-    tl__tiles *t = &r->tiles;
+    const GladGLContext *gl = &dev->gl;
     if (t->entries) gl->DeleteBuffers(1, &t->entries); /* queued frames keep what they read */
     gl->CreateBuffers(1, &t->entries);
     gl->NamedBufferStorage(t->entries, (GLsizeiptr)(capacity * sizeof(uint32_t)), NULL, 0);
@@ -43,52 +42,48 @@ static tl_result tl__tiles_entries(tl_renderer *r, size_t capacity)
 
 /* The headers: counters, then (first entry, count) per tile for each of `chunks` light chunks. One
  * storage block: TL_ERROR_LIMIT past it (a huge frame with many lights in view). */
-static tl_result tl__tiles_headers(tl_renderer *r, uint32_t chunks)
+static tl_result tl__tiles_headers(tl__device *dev, tl__tiles *t, uint32_t chunks)
 {
-    const GladGLContext *gl = &r->gl;
-    tl__tiles *t = &r->tiles;
+    const GladGLContext *gl = &dev->gl;
     size_t bytes = TL__TILE_HEADER_BYTES(tl__tile_count(t) * chunks);
-    if (bytes > r->storage_max)
-        return tl__fail(r, TL_ERROR_LIMIT,
+    if (bytes > dev->lim.storage_max)
+        return tl__fail(dev, TL_ERROR_LIMIT,
                         "renderer: tiled light lists of %ux%u tiles for %u chunks of %u lights need %zu bytes, over the "
-                        "storage block of %zu bytes", t->x, t->y, chunks, TL__CULL_CHUNK, bytes, r->storage_max);
+                        "storage block of %zu bytes", t->x, t->y, chunks, TL__CULL_CHUNK, bytes, dev->lim.storage_max);
     if (t->headers) gl->DeleteBuffers(1, &t->headers); /* queued frames keep what they read */
     gl->CreateBuffers(1, &t->headers);
-    gl->NamedBufferStorage(t->headers, (GLsizeiptr)TL__TILE_HEADER_BYTES(tl__tile_count(t) * chunks), NULL,
-                           GL_DYNAMIC_STORAGE_BIT);
+    gl->NamedBufferStorage(t->headers, (GLsizeiptr)bytes, NULL, GL_DYNAMIC_STORAGE_BIT);
     tl__gl_label(gl, GL_BUFFER, t->headers, "buffer.tiles.headers");
     t->chunks = chunks;
     return TL_OK;
 }
 
-/* The buffers for the plan's tiles (graph.c calls this when the plan has light lists). */
-tl_result tl__tiles_create(tl_renderer *r, uint32_t size, uint32_t x, uint32_t y, size_t capacity)
+tl_result tl__tiles_configure(tl__device *dev, tl__tiles *t, uint32_t size, uint32_t x, uint32_t y)
 {
-    const GladGLContext *gl = &r->gl;
-    tl__tiles_release(r);
-    tl__tiles *t = &r->tiles;
+    if (t->headers && t->size == size && t->x == x && t->y == y) return TL_OK; /* the same tiles: kept, grown */
+    const GladGLContext *gl = &dev->gl;
+    tl__tiles_release(dev, t);
     t->size = size;
     t->x = x;
     t->y = y;
-    tl_result res = tl__tiles_headers(r, 1);
+    tl_result res = tl__tiles_headers(dev, t, 1);
     if (res != TL_OK) return res;
     const GLbitfield flags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
     gl->CreateBuffers(1, &t->readback);
     gl->NamedBufferStorage(t->readback, TL__QUERY_RING * 16, NULL, flags);
     t->readback_map = (const uint32_t *)gl->MapNamedBufferRange(t->readback, 0, TL__QUERY_RING * 16, flags);
     tl__gl_label(gl, GL_BUFFER, t->readback, "buffer.tiles.readback");
-    if (!t->readback_map) return tl__fail(r, TL_ERROR_GL, "renderer: could not map the tile counters' read-back");
-    size_t max_entries = r->storage_max / sizeof(uint32_t);
-    return tl__tiles_entries(r, capacity < max_entries ? capacity : max_entries);
+    if (!t->readback_map) return tl__fail(dev, TL_ERROR_GL, "renderer: could not map the tile counters' read-back");
+    size_t max_entries = dev->lim.storage_max / sizeof(uint32_t), capacity = tl__tile_count(t) * TL__TILE_START_ENTRIES;
+    return tl__tiles_entries(dev, t, capacity < max_entries ? capacity : max_entries);
 }
 
 /* Counters of `frame` once the GPU has finished it: 1 with them in out[4], 0 when not (yet). */
-static int tl__tiles_counters(tl_renderer *r, uint64_t frame, int wait, uint32_t out[4])
+static int tl__tiles_counters(tl__device *dev, tl__tiles *t, uint64_t frame, int wait, uint32_t out[4])
 {
-    tl__tiles *t = &r->tiles;
     unsigned s = (unsigned)(frame % TL__QUERY_RING);
     if (!t->readback_map || t->fence_frame[s] != frame || !t->fences[s]) return 0;
-    GLenum w = r->gl.ClientWaitSync(t->fences[s], wait ? GL_SYNC_FLUSH_COMMANDS_BIT : 0, wait ? 1000000000u : 0);
+    GLenum w = dev->gl.ClientWaitSync(t->fences[s], wait ? GL_SYNC_FLUSH_COMMANDS_BIT : 0, wait ? 1000000000u : 0);
     if (w != GL_ALREADY_SIGNALED && w != GL_CONDITION_SATISFIED) return 0;
     memcpy(out, t->readback_map + 4 * s, 4 * sizeof(uint32_t));
     return 1;
@@ -96,74 +91,69 @@ static int tl__tiles_counters(tl_renderer *r, uint64_t frame, int wait, uint32_t
 
 /* Grows the entries buffer when a finished frame needed more than it holds (checked each frame,
  * for the frames of the ring that have finished: no waiting). */
-static tl_result tl__tiles_grow(tl_renderer *r)
+static tl_result tl__tiles_grow(tl__device *dev, tl__lights *l, uint64_t frame)
 {
-    tl__tiles *t = &r->tiles;
-    for (uint64_t f = r->frame_index > TL__QUERY_RING ? r->frame_index - TL__QUERY_RING : 1; f < r->frame_index; f++) {
+    tl__tiles *t = &l->tiles;
+    for (uint64_t f = frame > TL__QUERY_RING ? frame - TL__QUERY_RING : 1; f < frame; f++) {
         uint32_t c[4];
-        if (tl__tiles_counters(r, f, 0, c) && c[0] > t->needed) t->needed = c[0];
+        if (tl__tiles_counters(dev, t, f, 0, c) && c[0] > t->needed) t->needed = c[0];
     }
-    size_t local = r->view_light_count - r->view_dir_count;
+    size_t local = l->view_count - l->view_dir_count;
     t->frame_chunks = local > TL__CULL_CHUNK ? (uint32_t)((local + TL__CULL_CHUNK - 1) / TL__CULL_CHUNK) : 1u;
     if (t->frame_chunks > t->chunks) {
-        tl_result res = tl__tiles_headers(r, t->frame_chunks);
+        tl_result res = tl__tiles_headers(dev, t, t->frame_chunks);
         if (res != TL_OK) return res;
     }
     /* the entries are one storage block: they grow up to it; past it, the tiles whose lists do not
      * fit loop over every light of their chunk (a documented clamp: slower, nothing lost) */
-    size_t max_entries = r->storage_max / sizeof(uint32_t);
+    size_t max_entries = dev->lim.storage_max / sizeof(uint32_t);
     if (t->needed <= t->capacity || t->capacity >= max_entries) return TL_OK;
     size_t cap = t->capacity;
     while (cap < t->needed + t->needed / 2 && cap < max_entries) cap *= 2;
     if (cap > max_entries) {
         cap = max_entries;
-        tl__log_message(&r->log, TL_LOG_WARNING,
+        tl__log_message(&dev->log, TL_LOG_WARNING,
                 "renderer: tiled light lists need %zu entries; the storage block holds %zu: tiles that do not fit "
                 "loop over every light", t->needed, max_entries);
     }
-    return tl__tiles_entries(r, cap);
+    return tl__tiles_entries(dev, t, cap);
 }
 
-tl_result tl__tiles_prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec)
+tl_result tl__tiles_prepare(tl__device *dev, tl__lights *l, uint64_t frame, tl_frame_stats *st)
 {
-    tl__visible_lights(r, v, rec);
-    for (size_t i = 0; i < r->view_light_count; i++) /* the lights that reach the view, per type */
-        rec->st.lights_drawn[(int)r->view_lights[i].color_type[3]]++;
-    return tl__tiles_grow(r);
+    for (size_t i = 0; i < l->view_count; i++) /* the lights that reach the view, per type */
+        st->lights_drawn[(int)l->view[i].color_type[3]]++;
+    return tl__tiles_grow(dev, l, frame);
 }
 
-void tl__tiles_upload(tl_renderer *r)
+void tl__tiles_upload(tl__device *dev, tl__lights *l)
 {
-    const GladGLContext *gl = &r->gl;
-    tl__visible_lights_upload(r);
-    tl__stream_bind_buffer(gl, &r->stream, GL_SHADER_STORAGE_BUFFER, TL__SSBO_TILE_HEADERS, r->tiles.headers);
-    tl__stream_bind_buffer(gl, &r->stream, GL_SHADER_STORAGE_BUFFER, TL__SSBO_TILE_ENTRIES, r->tiles.entries);
+    tl__stream_bind_buffer(&dev->gl, &dev->stream, GL_SHADER_STORAGE_BUFFER, TL__SSBO_TILE_HEADERS, l->tiles.headers);
+    tl__stream_bind_buffer(&dev->gl, &dev->stream, GL_SHADER_STORAGE_BUFFER, TL__SSBO_TILE_ENTRIES, l->tiles.entries);
 }
 
 /* The light-cull pass: counters cleared, one invocation per tile, the counters copied for the
  * read-back behind a fence. */
-void tl__tiles_cull(tl_renderer *r, const tl__pass_ctx *ctx)
+void tl__tiles_cull(const tl__pass_ctx *ctx)
 {
-    const GladGLContext *gl = &r->gl;
-    tl__tiles *t = &r->tiles;
+    const GladGLContext *gl = ctx->gl;
+    tl__tiles *t = &ctx->lights->tiles;
     gl->ClearNamedBufferSubData(t->headers, GL_R32UI, 0, 16, GL_RED_INTEGER, GL_UNSIGNED_INT, NULL);
     gl->MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    tl__state_program(gl, &r->state, ctx->cp->programs[0]);
+    tl__state_program(gl, ctx->state, ctx->programs[0]);
     gl->DispatchCompute((t->x + 7) / 8, (t->y + 7) / 8, t->frame_chunks);
     gl->MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-    unsigned s = (unsigned)(r->frame_index % TL__QUERY_RING);
+    unsigned s = (unsigned)(ctx->frame % TL__QUERY_RING);
     gl->CopyNamedBufferSubData(t->headers, t->readback, 0, (GLintptr)(16 * s), 16);
     if (t->fences[s]) gl->DeleteSync(t->fences[s]);
     t->fences[s] = gl->FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
-    t->fence_frame[s] = r->frame_index;
-    ctx->rec->st.light_list_entries = 0; /* known once the GPU is done (tl__tiles_collect) */
+    t->fence_frame[s] = ctx->frame;
 }
 
-void tl__tiles_collect(tl_renderer *r, const uint64_t *results, tl_frame_stats *st)
+void tl__tiles_collect(tl__device *dev, tl__tiles *t, tl_frame_stats *st)
 {
-    (void)results;
     uint32_t c[4];
-    if (!tl__tiles_counters(r, st->frame, 1, c)) return;
+    if (!tl__tiles_counters(dev, t, st->frame, 1, c)) return;
     st->light_list_entries = c[0];
     st->tile_overflows = c[1];
     st->light_pairs = ((uint64_t)c[3] << 32) | c[2];

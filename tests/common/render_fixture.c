@@ -35,7 +35,7 @@ int ensure_context(void)
 tl_renderer *tl_test_render_once(const tl_scene *s, tl_renderer_desc d)
 {
     if (!ensure_context()) return NULL;
-    d.keep_targets = TL_TARGETS_ALL;
+    d.options.keep_targets = TL_TARGETS_ALL;
     d.get_proc_address = tl_context_proc_loader;
     d.get_proc_address_user = g_ctx;
     d.logger = tl_test_logger;

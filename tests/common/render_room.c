@@ -78,8 +78,8 @@ void build_room(test_scene *t)
 
 tl_renderer *make_renderer_desc(tl_renderer_desc d)
 {
-    d.keep_targets = TL_TARGETS_ALL;
-    d.synchronous_stats = 1;
+    d.options.keep_targets = TL_TARGETS_ALL;
+    d.options.synchronous_stats = 1;
     d.get_proc_address = tl_context_proc_loader;
     d.get_proc_address_user = g_ctx;
     d.logger = tl_test_logger;
@@ -90,6 +90,6 @@ tl_renderer *make_renderer_desc(tl_renderer_desc d)
 
 tl_renderer *make_renderer(uint32_t w, uint32_t h, tl_depth_format depth, int fullscreen, tl_fxaa_preset fxaa)
 {
-    return make_renderer_desc((tl_renderer_desc){.width = w, .height = h, .depth_format = depth,
-                                                 .fullscreen_lights = fullscreen, .fxaa = fxaa});
+    return make_renderer_desc((tl_renderer_desc){.width = w, .height = h, .options.depth_format = depth,
+                                                 .options.fullscreen_lights = fullscreen, .options.fxaa = fxaa});
 }

@@ -41,8 +41,8 @@ int modes_render(const tl_scene *s, tl_renderer_desc d, modes_frame *f)
 {
     memset(f, 0, sizeof *f);
     if (!ensure_context()) return 0;
-    d.keep_targets = TL_TARGETS_ALL;
-    d.synchronous_stats = 1;
+    d.options.keep_targets = TL_TARGETS_ALL;
+    d.options.synchronous_stats = 1;
     d.get_proc_address = tl_context_proc_loader;
     d.get_proc_address_user = g_ctx;
     d.logger = tl_test_logger;
@@ -54,24 +54,24 @@ int modes_render(const tl_scene *s, tl_renderer_desc d, modes_frame *f)
     int ok = tl_renderer_set_scene(r, s) == TL_OK && tl_renderer_add_pass(r, &ap) == TL_OK &&
              tl_renderer_render(r, NULL, NULL) == TL_OK && tl_renderer_wait(r, NULL) == TL_OK &&
              tl_renderer_get_plan(r, &f->plan) == TL_OK;
-    if (!ok) fprintf(stderr, "%s: %s\n", tl_render_mode_name(d.mode), tl_renderer_last_error(r));
+    if (!ok) fprintf(stderr, "%s: %s\n", tl_render_mode_name(d.options.mode), tl_renderer_last_error(r));
     f->w = d.width;
     f->h = d.height;
-    f->mode = d.mode;
-    f->depth_format = d.depth_format ? d.depth_format : TL_DEPTH_FORMAT_D24;
+    f->mode = d.options.mode;
+    f->depth_format = d.options.depth_format ? d.options.depth_format : TL_DEPTH_FORMAT_D24;
     f->hdr = ok ? read_target(r, TL_TARGET_HDR, n) : NULL;
     f->ldr = ok ? read_target(r, TL_TARGET_LDR, n) : NULL;
     f->out = ok ? malloc(n * 4) : NULL;
     if (f->out && tl_renderer_read_output(r, f->out, &(size_t){n * 4}) != TL_OK) ok = 0;
     f->depth = ok ? read_target(r, TL_TARGET_DEPTH, n) : NULL;
-    if (ok && d.mode == TL_MODE_FAT && s->light_count) { /* without lights nothing reads them */
+    if (ok && d.options.mode == TL_MODE_FAT && s->light_count) { /* without lights nothing reads them */
         f->position = read_target(r, TL_TARGET_FAT_POSITION, n);
         f->normal = read_target(r, TL_TARGET_FAT_NORMAL, n);
         f->albedo = read_target(r, TL_TARGET_FAT_ALBEDO, n);
         f->material = read_target(r, TL_TARGET_FAT_MATERIAL, n);
         ok = f->position && f->normal && f->albedo && f->material;
     }
-    if (ok && (d.mode == TL_MODE_THIN_LPP || d.mode == TL_MODE_THIN_DEFERRED))
+    if (ok && (d.options.mode == TL_MODE_THIN_LPP || d.options.mode == TL_MODE_THIN_DEFERRED))
         ok = (f->normal = read_target(r, TL_TARGET_RT0, n)) != NULL;
     tl_renderer_destroy(r);
     return ok && f->hdr && f->ldr && f->out && f->depth;

@@ -363,7 +363,7 @@ static void capture_view(void *user, const tl_app_pass_context *ctx)
 static tl_renderer *render_captured(const tl_scene *s, tl_renderer_desc d, float proj[16])
 {
     if (!ensure_context()) return NULL;
-    d.keep_targets = TL_TARGETS_ALL;
+    d.options.keep_targets = TL_TARGETS_ALL;
     d.get_proc_address = tl_context_proc_loader;
     d.get_proc_address_user = g_ctx;
     d.logger = tl_test_logger;
@@ -447,10 +447,11 @@ static int read_frame(tl_renderer *r, tl_renderer *r0, const tl_renderer_desc *d
     const size_t n = (size_t)d->width * d->height;
     f->w = d->width;
     f->h = d->height;
-    f->s = d->ssao;
-    f->hemisphere = d->ssao.method == TL_SSAO_HEMISPHERE;
-    f->clear = d->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ? 0.0f : 1.0f;
-    f->source = d->mode == TL_MODE_FAT ? SRC_FAT : d->mode == TL_MODE_FORWARD ? SRC_DEPTH_NORMALS : SRC_THIN;
+    f->s = d->options.ssao;
+    f->hemisphere = d->options.ssao.method == TL_SSAO_HEMISPHERE;
+    f->clear = d->options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ? 0.0f : 1.0f;
+    tl_render_mode mode = d->options.mode;
+    f->source = mode == TL_MODE_FAT ? SRC_FAT : mode == TL_MODE_FORWARD ? SRC_DEPTH_NORMALS : SRC_THIN;
     f->depth = tl_test_read_target(r, TL_TARGET_DEPTH, n);
     if (f->source == SRC_THIN) f->rt0 = tl_test_read_target(r, TL_TARGET_RT0, n);
     if (f->source == SRC_FAT) {
@@ -521,7 +522,7 @@ static void check_frame(const quads *q, tl_renderer_desc d, ssao_result *res)
     memset(&im, 0, sizeof im);
     tl_renderer *r = render_captured(&q->s, d, f.m);
     tl_renderer_desc off = d;
-    off.ssao = (tl_ssao_desc){0};
+    off.options.ssao = (tl_ssao_desc){0};
     tl_renderer *r0 = tl_test_render_once(&q->s, off);
     TL_CHECK(r && r0);
     if (r && r0) {
@@ -531,7 +532,7 @@ static void check_frame(const quads *q, tl_renderer_desc d, ssao_result *res)
         grey_through_rt1(q->mat[0].albedo, rt1_albedo);
         if (ok) {
             frame_positions(&f);
-            compare_pixels(&f, &im, d.mode == TL_MODE_THIN_DEFERRED ? rt1_albedo : NULL, res);
+            compare_pixels(&f, &im, d.options.mode == TL_MODE_THIN_DEFERRED ? rt1_albedo : NULL, res);
         }
     }
     free_frame(&f, &im);
@@ -561,10 +562,10 @@ TL_TEST(ssao_matches_cpu_estimator_every_mode)
             for (int z = 0; z < 2; z++)
                 for (int ps = 0; ps < 2; ps++) {
                     if (ps == 1 && z == 1) continue; /* the second set once per mode and method */
-                    tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m],
-                                          .depth_format = z ? TL_DEPTH_FORMAT_D32F_REVERSED : TL_DEPTH_FORMAT_D24};
-                    d.ssao = params[ps];
-                    d.ssao.method = (tl_ssao_method)method;
+                    tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m]};
+                    d.options.depth_format = z ? TL_DEPTH_FORMAT_D32F_REVERSED : TL_DEPTH_FORMAT_D24;
+                    d.options.ssao = params[ps];
+                    d.options.ssao.method = (tl_ssao_method)method;
                     ssao_result res;
                     check_frame(&q, d, &res);
                     printf("  %-10s %-13s %-13s set %d: raw %.3f, blur %.3f, HDR %.3f of the slack; reference "

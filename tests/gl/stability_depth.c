@@ -79,7 +79,7 @@ static depth_stats check_depth(const run *u, const plane_quad *q, size_t count, 
                                const char *label)
 {
     depth_stats st = {0};
-    tl_depth_format f = u->desc.depth_format ? u->desc.depth_format : TL_DEPTH_FORMAT_D24;
+    tl_depth_format f = u->desc.options.depth_format ? u->desc.options.depth_format : TL_DEPTH_FORMAT_D24;
     int rev = f == TL_DEPTH_FORMAT_D32F_REVERSED;
     const tl_projection *pr = &u->pr;
     size_t shown = 0;
@@ -163,7 +163,8 @@ TL_TEST(stability_positions_at_near_and_far_plane)
             char label[128];
             snprintf(label, sizeof label, "wall %s, %s", cases[ci].what, tl_depth_format_name(formats[f]));
             run u;
-            if (!run_scene(&u, (tl_renderer_desc){.width = 64, .height = 64, .depth_format = formats[f]}, &m.s, label))
+            if (!run_scene(&u, (tl_renderer_desc){.width = 64, .height = 64, .options.depth_format = formats[f]}, &m.s,
+                           label))
                 continue;
             check_all_targets_finite(&u, label);
             float s = 2.0f * d + 1.0f;
@@ -199,7 +200,7 @@ TL_TEST(stability_grazing_view_rays_positions)
         snprintf(label, sizeof label, "grazing rays, %s", tl_depth_format_name(formats[f]));
         run u;
         if (!run_scene(&u, (tl_renderer_desc){.width = 96, .height = 64,
-                                              .depth_format = formats[f]}, &m.s, label))
+                                              .options.depth_format = formats[f]}, &m.s, label))
             continue;
         check_all_targets_finite(&u, label);
         plane_quad q[2] = {{{0, 1, 0}, -1.0, {-2000, -1.5, -50}, {2000, -0.5, 1}},

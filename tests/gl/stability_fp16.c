@@ -96,7 +96,7 @@ TL_TEST(stability_10k_lights_fp16_accumulation)
         snprintf(label, sizeof label, "10^4 lights, %s, %s", tl_render_mode_name(modes[mi]), tl_light_strategy_name(strategy));
         run u, half_run;
         m.s.light_count = N / 2;
-        tl_renderer_desc d = {.mode = modes[mi], .width = W, .height = W, .light_strategy = strategy};
+        tl_renderer_desc d = {.options.mode = modes[mi], .width = W, .height = W, .options.light_strategy = strategy};
         if (!run_scene(&half_run, d, &m.s, "5000 lights")) continue;
         m.s.light_count = N;
         if (!run_scene(&u, d, &m.s, label)) {
@@ -255,8 +255,8 @@ TL_TEST(stability_intensity_fp16_max)
                 snprintf(label, sizeof label, "%s, %s%s", cases[ci].what, tl_render_mode_name(modes[mi]),
                          modes[mi] != TL_MODE_THIN_LPP ? "" : lb == TL_LIGHT_BUFFER_EXACT ? " (exact)" : " (compact)");
                 run u;
-                if (!run_scene(&u, (tl_renderer_desc){.mode = modes[mi], .width = W, .height = W,
-                                                      .light_buffer = (tl_light_buffer)lb}, &m.s, label))
+                if (!run_scene(&u, (tl_renderer_desc){.options.mode = modes[mi], .width = W, .height = W,
+                                                      .options.light_buffer = (tl_light_buffer)lb}, &m.s, label))
                     continue;
                 size_t bad = 0, n = count_nonfinite_all_targets(u.r, label, &bad);
                 TL_CHECK(n >= 3); /* depth, HDR, output at least */

@@ -12,14 +12,14 @@ tl_renderer *make_renderer(tl_renderer_desc d)
 {
     d.get_proc_address = tl_context_proc_loader;
     d.get_proc_address_user = g_ctx;
-    d.keep_targets = TL_TARGETS_ALL; /* every target is read back */
-    d.synchronous_stats = 1;
+    d.options.keep_targets = TL_TARGETS_ALL; /* every target is read back */
+    d.options.synchronous_stats = 1;
     d.logger = tl_test_logger;
-    if (!d.fxaa) d.fxaa = TL_FXAA_OFF;
+    if (!d.options.fxaa) d.options.fxaa = TL_FXAA_OFF;
     tl_renderer *r = NULL;
     tl_result res = tl_renderer_create(&d, &r);
     if (res != TL_OK) fprintf(stderr, "  tl_renderer_create %ux%u mode %s failed\n", d.width, d.height,
-                              tl_render_mode_name(d.mode));
+                              tl_render_mode_name(d.options.mode));
     return r;
 }
 
@@ -160,7 +160,8 @@ size_t count_nonfinite_all_targets(tl_renderer *r, const char *label, size_t *ba
 static tl_projection projection_of(const tl_renderer_desc *d, const tl_camera *c, uint32_t w, uint32_t h)
 {
     tl_projection p;
-    tl_result res = tl_projection_perspective(d->depth_format, c->fov_y, (float)w / (float)h, c->near_z, c->far_z, &p);
+    tl_result res = tl_projection_perspective(d->options.depth_format, c->fov_y, (float)w / (float)h, c->near_z,
+                                              c->far_z, &p);
     TL_CHECK(res == TL_OK);
     return p;
 }
@@ -201,7 +202,7 @@ int run_scene(run *u, tl_renderer_desc d, const tl_scene *s, const char *label)
     frame_read(u->r, &u->f);
     TL_CHECK(u->f.depth && u->f.hdr); /* RT0 and the light buffer only when the plan has lights */
     u->pr = projection_of(&d, &s->camera, u->f.w, u->f.h);
-    u->clear = d.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ? 0.0f : 1.0f;
+    u->clear = d.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ? 0.0f : 1.0f;
     return u->f.depth && u->f.hdr;
 }
 

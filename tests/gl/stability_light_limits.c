@@ -39,7 +39,8 @@ TL_TEST(stability_absurd_light_radius_and_intensity_finite)
                 snprintf(label, sizeof label, "%s radius %g intensity %g", tl_render_mode_name(modes[mi]), radii[ri],
                          intensities[ii]);
                 run u;
-                if (!run_scene(&u, (tl_renderer_desc){.width = 32, .height = 24, .mode = modes[mi]}, &m.s, label))
+                if (!run_scene(&u, (tl_renderer_desc){.width = 32, .height = 24, .options.mode = modes[mi]}, &m.s,
+                               label))
                     continue;
                 size_t bad = 0;
                 count_nonfinite_all_targets(u.r, label, &bad);

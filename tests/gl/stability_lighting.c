@@ -149,7 +149,7 @@ TL_TEST(stability_light_at_shaded_point)
                      tl_depth_format_name(formats[f]));
             run u;
             if (!run_scene(&u, (tl_renderer_desc){.width = 63, .height = 63,
-                                                  .depth_format = formats[f]}, &m.s, label))
+                                                  .options.depth_format = formats[f]}, &m.s, label))
                 continue;
             check_all_targets_finite(&u, label);
             light_check c = check_light_buffer(&u.f, &u.pr, u.clear, m.light, 1, label);
@@ -241,7 +241,7 @@ TL_TEST(stability_light_radius_huge)
             for (size_t i = 0; i < (size_t)64 * 64 * 4; i++) nonzero += u.f.diffuse[i] != 0.0f;
             TL_CHECK_EQ_U(nonzero, 0);
         }
-        if (run_scene(&full, (tl_renderer_desc){.width = 64, .height = 64, .fullscreen_lights = 1},
+        if (run_scene(&full, (tl_renderer_desc){.width = 64, .height = 64, .options.fullscreen_lights = 1},
                       &m.s, "full-screen")) {
             size_t differ = 0;
             for (size_t i = 0; i < (size_t)64 * 64 * 4; i++) differ += u.f.diffuse[i] != full.f.diffuse[i];

@@ -76,7 +76,8 @@ TL_TEST(stability_empty_scene)
             snprintf(label, sizeof label, "%s, %s", variant ? "empty object" : "no geometry",
                      tl_render_mode_name(modes[mi]));
             run u;
-            if (!run_scene(&u, (tl_renderer_desc){.mode = modes[mi], .width = 64, .height = 64, .fxaa = TL_FXAA_29},
+            if (!run_scene(&u, (tl_renderer_desc){.options.mode = modes[mi], .width = 64, .height = 64,
+                                                  .options.fxaa = TL_FXAA_29},
                            &m.s, label)) {
                 fprintf(stderr, "  RENDERER BUG (DESIGN 5: a scene without geometry must render): %s\n", label);
                 continue;
@@ -114,9 +115,10 @@ TL_TEST(stability_1x1_target)
         char label[64];
         snprintf(label, sizeof label, "1x1, %s", tl_render_mode_name(modes[mi]));
         run one, big, fx;
-        if (!run_scene(&one, (tl_renderer_desc){.mode = modes[mi], .width = 1, .height = 1}, &m.s, label)) continue;
+        if (!run_scene(&one, (tl_renderer_desc){.options.mode = modes[mi], .width = 1, .height = 1}, &m.s,
+                       label)) continue;
         check_all_targets_finite(&one, label);
-        if (run_scene(&big, (tl_renderer_desc){.mode = modes[mi], .width = 63, .height = 63}, &m.s, "63x63")) {
+        if (run_scene(&big, (tl_renderer_desc){.options.mode = modes[mi], .width = 63, .height = 63}, &m.s, "63x63")) {
             size_t c = (31 * 63 + 31) * 4, bad = 0;
             for (int ch = 0; ch < 3; ch++) {
                 double a = one.f.hdr[ch], b = big.f.hdr[c + ch];
@@ -128,7 +130,8 @@ TL_TEST(stability_1x1_target)
             TL_CHECK_EQ_U(bad, 0);
             run_free(&big);
         }
-        if (run_scene(&fx, (tl_renderer_desc){.mode = modes[mi], .width = 1, .height = 1, .fxaa = TL_FXAA_39}, &m.s,
+        if (run_scene(&fx, (tl_renderer_desc){.options.mode = modes[mi], .width = 1, .height = 1,
+                                              .options.fxaa = TL_FXAA_39}, &m.s,
                       "1x1 FXAA")) {
             uint8_t a[4], b[4];
             TL_CHECK(tl_renderer_read_output(one.r, a, &(size_t){4}) == TL_OK &&
@@ -178,7 +181,7 @@ TL_TEST(stability_largest_target)
         char label[64];
         snprintf(label, sizeof label, "%ux%u", w, h);
         run u;
-        if (!run_scene(&u, (tl_renderer_desc){.width = w, .height = h, .fxaa = TL_FXAA_29}, &m.s,
+        if (!run_scene(&u, (tl_renderer_desc){.width = w, .height = h, .options.fxaa = TL_FXAA_29}, &m.s,
                        label))
             continue;
         check_all_targets_finite(&u, label);

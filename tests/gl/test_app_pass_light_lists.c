@@ -51,7 +51,7 @@ static GLADapiproc fixture_load(void *user, const char *name)
 
 static tl_renderer *make_renderer(tl_light_strategy strategy, tl_render_mode mode, const tl_scene *s)
 {
-    tl_renderer_desc d = {.mode = mode, .light_strategy = strategy, .width = 160, .height = 96,
+    tl_renderer_desc d = {.options.mode = mode, .options.light_strategy = strategy, .width = 160, .height = 96,
                           .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
                           .logger = tl_test_logger};
     tl_renderer *r = NULL;
@@ -423,8 +423,10 @@ TL_TEST(tile_light_counts_match_cpu_cull)
         {TL_MODE_FAT, TL_DEPTH_FORMAT_D24, 16},      {TL_MODE_FORWARD, TL_DEPTH_FORMAT_D24, 16},
     };
     for (size_t k = 0; k < sizeof runs / sizeof runs[0]; k++) {
-        tl_renderer_desc d = {.mode = runs[k].mode, .light_strategy = TL_LIGHT_STRATEGY_TILED, .width = 160, .height = 96,
-                              .depth_format = runs[k].depth, .tile_size = runs[k].tile, .keep_targets = TL_TARGETS_ALL,
+        tl_renderer_desc d = {.options.mode = runs[k].mode, .options.light_strategy = TL_LIGHT_STRATEGY_TILED,
+                              .width = 160, .height = 96,
+                              .options.depth_format = runs[k].depth, .options.tile_size = runs[k].tile,
+                              .options.keep_targets = TL_TARGETS_ALL,
                               .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
                               .logger = tl_test_logger};
         tl_renderer *r = NULL;
@@ -455,7 +457,8 @@ TL_TEST(tile_light_counts_match_cpu_cull)
             compare_tiles(&v, s, p.headers, &res);
             printf("%-9s %-13s %2u px tiles: %zu tiles, %zu list entries (CPU cull: %zu sure, %zu at most); %zu tiles "
                    "below, %zu above; %zu lights reaching a tile not surely kept\n",
-                   tl_render_mode_name(d.mode), tl_depth_format_name(d.depth_format), plan.tile_size, res.tiles,
+                   tl_render_mode_name(d.options.mode), tl_depth_format_name(d.options.depth_format), plan.tile_size,
+                   res.tiles,
                    res.gpu_entries, res.sure_entries, res.maybe_entries, res.below, res.above, res.unreached);
             TL_CHECK(res.sure_entries > 0);
             TL_CHECK_EQ_U(res.below, 0);

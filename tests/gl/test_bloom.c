@@ -74,7 +74,7 @@ TL_TEST(bloom_plan_half_size_chain_rounds_up)
     for (size_t i = 0; i < sizeof sizes / sizeof sizes[0]; i++)
         for (uint32_t want = 1; want <= 8; want += 7) {
             uint32_t w = sizes[i][0], h = sizes[i][1];
-            tl_renderer_desc d = {.width = w, .height = h, .bloom = {.enabled = 1, .levels = want}};
+            tl_renderer_desc d = {.width = w, .height = h, .options.bloom = {.enabled = 1, .levels = want}};
             tl_frame_plan p;
             TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
             const tl_plan_target *t = &p.target_info[TL_TARGET_BLOOM];
@@ -120,16 +120,18 @@ TL_TEST(bloom_off_plans_nothing_in_every_mode)
     tl_scene_feature_set f = {.point_lights = 40, .directional_lights = 1, .has_specular = 1};
     for (int m = 0; m < 4; m++)
         for (int s = 0; s < 2; s++) {
-            tl_renderer_desc d = {.mode = k_modes[m], .light_strategy = k_strategies[s], .width = 320, .height = 180};
+            tl_renderer_desc d = {.options.mode = k_modes[m], .options.light_strategy = k_strategies[s], .width = 320,
+                                  .height = 180};
             tl_frame_plan off, off_fields, on;
             TL_CHECK(tl_frame_plan_build(&d, &f, &off) == TL_OK);
             tl_renderer_desc e = d;
-            e.bloom = (tl_bloom_desc){.enabled = 0, .threshold = 3, .knee = 0.2f, .intensity = 2, .scatter = 0.3f, .levels = 2};
+            e.options.bloom = (tl_bloom_desc){.enabled = 0, .threshold = 3, .knee = 0.2f, .intensity = 2,
+                                              .scatter = 0.3f, .levels = 2};
             TL_CHECK(tl_frame_plan_build(&e, &f, &off_fields) == TL_OK);
             TL_CHECK(memcmp(&off, &off_fields, sizeof off) == 0);
             TL_CHECK(!plan_has_pass(&off, TL_PASS_BLOOM) && !(off.targets & BIT(TL_TARGET_BLOOM)));
             TL_CHECK_EQ_U(off.target_info[TL_TARGET_BLOOM].bytes, 0);
-            e.bloom.enabled = 1;
+            e.options.bloom.enabled = 1;
             TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
             TL_CHECK(plan_has_pass(&on, TL_PASS_BLOOM) && (on.targets & BIT(TL_TARGET_BLOOM)));
             TL_CHECK_EQ_U(on.allocated_bytes, off.allocated_bytes + on.target_info[TL_TARGET_BLOOM].bytes);
@@ -143,7 +145,7 @@ TL_TEST(bloom_options_out_of_range_are_refused)
                                  {.enabled = 1, .scatter = 1.5f},  {.enabled = 1, .intensity = INFINITY},
                                  {.enabled = 1, .threshold = NAN}};
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
-        tl_renderer_desc d = {.bloom = bad[i]};
+        tl_renderer_desc d = {.options.bloom = bad[i]};
         tl_frame_plan p;
         TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
     }
@@ -163,11 +165,12 @@ TL_TEST(bloom_off_renders_identical_bytes_in_every_mode)
     uint8_t *a = malloc(n), *b = malloc(n), *c = malloc(n);
     for (int m = 0; m < 4 && a && b && c; m++)
         for (int st = 0; st < 2; st++) {
-            tl_renderer_desc d = {.mode = k_modes[m], .light_strategy = k_strategies[st], .width = w, .height = h};
+            tl_renderer_desc d = {.options.mode = k_modes[m], .options.light_strategy = k_strategies[st], .width = w,
+                                  .height = h};
             tl_renderer_desc e = d;
-            e.bloom = (tl_bloom_desc){.enabled = 0, .threshold = 0.1f, .intensity = 5, .levels = 3};
+            e.options.bloom = (tl_bloom_desc){.enabled = 0, .threshold = 0.1f, .intensity = 5, .levels = 3};
             tl_renderer_desc on = d;
-            on.bloom = (tl_bloom_desc){.enabled = 1, .threshold = 0.05f, .intensity = 1};
+            on.options.bloom = (tl_bloom_desc){.enabled = 1, .threshold = 0.05f, .intensity = 1};
             tl_renderer *r0 = renderer(d, s), *r1 = renderer(e, s), *r2 = renderer(on, s);
             size_t sa = n, sb = n, sc = n;
             if (r0 && r1 && r2) {
@@ -248,8 +251,9 @@ static void hdr_source_free(hdr_source *src)
 /* A renderer whose HDR, just before the bloom pass, is `rgba` (w x h); HDR and bloom kept. */
 static tl_renderer *bloom_renderer(const tl_scene *s, uint32_t w, uint32_t h, tl_bloom_desc bloom, hdr_source *src)
 {
-    tl_renderer *r = renderer((tl_renderer_desc){.width = w, .height = h, .fxaa = TL_FXAA_OFF, .bloom = bloom,
-                                                 .keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_BLOOM)},
+    tl_renderer *r = renderer((tl_renderer_desc){.width = w, .height = h, .options.fxaa = TL_FXAA_OFF,
+                                                 .options.bloom = bloom,
+                                                 .options.keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_BLOOM)},
                               s);
     tl_app_pass_desc ap = {.name = "test-image", .before = "bloom", .writes = BIT(TL_TARGET_HDR),
                            .execute = hdr_source_execute, .user = src};
@@ -445,10 +449,12 @@ TL_TEST(bloom_finite_at_fp16_max_and_on_tiny_targets)
     for (size_t i = 0; i < 2; i++)
         for (int m = 0; m < 4; m++) {
             uint32_t w = sizes[i][0], h = sizes[i][1];
-            tl_renderer *r = renderer((tl_renderer_desc){.mode = k_modes[m], .width = w, .height = h,
-                                                         .keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_BLOOM),
-                                                         .ssao = {.method = TL_SSAO_DISC}, .fog = {.mode = TL_FOG_DISTANCE},
-                                                         .dof = {.enabled = 1}, .bloom = {.enabled = 1, .threshold = -1}},
+            tl_renderer *r = renderer((tl_renderer_desc){.options.mode = k_modes[m], .width = w, .height = h,
+                                                         .options.keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_BLOOM),
+                                                         .options.ssao = {.method = TL_SSAO_DISC},
+                                                         .options.fog = {.mode = TL_FOG_DISTANCE},
+                                                         .options.dof = {.enabled = 1},
+                                                         .options.bloom = {.enabled = 1, .threshold = -1}},
                                       s);
             if (!r) continue;
             TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);

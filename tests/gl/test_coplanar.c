@@ -149,7 +149,7 @@ static uint8_t *render_ldr(const tl_scene *s, tl_renderer_desc d)
 {
     d.width = W;
     d.height = H;
-    d.fxaa = TL_FXAA_OFF;
+    d.options.fxaa = TL_FXAA_OFF;
     tl_renderer *r = tl_test_render_once(s, d);
     if (!r) return NULL;
     size_t n = (size_t)W * H * 4;
@@ -223,9 +223,9 @@ static void coplanar_against_fat(tl_depth_format depth)
     }
     static coplanar_scene t;
     build_coplanar(&t);
-    tl_renderer_desc base = {.depth_format = depth, .lighting = TL_LIGHTING_GGX};
+    tl_renderer_desc base = {.options.depth_format = depth, .options.lighting = TL_LIGHTING_GGX};
     tl_renderer_desc fd = base;
-    fd.mode = TL_MODE_FAT;
+    fd.options.mode = TL_MODE_FAT;
     uint8_t *fat = render_ldr(&t.s, fd);
     TL_CHECK(fat != NULL);
     if (!fat) return;
@@ -242,9 +242,9 @@ static void coplanar_against_fat(tl_depth_format depth)
     };
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         tl_renderer_desc d = base;
-        d.mode = cases[c].mode;
-        d.light_strategy = cases[c].strategy;
-        d.forward_no_depth_prepass = cases[c].no_prepass;
+        d.options.mode = cases[c].mode;
+        d.options.light_strategy = cases[c].strategy;
+        d.options.forward_no_depth_prepass = cases[c].no_prepass;
         uint8_t *img = render_ldr(&t.s, d);
         TL_CHECK(img != NULL);
         if (!img) continue;

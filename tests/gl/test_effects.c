@@ -3,8 +3,9 @@
  * exactly open beyond k_b + k_d from the wall; ssao_reference.c has every pixel against the CPU
  * estimator), finite on 1x1 and 7x3 targets
  * and with reversed D32F at 1:10^7; fog at a known distance against exp(-density d) in double and
- * at an infinite far plane; depth of field leaving its focus plane bit for bit; SSAO, fog and depth
- * of field off with their other fields set change no byte of the image. */
+ * at an infinite far plane; depth of field leaving its focus plane bit for bit; the vignette against
+ * its formula in double; SSAO, fog, depth of field and the vignette off with their other fields set
+ * change no byte of the image. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -29,12 +30,12 @@ static int plan_has_effects(const tl_frame_plan *p)
     for (size_t i = 0; i < p->pass_count; i++) {
         tl_pass id = p->passes[i].pass;
         if (id == TL_PASS_SSAO || id == TL_PASS_SSAO_BLUR || id == TL_PASS_SSAO_APPLY || id == TL_PASS_FOG ||
-            id == TL_PASS_DOF || id == TL_PASS_DOF_APPLY)
+            id == TL_PASS_DOF || id == TL_PASS_DOF_APPLY || id == TL_PASS_VIGNETTE)
             return 1;
     }
     for (size_t k = 0; k < p->program_count; k++)
         if (strstr(p->programs[k].defines, "SSAO") || strstr(p->programs[k].defines, "TL_AO_STORE")) return 1;
-    return (p->targets & (BIT(TL_TARGET_AO_RAW) | BIT(TL_TARGET_AO) | BIT(TL_TARGET_DOF))) != 0;
+    return (p->targets & (BIT(TL_TARGET_AO_RAW) | BIT(TL_TARGET_AO) | BIT(TL_TARGET_DOF) | BIT(TL_TARGET_VIGNETTE))) != 0;
 }
 
 /* Effects off: no pass, target or define, and the other fields of an effect that is off change
@@ -43,41 +44,48 @@ TL_TEST(effects_off_plan_nothing_on_plan_their_passes)
 {
     tl_scene_feature_set f = {.point_lights = 2, .directional_lights = 1, .has_specular = 1};
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
-        tl_renderer_desc d = {.width = 64, .height = 32, .mode = modes[m]};
+        tl_renderer_desc d = {.width = 64, .height = 32, .options.mode = modes[m]};
         tl_frame_plan base, noise, on;
         TL_CHECK(tl_frame_plan_build(&d, &f, &base) == TL_OK);
         TL_CHECK(!plan_has_effects(&base));
         tl_renderer_desc n = d;
-        n.ssao = (tl_ssao_desc){.samples = 9, .radius = 3, .exponent = 2};
-        n.fog = (tl_fog_desc){.density = 1, .noise = 0.5f};
-        n.dof = (tl_dof_desc){.aperture = 0.5f, .samples = 9};
+        n.options.ssao = (tl_ssao_desc){.samples = 9, .radius = 3, .exponent = 2};
+        n.options.fog = (tl_fog_desc){.density = 1, .noise = 0.5f};
+        n.options.dof = (tl_dof_desc){.aperture = 0.5f, .samples = 9};
+        n.options.vignette = (tl_vignette_desc){.strength = 1, .radius = 0.1f, .softness = 0.2f};
         TL_CHECK(tl_frame_plan_build(&n, &f, &noise) == TL_OK);
         TL_CHECK(memcmp(&base, &noise, sizeof base) == 0);
         tl_renderer_desc e = d;
-        e.ssao.method = TL_SSAO_DISC;
+        e.options.ssao.method = TL_SSAO_DISC;
         TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
         TL_CHECK((on.targets & BIT(TL_TARGET_AO)) && (on.targets & BIT(TL_TARGET_AO_RAW)));
         TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel + 4u); /* ao.raw and ao, R16F */
         e = d;
-        e.fog.mode = TL_FOG_HEIGHT;
+        e.options.fog.mode = TL_FOG_HEIGHT;
         TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
         TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel);
         TL_CHECK(plan_has_effects(&on));
         e = d;
-        e.dof.enabled = 1;
+        e.options.dof.enabled = 1;
         TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
         TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel + 8u);
+        e = d;
+        e.options.vignette.enabled = 1;
+        TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
+        TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel + 2u); /* its factor, R16F */
         /* forward without a depth pre-pass has no depth to estimate from: no SSAO */
         e = d;
-        e.ssao.method = TL_SSAO_DISC;
-        e.forward_no_depth_prepass = 1;
+        e.options.ssao.method = TL_SSAO_DISC;
+        e.options.forward_no_depth_prepass = 1;
         TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
         if (modes[m] == TL_MODE_FORWARD) TL_CHECK(!(on.targets & BIT(TL_TARGET_AO)));
     }
-    tl_renderer_desc bad = {.width = 8, .height = 8, .ssao = {.method = TL_SSAO_DISC, .samples = 65}};
+    tl_renderer_desc bad = {.width = 8, .height = 8, .options.ssao = {.method = TL_SSAO_DISC, .samples = 65}};
     tl_frame_plan p;
     TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
-    bad = (tl_renderer_desc){.width = 8, .height = 8, .fog = {.mode = TL_FOG_DISTANCE, .noise = 2.0f}};
+    bad = (tl_renderer_desc){.width = 8, .height = 8, .options.fog = {.mode = TL_FOG_DISTANCE, .noise = 2.0f}};
+    TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
+    bad = (tl_renderer_desc){.width = 8, .height = 8, .options.vignette = {.enabled = 1, .strength = 1.5f}};
     TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
 }
 
@@ -95,13 +103,15 @@ TL_TEST(effects_off_change_no_byte)
     const size_t n = (size_t)w * h;
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
         for (int st = TL_LIGHT_STRATEGY_VOLUMES; st <= TL_LIGHT_STRATEGY_TILED; st++) {
-            tl_renderer_desc plain = {.width = w, .height = h, .mode = modes[m], .light_strategy = (tl_light_strategy)st};
+            tl_renderer_desc plain = {.width = w, .height = h, .options.mode = modes[m],
+                                      .options.light_strategy = (tl_light_strategy)st};
             tl_renderer_desc off = plain;
-            off.ssao = (tl_ssao_desc){.samples = 9, .radius = 3, .bias = 0.1f, .falloff = 2, .exponent = 2,
+            off.options.ssao = (tl_ssao_desc){.samples = 9, .radius = 3, .bias = 0.1f, .falloff = 2, .exponent = 2,
                                       .blur_radius = 3, .diffuse = 1};
-            off.fog = (tl_fog_desc){.color = {1, 0.5f, 0.25f}, .density = 1, .height = 1, .height_falloff = 2,
+            off.options.fog = (tl_fog_desc){.color = {1, 0.5f, 0.25f}, .density = 1, .height = 1, .height_falloff = 2,
                                     .noise = 0.5f, .noise_scale = 2, .noise_speed = 1};
-            off.dof = (tl_dof_desc){.focus_distance = 3, .aperture = 0.5f, .max_radius = 0.5f, .samples = 9};
+            off.options.dof = (tl_dof_desc){.focus_distance = 3, .aperture = 0.5f, .max_radius = 0.5f, .samples = 9};
+            off.options.vignette = (tl_vignette_desc){.strength = 1, .radius = 0.1f, .softness = 0.2f};
             tl_renderer *a = tl_test_render_once(&q.s, plain), *b = tl_test_render_once(&q.s, off);
             TL_CHECK(a && b);
             uint8_t *oa = malloc(n * 4), *ob = malloc(n * 4);
@@ -144,8 +154,9 @@ TL_TEST(ssao_open_plane_is_one)
     for (int method = TL_SSAO_DISC; method <= TL_SSAO_HEMISPHERE; method++)
         for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
             for (size_t z = 0; z < 2; z++) {
-                tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m], .depth_format = depths[z]};
-                d.ssao.method = (tl_ssao_method)method;
+                tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m],
+                                      .options.depth_format = depths[z]};
+                d.options.ssao.method = (tl_ssao_method)method;
                 tl_renderer *r = tl_test_render_once(&q.s, d);
                 TL_CHECK(r);
                 if (!r) continue;
@@ -176,8 +187,8 @@ TL_TEST(ssao_inner_corner_darkens_bounded)
     const float radius = 0.5f;
     for (int method = TL_SSAO_DISC; method <= TL_SSAO_HEMISPHERE; method++)
         for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
-            tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m]};
-            d.ssao = (tl_ssao_desc){.method = (tl_ssao_method)method, .radius = radius, .falloff = radius};
+            tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m]};
+            d.options.ssao = (tl_ssao_desc){.method = (tl_ssao_method)method, .radius = radius, .falloff = radius};
             tl_renderer *r = tl_test_render_once(&q.s, d);
             TL_CHECK(r);
             if (!r) continue;
@@ -217,12 +228,13 @@ TL_TEST(effects_stats_count_effect_targets_apart)
                              BIT(TL_TARGET_FAT_NORMAL) | BIT(TL_TARGET_FAT_ALBEDO) | BIT(TL_TARGET_FAT_MATERIAL);
     const uint32_t light = BIT(TL_TARGET_LIGHT_DIFFUSE) | BIT(TL_TARGET_LIGHT_SPECULAR) | BIT(TL_TARGET_LIGHT_FRESNEL);
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
-        tl_renderer_desc d = {.width = 64, .height = 48, .mode = modes[m], .light_strategy = TL_LIGHT_STRATEGY_TILED,
-                              .synchronous_stats = 1, .lighting = TL_LIGHTING_GGX};
-        d.ssao.method = TL_SSAO_DISC;
-        d.dof.enabled = 1;
-        d.bloom.enabled = 1;
-        d.ssr.enabled = 1;
+        tl_renderer_desc d = {.width = 64, .height = 48, .options.mode = modes[m],
+                              .options.light_strategy = TL_LIGHT_STRATEGY_TILED,
+                              .options.synchronous_stats = 1, .options.lighting = TL_LIGHTING_GGX};
+        d.options.ssao.method = TL_SSAO_DISC;
+        d.options.dof.enabled = 1;
+        d.options.bloom.enabled = 1;
+        d.options.ssr.enabled = 1;
         tl_renderer *r = tl_test_render_once(&q.s, d);
         TL_CHECK(r != NULL);
         if (!r) continue;
@@ -252,11 +264,12 @@ TL_TEST(effects_finite_tiny_targets_and_extreme_depth)
             for (size_t fi = 0; fi < 2; fi++) {
                 q.s.camera.near_z = 1e-3f;
                 q.s.camera.far_z = fars[fi];
-                tl_renderer_desc d = {.width = sizes[s][0], .height = sizes[s][1], .mode = modes[m],
-                                      .depth_format = TL_DEPTH_FORMAT_D32F_REVERSED};
-                d.ssao.method = fi ? TL_SSAO_HEMISPHERE : TL_SSAO_DISC;
-                d.fog = (tl_fog_desc){.mode = fi ? TL_FOG_HEIGHT : TL_FOG_DISTANCE, .noise = 0.5f, .color = {1, 1, 1}};
-                d.dof.enabled = 1;
+                tl_renderer_desc d = {.width = sizes[s][0], .height = sizes[s][1], .options.mode = modes[m],
+                                      .options.depth_format = TL_DEPTH_FORMAT_D32F_REVERSED};
+                d.options.ssao.method = fi ? TL_SSAO_HEMISPHERE : TL_SSAO_DISC;
+                d.options.fog = (tl_fog_desc){.mode = fi ? TL_FOG_HEIGHT : TL_FOG_DISTANCE, .noise = 0.5f,
+                                              .color = {1, 1, 1}};
+                d.options.dof.enabled = 1;
                 tl_renderer *r = tl_test_render_once(&q.s, d);
                 TL_CHECK(r);
                 if (!r) continue;
@@ -289,9 +302,10 @@ TL_TEST(fog_known_depth_matches_formula_infinite_far_finite)
     wall_scene(&q, dist);
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
         for (size_t z = 0; z < 2; z++) {
-            tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m], .depth_format = depths[z]};
+            tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m], .options.depth_format = depths[z]};
             tl_renderer *plain = tl_test_render_once(&q.s, d);
-            d.fog = (tl_fog_desc){.mode = TL_FOG_DISTANCE, .density = density, .color = {fog[0], fog[1], fog[2]}};
+            d.options.fog = (tl_fog_desc){.mode = TL_FOG_DISTANCE, .density = density, .color = {fog[0], fog[1],
+                                                                                                 fog[2]}};
             tl_renderer *fogged = tl_test_render_once(&q.s, d);
             TL_CHECK(plain && fogged);
             if (!plain || !fogged) continue;
@@ -320,13 +334,57 @@ TL_TEST(fog_known_depth_matches_formula_infinite_far_finite)
         }
     /* looking away from the wall: background at the infinite far plane */
     q.s.camera.target[2] = 10.0f;
-    tl_renderer *r = tl_test_render_once(&q.s, (tl_renderer_desc){.width = 8, .height = 8, .fog = {.mode = TL_FOG_DISTANCE, .color = {fog[0], fog[1], fog[2]}}});
+    tl_renderer *r = tl_test_render_once(&q.s, (tl_renderer_desc){.width = 8, .height = 8,
+                                                                  .options.fog = {.mode = TL_FOG_DISTANCE,
+                                                                                  .color = {fog[0], fog[1], fog[2]}}});
     float *h = r ? tl_test_read_target(r, TL_TARGET_HDR, 64) : NULL;
     TL_CHECK(h);
     for (size_t i = 0; h && i < 64; i++)
         for (int c = 0; c < 3; c++) TL_CHECK(fabs(h[i * 4 + c] - fog[c]) <= fog[c] * TL_HALF_REL_STEP);
     free(h);
     tl_renderer_destroy(r);
+}
+
+/* ---- vignette ----------------------------------------------------------------------------------- */
+
+/* HDR with the vignette is HDR without it times 1 - s smoothstep(r, r + w, d), d the pixel centre's
+ * distance from the image's centre over the half-diagonal, evaluated in double: within the factor's
+ * R16F rounding and the blend's FP16 rounding (half a step each), in every mode and depth format. */
+TL_TEST(vignette_matches_formula_every_mode)
+{
+    quads q;
+    wall_scene(&q, 5.0f);
+    const tl_vignette_desc v = {.enabled = 1, .strength = 0.8f, .radius = 0.2f, .softness = 0.6f};
+    for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
+        for (size_t z = 0; z < 2; z++) {
+            tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m], .options.depth_format = depths[z]};
+            tl_renderer *plain = tl_test_render_once(&q.s, d);
+            d.options.vignette = v;
+            tl_renderer *dark = tl_test_render_once(&q.s, d);
+            float *a = plain ? tl_test_read_target(plain, TL_TARGET_HDR, (size_t)W * H) : NULL;
+            float *b = dark ? tl_test_read_target(dark, TL_TARGET_HDR, (size_t)W * H) : NULL;
+            TL_CHECK(a && b);
+            double worst = 0.0;
+            for (int y = 0; a && b && y < H; y++)
+                for (int x = 0; x < W; x++) {
+                    double u = (x + 0.5) / W * 2.0 - 1.0, w = (y + 0.5) / H * 2.0 - 1.0;
+                    double dist = sqrt(u * u + w * w) * sqrt(0.5), t = (dist - v.radius) / v.softness;
+                    t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+                    double f = 1.0 - v.strength * t * t * (3.0 - 2.0 * t);
+                    for (int c = 0; c < 3; c++) {
+                        size_t i = ((size_t)y * W + x) * 4 + c;
+                        double want = a[i] * f, tol = 2.0 * want * TL_HALF_REL_STEP + 1e-6;
+                        worst = fmax(worst, fabs(b[i] - want) / tol);
+                    }
+                }
+            printf("  vignette, %s, depth %d: worst error %.3f of the tolerance\n", tl_render_mode_name(modes[m]),
+                   (int)depths[z], worst);
+            TL_CHECK(worst <= 1.0);
+            free(a);
+            free(b);
+            tl_renderer_destroy(plain);
+            tl_renderer_destroy(dark);
+        }
 }
 
 /* ---- depth of field ------------------------------------------------------------------------------ */
@@ -342,11 +400,11 @@ TL_TEST(dof_focus_plane_unchanged)
     q.s.lights = q.light;
     q.s.light_count = 1;
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
-        tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m]};
+        tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m]};
         tl_renderer *plain = tl_test_render_once(&q.s, d);
-        d.dof = (tl_dof_desc){.enabled = 1, .aperture = 0.02f};
+        d.options.dof = (tl_dof_desc){.enabled = 1, .aperture = 0.02f};
         tl_renderer *focused = tl_test_render_once(&q.s, d);
-        d.dof.focus_distance = 5.0f;
+        d.options.dof.focus_distance = 5.0f;
         tl_renderer *near = tl_test_render_once(&q.s, d);
         TL_CHECK(plain && focused && near);
         if (!plain || !focused || !near) continue;
@@ -383,8 +441,8 @@ TL_TEST(dof_target_alpha_is_the_circle_of_confusion)
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++)
         for (int f = 0; f < 3; f++)
             for (int l = 0; l < 2; l++) {
-                tl_renderer_desc d = {.width = W, .height = H, .mode = modes[m],
-                                      .dof = {.enabled = 1, .aperture = aperture, .max_radius = largest[l],
+                tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m],
+                                      .options.dof = {.enabled = 1, .aperture = aperture, .max_radius = largest[l],
                                               .focus_distance = focus[f], .samples = 8}};
                 tl_renderer *r = tl_test_render_once(&q.s, d);
                 float *t = r ? tl_test_read_target(r, TL_TARGET_DOF, (size_t)W * H) : NULL;

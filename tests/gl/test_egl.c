@@ -232,9 +232,9 @@ static bool render_every_mode(tl_context_desc desc, const tl_scene *scene, frame
         tl_renderer *r = NULL;
         char err[1024] = "";
         /* every mode with light volumes, then with tiles */
-        tl_renderer_desc rd = {.mode = (tl_render_mode)(m % 4 + 1), .width = PX_W, .height = PX_H,
-                               .light_strategy = m < 4 ? TL_LIGHT_STRATEGY_VOLUMES : TL_LIGHT_STRATEGY_TILED,
-                               .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
+        tl_renderer_desc rd = {.options.mode = (tl_render_mode)(m % 4 + 1), .width = PX_W, .height = PX_H,
+                               .options.light_strategy = m < 4 ? TL_LIGHT_STRATEGY_VOLUMES : TL_LIGHT_STRATEGY_TILED,
+                               .options.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
                                .get_proc_address = tl_context_proc_loader, .get_proc_address_user = ctx,
                                .logger = {keep_error, err}};
         tl_result res = tl_renderer_create(&rd, &r);
@@ -242,7 +242,8 @@ static bool render_every_mode(tl_context_desc desc, const tl_scene *scene, frame
         if (res == TL_OK) res = tl_renderer_render(r, NULL, NULL);
         if (res == TL_OK) res = tl_renderer_read_output(r, out[m].ldr, &(size_t){sizeof out[m].ldr});
         if (res == TL_OK) res = tl_renderer_read_target(r, TL_TARGET_HDR, out[m].hdr, &(size_t){sizeof out[m].hdr});
-        if (res != TL_OK) fprintf(stderr, "%s: %s\n", tl_render_mode_name(rd.mode), r ? tl_renderer_last_error(r) : err);
+        if (res != TL_OK) fprintf(stderr, "%s: %s\n", tl_render_mode_name(rd.options.mode),
+                                  r ? tl_renderer_last_error(r) : err);
         TL_CHECK(res == TL_OK);
         ok = ok && res == TL_OK;
         /* a lit image, not a blank one: comparing two blank images would prove nothing */

@@ -137,11 +137,11 @@ TL_TEST(frame_graph_steady_frame_gl_calls)
     if (!s) return;
     for (int run = 0; run < 2 * (TL_MODE_COUNT_ - 1); run++) { /* every mode, then with every effect on */
         int mode = TL_MODE_THIN_LPP + run % (TL_MODE_COUNT_ - 1), fx = run >= TL_MODE_COUNT_ - 1;
-        tl_renderer_desc d = {.mode = (tl_render_mode)mode, .width = 160, .height = 90};
+        tl_renderer_desc d = {.options.mode = (tl_render_mode)mode, .width = 160, .height = 90};
         if (fx) {
-            d.ssao.method = TL_SSAO_DISC;
-            d.fog.mode = TL_FOG_DISTANCE;
-            d.dof.enabled = d.bloom.enabled = 1;
+            d.options.ssao.method = TL_SSAO_DISC;
+            d.options.fog.mode = TL_FOG_DISTANCE;
+            d.options.dof.enabled = d.options.bloom.enabled = 1;
         }
         tl_renderer *r = renderer(d, counting_loader, s);
         if (!r) continue;
@@ -303,9 +303,10 @@ TL_TEST(frame_graph_render_to_state_promise)
         for (int k = 0; k < 4; k++) {
             int dz = k % 2;
             tl_light_strategy ls = k < 2 ? TL_LIGHT_STRATEGY_VOLUMES : TL_LIGHT_STRATEGY_TILED;
-            tl_renderer *r = renderer((tl_renderer_desc){.mode = (tl_render_mode)mode, .depth_format = depths[dz],
-                                                         .width = 96, .height = 64, .light_strategy = ls,
-                                                         .tiled_shading = dz ? TL_TILED_SHADING_COMPUTE
+            tl_renderer *r = renderer((tl_renderer_desc){.options.mode = (tl_render_mode)mode,
+                                                         .options.depth_format = depths[dz],
+                                                         .width = 96, .height = 64, .options.light_strategy = ls,
+                                                         .options.tiled_shading = dz ? TL_TILED_SHADING_COMPUTE
                                                                              : TL_TILED_SHADING_FRAGMENT},
                                       NULL, s);
             if (!r) continue;
@@ -432,9 +433,10 @@ TL_TEST(frame_graph_app_pass_tints_hdr)
     const tl_depth_format depths[2] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
     for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++)
         for (int dz = 0; dz < 2; dz++) {
-            tl_renderer *r = renderer((tl_renderer_desc){.mode = (tl_render_mode)mode, .depth_format = depths[dz],
+            tl_renderer *r = renderer((tl_renderer_desc){.options.mode = (tl_render_mode)mode,
+                                                         .options.depth_format = depths[dz],
                                                          .width = w, .height = h,
-                                                         .keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_DEPTH)},
+                                                         .options.keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_DEPTH)},
                                       NULL, s);
             if (!r) continue;
             TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
@@ -558,7 +560,8 @@ TL_TEST(frame_graph_shared_targets_readback)
     const uint32_t w = 120, h = 80;
     size_t n = (size_t)w * h, size = n * 4 * sizeof(float);
     tl_renderer *shared = renderer((tl_renderer_desc){.width = w, .height = h}, NULL, s);
-    tl_renderer *kept = renderer((tl_renderer_desc){.width = w, .height = h, .keep_targets = TL_TARGETS_ALL}, NULL, s);
+    tl_renderer *kept = renderer((tl_renderer_desc){.width = w, .height = h, .options.keep_targets = TL_TARGETS_ALL},
+                                 NULL, s);
     if (!shared || !kept) return;
     tl_frame_plan ps, pk;
     TL_CHECK(tl_renderer_get_plan(shared, &ps) == TL_OK && tl_renderer_get_plan(kept, &pk) == TL_OK);
@@ -647,10 +650,10 @@ TL_TEST(frame_graph_plan_lifetimes_exhaustive)
                                           .directional_lights = (bits >> 2) & 1, .has_specular = (bits >> 3) & 1,
                                           .has_textures = (bits >> 4) & 1, .has_alpha_blend = (bits >> 5) & 1,
                                           .has_alpha_mask = (bits >> 6) & 1};
-                tl_renderer_desc d = {.mode = (tl_render_mode)mode, .width = 64, .height = 32,
-                                      .fxaa = (variant & 1) ? TL_FXAA_OFF : TL_FXAA_DEFAULT,
-                                      .keep_targets = (variant & 2) ? TL_TARGETS_ALL : 0,
-                                      .light_buffer = (bits >> 7) ? TL_LIGHT_BUFFER_COMPACT : TL_LIGHT_BUFFER_EXACT};
+                tl_renderer_desc d = {.options.mode = (tl_render_mode)mode, .width = 64, .height = 32,
+                                      .options.fxaa = (variant & 1) ? TL_FXAA_OFF : TL_FXAA_DEFAULT,
+                                      .options.keep_targets = (variant & 2) ? TL_TARGETS_ALL : 0,
+                                      .options.light_buffer = (bits >> 7) ? TL_LIGHT_BUFFER_COMPACT : TL_LIGHT_BUFFER_EXACT};
                 tl_frame_plan p;
                 TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
                 check_plan_memory(&p, (variant & 2) != 0, &bad);
@@ -672,8 +675,8 @@ TL_TEST(frame_graph_plan_lifetimes_exhaustive)
     for (int tiled = 0; tiled < 2; tiled++)
         for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++) {
             tl_frame_plan p;
-            tl_renderer_desc d = {.mode = (tl_render_mode)mode,
-                                  .light_strategy = tiled ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES};
+            tl_renderer_desc d = {.options.mode = (tl_render_mode)mode,
+                                  .options.light_strategy = tiled ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES};
             TL_CHECK(tl_frame_plan_build(&d, &crypt_features, &p) == TL_OK);
             printf("%-13s %-7s sum %2u B/px, allocated %2u B/px, most live at once %2u B/px\n",
                    tl_render_mode_name((tl_render_mode)mode), tiled ? "tiled" : "volumes", p.bytes_per_pixel,
@@ -683,20 +686,37 @@ TL_TEST(frame_graph_plan_lifetimes_exhaustive)
         }
 }
 
-/* The table is in execution order and names its passes once. */
+/* The table names every public pass and target id once, names and ids convert both ways, and a
+ * plan runs a pass once; the order is the table's, not the enum's (the vignette, appended to the
+ * enum, runs before the tone map). */
 TL_TEST(frame_graph_pass_table)
 {
     for (int i = 0; i < TL_PASS_COUNT; i++) {
+        tl_pass back = TL_PASS_COUNT;
         TL_CHECK(strcmp(tl_pass_name((tl_pass)i), "unknown") != 0);
+        TL_CHECK(tl_pass_from_name(tl_pass_name((tl_pass)i), &back) == TL_OK && back == (tl_pass)i);
         for (int j = 0; j < i; j++) TL_CHECK(strcmp(tl_pass_name((tl_pass)i), tl_pass_name((tl_pass)j)) != 0);
     }
+    for (int t = 0; t < TL_TARGET_COUNT; t++) {
+        tl_target_id back = TL_TARGET_COUNT;
+        TL_CHECK(tl_target_from_name(tl_target_name((tl_target_id)t), &back) == TL_OK && back == (tl_target_id)t);
+    }
     TL_CHECK(strcmp(tl_pass_name(TL_PASS_COUNT), "unknown") == 0);
+    TL_CHECK(tl_pass_from_name("no such pass", &(tl_pass){0}) == TL_ERROR_INVALID_ARGUMENT);
+    TL_CHECK(tl_target_from_name("unknown", &(tl_target_id){0}) == TL_ERROR_INVALID_ARGUMENT);
     tl_scene_feature_set f = {.point_lights = 1, .has_alpha_blend = 1};
     for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++) {
         tl_frame_plan p;
-        TL_CHECK(tl_frame_plan_build(&(tl_renderer_desc){.mode = (tl_render_mode)mode}, &f, &p) == TL_OK);
-        for (size_t i = 1; i < p.pass_count; i++) TL_CHECK(p.passes[i - 1].pass < p.passes[i].pass);
-        for (size_t i = 0; i < p.pass_count; i++) TL_CHECK(strcmp(p.passes[i].name, tl_pass_name(p.passes[i].pass)) == 0);
+        tl_renderer_desc d = {.options.mode = (tl_render_mode)mode, .options.vignette.enabled = 1};
+        TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
+        size_t vignette = p.pass_count, tonemap = p.pass_count;
+        for (size_t i = 0; i < p.pass_count; i++) {
+            TL_CHECK(strcmp(p.passes[i].name, tl_pass_name(p.passes[i].pass)) == 0);
+            for (size_t j = 0; j < i; j++) TL_CHECK(p.passes[j].pass != p.passes[i].pass);
+            if (p.passes[i].pass == TL_PASS_VIGNETTE) vignette = i;
+            if (p.passes[i].pass == TL_PASS_TONEMAP) tonemap = i;
+        }
+        TL_CHECK(vignette < tonemap && tonemap < p.pass_count && TL_PASS_VIGNETTE > TL_PASS_TONEMAP);
     }
 }
 
@@ -707,7 +727,7 @@ TL_TEST(frame_graph_resize_reallocates)
     if (!ensure_context()) { tl_test_failures++; return; }
     tl_scene *s = crypt(8);
     if (!s) return;
-    tl_renderer *r = renderer((tl_renderer_desc){.width = 64, .height = 48, .synchronous_stats = 1}, NULL, s);
+    tl_renderer *r = renderer((tl_renderer_desc){.width = 64, .height = 48, .options.synchronous_stats = 1}, NULL, s);
     if (!r) return;
     tl_frame_stats a, b;
     TL_CHECK(tl_renderer_render(r, NULL, &a) == TL_OK);

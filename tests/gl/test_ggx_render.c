@@ -23,9 +23,9 @@ static tl_renderer *make(tl_renderer_desc d)
     if (!ensure_context()) return NULL;
     d.width = W;
     d.height = H;
-    d.fxaa = TL_FXAA_OFF;
-    d.keep_targets = TL_TARGETS_ALL;
-    d.synchronous_stats = 1;
+    d.options.fxaa = TL_FXAA_OFF;
+    d.options.keep_targets = TL_TARGETS_ALL;
+    d.options.synchronous_stats = 1;
     d.get_proc_address = tl_context_proc_loader;
     d.get_proc_address_user = g_ctx;
     d.logger = tl_test_logger;
@@ -57,7 +57,7 @@ static int render(tl_renderer_desc d, const tl_scene *s, frame *f)
     TL_CHECK(ok);
     if (ok) {
         f->hdr = read_target(r, TL_TARGET_HDR);
-        if (d.mode == TL_MODE_FAT) f->pos = read_target(r, TL_TARGET_FAT_POSITION);
+        if (d.options.mode == TL_MODE_FAT) f->pos = read_target(r, TL_TARGET_FAT_POSITION);
     }
     tl_renderer_destroy(r);
     TL_CHECK(f->hdr != NULL);
@@ -83,8 +83,8 @@ TL_TEST(ambient_parameter_scene_default_override_and_zero)
     const double expect[3][3] = {{0.03, 0.03, 0.03}, {0.25, 0.5, 1.0}, {0, 0, 0}};
     for (int m = TL_MODE_THIN_LPP; m < TL_MODE_COUNT_; m++)
         for (int c = 0; c < 3; c++) {
-            tl_renderer_desc d = {.mode = (tl_render_mode)m};
-            memcpy(d.ambient, asked[c], sizeof d.ambient);
+            tl_renderer_desc d = {.options.mode = (tl_render_mode)m};
+            memcpy(d.options.ambient, asked[c], sizeof d.options.ambient);
             frame f;
             if (!render(d, &g->s, &f)) continue;
             /* the plane's pixel in the bottom row centre: albedo 0.5 */
@@ -105,7 +105,7 @@ TL_TEST(ambient_parameter_not_finite_is_refused)
         return;
     }
     tl_renderer_desc d = {.width = 8, .height = 8, .get_proc_address = tl_context_proc_loader,
-                          .get_proc_address_user = g_ctx, .ambient = {0, NAN, 0}};
+                          .get_proc_address_user = g_ctx, .options.ambient = {0, NAN, 0}};
     tl_renderer *r = (tl_renderer *)&d;
     TL_CHECK(tl_renderer_create(&d, &r) == TL_ERROR_INVALID_ARGUMENT);
     TL_CHECK(r == NULL);
@@ -233,7 +233,7 @@ static void report(const char *what, ref_error e)
 /* The fat frame of the scene: positions for the reference, and HDR. */
 static int fat_frame(const ggx_scene *g, tl_lighting_model model, frame *fat)
 {
-    return render((tl_renderer_desc){.mode = TL_MODE_FAT, .lighting = model}, &g->s, fat);
+    return render((tl_renderer_desc){.options.mode = TL_MODE_FAT, .options.lighting = model}, &g->s, fat);
 }
 
 /* Absolute allowance: FP16's step at the dimmest lit values the scene has (ambient 0.015). */
@@ -249,9 +249,12 @@ static void check_mode(const ggx_scene *g, const frame *fat, tl_renderer_desc d,
 {
     frame f;
     if (!render(d, &g->s, &f)) return;
-    tl_ref_model model = d.lighting == TL_LIGHTING_BLINN_PHONG ? TL_REF_MODEL_BLINN_PHONG : TL_REF_MODEL_GGX;
-    double normal_error = d.mode == TL_MODE_FAT ? FAT_NORMAL_ERROR : d.mode == TL_MODE_FORWARD ? 0.0 : OCT12_NORMAL_ERROR;
-    ref_error e = compare_reference(g, fat, f.hdr, d.mode, model, normal_error, REF_FLOOR, d.mode == TL_MODE_THIN_DEFERRED);
+    tl_ref_model model = d.options.lighting == TL_LIGHTING_BLINN_PHONG ? TL_REF_MODEL_BLINN_PHONG : TL_REF_MODEL_GGX;
+    double normal_error = d.options.mode == TL_MODE_FAT       ? FAT_NORMAL_ERROR
+                          : d.options.mode == TL_MODE_FORWARD ? 0.0
+                                                              : OCT12_NORMAL_ERROR;
+    ref_error e = compare_reference(g, fat, f.hdr, d.options.mode, model, normal_error, REF_FLOOR,
+                                    d.options.mode == TL_MODE_THIN_DEFERRED);
     report(what, e);
     TL_CHECK(e.compared > (size_t)W * H * 3 / 2 * 9 / 10);
     TL_CHECK_EQ_U(e.nonfinite, 0);
@@ -280,11 +283,11 @@ TL_TEST(ggx_fat_and_forward_match_reference_every_strategy)
         for (int s = TL_LIGHT_STRATEGY_VOLUMES; s <= TL_LIGHT_STRATEGY_TILED; s++) {
             char what[64];
             snprintf(what, sizeof what, "ggx fat %s", strategy_names[s]);
-            check_mode(g, &fat, (tl_renderer_desc){.mode = TL_MODE_FAT, .lighting = TL_LIGHTING_GGX,
-                                                   .light_strategy = (tl_light_strategy)s}, FAT_TOL, what);
+            check_mode(g, &fat, (tl_renderer_desc){.options.mode = TL_MODE_FAT, .options.lighting = TL_LIGHTING_GGX,
+                                                   .options.light_strategy = (tl_light_strategy)s}, FAT_TOL, what);
             snprintf(what, sizeof what, "ggx forward %s", strategy_names[s]);
-            check_mode(g, &fat, (tl_renderer_desc){.mode = TL_MODE_FORWARD, .lighting = TL_LIGHTING_GGX,
-                                                   .light_strategy = (tl_light_strategy)s}, FAT_TOL, what);
+            check_mode(g, &fat, (tl_renderer_desc){.options.mode = TL_MODE_FORWARD, .options.lighting = TL_LIGHTING_GGX,
+                                                   .options.light_strategy = (tl_light_strategy)s}, FAT_TOL, what);
         }
         frame_free(&fat);
     }
@@ -301,11 +304,12 @@ TL_TEST(ggx_thin_modes_match_reference_every_strategy)
         for (int s = TL_LIGHT_STRATEGY_VOLUMES; s <= TL_LIGHT_STRATEGY_TILED; s++)
             for (int c = 0; c < (s == TL_LIGHT_STRATEGY_TILED ? 2 : 1); c++) {
                 char what[64];
-                tl_renderer_desc d = {.mode = TL_MODE_THIN_LPP, .lighting = TL_LIGHTING_GGX,
-                                      .light_strategy = (tl_light_strategy)s, .tiled_shading = shading[c]};
+                tl_renderer_desc d = {.options.mode = TL_MODE_THIN_LPP, .options.lighting = TL_LIGHTING_GGX,
+                                      .options.light_strategy = (tl_light_strategy)s,
+                                      .options.tiled_shading = shading[c]};
                 snprintf(what, sizeof what, "ggx thin-lpp two sums %s%s", strategy_names[s], c ? " compute" : "");
                 check_mode(g, &fat, d, THIN_LPP_TOL, what);
-                d.mode = TL_MODE_THIN_DEFERRED;
+                d.options.mode = TL_MODE_THIN_DEFERRED;
                 snprintf(what, sizeof what, "ggx thin-deferred %s%s", strategy_names[s], c ? " compute" : "");
                 check_mode(g, &fat, d, THIN_DEFERRED_TOL, what);
             }
@@ -321,9 +325,11 @@ TL_TEST(blinn_phong_fat_and_thin_lpp_match_reference)
     ggx_scene_build(g);
     frame fat;
     if (fat_frame(g, TL_LIGHTING_BLINN_PHONG, &fat)) {
-        check_mode(g, &fat, (tl_renderer_desc){.mode = TL_MODE_FAT, .lighting = TL_LIGHTING_BLINN_PHONG},
+        check_mode(g, &fat, (tl_renderer_desc){.options.mode = TL_MODE_FAT,
+                                               .options.lighting = TL_LIGHTING_BLINN_PHONG},
                    FAT_TOL, "blinn-phong fat");
-        check_mode(g, &fat, (tl_renderer_desc){.mode = TL_MODE_THIN_LPP, .lighting = TL_LIGHTING_BLINN_PHONG},
+        check_mode(g, &fat, (tl_renderer_desc){.options.mode = TL_MODE_THIN_LPP,
+                                               .options.lighting = TL_LIGHTING_BLINN_PHONG},
                    THIN_LPP_TOL, "blinn-phong thin-lpp");
         frame_free(&fat);
     }
@@ -379,9 +385,10 @@ TL_TEST(ggx_fresnel_layouts_render_their_models)
     ggx_scene_build(g);
     frame fat, sums, nv;
     if (fat_frame(g, TL_LIGHTING_GGX, &fat)) {
-        tl_renderer_desc d = {.mode = TL_MODE_THIN_LPP, .lighting = TL_LIGHTING_GGX, .fresnel = TL_FRESNEL_TWO_SUMS};
+        tl_renderer_desc d = {.options.mode = TL_MODE_THIN_LPP, .options.lighting = TL_LIGHTING_GGX,
+                              .options.fresnel = TL_FRESNEL_TWO_SUMS};
         int ok = render(d, &g->s, &sums);
-        d.fresnel = TL_FRESNEL_NV;
+        d.options.fresnel = TL_FRESNEL_NV;
         ok = render(d, &g->s, &nv) && ok;
         if (ok) {
             ref_setup rs = {.model = TL_REF_MODEL_GGX};
@@ -427,9 +434,10 @@ TL_TEST(ggx_fresnel_layouts_agree_for_white_metal)
         g->mat[m].specular[0] = g->mat[m].specular[1] = g->mat[m].specular[2] = 1.0f;
     }
     frame a, b;
-    tl_renderer_desc d = {.mode = TL_MODE_THIN_LPP, .lighting = TL_LIGHTING_GGX, .fresnel = TL_FRESNEL_TWO_SUMS};
+    tl_renderer_desc d = {.options.mode = TL_MODE_THIN_LPP, .options.lighting = TL_LIGHTING_GGX,
+                          .options.fresnel = TL_FRESNEL_TWO_SUMS};
     int ok = render(d, &g->s, &a);
-    d.fresnel = TL_FRESNEL_NV;
+    d.options.fresnel = TL_FRESNEL_NV;
     ok = render(d, &g->s, &b) && ok;
     if (ok) {
         double worst = 0.0;
@@ -470,9 +478,10 @@ TL_TEST(ggx_extremes_stay_finite_every_mode)
         for (int m = TL_MODE_THIN_LPP; m < TL_MODE_COUNT_; m++)
             for (int s = TL_LIGHT_STRATEGY_VOLUMES; s <= TL_LIGHT_STRATEGY_TILED; s++)
                 for (int f = TL_FRESNEL_TWO_SUMS; f <= (m == TL_MODE_THIN_LPP ? TL_FRESNEL_NV : TL_FRESNEL_TWO_SUMS); f++) {
-                    tl_renderer *r = make((tl_renderer_desc){.mode = (tl_render_mode)m, .lighting = TL_LIGHTING_GGX,
-                                                             .light_strategy = (tl_light_strategy)s,
-                                                             .fresnel = (tl_fresnel_layout)f});
+                    tl_renderer *r = make((tl_renderer_desc){.options.mode = (tl_render_mode)m,
+                                                             .options.lighting = TL_LIGHTING_GGX,
+                                                             .options.light_strategy = (tl_light_strategy)s,
+                                                             .options.fresnel = (tl_fresnel_layout)f});
                     TL_CHECK(r != NULL);
                     if (!r) continue;
                     TL_CHECK(tl_renderer_set_scene(r, &g->s) == TL_OK && tl_renderer_render(r, NULL, NULL) == TL_OK &&
@@ -517,16 +526,16 @@ TL_TEST(ggx_plan_model_and_fresnel_target)
     TL_CHECK(p->lighting == TL_LIGHTING_GGX && p->fresnel == TL_FRESNEL_TWO_SUMS);
     TL_CHECK_EQ_U(p->target_bytes_per_pixel[TL_TARGET_LIGHT_FRESNEL], 8);
     TL_CHECK(strstr(p->lighting_reason, "auto") != NULL);
-    d.light_format = TL_LIGHT_FORMAT_R11G11B10F;
+    d.options.light_format = TL_LIGHT_FORMAT_R11G11B10F;
     TL_CHECK(tl_frame_plan_build(&d, &f, p) == TL_OK);
     TL_CHECK_EQ_U(p->target_bytes_per_pixel[TL_TARGET_LIGHT_FRESNEL], 4);
-    d.light_format = TL_LIGHT_FORMAT_DEFAULT;
+    d.options.light_format = TL_LIGHT_FORMAT_DEFAULT;
     const struct { tl_renderer_desc d; } off[] = {
-        {{.width = 64, .height = 64, .fresnel = TL_FRESNEL_NV}},
-        {{.width = 64, .height = 64, .light_buffer = TL_LIGHT_BUFFER_COMPACT}},
-        {{.width = 64, .height = 64, .lighting = TL_LIGHTING_BLINN_PHONG}},
-        {{.width = 64, .height = 64, .mode = TL_MODE_FAT}},
-        {{.width = 64, .height = 64, .mode = TL_MODE_FORWARD}},
+        {{.width = 64, .height = 64, .options.fresnel = TL_FRESNEL_NV}},
+        {{.width = 64, .height = 64, .options.light_buffer = TL_LIGHT_BUFFER_COMPACT}},
+        {{.width = 64, .height = 64, .options.lighting = TL_LIGHTING_BLINN_PHONG}},
+        {{.width = 64, .height = 64, .options.mode = TL_MODE_FAT}},
+        {{.width = 64, .height = 64, .options.mode = TL_MODE_FORWARD}},
     };
     for (size_t i = 0; i < sizeof off / sizeof off[0]; i++) {
         TL_CHECK(tl_frame_plan_build(&off[i].d, &f, p) == TL_OK);
@@ -535,10 +544,10 @@ TL_TEST(ggx_plan_model_and_fresnel_target)
     f.has_specular = 0; /* nothing to apply Fresnel to */
     TL_CHECK(tl_frame_plan_build(&d, &f, p) == TL_OK);
     TL_CHECK(!(p->targets & TL_TARGET_BIT(TL_TARGET_LIGHT_FRESNEL)) && p->fresnel == TL_FRESNEL_DEFAULT);
-    d.lighting = TL_LIGHTING_COUNT_;
+    d.options.lighting = TL_LIGHTING_COUNT_;
     TL_CHECK(tl_frame_plan_build(&d, &f, p) == TL_ERROR_INVALID_ARGUMENT);
-    d.lighting = TL_LIGHTING_DEFAULT;
-    d.fresnel = TL_FRESNEL_COUNT_;
+    d.options.lighting = TL_LIGHTING_DEFAULT;
+    d.options.fresnel = TL_FRESNEL_COUNT_;
     TL_CHECK(tl_frame_plan_build(&d, &f, p) == TL_ERROR_INVALID_ARGUMENT);
     free(p);
     tl_lighting_model m;
@@ -569,8 +578,10 @@ TL_TEST(ggx_sphere_lights_match_reference_every_strategy)
             for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
                 char what[64];
                 snprintf(what, sizeof what, "ggx sphere lights %s %s", modes[m].name, strategy_names[s]);
-                check_mode(g, &fat, (tl_renderer_desc){.mode = modes[m].mode, .lighting = TL_LIGHTING_GGX,
-                                                       .light_strategy = (tl_light_strategy)s}, modes[m].tol, what);
+                check_mode(g, &fat, (tl_renderer_desc){.options.mode = modes[m].mode,
+                                                       .options.lighting = TL_LIGHTING_GGX,
+                                                       .options.light_strategy = (tl_light_strategy)s}, modes[m].tol,
+                                                       what);
             }
         }
         frame_free(&fat);
@@ -589,12 +600,13 @@ TL_TEST(ggx_sphere_lights_volumes_tiles_and_fullscreen_agree)
     g->lights[0].source_radius = 0.8f;
     g->lights[1].source_radius = 0.5f;
     frame vol, full, tiled, punctual;
-    tl_renderer_desc d = {.mode = TL_MODE_THIN_LPP, .lighting = TL_LIGHTING_GGX, .light_strategy = TL_LIGHT_STRATEGY_VOLUMES};
+    tl_renderer_desc d = {.options.mode = TL_MODE_THIN_LPP, .options.lighting = TL_LIGHTING_GGX,
+                          .options.light_strategy = TL_LIGHT_STRATEGY_VOLUMES};
     int ok = render(d, &g->s, &vol);
-    d.fullscreen_lights = 1;
+    d.options.fullscreen_lights = 1;
     ok = render(d, &g->s, &full) && ok;
-    d.fullscreen_lights = 0;
-    d.light_strategy = TL_LIGHT_STRATEGY_TILED;
+    d.options.fullscreen_lights = 0;
+    d.options.light_strategy = TL_LIGHT_STRATEGY_TILED;
     ok = render(d, &g->s, &tiled) && ok;
     if (ok) {
         double worst_full = 0.0, worst_tiled = 0.0;
@@ -609,12 +621,12 @@ TL_TEST(ggx_sphere_lights_volumes_tiles_and_fullscreen_agree)
     }
     /* GGX sees the radius; Blinn-Phong does not */
     g->lights[0].source_radius = g->lights[1].source_radius = 0.0f;
-    d = (tl_renderer_desc){.mode = TL_MODE_THIN_LPP, .lighting = TL_LIGHTING_GGX};
+    d = (tl_renderer_desc){.options.mode = TL_MODE_THIN_LPP, .options.lighting = TL_LIGHTING_GGX};
     if (ok && render(d, &g->s, &punctual)) {
         TL_CHECK(memcmp(punctual.hdr, vol.hdr, (size_t)W * H * 4 * sizeof(float)) != 0);
         frame_free(&punctual);
     }
-    d.lighting = TL_LIGHTING_BLINN_PHONG;
+    d.options.lighting = TL_LIGHTING_BLINN_PHONG;
     frame bp0, bp1;
     if (render(d, &g->s, &bp0)) {
         g->lights[0].source_radius = 0.8f;
@@ -642,15 +654,15 @@ TL_TEST(ggx_sphere_light_extremes)
     for (int m = TL_MODE_THIN_LPP; m < TL_MODE_COUNT_; m++)
         for (int s = TL_LIGHT_STRATEGY_VOLUMES; s <= TL_LIGHT_STRATEGY_TILED; s++) {
             frame f;
-            if (!render((tl_renderer_desc){.mode = (tl_render_mode)m, .lighting = TL_LIGHTING_GGX,
-                                           .light_strategy = (tl_light_strategy)s}, &g->s, &f))
+            if (!render((tl_renderer_desc){.options.mode = (tl_render_mode)m, .options.lighting = TL_LIGHTING_GGX,
+                                           .options.light_strategy = (tl_light_strategy)s}, &g->s, &f))
                 continue;
             size_t bad = 0;
             for (size_t i = 0; i < (size_t)W * H * 4; i++) bad += !(isfinite(f.hdr[i]) && f.hdr[i] >= 0.0f);
             TL_CHECK_EQ_U(bad, 0);
             frame_free(&f);
         }
-    tl_renderer *r = make((tl_renderer_desc){.lighting = TL_LIGHTING_GGX});
+    tl_renderer *r = make((tl_renderer_desc){.options.lighting = TL_LIGHTING_GGX});
     TL_CHECK(r != NULL);
     if (r) {
         const float bad[2] = {-0.1f, NAN};

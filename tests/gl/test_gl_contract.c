@@ -291,18 +291,19 @@ TL_TEST(gl_contract_dirty_state_same_bytes)
     make_objects(&gl, &o);
     static frame_bytes clean, dirty;
     const contract_config configs[] = {
-        {"thin-lpp volumes d24", {.mode = TL_MODE_THIN_LPP, .light_strategy = TL_LIGHT_STRATEGY_VOLUMES}},
+        {"thin-lpp volumes d24", {.options.mode = TL_MODE_THIN_LPP,
+                                  .options.light_strategy = TL_LIGHT_STRATEGY_VOLUMES}},
         {"thin-lpp tiled compute d32f",
-         {.mode = TL_MODE_THIN_LPP, .light_strategy = TL_LIGHT_STRATEGY_TILED,
-          .tiled_shading = TL_TILED_SHADING_COMPUTE, .depth_format = TL_DEPTH_FORMAT_D32F_REVERSED}},
-        {"fat tiled d24", {.mode = TL_MODE_FAT, .light_strategy = TL_LIGHT_STRATEGY_TILED}},
-        {"forward d32f", {.mode = TL_MODE_FORWARD, .depth_format = TL_DEPTH_FORMAT_D32F_REVERSED}},
+         {.options.mode = TL_MODE_THIN_LPP, .options.light_strategy = TL_LIGHT_STRATEGY_TILED,
+          .options.tiled_shading = TL_TILED_SHADING_COMPUTE, .options.depth_format = TL_DEPTH_FORMAT_D32F_REVERSED}},
+        {"fat tiled d24", {.options.mode = TL_MODE_FAT, .options.light_strategy = TL_LIGHT_STRATEGY_TILED}},
+        {"forward d32f", {.options.mode = TL_MODE_FORWARD, .options.depth_format = TL_DEPTH_FORMAT_D32F_REVERSED}},
     };
     for (size_t k = 0; k < sizeof configs / sizeof configs[0]; k++) {
         tl_renderer_desc d = configs[k].d;
         d.width = W;
         d.height = H;
-        d.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR);
+        d.options.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR);
         d.get_proc_address = tl_context_proc_loader;
         d.get_proc_address_user = g_ctx;
         d.logger = tl_test_logger;
@@ -348,7 +349,8 @@ TL_TEST(gl_contract_pixel_store_survives)
     app_objects o;
     make_objects(&gl, &o);
     tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&(tl_renderer_desc){.width = W, .height = H, .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
+    TL_CHECK(tl_renderer_create(&(tl_renderer_desc){.width = W, .height = H,
+                                                    .options.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
                                                     .get_proc_address = tl_context_proc_loader,
                                                     .get_proc_address_user = g_ctx, .logger = tl_test_logger},
                                 &r) == TL_OK);

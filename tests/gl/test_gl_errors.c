@@ -115,8 +115,8 @@ TL_TEST(gl_objects_of_the_renderer_all_labelled)
     /* tiled lighting and forward too, so that their buffers exist */
     const tl_renderer_desc descs[3] = {
         {.width = 64, .height = 48},
-        {.width = 64, .height = 48, .light_strategy = TL_LIGHT_STRATEGY_TILED},
-        {.width = 64, .height = 48, .mode = TL_MODE_FORWARD, .fxaa = TL_FXAA_12},
+        {.width = 64, .height = 48, .options.light_strategy = TL_LIGHT_STRATEGY_TILED},
+        {.width = 64, .height = 48, .options.mode = TL_MODE_FORWARD, .options.fxaa = TL_FXAA_12},
     };
     for (int i = 0; i < 3; i++) {
         build_room(&t);

@@ -45,7 +45,7 @@ TL_TEST(plan_rules_exhaustive)
             f.has_normal_maps = f.has_textures && ((bits >> 5) & 1);
             f.has_alpha_blend = (bits >> 6) & 1;
             f.has_alpha_mask = (bits >> 7) & 1;
-            tl_renderer_desc d = {.mode = (tl_render_mode)mode, .width = 64, .height = 32};
+            tl_renderer_desc d = {.options.mode = (tl_render_mode)mode, .width = 64, .height = 32};
             tl_frame_plan p;
             TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
             int lights = f.point_lights || f.spot_lights || f.directional_lights;
@@ -96,7 +96,7 @@ TL_TEST(plan_rules_exhaustive)
 TL_TEST(plan_fat_layout_44_bytes)
 {
     tl_scene_feature_set f = {.point_lights = 1, .has_specular = 1};
-    tl_renderer_desc d = {.mode = TL_MODE_FAT};
+    tl_renderer_desc d = {.options.mode = TL_MODE_FAT};
     tl_frame_plan p;
     TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
     TL_CHECK_EQ_U(p.target_bytes_per_pixel[TL_TARGET_FAT_POSITION], 16);
@@ -106,14 +106,14 @@ TL_TEST(plan_fat_layout_44_bytes)
     TL_CHECK_EQ_U(p.target_bytes_per_pixel[TL_TARGET_DEPTH], 4);
     TL_CHECK_EQ_U(p.gbuffer_bytes_per_pixel, 44);
     /* the thin light pre-pass stores depth 4 + RT0 4 + light buffer (8 compact, 16 exact) */
-    d.mode = TL_MODE_THIN_LPP;
-    d.light_buffer = TL_LIGHT_BUFFER_COMPACT;
+    d.options.mode = TL_MODE_THIN_LPP;
+    d.options.light_buffer = TL_LIGHT_BUFFER_COMPACT;
     TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
     TL_CHECK_EQ_U(p.gbuffer_bytes_per_pixel, 16);
-    d.light_buffer = TL_LIGHT_BUFFER_EXACT;
+    d.options.light_buffer = TL_LIGHT_BUFFER_EXACT;
     TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
     TL_CHECK_EQ_U(p.gbuffer_bytes_per_pixel, 24);
-    d.mode = TL_MODE_THIN_DEFERRED;
+    d.options.mode = TL_MODE_THIN_DEFERRED;
     TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
     TL_CHECK_EQ_U(p.gbuffer_bytes_per_pixel, 12);
 }
@@ -121,7 +121,7 @@ TL_TEST(plan_fat_layout_44_bytes)
 TL_TEST(plan_format_and_bad_input)
 {
     tl_scene_feature_set f = {.point_lights = 3, .directional_lights = 1, .has_specular = 1, .has_textures = 1};
-    tl_renderer_desc d = {.mode = TL_MODE_THIN_LPP};
+    tl_renderer_desc d = {.options.mode = TL_MODE_THIN_LPP};
     tl_frame_plan p;
     TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
     size_t need = tl_frame_plan_format(&p, NULL, 0);
@@ -136,9 +136,9 @@ TL_TEST(plan_format_and_bad_input)
     TL_CHECK(strlen(small) == sizeof small - 1);
     free(buf);
     TL_CHECK(tl_frame_plan_build(NULL, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
-    d.mode = (tl_render_mode)99;
+    d.options.mode = (tl_render_mode)99;
     TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
-    d.mode = TL_MODE_FAT;
+    d.options.mode = TL_MODE_FAT;
     d.width = 100000;
     TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_ERROR_LIMIT);
     tl_render_mode m;
@@ -154,7 +154,8 @@ static tl_renderer *make_renderer(tl_render_mode mode, uint32_t w, uint32_t h)
 {
     tl_renderer *r = NULL;
     /* every target kept readable, statistics of the frame just rendered */
-    tl_renderer_desc d = {.mode = mode, .width = w, .height = h, .keep_targets = TL_TARGETS_ALL, .synchronous_stats = 1,
+    tl_renderer_desc d = {.options.mode = mode, .width = w, .height = h, .options.keep_targets = TL_TARGETS_ALL,
+                          .options.synchronous_stats = 1,
                           .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
                           .logger = tl_test_logger};
     tl_renderer_create(&d, &r);
@@ -269,15 +270,16 @@ static void compare_scene_to_fat(const tl_scene *s, uint32_t w, uint32_t h, size
     dark.lights = NULL;
     dark.light_count = 0;
     modes_frame fat, base, img;
-    int ok = modes_render(s, (tl_renderer_desc){.mode = TL_MODE_FAT, .width = w, .height = h}, &fat) &&
-             modes_render(&dark, (tl_renderer_desc){.mode = TL_MODE_FAT, .width = w, .height = h}, &base);
+    int ok = modes_render(s, (tl_renderer_desc){.options.mode = TL_MODE_FAT, .width = w, .height = h}, &fat) &&
+             modes_render(&dark, (tl_renderer_desc){.options.mode = TL_MODE_FAT, .width = w, .height = h}, &base);
     TL_CHECK(ok);
     TL_CHECK(ok && count_nonfinite(fat.hdr, n) == 0);
     for (int mode = TL_MODE_THIN_LPP; ok && mode < TL_MODE_COUNT_; mode++) {
         modes_frame *f = &fat;
         if (mode != TL_MODE_FAT) {
             f = &img;
-            TL_CHECK(modes_render(s, (tl_renderer_desc){.mode = (tl_render_mode)mode, .width = w, .height = h}, &img));
+            TL_CHECK(modes_render(s, (tl_renderer_desc){.options.mode = (tl_render_mode)mode, .width = w, .height = h},
+                                  &img));
         }
         tl_image_error e;
         TL_CHECK(f->out && tl_image_compare_u8(f->out, fat.out, n, &e) == TL_OK);
@@ -437,7 +439,7 @@ TL_TEST(render_to_caller_framebuffer)
 }
 
 /* What planning saves: a scene without specular materials and without spot lights, planned and
- * unplanned (tl_renderer_desc.no_planning): fewer bytes, fewer programs, the same image. */
+ * unplanned (tl_renderer_options.no_planning): fewer bytes, fewer programs, the same image. */
 TL_TEST(plan_saving_same_image)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
@@ -456,8 +458,8 @@ TL_TEST(plan_saving_same_image)
     for (int unplanned = 0; unplanned < 2; unplanned++) {
         tl_renderer *r = NULL;
         tl_renderer_desc d = {.width = w, .height = h, .get_proc_address = tl_context_proc_loader,
-                              .get_proc_address_user = g_ctx, .synchronous_stats = 1,
-                              .no_planning = unplanned};
+                              .get_proc_address_user = g_ctx, .options.synchronous_stats = 1,
+                              .options.no_planning = unplanned};
         TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
         if (!r) continue;
         TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);

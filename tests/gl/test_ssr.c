@@ -144,8 +144,8 @@ TL_TEST(ssr_mirror_floor_reflects_quad_at_mirrored_position)
     printf("  mirrored quad: rows %.1f..%.1f, half-widths %.1f (top) %.1f (bottom) px\n", yb, yt, wt, wb);
     for (size_t md = 0; md < sizeof modes / sizeof modes[0]; md++)
         for (size_t z = 0; z < 2; z++) {
-            tl_renderer_desc d = {.width = W, .height = H, .mode = modes[md], .depth_format = depths[z],
-                                  .ssr = {.enabled = 1, .steps = 64, .max_distance = 20.0f, .thickness = 0.5f}};
+            tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[md], .options.depth_format = depths[z],
+                                  .options.ssr = {.enabled = 1, .steps = 64, .max_distance = 20.0f, .thickness = 0.5f}};
             tl_renderer *r = tl_test_render_once(&m.s, d);
             float *t = r ? tl_test_read_target(r, TL_TARGET_SSR, (size_t)W * H) : NULL;
             float *nrm = r ? tl_test_read_target(r, modes[md] == TL_MODE_FAT ? TL_TARGET_FAT_NORMAL : TL_TARGET_RT0, (size_t)W * H) : NULL;
@@ -196,9 +196,9 @@ TL_TEST(ssr_off_plans_nothing_and_changes_no_byte)
     tl_scene_feature_set f = {.point_lights = 2, .has_specular = 1};
     const tl_render_mode all[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
     for (size_t md = 0; md < 4; md++) {
-        tl_renderer_desc plain = {.width = 64, .height = 36, .mode = all[md]}, off = plain, on = plain;
-        off.ssr = (tl_ssr_desc){.enabled = 0, .steps = 9, .thickness = 3.0f, .intensity = 2.0f};
-        on.ssr.enabled = 1;
+        tl_renderer_desc plain = {.width = 64, .height = 36, .options.mode = all[md]}, off = plain, on = plain;
+        off.options.ssr = (tl_ssr_desc){.enabled = 0, .steps = 9, .thickness = 3.0f, .intensity = 2.0f};
+        on.options.ssr.enabled = 1;
         tl_frame_plan a, b, c;
         TL_CHECK(tl_frame_plan_build(&plain, &f, &a) == TL_OK && tl_frame_plan_build(&off, &f, &b) == TL_OK &&
                  tl_frame_plan_build(&on, &f, &c) == TL_OK);
@@ -228,7 +228,9 @@ TL_TEST(ssr_rays_off_screen_or_to_background_add_nothing_no_nan)
     mirror(&m, 1.5f);
     m.s.camera.target[1] = -6.0f; /* looking down: the emissive quad and its mirror image are off the screen */
     for (size_t md = 0; md < sizeof modes / sizeof modes[0]; md++) {
-        tl_renderer *r = tl_test_render_once(&m.s, (tl_renderer_desc){.width = W, .height = H, .mode = modes[md], .ssr = {.enabled = 1}});
+        tl_renderer *r = tl_test_render_once(&m.s, (tl_renderer_desc){.width = W, .height = H,
+                                                                      .options.mode = modes[md],
+                                                                      .options.ssr = {.enabled = 1}});
         float *t = r ? tl_test_read_target(r, TL_TARGET_SSR, (size_t)W * H) : NULL;
         TL_CHECK(t != NULL);
         size_t nonzero = 0;
@@ -246,9 +248,9 @@ TL_TEST(ssr_rays_off_screen_or_to_background_add_nothing_no_nan)
             for (int fr = 0; fr < 2; fr++) {
                 m.s.camera.near_z = 1e-3f;
                 m.s.camera.far_z = fars[fr];
-                tl_renderer_desc d = {.width = sizes[sz][0], .height = sizes[sz][1], .mode = modes[md],
-                                      .depth_format = TL_DEPTH_FORMAT_D32F_REVERSED,
-                                      .ssr = {.enabled = 1, .intensity = 1e4f}};
+                tl_renderer_desc d = {.width = sizes[sz][0], .height = sizes[sz][1], .options.mode = modes[md],
+                                      .options.depth_format = TL_DEPTH_FORMAT_D32F_REVERSED,
+                                      .options.ssr = {.enabled = 1, .intensity = 1e4f}};
                 tl_renderer *r = tl_test_render_once(&m.s, d);
                 size_t n = (size_t)sizes[sz][0] * sizes[sz][1];
                 float *t = r ? tl_test_read_target(r, TL_TARGET_SSR, n) : NULL, *h = r ? tl_test_read_target(r, TL_TARGET_HDR, n) : NULL;
@@ -274,17 +276,18 @@ TL_TEST(ssr_and_ssao_without_lights_in_every_mode)
     m.s.lights = NULL;
     for (size_t md = 0; md < sizeof modes / sizeof modes[0]; md++)
         for (int fx = 0; fx < 3; fx++) {
-            tl_renderer_desc d = {.width = W, .height = H, .mode = modes[md]};
-            if (fx != 1) d.ssr.enabled = 1;
-            if (fx != 0) d.ssao.method = TL_SSAO_HEMISPHERE;
+            tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[md]};
+            if (fx != 1) d.options.ssr.enabled = 1;
+            if (fx != 0) d.options.ssao.method = TL_SSAO_HEMISPHERE;
             tl_renderer *r = tl_test_render_once(&m.s, d);
             TL_CHECK(r != NULL);
-            float *t = r && d.ssr.enabled ? tl_test_read_target(r, TL_TARGET_SSR, (size_t)W * H) : NULL;
+            float *t = r && d.options.ssr.enabled ? tl_test_read_target(r, TL_TARGET_SSR, (size_t)W * H) : NULL;
             size_t lit = 0;
             for (size_t i = 0; t && i < (size_t)W * H; i++) lit += t[4 * i] > 0.0f;
             printf("  %s, %s%s, no lights: %s, %zu reflecting pixels\n", tl_render_mode_name(modes[md]),
-                   d.ssr.enabled ? "ssr " : "", d.ssao.method ? "ssao" : "", r ? "rendered" : "FAILED", lit);
-            if (d.ssr.enabled) TL_CHECK(lit > 100);
+                   d.options.ssr.enabled ? "ssr " : "", d.options.ssao.method ? "ssao" : "", r ? "rendered" : "FAILED",
+                   lit);
+            if (d.options.ssr.enabled) TL_CHECK(lit > 100);
             free(t);
             tl_renderer_destroy(r);
         }

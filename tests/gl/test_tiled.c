@@ -87,16 +87,17 @@ static void compare_tiled(test_scene *t, const tl_camera *cam, tl_depth_format d
     const uint32_t w = 160, h = 96;
     const size_t n = (size_t)w * h;
     if (!ensure_context()) { tl_test_failures++; return; }
-    tl_renderer_desc d = {.width = w, .height = h, .depth_format = depth, .fxaa = TL_FXAA_OFF, .tile_size = tile};
+    tl_renderer_desc d = {.width = w, .height = h, .options.depth_format = depth, .options.fxaa = TL_FXAA_OFF,
+                          .options.tile_size = tile};
     tl_renderer_desc dr = d;
-    dr.fullscreen_lights = 1;
-    dr.light_strategy = TL_LIGHT_STRATEGY_VOLUMES;
+    dr.options.fullscreen_lights = 1;
+    dr.options.light_strategy = TL_LIGHT_STRATEGY_VOLUMES;
     tl_renderer *ref = make_renderer_desc(dr);
     TL_CHECK(ref && tl_renderer_set_scene(ref, &t->s) == TL_OK && tl_renderer_render(ref, cam, NULL) == TL_OK);
     uint8_t *ref_out = ref ? read_output(ref, n) : NULL;
     for (int compute = 0; compute < 2; compute++) {
-        d.light_strategy = TL_LIGHT_STRATEGY_TILED;
-        d.tiled_shading = compute ? TL_TILED_SHADING_COMPUTE : TL_TILED_SHADING_FRAGMENT;
+        d.options.light_strategy = TL_LIGHT_STRATEGY_TILED;
+        d.options.tiled_shading = compute ? TL_TILED_SHADING_COMPUTE : TL_TILED_SHADING_FRAGMENT;
         tl_renderer *r = make_renderer_desc(d);
         TL_CHECK(r && tl_renderer_set_scene(r, &t->s) == TL_OK && tl_renderer_render(r, cam, NULL) == TL_OK);
         if (!r || !ref) continue;
@@ -177,11 +178,11 @@ TL_TEST(tiled_tile_and_image_borders)
     t.s.light_count = k;
     const uint32_t tiles[3] = {8, 16, 32};
     for (int ti = 0; ti < 3; ti++) {
-        tl_renderer_desc d = {.width = w, .height = h, .fxaa = TL_FXAA_OFF, .tile_size = tiles[ti]};
+        tl_renderer_desc d = {.width = w, .height = h, .options.fxaa = TL_FXAA_OFF, .options.tile_size = tiles[ti]};
         tl_renderer_desc dr = d;
-        dr.fullscreen_lights = 1;
-        dr.light_strategy = TL_LIGHT_STRATEGY_VOLUMES;
-        d.light_strategy = TL_LIGHT_STRATEGY_TILED;
+        dr.options.fullscreen_lights = 1;
+        dr.options.light_strategy = TL_LIGHT_STRATEGY_VOLUMES;
+        d.options.light_strategy = TL_LIGHT_STRATEGY_TILED;
         tl_renderer *ref = make_renderer_desc(dr), *r = make_renderer_desc(d);
         TL_CHECK(ref && r);
         if (!ref || !r) continue;
@@ -268,10 +269,11 @@ TL_TEST(tiled_matches_volumes_every_mode)
     const tl_depth_format depths[2] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
     for (int dz = 0; dz < 2; dz++)
         for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++) {
-            tl_renderer_desc d = {.mode = (tl_render_mode)mode, .width = w, .height = h, .depth_format = depths[dz],
-                                  .fxaa = TL_FXAA_OFF, .light_strategy = TL_LIGHT_STRATEGY_VOLUMES};
+            tl_renderer_desc d = {.options.mode = (tl_render_mode)mode, .width = w, .height = h,
+                                  .options.depth_format = depths[dz],
+                                  .options.fxaa = TL_FXAA_OFF, .options.light_strategy = TL_LIGHT_STRATEGY_VOLUMES};
             tl_renderer *vol = make_renderer_desc(d);
-            d.light_strategy = TL_LIGHT_STRATEGY_TILED;
+            d.options.light_strategy = TL_LIGHT_STRATEGY_TILED;
             tl_renderer *til = make_renderer_desc(d);
             TL_CHECK(vol && til);
             if (!vol || !til) continue;
@@ -328,7 +330,8 @@ TL_TEST(tiled_65536_lights_overflow_then_growth)
     TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 65536, .spot_lights = 4096, .detail = 1},
                                      &s) == TL_OK);
     if (!s) return;
-    tl_renderer *r = make_renderer_desc((tl_renderer_desc){.width = w, .height = h, .light_strategy = TL_LIGHT_STRATEGY_TILED});
+    tl_renderer *r = make_renderer_desc((tl_renderer_desc){.width = w, .height = h,
+                                                           .options.light_strategy = TL_LIGHT_STRATEGY_TILED});
     TL_CHECK(r && tl_renderer_set_scene(r, s) == TL_OK);
     if (!r) return;
     tl_frame_stats first, later;
@@ -372,9 +375,10 @@ TL_TEST(tiled_light_buffer_r11g11b10f)
     tl_scene *s = NULL;
     TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 64, .detail = 1}, &s) == TL_OK);
     if (!s) return;
-    tl_renderer_desc d = {.width = w, .height = h, .fxaa = TL_FXAA_OFF, .light_strategy = TL_LIGHT_STRATEGY_TILED};
+    tl_renderer_desc d = {.width = w, .height = h, .options.fxaa = TL_FXAA_OFF,
+                          .options.light_strategy = TL_LIGHT_STRATEGY_TILED};
     tl_renderer *full = make_renderer_desc(d);
-    d.light_format = TL_LIGHT_FORMAT_R11G11B10F;
+    d.options.light_format = TL_LIGHT_FORMAT_R11G11B10F;
     tl_renderer *small = make_renderer_desc(d);
     TL_CHECK(full && small);
     if (!full || !small) return;
@@ -405,7 +409,7 @@ TL_TEST(tiled_light_buffer_r11g11b10f)
     free(oa);
     free(ob);
     /* the compact layout keeps specular luminance in alpha: R11G11B10F has none */
-    d.light_buffer = TL_LIGHT_BUFFER_COMPACT;
+    d.options.light_buffer = TL_LIGHT_BUFFER_COMPACT;
     TL_CHECK(tl_frame_plan_build(&d, &(tl_scene_feature_set){.point_lights = 1}, &p) == TL_ERROR_INVALID_ARGUMENT);
     tl_renderer_destroy(full);
     tl_renderer_destroy(small);
@@ -433,15 +437,15 @@ TL_TEST(tiled_planner_chooses_by_light_count)
         TL_CHECK(tiled == ((p.targets & BIT(TL_TARGET_LIGHT_LISTS)) != 0));
         if (tiled) TL_CHECK(p.tiles_x == 20 && p.tiles_y == 12 && p.tile_size == 16);
     }
-    d.light_strategy = TL_LIGHT_STRATEGY_VOLUMES;
+    d.options.light_strategy = TL_LIGHT_STRATEGY_VOLUMES;
     TL_CHECK(tl_frame_plan_build(&d, &(tl_scene_feature_set){.point_lights = 1000}, &p) == TL_OK);
     TL_CHECK(p.light_strategy == TL_LIGHT_STRATEGY_VOLUMES && strstr(p.strategy_reason, "forced"));
-    d.light_strategy = TL_LIGHT_STRATEGY_TILED;
-    d.mode = TL_MODE_FORWARD;
-    d.forward_no_depth_prepass = 1; /* Forward+ keeps its depth pre-pass: the tiles' bounds need it */
+    d.options.light_strategy = TL_LIGHT_STRATEGY_TILED;
+    d.options.mode = TL_MODE_FORWARD;
+    d.options.forward_no_depth_prepass = 1; /* Forward+ keeps its depth pre-pass: the tiles' bounds need it */
     TL_CHECK(tl_frame_plan_build(&d, &(tl_scene_feature_set){.point_lights = 2}, &p) == TL_OK);
     TL_CHECK(p.pass_count >= 3 && p.passes[0].pass == TL_PASS_DEPTH_PREPASS && p.passes[1].pass == TL_PASS_LIGHT_CULL);
-    d.tile_size = 12;
+    d.options.tile_size = 12;
     TL_CHECK(tl_frame_plan_build(&d, &(tl_scene_feature_set){.point_lights = 2}, &p) == TL_ERROR_INVALID_ARGUMENT);
     tl_light_strategy s;
     TL_CHECK(tl_light_strategy_from_name("tiled", &s) == TL_OK && s == TL_LIGHT_STRATEGY_TILED);

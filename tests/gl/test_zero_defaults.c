@@ -158,7 +158,7 @@ static void take(const tl_scene *s, const tl_camera *camera, shot *out)
     out->set = out->render = TL_ERROR_GL;
     if (!ensure_context()) return;
     tl_renderer *r = NULL;
-    tl_renderer_desc d = {.width = W, .height = H, .synchronous_stats = 1, .get_proc_address = tl_context_proc_loader,
+    tl_renderer_desc d = {.width = W, .height = H, .options.synchronous_stats = 1, .get_proc_address = tl_context_proc_loader,
                           .get_proc_address_user = g_ctx, .logger = tl_test_logger};
     if (tl_renderer_create(&d, &r) != TL_OK) return;
     out->set = tl_renderer_set_scene(r, s);

@@ -98,8 +98,9 @@ TL_TEST(renderer_allocator_failing_every_kth_call_through_its_life)
     t.s.light_count = 2;
     const tl_renderer_desc descs[3] = {
         {.width = 48, .height = 32},
-        {.width = 48, .height = 32, .light_strategy = TL_LIGHT_STRATEGY_TILED},
-        {.width = 48, .height = 32, .mode = TL_MODE_FORWARD, .light_strategy = TL_LIGHT_STRATEGY_VOLUMES},
+        {.width = 48, .height = 32, .options.light_strategy = TL_LIGHT_STRATEGY_TILED},
+        {.width = 48, .height = 32, .options.mode = TL_MODE_FORWARD,
+         .options.light_strategy = TL_LIGHT_STRATEGY_VOLUMES},
     };
     for (int c = 0; c < 3; c++)
         for (size_t k = 1; k <= 8; k++) life(&descs[c], &t.s, k);

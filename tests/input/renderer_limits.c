@@ -177,8 +177,8 @@ TL_TEST(renderer_allocator_fails_at_every_call)
     static test_scene t;
     const tl_renderer_desc descs[3] = {
         {.width = 48, .height = 32},
-        {.width = 48, .height = 32, .light_strategy = TL_LIGHT_STRATEGY_TILED},
-        {.width = 48, .height = 32, .mode = TL_MODE_FORWARD},
+        {.width = 48, .height = 32, .options.light_strategy = TL_LIGHT_STRATEGY_TILED},
+        {.width = 48, .height = 32, .options.mode = TL_MODE_FORWARD},
     };
     lit_room(&t);
     for (int c = 0; c < 3; c++) {

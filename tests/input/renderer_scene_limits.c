@@ -44,7 +44,7 @@ static tl_renderer *counted_renderer(tl_renderer_desc d, counted *c)
     d.get_proc_address_user = g_ctx;
     d.allocator = (tl_allocator){counted_alloc, counted_free, c};
     d.logger = (tl_logger){keep_error, c};
-    d.synchronous_stats = 1;
+    d.options.synchronous_stats = 1;
     tl_renderer *r = NULL;
     return tl_renderer_create(&d, &r) == TL_OK ? r : NULL;
 }
@@ -200,7 +200,7 @@ TL_TEST(renderer_lights_at_the_gl_limit_taken_one_past_refused)
     if (!lights) return;
     counted c = {0};
     tl_renderer *r = counted_renderer((tl_renderer_desc){.width = 16, .height = 16,
-                                                          .light_strategy = TL_LIGHT_STRATEGY_TILED}, &c);
+                                                          .options.light_strategy = TL_LIGHT_STRATEGY_TILED}, &c);
     TL_CHECK(r != NULL);
     if (r) {
         t.s.light_count = 0;
@@ -232,7 +232,7 @@ TL_TEST(renderer_lights_at_the_gl_limit_taken_one_past_refused)
 static tl_renderer *block_renderer(tl_renderer_desc d, size_t bytes, counted *c)
 {
     d.max_storage_block_bytes = bytes;
-    d.keep_targets = TL_TARGETS_ALL;
+    d.options.keep_targets = TL_TARGETS_ALL;
     return counted_renderer(d, c);
 }
 
@@ -256,7 +256,7 @@ TL_TEST(renderer_storage_block_lowered_limits_lights_and_tile_headers)
     tl_renderer_destroy(r);
     free(lights);
     /* the tile headers: 16 bytes of counters and 8 a tile; exactly that fits, a byte less does not */
-    tl_renderer_desc d = {.width = 320, .height = 240, .light_strategy = TL_LIGHT_STRATEGY_TILED};
+    tl_renderer_desc d = {.width = 320, .height = 240, .options.light_strategy = TL_LIGHT_STRATEGY_TILED};
     r = block_renderer(d, 0, &c);
     TL_CHECK(r != NULL && tl_renderer_set_scene(r, &t.s) == TL_OK);
     tl_frame_plan p = {0};
@@ -299,7 +299,7 @@ TL_TEST(renderer_tile_entries_clamped_to_the_storage_block_lose_no_light)
     for (int i = 0; i < 4; i++)
         t.lights[i] = (tl_light){TL_LIGHT_POINT, {-6.0f + 4.0f * (float)i, 4, -2}, {0, -1, 0}, {3, 2, 1}, 9, 0, 0, 0};
     t.s.light_count = 4;
-    tl_renderer_desc d = {.width = 96, .height = 64, .light_strategy = TL_LIGHT_STRATEGY_TILED};
+    tl_renderer_desc d = {.width = 96, .height = 64, .options.light_strategy = TL_LIGHT_STRATEGY_TILED};
     counted c = {0};
     tl_renderer *full = block_renderer(d, 0, &c), *small = NULL;
     tl_frame_stats a = {0}, b = {0};
@@ -343,7 +343,8 @@ TL_TEST(renderer_forward_light_lists_over_the_storage_block_refused)
     t.s.lights = lights;
     t.s.light_count = 32;
     counted c = {0};
-    tl_renderer_desc d = {.width = 32, .height = 32, .mode = TL_MODE_FORWARD, .light_strategy = TL_LIGHT_STRATEGY_VOLUMES};
+    tl_renderer_desc d = {.width = 32, .height = 32, .options.mode = TL_MODE_FORWARD,
+                          .options.light_strategy = TL_LIGHT_STRATEGY_VOLUMES};
     tl_renderer *r = block_renderer(d, 17 * 128, &c);
     TL_CHECK(r != NULL);
     if (!r) return;

@@ -33,7 +33,7 @@ static void seen_log(void *user, tl_log_level level, const char *message)
 
 static tl_renderer *renderer(seen *log, tl_depth_format depth)
 {
-    tl_renderer_desc d = {.width = W, .height = H, .depth_format = depth, .fxaa = TL_FXAA_OFF,
+    tl_renderer_desc d = {.width = W, .height = H, .options.depth_format = depth, .options.fxaa = TL_FXAA_OFF,
                           .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
                           .logger = {seen_log, log}};
     tl_renderer *r = NULL;

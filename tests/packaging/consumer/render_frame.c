@@ -96,7 +96,7 @@ int main(void)
     res = tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 8, .detail = 1}, &scene);
     if (res == TL_OK)
         res = tl_renderer_create(&(tl_renderer_desc){.width = W, .height = H,
-                                                     .keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
+                                                     .options.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
                                                      .get_proc_address = tl_context_proc_loader,
                                                      .get_proc_address_user = ctx,
                                                      .logger = {keep_error, error}},

@@ -1,0 +1,115 @@
+/* The lights module: the scene's lights (validated copies), the light-volume meshes and each
+ * frame's instances by type (light_volumes.c), the frame's visible lights in view space
+ * (light_lists.c), the forward per-object light lists (forward_lists.c) and the tiled light lists'
+ * buffers (tiles.c). A frame asks for what its passes declared (TL__LIGHTS_*): prepare on the CPU,
+ * then upload into the frame's stream. */
+#ifndef TL_RENDER_LIGHTS_H
+#define TL_RENDER_LIGHTS_H
+
+#include "pass.h"
+#include "view.h"
+
+enum { TL__LIGHT_KINDS = 3 }; /* point, spot, directional: index = type - 1 */
+#define TL__QUERY_RING 4      /* frames whose queries and tile counters may be in flight */
+
+/* One light volume instance (light.vert attributes 1..4), world space. */
+typedef struct tl__instance {
+    float position_radius[4];
+    float color[4];
+    float direction_cos_outer[4];
+    float cos_inner, source_radius; /* attribute 4 (vec2) */
+} tl__instance;
+
+/* One light of the lights storage block (forward.frag.glsl, tiles), view space. */
+typedef struct tl__forward_light {
+    float position_radius[4];
+    float color_type[4];
+    float direction_cos_outer[4];
+    float cos_inner[4]; /* cos_inner, source radius, 0, 0 */
+} tl__forward_light;
+
+/* Tiled light lists (tiles.c): four counters (entries used, tiles that overflowed, shaded pairs as
+ * two 32-bit halves) then (offset, count) per tile; the entries; and a ring of read-back copies of
+ * the counters, read once their fence has passed (never waited for in a frame). */
+typedef struct tl__tiles {
+    GLuint headers, entries;
+    size_t capacity;            /* entries the buffer holds */
+    size_t needed;              /* most entries a finished frame used (read back) */
+    uint32_t size, x, y;        /* tile side in pixels, tiles across and down */
+    uint32_t chunks;            /* light chunks (TL__CULL_CHUNK) the headers hold lists for */
+    uint32_t frame_chunks;      /* chunks this frame's visible local lights make */
+    GLuint readback;
+    const uint32_t *readback_map;  /* TL__QUERY_RING x 4 counters */
+    GLsync fences[TL__QUERY_RING];
+    uint64_t fence_frame[TL__QUERY_RING];
+} tl__tiles;
+
+struct tl__lights {
+    tl_light *lights;
+    size_t count;
+    size_t kinds[TL__LIGHT_KINDS]; /* lights per type */
+    /* volumes (light_volumes.c) */
+    tl__instance *instances;  /* per frame: the visible lights by type, outside volumes first */
+    size_t instance_base[TL__LIGHT_KINDS], instance_count[TL__LIGHT_KINDS], instance_outside[TL__LIGHT_KINDS];
+    int fullscreen;           /* this frame's point and spot lights are full-screen triangles */
+    GLuint vao[TL__LIGHT_KINDS];
+    GLuint vbo_volume[2], ibo_volume[2];
+    uint32_t volume_index_count[2];
+    /* the frame's visible lights in view space, directional ones first (light_lists.c) */
+    tl__forward_light *view;
+    uint32_t *view_index;      /* scene light index of each */
+    float (*view_spheres)[4];  /* world-space bounding sphere of each; radius < 0: reaches everything */
+    size_t view_count, view_dir_count;
+    /* forward per-object lists (forward_lists.c) */
+    uint32_t *fwd_indices;
+    size_t fwd_capacity, fwd_count;
+    uint32_t *fwd_first, *fwd_object_count; /* per object */
+    size_t fwd_objects;                     /* objects the two arrays hold */
+    /* tiled light lists (tiles.c) */
+    tl__tiles tiles;
+};
+
+/* lights.c: validated copies of the lights (with per-frame scratch for them), counted by type;
+ * TL_ERROR_LIMIT past the device's light limit, before the array is read. */
+tl_result tl__lights_count_check(tl__device *dev, size_t count);
+tl_result tl__lights_store(tl__device *dev, tl__lights *l, const tl_light *lights, size_t count);
+/* Scratch for `objects` per-object lists (a new scene). */
+tl_result tl__lights_objects(tl__device *dev, tl__lights *l, size_t objects);
+void tl__lights_release(tl__device *dev, tl__lights *l);
+/* The frame's light data the plan needs (`needs`: TL__LIGHTS_*), on the CPU; adds what it will
+ * upload to *stream_bytes; fills the per-type counts of the statistics. */
+tl_result tl__lights_prepare(tl__device *dev, tl__lights *l, const tl__scene_gpu *scene, const tl__view *v,
+                             unsigned needs, int fullscreen, uint64_t frame, tl_frame_stats *st, size_t *stream_bytes);
+/* Into the frame's stream, bound where the shaders read it. */
+void tl__lights_upload(tl__device *dev, tl__lights *l, unsigned needs);
+/* The frame block's light counts (visible directional, visible local) and tile layout. */
+void tl__lights_frame_block(const tl__lights *l, unsigned needs, uint32_t counts[2], uint32_t tiles[4]);
+
+/* light_volumes.c */
+void tl__light_volumes_create(tl__device *dev, tl__lights *l);
+void tl__light_volumes_destroy(tl__device *dev, tl__lights *l);
+void tl__volumes_prepare(tl__lights *l, const tl__view *v, tl_frame_stats *st, size_t *stream_bytes);
+void tl__volumes_upload(tl__device *dev, tl__lights *l);
+
+/* light_lists.c: the frame's visible lights in view space. */
+void tl__light_sphere(const tl_light *l, float c[3], float *radius);
+void tl__visible_lights(tl__device *dev, tl__lights *l, const tl__view *v, size_t *stream_bytes);
+void tl__visible_lights_upload(tl__device *dev, tl__lights *l);
+
+/* forward_lists.c: per-object light lists of the visible lights (forward and transparent); empty
+ * ones unless `per_object` (Forward+ alone reads tile lists). */
+tl_result tl__forward_prepare(tl__device *dev, tl__lights *l, const tl__scene_gpu *scene, int per_object,
+                              tl_frame_stats *st, size_t *stream_bytes);
+void tl__forward_upload(tl__device *dev, tl__lights *l);
+
+/* tiles.c: the tiled light lists' buffers for a plan's tiles (made again only when they change),
+ * their growth and read-back, and the light-cull pass's dispatch. */
+tl_result tl__tiles_configure(tl__device *dev, tl__tiles *t, uint32_t size, uint32_t x, uint32_t y);
+void tl__tiles_release(tl__device *dev, tl__tiles *t);
+tl_result tl__tiles_prepare(tl__device *dev, tl__lights *l, uint64_t frame, tl_frame_stats *st);
+void tl__tiles_upload(tl__device *dev, tl__lights *l);
+void tl__tiles_cull(const tl__pass_ctx *ctx);
+/* The counters of `frame` (waiting for its fence) into the statistics. */
+void tl__tiles_collect(tl__device *dev, tl__tiles *t, tl_frame_stats *st);
+
+#endif

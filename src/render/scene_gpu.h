@@ -1,0 +1,89 @@
+/* The scene on the GPU: geometry buffers, the vertex array the plan's attributes need, the
+ * objects (kept on the CPU: their transforms and bounds are read every frame, so changing one
+ * object is changing one record), materials as std140 records, textures uploaded on first use by
+ * a material, the camera and bounds, and each frame's visible objects. scene_upload.c fills and
+ * frees it; draw.c culls and draws it. */
+#ifndef TL_RENDER_SCENE_GPU_H
+#define TL_RENDER_SCENE_GPU_H
+
+#include "pass.h"
+#include "scene/validate.h"
+#include "view.h"
+
+/* The most indices a scene may have: a 2 GiB index buffer (GLsizei draw counts, 32-bit GLsizeiptr). */
+#define TL__MAX_SCENE_INDICES ((size_t)1 << 29)
+enum { TL__WARNED_NEAR = 1u }; /* warnings given once per scene (tl__scene_gpu.warned) */
+
+/* std430 element of tl_object_buffer (shaders/object.glsl). */
+typedef struct tl__object_gpu {
+    float model[16];
+    float normal_view[12]; /* mat3: three columns of vec4 */
+    uint32_t light_first, light_count, pad[2];
+} tl__object_gpu;
+
+/* std140 block tl_material_block of shaders/material.glsl. */
+typedef struct tl__material_ubo {
+    float albedo[3], gloss;
+    float specular[3], alpha;
+    float emissive[3], alpha_cutoff;
+    float metallic, roughness, normal_scale, occlusion_strength;
+    int32_t flags, texture_mask, pad[2];
+} tl__material_ubo;
+
+typedef struct tl__gpu_material {
+    uint32_t flags;
+    GLuint textures[TL__MATERIAL_TEXTURES]; /* albedo, normal, mr, emissive, occlusion; 0 = none */
+} tl__gpu_material;
+
+struct tl__scene_gpu {
+    GLuint vao, vbo, ibo, vbo_object_ids, ubo_materials;
+    uint32_t vao_attributes; /* TL_ATTRIBUTE_* the vertex array binds */
+    size_t material_stride;
+    tl_object *objects;
+    size_t object_count;
+    tl__gpu_material *materials;
+    size_t material_count;
+    GLuint *tex_srgb, *tex_linear; /* per scene texture, created on first use by a material */
+    size_t texture_count;
+    uint32_t *visible;   /* per frame: opaque objects in scene order, then transparent far to near */
+    float *draw_keys;    /* scratch for sorting transparent objects */
+    size_t visible_opaque, visible_transparent;
+    tl_camera camera;
+    float bounds_min[3], bounds_max[3]; /* the union of the objects' bounds: the near plane's floor */
+    int has_bounds;
+    tl__camera_view frame_camera; /* the last frame's camera as resolved (after set_scene: the scene's) */
+    unsigned warned;              /* TL__WARNED_* given since the scene was set */
+    float ambient[3];             /* the scene's own (tl_renderer_options.ambient may replace it) */
+    tl_scene_feature_set features;
+    int loaded;
+};
+
+/* Counts first (TL_ERROR_LIMIT past 32-bit indices, GL sizes, the light limit), then arrays, ranges
+ * and index values (TL_ERROR_INVALID_ARGUMENT); reads nothing an array's count does not vouch for. */
+tl_result tl__scene_validate(tl__device *dev, const tl_scene *s);
+/* The scene's camera as resolved with its objects' bounds (an error naming the field), and the
+ * near plane's warning ("" when none), which set_scene gives once it has taken the scene. */
+typedef struct tl__scene_frame {
+    float bounds_min[3], bounds_max[3];
+    int has_bounds;
+    tl__camera_view camera;
+    char warning[TL__CHECK_MESSAGE_SIZE];
+} tl__scene_frame;
+tl_result tl__scene_camera(tl__device *dev, const tl_scene *s, tl_depth_format depth, tl__scene_frame *out);
+/* Objects, materials, textures and geometry buffers, and the scene's features. */
+tl_result tl__scene_upload(tl__device *dev, tl__scene_gpu *g, const tl_scene *s);
+/* Takes the camera, bounds and warning of a scene just uploaded. */
+void tl__scene_take_frame(tl__device *dev, tl__scene_gpu *g, const tl__scene_frame *f);
+void tl__scene_release(tl__device *dev, tl__scene_gpu *g);
+/* The vertex array for `attributes` (TL_ATTRIBUTE_*), made again only when they change. */
+void tl__scene_vao(tl__device *dev, tl__scene_gpu *g, uint32_t attributes);
+/* tl_renderer_options.ambient over the scene's: all zero keeps the scene's, negative = 0. */
+void tl__ambient_resolve(const float options[3], const float scene[3], float out[3]);
+
+/* draw.c: the visible objects once per frame (returns the opaque count), their per-object data
+ * (with the per-object light lists' ranges when `first` is not NULL). */
+size_t tl__visibility(tl__scene_gpu *g, const tl__view *v);
+void tl__objects_fill(const tl__scene_gpu *g, const tl__view *v, const uint32_t *first, const uint32_t *count,
+                      tl__object_gpu *out);
+
+#endif
