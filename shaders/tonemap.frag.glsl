@@ -1,5 +1,5 @@
 // Pass 4: bloom added (docs/effects.md), exposure, ACES-fitted tone curve (Narkowicz 2015) in linear space, sRGB encoding, and
-// gamma-encoded luma in alpha for FXAA.
+// gamma-encoded luma in alpha for FXAA (FXAA off: alpha 1, the output is opaque).
 #include "frame.glsl"
 
 layout(std140, binding = TL_UBO_PASS) uniform tl_tonemap_block {
@@ -40,5 +40,9 @@ void main()
     vec3 hdr = clamp(c, vec3(0.0), vec3(65504.0)) * u_exposure;
     vec3 l = tl_aces(hdr);
     vec3 s = vec3(tl_encode_srgb(l.r), tl_encode_srgb(l.g), tl_encode_srgb(l.b));
+#ifdef TL_OUT_LDR
     o_ldr = vec4(s, dot(s, vec3(0.299, 0.587, 0.114)));
+#else
+    o_ldr = vec4(s, 1.0); // the output: opaque
+#endif
 }

@@ -695,7 +695,8 @@ TL_API tl_result tl_renderer_remove_pass(tl_renderer *r, const char *name);
  */
 TL_API tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *out, size_t *size);
 
-/** Reads the final LDR image as RGBA8, rows bottom to top (GL order). *size is the buffer's size
+/** Reads the final LDR image as RGBA8 (opaque: alpha 255, with or without FXAA), rows bottom to
+ *  top (GL order). *size is the buffer's size
  *  in bytes and receives the bytes written; a NULL `rgba` asks for the size needed. */
 TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *size);
 /**

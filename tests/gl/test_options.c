@@ -176,10 +176,13 @@ TL_TEST(options_every_frame_same_bytes_as_created)
         tl_renderer *fresh = renderer(&c->o, w, h, s);
         if (!fresh) continue;
         if (render_read(r, a, n) && render_read(fresh, b, n)) {
-            size_t diff = 0;
+            size_t diff = 0, translucent = 0;
             for (size_t i = 0; i < n; i++) diff += a[i] != b[i];
+            for (size_t i = 3; i < n; i += 4) translucent += a[i] != 255; /* the output is opaque */
             if (diff) fprintf(stderr, "%s: %zu bytes differ from a renderer created with its options\n", c->name, diff);
+            if (translucent) fprintf(stderr, "%s: %zu pixels of the output have alpha below 255\n", c->name, translucent);
             TL_CHECK_EQ_U(diff, 0);
+            TL_CHECK_EQ_U(translucent, 0);
         } else {
             TL_CHECK(!"render");
         }
