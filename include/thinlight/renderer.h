@@ -570,6 +570,47 @@ TL_API tl_result tl_renderer_set_scene(tl_renderer *r, const tl_scene *scene);
  *  tl_light does not allow is TL_ERROR_INVALID_ARGUMENT naming it and the field
  *  ("lights[3].radius = 0: a point light needs a finite radius > 0"); the renderer keeps its lights. */
 TL_API tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t count);
+
+/*
+ * Scene updates: between two frames, without uploading the scene's vertices again. An object's id
+ * is its index in tl_scene.objects, or the id tl_renderer_add_object gave; ids stay until the
+ * object is removed, and a removed id is reused by a later add. Every call refuses (naming the
+ * field, TL_ERROR_INVALID_ARGUMENT, the scene unchanged) an id that does not exist or was removed,
+ * and everything tl_renderer_set_scene refuses in an object or material; before a scene is set
+ * they are TL_ERROR_INVALID_ARGUMENT. Changes take effect at the next frame (docs/renderer.md,
+ * "Scene updates", gives what each costs).
+ */
+/** Moves an object: `transform` is column-major object-to-world, all zero the identity. Its bounds
+ *  follow: its triangles' box in object space (computed at set_scene, or when the object was set
+ *  or added) through the new transform, replacing bounds that were given (give them again with
+ *  tl_renderer_set_object). Copies 16 floats and 6 bounds: no GL call, no upload. */
+TL_API tl_result tl_renderer_set_object_transform(tl_renderer *r, uint32_t object, const float transform[16]);
+/** Shows or hides an object (hidden: never drawn, culled or shaded; it keeps its slot). */
+TL_API tl_result tl_renderer_set_object_visible(tl_renderer *r, uint32_t object, int visible);
+/** Replaces an object's record (index range, material, transform, bounds; zeroes resolved as at
+ *  set_scene: zero bounds from its triangles, read from the GPU once for an index range no object
+ *  drew before). Its visibility stays. Re-plans when the scene's features change (a material
+ *  with textures, normal maps or blending where none was). */
+TL_API tl_result tl_renderer_set_object(tl_renderer *r, uint32_t object, const tl_object *desc);
+/** Adds an object drawing a range of the scene's indices (set_scene's, or tl_renderer_add_geometry's)
+ *  and writes its id. Grows the per-object arrays by doubling (TL_ERROR_LIMIT past the frame's
+ *  per-object storage block, as set_scene). */
+TL_API tl_result tl_renderer_add_object(tl_renderer *r, const tl_object *desc, uint32_t *object);
+/** Removes an object: its id is free for the next add. */
+TL_API tl_result tl_renderer_remove_object(tl_renderer *r, uint32_t object);
+/** Appends vertices and indices to the scene's buffers (indices count from the first vertex given)
+ *  and writes where the new indices start in the scene's index range, for tl_object.first_index.
+ *  Uploads only the new data: the buffers grow by half on the GPU when full (the old contents are
+ *  copied there, never from the CPU). Checked as set_scene checks a scene. */
+TL_API tl_result tl_renderer_add_geometry(tl_renderer *r, const tl_vertex *vertices, size_t vertex_count,
+                                          const uint32_t *indices, size_t index_count, uint32_t *first_index);
+/** Replaces material `index` of the scene (one std140 record written). Its maps may name the
+ *  textures that some material of the scene named at set_scene (the renderer keeps only those);
+ *  another is TL_ERROR_INVALID_ARGUMENT naming the field. Re-plans when the features change. */
+TL_API tl_result tl_renderer_set_material(tl_renderer *r, uint32_t index, const tl_material *material);
+/** An object as the renderer draws it (transform and bounds resolved) and whether it is visible;
+ *  TL_ERROR_INVALID_ARGUMENT for an id that does not exist or was removed. */
+TL_API tl_result tl_renderer_get_object(tl_renderer *r, uint32_t object, tl_object *desc, int *visible);
 /**
  * Changes the options from the next frame on (and for tl_renderer_apply_fxaa): mode, depth format,
  * light strategy, lighting model, effects, FXAA, ... Every zeroed field means its default, as in

@@ -31,7 +31,7 @@ size_t tl__visibility(tl__scene_gpu *g, const tl__view *v)
         for (size_t i = 0; i < g->object_count; i++) {
             const tl_object *o = &g->objects[i];
             int blend = (g->materials[o->material].flags & TL_MATERIAL_ALPHA_BLEND) != 0;
-            if (blend != set || !o->index_count) continue;
+            if (blend != set || !o->index_count || g->object_state[i]) continue; /* hidden or removed */
             if (!tl__box_visible((float(*)[4])v->planes, o->bounds_min, o->bounds_max)) continue;
             float d2 = 0.0f;
             for (int k = 0; k < 3; k++) {

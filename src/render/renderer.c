@@ -195,6 +195,89 @@ tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t 
     return changed ? tl__replan(r) : TL_OK;
 }
 
+/* ---- scene updates (scene_update.c) --------------------------------------------------------- */
+
+/* After an update: the lights' per-object lists as long as the objects' slots, a new plan when the
+ * scene's features changed. */
+static tl_result tl__updated(tl_renderer *r, tl_result res, int replan)
+{
+    if (res != TL_OK) return res;
+    if (r->lights.fwd_objects < r->scene.object_capacity &&
+        (res = tl__lights_objects(&r->dev, &r->lights, r->scene.object_capacity)) != TL_OK)
+        return res;
+    return replan ? tl__replan(r) : TL_OK;
+}
+
+tl_result tl_renderer_set_object_transform(tl_renderer *r, uint32_t object, const float transform[16])
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_set_object_transform");
+    return res != TL_OK ? res : tl__scene_set_transform(&r->dev, &r->scene, object, transform);
+}
+
+tl_result tl_renderer_set_object_visible(tl_renderer *r, uint32_t object, int visible)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_set_object_visible");
+    return res != TL_OK ? res : tl__scene_set_visible(&r->dev, &r->scene, object, visible);
+}
+
+tl_result tl_renderer_set_object(tl_renderer *r, uint32_t object, const tl_object *desc)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    int replan = 0;
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_set_object");
+    if (res == TL_OK) res = tl__scene_set_object(&r->dev, &r->scene, object, desc, &replan);
+    return tl__updated(r, res, replan);
+}
+
+tl_result tl_renderer_add_object(tl_renderer *r, const tl_object *desc, uint32_t *object)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    int replan = 0;
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_add_object");
+    if (res == TL_OK) res = tl__scene_add_object(&r->dev, &r->scene, desc, object, &replan);
+    return tl__updated(r, res, replan);
+}
+
+tl_result tl_renderer_remove_object(tl_renderer *r, uint32_t object)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    int replan = 0;
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_remove_object");
+    if (res == TL_OK) res = tl__scene_remove_object(&r->dev, &r->scene, object, &replan);
+    return tl__updated(r, res, replan);
+}
+
+tl_result tl_renderer_add_geometry(tl_renderer *r, const tl_vertex *vertices, size_t vertex_count,
+                                   const uint32_t *indices, size_t index_count, uint32_t *first_index)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_add_geometry");
+    if (res == TL_OK)
+        res = tl__scene_add_geometry(&r->dev, &r->scene, vertices, vertex_count, indices, index_count, first_index);
+    return res;
+}
+
+tl_result tl_renderer_set_material(tl_renderer *r, uint32_t index, const tl_material *material)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    int replan = 0;
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_set_material");
+    if (res == TL_OK) res = tl__scene_set_material(&r->dev, &r->scene, index, material, &replan);
+    return tl__updated(r, res, replan);
+}
+
+tl_result tl_renderer_get_object(tl_renderer *r, uint32_t object, tl_object *desc, int *visible)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__scene_object_id(&r->dev, &r->scene, object, "get_object");
+    if (res != TL_OK) return res;
+    if (desc) *desc = r->scene.objects[object];
+    if (visible) *visible = !(r->scene.object_state[object] & TL__OBJECT_HIDDEN);
+    return TL_OK;
+}
+
 tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;

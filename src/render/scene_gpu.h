@@ -35,12 +35,30 @@ typedef struct tl__gpu_material {
     GLuint textures[TL__MATERIAL_TEXTURES]; /* albedo, normal, mr, emissive, occlusion; 0 = none */
 } tl__gpu_material;
 
+/* What an object slot is besides its tl_object (tl__scene_gpu.object_state). */
+enum { TL__OBJECT_HIDDEN = 1u, TL__OBJECT_REMOVED = 2u };
+
+/* An axis-aligned box. */
+typedef struct tl__box {
+    float min[3], max[3];
+} tl__box;
+
 struct tl__scene_gpu {
     GLuint vao, vbo, ibo, vbo_object_ids, ubo_materials;
+    size_t vertex_count, index_count;        /* in the two buffers */
+    size_t vertex_capacity, index_capacity;  /* what the buffers hold room for (tl_renderer_add_geometry) */
     uint32_t vao_attributes; /* TL_ATTRIBUTE_* the vertex array binds */
     size_t material_stride;
-    tl_object *objects;
-    size_t object_count;
+    tl_object *objects;       /* as drawn: transform and bounds resolved; removed slots have no indices */
+    size_t object_count;      /* slots in use or removed (ids are slots: stable until removed) */
+    size_t object_capacity;   /* slots the arrays and the object-id buffer hold */
+    uint8_t *object_state;    /* TL__OBJECT_* per slot */
+    uint32_t *free_slots;     /* removed slots, reused by add_object (made at the first removal) */
+    size_t free_count;
+    tl__box *object_local;    /* per slot: its triangles' box in object space (bounds follow transforms) */
+    int bounds_dirty;         /* an object moved: bounds_min/max are made again before the next view */
+    uint32_t *material_uses;  /* per material: the objects with indices that draw it */
+    tl_scene_feature_set *material_features; /* per material: what it alone needs (tl_scene_features) */
     tl__gpu_material *materials;
     size_t material_count;
     GLuint *tex_srgb, *tex_linear; /* per scene texture, created on first use by a material */
@@ -79,6 +97,23 @@ void tl__scene_release(tl__device *dev, tl__scene_gpu *g);
 void tl__scene_vao(tl__device *dev, tl__scene_gpu *g, uint32_t attributes);
 /* tl_renderer_options.ambient over the scene's: all zero keeps the scene's, negative = 0. */
 void tl__ambient_resolve(const float options[3], const float scene[3], float out[3]);
+
+/* scene_update.c: objects and materials changed between frames (tl_renderer_set_object, ...).
+ * Each returns 1 through `replan` when the scene's features (what the plan depends on) changed. */
+void tl__scene_objects_init(tl__scene_gpu *g, const tl_scene *s);
+tl_result tl__scene_object_id(tl__device *dev, const tl__scene_gpu *g, uint32_t id, const char *call);
+tl_result tl__scene_set_transform(tl__device *dev, tl__scene_gpu *g, uint32_t id, const float transform[16]);
+tl_result tl__scene_set_visible(tl__device *dev, tl__scene_gpu *g, uint32_t id, int visible);
+tl_result tl__scene_set_object(tl__device *dev, tl__scene_gpu *g, uint32_t id, const tl_object *o, int *replan);
+tl_result tl__scene_add_object(tl__device *dev, tl__scene_gpu *g, const tl_object *o, uint32_t *id, int *replan);
+tl_result tl__scene_remove_object(tl__device *dev, tl__scene_gpu *g, uint32_t id, int *replan);
+tl_result tl__scene_add_geometry(tl__device *dev, tl__scene_gpu *g, const tl_vertex *vertices, size_t vertex_count,
+                                 const uint32_t *indices, size_t index_count, uint32_t *first_index);
+tl_result tl__scene_set_material(tl__device *dev, tl__scene_gpu *g, uint32_t index, const tl_material *m, int *replan);
+/* Whether the features changed with the materials' uses or records (sets tl__scene_gpu.features). */
+int tl__scene_features_refresh(tl__scene_gpu *g);
+/* The union of the objects' bounds again, after objects moved (before a view is resolved). */
+void tl__scene_bounds_refresh(tl__scene_gpu *g);
 
 /* draw.c: the visible objects once per frame (returns the opaque count), their per-object data
  * (with the per-object light lists' ranges when `first` is not NULL). */

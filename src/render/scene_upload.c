@@ -22,7 +22,9 @@ void tl__scene_release(tl__device *dev, tl__scene_gpu *g)
         if (g->tex_srgb && g->tex_srgb[i]) gl->DeleteTextures(1, &g->tex_srgb[i]);
         if (g->tex_linear && g->tex_linear[i]) gl->DeleteTextures(1, &g->tex_linear[i]);
     }
-    void *arrays[] = {g->tex_srgb, g->tex_linear, g->objects, g->materials, g->visible, g->draw_keys};
+    void *arrays[] = {g->tex_srgb,     g->tex_linear,   g->objects,       g->materials,
+                      g->visible,      g->draw_keys,    g->object_state,  g->object_local,
+                      g->material_uses, g->material_features, g->free_slots};
     for (size_t i = 0; i < sizeof arrays / sizeof arrays[0]; i++) tl__free(&dev->alloc, arrays[i]);
     memset(g, 0, sizeof *g);
 }
@@ -151,25 +153,35 @@ tl_result tl__scene_validate(tl__device *r, const tl_scene *s)
     return tl__scene_parts(r, s);
 }
 
-/* A texture tl__scene_parts accepted. */
-static GLuint tl__upload_texture(tl__device *dev, const tl_texture *tx, int srgb)
+static void tl__texture_sampling(const GladGLContext *gl, GLuint id, const char *label)
 {
-    const GladGLContext *gl = &dev->gl;
-    GLuint id;
-    gl->CreateTextures(GL_TEXTURE_2D, 1, &id);
-    uint32_t levels = 1, m = tx->width > tx->height ? tx->width : tx->height;
-    while (m >>= 1) levels++;
-    gl->TextureStorage2D(id, (GLsizei)levels, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, (GLsizei)tx->width,
-                         (GLsizei)tx->height);
-    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    /* rows top to bottom with uv (0,0) at the top-left, as glTF: upload as is, v samples downward */
-    gl->TextureSubImage2D(id, 0, 0, 0, (GLsizei)tx->width, (GLsizei)tx->height, GL_RGBA, GL_UNSIGNED_BYTE, tx->rgba);
     gl->GenerateTextureMipmap(id);
     gl->TextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     gl->TextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     gl->TextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
     gl->TextureParameteri(id, GL_TEXTURE_WRAP_T, GL_REPEAT);
-    tl__gl_label(gl, GL_TEXTURE, id, tx->name[0] ? tx->name : "texture");
+    tl__gl_label(gl, GL_TEXTURE, id, label);
+}
+
+static GLuint tl__texture_storage(const GladGLContext *gl, uint32_t width, uint32_t height, int srgb)
+{
+    GLuint id;
+    gl->CreateTextures(GL_TEXTURE_2D, 1, &id);
+    uint32_t levels = 1, m = width > height ? width : height;
+    while (m >>= 1) levels++;
+    gl->TextureStorage2D(id, (GLsizei)levels, srgb ? GL_SRGB8_ALPHA8 : GL_RGBA8, (GLsizei)width, (GLsizei)height);
+    return id;
+}
+
+/* A texture tl__scene_parts accepted. */
+static GLuint tl__upload_texture(tl__device *dev, const tl_texture *tx, int srgb)
+{
+    const GladGLContext *gl = &dev->gl;
+    GLuint id = tl__texture_storage(gl, tx->width, tx->height, srgb);
+    gl->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    /* rows top to bottom with uv (0,0) at the top-left, as glTF: upload as is, v samples downward */
+    gl->TextureSubImage2D(id, 0, 0, 0, (GLsizei)tx->width, (GLsizei)tx->height, GL_RGBA, GL_UNSIGNED_BYTE, tx->rgba);
+    tl__texture_sampling(gl, id, tx->name[0] ? tx->name : "texture");
     return id;
 }
 
@@ -178,6 +190,24 @@ static GLuint tl__slot_texture(tl__device *dev, tl__scene_gpu *g, const tl_scene
     if (index == TL__NO_TEXTURE) return 0;
     GLuint *slot = srgb ? &g->tex_srgb[index] : &g->tex_linear[index];
     if (!*slot) *slot = tl__upload_texture(dev, &s->textures[index], srgb);
+    return *slot;
+}
+
+/* A scene texture after set_scene, when the pixels are the caller's no longer: as uploaded, or its
+ * bytes copied on the GPU from the other colour space's upload (sRGB and linear RGBA8 share them);
+ * 0 when no material used it at set_scene. */
+static GLuint tl__kept_texture(tl__device *dev, tl__scene_gpu *g, uint32_t index, int srgb)
+{
+    GLuint *slot = srgb ? &g->tex_srgb[index] : &g->tex_linear[index];
+    GLuint other = srgb ? g->tex_linear[index] : g->tex_srgb[index];
+    if (*slot || !other) return *slot;
+    const GladGLContext *gl = &dev->gl;
+    GLint w = 0, h = 0;
+    gl->GetTextureLevelParameteriv(other, 0, GL_TEXTURE_WIDTH, &w);
+    gl->GetTextureLevelParameteriv(other, 0, GL_TEXTURE_HEIGHT, &h);
+    *slot = tl__texture_storage(gl, (uint32_t)w, (uint32_t)h, srgb);
+    gl->CopyImageSubData(other, GL_TEXTURE_2D, 0, 0, 0, 0, *slot, GL_TEXTURE_2D, 0, 0, 0, 0, w, h, 1);
+    tl__texture_sampling(gl, *slot, "texture");
     return *slot;
 }
 
@@ -221,7 +251,7 @@ static tl_result tl__upload_materials(tl__device *dev, tl__scene_gpu *g, const t
     }
     const GladGLContext *gl = &dev->gl;
     gl->CreateBuffers(1, &g->ubo_materials);
-    gl->NamedBufferStorage(g->ubo_materials, (GLsizeiptr)(n * g->material_stride), records, 0);
+    gl->NamedBufferStorage(g->ubo_materials, (GLsizeiptr)(n * g->material_stride), records, GL_DYNAMIC_STORAGE_BIT);
     tl__gl_label(gl, GL_BUFFER, g->ubo_materials, "buffer.materials");
     tl__free(&dev->alloc, records);
     g->material_count = s->material_count;
@@ -248,14 +278,20 @@ tl_result tl__scene_upload(tl__device *dev, tl__scene_gpu *g, const tl_scene *s)
 {
     tl_allocator *a = &dev->alloc;
     size_t no = s->object_count ? s->object_count : 1, nt = s->texture_count ? s->texture_count : 1;
+    size_t nm = s->material_count ? s->material_count : 1;
     g->objects = (tl_object *)tl__alloc_array(a, no, sizeof *g->objects);
-    g->materials = (tl__gpu_material *)tl__calloc(a, s->material_count ? s->material_count : 1, sizeof *g->materials);
+    g->materials = (tl__gpu_material *)tl__calloc(a, nm, sizeof *g->materials);
     g->tex_srgb = (GLuint *)tl__calloc(a, nt, sizeof(GLuint));
     g->tex_linear = (GLuint *)tl__calloc(a, nt, sizeof(GLuint));
     g->visible = (uint32_t *)tl__alloc_array(a, no, sizeof(uint32_t));
     g->draw_keys = (float *)tl__alloc_array(a, no, sizeof(float));
+    g->object_state = (uint8_t *)tl__calloc(a, no, 1);
+    g->object_local = (tl__box *)tl__alloc_array(a, no, sizeof *g->object_local);
+    g->material_uses = (uint32_t *)tl__calloc(a, nm, sizeof *g->material_uses);
+    g->material_features = (tl_scene_feature_set *)tl__calloc(a, nm, sizeof *g->material_features);
     uint32_t *ids = (uint32_t *)tl__alloc_array(a, no, sizeof(uint32_t));
-    if (!g->objects || !g->materials || !g->tex_srgb || !g->tex_linear || !g->visible || !g->draw_keys || !ids) {
+    if (!g->objects || !g->materials || !g->tex_srgb || !g->tex_linear || !g->visible || !g->draw_keys ||
+        !g->object_state || !g->object_local || !g->material_uses || !g->material_features || !ids) {
         tl__free(a, ids);
         tl__scene_release(dev, g);
         return tl__fail(dev, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory for the scene");
@@ -263,6 +299,7 @@ tl_result tl__scene_upload(tl__device *dev, tl__scene_gpu *g, const tl_scene *s)
     if (s->object_count) memcpy(g->objects, s->objects, s->object_count * sizeof *g->objects);
     for (size_t i = 0; i < s->object_count; i++) tl__object_defaults(s, &g->objects[i]); /* zero: identity, computed */
     g->object_count = s->object_count;
+    g->object_capacity = no;
     g->texture_count = s->texture_count;
     tl_result res = tl__upload_materials(dev, g, s);
     if (res != TL_OK) {
@@ -270,12 +307,15 @@ tl_result tl__scene_upload(tl__device *dev, tl__scene_gpu *g, const tl_scene *s)
         tl__scene_release(dev, g);
         return res;
     }
+    tl__scene_objects_init(g, s);
     const GladGLContext *gl = &dev->gl;
     for (size_t i = 0; i < no; i++) ids[i] = (uint32_t)i;
     g->vbo = tl__static_buffer(gl, s->vertex_count * sizeof(tl_vertex), s->vertices, "buffer.vertices");
     g->ibo = tl__static_buffer(gl, s->index_count * 4u, s->indices, "buffer.indices");
     g->vbo_object_ids = tl__static_buffer(gl, no * sizeof(uint32_t), ids, "buffer.object_ids");
     tl__free(a, ids);
+    g->vertex_count = g->vertex_capacity = s->vertex_count;
+    g->index_count = g->index_capacity = s->index_count;
     g->camera = s->camera;
     memcpy(g->ambient, s->ambient, sizeof g->ambient);
     tl_scene_features(s, &g->features);
@@ -291,4 +331,43 @@ void tl__scene_take_frame(tl__device *dev, tl__scene_gpu *g, const tl__scene_fra
     g->frame_camera = f->camera;
     g->warned = f->warning[0] ? TL__WARNED_NEAR : 0;
     if (f->warning[0]) tl__log_message(&dev->log, TL_LOG_WARNING, "renderer: %s", f->warning);
+}
+
+tl_result tl__scene_set_material(tl__device *dev, tl__scene_gpu *g, uint32_t index, const tl_material *m, int *replan)
+{
+    const char *call = "set_material";
+    if (!g->loaded) return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: no scene (set_scene first)", call);
+    if (!m) return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: no material", call);
+    if (index >= g->material_count)
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: material %u: past the scene's %zu materials",
+                        call, index, g->material_count);
+    char what[48], msg[TL__CHECK_MESSAGE_SIZE];
+    snprintf(what, sizeof what, "materials[%u]", index);
+    tl_result res = tl__material_check(m, what, g->texture_count, msg, sizeof msg);
+    if (res != TL_OK) return tl__fail(dev, res, "renderer: %s: %s", call, msg);
+    tl_material resolved;
+    tl__material_defaults(m, &resolved);
+    GLuint textures[TL__MATERIAL_TEXTURES] = {0};
+    int mask = 0;
+    for (int k = 0; k < TL__MATERIAL_TEXTURES; k++) {
+        uint32_t t = tl__material_texture(&resolved, k);
+        if (t == TL__NO_TEXTURE) continue;
+        textures[k] = tl__kept_texture(dev, g, t, tl__material_texture_slots[k].srgb);
+        if (!textures[k])
+            return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT,
+                            "renderer: %s: %s.%s names texture %u, which no material used at set_scene: the renderer "
+                            "kept no copy of it (name it in some material of the scene to keep it)",
+                            call, what, tl__material_texture_slots[k].name, t);
+        mask |= 1 << k;
+    }
+    tl__material_ubo record;
+    tl__material_record(&resolved, mask, &record);
+    dev->gl.NamedBufferSubData(g->ubo_materials, (GLintptr)(index * g->material_stride), (GLsizeiptr)sizeof record,
+                               &record);
+    g->materials[index].flags = resolved.flags;
+    memcpy(g->materials[index].textures, textures, sizeof textures);
+    g->material_features[index] = (tl_scene_feature_set){0};
+    tl__material_features(m, g->texture_count, &g->material_features[index]);
+    *replan = tl__scene_features_refresh(g);
+    return TL_OK;
 }

@@ -26,6 +26,7 @@ tl_result tl__camera_check(tl__device *dev, tl__scene_gpu *g, tl_depth_format de
                            const char *what, tl__camera_view *out)
 {
     char msg[TL__CHECK_MESSAGE_SIZE];
+    if (g->bounds_dirty) tl__scene_bounds_refresh(g); /* objects moved since the last view */
     tl_result res = tl__camera_resolve(c, what, depth, g->has_bounds ? g->bounds_min : NULL,
                                        g->has_bounds ? g->bounds_max : NULL, out, msg, sizeof msg);
     if (res != TL_OK) return tl__fail(dev, res, "renderer: %s", msg);

@@ -24,6 +24,34 @@ void tl_scene_destroy(tl_scene *scene)
 
 static int tl__nonzero3(const float v[3]) { return v[0] > 0.0f || v[1] > 0.0f || v[2] > 0.0f; }
 
+void tl__material_features(const tl_material *material, size_t texture_count, tl_scene_feature_set *out)
+{
+    /* a map past the texture array counts as no texture */
+    tl_material m;
+    tl__material_defaults(material, &m);
+    size_t nt = texture_count;
+    int albedo = tl__material_has_texture(&m, TL__MAP_ALBEDO, nt);
+    int normal = tl__material_has_texture(&m, TL__MAP_NORMAL, nt);
+    int mr_map = tl__material_has_texture(&m, TL__MAP_METALLIC_ROUGHNESS, nt);
+    int emissive = tl__material_has_texture(&m, TL__MAP_EMISSIVE, nt);
+    int occlusion = tl__material_has_texture(&m, TL__MAP_OCCLUSION, nt);
+    int mr = (m.flags & TL_MATERIAL_METALLIC_ROUGHNESS) != 0;
+    if (tl__nonzero3(m.specular) || mr) out->has_specular = 1;
+    if (mr && mr_map) out->has_metallic_roughness = 1;
+    if (albedo || emissive || occlusion || (mr && mr_map)) out->has_textures = 1;
+    if (occlusion) out->has_occlusion = 1;
+    if (emissive && tl__nonzero3(m.emissive)) out->has_emissive_texture = 1;
+    if (m.flags & TL_MATERIAL_DOUBLE_SIDED) out->has_double_sided = 1;
+    if (mr || (m.flags & TL_MATERIAL_MICROFACET)) out->has_microfacet = 1;
+    if (normal) {
+        out->has_textures = 1;
+        out->has_normal_maps = 1;
+    }
+    if (tl__nonzero3(m.emissive) && (m.emissive_map == 0 || emissive)) out->has_emissive = 1;
+    if (m.flags & TL_MATERIAL_ALPHA_MASK) out->has_alpha_mask = 1;
+    if (m.flags & TL_MATERIAL_ALPHA_BLEND) out->has_alpha_blend = 1;
+}
+
 void tl_scene_features(const tl_scene *scene, tl_scene_feature_set *out)
 {
     if (!out) return;
@@ -41,34 +69,12 @@ void tl_scene_features(const tl_scene *scene, tl_scene_feature_set *out)
     }
 
     /* Only materials that some non-empty object draws with count: an unused material needs no
-     * shader branch. A map past the texture array counts as no texture; in a scene without
-     * materials, objects draw the zeroed material, which needs nothing. */
+     * shader branch. In a scene without materials, objects draw the zeroed material, which needs
+     * nothing. */
     for (size_t i = 0; i < scene->object_count && scene->objects; i++) {
         const tl_object *o = &scene->objects[i];
         if (o->index_count == 0 || o->material >= scene->material_count || !scene->materials) continue;
-        tl_material m;
-        tl__material_defaults(&scene->materials[o->material], &m);
-        size_t nt = scene->textures ? scene->texture_count : 0;
-        int albedo = tl__material_has_texture(&m, TL__MAP_ALBEDO, nt);
-        int normal = tl__material_has_texture(&m, TL__MAP_NORMAL, nt);
-        int mr_map = tl__material_has_texture(&m, TL__MAP_METALLIC_ROUGHNESS, nt);
-        int emissive = tl__material_has_texture(&m, TL__MAP_EMISSIVE, nt);
-        int occlusion = tl__material_has_texture(&m, TL__MAP_OCCLUSION, nt);
-        int mr = (m.flags & TL_MATERIAL_METALLIC_ROUGHNESS) != 0;
-        if (tl__nonzero3(m.specular) || mr) out->has_specular = 1;
-        if (mr && mr_map) out->has_metallic_roughness = 1;
-        if (albedo || emissive || occlusion || (mr && mr_map)) out->has_textures = 1;
-        if (occlusion) out->has_occlusion = 1;
-        if (emissive && tl__nonzero3(m.emissive)) out->has_emissive_texture = 1;
-        if (m.flags & TL_MATERIAL_DOUBLE_SIDED) out->has_double_sided = 1;
-        if (mr || (m.flags & TL_MATERIAL_MICROFACET)) out->has_microfacet = 1;
-        if (normal) {
-            out->has_textures = 1;
-            out->has_normal_maps = 1;
-        }
-        if (tl__nonzero3(m.emissive) && (m.emissive_map == 0 || emissive)) out->has_emissive = 1;
-        if (m.flags & TL_MATERIAL_ALPHA_MASK) out->has_alpha_mask = 1;
-        if (m.flags & TL_MATERIAL_ALPHA_BLEND) out->has_alpha_blend = 1;
+        tl__material_features(&scene->materials[o->material], scene->textures ? scene->texture_count : 0, out);
     }
 
     out->triangle_count = scene->indices ? scene->index_count / 3 : 0;
