@@ -26,6 +26,10 @@
 #   getting_started_writes_png              docs/getting_started.c renders and writes a PNG
 #   docs_getting_started_matches_source     the program in docs/getting-started.md is the file
 #                                           verbatim and under 60 lines
+#   engine_loop_runs_and_writes_png         docs/engine_loop.c: 48 frames of changed options, moved,
+#                                           hidden, added and removed objects, dirty GL state, a resize;
+#                                           no program built after the first round; a PNG
+#   docs_engine_loop_matches_source         docs/getting-started.md shows docs/engine_loop.c verbatim
 #   docs_api_reference                      the thinlight_docs target (doxygen, warnings fail)
 #
 # Included by tests/CMakeLists.txt it adds the tests; run with `cmake -P` it is the checker, with
@@ -406,6 +410,31 @@ if(CMAKE_SCRIPT_MODE_FILE)
       "${PROGRAM}" "${WORK}/crypt.png")
     expect_png("${WORK}/crypt.png")
 
+  elseif(CHECK STREQUAL "engine_loop")
+    file(REMOVE "${WORK}/engine_loop.png")
+    run("engine_loop" ${CMAKE_COMMAND} -E env "LSAN_OPTIONS=suppressions=${LSAN_SUPP}:print_suppressions=0"
+      "${PROGRAM}" "${WORK}/engine_loop.png")
+    expect_png("${WORK}/engine_loop.png")
+
+  elseif(CHECK STREQUAL "engine_loop_doc")
+    file(READ "${SOURCE_DIR}/docs/engine_loop.c" program)
+    file(READ "${SOURCE_DIR}/docs/getting-started.md" md)
+    string(FIND "${md}" "<!-- docs/engine_loop.c -->\n```c\n" start)
+    if(start EQUAL -1)
+      message(FATAL_ERROR "docs/getting-started.md has no '<!-- docs/engine_loop.c -->' + ```c block")
+    endif()
+    string(LENGTH "<!-- docs/engine_loop.c -->\n```c\n" skip)
+    math(EXPR start "${start} + ${skip}")
+    string(SUBSTRING "${md}" ${start} -1 rest)
+    string(FIND "${rest}" "```\n" end)
+    string(SUBSTRING "${rest}" 0 ${end} block)
+    if(NOT block STREQUAL program)
+      file(WRITE "${WORK}/block.c" "${block}")
+      execute_process(COMMAND diff -u "${SOURCE_DIR}/docs/engine_loop.c" "${WORK}/block.c" OUTPUT_VARIABLE d)
+      message(FATAL_ERROR "the program in docs/getting-started.md differs from docs/engine_loop.c:\n${d}")
+    endif()
+    message(STATUS "docs/getting-started.md holds docs/engine_loop.c verbatim")
+
   elseif(CHECK STREQUAL "getting_started_doc")
     file(READ "${SOURCE_DIR}/docs/getting_started.c" program)
     file(STRINGS "${SOURCE_DIR}/docs/getting_started.c" lines)
@@ -520,6 +549,15 @@ if(TARGET thinlight_io AND THINLIGHT_WITH_OSMESA)
     ARGS -DPROGRAM=$<TARGET_FILE:tl_getting_started>)
 endif()
 tl_add_packaging_test(docs_getting_started_matches_source getting_started_doc LABELS "packaging;docs")
+# docs/engine_loop.c: an engine's frame loop (options, scene updates, GL state, a resize, an
+# application pass) runs, builds no program after its first round of options, and is on the page.
+if(TARGET thinlight_io AND THINLIGHT_WITH_OSMESA)
+  add_executable(tl_engine_loop ${PROJECT_SOURCE_DIR}/docs/engine_loop.c)
+  target_link_libraries(tl_engine_loop PRIVATE thinlight::thinlight thinlight_warnings m)
+  tl_add_packaging_test(engine_loop_runs_and_writes_png engine_loop LABELS "packaging;docs;gl"
+    ARGS -DPROGRAM=$<TARGET_FILE:tl_engine_loop>)
+endif()
+tl_add_packaging_test(docs_engine_loop_matches_source engine_loop_doc LABELS "packaging;docs")
 
 if(TARGET thinlight_docs)
   add_test(NAME docs_api_reference
