@@ -30,7 +30,7 @@ static void tl__lights_free_arrays(tl__device *dev, tl__lights *l)
     l->view = NULL;
     l->view_index = NULL;
     l->view_spheres = NULL;
-    l->count = l->view_count = l->view_dir_count = 0;
+    l->count = l->view_count = l->view_dir_count = l->allocated = 0;
 }
 
 /* Negative light is clamped to none (docs/renderer-limits.md): -inf otherwise in FP16 targets;
@@ -56,10 +56,20 @@ tl_result tl__lights_store(tl__device *dev, tl__lights *l, const tl_light *light
     size_t kinds[TL__LIGHT_KINDS] = {0};
     for (size_t i = 0; i < count; i++) {
         char what[32], msg[TL__CHECK_MESSAGE_SIZE];
-        snprintf(what, sizeof what, "lights[%zu]", i);
-        if ((res = tl__light_check(&lights[i], what, msg, sizeof msg)) != TL_OK)
+        if (tl__light_check(&lights[i], "light", msg, sizeof msg) != TL_OK) { /* named only when refused */
+            snprintf(what, sizeof what, "lights[%zu]", i);
+            res = tl__light_check(&lights[i], what, msg, sizeof msg);
             return tl__fail(dev, res, "renderer: %s", msg);
+        }
         kinds[(lights[i].type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : lights[i].type) - 1]++;
+    }
+    if (l->lights && count && count <= l->allocated) { /* the same or fewer lights: the arrays stay */
+        memcpy(l->lights, lights, count * sizeof *l->lights);
+        tl__lights_sanitize(l->lights, count);
+        l->count = count;
+        l->view_count = l->view_dir_count = 0;
+        memcpy(l->kinds, kinds, sizeof kinds);
+        return TL_OK;
     }
     tl_allocator *a = &dev->alloc;
     size_t n = count ? count : 1;
@@ -82,6 +92,7 @@ tl_result tl__lights_store(tl__device *dev, tl__lights *l, const tl_light *light
     l->view_index = vis;
     l->view_spheres = sph;
     l->count = count;
+    l->allocated = n;
     memcpy(l->kinds, kinds, sizeof kinds);
     return TL_OK;
 }

@@ -47,6 +47,7 @@ typedef struct tl__tiles {
 struct tl__lights {
     tl_light *lights;
     size_t count;
+    size_t allocated;           /* lights the five per-light arrays hold (reused while enough) */
     size_t kinds[TL__LIGHT_KINDS]; /* lights per type */
     /* volumes (light_volumes.c) */
     tl__instance *instances;  /* per frame: the visible lights by type, outside volumes first */

@@ -620,6 +620,22 @@ TL_TEST(updates_cost_printed)
             per[round] = (now_ms() - t0) * 1e6 / reps;
         }
         qsort(per, 3, sizeof per[0], cmp_double);
+        /* lights, for comparison: set_lights with 1024 point lights, per light */
+        enum { NL = 1024 };
+        tl_light *many = calloc(NL, sizeof *many);
+        double light_ns[3] = {0, 0, 0};
+        for (int i = 0; many && i < NL; i++)
+            many[i] = (tl_light){.position = {(float)(i % 32) * 0.3f - 5.0f, 1.0f, (float)(i / 32) * 0.3f - 5.0f},
+                                 .color = {0.01f, 0.01f, 0.01f}, .radius = 1.0f};
+        for (int round = 0; many && round < 3; round++) {
+            double t0 = now_ms();
+            for (int i = 0; i < 200; i++) tl_renderer_set_lights(r, many, NL);
+            light_ns[round] = (now_ms() - t0) * 1e6 / (200.0 * NL);
+        }
+        qsort(light_ns, 3, sizeof light_ns[0], cmp_double);
+        fprintf(stderr, "set_lights with %d point lights: %.1f ns CPU per light\n", NL, light_ns[1]);
+        TL_CHECK(tl_renderer_set_lights(r, s->lights, s->light_count) == TL_OK);
+        free(many);
         double scene[3], moved[3], steady[3];
         for (int round = 0; round < 3; round++) {
             double t0 = now_ms();
