@@ -75,16 +75,20 @@ tl_result tl__object_check(const tl_object *o, const char *what, char *message, 
 #define TL__DEFAULT_FOV_Y 1.0471975511965976 /* 60 degrees */
 #define TL__DEFAULT_NEAR 0.1f
 
-/* The near plane below which a depth format holds nothing of the scene, as a power of two of the
- * distance to the scene's farthest point (its "reach"): with D24 a surface at distance z lies
- * n / z below the far plane's depth 1, so below 2^-24 of the reach every surface rounds onto the
- * far plane (near = 1e-30: a frame with no light); reversed D32F stores n / z itself, a normal
- * float down to 2^-126. Such a near plane is a mistake, not a choice (1:10^7 is a choice, and
- * stays), so it is replaced by one that keeps the scene well: 2^-16 of the reach leaves D24 256
- * steps in front of the farthest surface (positions within 0.4 %). */
+/* The near plane below which the frame loses the scene, as a power of two of the distance to the
+ * scene's farthest point (its "reach"): with D24 a surface at distance z lies n / z below the far
+ * plane's depth 1, so below 2^-24 of the reach every surface rounds onto the far plane (near =
+ * 1e-30: a frame with no light). Reversed D32F stores n / z itself, a normal float down to 2^-126,
+ * but a triangle clipped at such a near plane gets a vertex at w = n whose x / w and y / w carry
+ * the clip's rounding times reach / n: on llvmpipe near = 1e-30 (2^-104 of the reach) dropped a
+ * floor triangle from the G-buffer in 1 to 6 of 30 frames, an unlit wedge. The floor is 2^-24 for
+ * both. Such a near plane is a mistake, not a choice (1:10^7 is a choice, and stays), so it is
+ * replaced by one that keeps the scene well: 2^-16 of the reach leaves D24 256 steps in front of
+ * the farthest surface (positions within 0.4 %). */
 static int tl__near_floor_exponent(tl_depth_format depth)
 {
-    return depth == TL_DEPTH_FORMAT_D32F_REVERSED ? -126 : -24;
+    (void)depth;
+    return -24;
 }
 #define TL__NEAR_RAISED_EXPONENT (-16)
 
@@ -234,9 +238,11 @@ static void tl__camera_near_floor(const char *what, tl_depth_format depth, const
     float floor_z = (float)ldexp(reach, e), raised = (float)ldexp(reach, TL__NEAR_RAISED_EXPONENT);
     if (!(floor_z > 0.0f) || !isfinite(raised) || !(out->near_z < floor_z)) return;
     tl__say(TL_OK, message, size,
-            "%s.near_z = %g: below 2^%d of the distance to the scene's farthest point (%g), where %s depth holds "
-            "nothing of the scene; raised to 2^%d of it, %g",
-            what, (double)out->near_z, e, reach, depth == TL_DEPTH_FORMAT_D32F_REVERSED ? "reversed D32F" : "D24",
+            "%s.near_z = %g: below 2^%d of the distance to the scene's farthest point (%g), where %s; raised to 2^%d "
+            "of it, %g",
+            what, (double)out->near_z, e, reach,
+            depth == TL_DEPTH_FORMAT_D32F_REVERSED ? "clipping at the near plane loses triangles"
+                                                   : "D24 depth holds nothing of the scene",
             TL__NEAR_RAISED_EXPONENT, (double)raised);
     out->near_z = raised;
     out->near_raised = 1;

@@ -71,10 +71,10 @@ void tl__camera_frame(const float bmin[3], const float bmax[3], double fov_y, tl
  * default view, tl__camera_frame of the bounds (near_z 0 = its near plane), or with NULL bounds
  * the origin looking down -Z; an up parallel to the view is replaced by the limit of views
  * tilted towards -Z (or +Y when up is along Z), so the view stays defined.
- * Fallback (TL_OK, out->near_raised, the warning in `message`): a near_z below the floor of
- * `depth` (2^-24 of the distance to the bounds' farthest corner, or the far plane when nearer, for
- * D24; 2^-126 for reversed D32F), where the depth holds nothing of the scene, is raised to 2^-16 of
- * that distance. NULL bounds: no floor.
+ * Fallback (TL_OK, out->near_raised, the warning in `message`): a near_z below 2^-24 of the
+ * distance to the bounds' farthest corner (or the far plane when nearer), where D24 holds nothing
+ * of the scene and clipping loses triangles in either depth format, is raised to 2^-16 of that
+ * distance. NULL bounds: no floor.
  */
 tl_result tl__camera_resolve(const tl_camera *c, const char *what, tl_depth_format depth, const float *bounds_min,
                              const float *bounds_max, tl__camera_view *out, char *message, size_t size);
