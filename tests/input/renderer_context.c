@@ -87,6 +87,19 @@ static void wrong_thread_calls(job *j)
     CALL("tl_renderer_resize", tl_renderer_resize(r, 32, 32));
     CALL("tl_renderer_add_pass", tl_renderer_add_pass(r, &pass));
     CALL("tl_renderer_remove_pass", tl_renderer_remove_pass(r, "late"));
+    CALL("tl_renderer_set_options", tl_renderer_set_options(r, &(tl_renderer_options){.mode = TL_MODE_FAT}));
+    static const float moved[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 2, 0, 0, 1};
+    tl_object object = {.index_count = 3};
+    uint32_t id = 0, first = 0;
+    tl_vertex tri[3] = {{.position = {0, 0, 0}}, {.position = {1, 0, 0}}, {.position = {0, 1, 0}}};
+    uint32_t tri_idx[3] = {0, 1, 2};
+    CALL("tl_renderer_set_object_transform", tl_renderer_set_object_transform(r, 0, moved));
+    CALL("tl_renderer_set_object_visible", tl_renderer_set_object_visible(r, 0, 0));
+    CALL("tl_renderer_set_object", tl_renderer_set_object(r, 0, &object));
+    CALL("tl_renderer_add_object", tl_renderer_add_object(r, &object, &id));
+    CALL("tl_renderer_remove_object", tl_renderer_remove_object(r, 0));
+    CALL("tl_renderer_add_geometry", tl_renderer_add_geometry(r, tri, 3, tri_idx, 3, &first));
+    CALL("tl_renderer_set_material", tl_renderer_set_material(r, 0, &(tl_material){0}));
 #undef CALL
     j->refused = refused;
     j->calls = calls;
