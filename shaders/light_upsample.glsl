@@ -1,0 +1,145 @@
+// The light scale's upsample and edge fix-up, in the material pass (TL_UPSAMPLE = the light
+// buffer's shift; docs/frame.md, "Light at reduced resolution"). A pixel takes the 4 nearest reduced
+// texels, each weighted by
+//   bilinear x depth similarity x normal similarity.
+// Depth: the texel's depth (the nearest sample of its block) against the pixel's own depth carried
+// along the pixel's plane to the pixel that sample came from (screen-space derivatives), within 1 %
+// of the distance plus the depth change across half a block: a texel of another surface (a silhouette, a
+// step) weighs 0, one of the same plane 1 however steeply it is seen. Normal: the texel's RT0 normal
+// against the pixel's own (the same encoding, so a flat surface compares exactly), raised to a
+// power: a crease weighs 0. Depth and normal need nothing beyond what the light pass already reads
+// (an object ID would cost a target and miss creases within an object). The light buffer holds
+// irradiance, smooth along a surface; albedo and specular colour stay at full resolution.
+// A pixel whose credible weight sums to less than TL_UPSAMPLE_CREDIBLE (no texel of its surface
+// near it: thin features, silhouettes, creases) is re-lit here, exactly as the light pass would
+// at full resolution, by looping over the frame's visible lights: no extra pass, no mask, and the
+// cost falls on the few pixels that need it.
+#ifndef TL_LIGHT_UPSAMPLE_GLSL
+#define TL_LIGHT_UPSAMPLE_GLSL
+
+#include "codec.glsl"
+#include "frame.glsl"
+#include "light_eval.glsl"
+#include "tiles.glsl" // the visible lights block
+
+layout(binding = TL_UNIT_RT0) uniform sampler2D u_rt0;
+layout(binding = TL_UNIT_LIGHT_DEPTH) uniform sampler2D u_light_depth;
+layout(binding = TL_UNIT_LIGHT_RT0) uniform sampler2D u_light_rt0;
+layout(binding = TL_UNIT_LIGHT_OFFSET) uniform sampler2D u_light_offset;
+
+const float TL_UPSAMPLE_CREDIBLE = 0.5;    // below it, the pixel is re-lit
+const float TL_UPSAMPLE_DEPTH_RELATIVE = 0.01;
+const float TL_UPSAMPLE_NORMAL_POWER = 16.0; // cos 10 degrees: 0.78, cos 30 degrees: 0.1
+
+vec4 tl_upsample_rt0(vec4 t) // normal and gloss, as the light pass decodes them
+{
+#ifdef TL_RT0_RGB10A2
+    uvec4 q = uvec4(t * vec4(1023.0, 1023.0, 1023.0, 3.0) + 0.5);
+    return tl_rt0_decode_rgb10a2(q.x | (q.y << 10) | (q.z << 20) | (q.w << 30));
+#else
+    return tl_rt0_decode_rgba8(tl_unorm8_bytes(t));
+#endif
+}
+
+float tl_upsample_linear_depth(float d)
+{
+    return tl_depth_linearize(d, u_depth_params.x, u_depth_params.y, u_depth_params.z, u_depth_params.w > 0.5);
+}
+
+// The weighted sums of the 4 texels (diffuse with its alpha, specular, Fresnel) and their weight.
+float tl_upsample_gather(vec3 n_f, float z_f, vec2 dz, out vec4 ld, out vec3 ls, out vec3 lf)
+{
+    const float k = float(1 << TL_UPSAMPLE);
+    ivec2 size = textureSize(u_light_depth, 0);
+    vec2 r = gl_FragCoord.xy / k - 0.5; // texel centres at (i + 0.5) k in the frame's pixels
+    vec2 base = floor(r), f = r - base;
+    float tol_z = TL_UPSAMPLE_DEPTH_RELATIVE * abs(z_f) + 0.5 * k * (abs(dz.x) + abs(dz.y));
+    float total = 0.0;
+    ld = vec4(0.0);
+    ls = lf = vec3(0.0);
+    for (int j = 0; j < 4; j++) {
+        ivec2 o = ivec2(j & 1, j >> 1);
+        ivec2 q = clamp(ivec2(base) + o, ivec2(0), size - 1);
+        float wb = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+        float d = texelFetch(u_light_depth, q, 0).r;
+        if (wb <= 0.0 || d == u_clear_depth) continue;
+        uint off = uint(texelFetch(u_light_offset, q, 0).r * 255.0 + 0.5);
+        vec2 c = off == 16u ? (vec2(q) + 0.5) * k : vec2(q * (1 << TL_UPSAMPLE) + ivec2(off & 3u, off >> 2)) + 0.5; // lit there
+        float predicted = z_f + dot(dz, c - gl_FragCoord.xy);
+        float wz = clamp(1.0 - abs(tl_upsample_linear_depth(d) - predicted) / tol_z, 0.0, 1.0);
+        vec3 n = tl_upsample_rt0(texelFetch(u_light_rt0, q, 0)).xyz;
+        float wn = pow(clamp(dot(n, n_f), 0.0, 1.0), TL_UPSAMPLE_NORMAL_POWER);
+        float w = wb * wz * wn;
+        if (w <= 0.0) continue;
+        total += w;
+        ld += w * texelFetch(u_light_diffuse, q, 0);
+#ifdef TL_SPECULAR_EXACT
+        ls += w * texelFetch(u_light_specular, q, 0).rgb;
+#ifdef TL_FRESNEL_SUMS
+        lf += w * texelFetch(u_light_fresnel, q, 0).rgb;
+#endif
+#endif
+    }
+    return total;
+}
+
+// The fix-up: the pixel's own light sums, over every visible light (directional ones first).
+void tl_upsample_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 ls, out vec3 lf)
+{
+    vec2 ndc = gl_FragCoord.xy * u_inv_size * 2.0 - 1.0;
+    vec3 p = tl_view_position(z_f, ndc, u_ray_params);
+    vec3 v = normalize(-p);
+    float shape = tl_lobe_shape(gloss);
+    const vec3 fp16_max = vec3(65504.0);
+    vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
+    uint count = u_light_counts.x + u_light_counts.y;
+    for (uint i = 0u; i < count; i++) {
+        tl_light_data l = tl_lights[i];
+        vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
+                                  l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
+        diffuse += min(l.color_type.rgb * t.x, fp16_max);
+        specular += min(l.color_type.rgb * t.y, fp16_max);
+        fresnel += min(l.color_type.rgb * t.z, fp16_max);
+    }
+#ifndef TL_FRESNEL_SUMS
+    specular += fresnel; // one sum: Fresnel is applied per pixel
+    fresnel = vec3(0.0);
+#endif
+    ld = vec4(diffuse, tl_luminance(specular));
+    ls = specular;
+    lf = fresnel;
+}
+
+// The light at this pixel: upsampled, or re-lit where no reduced texel is credible (true).
+bool tl_upsample_light(float z_f, vec2 dz, out vec3 diffuse, out vec3 specular, out vec3 fresnel)
+{
+    vec4 ng = tl_upsample_rt0(texelFetch(u_rt0, ivec2(gl_FragCoord.xy), 0));
+    vec4 ld;
+    vec3 ls, lf;
+    float total = tl_upsample_gather(ng.xyz, z_f, dz, ld, ls, lf);
+    bool relit = total < TL_UPSAMPLE_CREDIBLE;
+    if (relit) tl_upsample_relight(ng.xyz, ng.w, z_f, ld, ls, lf);
+    else {
+        float inv = 1.0 / total;
+        ld *= inv;
+        ls *= inv;
+        lf *= inv;
+    }
+    diffuse = tl_finite(ld.rgb);
+    specular = fresnel = vec3(0.0);
+#if defined(TL_SPECULAR_EXACT)
+    specular = tl_finite(ls);
+#ifdef TL_FRESNEL_SUMS
+    fresnel = tl_finite(lf);
+#endif
+#elif defined(TL_SPECULAR_COMPACT)
+    if (relit) specular = tl_finite(ls);
+    else {
+        float lum = tl_luminance(diffuse);
+        specular = lum > 1e-8 ? diffuse * (min(ld.a, 65504.0) / lum) : vec3(0.0);
+    }
+#endif
+    return relit;
+}
+
+#endif
