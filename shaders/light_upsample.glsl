@@ -12,15 +12,17 @@
 // irradiance, smooth along a surface; albedo and specular colour stay at full resolution.
 // A pixel whose credible weight sums to less than TL_UPSAMPLE_CREDIBLE (no texel of its surface
 // near it: thin features, silhouettes, creases) is re-lit here, exactly as the light pass would
-// at full resolution, by looping over the frame's visible lights: no extra pass, no mask, and the
-// cost falls on the few pixels that need it.
+// at full resolution, by looping over its object's lights (the forward path's per-object lists):
+// no extra pass, no mask, and the cost falls on the few pixels that need it.
 #ifndef TL_LIGHT_UPSAMPLE_GLSL
 #define TL_LIGHT_UPSAMPLE_GLSL
 
 #include "codec.glsl"
 #include "frame.glsl"
 #include "light_eval.glsl"
+#include "object.glsl"
 #include "tiles.glsl" // the visible lights block
+layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
 
 layout(binding = TL_UNIT_RT0) uniform sampler2D u_rt0;
 layout(binding = TL_UNIT_LIGHT_DEPTH) uniform sampler2D u_light_depth;
@@ -47,43 +49,70 @@ float tl_upsample_linear_depth(float d)
 }
 
 // The weighted sums of the 4 texels (diffuse with its alpha, specular, Fresnel) and their weight.
-float tl_upsample_gather(vec3 n_f, float z_f, vec2 dz, out vec4 ld, out vec3 ls, out vec3 lf)
+// Depth and offset come by textureGather (the targets clamp to their edge, as the texel indices
+// would); where all 4 texels are fully credible (inside a surface) the light buffer is read with one
+// bilinear fetch per target (the material pass binds a linear sampler to its units).
+float tl_upsample_gather(vec4 rt0_f, vec3 n_f, float z_f, vec2 dz, out vec4 ld, out vec3 ls, out vec3 lf)
 {
     const float k = float(1 << TL_UPSAMPLE);
     ivec2 size = textureSize(u_light_depth, 0);
     vec2 r = gl_FragCoord.xy / k - 0.5; // texel centres at (i + 0.5) k in the frame's pixels
     vec2 base = floor(r), f = r - base;
+    vec2 corner = (base + 1.0) / vec2(size);
+    vec4 dg = textureGather(u_light_depth, corner), og = textureGather(u_light_offset, corner);
     float tol_z = TL_UPSAMPLE_DEPTH_RELATIVE * abs(z_f) + 0.5 * k * (abs(dz.x) + abs(dz.y));
-    float total = 0.0;
-    ld = vec4(0.0);
-    ls = lf = vec3(0.0);
+    float w[4], total = 0.0;
+    bool all_credible = true;
     for (int j = 0; j < 4; j++) {
         ivec2 o = ivec2(j & 1, j >> 1);
+        int g = o.y == 1 ? o.x : 3 - o.x; // textureGather's order: (0,1) (1,1) (1,0) (0,0)
         ivec2 q = clamp(ivec2(base) + o, ivec2(0), size - 1);
         float wb = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
-        float d = texelFetch(u_light_depth, q, 0).r;
-        if (wb <= 0.0 || d == u_clear_depth) continue;
-        uint off = uint(texelFetch(u_light_offset, q, 0).r * 255.0 + 0.5);
+        float d = dg[g];
+        w[j] = 0.0;
+        if (d == u_clear_depth) {
+            all_credible = false;
+            continue;
+        }
+        uint off = uint(og[g] * 255.0 + 0.5);
         vec2 c = off == 16u ? (vec2(q) + 0.5) * k : vec2(q * (1 << TL_UPSAMPLE) + ivec2(off & 3u, off >> 2)) + 0.5; // lit there
         float predicted = z_f + dot(dz, c - gl_FragCoord.xy);
         float wz = clamp(1.0 - abs(tl_upsample_linear_depth(d) - predicted) / tol_z, 0.0, 1.0);
-        vec3 n = tl_upsample_rt0(texelFetch(u_light_rt0, q, 0)).xyz;
-        float wn = pow(clamp(dot(n, n_f), 0.0, 1.0), TL_UPSAMPLE_NORMAL_POWER);
-        float w = wb * wz * wn;
-        if (w <= 0.0) continue;
-        total += w;
-        ld += w * texelFetch(u_light_diffuse, q, 0);
+        vec4 t = texelFetch(u_light_rt0, q, 0); // the pixel's own RT0 texel (a flat surface): weight 1
+        float wn = t == rt0_f ? 1.0 : pow(clamp(dot(tl_upsample_rt0(t).xyz, n_f), 0.0, 1.0), TL_UPSAMPLE_NORMAL_POWER);
+        all_credible = all_credible && wz * wn >= 0.999;
+        w[j] = wb * wz * wn;
+        total += w[j];
+    }
+    ld = vec4(0.0);
+    ls = lf = vec3(0.0);
+    if (all_credible) { // bilinear, the weights' sum is 1
+        vec2 uv = (r + 0.5) / vec2(size);
+        ld = textureLod(u_light_diffuse, uv, 0.0);
 #ifdef TL_SPECULAR_EXACT
-        ls += w * texelFetch(u_light_specular, q, 0).rgb;
+        ls = textureLod(u_light_specular, uv, 0.0).rgb;
 #ifdef TL_FRESNEL_SUMS
-        lf += w * texelFetch(u_light_fresnel, q, 0).rgb;
+        lf = textureLod(u_light_fresnel, uv, 0.0).rgb;
+#endif
+#endif
+        return 1.0;
+    }
+    for (int j = 0; j < 4; j++) {
+        if (w[j] <= 0.0) continue;
+        ivec2 q = clamp(ivec2(base) + ivec2(j & 1, j >> 1), ivec2(0), size - 1);
+        ld += w[j] * texelFetch(u_light_diffuse, q, 0);
+#ifdef TL_SPECULAR_EXACT
+        ls += w[j] * texelFetch(u_light_specular, q, 0).rgb;
+#ifdef TL_FRESNEL_SUMS
+        lf += w[j] * texelFetch(u_light_fresnel, q, 0).rgb;
 #endif
 #endif
     }
     return total;
 }
 
-// The fix-up: the pixel's own light sums, over every visible light (directional ones first).
+// The fix-up: the pixel's own light sums, over its object's light list (the forward path's: every
+// visible light whose range reaches the object's bounds).
 void tl_upsample_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 ls, out vec3 lf)
 {
     vec2 ndc = gl_FragCoord.xy * u_inv_size * 2.0 - 1.0;
@@ -92,9 +121,9 @@ void tl_upsample_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 l
     float shape = tl_lobe_shape(gloss);
     const vec3 fp16_max = vec3(65504.0);
     vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
-    uint count = u_light_counts.x + u_light_counts.y;
+    uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
     for (uint i = 0u; i < count; i++) {
-        tl_light_data l = tl_lights[i];
+        tl_light_data l = tl_lights[tl_light_indices[first + i]];
         vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
                                   l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
         diffuse += min(l.color_type.rgb * t.x, fp16_max);
@@ -113,10 +142,10 @@ void tl_upsample_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 l
 // The light at this pixel: upsampled, or re-lit where no reduced texel is credible (true).
 bool tl_upsample_light(float z_f, vec2 dz, out vec3 diffuse, out vec3 specular, out vec3 fresnel)
 {
-    vec4 ng = tl_upsample_rt0(texelFetch(u_rt0, ivec2(gl_FragCoord.xy), 0));
+    vec4 rt0 = texelFetch(u_rt0, ivec2(gl_FragCoord.xy), 0), ng = tl_upsample_rt0(rt0);
     vec4 ld;
     vec3 ls, lf;
-    float total = tl_upsample_gather(ng.xyz, z_f, dz, ld, ls, lf);
+    float total = tl_upsample_gather(rt0, ng.xyz, z_f, dz, ld, ls, lf);
     bool relit = total < TL_UPSAMPLE_CREDIBLE;
     if (relit) tl_upsample_relight(ng.xyz, ng.w, z_f, ld, ls, lf);
     else {

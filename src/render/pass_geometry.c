@@ -128,9 +128,9 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
                  (tl__ssao_pass(in) ? TL__B(AO) : 0u);
     if (in->light_shift && in->lights) {
         /* the light scale's upsample: the reduced depth and RT0 against the pixel's own RT0; the
-         * pixels it finds no credible match for loop over the visible lights (the fix-up) */
+         * pixels it finds no credible match for loop over their object's lights (the fix-up) */
         d->samples |= TL__B(LIGHT_DEPTH) | TL__B(LIGHT_RT0) | TL__B(LIGHT_OFFSET) | TL__B(RT0);
-        d->light_data = TL__LIGHTS_VIEW;
+        d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | TL__LIGHTS_OBJECT_LISTS;
     }
     d->reads = d->samples | TL__B(DEPTH);
     d->attach_depth = 1;
@@ -148,13 +148,24 @@ static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *
              in->material_defines, tl__ssao_defines(in, d), upsample);
 }
 
+/* The light scale's upsample reads the light buffer bilinearly inside surfaces: a linear sampler on
+ * its units (texelFetch, the only read at scale 1, ignores samplers). */
+static void tl__material_execute(const tl__pass_ctx *ctx)
+{
+    const GladGLContext *gl = ctx->gl;
+    const GLuint units[3] = {TL_TARGET_LIGHT_DIFFUSE, TL_TARGET_LIGHT_SPECULAR, TL_TARGET_LIGHT_FRESNEL};
+    for (int k = 0; k < 3; k++) gl->BindSampler(units[k], ctx->linear_sampler);
+    tl__draw_opaque(ctx);
+    for (int k = 0; k < 3; k++) gl->BindSampler(units[k], 0);
+}
+
 const tl__pass_def tl__pass_material = {
     .id = TL_PASS_MATERIAL,
     .name = "material",
     .programs = {{"material", "gbuffer.vert.glsl", "material.frag.glsl"}},
     .declare = tl__material_declare,
     .permute = tl__material_permute,
-    .execute = tl__draw_opaque,
+    .execute = tl__material_execute,
     .services = TL__PASS_SCENE,
 };
 
