@@ -1,6 +1,7 @@
 // light_scale below 1 (docs/frame.md, "Light at reduced resolution"): one fragment per texel of the
 // light buffer, over its 2^TL_LIGHT_SHIFT square block of the frame. A block whose depths lie on one
-// plane (window depth is affine in screen space across a plane) keeps the depth at its centre, where
+// plane (window depth is affine in screen space across a plane, and the block's distances are
+// close) keeps the depth at its centre, where
 // the upsample's bilinear weights place the texel, and the light is computed at that point of the
 // surface. Any other block (a silhouette, a crease, a curved surface, the frame's last row or
 // column) keeps its nearest sample (smallest depth; largest with reversed Z), so the light is
@@ -8,6 +9,7 @@
 // is the nearest sample's, never blended; light.offset says where the light was computed (the
 // pixel x + 4 y in the block, or 16: the centre). The material pass's upsample rejects texels of
 // another surface and re-lights the pixels that have no credible texel left.
+#include "codec.glsl"
 #include "frame.glsl"
 
 layout(binding = TL_UNIT_DEPTH) uniform sampler2D u_depth;
@@ -23,7 +25,7 @@ void main()
     ivec2 size = textureSize(u_depth, 0);
     ivec2 base = ivec2(gl_FragCoord.xy) * TL_K;
     bool reversed = u_depth_params.w > 0.5;
-    float best = u_clear_depth;
+    float best = u_clear_depth, worst = reversed ? 1.0 : 0.0;
     ivec2 at = min(base, size - 1);
     float d[TL_K * TL_K];
     bool whole = all(lessThan(base + (TL_K - 1), size));
@@ -33,13 +35,18 @@ void main()
             if (q.x >= size.x || q.y >= size.y) continue; // the last row and column of odd sizes
             float v = texelFetch(u_depth, q, 0).r;
             d[y * TL_K + x] = v;
+            worst = reversed ? min(worst, v) : max(worst, v);
             if (reversed ? v > best : v < best) {
                 best = v;
                 at = q;
             }
         }
-    // planar: every sample on the affine fit through the corners (within depth quantisation)
-    bool planar = whole && best != u_clear_depth;
+    // planar: every sample on the affine fit through the corners (within depth quantisation); a 2x2
+    // block has only its corners, and two surfaces each constant along a column fit them too: there
+    // the distances must also lie within 4 % of the nearest
+    float z_near = tl_depth_linearize(best, u_depth_params.x, u_depth_params.y, u_depth_params.z, reversed);
+    float z_far = tl_depth_linearize(worst, u_depth_params.x, u_depth_params.y, u_depth_params.z, reversed);
+    bool planar = whole && best != u_clear_depth && (TL_K > 2 || abs(z_far - z_near) <= 0.04 * abs(z_near));
     float c00 = d[0], c10 = d[TL_K - 1], c01 = d[(TL_K - 1) * TL_K], c11 = d[TL_K * TL_K - 1];
     float gx = 0.5 * ((c10 - c00) + (c11 - c01)) / float(TL_K - 1);
     float gy = 0.5 * ((c01 - c00) + (c11 - c10)) / float(TL_K - 1);
