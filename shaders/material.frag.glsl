@@ -36,7 +36,7 @@ void main()
     float alpha = 1.0;
 #if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
     // HDR's alpha (read by no pass) marks the pixels the fix-up re-lit: 0.5 (tests, the figures)
-    if (tl_upsample_light(z_f, dz, diffuse, specular, fresnel)) alpha = 0.5;
+    if (tl_upsample_light(z_f, dz, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular, fresnel)) alpha = 0.5;
 #elif !defined(TL_NO_LIGHTS)
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 ld = texelFetch(u_light_diffuse, px, 0);
