@@ -28,7 +28,7 @@
 #define BENCH_MAX_FRAMES 1000u
 #define BENCH_MODES (TL_MODE_COUNT_ - 1) /* every mode but DEFAULT */
 #define BENCH_STRATEGIES (TL_LIGHT_STRATEGY_COUNT_) /* auto, volumes, tiled */
-#define BENCH_CONFIGS (BENCH_MODES * BENCH_STRATEGIES * 3) /* x 3: as asked, R11G11B10F, Fresnel n.v */
+#define BENCH_CONFIGS (BENCH_MODES * BENCH_STRATEGIES * 5) /* x 5: as asked, R11G11B10F, Fresnel n.v, light 1/2, 1/4 */
 #define BENCH_REFERENCE TL_MODE_FAT
 #define BENCH_PNG_MAX_BYTES (300u * 1024u)
 /* Heat maps show |mode - fat| of the final image, largest RGB channel, 0..HEAT_SCALE 8-bit steps. */
@@ -47,6 +47,8 @@
 typedef unsigned bench_config;
 #define BENCH_VARIANT_R11G11B10F 1u
 #define BENCH_VARIANT_FRESNEL_NV 2u
+#define BENCH_VARIANT_LIGHT_HALF 3u    /* thin-lpp with light_scale 0.5 (--light-scales) */
+#define BENCH_VARIANT_LIGHT_QUARTER 4u /* thin-lpp with light_scale 0.25 */
 static inline bench_config bench_config_make(tl_render_mode m, tl_light_strategy s)
 {
     return (unsigned)m + (unsigned)TL_MODE_COUNT_ * (unsigned)s;
@@ -66,6 +68,12 @@ static inline tl_light_format bench_config_light_format(bench_config c)
 {
     return bench_config_variant_of(c) == BENCH_VARIANT_R11G11B10F ? TL_LIGHT_FORMAT_R11G11B10F
                                                                    : TL_LIGHT_FORMAT_DEFAULT;
+}
+/* The light scale: 0.5 or 0.25 for those variants, else 0 (the default, 1). */
+static inline float bench_config_light_scale(bench_config c)
+{
+    unsigned v = bench_config_variant_of(c);
+    return v == BENCH_VARIANT_LIGHT_HALF ? 0.5f : v == BENCH_VARIANT_LIGHT_QUARTER ? 0.25f : 0.0f;
 }
 /* The Fresnel layout: n.v for that variant, else `asked` (--fresnel). */
 static inline tl_fresnel_layout bench_config_fresnel(bench_config c, tl_fresnel_layout asked)
@@ -108,6 +116,8 @@ typedef struct bench_options {
     const char *json, *out, *doc;
     int quick, no_plot;
     int small_light_buffer;   /* also thin-lpp/tiled with an R11G11B10F light buffer (--light-formats) */
+    unsigned light_scales;    /* --light-scales: bits 1 (1/2) and 2 (1/4): thin-lpp also at those light
+                                 scales, with the first strategy asked (default both) */
     int fresnel_nv_variant;   /* also thin-lpp/tiled with the n.v Fresnel layout: set when the scene is
                                  lit with GGX and --fresnel was not given */
     tl_tool_context_args context_args; /* --context, --device, --list-devices as given */

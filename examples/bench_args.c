@@ -35,6 +35,8 @@ static const char usage_head[] =
     "                   is each one's error reference\n"
     "  --light-formats LIST rgba16f (always) and r11g11b10f: thin-lpp/tiled also with the\n"
     "                   R11G11B10F light buffer (default rgba16f,r11g11b10f)\n"
+    "  --light-scales LIST 1 (always), 0.5, 0.25: thin-lpp also with its light buffer at that\n"
+    "                   scale per axis, with the first strategy (default 1,0.5,0.25)\n"
     "  --json FILE      write one record per (mode, strategy, lights, size)\n"
     "  --out DIR        write final images, heat maps of |mode - fat| (at the largest light count)\n"
     "                   and the plots (gnuplot) into DIR (PNG: needs a build with THINLIGHT_WITH_IO)\n"
@@ -76,11 +78,12 @@ static const char usage_tail[] =
     "target-memory budget), 2 bad usage (an unknown option, a malformed or out-of-range value).\n";
 
 enum {
-    B_HELP, B_LIST, B_QUICK, B_NO_PLOT, B_SCENE, B_SIZE, B_LIGHTS, B_MODES, B_STRATEGIES, B_FORMATS, B_FRAMES,
+    B_HELP, B_LIST, B_QUICK, B_NO_PLOT, B_SCENE, B_SIZE, B_LIGHTS, B_MODES, B_STRATEGIES, B_FORMATS, B_SCALES, B_FRAMES,
     B_WARMUP, B_SEED, B_LIGHTING, B_FRESNEL, B_JSON, B_OUT, B_DOC, B_EFFECTS, B_EFFECTS_DOC
 };
 
 static const char *const bench__format_names[] = {"rgba16f", "r11g11b10f", NULL};
+static const char *const bench__scale_names[] = {"1", "0.5", "0.25", NULL};
 
 static const tl_opt bench__opts[] = {
     {"--help", TL_OPT_FLAG, .id = B_HELP},
@@ -94,6 +97,7 @@ static const tl_opt bench__opts[] = {
     {"--modes", TL_OPT_TEXT_LIST, .id = B_MODES, .items = 2 * BENCH_MODES},
     {"--strategies", TL_OPT_TEXT_LIST, .id = B_STRATEGIES, .items = 2 * BENCH_STRATEGIES},
     {"--light-formats", TL_OPT_TEXT_LIST, .id = B_FORMATS, .items = 4, .choices = bench__format_names},
+    {"--light-scales", TL_OPT_TEXT_LIST, .id = B_SCALES, .items = 6, .choices = bench__scale_names},
     {"--frames", TL_OPT_UINT, .id = B_FRAMES, .lo = 1, .hi = BENCH_MAX_FRAMES},
     {"--warmup", TL_OPT_UINT, .id = B_WARMUP, .lo = 0, .hi = BENCH_MAX_FRAMES},
     {"--seed", TL_OPT_UINT, .id = B_SEED, .lo = 0, .hi = UINT64_MAX},
@@ -190,6 +194,10 @@ static int bench__option(bench_options *o, bench__given *g, const tl_opt_table *
         o->small_light_buffer = 0;
         for (size_t i = 0; i < v->count; i++) o->small_light_buffer |= v->u[i] == 1;
         break;
+    case B_SCALES: /* 1 is the configurations themselves */
+        o->light_scales = 0;
+        for (size_t i = 0; i < v->count; i++) o->light_scales |= v->u[i] == 1 ? 1u : v->u[i] == 2 ? 2u : 0u;
+        break;
     case B_FRAMES: o->frames = (uint32_t)v->u[0], g->frames = 1; break;
     case B_WARMUP: o->warmup = (uint32_t)v->u[0], g->warmup = 1; break;
     case B_SEED: o->seed = v->u[0], g->seed = 1; break;
@@ -251,6 +259,7 @@ int bench_parse_args(int argc, char **argv, bench_options *o)
     memset(o, 0, sizeof *o);
     o->scene = "default";
     o->small_light_buffer = 1;
+    o->light_scales = 3u;
     bench__given given = {0};
     const tl_opt_table tables[] = {TL_OPT_TABLE(bench__opts), tl_tool_effect_options, tl_tool_context_option_table,
                                    tl_tool_budget_option_table};

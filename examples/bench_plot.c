@@ -31,6 +31,8 @@ static const char *bench__dash(bench_config c)
 {
     if (bench_config_variant_of(c) == BENCH_VARIANT_R11G11B10F) return " dt 4"; /* dash-dot */
     if (bench_config_variant_of(c) == BENCH_VARIANT_FRESNEL_NV) return " dt 5";
+    if (bench_config_variant_of(c) == BENCH_VARIANT_LIGHT_HALF) return " dt 6";
+    if (bench_config_variant_of(c) == BENCH_VARIANT_LIGHT_QUARTER) return " dt 7";
     switch (bench_config_strategy(c)) {
     case TL_LIGHT_STRATEGY_TILED: return "";
     case TL_LIGHT_STRATEGY_VOLUMES: return " dt 2";
@@ -311,14 +313,16 @@ static int bench__bytes_script(FILE *f, const void *ctx)
                                                                 "#67a9cf", "#d7191c", "#f4a582", "#fdae61",
                                                                 "#b2abd2", "#7b3294", "#bababa", "#e0e0e0",
                                                                 "#8c510a", "#35978f", "#80cdc1", "#c51b7d",
-                                                                "#fee08b", "#ffd700"};
+                                                                "#fee08b", "#ffd700", "#9970ab", "#5aae61",
+                                                                "#2d004b", "#762a83", "#c2a5cf"};
     static const char *const pass_colours[TL_PASS_COUNT] = {
         [TL_PASS_DEPTH_PREPASS] = "#4d4d4d", [TL_PASS_GBUFFER] = "#2166ac",      [TL_PASS_SSAO] = "#35978f",
         [TL_PASS_SSAO_BLUR] = "#80cdc1",     [TL_PASS_SSAO_APPLY] = "#01665e",   [TL_PASS_LIGHT_CULL] = "#8c510a",
         [TL_PASS_LIGHTS] = "#fdae61",        [TL_PASS_LIGHTS_TILED] = "#f46d43", [TL_PASS_MATERIAL] = "#1a9850",
         [TL_PASS_FORWARD] = "#7b3294",       [TL_PASS_TRANSPARENT] = "#b2abd2",  [TL_PASS_FOG] = "#878787",
         [TL_PASS_DOF] = "#c51b7d",           [TL_PASS_DOF_APPLY] = "#de77ae",    [TL_PASS_TONEMAP] = "#d7191c",
-        [TL_PASS_FXAA] = "#bababa",          [TL_PASS_BLOOM] = "#ffd700"};
+        [TL_PASS_FXAA] = "#bababa",          [TL_PASS_BLOOM] = "#ffd700",        [TL_PASS_SSR] = "#9970ab",
+        [TL_PASS_SSR_APPLY] = "#c2a5cf",     [TL_PASS_VIGNETTE] = "#5aae61",     [TL_PASS_LIGHT_REDUCE] = "#762a83"};
     const tl_tool_plot *p = ctx;
     const bench_run *run = p->user;
     bench_config modes[BENCH_CONFIGS];
@@ -340,7 +344,7 @@ static int bench__bytes_script(FILE *f, const void *ctx)
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         if (!(used & (1u << t))) continue;
         fprintf(f, "%s'%s.dat' index 0 using %d%s title columnheader(%d) lc rgb '%s'", any ? ", " : "", p->name, col,
-                any ? "" : ":xtic(1)", col, target_colours[t]);
+                any ? "" : ":xtic(1)", col, target_colours[t] ? target_colours[t] : "#999999");
         col++;
         any = 1;
     }
@@ -351,7 +355,7 @@ static int bench__bytes_script(FILE *f, const void *ctx)
     for (int q = 0; q < TL_PASS_COUNT; q++) {
         if (!(passes & (1u << q))) continue;
         fprintf(f, "%s'%s.dat' index 1 using %d%s title columnheader(%d) lc rgb '%s'", any ? ", " : "", p->name, col,
-                any ? "" : ":xtic(1)", col, pass_colours[q]);
+                any ? "" : ":xtic(1)", col, pass_colours[q] ? pass_colours[q] : "#999999");
         col++;
         any = 1;
     }

@@ -33,6 +33,14 @@ static const char *bench__config_string(bench_config c, int slug)
     unsigned m = (unsigned)bench_config_mode(c), s = (unsigned)bench_config_strategy(c);
     if (m < 1 || m > BENCH_MODES || s >= BENCH_STRATEGIES) return "?";
     unsigned v = bench_config_variant_of(c);
+    static const char *const scaled[2][BENCH_STRATEGIES][2] = {
+        {{"thin-lpp/auto/light-1/2", "thin-lpp-auto-light-half"}, {"thin-lpp/volumes/light-1/2", "thin-lpp-volumes-light-half"},
+         {"thin-lpp/tiled/light-1/2", "thin-lpp-tiled-light-half"}},
+        {{"thin-lpp/auto/light-1/4", "thin-lpp-auto-light-quarter"},
+         {"thin-lpp/volumes/light-1/4", "thin-lpp-volumes-light-quarter"},
+         {"thin-lpp/tiled/light-1/4", "thin-lpp-tiled-light-quarter"}}};
+    if ((v == BENCH_VARIANT_LIGHT_HALF || v == BENCH_VARIANT_LIGHT_QUARTER) && m == TL_MODE_THIN_LPP)
+        return scaled[v - BENCH_VARIANT_LIGHT_HALF][s][slug];
     if (v && (m != TL_MODE_THIN_LPP || s != TL_LIGHT_STRATEGY_TILED)) return "?";
     if (v == BENCH_VARIANT_R11G11B10F) return slug ? "thin-lpp-tiled-r11g11b10f" : "thin-lpp/tiled/r11g11b10f";
     if (v == BENCH_VARIANT_FRESNEL_NV) return slug ? "thin-lpp-tiled-nv" : "thin-lpp/tiled/nv";
@@ -51,6 +59,11 @@ size_t bench_render_modes(const bench_options *opt, bench_config *modes)
         modes[n++] = bench_config_make(BENCH_REFERENCE, opt->strategies[s]);
         for (size_t i = 0; i < opt->mode_count; i++)
             if (opt->modes[i] != BENCH_REFERENCE) modes[n++] = bench_config_make(opt->modes[i], opt->strategies[s]);
+        bench_config lpp = bench_config_make(TL_MODE_THIN_LPP, opt->strategies[s]);
+        if (s == 0 && bench_mode_requested(opt, TL_MODE_THIN_LPP)) { /* the light scales (they light with volumes) */
+            if (opt->light_scales & 1u) modes[n++] = bench_config_variant(lpp, BENCH_VARIANT_LIGHT_HALF);
+            if (opt->light_scales & 2u) modes[n++] = bench_config_variant(lpp, BENCH_VARIANT_LIGHT_QUARTER);
+        }
         bench_config tiled = bench_config_make(TL_MODE_THIN_LPP, TL_LIGHT_STRATEGY_TILED);
         if (opt->strategies[s] != TL_LIGHT_STRATEGY_TILED || !bench_mode_requested(opt, TL_MODE_THIN_LPP)) continue;
         if (opt->small_light_buffer) modes[n++] = bench_config_variant(tiled, BENCH_VARIANT_R11G11B10F);
@@ -326,7 +339,8 @@ static tl_renderer_desc bench__config_desc(const bench_run *run, bench_config c,
     const bench_options *opt = &run->opt;
     tl_renderer_desc d = {.options.mode = bench_config_mode(c), .options.light_strategy = bench_config_strategy(c),
                           .options.light_format = bench_config_light_format(c), .options.lighting = opt->lighting,
-                          .options.fresnel = bench_config_fresnel(c, opt->fresnel), .width = size.width,
+                          .options.fresnel = bench_config_fresnel(c, opt->fresnel),
+                          .options.light_scale = bench_config_light_scale(c), .width = size.width,
                           .height = size.height, .options.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
                           .options.synchronous_stats = 1};
     tl_tool_budget_renderer(&opt->budgets, &d);

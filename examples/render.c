@@ -55,7 +55,9 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         [TL_TARGET_LDR] = "ldr",               [TL_TARGET_OUTPUT] = "output",
         [TL_TARGET_AO_RAW] = "ao_raw",         [TL_TARGET_AO] = "ao",
         [TL_TARGET_DOF] = "dof",               [TL_TARGET_LIGHT_FRESNEL] = "light_fresnel",
-        [TL_TARGET_BLOOM] = "bloom",           [TL_TARGET_SSR] = "ssr"};
+        [TL_TARGET_BLOOM] = "bloom",           [TL_TARGET_SSR] = "ssr",
+        [TL_TARGET_LIGHT_DEPTH] = "light_depth", [TL_TARGET_LIGHT_RT0] = "light_rt0_normal_gloss",
+        [TL_TARGET_LIGHT_OFFSET] = "light_offset"};
     tl_frame_plan plan;
     if (tl_renderer_get_plan(r, &plan) != TL_OK) memset(&plan, 0, sizeof plan);
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
@@ -72,7 +74,7 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         /* each at its own precision: half floats hold 16F targets and 8-bit channels exactly; depth
          * (24 or 32 bits, read as window depth and distance), the decoded RT0 normal (2 x 10 or 12
          * bits) and 32-bit float targets need full floats */
-        int full = t == TL_TARGET_DEPTH || t == TL_TARGET_RT0 || plan.target_bytes_per_pixel[t] >= 16;
+        int full = t == TL_TARGET_DEPTH || t == TL_TARGET_RT0 || t == TL_TARGET_LIGHT_DEPTH || t == TL_TARGET_LIGHT_RT0 || plan.target_bytes_per_pixel[t] >= 16;
         tl_image_desc id = {.width = tw, .height = th, .channels = 4, .type = TL_PIXEL_F32, .bottom_up = 1,
                             .full_float = full};
         if (tl_tool_write_image("thinlight-render", path, &id, buf)) {

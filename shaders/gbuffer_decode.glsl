@@ -4,8 +4,23 @@
 #include "codec.glsl"
 #include "frame.glsl"
 
+#ifdef TL_LIGHT_SHIFT
+// The light scale: the light pass reads the reduced depth and RT0 (light_reduce.frag.glsl)
+layout(binding = TL_UNIT_LIGHT_DEPTH) uniform sampler2D u_depth;
+layout(binding = TL_UNIT_LIGHT_RT0) uniform sampler2D u_rt0;
+layout(binding = TL_UNIT_LIGHT_OFFSET) uniform sampler2D u_light_offset;
+
+// The pixel of the frame a reduced texel's depth and RT0 came from.
+vec2 tl_reduced_pixel_centre(ivec2 px)
+{
+    uint o = uint(texelFetch(u_light_offset, px, 0).r * 255.0 + 0.5);
+    const float k = float(1 << TL_LIGHT_SHIFT);
+    return o == 16u ? (vec2(px) + 0.5) * k : vec2(px * (1 << TL_LIGHT_SHIFT) + ivec2(o & 3u, o >> 2)) + 0.5;
+}
+#else
 layout(binding = TL_UNIT_DEPTH) uniform sampler2D u_depth;
 layout(binding = TL_UNIT_RT0) uniform sampler2D u_rt0;
+#endif
 layout(binding = TL_UNIT_RT1) uniform sampler2D u_rt1;
 layout(binding = TL_UNIT_FAT_POSITION) uniform sampler2D u_fat_position;
 layout(binding = TL_UNIT_FAT_NORMAL) uniform sampler2D u_fat_normal;
@@ -19,7 +34,12 @@ bool tl_gbuffer_position(ivec2 px, out vec3 p)
     p = vec3(0.0);
     if (d == u_clear_depth) return false;
     float z = tl_depth_linearize(d, u_depth_params.x, u_depth_params.y, u_depth_params.z, u_depth_params.w > 0.5);
+#ifdef TL_LIGHT_SHIFT
+    // a reduced texel is lit at the position of the pixel its depth and normal came from
+    vec2 ndc = tl_reduced_pixel_centre(px) * u_inv_size * 2.0 - 1.0;
+#else
     vec2 ndc = (vec2(px) + 0.5) * u_inv_size * 2.0 - 1.0;
+#endif
     p = tl_view_position(z, ndc, u_ray_params);
     return true;
 }

@@ -19,12 +19,25 @@ vec3 tl_finite(vec3 c) // FP16 sums of many bright lights can reach Inf: keep ta
                 isinf(c.b) || isnan(c.b) ? 65504.0 : c.b);
 }
 
+#if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
+#include "light_upsample.glsl"
+#endif
+
 void main()
 {
+#if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
+    // the light scale: the pixel's view depth and its plane's slope, before any discard
+    float z_f = tl_upsample_linear_depth(gl_FragCoord.z);
+    vec2 dz = vec2(dFdx(z_f), dFdy(z_f));
+#endif
     tl_surface s = tl_material_surface();
     if (tl_material_masked(s)) discard;
     vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
-#ifndef TL_NO_LIGHTS
+    float alpha = 1.0;
+#if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
+    // HDR's alpha (read by no pass) marks the pixels the fix-up re-lit: 0.5 (tests, the figures)
+    if (tl_upsample_light(z_f, dz, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular, fresnel)) alpha = 0.5;
+#elif !defined(TL_NO_LIGHTS)
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 ld = texelFetch(u_light_diffuse, px, 0);
     diffuse = tl_finite(ld.rgb);
@@ -55,5 +68,5 @@ void main()
 #else
     vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + f0 * specular + fresnel + s.emissive;
 #endif
-    o_color = vec4(min(c, vec3(65504.0)), 1.0);
+    o_color = vec4(min(c, vec3(65504.0)), alpha);
 }

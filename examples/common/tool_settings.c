@@ -5,6 +5,7 @@ const char tl_tool_settings_help[] =
     "  --mode MODE           thin-lpp (default), thin-deferred, fat or forward\n"
     "  --no-depth-prepass    forward mode without its depth pre-pass\n"
     "  --light-strategy S    auto (default), volumes or tiled\n"
+    "  --light-scale K       thin-lpp: light buffer size per axis, 1 (default), 0.5 or 0.25\n"
     "  --depth FMT           d24 (default) or d32f-reversed\n"
     "  --rt0 FMT             rgba8 (default: oct 2x12 + gloss 8) or rgb10a2\n"
     "  --light-buffer L      exact (default: diffuse + specular RGBA16F) or compact (one RGBA16F)\n"
@@ -20,7 +21,7 @@ const char tl_tool_settings_help[] =
     "  --exposure E          exposure before tone mapping (default 1; above 0, at most 1e6)\n";
 
 enum { S_MODE, S_NO_PREPASS, S_STRATEGY, S_DEPTH, S_RT0, S_LIGHT_BUFFER, S_LIGHT_FORMAT, S_LIGHTING, S_FRESNEL,
-       S_AMBIENT, S_TILE_SIZE, S_TILED_SHADING, S_FXAA, S_EXPOSURE };
+       S_AMBIENT, S_TILE_SIZE, S_TILED_SHADING, S_FXAA, S_EXPOSURE, S_LIGHT_SCALE };
 
 static const char *const depth_names[] = {"d24", "d32f-reversed", NULL};
 static const int depth_values[] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
@@ -34,6 +35,8 @@ static const char *const tile_names[] = {"8", "16", "32", NULL};
 static const int tile_values[] = {8, 16, 32};
 static const char *const shading_names[] = {"fragment", "compute", NULL};
 static const int shading_values[] = {TL_TILED_SHADING_FRAGMENT, TL_TILED_SHADING_COMPUTE};
+static const char *const light_scale_names[] = {"1", "0.5", "0.25", NULL};
+static const int light_scale_values[] = {1, 2, 4}; /* the divisor */
 static const char *const fxaa_names[] = {"off", "12", "29", "39", NULL};
 static const int fxaa_values[] = {TL_FXAA_OFF, TL_FXAA_12, TL_FXAA_29, TL_FXAA_39};
 
@@ -43,6 +46,7 @@ static const tl_opt settings_opts[] = {
     {"--mode", TL_OPT_TEXT, .id = S_MODE},
     {"--no-depth-prepass", TL_OPT_FLAG, .id = S_NO_PREPASS},
     {"--light-strategy", TL_OPT_TEXT, .id = S_STRATEGY},
+    {"--light-scale", TL_OPT_TEXT, .id = S_LIGHT_SCALE, CHOICE(light_scale)},
     {"--depth", TL_OPT_TEXT, .id = S_DEPTH, CHOICE(depth)},
     {"--rt0", TL_OPT_TEXT, .id = S_RT0, CHOICE(rt0)},
     {"--light-buffer", TL_OPT_TEXT, .id = S_LIGHT_BUFFER, CHOICE(light_buffer)},
@@ -89,6 +93,7 @@ int tl_tool_settings_apply(const char *tool, tl_renderer_desc *d, const tl_opt *
     case S_TILED_SHADING: d->options.tiled_shading = (tl_tiled_shading)u; break;
     case S_FXAA: d->options.fxaa = (tl_fxaa_preset)u; break;
     case S_EXPOSURE: d->options.exposure = (float)v->f[0]; break;
+    case S_LIGHT_SCALE: d->options.light_scale = 1.0f / (float)u; break;
     default: return tl__settings_named(tool, d, o->id, v->text);
     }
     return 1;

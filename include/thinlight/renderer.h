@@ -260,6 +260,12 @@ typedef struct tl_renderer_options {
     tl_fresnel_layout fresnel;         /**< thin-lpp with GGX: default two sums (exact) */
     uint32_t tile_size;                /**< tiled strategy: tile side in pixels, 8, 16 or 32; 0: the default (docs/frame.md) */
     tl_tiled_shading tiled_shading;    /**< tiled strategy: fragment (default) or compute shading pass */
+    /** thin-lpp: the light buffer's size per axis against the frame's, 1, 0.5 or 0.25 (0: the
+     *  default, 1). Below 1 the light is computed on a reduced depth and RT0, upsampled in the
+     *  material pass with depth and normal aware weights, and pixels with no credible reduced
+     *  neighbour are re-lit at full resolution (docs/frame.md, "Light at reduced resolution").
+     *  Other modes plan as with 1; a reduced light buffer uses the volumes strategy. */
+    float light_scale;
     tl_fxaa_preset fxaa;               /**< default 29 */
     float fxaa_edge_threshold;         /**< default 0.166 (relative local contrast) */
     float fxaa_edge_threshold_min;     /**< default 0.0833 (absolute, in gamma-encoded luma) */
@@ -355,6 +361,7 @@ typedef enum tl_pass {
     TL_PASS_TONEMAP,       /**< (bloom added), exposure, tone curve, sRGB encoding */
     TL_PASS_FXAA,          /**< FXAA, when it is on */
     TL_PASS_VIGNETTE,      /**< vignette: its mask, then HDR darkened by it (runs before the tone map) */
+    TL_PASS_LIGHT_REDUCE,  /**< light_scale below 1: depth and RT0 reduced to the light buffer's size */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
@@ -382,6 +389,9 @@ typedef enum tl_target_id {
     TL_TARGET_BLOOM,          /**< RGBA16F bloom chain: half size (odd sizes round up), tl_bloom_desc.levels mip levels */
     TL_TARGET_SSR,            /**< RGBA16F reflected radiance as added to HDR; alpha: its weight */
     TL_TARGET_VIGNETTE,       /**< R16F vignette factor (1: untouched) */
+    TL_TARGET_LIGHT_DEPTH,    /**< light_scale below 1: the nearest depth of each block, depth's format, the light buffer's size */
+    TL_TARGET_LIGHT_RT0,      /**< light_scale below 1: RT0 of that nearest sample, the light buffer's size */
+    TL_TARGET_LIGHT_OFFSET,   /**< light_scale below 1: R8, that sample's pixel within its block (x + 4 y; 16: its centre) */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -468,6 +478,9 @@ typedef struct tl_frame_plan {
     uint32_t tile_size;                          /**< tiled: tile side in pixels (0 with volumes) */
     uint32_t tiles_x;                            /**< tiled: tiles across */
     uint32_t tiles_y;                            /**< tiled: tiles down */
+    float light_scale;                           /**< the light buffer's size per axis against the frame's
+                                                      (1, 0.5, 0.25): 1 outside thin-lpp */
+    char light_scale_reason[96];                 /**< why, when the options asked for a scale below 1 */
     size_t program_count;                        /**< entries used in programs */
     tl_plan_program programs[TL_PLAN_MAX_PROGRAMS]; /**< every permutation the frame compiles */
 } tl_frame_plan;

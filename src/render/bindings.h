@@ -19,11 +19,11 @@
     X(IMAGE_LIGHT_SPECULAR, 1)                                                                    \
     X(IMAGE_HDR, 2)                                                                               \
     X(IMAGE_LIGHT_FRESNEL, 3)                                                                     \
-    X(UNIT_ALBEDO_TEXTURE, 20)   /* material textures (units below 20 are the targets') */        \
-    X(UNIT_NORMAL_TEXTURE, 21)                                                                    \
-    X(UNIT_MR_TEXTURE, 22)                                                                        \
-    X(UNIT_EMISSIVE_TEXTURE, 23)                                                                  \
-    X(UNIT_OCCLUSION_TEXTURE, 24)                                                                 \
+    X(UNIT_ALBEDO_TEXTURE, 24)   /* material textures (units below 24 are the targets') */        \
+    X(UNIT_NORMAL_TEXTURE, 25)                                                                    \
+    X(UNIT_MR_TEXTURE, 26)                                                                        \
+    X(UNIT_EMISSIVE_TEXTURE, 27)                                                                  \
+    X(UNIT_OCCLUSION_TEXTURE, 28)                                                                 \
     X(CULL_CHUNK, 16384)         /* local lights one light-cull invocation tests (tiles.glsl) */
 
 enum {
@@ -31,7 +31,7 @@ enum {
     TL__BINDING_LIST(TL__BINDING_ENUM)
 #undef TL__BINDING_ENUM
     TL__MATERIAL_TEXTURES = 5,
-    TL__TEXTURE_UNITS_USED = 25, /* units the renderer may bind: 0 .. 24 */
+    TL__TEXTURE_UNITS_USED = 29, /* units the renderer may bind: 0 .. 28 */
     TL__BUFFER_BINDINGS_USED = 5, /* uniform and storage binding points it may bind: 0 .. 4 */
     TL__IMAGE_UNITS_USED = 4     /* image units it may bind: 0 .. 3 */
 };

@@ -122,7 +122,8 @@ static void tl__pass_body(tl_renderer *r, const tl__compiled_pass *cp, const GLu
                            out->height ? (GLsizei)out->height : h);
     } else {
         tl__state_framebuffer(gl, &dev->state, cp->fbo);
-        tl__state_viewport(gl, &dev->state, 0, 0, w, h);
+        tl__state_viewport(gl, &dev->state, 0, 0, cp->fb_width ? (GLsizei)cp->fb_width : w,
+                           cp->fb_height ? (GLsizei)cp->fb_height : h);
         tl__clear(r, cp);
     }
     tl__state_apply(gl, &dev->state, &cp->decl->state);

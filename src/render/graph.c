@@ -174,11 +174,11 @@ static tl_result tl__graph_pass(tl__device *dev, tl__graph *r, tl__compiled_pass
     cp->plan = pp;
     cp->decl = d;
     for (int t = 0; t < TL_TARGET_COUNT && n < TL__FRAMEBUFFER_MAX_COLORS; t++) {
-        if (t == TL_TARGET_DEPTH || !(d->writes & TL_TARGET_BIT(t))) continue;
+        if (t == TL_TARGET_DEPTH || t == TL_TARGET_LIGHT_DEPTH || !(d->writes & TL_TARGET_BIT(t))) continue;
         if (d->clears & TL_TARGET_BIT(t)) cp->clear_locations[cp->clear_count++] = (uint8_t)n;
         colors[n++] = &r->targets[t];
     }
-    cp->clear_depth = (d->clears & TL_TARGET_BIT(TL_TARGET_DEPTH)) != 0;
+    cp->clear_depth = (d->clears & TL_TARGET_BIT(d->depth_target)) != 0;
     cp->writes_output = (d->writes & TL_TARGET_BIT(TL_TARGET_OUTPUT)) != 0;
     for (int t = 0; t < TL_TARGET_COUNT; t++)
         if (d->samples & TL_TARGET_BIT(t)) {
@@ -191,7 +191,10 @@ static tl_result tl__graph_pass(tl__device *dev, tl__graph *r, tl__compiled_pass
     }
     char label[64], msg[256];
     snprintf(label, sizeof label, "fbo.%s", pp->name);
-    const tl__target *depth = d->attach_depth ? &r->targets[TL_TARGET_DEPTH] : NULL;
+    const tl__target *depth = d->attach_depth ? &r->targets[d->depth_target] : NULL;
+    /* the viewport is the framebuffer's size: reduced targets (the light scale) have their own */
+    cp->fb_width = n ? colors[0]->width : depth ? depth->width : 0;
+    cp->fb_height = n ? colors[0]->height : depth ? depth->height : 0;
     tl_result res = tl__framebuffer_create(&dev->gl, label, colors, n, depth, &cp->fbo, msg, sizeof msg);
     if (res != TL_OK) return tl__fail(dev, res, "renderer: %s", msg);
     if (res == TL_OK && d->split_writes) res = tl__graph_split(dev, cp, colors, n);

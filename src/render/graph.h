@@ -32,6 +32,7 @@ typedef struct tl__compiled_pass {
      * (level_fbos[0] is fbo) */
     uint8_t level_count;
     uint32_t level_width, level_height;
+    uint32_t fb_width, fb_height; /* its framebuffer's size, the viewport of its draws (0: the frame's) */
     GLuint level_fbos[TL__MAX_LEVELS];
     GLuint level_textures[TL__MAX_LEVELS];
     /* it splits its writes (tl__pass_decl.split_writes): a framebuffer per colour write */

@@ -43,6 +43,7 @@ typedef struct tl__plan_input {
     tl_scene_feature_set f;
     const tl__mode_def *mode;
     int lights;                 /* any light to draw */
+    uint32_t light_shift;       /* the light buffer is the frame's size over 2^light_shift (tl__light_shift) */
     tl_light_strategy strategy; /* volumes or tiled (resolved) */
     char strategy_reason[96];
     uint32_t tile_size, tiles_x, tiles_y;
@@ -75,6 +76,7 @@ typedef struct tl__pass_decl {
     uint32_t clears;       /* cleared when the pass starts */
     uint32_t neighbourhood; /* samples read as a 5-texel cross per fragment (bytes estimate) */
     uint8_t attach_depth;  /* the depth target is attached (tested or written) */
+    uint8_t depth_target;  /* which: a tl_target_id, 0 (TL_TARGET_DEPTH) or TL_TARGET_LIGHT_DEPTH */
     uint8_t compute;       /* a compute pass: no framebuffer, no clears, no raster state */
     uint8_t light_data;    /* TL__LIGHTS_* it reads */
     uint8_t split_writes;  /* it renders its colour writes one at a time: a framebuffer per write too */
@@ -160,6 +162,9 @@ void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d);
 /* Forward shading reads tile lists (Forward+) in this plan; it has a depth pre-pass (modes.c). */
 int tl__forward_plus(const tl__plan_input *in);
 int tl__forward_prepass(const tl__plan_input *in);
+/* The depth and RT0 formats in a configuration (pass_geometry.c; the light scale's reduced copies too). */
+uint32_t tl__depth_format(const tl_renderer_options *o);
+uint32_t tl__rt0_format(const tl_renderer_options *o);
 /* The state of a full-screen triangle pass: colour and depth writes on, nothing else (modes.c). */
 extern const tl__pipeline tl__pipeline_fullscreen;
 /* The permute step of a pass with one program and no defines of its own (modes.c). */

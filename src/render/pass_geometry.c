@@ -11,14 +11,14 @@
 
 /* fat is the full-float reference: D32F. No pass uses stencil, so float depth carries none
  * (D32F_S8 would cost 8 B/px); D24 comes packed with its stencil byte. */
-static uint32_t tl__depth_format(const tl_renderer_options *o)
+uint32_t tl__depth_format(const tl_renderer_options *o)
 {
     int f32 = o->mode == TL_MODE_FAT || o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ||
               o->depth_format == TL_DEPTH_FORMAT_D32F;
     return f32 ? GL_DEPTH_COMPONENT32F : GL_DEPTH24_STENCIL8;
 }
 
-static uint32_t tl__rt0_format(const tl_renderer_options *o)
+uint32_t tl__rt0_format(const tl_renderer_options *o)
 {
     return o->rt0 == TL_RT0_RGB10A2 ? GL_RGB10_A2 : GL_RGBA8;
 }
@@ -126,6 +126,12 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->writes = d->clears = TL__B(HDR);
     d->samples = TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | TL__B(LIGHT_FRESNEL) | /* those the light pass writes */
                  (tl__ssao_pass(in) ? TL__B(AO) : 0u);
+    if (in->light_shift && in->lights) {
+        /* the light scale's upsample: the reduced depth and RT0 against the pixel's own RT0; the
+         * pixels it finds no credible match for loop over their object's lights (the fix-up) */
+        d->samples |= TL__B(LIGHT_DEPTH) | TL__B(LIGHT_RT0) | TL__B(LIGHT_OFFSET) | TL__B(RT0);
+        d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | TL__LIGHTS_OBJECT_LISTS;
+    }
     d->reads = d->samples | TL__B(DEPTH);
     d->attach_depth = 1;
     d->state = tl__geometry_state(in, TL__DEPTH_EQUAL, 0, TL__BLEND_OFF);
@@ -134,8 +140,23 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",
-             in->material_defines, tl__ssao_defines(in, d));
+    char upsample[48] = "";
+    if ((d->samples & TL__B(LIGHT_DIFFUSE)) && (d->samples & TL__B(LIGHT_RT0)))
+        snprintf(upsample, sizeof upsample, " TL_UPSAMPLE=%u%s", (unsigned)in->light_shift,
+                 in->o->rt0 == TL_RT0_RGB10A2 ? " TL_RT0_RGB10A2" : "");
+    snprintf(out->slot[0], sizeof out->slot[0], "%s%s%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",
+             in->material_defines, tl__ssao_defines(in, d), upsample);
+}
+
+/* The light scale's upsample reads the light buffer bilinearly inside surfaces: a linear sampler on
+ * its units (texelFetch, the only read at scale 1, ignores samplers). */
+static void tl__material_execute(const tl__pass_ctx *ctx)
+{
+    const GladGLContext *gl = ctx->gl;
+    const GLuint units[3] = {TL_TARGET_LIGHT_DIFFUSE, TL_TARGET_LIGHT_SPECULAR, TL_TARGET_LIGHT_FRESNEL};
+    for (int k = 0; k < 3; k++) gl->BindSampler(units[k], ctx->linear_sampler);
+    tl__draw_opaque(ctx);
+    for (int k = 0; k < 3; k++) gl->BindSampler(units[k], 0);
 }
 
 const tl__pass_def tl__pass_material = {
@@ -144,7 +165,7 @@ const tl__pass_def tl__pass_material = {
     .programs = {{"material", "gbuffer.vert.glsl", "material.frag.glsl"}},
     .declare = tl__material_declare,
     .permute = tl__material_permute,
-    .execute = tl__draw_opaque,
+    .execute = tl__material_execute,
     .services = TL__PASS_SCENE,
 };
 

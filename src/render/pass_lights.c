@@ -18,11 +18,14 @@ static uint32_t tl__light_format(const tl_renderer_options *o)
 }
 
 static const tl__target_def tl__target_light_diffuse = {TL__TARGET(LIGHT_DIFFUSE, "light.diffuse"),
-                                                        .format_of = tl__light_format, .store = TL__STORE_LIGHT};
+                                                        .format_of = tl__light_format, .shift_of = tl__light_shift,
+                                                        .store = TL__STORE_LIGHT};
 static const tl__target_def tl__target_light_specular = {TL__TARGET(LIGHT_SPECULAR, "light.specular"),
-                                                         .format_of = tl__light_format, .store = TL__STORE_LIGHT};
+                                                         .format_of = tl__light_format, .shift_of = tl__light_shift,
+                                                        .store = TL__STORE_LIGHT};
 static const tl__target_def tl__target_light_fresnel = {TL__TARGET(LIGHT_FRESNEL, "light.fresnel"),
-                                                        .format_of = tl__light_format, .store = TL__STORE_LIGHT};
+                                                        .format_of = tl__light_format, .shift_of = tl__light_shift,
+                                                        .store = TL__STORE_LIGHT};
 
 /* What the light pass reads and writes in this mode, whatever the strategy (the tiled pass too). */
 void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
@@ -44,6 +47,12 @@ static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
     tl__light_pass_targets(in, d);
     if (!(d->writes & TL__B(HDR))) d->clears = d->writes;
     d->attach_depth = 1;
+    if (in->light_shift) { /* the light scale: the reduced depth and RT0 (pass_light_reduce.c) */
+        uint32_t full = TL__B(DEPTH) | TL__B(RT0), reduced = TL__B(LIGHT_DEPTH) | TL__B(LIGHT_RT0) | TL__B(LIGHT_OFFSET);
+        d->reads = (d->reads & ~full) | reduced;
+        d->samples = (d->samples & ~full) | reduced;
+        d->depth_target = TL_TARGET_LIGHT_DEPTH;
+    }
     d->light_data = TL__LIGHTS_INSTANCES;
     d->state = (tl__pipeline){.depth_write = 0, .color_write = 1, .blend = TL__BLEND_ADD,
                               .clip_zero_one = in->o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED};
@@ -56,9 +65,11 @@ static void tl__lights_permute(const tl__plan_input *in, const tl__pass_decl *d,
     for (int k = 0; k < 3; k++) {
         if (!counts[k]) continue;
         out->used[k] = 1;
-        snprintf(out->slot[k], sizeof out->slot[k], "TL_LIGHT_TYPE=%d %s%s%s %s%s", k + 1, in->mode->light_define,
-                 (d->reads & TL__B(RT0)) ? " " : "", (d->reads & TL__B(RT0)) ? in->rt0_define : "", in->spec_define,
-                 k < 2 ? fullscreen : "");
+        int rt0 = (d->reads & (TL__B(RT0) | TL__B(LIGHT_RT0))) != 0;
+        char shift[32] = "";
+        if (in->light_shift) snprintf(shift, sizeof shift, " TL_LIGHT_SHIFT=%u", (unsigned)in->light_shift);
+        snprintf(out->slot[k], sizeof out->slot[k], "TL_LIGHT_TYPE=%d %s%s%s %s%s%s", k + 1, in->mode->light_define,
+                 rt0 ? " " : "", rt0 ? in->rt0_define : "", in->spec_define, k < 2 ? fullscreen : "", shift);
     }
 }
 

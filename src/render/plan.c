@@ -26,8 +26,14 @@ static void tl__plan_strategy(tl__plan_input *in)
 {
     size_t local = in->f.point_lights + in->f.spot_lights;
     tl_light_strategy s = in->o->light_strategy;
-    if (s != TL_LIGHT_STRATEGY_DEFAULT) {
+    if (s == TL_LIGHT_STRATEGY_TILED && in->light_shift) {
+        s = TL_LIGHT_STRATEGY_VOLUMES; /* the tiled passes run at the frame's size only */
+        snprintf(in->strategy_reason, sizeof in->strategy_reason, "tiled asked, but the light scale is below 1");
+    } else if (s != TL_LIGHT_STRATEGY_DEFAULT) {
         snprintf(in->strategy_reason, sizeof in->strategy_reason, "forced by the options");
+    } else if (in->light_shift && local >= TL__TILED_CROSSOVER) {
+        s = TL_LIGHT_STRATEGY_VOLUMES; /* the tiled passes run at the frame's size only */
+        snprintf(in->strategy_reason, sizeof in->strategy_reason, "auto: light scale below 1 (%zu local lights)", local);
     } else if (local >= TL__TILED_CROSSOVER) {
         s = TL_LIGHT_STRATEGY_TILED;
         snprintf(in->strategy_reason, sizeof in->strategy_reason, "auto: %zu local lights >= %u", local,
@@ -80,6 +86,7 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     }
     in->mode = &tl__modes[d->options.mode];
     in->lights = f->point_lights + f->spot_lights + f->directional_lights > 0;
+    in->light_shift = tl__light_shift(in->o);
     tl__plan_strategy(in);
     in->spec = f->has_specular != 0;
     tl__plan_lighting(in);
@@ -164,7 +171,7 @@ static void tl__cull_passes(tl__plan *p, uint32_t sinks)
         tl__pass_decl *d = &p->decl[i];
         d->reads &= written | d->writes;
         d->samples &= written;
-        d->attach_depth = d->attach_depth && ((written | d->writes) & TL__BIT(TL_TARGET_DEPTH));
+        d->attach_depth = d->attach_depth && ((written | d->writes) & TL__BIT(d->depth_target));
         written |= d->writes;
         tl_plan_pass *pp = &p->pub.passes[i];
         pp->reads = d->reads;
@@ -226,7 +233,7 @@ static void tl__lifetimes(tl__plan *p, const tl_renderer_desc *d, uint32_t sinks
  * class whose last member ended before it starts. Depth shares with nothing. Kept targets live to
  * the end of the frame, so no target joins their block after them (they may reuse the memory of
  * targets that died before they start: those are the ones a readback refuses). */
-static void tl__share_memory(tl__plan *p)
+static void tl__share_memory(tl__plan *p, const tl_renderer_options *o)
 {
     tl_frame_plan *fp = &p->pub;
     uint32_t block_end[TL_TARGET_COUNT], block_class[TL_TARGET_COUNT];
@@ -235,7 +242,7 @@ static void tl__share_memory(tl__plan *p)
             tl_plan_target *ti = &fp->target_info[t];
             if (!ti->bytes_per_pixel || ti->first_pass != step) continue;
             /* a block is one texture of the frame's size and one level: a reduced target keeps its own */
-            unsigned cls = p->targets[t]->shift || ti->levels > 1 ? 0u : tl__format_view_class(ti->format);
+            unsigned cls = tl__target_shift(p->targets[t], o) || ti->levels > 1 ? 0u : tl__format_view_class(ti->format);
             size_t b = fp->block_count;
             for (size_t k = 0; cls && k < fp->block_count; k++)
                 if (block_class[k] == cls && block_end[k] < ti->first_pass) {
@@ -266,7 +273,7 @@ static void tl__output_defines(const tl__plan *p, uint32_t writes, char *out, si
     int loc = 0;
     out[0] = '\0';
     for (int t = 0; t < TL_TARGET_COUNT; t++)
-        if (t != TL_TARGET_DEPTH && !p->targets[t]->buffer_bytes && (writes & TL__BIT(t))) {
+        if (t != TL_TARGET_DEPTH && t != TL_TARGET_LIGHT_DEPTH && !p->targets[t]->buffer_bytes && (writes & TL__BIT(t))) {
             int n = snprintf(out + len, size - len, "%sTL_OUT_%s=%d", len ? " " : "", p->targets[t]->macro, loc++);
             if (n > 0 && (size_t)n < size - len) len += (size_t)n;
         }
@@ -320,6 +327,11 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     p->pub.fresnel = in.fresnel;
     snprintf(p->pub.lighting_reason, sizeof p->pub.lighting_reason, "%s", in.lighting_reason);
     snprintf(p->pub.strategy_reason, sizeof p->pub.strategy_reason, "%s", in.strategy_reason);
+    p->pub.light_scale = 1.0f / (float)(1u << in.light_shift);
+    if (d.options.light_scale != 1.0f)
+        snprintf(p->pub.light_scale_reason, sizeof p->pub.light_scale_reason, "%s",
+                 in.light_shift ? "asked; light volumes on the reduced depth, upsampled, edges re-lit"
+                                : "asked, but only thin-lpp has a light buffer to reduce");
     if (in.strategy == TL_LIGHT_STRATEGY_TILED) {
         p->pub.tile_size = in.tile_size;
         p->pub.tiles_x = in.tiles_x;
@@ -328,7 +340,7 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     tl__select(&in, apps, app_count, p);
     tl__cull_passes(p, TL__BIT(TL_TARGET_OUTPUT));
     tl__lifetimes(p, &d, kept);
-    tl__share_memory(p);
+    tl__share_memory(p, &d.options);
     tl_result r = tl__programs(&in, p);
     if (r != TL_OK) return r;
     p->pub.vertex_attributes = TL_ATTRIBUTE_POSITION | TL_ATTRIBUTE_NORMAL;

@@ -54,10 +54,10 @@ tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *size)
 }
 
 /* Depth into the upper quarter of the buffer, then spread out as (window depth, distance, 0, 1). */
-static tl_result tl__read_depth(tl_renderer *r, float *rgba, size_t n, char *msg, size_t msg_size)
+static tl_result tl__read_depth(tl_renderer *r, tl_target_id id, float *rgba, size_t n, char *msg, size_t msg_size)
 {
     float *d = rgba + n * 3;
-    tl_result res = tl__target_read(&r->dev.gl, &r->graph.targets[TL_TARGET_DEPTH], GL_DEPTH_COMPONENT, GL_FLOAT, d,
+    tl_result res = tl__target_read(&r->dev.gl, &r->graph.targets[id], GL_DEPTH_COMPONENT, GL_FLOAT, d,
                                     n * sizeof(float), msg, msg_size);
     if (res != TL_OK) return res;
     tl_projection pr; /* of the camera the depth was rendered with (set_scene: the scene's) */
@@ -79,12 +79,12 @@ static tl_result tl__read_depth(tl_renderer *r, float *rgba, size_t n, char *msg
 }
 
 /* RT0 decoded on the CPU with the codec: normal and gloss. */
-static tl_result tl__read_rt0(tl_renderer *r, float *rgba, size_t n, char *msg, size_t msg_size)
+static tl_result tl__read_rt0(tl_renderer *r, tl_target_id id, float *rgba, size_t n, char *msg, size_t msg_size)
 {
     uint8_t *bytes = (uint8_t *)tl__alloc_array(&r->dev.alloc, n, 4);
     if (!bytes) return TL_ERROR_OUT_OF_MEMORY;
     int ten = r->desc.options.rt0 == TL_RT0_RGB10A2;
-    tl_result res = tl__target_read(&r->dev.gl, &r->graph.targets[TL_TARGET_RT0], GL_RGBA,
+    tl_result res = tl__target_read(&r->dev.gl, &r->graph.targets[id], GL_RGBA,
                                     ten ? GL_UNSIGNED_INT_2_10_10_10_REV : GL_UNSIGNED_BYTE, bytes, n * 4, msg, msg_size);
     for (size_t i = 0; res == TL_OK && i < n; i++) {
         float nv[3], g;
@@ -112,8 +112,9 @@ tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id id, float *rgba, 
     if (!tl__size_check(r, rgba, size, n * 4 * sizeof(float), tl_target_name(id), &res)) return res;
     if ((res = tl__need_context(&r->dev, "tl_renderer_read_target")) != TL_OK) return res;
     char msg[256] = "";
-    if (id == TL_TARGET_DEPTH) res = tl__read_depth(r, rgba, n, msg, sizeof msg);
-    else if (id == TL_TARGET_RT0) res = tl__read_rt0(r, rgba, n, msg, sizeof msg);
+    /* the light scale's reduced depth and RT0 read as the frame's */
+    if (id == TL_TARGET_DEPTH || id == TL_TARGET_LIGHT_DEPTH) res = tl__read_depth(r, id, rgba, n, msg, sizeof msg);
+    else if (id == TL_TARGET_RT0 || id == TL_TARGET_LIGHT_RT0) res = tl__read_rt0(r, id, rgba, n, msg, sizeof msg);
     else res = tl__target_read(&r->dev.gl, t, GL_RGBA, GL_FLOAT, rgba, *size, msg, sizeof msg);
     if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: reading %s: %s", tl_target_name(id), msg);
     return TL_OK;

@@ -43,10 +43,22 @@ uint32_t tl__target_format(const tl__target_def *def, const tl_renderer_options 
     return def->format_of ? def->format_of(o) : def->format;
 }
 
+uint32_t tl__target_shift(const tl__target_def *def, const tl_renderer_options *o)
+{
+    if (!def) return 0u;
+    return def->shift_of ? def->shift_of(o) : def->shift;
+}
+
+uint32_t tl__light_shift(const tl_renderer_options *o)
+{
+    if (o->mode != TL_MODE_THIN_LPP) return 0u;
+    return o->light_scale == 0.25f ? 2u : o->light_scale == 0.5f ? 1u : 0u;
+}
+
 void tl__target_size(const tl__target_def *def, const tl_renderer_options *o, uint32_t width, uint32_t height,
                      uint32_t *out_width, uint32_t *out_height, uint32_t *levels)
 {
-    unsigned shift = def ? def->shift : 0u;
+    unsigned shift = tl__target_shift(def, o);
     uint32_t w = (uint32_t)(((uint64_t)width + (1u << shift) - 1u) >> shift);
     uint32_t h = (uint32_t)(((uint64_t)height + (1u << shift) - 1u) >> shift);
     *out_width = w ? w : 1u;

@@ -28,6 +28,7 @@ typedef struct tl__target_def {
     size_t (*buffer_bytes)(size_t tiles); /* a storage buffer, not a texture: its bytes for a tile count */
     uint8_t store;      /* tl__store: what the technique stores, and as which part */
     uint8_t shift;      /* its first level is the frame's size divided by 2^shift, rounded up */
+    uint32_t (*shift_of)(const tl_renderer_options *o); /* the shift in a configuration (NULL: shift) */
     uint8_t linear;     /* sampled with bilinear filtering (of its first level) */
 } tl__target_def;
 
@@ -42,6 +43,12 @@ void tl__target_defs(const tl__target_def *out[TL_TARGET_COUNT]);
 
 /* The GL internal format of a target in a resolved configuration (0 for buffers). */
 uint32_t tl__target_format(const tl__target_def *def, const tl_renderer_options *o);
+
+/* A target's shift in a resolved configuration: its first level is the frame's size over 2^shift. */
+uint32_t tl__target_shift(const tl__target_def *def, const tl_renderer_options *o);
+
+/* The light buffer's shift (light_scale 1, 0.5, 0.25: 0, 1, 2): thin-lpp only, every other mode 0. */
+uint32_t tl__light_shift(const tl_renderer_options *o);
 
 /* The size of a target's first level and its mip levels for a frame of width x height: a reduced
  * target rounds up and is never 0 wide; levels stop before a level would be smaller than 1x1. */

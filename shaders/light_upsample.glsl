@@ -1,0 +1,180 @@
+// The light scale's upsample and edge fix-up, in the material pass (TL_UPSAMPLE = the light
+// buffer's shift; docs/frame.md, "Light at reduced resolution"). A pixel takes the 4 nearest reduced
+// texels, each weighted by
+//   bilinear x depth similarity x normal similarity.
+// Depth: the texel's depth (the nearest sample of its block) against the pixel's own depth carried
+// along the pixel's plane to the pixel that sample came from (screen-space derivatives), within 1 %
+// of the distance plus the depth change across half a block: a texel of another surface (a silhouette, a
+// step) weighs 0, one of the same plane 1 however steeply it is seen. Normal: the texel's RT0 normal
+// against the pixel's own (the same encoding, so a flat surface compares exactly), raised to a
+// power: a crease weighs 0. The power is 16 for diffuse-only materials and the specular lobe's
+// own power (tl_gloss_to_specular_power, 16 to 256) for specular ones: cos^p falls as the lobe does
+// (about exp(-p angle^2 / 2)), so a highlight is not interpolated between normals the lobe tells
+// apart (the crypt's glossy columns: 41.6 -> 46.1 dB at 1/2, for 2.4 -> 3.8 % of pixels re-lit). Depth and normal need nothing beyond what the light pass already reads
+// (an object ID would cost a target and miss creases within an object). The light buffer holds
+// irradiance, smooth along a surface; albedo and specular colour stay at full resolution.
+// A pixel whose credible weight sums to less than TL_UPSAMPLE_CREDIBLE (no texel of its surface
+// near it: thin features, silhouettes, creases) is re-lit here, exactly as the light pass would
+// at full resolution, by looping over its object's lights (the forward path's per-object lists):
+// no extra pass, no mask, and the cost falls on the few pixels that need it.
+#ifndef TL_LIGHT_UPSAMPLE_GLSL
+#define TL_LIGHT_UPSAMPLE_GLSL
+
+#include "codec.glsl"
+#include "frame.glsl"
+#include "light_eval.glsl"
+#include "object.glsl"
+#include "tiles.glsl" // the visible lights block
+layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
+
+layout(binding = TL_UNIT_RT0) uniform sampler2D u_rt0;
+layout(binding = TL_UNIT_LIGHT_DEPTH) uniform sampler2D u_light_depth;
+layout(binding = TL_UNIT_LIGHT_RT0) uniform sampler2D u_light_rt0;
+layout(binding = TL_UNIT_LIGHT_OFFSET) uniform sampler2D u_light_offset;
+
+const float TL_UPSAMPLE_CREDIBLE = 0.5;    // below it, the pixel is re-lit
+const float TL_UPSAMPLE_DEPTH_RELATIVE = 0.01;
+const float TL_UPSAMPLE_NORMAL_POWER = 16.0; // cos 10 degrees: 0.78, cos 30 degrees: 0.1
+const float TL_UPSAMPLE_LOBE_POWER_MAX = 256.0;
+
+vec4 tl_upsample_rt0(vec4 t) // normal and gloss, as the light pass decodes them
+{
+#ifdef TL_RT0_RGB10A2
+    uvec4 q = uvec4(t * vec4(1023.0, 1023.0, 1023.0, 3.0) + 0.5);
+    return tl_rt0_decode_rgb10a2(q.x | (q.y << 10) | (q.z << 20) | (q.w << 30));
+#else
+    return tl_rt0_decode_rgba8(tl_unorm8_bytes(t));
+#endif
+}
+
+float tl_upsample_linear_depth(float d)
+{
+    return tl_depth_linearize(d, u_depth_params.x, u_depth_params.y, u_depth_params.z, u_depth_params.w > 0.5);
+}
+
+// The weighted sums of the 4 texels (diffuse with its alpha, specular, Fresnel) and their weight.
+// Depth and offset come by textureGather (the targets clamp to their edge, as the texel indices
+// would); where all 4 texels are fully credible (inside a surface) the light buffer is read with one
+// bilinear fetch per target (the material pass binds a linear sampler to its units).
+float tl_upsample_gather(vec4 rt0_f, vec3 n_f, float power, float z_f, vec2 dz, out vec4 ld, out vec3 ls, out vec3 lf)
+{
+    const float k = float(1 << TL_UPSAMPLE);
+    ivec2 size = textureSize(u_light_depth, 0);
+    vec2 r = gl_FragCoord.xy / k - 0.5; // texel centres at (i + 0.5) k in the frame's pixels
+    vec2 base = floor(r), f = r - base;
+    vec2 corner = (base + 1.0) / vec2(size);
+    vec4 dg = textureGather(u_light_depth, corner), og = textureGather(u_light_offset, corner);
+    float tol_z = TL_UPSAMPLE_DEPTH_RELATIVE * abs(z_f) + 0.5 * k * (abs(dz.x) + abs(dz.y));
+    float w[4], total = 0.0;
+    bool all_credible = true;
+    for (int j = 0; j < 4; j++) {
+        ivec2 o = ivec2(j & 1, j >> 1);
+        int g = o.y == 1 ? o.x : 3 - o.x; // textureGather's order: (0,1) (1,1) (1,0) (0,0)
+        ivec2 q = clamp(ivec2(base) + o, ivec2(0), size - 1);
+        float wb = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+        float d = dg[g];
+        w[j] = 0.0;
+        if (d == u_clear_depth) {
+            all_credible = false;
+            continue;
+        }
+        uint off = uint(og[g] * 255.0 + 0.5);
+        vec2 c = off == 16u ? (vec2(q) + 0.5) * k : vec2(q * (1 << TL_UPSAMPLE) + ivec2(off & 3u, off >> 2)) + 0.5; // lit there
+        float predicted = z_f + dot(dz, c - gl_FragCoord.xy);
+        float wz = clamp(1.0 - abs(tl_upsample_linear_depth(d) - predicted) / tol_z, 0.0, 1.0);
+        vec4 t = texelFetch(u_light_rt0, q, 0); // the pixel's own RT0 texel (a flat surface): weight 1
+        float wn = t == rt0_f ? 1.0 : pow(clamp(dot(tl_upsample_rt0(t).xyz, n_f), 0.0, 1.0), power);
+        all_credible = all_credible && wz * wn >= 0.999;
+        w[j] = wb * wz * wn;
+        total += w[j];
+    }
+    ld = vec4(0.0);
+    ls = lf = vec3(0.0);
+    if (all_credible) { // bilinear, the weights' sum is 1
+        vec2 uv = (r + 0.5) / vec2(size);
+        ld = textureLod(u_light_diffuse, uv, 0.0);
+#ifdef TL_SPECULAR_EXACT
+        ls = textureLod(u_light_specular, uv, 0.0).rgb;
+#ifdef TL_FRESNEL_SUMS
+        lf = textureLod(u_light_fresnel, uv, 0.0).rgb;
+#endif
+#endif
+        return 1.0;
+    }
+    for (int j = 0; j < 4; j++) {
+        if (w[j] <= 0.0) continue;
+        ivec2 q = clamp(ivec2(base) + ivec2(j & 1, j >> 1), ivec2(0), size - 1);
+        ld += w[j] * texelFetch(u_light_diffuse, q, 0);
+#ifdef TL_SPECULAR_EXACT
+        ls += w[j] * texelFetch(u_light_specular, q, 0).rgb;
+#ifdef TL_FRESNEL_SUMS
+        lf += w[j] * texelFetch(u_light_fresnel, q, 0).rgb;
+#endif
+#endif
+    }
+    return total;
+}
+
+// The fix-up: the pixel's own light sums, over its object's light list (the forward path's: every
+// visible light whose range reaches the object's bounds).
+void tl_upsample_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 ls, out vec3 lf)
+{
+    vec2 ndc = gl_FragCoord.xy * u_inv_size * 2.0 - 1.0;
+    vec3 p = tl_view_position(z_f, ndc, u_ray_params);
+    vec3 v = normalize(-p);
+    float shape = tl_lobe_shape(gloss);
+    const vec3 fp16_max = vec3(65504.0);
+    vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
+    uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
+    for (uint i = 0u; i < count; i++) {
+        tl_light_data l = tl_lights[tl_light_indices[first + i]];
+        vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
+                                  l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
+        diffuse += min(l.color_type.rgb * t.x, fp16_max);
+        specular += min(l.color_type.rgb * t.y, fp16_max);
+        fresnel += min(l.color_type.rgb * t.z, fp16_max);
+    }
+#ifndef TL_FRESNEL_SUMS
+    specular += fresnel; // one sum: Fresnel is applied per pixel
+    fresnel = vec3(0.0);
+#endif
+    ld = vec4(diffuse, tl_luminance(specular));
+    ls = specular;
+    lf = fresnel;
+}
+
+// The light at this pixel: upsampled, or re-lit where no reduced texel is credible (true).
+bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out vec3 specular, out vec3 fresnel)
+{
+    vec4 rt0 = texelFetch(u_rt0, ivec2(gl_FragCoord.xy), 0), ng = tl_upsample_rt0(rt0);
+    vec4 ld;
+    vec3 ls, lf;
+    // a specular material's lobe: cos(angle)^power falls as the lobe does (exp(-power angle^2 / 2))
+    float power = glossy ? clamp(tl_gloss_to_specular_power(ng.w), TL_UPSAMPLE_NORMAL_POWER, TL_UPSAMPLE_LOBE_POWER_MAX) : TL_UPSAMPLE_NORMAL_POWER;
+    float total = tl_upsample_gather(rt0, ng.xyz, power, z_f, dz, ld, ls, lf);
+    bool relit = total < TL_UPSAMPLE_CREDIBLE;
+    if (relit) tl_upsample_relight(ng.xyz, ng.w, z_f, ld, ls, lf);
+    else {
+        float inv = 1.0 / total;
+        ld *= inv;
+        ls *= inv;
+        lf *= inv;
+    }
+    diffuse = tl_finite(ld.rgb);
+    specular = fresnel = vec3(0.0);
+#if defined(TL_SPECULAR_EXACT)
+    specular = tl_finite(ls);
+#ifdef TL_FRESNEL_SUMS
+    fresnel = tl_finite(lf);
+#endif
+#elif defined(TL_SPECULAR_COMPACT)
+    if (relit) specular = tl_finite(ls);
+    else {
+        float lum = tl_luminance(diffuse);
+        specular = lum > 1e-8 ? diffuse * (min(ld.a, 65504.0) / lum) : vec3(0.0);
+    }
+#endif
+    return relit;
+}
+
+#endif
