@@ -58,8 +58,7 @@ int tl__scene_features_refresh(tl__scene_gpu *g)
     f.directional_lights = o->directional_lights;
     f.triangle_count = g->index_count / 3;
     f.object_count = g->object_count;
-    int changed = memcmp(&f, o, sizeof f) != 0 &&
-                  (f.has_specular != o->has_specular || f.has_textures != o->has_textures ||
+    int changed = (f.has_specular != o->has_specular || f.has_textures != o->has_textures ||
                    f.has_normal_maps != o->has_normal_maps || f.has_emissive != o->has_emissive ||
                    f.has_alpha_mask != o->has_alpha_mask || f.has_alpha_blend != o->has_alpha_blend ||
                    f.has_metallic_roughness != o->has_metallic_roughness || f.has_occlusion != o->has_occlusion ||
