@@ -137,6 +137,10 @@ void main()
     uint first = u_light_counts.x + chunk * uint(TL_CULL_CHUNK);
     uint last = min(first + uint(TL_CULL_CHUNK), u_light_counts.x + u_light_counts.y), n = 0u;
     for (uint i = first; i < last; i++) n += tl_light_in_tile(f, tl_lights[i]) ? 1u : 0u;
+#ifdef TL_LIGHT_SHIFT
+    // the light pass shades the light buffer's texels: a tile of the frame holds 4^shift times fewer
+    pixels = (pixels + (1u << (2 * TL_LIGHT_SHIFT)) - 1u) >> (2 * TL_LIGHT_SHIFT);
+#endif
     uint pairs = pixels * n, before = atomicAdd(tl_counters.z, pairs);
     if (before > 0xFFFFFFFFu - pairs) atomicAdd(tl_counters.w, 1u);
     uint offset = n > 0u ? atomicAdd(tl_counters.x, n) : 0u;

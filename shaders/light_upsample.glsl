@@ -24,8 +24,14 @@
 #include "frame.glsl"
 #include "light_eval.glsl"
 #include "object.glsl"
-#include "tiles.glsl" // the visible lights block
+#include "tiles.glsl" // the visible lights block, and the tile lists
+#ifndef TL_UPSAMPLE_TILES
 layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
+#endif
+// light.fixup (fixup.c): (compute groups of 64 listed pixels, 1, 1, re-lit pixels), then the list
+// of the pixels left to the light-fixup pass (tiled): pixel, albedo and specular colour as halves
+layout(std430, binding = TL_SSBO_FIXUP) buffer tl_fixup_buffer { uvec4 tl_fixup_counters; uvec4 tl_fixup_entries[]; };
+layout(early_fragment_tests) in; // the counts and the list: only the pixels the depth test keeps
 
 layout(binding = TL_UNIT_RT0) uniform sampler2D u_rt0;
 layout(binding = TL_UNIT_LIGHT_DEPTH) uniform sampler2D u_light_depth;
@@ -115,25 +121,50 @@ float tl_upsample_gather(vec4 rt0_f, vec3 n_f, float power, float z_f, vec2 dz, 
     return total;
 }
 
-// The fix-up: the pixel's own light sums, over its object's light list (the forward path's: every
-// visible light whose range reaches the object's bounds).
+// One light's clamped terms added to the sums; nothing when it cannot reach p (as lights_tiled.glsl).
+void tl_upsample_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout vec3 diffuse, inout vec3 specular,
+                     inout vec3 fresnel)
+{
+    int type = int(l.color_type.w);
+    if (type != 3) {
+        vec3 to_light = l.position_radius.xyz - p;
+        float d2 = dot(to_light, to_light);
+        if (d2 >= l.position_radius.w * l.position_radius.w) return;
+        if (type == 2 && d2 > 0.0 && dot(-to_light, l.direction_cos_outer.xyz) <= l.direction_cos_outer.w * sqrt(d2)) return;
+    }
+    vec3 t = tl_light_weights(type, p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz, l.cos_inner.x,
+                              l.direction_cos_outer.w, l.cos_inner.y);
+    const vec3 fp16_max = vec3(65504.0);
+    diffuse += min(l.color_type.rgb * t.x, fp16_max);
+    specular += min(l.color_type.rgb * t.y, fp16_max);
+    fresnel += min(l.color_type.rgb * t.z, fp16_max);
+}
+
+// The fix-up here, for the pixels the light-fixup pass does not take: the pixel's own light sums,
+// over the directional lights and its tile's lists (tiled: the tiles are in the frame's pixels and
+// their depth bounds cover every pixel: a list that filled up), or its object's light list
+// (volumes: the forward path's, every visible light whose range reaches the object's bounds).
 void tl_upsample_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 ls, out vec3 lf)
 {
     vec2 ndc = gl_FragCoord.xy * u_inv_size * 2.0 - 1.0;
     vec3 p = tl_view_position(z_f, ndc, u_ray_params);
     vec3 v = normalize(-p);
     float shape = tl_lobe_shape(gloss);
-    const vec3 fp16_max = vec3(65504.0);
     vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
-    uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
-    for (uint i = 0u; i < count; i++) {
-        tl_light_data l = tl_lights[tl_light_indices[first + i]];
-        vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
-                                  l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
-        diffuse += min(l.color_type.rgb * t.x, fp16_max);
-        specular += min(l.color_type.rgb * t.y, fp16_max);
-        fresnel += min(l.color_type.rgb * t.z, fp16_max);
+#ifdef TL_UPSAMPLE_TILES
+    for (uint i = 0u; i < u_light_counts.x; i++) tl_upsample_add(tl_lights[i], p, n, v, shape, diffuse, specular, fresnel);
+    uint tile = tl_tile_index(ivec2(gl_FragCoord.xy)), chunks = tl_tile_chunks();
+    for (uint c = 0u; c < chunks; c++) {
+        uvec2 h = tl_tile_headers[tl_tile_header_index(tile, c)];
+        uint count = tl_tile_list_size(h, c);
+        for (uint k = 0u; k < count; k++)
+            tl_upsample_add(tl_lights[tl_tile_list_light(h, c, k)], p, n, v, shape, diffuse, specular, fresnel);
     }
+#else
+    uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
+    for (uint i = 0u; i < count; i++)
+        tl_upsample_add(tl_lights[tl_light_indices[first + i]], p, n, v, shape, diffuse, specular, fresnel);
+#endif
 #ifndef TL_FRESNEL_SUMS
     specular += fresnel; // one sum: Fresnel is applied per pixel
     fresnel = vec3(0.0);
@@ -143,9 +174,13 @@ void tl_upsample_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 l
     lf = fresnel;
 }
 
-// The light at this pixel: upsampled, or re-lit where no reduced texel is credible (true).
-bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out vec3 specular, out vec3 fresnel)
+// The light at this pixel: upsampled, or re-lit where no reduced texel is credible (true). A
+// re-lit pixel is counted; with tile lists it is listed for the light-fixup pass while the list has
+// room (entry: its index; its light is left at 0 here and added to HDR by that pass), else re-lit here.
+bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out vec3 specular, out vec3 fresnel,
+                       out int entry)
 {
+    entry = -1;
     vec4 rt0 = texelFetch(u_rt0, ivec2(gl_FragCoord.xy), 0), ng = tl_upsample_rt0(rt0);
     vec4 ld;
     vec3 ls, lf;
@@ -153,8 +188,17 @@ bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out ve
     float power = glossy ? clamp(tl_gloss_to_specular_power(ng.w), TL_UPSAMPLE_NORMAL_POWER, TL_UPSAMPLE_LOBE_POWER_MAX) : TL_UPSAMPLE_NORMAL_POWER;
     float total = tl_upsample_gather(rt0, ng.xyz, power, z_f, dz, ld, ls, lf);
     bool relit = total < TL_UPSAMPLE_CREDIBLE;
-    if (relit) tl_upsample_relight(ng.xyz, ng.w, z_f, ld, ls, lf);
-    else {
+    if (relit) {
+        uint index = atomicAdd(tl_fixup_counters.w, 1u);
+#ifdef TL_UPSAMPLE_TILES
+        if (index < uint(tl_fixup_entries.length())) {
+            entry = int(index);
+            diffuse = specular = fresnel = vec3(0.0);
+            return true;
+        }
+#endif
+        tl_upsample_relight(ng.xyz, ng.w, z_f, ld, ls, lf);
+    } else {
         float inv = 1.0 / total;
         ld *= inv;
         ls *= inv;
@@ -175,6 +219,15 @@ bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out ve
     }
 #endif
     return relit;
+}
+
+// A listed pixel's entry: what the light-fixup pass multiplies its light sums by.
+void tl_upsample_list(int entry, vec3 albedo, vec3 f0)
+{
+    uvec2 px = uvec2(gl_FragCoord.xy);
+    tl_fixup_entries[entry] = uvec4(px.x | (px.y << 16), packHalf2x16(albedo.rg), packHalf2x16(vec2(albedo.b, f0.r)),
+                                    packHalf2x16(f0.gb));
+    if ((entry & 63) == 0) atomicAdd(tl_fixup_counters.x, 1u); // one compute group per 64 entries
 }
 
 #endif

@@ -18,7 +18,11 @@ layout(rgba16f, binding = TL_IMAGE_HDR) uniform image2D u_hdr_image;
 void main()
 {
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+#ifdef TL_LIGHT_SHIFT
+    if (any(greaterThanEqual(px, textureSize(u_depth, 0)))) return; // the light buffer's size
+#else
     if (px.x >= int(round(1.0 / u_inv_size.x)) || px.y >= int(round(1.0 / u_inv_size.y))) return;
+#endif
     tl_tiled_result r = tl_tiled_shade(px);
 #ifdef TL_LIGHT_ACCUM
 #if defined(TL_SPECULAR_EXACT)

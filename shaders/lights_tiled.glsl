@@ -53,7 +53,11 @@ tl_tiled_result tl_tiled_shade(ivec2 px)
     float shape = tl_lobe_shape(gloss);
     vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
     for (uint i = 0u; i < u_light_counts.x; i++) tl_tiled_add(tl_lights[i], p, n, v, shape, diffuse, specular, fresnel);
+#ifdef TL_LIGHT_SHIFT
+    uint tile = tl_tile_index(px << TL_LIGHT_SHIFT), chunks = tl_tile_chunks(); // tiles are in the frame's pixels
+#else
     uint tile = tl_tile_index(px), chunks = tl_tile_chunks();
+#endif
     for (uint c = 0u; c < chunks; c++) {
         uvec2 h = tl_tile_headers[tl_tile_header_index(tile, c)];
         uint count = tl_tile_list_size(h, c);

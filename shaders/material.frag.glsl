@@ -36,7 +36,8 @@ void main()
     float alpha = 1.0;
 #if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
     // HDR's alpha (read by no pass) marks the pixels the fix-up re-lit: 0.5 (tests, the figures)
-    if (tl_upsample_light(z_f, dz, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular, fresnel)) alpha = 0.5;
+    int entry;
+    if (tl_upsample_light(z_f, dz, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular, fresnel, entry)) alpha = 0.5;
 #elif !defined(TL_NO_LIGHTS)
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 ld = texelFetch(u_light_diffuse, px, 0);
@@ -63,10 +64,16 @@ void main()
     float ao = texelFetch(u_ao, ivec2(gl_FragCoord.xy), 0).r;
 #ifdef TL_SSAO_DIFFUSE
     diffuse *= ao;
+#if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
+    if (entry >= 0) tl_upsample_list(entry, s.albedo * ao, f0);
+#endif
 #endif
     vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + f0 * specular + fresnel + s.emissive;
 #else
     vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + f0 * specular + fresnel + s.emissive;
+#endif
+#if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS) && !defined(TL_SSAO_DIFFUSE)
+    if (entry >= 0) tl_upsample_list(entry, s.albedo, f0);
 #endif
     o_color = vec4(min(c, vec3(65504.0)), alpha);
 }

@@ -362,6 +362,8 @@ typedef enum tl_pass {
     TL_PASS_FXAA,          /**< FXAA, when it is on */
     TL_PASS_VIGNETTE,      /**< vignette: its mask, then HDR darkened by it (runs before the tone map) */
     TL_PASS_LIGHT_REDUCE,  /**< light_scale below 1: depth and RT0 reduced to the light buffer's size */
+    TL_PASS_LIGHT_FIXUP,   /**< light_scale below 1, tiled: the pixels the upsample found no credible light
+                                for, re-lit at full resolution (a compute pass over their list) and added to HDR */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
@@ -392,6 +394,8 @@ typedef enum tl_target_id {
     TL_TARGET_LIGHT_DEPTH,    /**< light_scale below 1: the nearest depth of each block, depth's format, the light buffer's size */
     TL_TARGET_LIGHT_RT0,      /**< light_scale below 1: RT0 of that nearest sample, the light buffer's size */
     TL_TARGET_LIGHT_OFFSET,   /**< light_scale below 1: R8, that sample's pixel within its block (x + 4 y; 16: its centre) */
+    TL_TARGET_LIGHT_FIXUP,    /**< light_scale below 1: a storage buffer, the count of re-lit pixels and (tiled)
+                                   the list the fix-up pass re-lights: up to a quarter of the frame's pixels */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -532,6 +536,8 @@ typedef struct tl_frame_stats {
     uint64_t light_list_entries;        /**< tiled: entries of all tile lists */
     uint32_t draw_calls;                /**< GL draw calls of the frame */
     uint32_t programs_compiled;         /**< shader programs compiled so far by this renderer (cache misses) */
+    uint64_t relit_pixels;              /**< light_scale below 1: pixels the edge fix-up re-lit at full resolution */
+    double relit_fraction;              /**< relit_pixels over the frame's pixels */
 } tl_frame_stats;
 
 /** "gbuffer", "lights", ... ("unknown" out of range); the names of debug groups and timers. */

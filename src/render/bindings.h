@@ -15,6 +15,7 @@
     X(SSBO_FORWARD_INDICES, 2)   /* forward: per-object light index lists */                      \
     X(SSBO_TILE_HEADERS, 3)      /* tiled: counters and per-tile (offset, count) */               \
     X(SSBO_TILE_ENTRIES, 4)      /* tiled: the lists' light indices */                            \
+    X(SSBO_FIXUP, 5)             /* the light scale's fix-up: counters, list of pixels (fixup.c) */ \
     X(IMAGE_LIGHT_DIFFUSE, 0)    /* image units of the compute shading pass's writes */           \
     X(IMAGE_LIGHT_SPECULAR, 1)                                                                    \
     X(IMAGE_HDR, 2)                                                                               \
@@ -32,7 +33,7 @@ enum {
 #undef TL__BINDING_ENUM
     TL__MATERIAL_TEXTURES = 5,
     TL__TEXTURE_UNITS_USED = 29, /* units the renderer may bind: 0 .. 28 */
-    TL__BUFFER_BINDINGS_USED = 5, /* uniform and storage binding points it may bind: 0 .. 4 */
+    TL__BUFFER_BINDINGS_USED = 6, /* uniform and storage binding points it may bind: 0 .. 5 */
     TL__IMAGE_UNITS_USED = 4     /* image units it may bind: 0 .. 3 */
 };
 

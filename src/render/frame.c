@@ -36,7 +36,8 @@ static void tl__run_app(tl_renderer *r, const tl__compiled_pass *cp, const tl_vi
     const tl__graph *g = &r->graph;
     for (int t = 0; t < TL_TARGET_COUNT; t++) /* storage buffers: the tile headers (renderer.h) */
         if (cp->plan->reads & TL_TARGET_BIT(t))
-            ctx.textures[t] = g->plan.targets[t]->buffer_bytes ? r->lights.tiles.headers : g->targets[t].texture;
+            ctx.textures[t] = !g->plan.targets[t]->buffer_bytes ? g->targets[t].texture
+                              : t == TL_TARGET_LIGHT_FIXUP ? r->lights.fixup.buffer : r->lights.tiles.headers;
     const tl__app_pass *a = &g->apps[cp->app];
     tl__state_program(&dev->gl, &dev->state, 0);
     tl__state_vertex_array(&dev->gl, &dev->state, 0);
@@ -66,6 +67,7 @@ static void tl__pass_ctx_make(tl_renderer *r, const tl__compiled_pass *cp, const
     ctx->write_textures = cp->write_textures;
     ctx->width = r->desc.width;
     ctx->height = r->desc.height;
+    ctx->light_shift = tl__light_shift(&r->desc.options);
     ctx->fullscreen_vao = r->dev.vao_empty;
     ctx->linear_sampler = r->dev.sampler_linear;
     ctx->params = cp->def->options_size ? (const char *)&r->desc.options + cp->def->options_offset : NULL;

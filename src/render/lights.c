@@ -123,6 +123,7 @@ void tl__lights_release(tl__device *dev, tl__lights *l)
     l->fwd_indices = l->fwd_first = l->fwd_object_count = NULL;
     l->fwd_capacity = l->fwd_count = l->fwd_objects = 0;
     tl__tiles_release(dev, &l->tiles);
+    tl__fixup_release(dev, &l->fixup);
     tl__light_volumes_destroy(dev, l);
 }
 
@@ -148,6 +149,7 @@ void tl__lights_upload(tl__device *dev, tl__lights *l, unsigned needs)
     if (needs & TL__LIGHTS_VISIBLE) tl__visible_lights_upload(dev, l);
     if (needs & TL__LIGHTS_INDEX_BUFFER) tl__forward_upload(dev, l);
     if (needs & TL__LIGHTS_TILES) tl__tiles_upload(dev, l);
+    tl__fixup_bind(dev, &l->fixup); /* the light scale's, when the plan has it */
 }
 
 void tl__lights_frame_block(const tl__lights *l, unsigned needs, uint32_t counts[2], uint32_t tiles[4])

@@ -114,6 +114,7 @@ typedef struct tl__pass_ctx {
     uint32_t write_count;
     const GLuint *write_fbos, *write_textures;
     uint32_t width, height;       /* the frame's size */
+    uint32_t light_shift;         /* the light scale: the light buffer is the frame's size >> light_shift */
     GLuint fullscreen_vao, linear_sampler;
     const void *params;           /* its slice of the resolved options (tl__pass_def.options_offset), or NULL */
     const GLuint *queries;        /* its own samples-passed queries (query_count), NULL when not measured */
@@ -159,6 +160,7 @@ typedef struct tl__pass_def {
 /* What the light pass reads and writes in a mode, whichever strategy gathers the lights
  * (pass_lights.c; the tiled pass uses it too). */
 void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d);
+void tl__light_pass_defines(const tl__plan_input *in, const tl__pass_decl *d, char *out, size_t size);
 /* Forward shading reads tile lists (Forward+) in this plan; it has a depth pre-pass (modes.c). */
 int tl__forward_plus(const tl__plan_input *in);
 int tl__forward_prepass(const tl__plan_input *in);

@@ -5,7 +5,7 @@
 #include <stdio.h>
 
 #include "gl/gl.h"
-#include "pass.h"
+#include "lights.h"
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
@@ -127,12 +127,20 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->samples = TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | TL__B(LIGHT_FRESNEL) | /* those the light pass writes */
                  (tl__ssao_pass(in) ? TL__B(AO) : 0u);
     if (in->light_shift && in->lights) {
-        /* the light scale's upsample: the reduced depth and RT0 against the pixel's own RT0; the
-         * pixels it finds no credible match for loop over their object's lights (the fix-up) */
+        /* the light scale's upsample: the reduced depth and RT0 against the pixel's own RT0. The
+         * pixels it finds no credible match for are counted (light.fixup) and re-lit: tiled, they
+         * are listed for the light-fixup pass (past the list's end, they loop over their tile's
+         * lists here); volumes, they loop over their object's light list here */
         d->samples |= TL__B(LIGHT_DEPTH) | TL__B(LIGHT_RT0) | TL__B(LIGHT_OFFSET) | TL__B(RT0);
-        d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | TL__LIGHTS_OBJECT_LISTS;
+        d->writes |= TL__B(LIGHT_FIXUP);
+        if (in->strategy == TL_LIGHT_STRATEGY_TILED) {
+            d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_TILES;
+            d->reads |= TL__B(LIGHT_LISTS);
+        } else {
+            d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | TL__LIGHTS_OBJECT_LISTS;
+        }
     }
-    d->reads = d->samples | TL__B(DEPTH);
+    d->reads |= d->samples | TL__B(DEPTH);
     d->attach_depth = 1;
     d->state = tl__geometry_state(in, TL__DEPTH_EQUAL, 0, TL__BLEND_OFF);
 }
@@ -140,10 +148,11 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     out->used[0] = 1;
-    char upsample[48] = "";
+    char upsample[64] = "";
     if ((d->samples & TL__B(LIGHT_DIFFUSE)) && (d->samples & TL__B(LIGHT_RT0)))
-        snprintf(upsample, sizeof upsample, " TL_UPSAMPLE=%u%s", (unsigned)in->light_shift,
-                 in->o->rt0 == TL_RT0_RGB10A2 ? " TL_RT0_RGB10A2" : "");
+        snprintf(upsample, sizeof upsample, " TL_UPSAMPLE=%u%s%s", (unsigned)in->light_shift,
+                 in->o->rt0 == TL_RT0_RGB10A2 ? " TL_RT0_RGB10A2" : "",
+                 (d->reads & TL__B(LIGHT_LISTS)) ? " TL_UPSAMPLE_TILES" : "");
     snprintf(out->slot[0], sizeof out->slot[0], "%s%s%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",
              in->material_defines, tl__ssao_defines(in, d), upsample);
 }
@@ -154,8 +163,11 @@ static void tl__material_execute(const tl__pass_ctx *ctx)
 {
     const GladGLContext *gl = ctx->gl;
     const GLuint units[3] = {TL_TARGET_LIGHT_DIFFUSE, TL_TARGET_LIGHT_SPECULAR, TL_TARGET_LIGHT_FRESNEL};
+    tl__fixup *f = ctx->lights ? &ctx->lights->fixup : NULL;
     for (int k = 0; k < 3; k++) gl->BindSampler(units[k], ctx->linear_sampler);
+    if (f) tl__fixup_begin(gl, f);
     tl__draw_opaque(ctx);
+    if (f) tl__fixup_end(gl, f, ctx->frame);
     for (int k = 0; k < 3; k++) gl->BindSampler(units[k], 0);
 }
 
@@ -166,7 +178,7 @@ const tl__pass_def tl__pass_material = {
     .declare = tl__material_declare,
     .permute = tl__material_permute,
     .execute = tl__material_execute,
-    .services = TL__PASS_SCENE,
+    .services = TL__PASS_SCENE | TL__PASS_LIGHTS,
 };
 
 /* ---- forward, and transparent objects in every mode ------------------------------------------ */

@@ -6,7 +6,7 @@
 #include <stdio.h>
 
 #include "gl/gl.h"
-#include "pass.h"
+#include "lights.h"
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
@@ -47,4 +47,51 @@ const tl__pass_def tl__pass_light_reduce = {
     .declare = tl__reduce_declare,
     .permute = tl__reduce_permute,
     .execute = tl__draw_fullscreen,
+};
+
+/* ---- the edge fix-up (fixup.c) ---------------------------------------------------------------- */
+
+/* The count of re-lit pixels, and with tiled lists the list of the pixels the material pass leaves
+ * to the fix-up pass: a quarter of the frame's pixels, 16 bytes each (4 B/px); past it the
+ * material pass re-lights them itself. */
+static size_t tl__fixup_capacity(const tl_frame_plan *p)
+{
+    return p->light_strategy == TL_LIGHT_STRATEGY_TILED ? ((size_t)p->width * p->height + 3u) / 4u : 0u;
+}
+
+static size_t tl__fixup_bytes(const tl_frame_plan *p) { return 16u + 16u * tl__fixup_capacity(p); }
+
+static const tl__target_def tl__target_light_fixup = {TL__TARGET(LIGHT_FIXUP, "light.fixup"),
+                                                      .buffer_bytes = tl__fixup_bytes, .store = TL__STORE_LISTS};
+
+size_t tl__light_fixup_capacity(const tl_frame_plan *p) { return tl__fixup_capacity(p); }
+
+/* One compute invocation per listed pixel: its light from the full-resolution depth and RT0 and its
+ * tile's lists, times the albedo and specular colour the material pass listed, added to HDR. */
+static void tl__fixup_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    if (!in->light_shift || !in->lights || in->strategy != TL_LIGHT_STRATEGY_TILED || !in->mode->material_pass) return;
+    d->samples = TL__B(DEPTH) | TL__B(RT0);
+    d->reads = d->samples | TL__B(LIGHT_LISTS) | TL__B(LIGHT_FIXUP) | TL__B(HDR);
+    d->writes = d->images = TL__B(HDR);
+    d->compute = 1;
+    d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_TILES;
+}
+
+static void tl__fixup_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+{
+    (void)d;
+    out->used[0] = 1;
+    snprintf(out->slot[0], sizeof out->slot[0], "%s %s %s", in->mode->light_define, in->rt0_define, in->spec_define);
+}
+
+const tl__pass_def tl__pass_light_fixup = {
+    .id = TL_PASS_LIGHT_FIXUP,
+    .name = "light-fixup",
+    .programs = {{"light-fixup", NULL, NULL, "light_fixup.comp.glsl"}},
+    .targets = {&tl__target_light_fixup},
+    .declare = tl__fixup_declare,
+    .permute = tl__fixup_permute,
+    .execute = tl__fixup_dispatch,
+    .services = TL__PASS_LIGHTS,
 };

@@ -39,6 +39,22 @@ void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
     d->samples = m->light_samples & d->reads;
     d->neighbourhood = d->samples & TL__B(RT1); /* chroma from the four neighbours */
     if (d->writes & TL__B(HDR)) d->reads |= TL__B(HDR); /* shading adds to it */
+    if (in->light_shift) { /* the light scale: the reduced depth and RT0 (pass_light_reduce.c) */
+        uint32_t full = TL__B(DEPTH) | TL__B(RT0), reduced = TL__B(LIGHT_DEPTH) | TL__B(LIGHT_RT0) | TL__B(LIGHT_OFFSET);
+        d->reads = (d->reads & ~full) | reduced;
+        d->samples = (d->samples & ~full) | reduced;
+        d->depth_target = TL_TARGET_LIGHT_DEPTH;
+    }
+}
+
+/* The shader switches of the light pass's reads, whatever the strategy: the RT0 encoding and the
+ * light scale's shift. */
+void tl__light_pass_defines(const tl__plan_input *in, const tl__pass_decl *d, char *out, size_t size)
+{
+    int rt0 = (d->reads & (TL__B(RT0) | TL__B(LIGHT_RT0))) != 0;
+    char shift[32] = "";
+    if (in->light_shift) snprintf(shift, sizeof shift, " TL_LIGHT_SHIFT=%u", (unsigned)in->light_shift);
+    snprintf(out, size, "%s%s%s", rt0 ? " " : "", rt0 ? in->rt0_define : "", shift);
 }
 
 static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
@@ -47,12 +63,6 @@ static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
     tl__light_pass_targets(in, d);
     if (!(d->writes & TL__B(HDR))) d->clears = d->writes;
     d->attach_depth = 1;
-    if (in->light_shift) { /* the light scale: the reduced depth and RT0 (pass_light_reduce.c) */
-        uint32_t full = TL__B(DEPTH) | TL__B(RT0), reduced = TL__B(LIGHT_DEPTH) | TL__B(LIGHT_RT0) | TL__B(LIGHT_OFFSET);
-        d->reads = (d->reads & ~full) | reduced;
-        d->samples = (d->samples & ~full) | reduced;
-        d->depth_target = TL_TARGET_LIGHT_DEPTH;
-    }
     d->light_data = TL__LIGHTS_INSTANCES;
     d->state = (tl__pipeline){.depth_write = 0, .color_write = 1, .blend = TL__BLEND_ADD,
                               .clip_zero_one = in->o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED};
@@ -65,11 +75,10 @@ static void tl__lights_permute(const tl__plan_input *in, const tl__pass_decl *d,
     for (int k = 0; k < 3; k++) {
         if (!counts[k]) continue;
         out->used[k] = 1;
-        int rt0 = (d->reads & (TL__B(RT0) | TL__B(LIGHT_RT0))) != 0;
-        char shift[32] = "";
-        if (in->light_shift) snprintf(shift, sizeof shift, " TL_LIGHT_SHIFT=%u", (unsigned)in->light_shift);
-        snprintf(out->slot[k], sizeof out->slot[k], "TL_LIGHT_TYPE=%d %s%s%s %s%s%s", k + 1, in->mode->light_define,
-                 rt0 ? " " : "", rt0 ? in->rt0_define : "", in->spec_define, k < 2 ? fullscreen : "", shift);
+        char reads[64];
+        tl__light_pass_defines(in, d, reads, sizeof reads);
+        snprintf(out->slot[k], sizeof out->slot[k], "TL_LIGHT_TYPE=%d %s%s %s%s", k + 1, in->mode->light_define, reads,
+                 in->spec_define, k < 2 ? fullscreen : "");
     }
 }
 

@@ -11,7 +11,11 @@
 static int tl__tiled(const tl__plan_input *in) { return in->lights && in->strategy == TL_LIGHT_STRATEGY_TILED; }
 
 /* The light lists' bytes for a number of tiles: 4 counters, (offset, count) per tile, entries. */
-static size_t tl__light_lists_bytes(size_t tiles) { return 16u + 8u * tiles + 4u * TL__TILE_START_ENTRIES * tiles; }
+static size_t tl__light_lists_bytes(const tl_frame_plan *p)
+{
+    size_t tiles = (size_t)p->tiles_x * p->tiles_y;
+    return 16u + 8u * tiles + 4u * TL__TILE_START_ENTRIES * tiles;
+}
 
 static const tl__target_def tl__target_light_lists = {TL__TARGET(LIGHT_LISTS, "light.lists"),
                                                       .buffer_bytes = tl__light_lists_bytes, .store = TL__STORE_LISTS};
@@ -29,9 +33,11 @@ static void tl__cull_declare(const tl__plan_input *in, tl__pass_decl *d)
 
 static void tl__cull_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
-    (void)in;
     (void)d;
     out->used[0] = 1;
+    /* the light scale: tiles are in the frame's pixels (their depth bounds cover every pixel the
+     * edge fix-up may re-light); the pairs counted are the light buffer's texels */
+    if (in->light_shift) snprintf(out->slot[0], sizeof out->slot[0], "TL_LIGHT_SHIFT=%u", (unsigned)in->light_shift);
 }
 
 const tl__pass_def tl__pass_light_cull = {
@@ -71,8 +77,9 @@ static void tl__tiled_permute(const tl__plan_input *in, const tl__pass_decl *d, 
     int slot = tl__compute_shading(in);
     const char *image_format = in->o->light_format == TL_LIGHT_FORMAT_R11G11B10F ? "r11f_g11f_b10f" : "rgba16f";
     out->used[slot] = 1;
-    snprintf(out->slot[slot], sizeof out->slot[slot], "%s%s%s %s%s%s", in->mode->light_define,
-             (d->reads & TL__B(RT0)) ? " " : "", (d->reads & TL__B(RT0)) ? in->rt0_define : "", in->spec_define,
+    char reads[64];
+    tl__light_pass_defines(in, d, reads, sizeof reads);
+    snprintf(out->slot[slot], sizeof out->slot[slot], "%s%s %s%s%s", in->mode->light_define, reads, in->spec_define,
              slot ? " TL_LIGHT_IMAGE_FORMAT=" : "", slot ? image_format : "");
 }
 
@@ -87,7 +94,8 @@ static void tl__tiled_execute(const tl__pass_ctx *ctx)
         return;
     }
     tl__state_program(gl, ctx->state, ctx->programs[1]);
-    gl->DispatchCompute((ctx->width + 7) / 8, (ctx->height + 7) / 8, 1);
+    uint32_t k = (1u << ctx->light_shift) - 1u, w = (ctx->width + k) >> ctx->light_shift, h = (ctx->height + k) >> ctx->light_shift;
+    gl->DispatchCompute((w + 7) / 8, (h + 7) / 8, 1);
     gl->MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
 

@@ -26,14 +26,8 @@ static void tl__plan_strategy(tl__plan_input *in)
 {
     size_t local = in->f.point_lights + in->f.spot_lights;
     tl_light_strategy s = in->o->light_strategy;
-    if (s == TL_LIGHT_STRATEGY_TILED && in->light_shift) {
-        s = TL_LIGHT_STRATEGY_VOLUMES; /* the tiled passes run at the frame's size only */
-        snprintf(in->strategy_reason, sizeof in->strategy_reason, "tiled asked, but the light scale is below 1");
-    } else if (s != TL_LIGHT_STRATEGY_DEFAULT) {
+    if (s != TL_LIGHT_STRATEGY_DEFAULT) {
         snprintf(in->strategy_reason, sizeof in->strategy_reason, "forced by the options");
-    } else if (in->light_shift && local >= TL__TILED_CROSSOVER) {
-        s = TL_LIGHT_STRATEGY_VOLUMES; /* the tiled passes run at the frame's size only */
-        snprintf(in->strategy_reason, sizeof in->strategy_reason, "auto: light scale below 1 (%zu local lights)", local);
     } else if (local >= TL__TILED_CROSSOVER) {
         s = TL_LIGHT_STRATEGY_TILED;
         snprintf(in->strategy_reason, sizeof in->strategy_reason, "auto: %zu local lights >= %u", local,
@@ -44,7 +38,9 @@ static void tl__plan_strategy(tl__plan_input *in)
                  TL__TILED_CROSSOVER);
     }
     in->strategy = s;
-    in->tile_size = in->o->tile_size;
+    /* tiles are counted in the frame's pixels: at a light scale below 1 a tile covers tile_size
+     * texels of the light buffer, and the edge fix-up reads the list of its pixel's tile */
+    in->tile_size = in->o->tile_size << in->light_shift;
     in->tiles_x = (in->d.width + in->tile_size - 1) / in->tile_size;
     in->tiles_y = (in->d.height + in->tile_size - 1) / in->tile_size;
 }
@@ -196,7 +192,7 @@ static void tl__target_memory(const tl_renderer_desc *d, const tl__target_def *d
         size_t w = ti->width >> k, h = ti->height >> k;
         ti->bytes += (w ? w : 1u) * (h ? h : 1u) * bpp;
     }
-    if (def->buffer_bytes) ti->bytes = def->buffer_bytes((size_t)fp->tiles_x * fp->tiles_y);
+    if (def->buffer_bytes) ti->bytes = def->buffer_bytes(fp);
     ti->bytes_per_pixel = (uint32_t)((ti->bytes + px - 1) / px);
 }
 
@@ -330,7 +326,7 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     p->pub.light_scale = 1.0f / (float)(1u << in.light_shift);
     if (d.options.light_scale != 1.0f)
         snprintf(p->pub.light_scale_reason, sizeof p->pub.light_scale_reason, "%s",
-                 in.light_shift ? "asked; light volumes on the reduced depth, upsampled, edges re-lit"
+                 in.light_shift ? "asked; lights on the reduced depth, upsampled, edges re-lit"
                                 : "asked, but only thin-lpp has a light buffer to reduce");
     if (in.strategy == TL_LIGHT_STRATEGY_TILED) {
         p->pub.tile_size = in.tile_size;

@@ -54,6 +54,10 @@ static tl_result tl__replan(tl_renderer *r)
             res = tl__tiles_configure(&r->dev, &r->lights.tiles, p->tile_size, p->tiles_x, p->tiles_y);
         else if (res == TL_OK) /* no tiles in this plan: nothing kept for them */
             tl__tiles_release(&r->dev, &r->lights.tiles);
+        if (res == TL_OK && (p->targets & TL_TARGET_BIT(TL_TARGET_LIGHT_FIXUP)))
+            res = tl__fixup_configure(&r->dev, &r->lights.fixup, tl__light_fixup_capacity(p));
+        else if (res == TL_OK)
+            tl__fixup_release(&r->dev, &r->lights.fixup);
     } else if (r->scene.loaded && !g->programs_ready) {
         res = tl__graph_programs(&r->dev, g);
     }
@@ -70,7 +74,7 @@ static tl_result tl__create_objects(tl_renderer *r, const tl_renderer_desc *desc
     if (res != TL_OK) return res;
     r->dev.state.reversed = r->desc.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
     tl__light_volumes_create(&r->dev, &r->lights);
-    tl__queries_create(&r->dev, &r->queries, &r->lights.tiles);
+    tl__queries_create(&r->dev, &r->queries, &r->lights.tiles, &r->lights.fixup);
     /* until a scene arrives: the plan of an empty scene (tone map and FXAA targets) */
     res = tl__replan(r);
     GLenum e = r->dev.gl.GetError();

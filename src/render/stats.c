@@ -28,7 +28,7 @@ static void tl__label_queries(const GladGLContext *gl, const GLuint *q, size_t n
     for (size_t i = 0; i < n; i++) tl__gl_label(gl, GL_QUERY, q[i], label);
 }
 
-void tl__queries_create(tl__device *dev, tl__queries *r, tl__tiles *tiles)
+void tl__queries_create(tl__device *dev, tl__queries *r, tl__tiles *tiles, tl__fixup *fixup)
 {
     const GladGLContext *gl = &dev->gl;
     GLint bits = 0;
@@ -36,6 +36,7 @@ void tl__queries_create(tl__device *dev, tl__queries *r, tl__tiles *tiles)
     r->timestamps = bits > 0;
     r->timestamp_bits = bits;
     r->tiles = tiles;
+    r->fixup = fixup;
     for (int s = 0; s < TL__QUERY_RING; s++) {
         tl__query_slot *q = &r->ring[s];
         if (r->timestamps) gl->CreateQueries(GL_TIMESTAMP, 2 * TL_PLAN_MAX_PASSES, &q->time[0][0]);
@@ -150,6 +151,7 @@ static void tl__slot_read(tl__device *dev, tl__queries *r, tl__query_slot *q)
         st->bytes_moved += bytes;
     }
     if (p->light_lists) tl__tiles_collect(dev, r->tiles, st);
+    if (p->light_fixup) tl__fixup_collect(dev, r->fixup, p->width * p->height, st);
     st->gpu_valid = 1;
     q->pending = 0;
 }
@@ -171,6 +173,7 @@ static void tl__slot_take_plan(tl__query_slot *q, const tl__graph *g)
     p->height = fp->height;
     p->vertex_attributes = fp->vertex_attributes;
     p->light_lists = (fp->targets & TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS)) != 0;
+    p->light_fixup = (fp->targets & TL_TARGET_BIT(TL_TARGET_LIGHT_FIXUP)) != 0;
 }
 
 tl__query_slot *tl__queries_slot(tl__device *dev, tl__queries *r, const tl__graph *g, uint64_t frame)

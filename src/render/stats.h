@@ -24,6 +24,7 @@ typedef struct tl__slot_plan {
     uint32_t target_bytes_per_pixel[TL_TARGET_COUNT];
     uint32_t width, height, vertex_attributes;
     int light_lists; /* the tile counters are read too */
+    int light_fixup; /* the light scale's re-lit count is read too */
 } tl__slot_plan;
 
 typedef struct tl__query_slot {
@@ -39,9 +40,10 @@ typedef struct tl__queries {
     int timestamps;        /* GL_TIMESTAMP queries work in this context */
     GLint timestamp_bits;
     tl__tiles *tiles;      /* whose counters complete a tiled frame's figures */
+    tl__fixup *fixup;      /* whose count completes a reduced light buffer's */
 } tl__queries;
 
-void tl__queries_create(tl__device *dev, tl__queries *q, tl__tiles *tiles);
+void tl__queries_create(tl__device *dev, tl__queries *q, tl__tiles *tiles, tl__fixup *fixup);
 void tl__queries_destroy(tl__device *dev, tl__queries *q);
 /* The ring slot for `frame`, read first (blocking) if it still holds an unread frame; it takes the
  * graph's plan for the frame about to be issued. */

@@ -15,7 +15,7 @@ typedef enum tl__store {
     TL__STORE_NONE = 0,  /* images of the frame and effect targets: HDR, LDR, output, AO, DOF, ... */
     TL__STORE_GBUFFER,   /* depth and the G-buffer */
     TL__STORE_LIGHT,     /* the light buffer */
-    TL__STORE_LISTS      /* the tiled light lists */
+    TL__STORE_LISTS      /* the tiled light lists, the light scale's fix-up list */
 } tl__store;
 
 typedef struct tl__target_def {
@@ -25,7 +25,7 @@ typedef struct tl__target_def {
     uint32_t format;    /* GL internal format, unless format_of decides */
     uint32_t (*format_of)(const tl_renderer_options *o); /* the format in a configuration (NULL: format) */
     uint32_t (*levels_of)(const tl_renderer_options *o); /* mip levels wanted (NULL: 1) */
-    size_t (*buffer_bytes)(size_t tiles); /* a storage buffer, not a texture: its bytes for a tile count */
+    size_t (*buffer_bytes)(const tl_frame_plan *p); /* a storage buffer, not a texture: its bytes in a plan */
     uint8_t store;      /* tl__store: what the technique stores, and as which part */
     uint8_t shift;      /* its first level is the frame's size divided by 2^shift, rounded up */
     uint32_t (*shift_of)(const tl_renderer_options *o); /* the shift in a configuration (NULL: shift) */

@@ -160,11 +160,24 @@ TL_TEST(light_scale_plan_reduced_targets_and_refusals)
                                  &one) == TL_OK);
     TL_CHECK(memcmp(&none, &one, sizeof none) == 0); /* 0 bytes differ */
     TL_CHECK(!(one.targets & (TL_TARGET_BIT(TL_TARGET_LIGHT_DEPTH) | TL_TARGET_BIT(TL_TARGET_LIGHT_RT0))));
-    for (int k = 1; k < 3; k++) {
+    for (int k = 1; k < 3; k++)
+        for (int tiled = 0; tiled < 2; tiled++) {
         tl_renderer_desc d = {.width = 1281, .height = 721, .options.light_scale = scales[k]};
-        d.options.light_strategy = TL_LIGHT_STRATEGY_TILED; /* asked, but the reduced frame uses volumes */
+        d.options.light_strategy = tiled ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
         TL_CHECK(tl_frame_plan_build(&d, &f, &half) == TL_OK);
-        TL_CHECK(half.light_strategy == TL_LIGHT_STRATEGY_VOLUMES);
+        TL_CHECK(half.light_strategy == d.options.light_strategy);
+        /* the fix-up's buffer: the re-lit count, and with tiles a list of a quarter of the pixels
+         * (16 bytes each); tiles are counted in the frame's pixels, 16 texels of the light buffer */
+        TL_CHECK(half.targets & TL_TARGET_BIT(TL_TARGET_LIGHT_FIXUP));
+        TL_CHECK_EQ_U(half.target_info[TL_TARGET_LIGHT_FIXUP].bytes,
+                      16u + (tiled ? 16u * ((1281u * 721u + 3u) / 4u) : 0u));
+        if (tiled) {
+            TL_CHECK_EQ_U(half.tile_size, 16u << k);
+            TL_CHECK_EQ_U(half.tiles_x, (1281u + (16u << k) - 1u) / (16u << k));
+        }
+        int fixup = 0;
+        for (size_t i = 0; i < half.pass_count; i++) fixup += half.passes[i].pass == TL_PASS_LIGHT_FIXUP;
+        TL_CHECK(fixup == tiled);
         TL_CHECK(half.light_scale == scales[k]);
         uint32_t rw = (1281u + (1u << k) - 1u) >> k, rh = (721u + (1u << k) - 1u) >> k;
         const tl_target_id reduced[4] = {TL_TARGET_LIGHT_DEPTH, TL_TARGET_LIGHT_RT0, TL_TARGET_LIGHT_DIFFUSE,
