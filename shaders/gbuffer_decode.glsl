@@ -13,7 +13,7 @@ layout(binding = TL_UNIT_LIGHT_OFFSET) uniform sampler2D u_light_offset;
 // The pixel of the frame a reduced texel's depth and RT0 came from.
 vec2 tl_reduced_pixel_centre(ivec2 px)
 {
-    uint o = uint(texelFetch(u_light_offset, px, 0).r * 255.0 + 0.5);
+    uint o = uint(texelFetch(u_light_offset, px, 0).r * 255.0 + 0.5) & 31u; // 32: the upsample's flag
     const float k = float(1 << TL_LIGHT_SHIFT);
     return o == 16u ? (vec2(px) + 0.5) * k : vec2(px * (1 << TL_LIGHT_SHIFT) + ivec2(o & 3u, o >> 2)) + 0.5;
 }

@@ -59,5 +59,37 @@ void main()
     gl_FragDepth = planar ? centre : best;
     o_rt0 = texelFetch(u_rt0, at, 0);
     ivec2 o = at - base;
-    o_offset = vec4(float(planar ? 16 : (o.x | (o.y << 2))) / 255.0, 0.0, 0.0, 0.0);
+    // The quad of this texel and its +x, +y and +x+y neighbours, as the upsample interpolates
+    // between them: interior (flag 32) when the 2K x 2K samples of their four blocks lie on one
+    // plane (the fit through the region's corners, as a block's) and the four kept RT0 texels are
+    // the same. Every pixel between those texels' centres lies on that plane: the upsample's depth
+    // weights are all 1, and its normal weights are equal (its normalised weights: bilinear), so
+    // it reads such a quad with one bilinear fetch per target, weighing nothing.
+    bool interior = planar && all(lessThan(base + (2 * TL_K - 1), size));
+    if (interior) {
+        const int R = 2 * TL_K;
+        float r[R * R];
+        for (int y = 0; y < R; y++)
+            for (int x = 0; x < R; x++) r[y * R + x] = texelFetch(u_depth, base + ivec2(x, y), 0).r;
+        float q00 = r[0], q10 = r[R - 1], q01 = r[(R - 1) * R], q11 = r[R * R - 1];
+        float hx = 0.5 * ((q10 - q00) + (q11 - q01)) / float(R - 1);
+        float hy = 0.5 * ((q01 - q00) + (q11 - q10)) / float(R - 1);
+        float qc = 0.25 * (q00 + q10 + q01 + q11);
+        float qeps = 4.0 / 16777216.0 + 1e-6 * abs(qc);
+        for (int i = 0; interior && i < R * R; i++) {
+            vec2 p = vec2(i % R, i / R) - 0.5 * float(R - 1);
+            if (r[i] == u_clear_depth || abs(r[i] - (qc + hx * p.x + hy * p.y)) > qeps) interior = false;
+        }
+        // each neighbour block's kept RT0 texel (its nearest sample, as above) against this one's
+        for (int b = 1; interior && b < 4; b++) {
+            ivec2 b0 = ivec2(b & 1, b >> 1) * TL_K, near = b0;
+            for (int y = 0; y < TL_K; y++)
+                for (int x = 0; x < TL_K; x++) {
+                    float v = r[(b0.y + y) * R + b0.x + x], n = r[near.y * R + near.x];
+                    if (reversed ? v > n : v < n) near = b0 + ivec2(x, y);
+                }
+            interior = texelFetch(u_rt0, base + near, 0) == o_rt0;
+        }
+    }
+    o_offset = vec4(float((planar ? 16 : (o.x | (o.y << 2))) | (interior ? 32 : 0)) / 255.0, 0.0, 0.0, 0.0);
 }

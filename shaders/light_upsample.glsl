@@ -84,7 +84,7 @@ float tl_upsample_gather(vec4 rt0_f, vec3 n_f, float power, float z_f, vec2 dz, 
             all_credible = false;
             continue;
         }
-        uint off = uint(og[g] * 255.0 + 0.5);
+        uint off = uint(og[g] * 255.0 + 0.5) & 31u; // 32: the interior flag
         vec2 c = off == 16u ? (vec2(q) + 0.5) * k : vec2(q * (1 << TL_UPSAMPLE) + ivec2(off & 3u, off >> 2)) + 0.5; // lit there
         float predicted = z_f + dot(dz, c - gl_FragCoord.xy);
         float wz = clamp(1.0 - abs(tl_upsample_linear_depth(d) - predicted) / tol_z, 0.0, 1.0);
@@ -140,6 +140,31 @@ void tl_upsample_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout
     fresnel += min(l.color_type.rgb * t.z, fp16_max);
 }
 
+// The light of a pixel inside an interior quad (light_reduce.frag.glsl, flag 32: four texels on
+// one plane with one RT0 texel) whose own RT0 is that texel: the weights would all be 1, so one
+// bilinear fetch per target, before any weight is computed (most pixels of flat surfaces).
+bool tl_upsample_interior(vec4 rt0, out vec4 ld, out vec3 ls, out vec3 lf)
+{
+    const float k = float(1 << TL_UPSAMPLE);
+    ivec2 size = textureSize(u_light_offset, 0);
+    vec2 r = gl_FragCoord.xy / k - 0.5;
+    ivec2 base = ivec2(floor(r));
+    ld = vec4(0.0);
+    ls = lf = vec3(0.0);
+    if (any(lessThan(base, ivec2(0))) || any(greaterThanEqual(base + 1, size))) return false;
+    uint flags = uint(texelFetch(u_light_offset, base, 0).r * 255.0 + 0.5);
+    if ((flags & 32u) == 0u || texelFetch(u_light_rt0, base, 0) != rt0) return false;
+    vec2 uv = (r + 0.5) / vec2(size);
+    ld = textureLod(u_light_diffuse, uv, 0.0);
+#ifdef TL_SPECULAR_EXACT
+    ls = textureLod(u_light_specular, uv, 0.0).rgb;
+#ifdef TL_FRESNEL_SUMS
+    lf = textureLod(u_light_fresnel, uv, 0.0).rgb;
+#endif
+#endif
+    return true;
+}
+
 // The fix-up here, for the pixels the light-fixup pass does not take: the pixel's own light sums,
 // over the directional lights and its tile's lists (tiled: the tiles are in the frame's pixels and
 // their depth bounds cover every pixel: a list that filled up), or its object's light list
@@ -181,12 +206,17 @@ bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out ve
                        out int entry)
 {
     entry = -1;
-    vec4 rt0 = texelFetch(u_rt0, ivec2(gl_FragCoord.xy), 0), ng = tl_upsample_rt0(rt0);
+    vec4 rt0 = texelFetch(u_rt0, ivec2(gl_FragCoord.xy), 0), ng = vec4(0.0);
     vec4 ld;
     vec3 ls, lf;
-    // a specular material's lobe: cos(angle)^power falls as the lobe does (exp(-power angle^2 / 2))
-    float power = glossy ? clamp(tl_gloss_to_specular_power(ng.w), TL_UPSAMPLE_NORMAL_POWER, TL_UPSAMPLE_LOBE_POWER_MAX) : TL_UPSAMPLE_NORMAL_POWER;
-    float total = tl_upsample_gather(rt0, ng.xyz, power, z_f, dz, ld, ls, lf);
+    float total = 1.0;
+    if (!tl_upsample_interior(rt0, ld, ls, lf)) {
+        ng = tl_upsample_rt0(rt0);
+        // a specular material's lobe: cos(angle)^power falls as the lobe does (exp(-power angle^2 / 2))
+        float power = glossy ? clamp(tl_gloss_to_specular_power(ng.w), TL_UPSAMPLE_NORMAL_POWER, TL_UPSAMPLE_LOBE_POWER_MAX)
+                             : TL_UPSAMPLE_NORMAL_POWER;
+        total = tl_upsample_gather(rt0, ng.xyz, power, z_f, dz, ld, ls, lf);
+    }
     bool relit = total < TL_UPSAMPLE_CREDIBLE;
     if (relit) {
         uint index = atomicAdd(tl_fixup_counters.w, 1u);
