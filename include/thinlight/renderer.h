@@ -532,6 +532,8 @@ typedef struct tl_frame_stats {
     uint64_t light_list_entries;        /**< tiled: entries of all tile lists */
     uint32_t draw_calls;                /**< GL draw calls of the frame */
     uint32_t programs_compiled;         /**< shader programs compiled so far by this renderer (cache misses) */
+    uint64_t relit_pixels;              /**< light_scale below 1: pixels the edge fix-up re-lit at full resolution */
+    double relit_fraction;              /**< relit_pixels over the frame's pixels */
 } tl_frame_stats;
 
 /** "gbuffer", "lights", ... ("unknown" out of range); the names of debug groups and timers. */
