@@ -275,7 +275,8 @@ static int bench__error_script(FILE *f, const void *ctx)
             "(labels: lights, or +effect against fat with it; %s)\"\n"
             "set logscale x\n"
             "set xlabel 'ms per frame, median'\n"
-            "set key below box font ',8' maxrows 4\nset offsets graph 0, graph 0, graph 0.05, graph 0.05\n",
+            "set key below box font ',8' maxrows 4\nset bmargin 8\nset offsets graph 0, graph 0, graph 0.05, "
+            "graph 0.05\n",
             scales ? 3 : 2, run->scene_name);
     bench__series series[BENCH_CONFIGS * BENCH_MAX_SIZES];
     size_t n = bench__series_list(run, series);

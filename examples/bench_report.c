@@ -220,6 +220,8 @@ static void bench__outputs(const bench_run *run, bench__summary *s)
 
 /* ---- the light scales --------------------------------------------------------------------------- */
 
+static void bench__fmt(char *buf, size_t size, const char *fmt, double v);
+
 /* The configurations of the light-scale comparison: the first strategy's fat (the reference),
  * thin-lpp at scale 1 and its variants at 1/2 and 1/4, those measured; 0 when no variant is. */
 static size_t bench__scale_configs(const bench_options *opt, bench_config *out)
@@ -243,12 +245,16 @@ static void bench__err_cell(char *buf, size_t size, const tl_image_error *e, int
 }
 
 typedef struct bench__scale_cells {
-    char fat[24], edge_fat[24], s1[24], edge_s1[24], relit[16], marked[16];
+    char fat[24], edge_fat[24], s1[24], edge_s1[24], relit[16], marked[16], reduce[16], material[16];
 } bench__scale_cells;
 
 static void bench__scale_row(const bench_record *r, bench__scale_cells *c)
 {
     int ref = r->mode == BENCH_REFERENCE, scaled = bench_config_scaled(r->config);
+    bench__fmt(c->reduce, sizeof c->reduce, "%.2f",
+               r->passes & (1u << TL_PASS_LIGHT_REDUCE) ? r->pass_ms[TL_PASS_LIGHT_REDUCE] : NAN);
+    bench__fmt(c->material, sizeof c->material, "%.2f",
+               r->passes & (1u << TL_PASS_MATERIAL) ? r->pass_ms[TL_PASS_MATERIAL] : NAN);
     bench__err_cell(c->fat, sizeof c->fat, &r->ldr, !ref);
     bench__err_cell(c->edge_fat, sizeof c->edge_fat, &r->edge_ldr, !ref && r->edge_pixels);
     bench__err_cell(c->s1, sizeof c->s1, &r->scale1_ldr, r->has_scale1);
@@ -288,10 +294,9 @@ static void bench__print_scales(const bench_run *run, bench_size size)
             if (!r) continue;
             bench__scale_cells c;
             bench__scale_row(r, &c);
-            printf("%-27s %6u %8.2f %7.2f %8.2f %8.2f %5u %7s %8s %11s %11s %11s %11s\n", bench_config_name(r->config),
-                   r->lights, r->ms_median, r->pass_ms[TL_PASS_LIGHT_REDUCE], r->lighting_ms,
-                   r->pass_ms[TL_PASS_MATERIAL], r->bytes_per_pixel, c.relit, c.marked, c.fat, c.edge_fat, c.s1,
-                   c.edge_s1);
+            printf("%-27s %6u %8.2f %7s %8.2f %8s %5u %7s %8s %11s %11s %11s %11s\n", bench_config_name(r->config),
+                   r->lights, r->ms_median, c.reduce, r->lighting_ms, c.material, r->bytes_per_pixel, c.relit, c.marked,
+                   c.fat, c.edge_fat, c.s1, c.edge_s1);
         }
     }
 }
@@ -314,10 +319,9 @@ static void bench__md_scales(FILE *f, const bench_run *run, bench_size size)
             if (!r) continue;
             bench__scale_cells c;
             bench__scale_row(r, &c);
-            fprintf(f, "| `%s` | %u | %.2f | %.2f | %.2f | %.2f | %u | %s | %s | %s | %s | %s | %s |\n",
-                    bench_config_name(r->config), r->lights, r->ms_median, r->pass_ms[TL_PASS_LIGHT_REDUCE],
-                    r->lighting_ms, r->pass_ms[TL_PASS_MATERIAL], r->bytes_per_pixel, c.relit, c.marked, c.fat,
-                    c.edge_fat, c.s1, c.edge_s1);
+            fprintf(f, "| `%s` | %u | %.2f | %s | %.2f | %s | %u | %s | %s | %s | %s | %s | %s |\n",
+                    bench_config_name(r->config), r->lights, r->ms_median, c.reduce, r->lighting_ms, c.material,
+                    r->bytes_per_pixel, c.relit, c.marked, c.fat, c.edge_fat, c.s1, c.edge_s1);
         }
 }
 
