@@ -590,7 +590,8 @@ static int bench__sweep_size(bench_run *run, tl_context *ctx, bench_scene *scene
 /* Refuses, before any GL work, a size whose targets are over the target-memory budget in some
  * configuration (one line naming both), and one whose renderers held at once and images would not
  * fit in this machine's memory (rather than being killed halfway): the plans of the largest batch,
- * the bench's own images (20 B/px) and the references it keeps (20 B/px each). */
+ * the bench's own images (20 B/px, and 33 for the edge mask), and the references it keeps (24 B/px
+ * each). */
 static int bench__check_memory(const bench_run *run, const bench_scene *bs)
 {
     const bench_options *opt = &run->opt;
@@ -616,7 +617,9 @@ static int bench__check_memory(const bench_run *run, const bench_scene *bs)
             if (tl_frame_plan_build(&desc, &features, &plan) == TL_OK) batch += plan.allocated_bytes_per_pixel;
             if (batch > largest) largest = batch;
         }
-        double need = (largest + 20.0 + 20.0 * (double)slots) * size.width * size.height;
+        /* the images 20 B/px, the edge mask 1 and, while it is made, fat's depth and normals 32; per
+           reference slot fat's images 20 and thin-lpp's at scale 1 4 */
+        double need = (largest + 20.0 + 1.0 + 32.0 + 24.0 * (double)slots) * size.width * size.height;
         if (need > available) {
             tl_tool_fail(BENCH_TOOL, "%ux%u needs about %.1f GiB for %zu renderers and the images, more than 3/4 of "
                                      "this machine's %.1f GiB",
