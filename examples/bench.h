@@ -33,6 +33,12 @@
 #define BENCH_PNG_MAX_BYTES (300u * 1024u)
 /* Heat maps show |mode - fat| of the final image, largest RGB channel, 0..HEAT_SCALE 8-bit steps. */
 #define BENCH_HEAT_SCALE 16u
+/* Edge pixels (bench_edges.c): within BENCH_EDGE_RADIUS pixels (a square) of a depth discontinuity
+ * (fat's linear view depth: |d(x-1) + d(x+1) - 2 d(x)| over BENCH_EDGE_DEPTH of d(x), along x or y)
+ * or a normal crease (fat's normals of neighbouring pixels more than BENCH_EDGE_CREASE_DEG apart). */
+#define BENCH_EDGE_RADIUS 2
+#define BENCH_EDGE_DEPTH 0.02
+#define BENCH_EDGE_CREASE_DEG 30.0
 
 #define BENCH_DOC_BEGIN "<!-- bench:begin -->"
 #define BENCH_DOC_END "<!-- bench:end -->"
@@ -182,6 +188,14 @@ typedef struct bench_record {
     double lighting_ms;            /* the passes that apply the lights: light-cull + lights or lights-tiled
                                       (deferred), light-cull + forward */
     tl_image_error ldr;            /* final image vs fat, RGB in 8-bit steps */
+    tl_image_error edge_ldr;       /* the same over the edge pixels alone (bench_edges.c) */
+    uint64_t edge_pixels;          /* how many pixels are edge pixels (0: no edge mask) */
+    int has_scale1;                /* a light-scale variant: compared with thin-lpp at scale 1 too */
+    tl_image_error scale1_ldr;     /* final image vs thin-lpp at light scale 1 (same strategy, frame) */
+    tl_image_error edge_scale1_ldr; /* the same over the edge pixels */
+    uint64_t relit_pixels;         /* tl_frame_stats.relit_pixels of the last frame */
+    double relit_fraction;         /* tl_frame_stats.relit_fraction of the last frame */
+    double relit_fraction_marked;  /* HDR pixels the material pass marked re-lit (alpha 0.5) over all */
     tl_image_error hdr;            /* HDR target vs fat, RGB, peak = fat's largest value */
     double hdr_peak;
     uint64_t nan_pixels;           /* pixels with a NaN or Inf channel in the HDR target */
@@ -190,10 +204,15 @@ typedef struct bench_record {
 } bench_record;
 
 typedef enum bench_image_kind {
-    BENCH_IMAGE_FINAL,    /* a mode's final image */
-    BENCH_IMAGE_HEAT,     /* |mode - fat| */
-    BENCH_IMAGE_HEAT_DOC  /* the same, block maxima at most 640 wide, for the doc */
+    BENCH_IMAGE_FINAL,         /* a mode's final image */
+    BENCH_IMAGE_HEAT,          /* |mode - fat| */
+    BENCH_IMAGE_HEAT_DOC,      /* the same, block maxima at most 640 wide, for the doc */
+    BENCH_IMAGE_HEAT_SCALE1,   /* light-scale variants: |variant - thin-lpp at scale 1| */
+    BENCH_IMAGE_HEAT_SCALE1_DOC,
+    BENCH_IMAGE_EDGES,         /* the edge pixels (white) over fat's luma, darkened */
+    BENCH_IMAGE_KINDS
 } bench_image_kind;
+extern const char *const bench_image_kind_names[BENCH_IMAGE_KINDS];
 
 typedef struct bench_image_file {
     char path[512];
@@ -310,9 +329,22 @@ int bench_effects_update_doc(const bench_run *run, const char *doc_text);
 /* bench_plan.c: fills run->planning for every rendered mode (pure: no GL; the times stay NaN). */
 int bench_planning_compare(bench_run *run, bench_scene *scene);
 
-/* bench_images.c */
+/* bench_images.c: the final image (final_image), the heat map against fat (heat_map) and, with
+ * scale1_ldr (light-scale variants), the heat map against thin-lpp at scale 1. RGB, rows bottom up. */
 int bench_images_write(bench_run *run, const bench_record *rec, const uint8_t *ldr, const uint8_t *ref_ldr,
-                       int final_image, int heat_map);
+                       const uint8_t *scale1_ldr, int final_image, int heat_map);
+
+/* The edge pixels of a size over fat's final image (rec: the fat record), bench_edges_<WxH>.png. */
+int bench_images_write_edges(bench_run *run, const bench_record *rec, const uint8_t *ref_ldr, const uint8_t *mask);
+
+/* bench_edges.c: the edge mask (1 = edge pixel) of a frame from fat's DEPTH and FAT_NORMAL targets
+ * as tl_renderer_read_target gives them (4 floats a pixel, rows bottom up); returns the edge pixels. */
+size_t bench_edges_mask(const float *depth, const float *normal, uint32_t w, uint32_t h, uint8_t *mask);
+/* The error of a against b (RGB, 8-bit) over the pixels of `mask` alone. */
+void bench_edges_compare(const uint8_t *a, const uint8_t *b, const uint8_t *mask, size_t pixels, tl_image_error *out);
+/* The configuration a light-scale variant is compared with: thin-lpp at scale 1, same strategy. */
+static inline bench_config bench_config_scale1(bench_config c) { return bench_config_variant(c, 0); }
+static inline int bench_config_scaled(bench_config c) { return bench_config_light_scale(c) > 0.0f; }
 
 /* bench_report.c */
 void bench_print_table(const bench_run *run);

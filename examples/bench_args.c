@@ -36,10 +36,15 @@ static const char usage_head[] =
     "  --light-formats LIST rgba16f (always) and r11g11b10f: thin-lpp/tiled also with the\n"
     "                   R11G11B10F light buffer (default rgba16f,r11g11b10f)\n"
     "  --light-scales LIST 1 (always), 0.5, 0.25: thin-lpp also with its light buffer at that\n"
-    "                   scale per axis, with the first strategy (default 1,0.5,0.25)\n"
+    "                   scale per axis, with the first strategy (default 1,0.5,0.25); a table of its own\n"
+    "                   gives their error against fat and against thin-lpp at scale 1, over the frame\n"
+    "                   and over the edge pixels (fat's depth steps and creases), their passes' times,\n"
+    "                   bytes and re-lit fraction\n";
+static const char usage_outputs[] =
     "  --json FILE      write one record per (mode, strategy, lights, size)\n"
-    "  --out DIR        write final images, heat maps of |mode - fat| (at the largest light count)\n"
-    "                   and the plots (gnuplot) into DIR (PNG: needs a build with THINLIGHT_WITH_IO)\n"
+    "  --out DIR        write final images, heat maps of |mode - fat| (at the largest light count;\n"
+    "                   light-scale variants also against thin-lpp at scale 1), the edge pixels and\n"
+    "                   the plots (gnuplot) into DIR (PNG: needs a build with THINLIGHT_WITH_IO)\n"
     "  --quick          a short sweep: 640x360, lights 8,64,256, 3 frames after 1 warm-up\n"
     "                   (options given explicitly still apply)\n"
     "  --doc FILE       replace the text between " BENCH_DOC_BEGIN " and " BENCH_DOC_END "\n"
@@ -170,8 +175,8 @@ static int bench__option(bench_options *o, bench__given *g, const tl_opt_table *
 {
     switch (opt->id) {
     case B_HELP:
-        printf("%s%s%s%s%s%s", usage_head, tl_tool_effects_help, usage_middle, TL_TOOL_CONTEXT_HELP, tl_tool_budget_help,
-               usage_tail);
+        printf("%s%s%s%s%s%s%s", usage_head, usage_outputs, tl_tool_effects_help, usage_middle, TL_TOOL_CONTEXT_HELP,
+               tl_tool_budget_help, usage_tail);
         return -1;
     case B_LIST: tl_opt_list(stdout, tables, ntables); return -1;
     case B_QUICK: o->quick = 1; break;

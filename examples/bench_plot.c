@@ -1,7 +1,8 @@
 /* The three plots of a sweep (gnuplot, PNG, each well under 300 KiB):
  *   bench_ms_vs_lights     frame time against light count per mode, log-log;
  *   bench_error_vs_ms      error of the final image against run time, one point per (mode, lights),
- *                          and one per (effect, mode) measured with --effects;
+ *                          and one per (effect, mode) measured with --effects; a third panel for the
+ *                          light scales: PSNR against thin-lpp at scale 1 and over the edge pixels;
  *   bench_bytes_per_pixel  bytes per pixel each mode allocates, stacked by target, and the bytes it
  *                          moves per pixel and frame at the largest light count, stacked by pass. */
 #include <math.h>
@@ -17,6 +18,8 @@ const char *const bench_plot_names[BENCH_PLOT_COUNT] = {"bench_ms_vs_lights", "b
 /* One colour per mode; strategies are told apart by dash type (bench__dash). */
 static const char *bench__colour(bench_config c)
 {
+    if (bench_config_variant_of(c) == BENCH_VARIANT_LIGHT_HALF) return "#e08214"; /* each light scale its own */
+    if (bench_config_variant_of(c) == BENCH_VARIANT_LIGHT_QUARTER) return "#8c2d04";
     switch (bench_config_mode(c)) {
     case TL_MODE_THIN_LPP: return "#1a9850";
     case TL_MODE_THIN_DEFERRED: return "#2166ac";
@@ -164,7 +167,9 @@ static int bench__error_data(FILE *f, const void *ctx)
     const bench_run *run = ((const tl_tool_plot *)ctx)->user;
     bench__series series[BENCH_CONFIGS * BENCH_MAX_SIZES];
     size_t n = bench__series_list(run, series);
-    fputs("# one block per (mode, size) but fat (the reference): ms_median psnr_db mean_abs max_abs lights\n", f);
+    fputs("# one block per (mode, size) but fat (the reference): ms_median psnr_db mean_abs max_abs lights "
+          "psnr_vs_scale1 edge_psnr_db edge_max_abs edge_psnr_vs_scale1 (NaN: not measured)\n",
+          f);
     size_t block = 0;
     for (size_t i = 0; i < n; i++) {
         if (bench_config_mode(series[i].mode) == BENCH_REFERENCE) continue;
@@ -176,7 +181,12 @@ static int bench__error_data(FILE *f, const void *ctx)
             bench__value(f, r->ldr.psnr_db);
             bench__value(f, r->ldr.mean_abs > 0.0 ? r->ldr.mean_abs : NAN);
             bench__value(f, r->ldr.max_abs);
-            fprintf(f, " \"%u\"\n", r->lights);
+            fprintf(f, " \"%u\"", r->lights);
+            bench__value(f, r->has_scale1 ? r->scale1_ldr.psnr_db : NAN);
+            bench__value(f, r->edge_pixels ? r->edge_ldr.psnr_db : NAN);
+            bench__value(f, r->edge_pixels ? r->edge_ldr.max_abs : NAN);
+            bench__value(f, r->has_scale1 && r->edge_pixels ? r->edge_scale1_ldr.psnr_db : NAN);
+            fputc('\n', f);
         }
     }
     /* then one block per measured effect and configuration (--effects): one point, the frame time
@@ -189,9 +199,9 @@ static int bench__error_data(FILE *f, const void *ctx)
         bench__value(f, e->ldr.psnr_db);
         bench__value(f, e->ldr.mean_abs > 0.0 ? e->ldr.mean_abs : NAN);
         bench__value(f, e->ldr.max_abs);
-        fprintf(f, " \"+%s\"\n", bench_effect_name(e->effect));
+        fprintf(f, " \"+%s\" NaN NaN NaN NaN\n", bench_effect_name(e->effect));
     }
-    if (!block) fputs("NaN NaN NaN NaN \"\"\n", f);
+    if (!block) fputs("NaN NaN NaN NaN \"\" NaN NaN NaN NaN\n", f);
     return 0;
 }
 
@@ -215,18 +225,59 @@ static void bench__error_effects(FILE *f, const tl_tool_plot *p, const bench_run
     }
 }
 
+static int bench__has_scales(const bench_run *run)
+{
+    for (size_t i = 0; i < run->record_count; i++)
+        if (run->records[i].has_scale1) return 1;
+    return 0;
+}
+
+/* The light scales' panel: per light-scale variant its PSNR against thin-lpp at scale 1 (solid) and
+ * over the edge pixels against fat (dashed, hollow points), with thin-lpp at scale 1's edge PSNR
+ * against fat beside them (dashed): what the reduced light buffer loses, and where. */
+static void bench__error_scales(FILE *f, const tl_tool_plot *p, const bench_run *run, const bench__series *series,
+                                size_t n)
+{
+    fputs("unset logscale y\nset yrange [*:*]\nset ylabel 'PSNR, dB (higher is better)'\n"
+          "set title 'light scales: against thin-lpp at scale 1 (solid), edge pixels against fat (dashed)'\nplot ",
+          f);
+    size_t block = 0, drawn = 0;
+    for (size_t i = 0; i < n; i++) {
+        if (bench_config_mode(series[i].mode) == BENCH_REFERENCE) continue;
+        bench_config c = series[i].mode;
+        int scaled = bench_config_scaled(c), base = !bench_config_variant_of(c) && bench_config_mode(c) == TL_MODE_THIN_LPP &&
+                                                    bench_config_strategy(c) == run->opt.strategies[0];
+        if (scaled || base) {
+            char title[64];
+            bench__series_title(run, &series[i], title, sizeof title);
+            if (scaled)
+                fprintf(f, "%s'%s.dat' index %zu using 1:6 with linespoints lw 1.5 pt 7 ps 1.3 lc rgb '%s' title '%s "
+                           "vs scale 1', '' index %zu using 1:6:5 with labels offset 0.8,0.6 font ',8' tc rgb '%s' notitle",
+                        drawn++ ? ", \\\n     " : "", p->name, block, bench__colour(c), title, block, bench__colour(c));
+            fprintf(f, "%s'%s.dat' index %zu using 1:7 with linespoints lw 1.5 dt 2 pt 6 ps 1.3 lc rgb '%s' title '%s "
+                       "edges vs fat'",
+                    drawn++ ? ", \\\n     " : "", p->name, block, bench__colour(c), title);
+        }
+        block++;
+    }
+    if (!drawn) fputs("NaN notitle", f);
+    fputc('\n', f);
+}
+
 static int bench__error_script(FILE *f, const void *ctx)
 {
     const tl_tool_plot *p = ctx;
     const bench_run *run = p->user;
-    bench__terminal(f, p, 1300, 600);
+    int scales = bench__has_scales(run);
+    bench__terminal(f, p, scales ? 1900 : 1300, 650);
     fprintf(f,
-            "set multiplot layout 1,2 title \"thinlight-bench: error of the final image against fat vs frame time "
+            "set multiplot layout 1,%d title \"thinlight-bench: error of the final image against fat vs frame time "
             "(labels: lights, or +effect against fat with it; %s)\"\n"
             "set logscale x\n"
             "set xlabel 'ms per frame, median'\n"
-            "set key bottom right box opaque font ',8'\n",
-            run->scene_name);
+            "set key below box font ',8' maxrows 4\nset bmargin 8\nset offsets graph 0, graph 0, graph 0.05, "
+            "graph 0.05\n",
+            scales ? 3 : 2, run->scene_name);
     bench__series series[BENCH_CONFIGS * BENCH_MAX_SIZES];
     size_t n = bench__series_list(run, series);
     static const char *const panels[2][3] = {
@@ -251,6 +302,7 @@ static int bench__error_script(FILE *f, const void *ctx)
         if (!block) fputs("NaN notitle", f);
         fputc('\n', f);
     }
+    if (scales) bench__error_scales(f, p, run, series, n);
     fputs("unset multiplot\nset output\n", f);
     return 0;
 }

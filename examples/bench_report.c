@@ -12,6 +12,8 @@
 #include "tool_util.h"
 
 #define BENCH__SUMMARY_MAX 24
+#define BENCH__STR2(x) #x
+#define BENCH__STR(x) BENCH__STR2(x)
 #define BENCH__LINE 512
 
 typedef struct bench__summary {
@@ -120,6 +122,8 @@ static void bench__fastest_line(const bench_run *run, bench__summary *s, const c
     if (any) bench__say(s, "%s lights", line);
 }
 
+static void bench__scale_lines(const bench_run *run, bench__summary *s, const char *at, bench_size size);
+
 static void bench__summarise(const bench_run *run, bench__summary *s)
 {
     const bench_options *opt = &run->opt;
@@ -154,6 +158,7 @@ static void bench__summarise(const bench_run *run, bench__summary *s)
             if (om == bench_config_mode(subject)) bench__speedup_line(run, s, at, size, subject, modes[m], 1);
         }
         bench__fastest_line(run, s, at, size, modes, mode_count);
+        bench__scale_lines(run, s, at, size);
         /* the worst image quality of each configuration */
         char line[BENCH__LINE];
         snprintf(line, sizeof line, "%slowest PSNR of the final image against fat (same strategy):", at);
@@ -199,16 +204,155 @@ static void bench__outputs(const bench_run *run, bench__summary *s)
     const bench_options *opt = &run->opt;
     if (opt->json) bench__say(s, "JSON records: %s", opt->json);
     if (opt->out) {
-        size_t count[3] = {0, 0, 0};
+        size_t count[BENCH_IMAGE_KINDS] = {0};
         for (size_t i = 0; i < run->image_count; i++) count[run->images[i].kind]++;
         bench__say(s,
-                   "images in %s: %zu final images and %zu heat maps of |mode - fat| at %u lights "
-                   "(bench_heat_*: largest RGB difference, 0 to %u 8-bit steps on a square-root ramp)",
-                   opt->out, count[BENCH_IMAGE_FINAL], count[BENCH_IMAGE_HEAT], opt->lights[opt->light_count - 1],
-                   BENCH_HEAT_SCALE);
+                   "images in %s: %zu final images, %zu heat maps of |mode - fat| and %zu of |light-scale variant - "
+                   "thin-lpp at scale 1| at %u lights (bench_heat_*_vs_fat_*, bench_heat_*_vs_scale1_*: largest RGB "
+                   "difference, 0 to %u 8-bit steps on a square-root ramp)",
+                   opt->out, count[BENCH_IMAGE_FINAL], count[BENCH_IMAGE_HEAT], count[BENCH_IMAGE_HEAT_SCALE1],
+                   opt->lights[opt->light_count - 1], BENCH_HEAT_SCALE);
         if (run->plots_made)
             bench__say(s, "plots: %s/{%s,%s,%s}.png", opt->out, bench_plot_names[0], bench_plot_names[1],
                        bench_plot_names[2]);
+    }
+}
+
+/* ---- the light scales --------------------------------------------------------------------------- */
+
+static void bench__fmt(char *buf, size_t size, const char *fmt, double v);
+
+/* The configurations of the light-scale comparison: the first strategy's fat (the reference),
+ * thin-lpp at scale 1 and its variants at 1/2 and 1/4, those measured; 0 when no variant is. */
+static size_t bench__scale_configs(const bench_options *opt, bench_config *out)
+{
+    bench_config modes[BENCH_CONFIGS];
+    size_t mode_count = bench_render_modes(opt, modes), n = 0, scaled = 0;
+    bench_config lpp = bench_config_make(TL_MODE_THIN_LPP, opt->strategies[0]);
+    for (size_t m = 0; m < mode_count; m++) {
+        int is_scaled = bench_config_scaled(modes[m]);
+        if (m == 0 || modes[m] == lpp || is_scaled) out[n++] = modes[m];
+        scaled += is_scaled;
+    }
+    return scaled ? n : 0;
+}
+
+/* "46.1/104": PSNR and max error, or "-" when not measured (or the reference itself). */
+static void bench__err_cell(char *buf, size_t size, const tl_image_error *e, int measured)
+{
+    if (!measured) snprintf(buf, size, "-");
+    else snprintf(buf, size, "%.1f/%.0f", e->psnr_db, e->max_abs);
+}
+
+typedef struct bench__scale_cells {
+    char fat[24], edge_fat[24], s1[24], edge_s1[24], relit[16], marked[16], reduce[16], material[16];
+} bench__scale_cells;
+
+static void bench__scale_row(const bench_record *r, bench__scale_cells *c)
+{
+    int ref = r->mode == BENCH_REFERENCE, scaled = bench_config_scaled(r->config);
+    bench__fmt(c->reduce, sizeof c->reduce, "%.2f",
+               r->passes & (1u << TL_PASS_LIGHT_REDUCE) ? r->pass_ms[TL_PASS_LIGHT_REDUCE] : NAN);
+    bench__fmt(c->material, sizeof c->material, "%.2f",
+               r->passes & (1u << TL_PASS_MATERIAL) ? r->pass_ms[TL_PASS_MATERIAL] : NAN);
+    bench__err_cell(c->fat, sizeof c->fat, &r->ldr, !ref);
+    bench__err_cell(c->edge_fat, sizeof c->edge_fat, &r->edge_ldr, !ref && r->edge_pixels);
+    bench__err_cell(c->s1, sizeof c->s1, &r->scale1_ldr, r->has_scale1);
+    bench__err_cell(c->edge_s1, sizeof c->edge_s1, &r->edge_scale1_ldr, r->has_scale1 && r->edge_pixels);
+    if (scaled) {
+        snprintf(c->relit, sizeof c->relit, "%.2f", 100.0 * r->relit_fraction);
+        snprintf(c->marked, sizeof c->marked, "%.2f", 100.0 * r->relit_fraction_marked);
+    } else {
+        snprintf(c->relit, sizeof c->relit, "-");
+        snprintf(c->marked, sizeof c->marked, "-");
+    }
+}
+
+static const char bench__scale_caption[] =
+    "error of the final image against fat at full resolution and against thin-lpp at light scale 1, over "
+    "the whole frame and over the edge pixels alone (within " BENCH__STR(BENCH_EDGE_RADIUS) " pixels of a depth "
+    "discontinuity or a normal crease of fat's frame), as PSNR dB / max error in 8-bit steps; ms: GPU time, "
+    "median; reduce, light, material: those passes' ms (light: cull + lights); re-lit %: "
+    "tl_frame_stats.relit_fraction; marked %: HDR pixels the material pass marked re-lit (alpha 0.5)";
+
+static void bench__print_scales(const bench_run *run, bench_size size)
+{
+    const bench_options *opt = &run->opt;
+    bench_config cfg[BENCH_CONFIGS];
+    size_t n = bench__scale_configs(opt, cfg);
+    if (!n) return;
+    const bench_record *any = bench_find(run, cfg[0], opt->lights[0], size);
+    printf("\nlight scales at %ux%u (edge pixels: %.1f %% of the frame): %s\n", size.width, size.height,
+           any && any->edge_pixels ? 100.0 * (double)any->edge_pixels / ((double)size.width * size.height) : 0.0,
+           bench__scale_caption);
+    printf("%-27s %6s %8s %7s %8s %8s %5s %7s %8s %11s %11s %11s %11s\n", "config", "lights", "ms med", "reduce",
+           "light", "material", "B/px", "re-lit%", "marked%", "vs fat", "edge fat", "vs scale 1", "edge s1");
+    for (size_t li = 0; li < opt->light_count; li++) {
+        if (li) putchar('\n');
+        for (size_t m = 0; m < n; m++) {
+            const bench_record *r = bench_find(run, cfg[m], opt->lights[li], size);
+            if (!r) continue;
+            bench__scale_cells c;
+            bench__scale_row(r, &c);
+            printf("%-27s %6u %8.2f %7s %8.2f %8s %5u %7s %8s %11s %11s %11s %11s\n", bench_config_name(r->config),
+                   r->lights, r->ms_median, c.reduce, r->lighting_ms, c.material, r->bytes_per_pixel, c.relit, c.marked,
+                   c.fat, c.edge_fat, c.s1, c.edge_s1);
+        }
+    }
+}
+
+static void bench__md_scales(FILE *f, const bench_run *run, bench_size size)
+{
+    const bench_options *opt = &run->opt;
+    bench_config cfg[BENCH_CONFIGS];
+    size_t n = bench__scale_configs(opt, cfg);
+    if (!n) return;
+    fprintf(f, "\n#### Light scales, %ux%u\n\nThin-lpp with its light buffer at 1/2 and 1/4 per axis: %s.\n\n",
+            size.width, size.height, bench__scale_caption);
+    fputs("| config | lights | ms median | reduce ms | light ms | material ms | B/px | re-lit % | marked % | "
+          "vs fat | edge vs fat | vs scale 1 | edge vs scale 1 |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+          "---:|---:|\n",
+          f);
+    for (size_t li = 0; li < opt->light_count; li++)
+        for (size_t m = 0; m < n; m++) {
+            const bench_record *r = bench_find(run, cfg[m], opt->lights[li], size);
+            if (!r) continue;
+            bench__scale_cells c;
+            bench__scale_row(r, &c);
+            fprintf(f, "| `%s` | %u | %.2f | %s | %.2f | %s | %u | %s | %s | %s | %s | %s | %s |\n",
+                    bench_config_name(r->config), r->lights, r->ms_median, c.reduce, r->lighting_ms, c.material,
+                    r->bytes_per_pixel, c.relit, c.marked, c.fat, c.edge_fat, c.s1, c.edge_s1);
+        }
+}
+
+/* Per light-scale variant: its speed-up over the fastest fat of the same light count and the "no
+ * halo" check (its largest edge error against fat over twice thin-lpp's at scale 1). */
+static void bench__scale_lines(const bench_run *run, bench__summary *s, const char *at, bench_size size)
+{
+    const bench_options *opt = &run->opt;
+    bench_config cfg[BENCH_CONFIGS], modes[BENCH_CONFIGS];
+    size_t n = bench__scale_configs(opt, cfg), mode_count = bench_render_modes(opt, modes);
+    for (size_t k = 0; k < n; k++) {
+        if (!bench_config_scaled(cfg[k])) continue;
+        char line[BENCH__LINE];
+        snprintf(line, sizeof line, "%s%s: over the fastest fat, PSNR against fat, edge max error against twice "
+                 "scale 1's (no halo):", at, bench_config_name(cfg[k]));
+        int any = 0;
+        for (size_t li = 0; li < opt->light_count; li++) {
+            uint32_t lights = opt->lights[li];
+            const bench_record *r = bench_find(run, cfg[k], lights, size),
+                               *one = bench_find(run, bench_config_scale1(cfg[k]), lights, size), *fat = NULL;
+            for (size_t m = 0; m < mode_count; m++) {
+                const bench_record *q = bench_find(run, modes[m], lights, size);
+                if (q && q->mode == TL_MODE_FAT && q->ms_median > 0.0 && (!fat || q->ms_median < fat->ms_median)) fat = q;
+            }
+            if (!r || !one || !fat || !r->edge_pixels) continue;
+            double bound = 2.0 * one->edge_ldr.max_abs;
+            bench__add(line, "%s %.2fx, %.1f dB, %.0f %s %.0f at %u", any ? ";" : "", bench_speedup(r, fat),
+                       r->ldr.psnr_db, r->edge_ldr.max_abs, r->edge_ldr.max_abs <= bound ? "<=" : ">", bound, lights);
+            any = 1;
+        }
+        if (any) bench__say(s, "%s lights", line);
     }
 }
 
@@ -266,6 +410,7 @@ void bench_print_table(const bench_run *run)
             }
         }
     }
+    for (size_t si = 0; si < opt->size_count; si++) bench__print_scales(run, opt->sizes[si]);
     bench__summary s = {0};
     bench__summarise(run, &s);
     bench__planning(run, &s);
@@ -277,9 +422,34 @@ void bench_print_table(const bench_run *run)
 
 /* ---- JSON ----------------------------------------------------------------------------------- */
 
+static const char bench__edge_definition[] =
+    "pixels within " BENCH__STR(BENCH_EDGE_RADIUS) " pixels (a square) of a depth discontinuity or a normal crease of "
+    "the fat reference's frame (its DEPTH and FAT_NORMAL targets read back): |d(x-1) + d(x+1) - 2 d(x)| over "
+    BENCH__STR(BENCH_EDGE_DEPTH) " d(x) in linear view depth along x or y, or neighbouring normals more than "
+    BENCH__STR(BENCH_EDGE_CREASE_DEG) " degrees apart";
+
 static const char *bench__light_type_name(int t)
 {
     return t == TL_LIGHT_POINT ? "point" : t == TL_LIGHT_SPOT ? "spot" : "directional";
+}
+
+/* An error member: {psnr_db, max_abs_error, mean_abs_error} (edge: with pixels and fraction, from
+ * `edges`), or null when it was not measured. */
+static void bench__json_error(tl_tool_json *j, const char *key, const tl_image_error *e, const bench_record *edges)
+{
+    if (!e) {
+        tl_tool_json_num(j, key, NAN); /* null */
+        return;
+    }
+    tl_tool_json_object(j, key, 1);
+    if (edges) {
+        tl_tool_json_uint(j, "pixels", edges->edge_pixels);
+        tl_tool_json_num(j, "fraction", (double)edges->edge_pixels / ((double)edges->width * edges->height));
+    }
+    tl_tool_json_num(j, "psnr_db", e->psnr_db);
+    tl_tool_json_num(j, "max_abs_error", e->max_abs);
+    tl_tool_json_num(j, "mean_abs_error", e->mean_abs);
+    tl_tool_json_close(j, '}');
 }
 
 static void bench__json_record(tl_tool_json *j, const bench_record *r)
@@ -366,6 +536,12 @@ static void bench__json_record(tl_tool_json *j, const bench_record *r)
     tl_tool_json_num(j, "hdr_mean_abs_error", r->hdr.mean_abs);
     tl_tool_json_num(j, "hdr_peak", r->hdr_peak);
     tl_tool_json_uint(j, "nan_pixels", r->nan_pixels);
+    bench__json_error(j, "edge", r->edge_pixels ? &r->edge_ldr : NULL, r);
+    bench__json_error(j, "error_vs_scale1", r->has_scale1 ? &r->scale1_ldr : NULL, NULL);
+    bench__json_error(j, "edge_error_vs_scale1", r->has_scale1 && r->edge_pixels ? &r->edge_scale1_ldr : NULL, r);
+    tl_tool_json_uint(j, "relit_pixels", r->relit_pixels);
+    tl_tool_json_num(j, "relit_fraction", r->relit_fraction);
+    tl_tool_json_num(j, "relit_fraction_marked", r->relit_fraction_marked);
     tl_tool_json_close(j, '}');
 }
 
@@ -400,7 +576,14 @@ static int bench__write_json(FILE *f, const void *ctx)
     tl_tool_json_str(&j, "error_units",
                      "psnr_db, max_abs_error, mean_abs_error: final image, RGB, 8-bit steps (peak 255); hdr_*: HDR "
                      "target, RGB, linear radiance, PSNR relative to hdr_peak (the reference's largest value); "
-                     "999 dB = identical");
+                     "999 dB = identical; edge: the same over the edge pixels alone (edge_definition); "
+                     "error_vs_scale1, edge_error_vs_scale1: light-scale variants against thin-lpp at light scale 1 "
+                     "(same strategy and frame), null elsewhere");
+    tl_tool_json_str(&j, "edge_definition", bench__edge_definition);
+    tl_tool_json_str(&j, "relit_definition",
+                     "relit_fraction: tl_frame_stats.relit_fraction (pixels the edge fix-up re-lit at full resolution "
+                     "over the frame's pixels; 0 from a library that does not count them); relit_fraction_marked: "
+                     "HDR pixels whose alpha is the material pass's re-lit mark (0.5), light-scale variants only");
     tl_tool_json_num(&j, "seconds", run->seconds);
     tl_tool_json_array(&j, "load_average", 1);
     tl_tool_json_num(&j, NULL, run->load_start);
@@ -448,8 +631,7 @@ static int bench__write_json(FILE *f, const void *ctx)
         const bench_image_file *im = &run->images[i];
         tl_tool_json_object(&j, NULL, 1);
         tl_tool_json_str(&j, "path", im->path);
-        static const char *const kinds[3] = {"final", "heat", "heat-doc"};
-        tl_tool_json_str(&j, "kind", kinds[im->kind]);
+        tl_tool_json_str(&j, "kind", bench_image_kind_names[im->kind]);
         tl_tool_json_str(&j, "mode", bench_config_slug(im->config));
         tl_tool_json_uint(&j, "lights", im->lights);
         tl_tool_json_close(&j, '}');
@@ -474,6 +656,9 @@ typedef struct bench__doc {
     const char *tail;
     bench_config heat[BENCH_CONFIGS]; /* heat maps copied to img/bench_heat_<slug>.png */
     size_t heat_count;
+    bench_config heat1[BENCH_CONFIGS]; /* and img/bench_heat_<slug>_vs_scale1.png */
+    size_t heat1_count;
+    int edges;                        /* img/bench_edges.png */
 } bench__doc;
 
 static void bench__md_number(FILE *f, const char *fmt, double v)
@@ -588,6 +773,7 @@ static int bench__write_doc(FILE *f, const void *ctx)
             run->timers_ok ? "GPU timer queries summed over the passes" : "wall clock (GPU timers unavailable)",
             run->light_definition);
     for (size_t si = 0; si < opt->size_count; si++) bench__md_table(f, run, opt->sizes[si]);
+    for (size_t si = 0; si < opt->size_count; si++) bench__md_scales(f, run, opt->sizes[si]);
     bench__md_passes(f, run);
     bench__md_targets(f, run);
     bench__summary s = {0};
@@ -606,6 +792,15 @@ static int bench__write_doc(FILE *f, const void *ctx)
             fprintf(f, "![%s against fat](img/bench_heat_%s.png)\n", bench_config_name(d->heat[i]),
                     bench_config_slug(d->heat[i]));
     }
+    if (d->heat1_count) {
+        fputs("\nThe light-scale variants against thin-lpp at light scale 1 (same scale and legend):\n\n", f);
+        for (size_t i = 0; i < d->heat1_count; i++)
+            fprintf(f, "![%s against thin-lpp at scale 1](img/bench_heat_%s_vs_scale1.png)\n",
+                    bench_config_name(d->heat1[i]), bench_config_slug(d->heat1[i]));
+    }
+    if (d->edges)
+        fputs("\nThe edge pixels of the light-scale tables (white; fat's image darkened beneath):\n\n"
+              "![edge pixels](img/bench_edges.png)\n", f);
     if (run->plots_made) {
         fputs("\n", f);
         for (int i = 0; i < BENCH_PLOT_COUNT; i++) fprintf(f, "![%s](img/%s.png)\n", bench_plot_names[i], bench_plot_names[i]);
@@ -622,8 +817,9 @@ static int bench__doc_heat_maps(const bench_run *run, const char *dir, bench__do
 {
     for (size_t i = 0; i < run->image_count; i++) {
         const bench_image_file *im = &run->images[i];
-        if (im->kind != BENCH_IMAGE_HEAT_DOC || im->width != run->opt.sizes[0].width ||
-            im->height != run->opt.sizes[0].height || d->heat_count == BENCH_CONFIGS)
+        int scale1 = im->kind == BENCH_IMAGE_HEAT_SCALE1_DOC, edges = im->kind == BENCH_IMAGE_EDGES;
+        if ((im->kind != BENCH_IMAGE_HEAT_DOC && !scale1 && !edges) || im->width != run->opt.sizes[0].width ||
+            im->height != run->opt.sizes[0].height || d->heat_count == BENCH_CONFIGS || d->heat1_count == BENCH_CONFIGS)
             continue;
         size_t size = 0;
         char *data = tl_tool_read_file(im->path, &size);
@@ -633,11 +829,15 @@ static int bench__doc_heat_maps(const bench_run *run, const char *dir, bench__do
                     size / 1024, BENCH_PNG_MAX_BYTES / 1024);
             continue;
         }
-        char *dst = tl_tool_strf("%s/img/bench_heat_%s.png", dir, bench_config_slug(im->config));
+        char *dst = edges ? tl_tool_strf("%s/img/bench_edges.png", dir)
+                          : tl_tool_strf("%s/img/bench_heat_%s%s.png", dir, bench_config_slug(im->config),
+                                         scale1 ? "_vs_scale1" : "");
         int err = !dst || tl_tool_copy_file(BENCH_TOOL, im->path, dst);
         free(dst);
         if (err) return 1;
-        d->heat[d->heat_count++] = im->config;
+        if (edges) d->edges = 1;
+        else if (scale1) d->heat1[d->heat1_count++] = im->config;
+        else d->heat[d->heat_count++] = im->config;
     }
     return 0;
 }
@@ -645,7 +845,7 @@ static int bench__doc_heat_maps(const bench_run *run, const char *dir, bench__do
 int bench_update_doc(const bench_run *run, const char *doc_text)
 {
     const char *path = run->opt.doc;
-    bench__doc d = {run, doc_text, 0, NULL, {0}, 0};
+    bench__doc d = {run, doc_text, 0, NULL, {0}, 0, {0}, 0, 0};
     if (tl_tool_doc_split(BENCH_TOOL, path, doc_text, BENCH_DOC_BEGIN, BENCH_DOC_END, &d.head, &d.tail)) return 1;
     char *dir = tl_tool_dir_of(path);
     int err = !dir;

@@ -143,6 +143,10 @@ typedef struct bench__frame_buffers {
     size_t pixels;
     uint8_t *ldr, *ref_ldr;      /* RGB after compaction */
     float *hdr, *ref_hdr;        /* RGB after compaction */
+    uint8_t *scale1_ldr;         /* thin-lpp at light scale 1, the light-scale variants' second reference */
+    uint8_t *edge;               /* the size's edge mask (bench_edges.c), once edge_done */
+    size_t edge_count;
+    int edge_done;
 } bench__frame_buffers;
 
 /* One mode's timed frames: gpu[f], wall[f], pass[p * frames + f], and the last frame's stats. */
@@ -158,10 +162,14 @@ static void bench__rgb_u8(uint8_t *p, size_t n)
         for (int c = 0; c < 3; c++) p[3 * i + c] = p[4 * i + c];
 }
 
-static uint64_t bench__rgb_f32(float *p, size_t n)
+/* RGBA to RGB in place; the pixels with a non-finite channel, and in *marked those whose alpha is
+ * the material pass's mark of a pixel the edge fix-up re-lit (0.5; 1 elsewhere). */
+static uint64_t bench__rgb_f32(float *p, size_t n, uint64_t *marked)
 {
     uint64_t bad = 0;
+    *marked = 0;
     for (size_t i = 0; i < n; i++) {
+        *marked += p[4 * i + 3] > 0.25f && p[4 * i + 3] < 0.75f;
         bad += !(isfinite(p[4 * i]) && isfinite(p[4 * i + 1]) && isfinite(p[4 * i + 2]) && isfinite(p[4 * i + 3]));
         for (int c = 0; c < 3; c++) p[3 * i + c] = p[4 * i + c];
     }
@@ -258,6 +266,8 @@ static void bench__summarise_frames(bench_run *run, tl_renderer *r, bench__sampl
     rec->light_pairs = st->light_pairs;
     rec->draw_calls = st->draw_calls;
     rec->objects_drawn = st->objects_drawn;
+    rec->relit_pixels = st->relit_pixels;
+    rec->relit_fraction = st->relit_fraction;
     bench__plan_figures(&run->log, r, st, pixels, rec);
     rec->lighting_ms = rec->pass_ms[TL_PASS_LIGHT_CULL] +
                        (rec->mode == TL_MODE_FORWARD ? rec->pass_ms[TL_PASS_FORWARD]
@@ -278,10 +288,23 @@ static int bench__images(tl_renderer *r, bench_record *rec, bench__frame_buffers
         return 1;
     }
     bench__rgb_u8(ldr, n);
-    rec->nan_pixels = bench__rgb_f32(hdr, n);
+    uint64_t marked;
+    rec->nan_pixels = bench__rgb_f32(hdr, n, &marked);
+    rec->relit_fraction_marked = bench_config_scaled(rec->config) ? (double)marked / (double)n : 0.0;
     rec->hdr_peak = bench__peak(fb->ref_hdr, n * 3);
     tl_image_compare_u8(ldr, fb->ref_ldr, n * 3, &rec->ldr);
     tl_image_compare(hdr, fb->ref_hdr, n * 3, rec->hdr_peak, &rec->hdr);
+    if (fb->edge_done) {
+        rec->edge_pixels = fb->edge_count;
+        bench_edges_compare(ldr, fb->ref_ldr, fb->edge, n, &rec->edge_ldr);
+    }
+    if (bench_config_scaled(rec->config)) { /* thin-lpp at scale 1 of the strategy came before it */
+        rec->has_scale1 = 1;
+        tl_image_compare_u8(ldr, fb->scale1_ldr, n * 3, &rec->scale1_ldr);
+        if (fb->edge_done) bench_edges_compare(ldr, fb->scale1_ldr, fb->edge, n, &rec->edge_scale1_ldr);
+    } else if (rec->mode == TL_MODE_THIN_LPP && !bench_config_variant_of(rec->config)) {
+        memcpy(fb->scale1_ldr, ldr, n * 3);
+    }
     return 0;
 }
 
@@ -347,6 +370,36 @@ static tl_renderer_desc bench__config_desc(const bench_run *run, bench_config c,
     return d;
 }
 
+/* The edge mask of a size (bench_edges.c) from the first fat configuration's renderer: one more
+ * frame with its DEPTH and FAT_NORMAL targets kept, read back, then the renderer's own options
+ * again, so the timed frames and the bytes it allocates are those of the plain configuration. */
+static int bench__edge_probe(bench_run *run, tl_renderer *r, bench_config c, bench_size size,
+                             bench__frame_buffers *fb)
+{
+    tl_renderer_desc d = bench__config_desc(run, c, size);
+    tl_renderer_options o = d.options;
+    o.keep_targets |= TL_TARGET_BIT(TL_TARGET_DEPTH) | TL_TARGET_BIT(TL_TARGET_FAT_NORMAL);
+    size_t bytes = fb->pixels * 4 * sizeof(float);
+    float *depth = malloc(bytes), *normal = malloc(bytes);
+    int err = !depth || !normal;
+    if (err) tl_tool_fail(BENCH_TOOL, "out of memory for the edge mask at %ux%u", size.width, size.height);
+    else if (tl_renderer_set_options(r, &o) != TL_OK || tl_renderer_render(r, NULL, NULL) != TL_OK ||
+             tl_renderer_read_target(r, TL_TARGET_DEPTH, depth, &(size_t){bytes}) != TL_OK ||
+             tl_renderer_read_target(r, TL_TARGET_FAT_NORMAL, normal, &(size_t){bytes}) != TL_OK ||
+             tl_renderer_set_options(r, &d.options) != TL_OK) {
+        tl_tool_fail(BENCH_TOOL, "%s: the edge mask's depth and normals: %s", bench_config_name(c),
+                     tl_renderer_last_error(r));
+        err = 1;
+    }
+    if (!err) {
+        fb->edge_count = bench_edges_mask(depth, normal, size.width, size.height, fb->edge);
+        fb->edge_done = 1;
+    }
+    free(depth);
+    free(normal);
+    return err;
+}
+
 /* A size's renderers (those of the configurations held at once: a batch), its images and samples.
  * The fat images of a strategy are the references of the configurations after it: with every
  * configuration in one batch one slot serves each light count in turn; with several batches each
@@ -372,6 +425,8 @@ static void bench__size_release(bench__size_state *s, size_t modes)
     free(s->fb.ref_ldr);
     free(s->fb.hdr);
     free(s->fb.ref_hdr);
+    free(s->fb.scale1_ldr);
+    free(s->fb.edge);
     free(s->sample_memory);
     memset(s, 0, sizeof *s);
 }
@@ -386,6 +441,8 @@ static int bench__size_setup(bench_run *run, bench_size size, size_t mode_count,
     s->fb.ref_ldr = malloc(slots * n * 4);
     s->fb.hdr = malloc(n * 4 * sizeof(float));
     s->fb.ref_hdr = malloc(slots * n * 4 * sizeof(float));
+    s->fb.scale1_ldr = malloc(slots * n * 4);
+    s->fb.edge = malloc(n);
     size_t per_mode = (3 + TL_PASS_COUNT) * (size_t)run->opt.frames;
     s->sample_memory = malloc(mode_count * per_mode * sizeof(double));
     for (size_t m = 0; s->sample_memory && m < mode_count; m++) {
@@ -395,7 +452,8 @@ static int bench__size_setup(bench_run *run, bench_size size, size_t mode_count,
         smp->cpu = smp->wall + run->opt.frames;
         smp->pass = smp->cpu + run->opt.frames;
     }
-    if (!s->fb.ldr || !s->fb.ref_ldr || !s->fb.hdr || !s->fb.ref_hdr || !s->sample_memory) {
+    if (!s->fb.ldr || !s->fb.ref_ldr || !s->fb.hdr || !s->fb.ref_hdr || !s->fb.scale1_ldr || !s->fb.edge ||
+        !s->sample_memory) {
         tl_tool_fail(BENCH_TOOL, "out of memory for %ux%u images", size.width, size.height);
         return 1;
     }
@@ -471,13 +529,22 @@ static int bench__sweep_lights(bench_run *run, bench__size_state *s, const bench
     bench__frame_buffers fb = s->fb; /* the reference images of this light count */
     fb.ref_ldr += job->slot * fb.pixels * 4;
     fb.ref_hdr += job->slot * fb.pixels * 4;
+    fb.scale1_ldr += job->slot * fb.pixels * 4;
     for (size_t m = first; m < first + count; m++) {
         bench_record *rec = &job->recs[m];
         bench__summarise_frames(run, s->renderers[m], &s->samples[m], fb.pixels, rec);
         if (bench__images(s->renderers[m], rec, &fb)) return 1;
+        if (m == 0 && !s->fb.edge_done) { /* the first fat: the size's edge mask, then its own edge error */
+            if (bench__edge_probe(run, s->renderers[m], modes[m], job->size, &s->fb)) return 1;
+            fb.edge_done = 1;
+            fb.edge_count = s->fb.edge_count;
+            rec->edge_pixels = fb.edge_count;
+            bench_edges_compare(fb.ref_ldr, fb.ref_ldr, fb.edge, fb.pixels, &rec->edge_ldr);
+            if (opt->out && bench_images_write_edges(run, rec, fb.ref_ldr, fb.edge)) return 1;
+        }
         if (opt->out && job->lights == opt->lights[opt->light_count - 1] &&
-            bench_images_write(run, rec, rec->mode == BENCH_REFERENCE ? fb.ref_ldr : fb.ldr, fb.ref_ldr, 1,
-                               rec->mode != BENCH_REFERENCE))
+            bench_images_write(run, rec, rec->mode == BENCH_REFERENCE ? fb.ref_ldr : fb.ldr, fb.ref_ldr,
+                               rec->has_scale1 ? fb.scale1_ldr : NULL, 1, rec->mode != BENCH_REFERENCE))
             return 1;
     }
     return 0;
@@ -523,7 +590,8 @@ static int bench__sweep_size(bench_run *run, tl_context *ctx, bench_scene *scene
 /* Refuses, before any GL work, a size whose targets are over the target-memory budget in some
  * configuration (one line naming both), and one whose renderers held at once and images would not
  * fit in this machine's memory (rather than being killed halfway): the plans of the largest batch,
- * the bench's own images (20 B/px) and the references it keeps (20 B/px each). */
+ * the bench's own images (20 B/px, and 33 for the edge mask), and the references it keeps (24 B/px
+ * each). */
 static int bench__check_memory(const bench_run *run, const bench_scene *bs)
 {
     const bench_options *opt = &run->opt;
@@ -549,7 +617,9 @@ static int bench__check_memory(const bench_run *run, const bench_scene *bs)
             if (tl_frame_plan_build(&desc, &features, &plan) == TL_OK) batch += plan.allocated_bytes_per_pixel;
             if (batch > largest) largest = batch;
         }
-        double need = (largest + 20.0 + 20.0 * (double)slots) * size.width * size.height;
+        /* the images 20 B/px, the edge mask 1 and, while it is made, fat's depth and normals 32; per
+           reference slot fat's images 20 and thin-lpp's at scale 1 4 */
+        double need = (largest + 20.0 + 1.0 + 32.0 + 24.0 * (double)slots) * size.width * size.height;
         if (need > available) {
             tl_tool_fail(BENCH_TOOL, "%ux%u needs about %.1f GiB for %zu renderers and the images, more than 3/4 of "
                                      "this machine's %.1f GiB",

@@ -28,6 +28,13 @@ static const char vw_usage[] =
     "                        after N\n"
     "  --resize WxH          resize the window after the first frames (tests)\n"
     "  --print-targets       print the targets' size and bytes whenever they are (re)allocated\n"
+    "  --dynamic-light-scale thin-lpp: lower the light scale while the camera moves (to 1/2, or 1/4 when\n"
+    "                        the last frame took longer than --light-budget-ms), back to --light-scale\n"
+    "                        after 0.25 s (and 3 frames) without motion\n"
+    "  --light-budget-ms MS  the dynamic light scale's frame-time budget (default 33.3; 0.001..1e6)\n"
+    "  --move-camera F,N     orbit the camera a step a frame for N frames from frame F (scripted motion,\n"
+    "                        for tests; with --frames)\n"
+    "  --print-frames        print one line per frame: its light scale, camera motion and GPU time\n"
     "  --list-options        list every option and the values it takes, then exit\n"
     "  --help                this text\n"
     "The renderer's settings:\n";
@@ -58,6 +65,8 @@ static const char vw_keys[] =
     "  + / -                 light count x2 / /2\n"
     "  L                     animate the lights on / off\n"
     "  [ / ]                 exposure /1.25 / x1.25\n"
+    "  R                     light scale (thin-lpp): 1, 1/2, 1/4\n"
+    "  Shift+R               dynamic light scale on / off (lower while the camera moves)\n"
     "  H or F1               hide / show the panel\n"
     "  P or F12              screenshot (viewer-N.png in the current directory)\n"
     "  Escape                quit\n";
@@ -75,7 +84,7 @@ void vw_print_usage(FILE *f)
 }
 
 enum { V_HELP, V_LIST, V_SIZE, V_RESIZE, V_LIGHTS, V_FRAMES, V_VIEW, V_SPLIT, V_SCREENSHOT, V_SCREENSHOT_WINDOW,
-       V_GRID, V_ANIMATE, V_NO_PANEL, V_PRINT_TARGETS };
+       V_GRID, V_ANIMATE, V_NO_PANEL, V_PRINT_TARGETS, V_DYNAMIC, V_BUDGET, V_MOVE, V_PRINT_FRAMES };
 
 static const tl_opt vw_opts[] = {
     {"--help", TL_OPT_FLAG, .id = V_HELP},
@@ -93,6 +102,10 @@ static const tl_opt vw_opts[] = {
     {"--animate", TL_OPT_FLAG, .id = V_ANIMATE},
     {"--no-panel", TL_OPT_FLAG, .id = V_NO_PANEL},
     {"--print-targets", TL_OPT_FLAG, .id = V_PRINT_TARGETS},
+    {"--dynamic-light-scale", TL_OPT_FLAG, .id = V_DYNAMIC},
+    {"--light-budget-ms", TL_OPT_REAL, .id = V_BUDGET, .min = 0.001, .max = 1e6},
+    {"--move-camera", TL_OPT_UINT_LIST, .id = V_MOVE, .lo = 0, .hi = 100000, .items = 2},
+    {"--print-frames", TL_OPT_FLAG, .id = V_PRINT_FRAMES},
 };
 
 /* One option of vw_opts; -1 to go on, else the exit status (0 after --help or --list-options). */
@@ -119,6 +132,13 @@ static int vw_option(vw_args *a, const tl_opt_table *tables, size_t ntables, con
     case V_ANIMATE: a->animate = 1; break;
     case V_NO_PANEL: a->no_panel = 1; break;
     case V_PRINT_TARGETS: a->print_targets = 1; break;
+    case V_DYNAMIC: a->dynamic_light_scale = 1; break;
+    case V_BUDGET: a->light_budget_ms = v->f[0]; break;
+    case V_MOVE:
+        if (v->count != 2) return tl_opt_usage(VW_TOOL, "--move-camera wants FIRST,COUNT (two frame numbers)");
+        a->move_first = (uint32_t)v->u[0], a->move_count = (uint32_t)v->u[1];
+        break;
+    case V_PRINT_FRAMES: a->print_frames = 1; break;
     default: break;
     }
     return -1;
@@ -157,5 +177,6 @@ int vw_parse_args(int argc, char **argv, vw_args *a)
     if (rc) return rc;
     if (a->scene && !strcmp(a->scene, "crypt")) a->scene = NULL;
     if (a->screenshot && !a->frames) a->frames = 3;
+    if (!(a->light_budget_ms > 0.0)) a->light_budget_ms = 1000.0 / 30.0;
     return -1;
 }

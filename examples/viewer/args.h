@@ -20,6 +20,10 @@ typedef struct vw_args {
     const char *screenshot;
     uint32_t frames;             /* 0: run until closed */
     uint32_t resize_w, resize_h; /* 0: no resize */
+    int dynamic_light_scale;     /* --dynamic-light-scale */
+    double light_budget_ms;      /* --light-budget-ms (default 33.3) */
+    uint32_t move_first, move_count; /* --move-camera FIRST,COUNT: scripted orbit (tests); count 0: none */
+    int print_frames;            /* --print-frames: one line per frame on stdout */
 } vw_args;
 
 void vw_print_usage(FILE *f);

@@ -40,7 +40,7 @@ static void vw_key_view(vw_app *app, int key, int mods)
     }
 }
 
-static void vw_key_settings(vw_app *app, int key)
+static void vw_key_settings(vw_app *app, int key, int mods)
 {
     if (key >= GLFW_KEY_1 && key <= GLFW_KEY_4) {
         app->desc.options.mode = (tl_render_mode)(TL_MODE_THIN_LPP + (key - GLFW_KEY_1));
@@ -51,6 +51,9 @@ static void vw_key_settings(vw_app *app, int key)
         vw_scale_lights(app, 1);
     } else if (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT) {
         vw_scale_lights(app, 0);
+    } else if (key == GLFW_KEY_R) {
+        if (mods & GLFW_MOD_SHIFT) vw_light_scale_toggle_dynamic(app);
+        else vw_light_scale_cycle(app);
     } else if (key == GLFW_KEY_L) {
         app->animate = !app->animate;
     } else if (key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_RIGHT_BRACKET) {
@@ -73,7 +76,7 @@ static void vw_on_key(GLFWwindow *w, int key, int scancode, int action, int mods
     else if (key == GLFW_KEY_P || key == GLFW_KEY_F12) app->screenshot_request = 1;
     else {
         vw_key_view(app, key, mods);
-        vw_key_settings(app, key);
+        vw_key_settings(app, key, mods);
     }
 }
 

@@ -23,6 +23,7 @@ typedef struct vw_run {
     uint32_t tex_w, tex_h;
     int print_pending;   /* --print-targets: after the next frame */
     unsigned screenshots; /* P key: viewer-N.png */
+    char title[160];      /* the window's title as last set */
 } vw_run;
 
 static tl_gl_function vw_proc(void *user, const char *name)
@@ -32,6 +33,21 @@ static tl_gl_function vw_proc(void *user, const char *name)
 }
 
 static void *vw_proc_ptr(const char *name) { return (void *)(uintptr_t)glfwGetProcAddress(name); }
+
+/* The last measured frame of r (stats lag a frame or two behind): its GPU time and light scale,
+ * which the dynamic light scale compares with its budget. */
+static void vw_measured(vw_app *app, const tl_frame_stats *st)
+{
+    if (app->counted_r != app->r) { /* a new renderer numbers its frames from 1 again */
+        app->counted_r = app->r;
+        app->r_frames = 0;
+        app->last_gpu_ms = 0.0;
+    }
+    app->frame_scale[++app->r_frames % 16] = app->applied_scale;
+    if (!st->gpu_valid || !st->frame || st->frame > app->r_frames || app->r_frames - st->frame >= 16) return;
+    app->last_gpu_ms = st->gpu_ms;
+    app->last_gpu_scale = app->frame_scale[st->frame % 16];
+}
 
 static void vw_smooth(vw_timings *t, const tl_frame_stats *st)
 {
@@ -82,6 +98,7 @@ static int vw_render(vw_run *run, const tl_camera *cam, int need_image)
     if (res == TL_OK && app->fat) res = tl_renderer_render(app->fat, cam, NULL);
     if (res == TL_OK && app->split) res = tl_renderer_render(app->split, cam, NULL);
     if (res != TL_OK) return -1;
+    vw_measured(app, &st);
     vw_smooth(&app->timings, &st);
     if (direct) return 1;
     if (vw_views_build(app, cam)) return -1;
@@ -145,6 +162,48 @@ static void vw_apply_changes(vw_run *run)
     }
 }
 
+/* The window's title: the mode and the light scale (thin-lpp), so they show without the panel. */
+static void vw_title(vw_run *run)
+{
+    vw_app *app = &run->app;
+    char title[160];
+    if (app->desc.options.mode == TL_MODE_THIN_LPP)
+        snprintf(title, sizeof title, "thinlight-viewer: thin-lpp, light scale %s%s%s",
+                 vw_light_scale_name(app->applied_scale), app->dyn.on ? " (dynamic" : "",
+                 app->dyn.on ? (app->dyn.divisor ? ", camera moving)" : ")") : "");
+    else
+        snprintf(title, sizeof title, "thinlight-viewer: %s", tl_render_mode_name(app->desc.options.mode));
+    if (strcmp(title, run->title)) {
+        snprintf(run->title, sizeof run->title, "%s", title);
+        glfwSetWindowTitle(run->window, title);
+    }
+}
+
+/* The camera's motion this frame: scripted (--move-camera), then the dynamic light scale's rule,
+ * which may give the renderers a new scale (tl_renderer_set_options; none is made again). */
+static int vw_motion(vw_run *run, uint32_t frame, float dt, tl_camera *cam)
+{
+    vw_app *app = &run->app;
+    const vw_args *a = &run->args;
+    if (a->move_count && frame >= a->move_first && frame - a->move_first < a->move_count)
+        vw_camera_orbit(&app->cam, 4.0f, 0.0f); /* as a 4-pixel drag to the right */
+    vw_camera_get(&app->cam, cam);
+    if (vw_light_scale_step(app, cam, dt) && vw_apply_settings(app)) {
+        fprintf(stderr, "thinlight-viewer: light scale %s failed\n", vw_light_scale_name(vw_light_scale_used(app)));
+        return 1;
+    }
+    vw_title(run);
+    return 0;
+}
+
+static void vw_print_frame(vw_run *run, uint32_t frame)
+{
+    vw_app *app = &run->app;
+    printf("frame %u: light-scale %g plan-scale %g moving %d dynamic %d gpu-ms %.3f\n", frame, app->applied_scale,
+           app->plan.light_scale > 0.0f ? app->plan.light_scale : 1.0f, app->dyn.moving, app->dyn.on, app->last_gpu_ms);
+    fflush(stdout);
+}
+
 /* One frame: input, lights, render, panel, screenshot, swap. 0, or the exit status. */
 static int vw_frame(vw_run *run, uint32_t frame, float dt)
 {
@@ -158,13 +217,14 @@ static int vw_frame(vw_run *run, uint32_t frame, float dt)
         if (vw_animate_lights(app)) return 1;
     }
     tl_camera cam;
-    vw_camera_get(&app->cam, &cam);
+    if (vw_motion(run, frame, dt, &cam)) return 1;
     const char *shot = vw_screenshot_path(run, frame, name, sizeof name);
     int window_shot = shot && run->args.screenshot_window && shot == run->args.screenshot;
     int direct = vw_render(run, &cam, shot && !window_shot);
     if (direct < 0) return 1;
     if (run->print_pending) vw_print_targets(run);
     run->print_pending = 0;
+    if (run->args.print_frames) vw_print_frame(run, frame);
     glViewport(0, 0, (GLsizei)app->width, (GLsizei)app->height);
     if (!direct) { /* the image covers the window, but nothing of the last frame may show through */
         glClearColor(0, 0, 0, 1);
@@ -215,6 +275,9 @@ static void vw_settings(vw_run *run)
     if (!app->desc.options.light_buffer) app->desc.options.light_buffer = TL_LIGHT_BUFFER_EXACT;
     if (!app->desc.options.fxaa) app->desc.options.fxaa = TL_FXAA_29;
     if (!(app->desc.options.exposure > 0)) app->desc.options.exposure = 1.0f;
+    if (!(app->desc.options.light_scale > 0)) app->desc.options.light_scale = 1.0f;
+    app->dyn.on = a->dynamic_light_scale;
+    app->dyn.budget_ms = a->light_budget_ms;
     if (a->scene) app->gltf_extra_lights = a->lights;
     else if (a->lights_set) app->crypt.point_lights = a->lights ? a->lights : 1;
     app->view = a->view;

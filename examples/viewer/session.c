@@ -76,6 +76,7 @@ static tl_renderer_options vw_options(const vw_app *app, tl_render_mode mode, ui
     tl_renderer_options o = app->desc.options;
     o.mode = mode;
     o.keep_targets = keep;
+    o.light_scale = vw_light_scale_used(app); /* the chosen one, or lower while the camera moves */
     return o;
 }
 
@@ -129,6 +130,7 @@ int vw_apply_settings(vw_app *app)
 {
     app->kept = vw_needs_kept(app);
     int fat_needed = !app->split_on && (app->grid || app->view == VW_VIEW_DIFF_FAT);
+    app->applied_scale = vw_light_scale_used(app);
     int err = vw_role(app, &app->r, 1, app->desc.options.mode, app->kept ? TL_TARGETS_ALL : 0);
     if (!err) err = vw_role(app, &app->split, app->split_on, app->split_mode, 0);
     if (!err) err = vw_role(app, &app->fat, fat_needed, TL_MODE_FAT, 0);

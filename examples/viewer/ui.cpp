@@ -60,6 +60,33 @@ template <typename E> static bool vw_combo(const char *label, E *value, const ch
     return changed;
 }
 
+// The light scale (thin-lpp): the one chosen, the dynamic switch and the scale in use now.
+static bool vw_ui_light_scale(vw_app *app)
+{
+    static const char *scales[] = {"1", "1/2", "1/4"};
+    static const float values[] = {1.0f, 0.5f, 0.25f};
+    float *s = &app->desc.options.light_scale;
+    int k = *s <= 0.25f ? 2 : *s <= 0.5f ? 1 : 0;
+    bool c = false;
+    if (ImGui::BeginCombo("light scale", scales[k])) {
+        for (int i = 0; i < 3; i++)
+            if (ImGui::Selectable(scales[i], i == k) && i != k) {
+                *s = values[i];
+                c = true;
+            }
+        ImGui::EndCombo();
+    }
+    bool dyn = app->dyn.on != 0;
+    if (ImGui::Checkbox("dynamic: lower while the camera moves", &dyn)) {
+        vw_light_scale_toggle_dynamic(app);
+        c = true;
+    }
+    ImGui::TextDisabled("  light scale now: %s%s%s", vw_light_scale_name(app->applied_scale),
+                        app->dyn.divisor ? " (camera moving)" : "",
+                        app->desc.options.mode == TL_MODE_THIN_LPP ? "" : " (thin-lpp only)");
+    return c;
+}
+
 static void vw_ui_settings(vw_app *app)
 {
     static const char *modes[] = {"thin-lpp", "thin-deferred", "fat", "forward"};
@@ -72,6 +99,7 @@ static void vw_ui_settings(vw_app *app)
     bool c = vw_combo("mode", &d->options.mode, modes, TL_MODE_THIN_LPP, 4);
     c |= vw_combo("light strategy", &d->options.light_strategy, strategies, TL_LIGHT_STRATEGY_DEFAULT, 3);
     ImGui::TextDisabled("  planned: %s (%s)", tl_light_strategy_name(app->plan.light_strategy), app->plan.strategy_reason);
+    c |= vw_ui_light_scale(app);
     c |= vw_combo("depth", &d->options.depth_format, depths, TL_DEPTH_FORMAT_D24, 3);
     c |= vw_combo("RT0 packing", &d->options.rt0, rt0s, TL_RT0_RGBA8, 2);
     c |= vw_combo("light buffer", &d->options.light_buffer, buffers, TL_LIGHT_BUFFER_EXACT, 2);
@@ -257,7 +285,8 @@ static void vw_ui_views(vw_app *app)
 static void vw_ui_timings(const vw_app *app)
 {
     const vw_timings *t = &app->timings;
-    ImGui::Text("GPU %.2f ms, CPU %.2f ms (smoothed)", t->gpu_ms, t->cpu_ms);
+    ImGui::Text("GPU %.2f ms, CPU %.2f ms (smoothed), light scale %s", t->gpu_ms, t->cpu_ms,
+                vw_light_scale_name(app->applied_scale));
     double most = 0.001;
     for (int p = 0; p < TL_PASS_COUNT; p++) most = t->pass_ms[p] > most ? t->pass_ms[p] : most;
     for (size_t i = 0; i < app->plan.pass_count; i++) {

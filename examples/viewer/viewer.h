@@ -55,6 +55,18 @@ typedef struct vw_camera {
     int moved;
 } vw_camera;
 
+/** The dynamic light scale (light_scale.c has the rule). */
+typedef struct vw_dynamic {
+    int on;              /* --dynamic-light-scale, Shift+R, the panel */
+    double budget_ms;    /* frame-time budget (--light-budget-ms): over it while moving, 1/4 */
+    uint32_t divisor;    /* 0: the chosen scale; 2 or 4: lowered to 1/2 or 1/4 while the camera moves */
+    int moving;          /* the camera moved this frame */
+    double still_s;      /* seconds of frames without motion since it last moved */
+    uint32_t still_frames;
+    tl_camera last_cam;  /* the last frame's camera */
+    int have_last;
+} vw_dynamic;
+
 /** Per-pass GPU times, smoothed (exponential moving average). */
 typedef struct vw_timings {
     uint64_t last_frame;
@@ -113,6 +125,14 @@ typedef struct vw_app {
     size_t tile_capacity;
     void *gl;                        /* GL functions beyond 1.1 (views.c) */
     int screenshot_request;          /* a key asked for one */
+    /* light scale (thin-lpp): desc.options.light_scale is the one chosen */
+    vw_dynamic dyn;
+    float applied_scale;             /* the scale the renderers were last given (vw_apply_settings) */
+    double last_gpu_ms;              /* GPU time of the last measured frame of r (0: none yet) */
+    float last_gpu_scale;            /* the light scale that frame was rendered with */
+    uint64_t r_frames;               /* frames r rendered (its tl_frame_stats.frame numbering) */
+    const tl_renderer *counted_r;    /* the renderer r_frames counts */
+    float frame_scale[16];           /* the scale of r's frame n at [n % 16] */
 } vw_app;
 
 /* views.c */
@@ -140,6 +160,19 @@ void vw_camera_look(vw_camera *c, float dx, float dy);
 void vw_camera_zoom(vw_camera *c, float steps);
 void vw_camera_fly(vw_camera *c, const float move[3], float dt);
 void vw_camera_set_mode(vw_camera *c, vw_camera_mode mode);
+
+/* light_scale.c */
+/** The light scale the renderers get now: the chosen one, or lower while the camera moves. */
+float vw_light_scale_used(const vw_app *app);
+/** Once a frame, with the frame's camera and time step: updates the dynamic rule; 1 when the scale
+ *  to use differs from the one the renderers have (then call vw_apply_settings). */
+int vw_light_scale_step(vw_app *app, const tl_camera *cam, float dt);
+/** "1", "1/2" or "1/4". */
+const char *vw_light_scale_name(float scale);
+/** The R key: the chosen scale 1 -> 1/2 -> 1/4 -> 1. */
+void vw_light_scale_cycle(vw_app *app);
+/** Shift+R: the dynamic light scale on or off. */
+void vw_light_scale_toggle_dynamic(vw_app *app);
 
 /* ui.cpp */
 int vw_ui_init(void *glfw_window);

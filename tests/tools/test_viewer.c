@@ -226,3 +226,68 @@ TL_TEST(viewer_help_lists_keys_bad_usage_fails)
     snprintf(cmd, sizeof cmd, VW_ENV "'%s' '%s/no-such-file.gltf' --frames 1 2>/dev/null", TL_VIEWER, TL_WORK);
     TL_CHECK(run(cmd) == 1);
 }
+
+/* The dynamic light scale (examples/viewer/light_scale.c) under scripted motion: --move-camera
+ * orbits the camera on frames MOVE_FIRST .. MOVE_FIRST + MOVE_COUNT - 1, --frames runs fixed 1/30 s
+ * steps, --print-frames prints each frame's scale (the one given to the renderer and the one its
+ * plan reports). Expected, from the rule: the chosen scale before the motion; `lowered` (never
+ * above the chosen one) on every moving frame and on the still frames after it until 0.25 s (8
+ * steps of 1/30 s, at least 3 frames) have passed; the chosen scale again from then on. */
+enum { MOVE_FIRST = 4, MOVE_COUNT = 8, MOVE_FRAMES = 26 };
+
+static int still_frames_to_restore(void)
+{
+    int n = 0;
+    double t = 0.0;
+    while (t < 0.25 - 1e-6 || n < 3) t += (double)(1.0f / 30.0f), n++;
+    return n;
+}
+
+static void check_dynamic(const char *more, float chosen, float lowered)
+{
+    char cmd[2048], line[256];
+    snprintf(cmd, sizeof cmd, "%s'%s' --no-panel --size 192x108 --frames %d --move-camera %d,%d --print-frames %s",
+             xvfb(), TL_VIEWER, MOVE_FRAMES, MOVE_FIRST, MOVE_COUNT, more);
+    FILE *f = popen(cmd, "r");
+    TL_CHECK(f != NULL);
+    int seen = 0, wrong = 0, restore = MOVE_FIRST + MOVE_COUNT - 1 + still_frames_to_restore();
+    while (f && fgets(line, sizeof line, f)) {
+        unsigned frame;
+        float scale, plan;
+        int moving, dynamic;
+        double ms;
+        if (sscanf(line, "frame %u: light-scale %g plan-scale %g moving %d dynamic %d gpu-ms %lf", &frame, &scale, &plan,
+                   &moving, &dynamic, &ms) != 6)
+            continue;
+        int moves = (int)frame >= MOVE_FIRST && (int)frame < MOVE_FIRST + MOVE_COUNT;
+        float want = (int)frame < MOVE_FIRST || (int)frame >= restore ? chosen : lowered;
+        int bad = scale != want || plan != want || moving != moves;
+        printf("%s%s", bad ? "WRONG (want " : "", line);
+        if (bad) printf("  ... want light-scale %g moving %d)\n", want, moves);
+        wrong += bad;
+        seen++;
+    }
+    TL_CHECK(f && pclose(f) == 0);
+    TL_CHECK(seen == MOVE_FRAMES);
+    TL_CHECK(wrong == 0);
+}
+
+/* No frame reaches a 1e6 ms budget: 1/2 while moving. */
+TL_TEST(viewer_dynamic_light_scale_half_while_moving)
+{
+    check_dynamic("--dynamic-light-scale --light-budget-ms 1e6", 1.0f, 0.5f);
+}
+
+/* Every frame is over a 1 microsecond budget: straight to 1/4 (the frames before the motion were
+ * measured over it). */
+TL_TEST(viewer_dynamic_light_scale_quarter_over_budget)
+{
+    check_dynamic("--dynamic-light-scale --light-budget-ms 0.001", 1.0f, 0.25f);
+}
+
+/* Without the flag the scale stays; with a chosen 1/4 the dynamic rule never raises it. */
+TL_TEST(viewer_light_scale_fixed_without_dynamic_never_above_chosen)
+{
+    check_dynamic("--light-scale 0.5", 0.5f, 0.5f);
+    check_dynamic("--light-scale 0.25 --dynamic-light-scale --light-budget-ms 1e6", 0.25f, 0.25f);
+}
