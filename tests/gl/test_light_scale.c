@@ -20,10 +20,11 @@ static const float scales[3] = {1.0f, 0.5f, 0.25f};
 
 /* ---- a scene of boxes ----------------------------------------------------------------------------- */
 
+enum { MAX_BOXES = 48 };
 typedef struct boxes {
-    tl_vertex v[24 * 8];
-    uint32_t idx[36 * 8];
-    tl_object obj[8];
+    tl_vertex v[24 * MAX_BOXES];
+    uint32_t idx[36 * MAX_BOXES];
+    tl_object obj[MAX_BOXES];
     tl_material mat[2];
     tl_light light[4];
     tl_scene s;
@@ -91,9 +92,14 @@ static tl_renderer *render_at(const tl_scene *s, float k, uint32_t w, uint32_t h
     return r;
 }
 
+/* The light strategy of the tests below: each runs with volumes and with tiles (the fix-up differs:
+ * the material pass re-lights through the object's list, or lists the pixels for light-fixup). */
+static tl_light_strategy g_strategy = TL_LIGHT_STRATEGY_VOLUMES;
+static const char *strategy_name(void) { return g_strategy == TL_LIGHT_STRATEGY_TILED ? "tiled" : "volumes"; }
+
 static float *hdr_at(const tl_scene *s, float k, tl_depth_format depth)
 {
-    tl_renderer *r = render_at(s, k, W, H, TL_LIGHT_STRATEGY_DEFAULT, depth);
+    tl_renderer *r = render_at(s, k, W, H, g_strategy, depth);
     float *p = r ? tl_test_read_target(r, TL_TARGET_HDR, (size_t)W * H) : NULL;
     tl_renderer_destroy(r);
     TL_CHECK(p != NULL);
@@ -239,6 +245,8 @@ TL_TEST(light_scale_flat_plane_matches_scale_one)
     add_box(b, (const float[3]){0.0f, -0.5f, 0.0f}, (const float[3]){40.0f, 0.5f, 40.0f}, 0);
     b->light[0] = (tl_light){.type = TL_LIGHT_DIRECTIONAL, .direction = {0.3f, -1.0f, -0.2f}, .color = {2.0f, 1.8f, 1.5f}};
     b->s.light_count = 1;
+    for (int st = 0; st < 2; st++) {
+    g_strategy = st ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
     float *ref = hdr_at(&b->s, 1.0f, TL_DEPTH_FORMAT_DEFAULT);
     for (int k = 1; ref && k < 3; k++) {
         float *got = hdr_at(&b->s, scales[k], TL_DEPTH_FORMAT_DEFAULT);
@@ -250,13 +258,14 @@ TL_TEST(light_scale_flat_plane_matches_scale_one)
             double e = rel_err(got, ref, i);
             if (e > worst) worst = e;
         }
-        printf("flat plane, scale %g: %zu lit pixels, largest relative difference %.3g (bound 2^-9 = %.3g)\n",
-               (double)scales[k], lit, worst, ldexp(1.0, -9));
+        printf("flat plane, %s, scale %g: %zu lit pixels, largest relative difference %.3g (bound 2^-9 = %.3g)\n",
+               strategy_name(), (double)scales[k], lit, worst, ldexp(1.0, -9));
         TL_CHECK(lit > (size_t)W * H / 2);
         TL_CHECK_LE(worst, ldexp(1.0, -9));
         free(got);
     }
     free(ref);
+    }
     free(b);
 }
 
@@ -294,8 +303,10 @@ TL_TEST(light_scale_box_on_floor_no_bleeding)
     b->s.light_count = 2;
     /* reversed D32F keeps the largest depth of a block: the same nearest surface */
     const tl_depth_format formats[2] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
-    for (int fmt = 0; fmt < 2; fmt++) {
-        tl_renderer *r1 = render_at(&b->s, 1.0f, W, H, TL_LIGHT_STRATEGY_DEFAULT, formats[fmt]);
+    for (int run = 0; run < 4; run++) {
+        int fmt = run & 1;
+        g_strategy = run >> 1 ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
+        tl_renderer *r1 = render_at(&b->s, 1.0f, W, H, g_strategy, formats[fmt]);
         float *ref = r1 ? tl_test_read_target(r1, TL_TARGET_HDR, (size_t)W * H) : NULL;
         float *depth = r1 ? tl_test_read_target(r1, TL_TARGET_DEPTH, (size_t)W * H) : NULL;
         tl_renderer_destroy(r1);
@@ -317,8 +328,8 @@ TL_TEST(light_scale_box_on_floor_no_bleeding)
                         inside = e;
                     }
                 }
-            printf("box on a floor, %s, scale %g: %zu edge pixels, largest relative error %.4f on edges, %.4f inside\n",
-                   fmt ? "D32F reversed" : "D24", (double)scales[k], edges, edge, inside);
+            printf("box on a floor, %s, %s, scale %g: %zu edge pixels, largest relative error %.4f on edges, %.4f inside\n",
+                   fmt ? "D32F reversed" : "D24", strategy_name(), (double)scales[k], edges, edge, inside);
             TL_CHECK(edges > 100);
             TL_CHECK_LE(edge, 2.0 * inside + ldexp(1.0, -9));
             free(got);
@@ -345,7 +356,9 @@ TL_TEST(light_scale_thin_pole_is_lit)
     b->light[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {0.3f, 0.0f, -4.0f}, .color = {4.0f, 4.0f, 4.0f},
                              .radius = 3.0f};
     b->s.light_count = 1;
-    for (int fmt = 0; fmt < 2; fmt++) {
+    for (int run = 0; run < 4; run++) {
+        int fmt = run & 1;
+        g_strategy = run >> 1 ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
         tl_depth_format df = fmt ? TL_DEPTH_FORMAT_D32F_REVERSED : TL_DEPTH_FORMAT_D24;
         float *ref = hdr_at(&b->s, 1.0f, df);
         for (int k = 1; ref && k < 3; k++) {
@@ -357,12 +370,70 @@ TL_TEST(light_scale_thin_pole_is_lit)
                 dark += got[4 * i] < 0.5f * ref[4 * i];
                 relit += got[4 * i + 3] == 0.5f; /* the material pass's mark */
             }
-            printf("one-pixel pole, %s, scale %g: %zu pole pixels, %zu dark, %zu re-lit\n", fmt ? "D32F reversed" : "D24",
-                   (double)scales[k], pole, dark, relit);
+            printf("one-pixel pole, %s, %s, scale %g: %zu pole pixels, %zu dark, %zu re-lit\n",
+                   fmt ? "D32F reversed" : "D24", strategy_name(), (double)scales[k], pole, dark, relit);
             TL_CHECK(pole >= H / 2 && pole < 3 * H);
             TL_CHECK_EQ_U(dark, 0);
             /* the reduction keeps the pole (the nearest sample), so most of it is upsampled, not re-lit */
             TL_CHECK_LE(2 * relit, pole);
+            free(got);
+        }
+        free(ref);
+    }
+    free(b);
+}
+
+/* ---- the re-lit count and a full fix-up list ------------------------------------------------------
+ * A comb: 40 slats two pixels wide, two pixels apart, in front of a wall, both lit by one point
+ * light. At 1/4 every 4x4 block holds slat and wall; the reduction keeps the slats (nearest), so
+ * every wall pixel between them is re-lit: about half the frame, more than the fix-up list holds
+ * (a quarter of the pixels), so with tiles the material pass re-lights the pixels past its end
+ * itself. For both strategies and both scales: tl_frame_stats.relit_pixels equals the pixels the
+ * material pass marked (HDR alpha 0.5), relit_fraction is that over the pixels, and a re-lit pixel
+ * matches scale 1 within 4 FP16 roundings (2^-9 relative: scale 1 rounds the light sum and HDR; the
+ * fix-up rounds albedo, HDR before and after the light is added), whichever path re-lit it. */
+TL_TEST(light_scale_relit_count_and_full_fixup_list)
+{
+    if (!ensure_context()) return;
+    boxes *b = calloc(1, sizeof *b);
+    if (!b) return;
+    boxes_init(b, (const float[3]){0.0f, 0.0f, 0.0f}, (const float[3]){0.0f, 0.0f, -1.0f});
+    /* 0.064 m a pixel at 5 m (the pole's figure): slats 0.128 m wide every 0.256 m */
+    for (int i = 0; i < 40; i++)
+        add_box(b, (const float[3]){-5.12f + 0.256f * (float)i + 0.064f, 0.0f, -5.0f}, (const float[3]){0.064f, 5.0f, 0.05f}, 0);
+    add_box(b, (const float[3]){0.0f, 0.0f, -10.5f}, (const float[3]){30.0f, 30.0f, 0.5f}, 0);
+    b->light[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {0.3f, 0.2f, -3.0f}, .color = {6.0f, 6.0f, 6.0f},
+                             .radius = 12.0f};
+    b->s.light_count = 1;
+    for (int st = 0; st < 2; st++) {
+        g_strategy = st ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
+        float *ref = hdr_at(&b->s, 1.0f, TL_DEPTH_FORMAT_DEFAULT);
+        for (int k = 0; ref && k < 3; k++) {
+            tl_renderer *r = render_at(&b->s, scales[k], W, H, g_strategy, TL_DEPTH_FORMAT_DEFAULT);
+            tl_frame_stats stats;
+            memset(&stats, 0, sizeof stats);
+            int ok = r && tl_renderer_render(r, NULL, &stats) == TL_OK && tl_renderer_wait(r, &stats) == TL_OK;
+            TL_CHECK(ok);
+            float *got = ok ? tl_test_read_target(r, TL_TARGET_HDR, (size_t)W * H) : NULL;
+            tl_renderer_destroy(r);
+            if (!got) continue;
+            size_t marked = 0;
+            double worst = 0.0;
+            for (size_t i = 0; i < (size_t)W * H; i++) {
+                if (got[4 * i + 3] != 0.5f) continue;
+                marked++;
+                double e = rel_err(got, ref, i);
+                if (e > worst) worst = e;
+            }
+            printf("comb, %s, scale %g: %zu pixels re-lit (stats: %llu, %.4f of the frame; the list holds %d), "
+                   "largest relative error of a re-lit pixel %.3g\n",
+                   strategy_name(), (double)scales[k], marked, (unsigned long long)stats.relit_pixels,
+                   stats.relit_fraction, W * H / 4, worst);
+            TL_CHECK_EQ_U(stats.relit_pixels, marked);
+            TL_CHECK(fabs(stats.relit_fraction - (double)marked / (W * H)) < 1e-12);
+            if (k == 0) TL_CHECK_EQ_U(marked, 0);
+            if (k == 2) TL_CHECK(marked > (size_t)W * H / 4); /* past the list's end */
+            TL_CHECK_LE(worst, ldexp(1.0, -9));
             free(got);
         }
         free(ref);
@@ -380,8 +451,10 @@ TL_TEST(light_scale_odd_sizes_render_without_gl_errors)
     if (!s) return;
     const uint32_t sizes[3][2] = {{1, 1}, {7, 3}, {1281, 721}};
     for (int z = 0; z < 3; z++)
-        for (int k = 0; k < 3; k++) {
-            tl_renderer *r = render_at(s, scales[k], sizes[z][0], sizes[z][1], TL_LIGHT_STRATEGY_DEFAULT, TL_DEPTH_FORMAT_DEFAULT);
+        for (int run = 0; run < 6; run++) {
+            int k = run % 3;
+            tl_light_strategy strategy = run / 3 ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
+            tl_renderer *r = render_at(s, scales[k], sizes[z][0], sizes[z][1], strategy, TL_DEPTH_FORMAT_DEFAULT);
             tl_frame_plan p;
             if (!r || tl_renderer_get_plan(r, &p) != TL_OK) {
                 TL_CHECK(!"render or plan");
