@@ -57,7 +57,7 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         [TL_TARGET_DOF] = "dof",               [TL_TARGET_LIGHT_FRESNEL] = "light_fresnel",
         [TL_TARGET_BLOOM] = "bloom",           [TL_TARGET_SSR] = "ssr",
         [TL_TARGET_LIGHT_DEPTH] = "light_depth", [TL_TARGET_LIGHT_RT0] = "light_rt0_normal_gloss",
-        [TL_TARGET_LIGHT_OFFSET] = "light_offset"};
+        [TL_TARGET_LIGHT_OFFSET] = "light_offset", [TL_TARGET_LIGHT_FIXUP] = "light_fixup"};
     tl_frame_plan plan;
     if (tl_renderer_get_plan(r, &plan) != TL_OK) memset(&plan, 0, sizeof plan);
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
@@ -163,6 +163,9 @@ static void print_stats(tl_renderer *r, const tl_frame_stats *st, const tl_scene
     if (st->light_pairs)
         printf("  %llu pixel-light pairs shaded%s\n", (unsigned long long)st->light_pairs,
                st->tile_overflows ? " (some tiles overflowed their lists and looped over every light)" : "");
+    if (st->relit_pixels)
+        printf("  %llu pixels re-lit at full resolution by the light scale's edge fix-up (%.2f %% of the frame)\n",
+               (unsigned long long)st->relit_pixels, 100.0 * st->relit_fraction);
 }
 
 /* -o: the final image (PNG) or the HDR target (EXR); 0 or 1. */
