@@ -45,7 +45,7 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         fprintf(stderr, "thinlight-render: out of memory\n");
         return 1;
     }
-    /* file names (the light lists are a storage buffer: no image) */
+    /* file names (the light lists and the fix-up list are storage buffers: no image) */
     static const char *const names[TL_TARGET_COUNT] = {
         [TL_TARGET_DEPTH] = "depth",           [TL_TARGET_RT0] = "rt0_normal_gloss",
         [TL_TARGET_RT1] = "rt1_albedo",        [TL_TARGET_LIGHT_DIFFUSE] = "light_diffuse",
@@ -57,7 +57,7 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         [TL_TARGET_DOF] = "dof",               [TL_TARGET_LIGHT_FRESNEL] = "light_fresnel",
         [TL_TARGET_BLOOM] = "bloom",           [TL_TARGET_SSR] = "ssr",
         [TL_TARGET_LIGHT_DEPTH] = "light_depth", [TL_TARGET_LIGHT_RT0] = "light_rt0_normal_gloss",
-        [TL_TARGET_LIGHT_OFFSET] = "light_offset", [TL_TARGET_LIGHT_FIXUP] = "light_fixup"};
+        [TL_TARGET_LIGHT_OFFSET] = "light_offset"};
     tl_frame_plan plan;
     if (tl_renderer_get_plan(r, &plan) != TL_OK) memset(&plan, 0, sizeof plan);
     for (int t = 0; t < TL_TARGET_COUNT; t++) {

@@ -220,6 +220,17 @@ uvec4 tl_unorm8_bytes(vec4 c)
     return uvec4(c * 255.0 + 0.5);
 }
 
+// Two RT0 texels (as sampled) hold the same normal: its bits alone (rg with RGB10A2, rgb with
+// RGBA8), whatever their gloss (the light scale's upsample: one surface, one normal).
+bool tl_rt0_same_normal(vec4 a, vec4 b)
+{
+#ifdef TL_RT0_RGB10A2
+    return a.rg == b.rg;
+#else
+    return a.rgb == b.rgb;
+#endif
+}
+
 // RGB10A2: bits 0-9 u, 10-19 v, 20-29 gloss10, 30-31 flags.
 uint tl_rt0_encode_rgb10a2(vec3 n, float gloss, uint flags)
 {

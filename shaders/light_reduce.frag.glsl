@@ -61,8 +61,8 @@ void main()
     ivec2 o = at - base;
     // The quad of this texel and its +x, +y and +x+y neighbours, as the upsample interpolates
     // between them: interior (flag 32) when the 2K x 2K samples of their four blocks lie on one
-    // plane (the fit through the region's corners, as a block's) and the four kept RT0 texels are
-    // the same. Every pixel between those texels' centres lies on that plane: the upsample's depth
+    // plane (the fit through the region's corners, as a block's) and the four kept RT0 texels hold
+    // the same normal (their gloss may differ: a checkerboard of materials). Every pixel between those texels' centres lies on that plane: the upsample's depth
     // weights are all 1, and its normal weights are equal (its normalised weights: bilinear), so
     // it reads such a quad with one bilinear fetch per target, weighing nothing.
     bool interior = planar && all(lessThan(base + (2 * TL_K - 1), size));
@@ -88,7 +88,7 @@ void main()
                     float v = r[(b0.y + y) * R + b0.x + x], n = r[near.y * R + near.x];
                     if (reversed ? v > n : v < n) near = b0 + ivec2(x, y);
                 }
-            interior = texelFetch(u_rt0, base + near, 0) == o_rt0;
+            interior = tl_rt0_same_normal(texelFetch(u_rt0, base + near, 0), o_rt0);
         }
     }
     o_offset = vec4(float((planar ? 16 : (o.x | (o.y << 2))) | (interior ? 32 : 0)) / 255.0, 0.0, 0.0, 0.0);

@@ -89,7 +89,7 @@ float tl_upsample_gather(vec4 rt0_f, vec3 n_f, float power, float z_f, vec2 dz, 
         float predicted = z_f + dot(dz, c - gl_FragCoord.xy);
         float wz = clamp(1.0 - abs(tl_upsample_linear_depth(d) - predicted) / tol_z, 0.0, 1.0);
         vec4 t = texelFetch(u_light_rt0, q, 0); // the pixel's own RT0 texel (a flat surface): weight 1
-        float wn = t == rt0_f ? 1.0 : pow(clamp(dot(tl_upsample_rt0(t).xyz, n_f), 0.0, 1.0), power);
+        float wn = tl_rt0_same_normal(t, rt0_f) ? 1.0 : pow(clamp(dot(tl_upsample_rt0(t).xyz, n_f), 0.0, 1.0), power);
         all_credible = all_credible && wz * wn >= 0.999;
         w[j] = wb * wz * wn;
         total += w[j];
@@ -141,7 +141,7 @@ void tl_upsample_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout
 }
 
 // The light of a pixel inside an interior quad (light_reduce.frag.glsl, flag 32: four texels on
-// one plane with one RT0 texel) whose own RT0 is that texel: the weights would all be 1, so one
+// one plane with one normal) whose own normal is that one: the weights would all be 1, so one
 // bilinear fetch per target, before any weight is computed (most pixels of flat surfaces).
 bool tl_upsample_interior(vec4 rt0, out vec4 ld, out vec3 ls, out vec3 lf)
 {
@@ -153,7 +153,7 @@ bool tl_upsample_interior(vec4 rt0, out vec4 ld, out vec3 ls, out vec3 lf)
     ls = lf = vec3(0.0);
     if (any(lessThan(base, ivec2(0))) || any(greaterThanEqual(base + 1, size))) return false;
     uint flags = uint(texelFetch(u_light_offset, base, 0).r * 255.0 + 0.5);
-    if ((flags & 32u) == 0u || texelFetch(u_light_rt0, base, 0) != rt0) return false;
+    if ((flags & 32u) == 0u || !tl_rt0_same_normal(texelFetch(u_light_rt0, base, 0), rt0)) return false;
     vec2 uv = (r + 0.5) / vec2(size);
     ld = textureLod(u_light_diffuse, uv, 0.0);
 #ifdef TL_SPECULAR_EXACT

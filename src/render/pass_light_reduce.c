@@ -36,7 +36,7 @@ static void tl__reduce_permute(const tl__plan_input *in, const tl__pass_decl *d,
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_LIGHT_SHIFT=%u", (unsigned)in->light_shift);
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_LIGHT_SHIFT=%u %s", (unsigned)in->light_shift, in->rt0_define);
 }
 
 const tl__pass_def tl__pass_light_reduce = {

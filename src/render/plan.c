@@ -40,7 +40,7 @@ static void tl__plan_strategy(tl__plan_input *in)
     in->strategy = s;
     /* tiles are counted in the frame's pixels: at a light scale below 1 a tile covers tile_size
      * texels of the light buffer, and the edge fix-up reads the list of its pixel's tile */
-    in->tile_size = in->o->tile_size << in->light_shift;
+    in->tile_size = in->o->tile_size << (in->light_shift ? 1u : 0u);
     in->tiles_x = (in->d.width + in->tile_size - 1) / in->tile_size;
     in->tiles_y = (in->d.height + in->tile_size - 1) / in->tile_size;
 }

@@ -173,13 +173,14 @@ TL_TEST(light_scale_plan_reduced_targets_and_refusals)
         TL_CHECK(tl_frame_plan_build(&d, &f, &half) == TL_OK);
         TL_CHECK(half.light_strategy == d.options.light_strategy);
         /* the fix-up's buffer: the re-lit count, and with tiles a list of a quarter of the pixels
-         * (16 bytes each); tiles are counted in the frame's pixels, 16 texels of the light buffer */
+         * (16 bytes each); tiles are counted in the frame's pixels: twice the option's side (16 texels
+         * of the light buffer at 1/2, 8 at 1/4) */
         TL_CHECK(half.targets & TL_TARGET_BIT(TL_TARGET_LIGHT_FIXUP));
         TL_CHECK_EQ_U(half.target_info[TL_TARGET_LIGHT_FIXUP].bytes,
                       16u + (tiled ? 16u * ((1281u * 721u + 3u) / 4u) : 0u));
         if (tiled) {
-            TL_CHECK_EQ_U(half.tile_size, 16u << k);
-            TL_CHECK_EQ_U(half.tiles_x, (1281u + (16u << k) - 1u) / (16u << k));
+            TL_CHECK_EQ_U(half.tile_size, 32u);
+            TL_CHECK_EQ_U(half.tiles_x, (1281u + 31u) / 32u);
         }
         int fixup = 0;
         for (size_t i = 0; i < half.pass_count; i++) fixup += half.passes[i].pass == TL_PASS_LIGHT_FIXUP;
