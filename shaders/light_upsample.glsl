@@ -60,8 +60,9 @@ float tl_upsample_linear_depth(float d)
 
 // The weighted sums of the 4 texels (diffuse with its alpha, specular, Fresnel) and their weight.
 // Depth and offset come by textureGather (the targets clamp to their edge, as the texel indices
-// would); where all 4 texels are fully credible (inside a surface) the light buffer is read with one
-// bilinear fetch per target (the material pass binds a linear sampler to its units).
+// would); the light by texelFetch, weighed here. (A bilinear fetch where all 4 weights are 1 was
+// slower on llvmpipe: it runs both sides of a branch its SIMD lanes disagree on; quads that are
+// interior take tl_upsample_interior's bilinear fetch before any weight is computed.)
 float tl_upsample_gather(vec4 rt0_f, vec3 n_f, float power, float z_f, vec2 dz, out vec4 ld, out vec3 ls, out vec3 lf)
 {
     const float k = float(1 << TL_UPSAMPLE);
@@ -72,7 +73,6 @@ float tl_upsample_gather(vec4 rt0_f, vec3 n_f, float power, float z_f, vec2 dz, 
     vec4 dg = textureGather(u_light_depth, corner), og = textureGather(u_light_offset, corner);
     float tol_z = TL_UPSAMPLE_DEPTH_RELATIVE * abs(z_f) + 0.5 * k * (abs(dz.x) + abs(dz.y));
     float w[4], total = 0.0;
-    bool all_credible = true;
     for (int j = 0; j < 4; j++) {
         ivec2 o = ivec2(j & 1, j >> 1);
         int g = o.y == 1 ? o.x : 3 - o.x; // textureGather's order: (0,1) (1,1) (1,0) (0,0)
@@ -80,33 +80,18 @@ float tl_upsample_gather(vec4 rt0_f, vec3 n_f, float power, float z_f, vec2 dz, 
         float wb = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
         float d = dg[g];
         w[j] = 0.0;
-        if (d == u_clear_depth) {
-            all_credible = false;
-            continue;
-        }
+        if (d == u_clear_depth) continue;
         uint off = uint(og[g] * 255.0 + 0.5) & 31u; // 32: the interior flag
         vec2 c = off == 16u ? (vec2(q) + 0.5) * k : vec2(q * (1 << TL_UPSAMPLE) + ivec2(off & 3u, off >> 2)) + 0.5; // lit there
         float predicted = z_f + dot(dz, c - gl_FragCoord.xy);
         float wz = clamp(1.0 - abs(tl_upsample_linear_depth(d) - predicted) / tol_z, 0.0, 1.0);
         vec4 t = texelFetch(u_light_rt0, q, 0); // the pixel's own RT0 texel (a flat surface): weight 1
         float wn = tl_rt0_same_normal(t, rt0_f) ? 1.0 : pow(clamp(dot(tl_upsample_rt0(t).xyz, n_f), 0.0, 1.0), power);
-        all_credible = all_credible && wz * wn >= 0.999;
         w[j] = wb * wz * wn;
         total += w[j];
     }
     ld = vec4(0.0);
     ls = lf = vec3(0.0);
-    if (all_credible) { // bilinear, the weights' sum is 1
-        vec2 uv = (r + 0.5) / vec2(size);
-        ld = textureLod(u_light_diffuse, uv, 0.0);
-#ifdef TL_SPECULAR_EXACT
-        ls = textureLod(u_light_specular, uv, 0.0).rgb;
-#ifdef TL_FRESNEL_SUMS
-        lf = textureLod(u_light_fresnel, uv, 0.0).rgb;
-#endif
-#endif
-        return 1.0;
-    }
     for (int j = 0; j < 4; j++) {
         if (w[j] <= 0.0) continue;
         ivec2 q = clamp(ivec2(base) + ivec2(j & 1, j >> 1), ivec2(0), size - 1);
