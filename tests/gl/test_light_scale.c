@@ -538,7 +538,8 @@ static int crypt_frame(const tl_scene *s, tl_render_mode mode, float k, figures 
     f->relit = (double)relit / ((double)FW * FH);
     f->gpu_ms = st.gpu_ms;
     f->light_ms = st.pass_ms[TL_PASS_LIGHT_REDUCE] + st.pass_ms[TL_PASS_LIGHTS] + st.pass_ms[TL_PASS_LIGHTS_TILED] +
-                  st.pass_ms[TL_PASS_LIGHT_CULL];
+                  st.pass_ms[TL_PASS_LIGHT_CULL] + st.pass_ms[TL_PASS_LIGHT_FIXUP];
+    TL_CHECK(!ok || st.relit_pixels == relit); /* the library's count is the pixels it marked */
     free(hdr);
     tl_renderer_destroy(r);
     return ok;
