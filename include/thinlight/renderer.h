@@ -536,7 +536,8 @@ typedef struct tl_frame_stats {
     uint64_t light_list_entries;        /**< tiled: entries of all tile lists */
     uint32_t draw_calls;                /**< GL draw calls of the frame */
     uint32_t programs_compiled;         /**< shader programs compiled so far by this renderer (cache misses) */
-    uint64_t relit_pixels;              /**< light_scale below 1: pixels the edge fix-up re-lit at full resolution */
+    uint64_t relit_pixels;              /**< light_scale below 1: pixels the edge fix-up re-lit at full resolution
+                                             (fragments: a pixel two coplanar surfaces both draw counts twice) */
     double relit_fraction;              /**< relit_pixels over the frame's pixels */
 } tl_frame_stats;
 
@@ -681,8 +682,9 @@ typedef struct tl_render_output {
  * No state the application left in the context changes the image: a frame sets every piece of
  * state its passes depend on (docs/renderer.md, "The GL contract", has the table). The GL state
  * it leaves, as after tl_renderer_render: framebuffer 0 bound for drawing and reading, program 0,
- * vertex array 0, no texture or sampler on the units it used (0..24), no uniform or storage
- * buffer on the binding points it used (0..4) nor on the generic bindings, no image on the image
+ * vertex array 0, no texture or sampler on the units it used (0..28), no uniform or storage
+ * buffer on the binding points it used (0..5) nor on the generic bindings (the dispatch-indirect
+ * binding too), no image on the image
  * units it used (0..3); blending, depth test, face culling, depth clamp, scissor and stencil
  * tests off; depth mask and colour mask on; clip control (GL_LOWER_LEFT,
  * GL_NEGATIVE_ONE_TO_ONE); the viewport is the output rectangle (render_to) or the renderer's
