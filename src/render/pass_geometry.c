@@ -24,7 +24,7 @@ uint32_t tl__rt0_format(const tl_renderer_options *o)
 }
 
 static const tl__target_def tl__target_depth = {TL__TARGET(DEPTH, "depth"), .format_of = tl__depth_format,
-                                                .store = TL__STORE_GBUFFER};
+                                                .store = TL__STORE_GBUFFER, .depth = 1};
 static const tl__target_def tl__target_rt0 = {TL__TARGET(RT0, "rt0"), .format_of = tl__rt0_format,
                                               .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_rt1 = {TL__TARGET(RT1, "rt1"), .format = GL_RGBA8, .store = TL__STORE_GBUFFER};

@@ -273,7 +273,7 @@ static void tl__output_defines(const tl__plan *p, uint32_t writes, char *out, si
     int loc = 0;
     out[0] = '\0';
     for (int t = 0; t < TL_TARGET_COUNT; t++)
-        if (t != TL_TARGET_DEPTH && t != TL_TARGET_LIGHT_DEPTH && !p->targets[t]->buffer_bytes && (writes & TL__BIT(t))) {
+        if ((writes & TL__BIT(t)) && !p->targets[t]->depth && !p->targets[t]->buffer_bytes) {
             int n = snprintf(out + len, size - len, "%sTL_OUT_%s=%d", len ? " " : "", p->targets[t]->macro, loc++);
             if (n > 0 && (size_t)n < size - len) len += (size_t)n;
         }
