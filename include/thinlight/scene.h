@@ -200,7 +200,9 @@ typedef struct tl_scene_feature_set {
     int has_emissive;     /**< some material emits light */
     int has_alpha_mask;   /**< alpha-tested materials */
     int has_alpha_blend;  /**< alpha-blended materials (a transparent pass) */
-    size_t alpha_blend_objects; /**< non-empty objects drawn with an alpha-blended material (stipple layers) */
+    /** Non-empty objects drawn with an alpha-blended material: the stipple has a layer for each of up
+     *  to TL_STIPPLE_LAYERS. 0 with has_alpha_blend (a feature set made by hand): not counted, planned forward. */
+    size_t alpha_blend_objects;
     int has_metallic_roughness; /**< per-pixel metallic-roughness conversion needed */
     int has_occlusion;    /**< some material has an occlusion texture */
     int has_emissive_texture; /**< some emissive material has an emissive texture */

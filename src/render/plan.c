@@ -90,6 +90,8 @@ static void tl__plan_transparency(tl__plan_input *in)
         snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s%s",
                  o->transparency == TL_TRANSPARENCY_FORWARD ? "" : o->transparency == TL_TRANSPARENCY_STIPPLE ? "stipple asked, but " : "auto: ",
                  why);
+    } else if (n == 0) { /* a feature set made by hand: the count is unknown */
+        snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s: blended objects not counted", how);
     } else if (n > TL_STIPPLE_LAYERS) {
         snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s: %zu blended objects > %d stipple layers",
                  how, n, TL_STIPPLE_LAYERS);
