@@ -388,7 +388,7 @@ typedef enum tl_pass {
     TL_PASS_LIGHT_REDUCE,  /**< light_scale below 1: depth and RT0 reduced to the light buffer's size */
     TL_PASS_STIPPLE_DEPTH, /**< stipple: the opaque depth copied before the transparent layers overwrite it */
     TL_PASS_STIPPLE,       /**< stipple: transparent layers into depth and RT0, one pixel of each 2x2 quad each */
-    TL_PASS_STIPPLE_RESOLVE, /**< stipple: transparent layers blended onto HDR with the light of their own pixels */
+    TL_PASS_STIPPLE_RESOLVE, /**< "stipple-blend": transparent layers blended onto HDR with the light of their own pixels */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 

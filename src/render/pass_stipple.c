@@ -5,7 +5,7 @@
  *   stipple          the blended objects into DEPTH and RT0, each on the pixels of its layer (one of
  *                    every 2x2 quad, shaders/stipple.glsl), nearest first by the depth test; the
  *                    light pass then lights them with everything else;
- *   stipple-resolve  the blended objects again, far to near, blended onto HDR, each fragment with
+ *   stipple-blend    the blended objects again, far to near, blended onto HDR, each fragment with
  *                    the light of its layer's own pixels (shaders/stipple_gather.glsl).
  * The material pass (pass_geometry.c) tests against opaque.depth and gathers, where a layer took an
  * opaque pixel, the light of its neighbours. */
@@ -86,7 +86,7 @@ const tl__pass_def tl__pass_stipple = {
     .services = TL__PASS_SCENE,
 };
 
-/* ---- stipple-resolve: the layers blended onto HDR ------------------------------------------- */
+/* ---- stipple-blend: the layers blended onto HDR --------------------------------------------- */
 
 static void tl__resolve_declare(const tl__plan_input *in, tl__pass_decl *d)
 {

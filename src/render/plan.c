@@ -87,9 +87,10 @@ static void tl__plan_transparency(tl__plan_input *in)
     else if (o->fog.mode != TL_FOG_OFF || o->dof.enabled || o->ssr.enabled)
         why = "fog, depth of field or reflections read depth after the layers";
     if (why) {
-        snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s%s",
-                 o->transparency == TL_TRANSPARENCY_FORWARD ? "" : o->transparency == TL_TRANSPARENCY_STIPPLE ? "stipple asked, but " : "auto: ",
-                 why);
+        const char *lead = o->transparency == TL_TRANSPARENCY_FORWARD   ? ""
+                           : o->transparency == TL_TRANSPARENCY_STIPPLE ? "stipple asked, but "
+                                                                        : "auto: ";
+        snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s%s", lead, why);
     } else if (n == 0) { /* a feature set made by hand: the count is unknown */
         snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s: blended objects not counted", how);
     } else if (n > TL_STIPPLE_LAYERS) {
@@ -97,8 +98,8 @@ static void tl__plan_transparency(tl__plan_input *in)
                  how, n, TL_STIPPLE_LAYERS);
     } else {
         in->stipple = 1;
-        snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s: %zu blended object%s, one 2x2 stipple layer each",
-                 how, n, n == 1 ? "" : "s");
+        snprintf(in->transparency_reason, sizeof in->transparency_reason,
+                 "%s: %zu blended object%s, one 2x2 stipple layer each", how, n, n == 1 ? "" : "s");
     }
 }
 
