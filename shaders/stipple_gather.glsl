@@ -78,9 +78,10 @@ void tl_stipple_add(ivec2 q, float w, inout vec4 ld, inout vec3 ls, inout vec3 l
 bool tl_stipple_inside(ivec2 q, ivec2 size) { return all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size)); }
 
 // The light sums of the surface at this fragment from the 4 nearest pixels of the lattice
-// slot + 2 (i, j), bilinear weights times tl_stipple_weight; returns their weight. The loop's bound
-// is not a constant, so that llvmpipe, which runs both sides of a branch for every lane, pays a
-// single tap where no lane gathers (`taps` 0).
+// slot + 2 (i, j), bilinear weights times tl_stipple_weight; returns their weight. `taps` 0 (the
+// pixel's own sample will do) skips the loop; the bound is not a constant, so the loop is not
+// unrolled, and llvmpipe, which runs both sides of a branch for every lane, runs one iteration of
+// it for a group where no lane gathers rather than four (docs/frame.md 2d measures what is left).
 float tl_stipple_lattice(ivec2 slot, int taps, float z_f, vec2 dz, vec3 n_f, float power, out vec4 ld, out vec3 ls,
                          out vec3 lf)
 {
