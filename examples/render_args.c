@@ -17,6 +17,7 @@ static const char usage_head[] =
     "  --spots N             spot lights (default lights/8; 0..65536)\n"
     "  --no-directional      leave out the directional light\n"
     "  --seed S              scene seed (default 1)\n"
+    "  --glass N             the built-in scene with N alpha-blended glass panes (default 0; 0..8)\n"
     "  --frames N            render N frames and report the last (default 1; 1..100000)\n"
     "  --stats               print per-pass GPU times and target bytes\n"
     "  --print-plan          print the frame plan: passes, inputs, outputs, targets, programs\n"
@@ -32,7 +33,7 @@ static const char usage_tail[] =
     "Exit status: 0 success, 1 bad input (an unreadable scene, an unwritable output, a frame over\n"
     "the target-memory budget), 2 bad usage (an unknown option, a malformed or out-of-range value).\n";
 
-enum { R_HELP, R_LIST, R_OUT, R_DUMP, R_SIZE, R_LIGHTS, R_SPOTS, R_NO_DIRECTIONAL, R_SEED, R_FRAMES, R_STATS, R_PLAN };
+enum { R_HELP, R_LIST, R_OUT, R_DUMP, R_SIZE, R_LIGHTS, R_SPOTS, R_NO_DIRECTIONAL, R_SEED, R_FRAMES, R_STATS, R_PLAN, R_GLASS };
 
 static const tl_opt render_opts[] = {
     {"--help", TL_OPT_FLAG, .id = R_HELP},
@@ -48,6 +49,7 @@ static const tl_opt render_opts[] = {
     {"--frames", TL_OPT_UINT, .id = R_FRAMES, .lo = 1, .hi = 100000},
     {"--stats", TL_OPT_FLAG, .id = R_STATS},
     {"--print-plan", TL_OPT_FLAG, .id = R_PLAN},
+    {"--glass", TL_OPT_UINT, .id = R_GLASS, .lo = 0, .hi = 8},
 };
 
 /* One option of render_opts; 0, or -1 after --help or --list-options. */
@@ -70,6 +72,7 @@ static int render_option(render_args *a, const tl_opt_table *tables, size_t ntab
     case R_FRAMES: a->frames = (uint32_t)v->u[0]; break;
     case R_STATS: a->stats = 1; break;
     case R_PLAN: a->plan = 1; break;
+    case R_GLASS: a->sd.glass_panes = (uint32_t)v->u[0]; break;
     default: break;
     }
     return 0;

@@ -7,6 +7,9 @@
 #include "light_eval.glsl"
 #include "material.glsl"
 #include "object.glsl"
+#ifdef TL_STIPPLE
+#include "stipple_gather.glsl" // the layer's light from its own pixels of the G-buffer
+#endif
 
 #ifndef TL_DEPTH_ONLY
 #include "tiles.glsl" // the lights block (and, for Forward+, the tile lists)
@@ -30,6 +33,10 @@ void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout 
 
 void main()
 {
+#ifdef TL_STIPPLE
+    float z_s = tl_stipple_linear_depth(gl_FragCoord.z);
+    vec2 dz_s = vec2(dFdx(z_s), dFdy(z_s));
+#endif
     tl_surface s = tl_material_surface();
     if (tl_material_masked(s)) discard;
 #ifndef TL_DEPTH_ONLY
@@ -50,9 +57,25 @@ void main()
             tl_forward_add(tl_lights[tl_tile_list_light(h, c, k)], p, n, v, shape, diffuse, specular, fresnel);
     }
 #else
-    uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
-    for (uint k = 0u; k < count; k++)
-        tl_forward_add(tl_lights[tl_light_indices[first + k]], p, n, v, shape, diffuse, specular, fresnel);
+#ifdef TL_STIPPLE
+    // the stipple's resolve: the light of the layer's own pixels, or (none credible) forward
+    vec4 ld;
+    vec3 ls, lf;
+    float total = tl_stipple_layer_light(tl_stipple_layer(), z_s, dz_s, n,
+                                         tl_stipple_power(any(greaterThan(s.specular, vec3(0.0))), s.gloss), ld, ls, lf);
+    if (total >= TL_STIPPLE_CREDIBLE) {
+        tl_stipple_finish(total, ld, ls, lf, diffuse, specular, fresnel);
+#ifdef TL_FRESNEL_NV
+        fresnel = tl_fresnel_schlick(s.specular, clamp(dot(n, v), 0.0, 1.0)) * specular; // as the material pass
+        specular = vec3(0.0);
+#endif
+    } else
+#endif
+    {
+        uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
+        for (uint k = 0u; k < count; k++)
+            tl_forward_add(tl_lights[tl_light_indices[first + k]], p, n, v, shape, diffuse, specular, fresnel);
+    }
 #endif
 #ifdef TL_SPECULAR_NONE
     specular = fresnel = vec3(0.0);

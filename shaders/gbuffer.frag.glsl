@@ -6,6 +6,9 @@
 #include "frame.glsl"
 #include "lighting.glsl"
 #include "material.glsl"
+#ifdef TL_STIPPLE
+#include "stipple.glsl" // transparent layers: one pixel of each 2x2 quad each
+#endif
 
 #ifdef TL_OUT_RT0
 layout(location = TL_OUT_RT0) out vec4 o_rt0;
@@ -42,6 +45,9 @@ float tl_linear_to_srgb1(float c)
 
 void main()
 {
+#ifdef TL_STIPPLE
+    if (!tl_stipple_owns(tl_stipple_layer(), ivec2(gl_FragCoord.xy))) discard;
+#endif
     tl_surface s = tl_material_surface();
     if (tl_material_masked(s)) discard;
 #if defined(TL_OUT_RT0) || defined(TL_OUT_FAT)

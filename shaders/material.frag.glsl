@@ -19,8 +19,14 @@ vec3 tl_finite(vec3 c) // FP16 sums of many bright lights can reach Inf: keep ta
                 isinf(c.b) || isnan(c.b) ? 65504.0 : c.b);
 }
 
+// files are included once, at their first #include: the ones both blocks below use come first
+#include "object.glsl"
+#include "tiles.glsl"
 #if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
 #include "light_upsample.glsl"
+#endif
+#if defined(TL_STIPPLE) && !defined(TL_NO_LIGHTS)
+#include "stipple_opaque.glsl" // transparent layers took some of the G-buffer's pixels
 #endif
 
 void main()
@@ -30,6 +36,10 @@ void main()
     float z_f = tl_upsample_linear_depth(gl_FragCoord.z);
     vec2 dz = vec2(dFdx(z_f), dFdy(z_f));
 #endif
+#if defined(TL_STIPPLE) && !defined(TL_NO_LIGHTS)
+    float z_s = tl_stipple_linear_depth(gl_FragCoord.z);
+    vec2 dz_s = vec2(dFdx(z_s), dFdy(z_s));
+#endif
     tl_surface s = tl_material_surface();
     if (tl_material_masked(s)) discard;
     vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
@@ -38,6 +48,10 @@ void main()
     // HDR's alpha (read by no pass) marks the pixels the fix-up re-lit: 0.5 (tests, the figures)
     int entry;
     if (tl_upsample_light(z_f, dz, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular, fresnel, entry)) alpha = 0.5;
+#elif defined(TL_STIPPLE) && !defined(TL_NO_LIGHTS)
+    if (tl_stipple_opaque_light(z_s, dz_s, tl_material_normal(), s.gloss, any(greaterThan(s.specular, vec3(0.0))), diffuse,
+                                specular, fresnel))
+        alpha = 0.5; // lit here, as the light scale's fix-up marks its pixels
 #elif !defined(TL_NO_LIGHTS)
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 ld = texelFetch(u_light_diffuse, px, 0);

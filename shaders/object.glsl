@@ -7,7 +7,7 @@
 struct tl_object_data {
     mat4 model;       // object to world
     mat3 normal_view; // inverse transpose of (view * model), upper 3x3
-    uvec4 lights;     // forward: first index and count in the light index list
+    uvec4 lights;     // forward: first index and count in the light index list; z: stipple layer (0: none)
 };
 
 layout(std430, binding = TL_SSBO_OBJECTS) readonly buffer tl_object_buffer { tl_object_data tl_objects[]; };

@@ -6,6 +6,8 @@ const char tl_tool_settings_help[] =
     "  --no-depth-prepass    forward mode without its depth pre-pass\n"
     "  --light-strategy S    auto (default), volumes or tiled\n"
     "  --light-scale K       thin-lpp: light buffer size per axis, 1 (default), 0.5 or 0.25\n"
+    "  --transparency T      alpha-blended materials: auto (default: stipple where it applies),\n"
+    "                        forward or stipple (thin-lpp: layers in the G-buffer's 2x2 stipple)\n"
     "  --depth FMT           d24 (default) or d32f-reversed\n"
     "  --rt0 FMT             rgba8 (default: oct 2x12 + gloss 8) or rgb10a2\n"
     "  --light-buffer L      exact (default: diffuse + specular RGBA16F) or compact (one RGBA16F)\n"
@@ -21,7 +23,7 @@ const char tl_tool_settings_help[] =
     "  --exposure E          exposure before tone mapping (default 1; above 0, at most 1e6)\n";
 
 enum { S_MODE, S_NO_PREPASS, S_STRATEGY, S_DEPTH, S_RT0, S_LIGHT_BUFFER, S_LIGHT_FORMAT, S_LIGHTING, S_FRESNEL,
-       S_AMBIENT, S_TILE_SIZE, S_TILED_SHADING, S_FXAA, S_EXPOSURE, S_LIGHT_SCALE };
+       S_AMBIENT, S_TILE_SIZE, S_TILED_SHADING, S_FXAA, S_EXPOSURE, S_LIGHT_SCALE, S_TRANSPARENCY };
 
 static const char *const depth_names[] = {"d24", "d32f-reversed", NULL};
 static const int depth_values[] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
@@ -37,6 +39,8 @@ static const char *const shading_names[] = {"fragment", "compute", NULL};
 static const int shading_values[] = {TL_TILED_SHADING_FRAGMENT, TL_TILED_SHADING_COMPUTE};
 static const char *const light_scale_names[] = {"1", "0.5", "0.25", NULL};
 static const int light_scale_values[] = {1, 2, 4}; /* the divisor */
+static const char *const transparency_names[] = {"auto", "forward", "stipple", NULL};
+static const int transparency_values[] = {TL_TRANSPARENCY_DEFAULT, TL_TRANSPARENCY_FORWARD, TL_TRANSPARENCY_STIPPLE};
 static const char *const fxaa_names[] = {"off", "12", "29", "39", NULL};
 static const int fxaa_values[] = {TL_FXAA_OFF, TL_FXAA_12, TL_FXAA_29, TL_FXAA_39};
 
@@ -47,6 +51,7 @@ static const tl_opt settings_opts[] = {
     {"--no-depth-prepass", TL_OPT_FLAG, .id = S_NO_PREPASS},
     {"--light-strategy", TL_OPT_TEXT, .id = S_STRATEGY},
     {"--light-scale", TL_OPT_TEXT, .id = S_LIGHT_SCALE, CHOICE(light_scale)},
+    {"--transparency", TL_OPT_TEXT, .id = S_TRANSPARENCY, CHOICE(transparency)},
     {"--depth", TL_OPT_TEXT, .id = S_DEPTH, CHOICE(depth)},
     {"--rt0", TL_OPT_TEXT, .id = S_RT0, CHOICE(rt0)},
     {"--light-buffer", TL_OPT_TEXT, .id = S_LIGHT_BUFFER, CHOICE(light_buffer)},
@@ -94,6 +99,7 @@ int tl_tool_settings_apply(const char *tool, tl_renderer_desc *d, const tl_opt *
     case S_FXAA: d->options.fxaa = (tl_fxaa_preset)u; break;
     case S_EXPOSURE: d->options.exposure = (float)v->f[0]; break;
     case S_LIGHT_SCALE: d->options.light_scale = 1.0f / (float)u; break;
+    case S_TRANSPARENCY: d->options.transparency = (tl_transparency)u; break;
     default: return tl__settings_named(tool, d, o->id, v->text);
     }
     return 1;

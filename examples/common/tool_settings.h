@@ -1,5 +1,5 @@
 /* The renderer settings thinlight-render and thinlight-viewer share (--mode, --light-strategy,
- * --depth, --rt0, --light-buffer, --light-format, --lighting, --fresnel, --ambient, --tile-size,
+ * --light-scale, --transparency, --depth, --rt0, --light-buffer, --light-format, --lighting, --fresnel, --ambient, --tile-size,
  * --tiled-shading, --fxaa, --exposure, --no-depth-prepass), into a tl_renderer_desc. Not part of
  * the library. */
 #ifndef TL_TOOL_SETTINGS_H

@@ -110,6 +110,28 @@ TL_API const char *tl_lighting_model_name(tl_lighting_model model);
 /** Parses a name of tl_lighting_model_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
 TL_API tl_result tl_lighting_model_from_name(const char *name, tl_lighting_model *model);
 
+/** How alpha-blended materials are drawn (docs/frame.md, "2d. Transparency through the light
+ *  buffer"). */
+typedef enum tl_transparency {
+    TL_TRANSPARENCY_DEFAULT = 0, /**< "auto": stipple where it applies (thin-lpp, light scale 1, at most
+                                      TL_STIPPLE_LAYERS blended objects, no fog, depth of field or
+                                      reflections), else forward; tl_frame_plan.transparency says which and why */
+    TL_TRANSPARENCY_FORWARD,     /**< "forward": a pass after the opaque frame shades them forward, far to near */
+    TL_TRANSPARENCY_STIPPLE,     /**< "stipple": Inferred Lighting's stipple: up to TL_STIPPLE_LAYERS layers
+                                      written into the G-buffer on a 2x2 pattern, lit by the light pass and
+                                      resolved with stipple-aware filtering; forward where it does not apply */
+    TL_TRANSPARENCY_COUNT_       /**< number of values */
+} tl_transparency;
+
+/** Transparent layers the stipple has room for: one pixel of each 2x2 quad each, the opaque surface
+ *  keeps the fourth. */
+#define TL_STIPPLE_LAYERS 3
+
+/** "auto", "forward", "stipple" ("unknown" otherwise). */
+TL_API const char *tl_transparency_name(tl_transparency transparency);
+/** Parses a name of tl_transparency_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_transparency_from_name(const char *name, tl_transparency *transparency);
+
 /** How thin-lpp's light buffer keeps GGX's Schlick Fresnel, which needs the material's F0 that the
  *  light pass does not have (EXACT light buffer; the compact one always uses TL_FRESNEL_NV). The
  *  other modes evaluate Fresnel per light with the true v.h. */
@@ -266,6 +288,8 @@ typedef struct tl_renderer_options {
      *  neighbour are re-lit at full resolution (docs/frame.md, "Light at reduced resolution").
      *  Other modes plan as with 1; a reduced light buffer uses the volumes strategy. */
     float light_scale;
+    /** Alpha-blended materials: auto (default), forward or stipple (tl_transparency). */
+    tl_transparency transparency;
     tl_fxaa_preset fxaa;               /**< default 29 */
     float fxaa_edge_threshold;         /**< default 0.166 (relative local contrast) */
     float fxaa_edge_threshold_min;     /**< default 0.0833 (absolute, in gamma-encoded luma) */
@@ -364,6 +388,9 @@ typedef enum tl_pass {
     TL_PASS_LIGHT_REDUCE,  /**< light_scale below 1: depth and RT0 reduced to the light buffer's size */
     TL_PASS_LIGHT_FIXUP,   /**< light_scale below 1, tiled: the pixels the upsample found no credible light
                                 for, re-lit at full resolution (a compute pass over their list) and added to HDR */
+    TL_PASS_STIPPLE_DEPTH, /**< stipple: the opaque depth copied before the transparent layers overwrite it */
+    TL_PASS_STIPPLE,       /**< stipple: transparent layers into depth and RT0, one pixel of each 2x2 quad each */
+    TL_PASS_STIPPLE_RESOLVE, /**< "stipple-blend": transparent layers blended onto HDR with the light of their own pixels */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
@@ -396,6 +423,7 @@ typedef enum tl_target_id {
     TL_TARGET_LIGHT_OFFSET,   /**< light_scale below 1: R8, that sample's pixel within its block (x + 4 y; 16: its centre) */
     TL_TARGET_LIGHT_FIXUP,    /**< light_scale below 1: a storage buffer, the count of re-lit pixels and (tiled)
                                    the list the fix-up pass re-lights: up to a quarter of the frame's pixels */
+    TL_TARGET_OPAQUE_DEPTH,   /**< stipple: the opaque surfaces' depth (depth's format); the material pass tests against it */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -485,6 +513,8 @@ typedef struct tl_frame_plan {
     float light_scale;                           /**< the light buffer's size per axis against the frame's
                                                       (1, 0.5, 0.25): 1 outside thin-lpp */
     char light_scale_reason[96];                 /**< why, when the options asked for a scale below 1 */
+    tl_transparency transparency;                /**< forward or stipple (never auto); forward without blended materials */
+    char transparency_reason[96];                /**< why, when the scene has blended materials */
     size_t program_count;                        /**< entries used in programs */
     tl_plan_program programs[TL_PLAN_MAX_PROGRAMS]; /**< every permutation the frame compiles */
 } tl_frame_plan;
@@ -682,7 +712,7 @@ typedef struct tl_render_output {
  * No state the application left in the context changes the image: a frame sets every piece of
  * state its passes depend on (docs/renderer.md, "The GL contract", has the table). The GL state
  * it leaves, as after tl_renderer_render: framebuffer 0 bound for drawing and reading, program 0,
- * vertex array 0, no texture or sampler on the units it used (0..28), no uniform or storage
+ * vertex array 0, no texture or sampler on the units it used (0..29), no uniform or storage
  * buffer on the binding points it used (0..5) nor on the generic bindings (the dispatch-indirect
  * binding too), no image on the image
  * units it used (0..3); blending, depth test, face culling, depth clamp, scissor and stencil

@@ -200,6 +200,9 @@ typedef struct tl_scene_feature_set {
     int has_emissive;     /**< some material emits light */
     int has_alpha_mask;   /**< alpha-tested materials */
     int has_alpha_blend;  /**< alpha-blended materials (a transparent pass) */
+    /** Non-empty objects drawn with an alpha-blended material: the stipple has a layer for each of up
+     *  to TL_STIPPLE_LAYERS. 0 with has_alpha_blend (a feature set made by hand): not counted, planned forward. */
+    size_t alpha_blend_objects;
     int has_metallic_roughness; /**< per-pixel metallic-roughness conversion needed */
     int has_occlusion;    /**< some material has an occlusion texture */
     int has_emissive_texture; /**< some emissive material has an emissive texture */
@@ -237,12 +240,16 @@ typedef struct tl_default_scene_desc {
     uint64_t seed;           /**< default 1; same seed, same scene (the seed moves only the lights) */
     uint32_t detail;         /**< tessellation level 1..8, default 4 (about 206k triangles; 1: 23k,
                                   8: 730k); the layout and object count do not change */
+    /** Alpha-blended glass panes across the nave between the camera and the altar (0..8, default
+     *  0: none), each its own object, overlapping on screen; the lights do not move
+     *  (transparency: docs/frame.md, "2d. Transparency through the light buffer"). */
+    uint32_t glass_panes;
     tl_allocator allocator;  /**< zeroed: malloc/free; used for every allocation of the scene */
 } tl_default_scene_desc;
 
 /** Builds the built-in crypt scene (a vaulted hall crypt, metres, Y up; exposure 1 with an ACES or
  * Reinhard tone map). NULL desc means all defaults. TL_ERROR_INVALID_ARGUMENT for a NULL out,
- * detail > 8 or an allocator with only one of alloc/free; TL_ERROR_LIMIT for more than 65536
+ * detail > 8, glass_panes > 8 or an allocator with only one of alloc/free; TL_ERROR_LIMIT for more than 65536
  * point or spot lights; TL_ERROR_OUT_OF_MEMORY (nothing leaked). *out is NULL on failure. */
 TL_API tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **out);
 /** Frees a scene from any tl_scene_* constructor; NULL is ignored. */

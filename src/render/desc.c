@@ -36,6 +36,7 @@ static int tl__general_resolve(tl_renderer_options *o, const char **bad)
         {(unsigned)o->tiled_shading >= TL_TILED_SHADING_COUNT_, "tiled_shading"},
         {(unsigned)o->lighting >= TL_LIGHTING_COUNT_, "lighting"},
         {(unsigned)o->fresnel >= TL_FRESNEL_COUNT_, "fresnel"},
+        {(unsigned)o->transparency >= TL_TRANSPARENCY_COUNT_, "transparency"},
         {!isfinite(o->ambient[0]) || !isfinite(o->ambient[1]) || !isfinite(o->ambient[2]), "ambient"},
         {o->tile_size != 8 && o->tile_size != 16 && o->tile_size != 32, "tile_size (8, 16 or 32)"},
         {o->light_scale != 1.0f && o->light_scale != 0.5f && o->light_scale != 0.25f, "light_scale (1, 0.5 or 0.25)"},

@@ -67,6 +67,10 @@ void tl__objects_fill(const tl__scene_gpu *g, const tl__view *v, const uint32_t 
         o->light_count = first ? count[i] : 0u;
         o->pad[0] = o->pad[1] = 0u;
     }
+    /* the stipple's layers (shaders/stipple.glsl): the visible blended objects far to near get
+     * layers 1, 2, 3; the plan stipples only scenes with at most that many blended objects */
+    for (size_t k = 0; k < g->visible_transparent && k < TL_STIPPLE_LAYERS; k++)
+        out[g->visible[g->visible_opaque + k]].pad[0] = (uint32_t)(k + 1);
 }
 
 static void tl__bind_material(const GladGLContext *gl, const tl__scene_gpu *g, uint32_t index)

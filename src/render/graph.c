@@ -174,7 +174,7 @@ static tl_result tl__graph_pass(tl__device *dev, tl__graph *r, tl__compiled_pass
     cp->plan = pp;
     cp->decl = d;
     for (int t = 0; t < TL_TARGET_COUNT && n < TL__FRAMEBUFFER_MAX_COLORS; t++) {
-        if (t == TL_TARGET_DEPTH || t == TL_TARGET_LIGHT_DEPTH || !(d->writes & TL_TARGET_BIT(t))) continue;
+        if (r->plan.targets[t]->depth || !(d->writes & TL_TARGET_BIT(t))) continue;
         if (r->plan.targets[t]->buffer_bytes) continue; /* a storage buffer (the fix-up list), bound by its module */
         if (d->clears & TL_TARGET_BIT(t)) cp->clear_locations[cp->clear_count++] = (uint8_t)n;
         colors[n++] = &r->targets[t];

@@ -89,6 +89,24 @@ tl_result tl_fresnel_layout_from_name(const char *name, tl_fresnel_layout *f)
     return TL_ERROR_INVALID_ARGUMENT;
 }
 
+static const char *const tl__transparency_names[TL_TRANSPARENCY_COUNT_] = {"auto", "forward", "stipple"};
+
+const char *tl_transparency_name(tl_transparency t)
+{
+    return (unsigned)t < TL_TRANSPARENCY_COUNT_ ? tl__transparency_names[t] : "unknown";
+}
+
+tl_result tl_transparency_from_name(const char *name, tl_transparency *t)
+{
+    if (!name || !t) return TL_ERROR_INVALID_ARGUMENT;
+    for (int i = 0; i < TL_TRANSPARENCY_COUNT_; i++)
+        if (strcmp(name, tl__transparency_names[i]) == 0) {
+            *t = (tl_transparency)i;
+            return TL_OK;
+        }
+    return TL_ERROR_INVALID_ARGUMENT;
+}
+
 /* ---- what a mode plans, asked by several passes (pass.h) ------------------------------------- */
 
 const tl__pipeline tl__pipeline_fullscreen = {.color_write = 1, .depth_write = 1};

@@ -24,7 +24,7 @@ uint32_t tl__rt0_format(const tl_renderer_options *o)
 }
 
 static const tl__target_def tl__target_depth = {TL__TARGET(DEPTH, "depth"), .format_of = tl__depth_format,
-                                                .store = TL__STORE_GBUFFER};
+                                                .store = TL__STORE_GBUFFER, .depth = 1};
 static const tl__target_def tl__target_rt0 = {TL__TARGET(RT0, "rt0"), .format_of = tl__rt0_format,
                                               .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_rt1 = {TL__TARGET(RT1, "rt1"), .format = GL_RGBA8, .store = TL__STORE_GBUFFER};
@@ -140,9 +140,18 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
             d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | TL__LIGHTS_OBJECT_LISTS;
         }
     }
-    d->reads |= d->samples | TL__B(DEPTH);
+    if (in->stipple) {
+        /* transparent layers took some G-buffer pixels (pass_stipple.c): the opaque depth decides
+         * visibility; the G-buffer which samples are whose; the object's lights where none is */
+        d->samples |= TL__B(DEPTH) | TL__B(RT0);
+        d->depth_target = TL_TARGET_OPAQUE_DEPTH;
+        d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | TL__LIGHTS_OBJECT_LISTS;
+    }
+    d->reads |= d->samples | TL__B(DEPTH) | (in->stipple ? TL__B(OPAQUE_DEPTH) : 0u);
     d->attach_depth = 1;
-    d->state = tl__geometry_state(in, TL__DEPTH_EQUAL, 0, TL__BLEND_OFF);
+    /* the stipple's copy of the opaque depth may lie a step behind (pass_stipple.c): LEQUAL then
+     * passes the same fragments as EQUAL would, the last drawn of a coplanar pair winning */
+    d->state = tl__geometry_state(in, in->stipple ? TL__DEPTH_LEQUAL : TL__DEPTH_EQUAL, 0, TL__BLEND_OFF);
 }
 
 static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
@@ -153,6 +162,8 @@ static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *
         snprintf(upsample, sizeof upsample, " TL_UPSAMPLE=%u%s%s", (unsigned)in->light_shift,
                  in->o->rt0 == TL_RT0_RGB10A2 ? " TL_RT0_RGB10A2" : "",
                  (d->reads & TL__B(LIGHT_LISTS)) ? " TL_UPSAMPLE_TILES" : "");
+    if (in->stipple && (d->samples & TL__B(LIGHT_DIFFUSE)))
+        snprintf(upsample, sizeof upsample, " TL_STIPPLE %s", in->rt0_define);
     snprintf(out->slot[0], sizeof out->slot[0], "%s%s%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",
              in->material_defines, tl__ssao_defines(in, d), upsample);
 }
@@ -215,7 +226,7 @@ const tl__pass_def tl__pass_forward = {
 
 static void tl__transparent_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!in->f.has_alpha_blend) return;
+    if (!in->f.has_alpha_blend || in->stipple) return; /* the stipple's passes draw them (pass_stipple.c) */
     d->writes = TL__B(HDR);
     d->reads = TL__B(DEPTH) | TL__B(HDR); /* blended onto */
     d->attach_depth = 1;

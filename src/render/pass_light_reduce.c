@@ -12,7 +12,7 @@
 
 static const tl__target_def tl__target_light_depth = {TL__TARGET(LIGHT_DEPTH, "light.depth"),
                                                       .format_of = tl__depth_format, .shift_of = tl__light_shift,
-                                                      .store = TL__STORE_GBUFFER};
+                                                      .store = TL__STORE_GBUFFER, .depth = 1};
 static const tl__target_def tl__target_light_rt0 = {TL__TARGET(LIGHT_RT0, "light.rt0"), .format_of = tl__rt0_format,
                                                     .shift_of = tl__light_shift, .store = TL__STORE_GBUFFER};
 

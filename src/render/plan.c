@@ -66,6 +66,39 @@ static void tl__plan_lighting(tl__plan_input *in)
              in->fresnel == TL_FRESNEL_TWO_SUMS ? " TL_FRESNEL_SUMS" : in->fresnel == TL_FRESNEL_NV ? " TL_FRESNEL_NV" : "");
 }
 
+/* Stipple or forward for the alpha-blended materials (docs/frame.md, "2d. Transparency through the
+ * light buffer"). The stipple has TL_STIPPLE_LAYERS layers and the frame gives each visible blended
+ * object its own, far to near (draw.c), so it fits in every view when the scene draws at most that
+ * many blended objects; the plan then never depends on the camera. */
+static void tl__plan_transparency(tl__plan_input *in)
+{
+    const tl_renderer_options *o = in->o;
+    size_t n = in->f.alpha_blend_objects;
+    const char *why = NULL, *how = o->transparency == TL_TRANSPARENCY_STIPPLE ? "stipple asked" : "auto";
+    if (!in->f.has_alpha_blend) return;
+    if (o->transparency == TL_TRANSPARENCY_FORWARD) why = "forced by the options";
+    else if (!in->mode->material_pass) why = "only thin-lpp lights its G-buffer's layers";
+    else if (in->light_shift) why = "the reduced light buffer would collapse the 2x2 stipple";
+    else if (!in->lights) why = "no lights: nothing to gather";
+    else if (o->fog.mode != TL_FOG_OFF || o->dof.enabled || o->ssr.enabled)
+        why = "fog, depth of field or reflections read depth after the layers";
+    if (why) {
+        const char *lead = o->transparency == TL_TRANSPARENCY_FORWARD   ? ""
+                           : o->transparency == TL_TRANSPARENCY_STIPPLE ? "stipple asked, but "
+                                                                        : "auto: ";
+        snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s%s", lead, why);
+    } else if (n == 0) { /* a feature set made by hand: the count is unknown */
+        snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s: blended objects not counted", how);
+    } else if (n > TL_STIPPLE_LAYERS) {
+        snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s: %zu blended objects > %d stipple layers",
+                 how, n, TL_STIPPLE_LAYERS);
+    } else {
+        in->stipple = 1;
+        snprintf(in->transparency_reason, sizeof in->transparency_reason,
+                 "%s: %zu blended object%s, one 2x2 stipple layer each", how, n, n == 1 ? "" : "s");
+    }
+}
+
 static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_feature_set *features, tl__plan_input *in)
 {
     memset(in, 0, sizeof *in);
@@ -86,6 +119,7 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     tl__plan_strategy(in);
     in->spec = f->has_specular != 0;
     tl__plan_lighting(in);
+    tl__plan_transparency(in);
     in->rt0_define = d->options.rt0 == TL_RT0_RGB10A2 ? "TL_RT0_RGB10A2" : "TL_RT0_RGBA8";
     tl__material_defines(f, in->material_defines, sizeof in->material_defines);
 }
@@ -269,7 +303,7 @@ static void tl__output_defines(const tl__plan *p, uint32_t writes, char *out, si
     int loc = 0;
     out[0] = '\0';
     for (int t = 0; t < TL_TARGET_COUNT; t++)
-        if (t != TL_TARGET_DEPTH && t != TL_TARGET_LIGHT_DEPTH && !p->targets[t]->buffer_bytes && (writes & TL__BIT(t))) {
+        if ((writes & TL__BIT(t)) && !p->targets[t]->depth && !p->targets[t]->buffer_bytes) {
             int n = snprintf(out + len, size - len, "%sTL_OUT_%s=%d", len ? " " : "", p->targets[t]->macro, loc++);
             if (n > 0 && (size_t)n < size - len) len += (size_t)n;
         }
@@ -328,6 +362,8 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
         snprintf(p->pub.light_scale_reason, sizeof p->pub.light_scale_reason, "%s",
                  in.light_shift ? "asked; lights on the reduced depth, upsampled, edges re-lit"
                                 : "asked, but only thin-lpp has a light buffer to reduce");
+    p->pub.transparency = in.stipple ? TL_TRANSPARENCY_STIPPLE : TL_TRANSPARENCY_FORWARD;
+    snprintf(p->pub.transparency_reason, sizeof p->pub.transparency_reason, "%s", in.transparency_reason);
     if (in.strategy == TL_LIGHT_STRATEGY_TILED) {
         p->pub.tile_size = in.tile_size;
         p->pub.tiles_x = in.tiles_x;

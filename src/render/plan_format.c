@@ -96,6 +96,8 @@ size_t tl_frame_plan_format(const tl_frame_plan *p, char *buffer, size_t size)
     tl__printf(&o, "\n");
     if (p->light_scale_reason[0])
         tl__printf(&o, "light scale: %g (%s)\n", (double)p->light_scale, p->light_scale_reason);
+    if (p->transparency_reason[0])
+        tl__printf(&o, "transparency: %s (%s)\n", tl_transparency_name(p->transparency), p->transparency_reason);
     tl__printf(&o, "lighting: %s (%s)", tl_lighting_model_name(p->lighting), p->lighting_reason);
     if (p->fresnel != TL_FRESNEL_DEFAULT)
         tl__printf(&o, "; Fresnel in the light buffer: %s", p->fresnel == TL_FRESNEL_TWO_SUMS

@@ -113,7 +113,7 @@ tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id id, float *rgba, 
     if ((res = tl__need_context(&r->dev, "tl_renderer_read_target")) != TL_OK) return res;
     char msg[256] = "";
     /* the light scale's reduced depth and RT0 read as the frame's */
-    if (id == TL_TARGET_DEPTH || id == TL_TARGET_LIGHT_DEPTH) res = tl__read_depth(r, id, rgba, n, msg, sizeof msg);
+    if (r->graph.plan.targets[id]->depth) res = tl__read_depth(r, id, rgba, n, msg, sizeof msg);
     else if (id == TL_TARGET_RT0 || id == TL_TARGET_LIGHT_RT0) res = tl__read_rt0(r, id, rgba, n, msg, sizeof msg);
     else res = tl__target_read(&r->dev.gl, t, GL_RGBA, GL_FLOAT, rgba, *size, msg, sizeof msg);
     if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: reading %s: %s", tl_target_name(id), msg);

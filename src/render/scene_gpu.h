@@ -18,7 +18,7 @@ enum { TL__WARNED_NEAR = 1u }; /* warnings given once per scene (tl__scene_gpu.w
 typedef struct tl__object_gpu {
     float model[16];
     float normal_view[12]; /* mat3: three columns of vec4 */
-    uint32_t light_first, light_count, pad[2];
+    uint32_t light_first, light_count, pad[2]; /* pad[0]: the object's stipple layer (0: none) */
 } tl__object_gpu;
 
 /* std140 block tl_material_block of shaders/material.glsl. */

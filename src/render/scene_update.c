@@ -46,6 +46,7 @@ int tl__scene_features_refresh(tl__scene_gpu *g)
         f.has_emissive |= a->has_emissive;
         f.has_alpha_mask |= a->has_alpha_mask;
         f.has_alpha_blend |= a->has_alpha_blend;
+        if (a->has_alpha_blend) f.alpha_blend_objects += g->material_uses[m];
         f.has_metallic_roughness |= a->has_metallic_roughness;
         f.has_occlusion |= a->has_occlusion;
         f.has_emissive_texture |= a->has_emissive_texture;
@@ -63,7 +64,7 @@ int tl__scene_features_refresh(tl__scene_gpu *g)
                    f.has_alpha_mask != o->has_alpha_mask || f.has_alpha_blend != o->has_alpha_blend ||
                    f.has_metallic_roughness != o->has_metallic_roughness || f.has_occlusion != o->has_occlusion ||
                    f.has_emissive_texture != o->has_emissive_texture || f.has_double_sided != o->has_double_sided ||
-                   f.has_microfacet != o->has_microfacet);
+                   f.has_microfacet != o->has_microfacet || f.alpha_blend_objects != o->alpha_blend_objects);
     *o = f;
     return changed;
 }

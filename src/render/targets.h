@@ -30,6 +30,7 @@ typedef struct tl__target_def {
     uint8_t shift;      /* its first level is the frame's size divided by 2^shift, rounded up */
     uint32_t (*shift_of)(const tl_renderer_options *o); /* the shift in a configuration (NULL: shift) */
     uint8_t linear;     /* sampled with bilinear filtering (of its first level) */
+    uint8_t depth;      /* a depth target: a pass's depth attachment (depth_target), never a colour write */
 } tl__target_def;
 
 /* The first fields of a definition: `{TL__TARGET(HDR, "hdr"), .format = GL_RGBA16F}`. */

@@ -32,6 +32,7 @@ enum {
     TL__M_GOLD,
     TL__M_BRONZE,
     TL__M_EMBERS,
+    TL__M_GLASS, /* only in a scene with glass panes */
     TL__M_COUNT
 };
 
@@ -57,13 +58,18 @@ static const tl__material_def tl__crypt_materials[TL__M_COUNT] = {
     [TL__M_GOLD] = {"gold", {0.09f, 0.065f, 0.02f}, {1.0f, 0.77f, 0.34f}, 0.78f, {0}, -1},
     [TL__M_BRONZE] = {"bronze", {0.10f, 0.06f, 0.03f}, {0.45f, 0.30f, 0.16f}, 0.6f, {0}, -1},
     [TL__M_EMBERS] = {"embers", {0.04f, 0.02f, 0.01f}, {0, 0, 0}, 0.0f, {2.0f, 0.55f, 0.1f}, -1},
+    [TL__M_GLASS] = {"glass_tinted", {0.05f, 0.30f, 0.26f}, {0.04f, 0.04f, 0.04f}, 0.9f, {0}, -1},
 };
+
+#define TL__GLASS_ALPHA 0.35f
+#define TL__MAX_GLASS 8u
 
 /* ---- layout --------------------------------------------------------------------------------- */
 
 typedef struct tl__crypt {
     tl__builder *b;
     uint32_t detail;
+    uint32_t glass_panes;
     size_t solids[TL__MAX_SOLIDS]; /* objects lights must not sit in */
     size_t solid_count;
     float warm[8][3]; /* above the braziers */
@@ -541,6 +547,18 @@ static void tl__crypt_crates(tl__crypt *c)
     }
 }
 
+/* glass panes across the nave, 4 m apart, each shifted sideways so that the panes overlap on
+ * screen in part: thin boxes (single-sided: only the faces towards a viewer are drawn) */
+static void tl__crypt_glass(tl__crypt *c)
+{
+    for (uint32_t i = 0; i < c->glass_panes; i++) {
+        float x = (i & 1u) ? 0.6f : -0.6f, z = 14.0f - 4.0f * (float)i;
+        tl__obj(c, TL__M_GLASS);
+        tl__box_at(c, x, 1.8f, z, 1.6f, 1.6f, 0.01f, 0.15f * (float)((int)(i % 3u) - 1));
+        tl__obj_end(c, 0); /* lights may stand behind and before it, never in it: they do not move */
+    }
+}
+
 static void tl__crypt_props(tl__crypt *c)
 {
     tl__crypt_sarcophagi(c);
@@ -559,6 +577,7 @@ static void tl__crypt_build(tl__crypt *c)
     tl__crypt_columns(c);
     tl__crypt_arches(c);
     tl__crypt_props(c);
+    tl__crypt_glass(c);
 }
 
 /* ---- creation ------------------------------------------------------------------------------- */
@@ -596,10 +615,10 @@ out_of_memory:
     return NULL;
 }
 
-static void tl__crypt_material_table(tl_scene *scene)
+static void tl__crypt_material_table(tl_scene *scene, int glass)
 {
-    scene->material_count = TL__M_COUNT;
-    for (int m = 0; m < TL__M_COUNT; m++) {
+    scene->material_count = glass ? TL__M_COUNT : TL__M_GLASS;
+    for (int m = 0; m < (int)scene->material_count; m++) {
         const tl__material_def *def = &tl__crypt_materials[m];
         tl_material *mat = &scene->materials[m];
         memset(mat, 0, sizeof(*mat));
@@ -609,7 +628,8 @@ static void tl__crypt_material_table(tl_scene *scene)
         mat->gloss = def->gloss;
         mat->alpha_cutoff = 0.5f;
         mat->albedo_map = def->texture >= 0 ? TL_TEXTURE_MAP(def->texture) : 0;
-        mat->alpha = 1.0f;
+        mat->alpha = m == TL__M_GLASS ? TL__GLASS_ALPHA : 1.0f;
+        if (m == TL__M_GLASS) mat->flags = TL_MATERIAL_ALPHA_BLEND;
         strncpy(mat->name, def->name, sizeof(mat->name) - 1);
     }
 }
@@ -671,7 +691,7 @@ tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **
     *out = NULL;
     tl_default_scene_desc d = desc ? *desc : (tl_default_scene_desc){0};
     if ((d.allocator.alloc == NULL) != (d.allocator.free == NULL)) return TL_ERROR_INVALID_ARGUMENT;
-    if (d.detail > TL__MAX_DETAIL) return TL_ERROR_INVALID_ARGUMENT;
+    if (d.detail > TL__MAX_DETAIL || d.glass_panes > TL__MAX_GLASS) return TL_ERROR_INVALID_ARGUMENT;
     if (d.point_lights > TL__MAX_LIGHTS || d.spot_lights > TL__MAX_LIGHTS) return TL_ERROR_LIMIT;
     if (d.point_lights == 0) d.point_lights = 64;
     if (d.spot_lights == 0) d.spot_lights = d.point_lights / 8;
@@ -680,7 +700,7 @@ tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **
 
     /* pass 1: count */
     tl__builder counter = {.counting = 1};
-    tl__crypt layout = {.b = &counter, .detail = d.detail};
+    tl__crypt layout = {.b = &counter, .detail = d.detail, .glass_panes = d.glass_panes};
     tl__crypt_build(&layout);
     if (counter.vertex_count > UINT32_MAX || counter.index_count > UINT32_MAX) return TL_ERROR_LIMIT;
     size_t light_count = (size_t)d.point_lights + d.spot_lights + (d.no_directional ? 0 : 1);
@@ -696,7 +716,7 @@ tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **
         .objects = scene->objects,
         .object_capacity = counter.object_count,
     };
-    layout = (tl__crypt){.b = &writer, .detail = d.detail};
+    layout = (tl__crypt){.b = &writer, .detail = d.detail, .glass_panes = d.glass_panes};
     tl__crypt_build(&layout);
     if (writer.overflow || writer.vertex_count != counter.vertex_count ||
         writer.index_count != counter.index_count || writer.object_count != counter.object_count) {
@@ -706,7 +726,7 @@ tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **
     scene->vertex_count = writer.vertex_count;
     scene->index_count = writer.index_count;
     scene->object_count = writer.object_count;
-    tl__crypt_material_table(scene);
+    tl__crypt_material_table(scene, d.glass_panes > 0);
     tl__crypt_light_set(scene, &layout, &d, light_count);
     tl__crypt_view(scene);
     *out = scene;

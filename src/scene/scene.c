@@ -75,6 +75,7 @@ void tl_scene_features(const tl_scene *scene, tl_scene_feature_set *out)
         const tl_object *o = &scene->objects[i];
         if (o->index_count == 0 || o->material >= scene->material_count || !scene->materials) continue;
         tl__material_features(&scene->materials[o->material], scene->textures ? scene->texture_count : 0, out);
+        if (scene->materials[o->material].flags & TL_MATERIAL_ALPHA_BLEND) out->alpha_blend_objects++;
     }
 
     out->triangle_count = scene->indices ? scene->index_count / 3 : 0;

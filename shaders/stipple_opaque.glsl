@@ -1,0 +1,59 @@
+// The material pass under the stipple (TL_STIPPLE; docs/frame.md, "2d. Transparency through the
+// light buffer"): an opaque pixel's light from its own G-buffer sample, or, where a transparent
+// layer took it, from its neighbours' opaque samples of the same surface; with none credible (a thin
+// feature, a silhouette under glass) it is lit here from its object's light list, exactly as the
+// light pass would (the forward path's per-object lists). Returns true for a pixel lit here.
+#ifndef TL_STIPPLE_OPAQUE_GLSL
+#define TL_STIPPLE_OPAQUE_GLSL
+
+#include "light_eval.glsl"
+#include "stipple_gather.glsl"
+#include "tiles.glsl" // the visible lights block
+layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
+
+void tl_stipple_relight(bool wanted, vec3 p, vec3 n, float gloss, out vec3 diffuse, out vec3 specular, out vec3 fresnel)
+{
+    vec3 v = normalize(-p);
+    float shape = tl_lobe_shape(gloss);
+    const vec3 fp16_max = vec3(65504.0);
+    diffuse = specular = fresnel = vec3(0.0);
+    uint first = tl_objects[v_object].lights.x, count = wanted ? tl_objects[v_object].lights.y : 0u;
+    for (uint i = 0u; i < count; i++) {
+        tl_light_data l = tl_lights[tl_light_indices[first + i]];
+        vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
+                                  l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
+        diffuse += min(l.color_type.rgb * t.x, fp16_max);
+        specular += min(l.color_type.rgb * t.y, fp16_max);
+        fresnel += min(l.color_type.rgb * t.z, fp16_max);
+    }
+#ifndef TL_FRESNEL_SUMS
+    specular += fresnel; // one sum: Fresnel is applied per pixel
+    fresnel = vec3(0.0);
+#endif
+#ifdef TL_SPECULAR_NONE
+    specular = fresnel = vec3(0.0);
+#endif
+    diffuse = tl_stipple_finite(diffuse);
+    specular = tl_stipple_finite(specular);
+    fresnel = tl_stipple_finite(fresnel);
+}
+
+bool tl_stipple_opaque_light(float z_f, vec2 dz, vec3 n, float gloss, bool glossy, out vec3 diffuse, out vec3 specular,
+                             out vec3 fresnel)
+{
+    vec4 ld;
+    vec3 ls, lf;
+    float total = tl_stipple_opaque(z_f, dz, n, tl_stipple_power(glossy, gloss), ld, ls, lf);
+    bool relit = total < TL_STIPPLE_CREDIBLE;
+    vec3 rd, rs, rf;
+    tl_stipple_relight(relit, v_view_position, n, gloss, rd, rs, rf); // a loop of 0 lights where none is wanted
+    tl_stipple_finish(relit ? 1.0 : total, ld, ls, lf, diffuse, specular, fresnel);
+    if (relit) {
+        diffuse = rd;
+        specular = rs;
+        fresnel = rf;
+    }
+    return relit;
+}
+
+#endif
