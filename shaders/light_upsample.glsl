@@ -29,7 +29,8 @@
 layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
 #endif
 // light.fixup (fixup.c): (compute groups of 64 listed pixels, 1, 1, re-lit pixels), then the list
-// of the pixels left to the light-fixup pass (tiled): pixel, albedo and specular colour as halves
+// of the pixels left to the light-fixup pass (tiled), two uvec4 each: pixel, albedo and specular
+// colour as halves; the colour the material pass wrote without the light, as halves
 layout(std430, binding = TL_SSBO_FIXUP) buffer tl_fixup_buffer { uvec4 tl_fixup_counters; uvec4 tl_fixup_entries[]; };
 layout(early_fragment_tests) in; // the counts and the list: only the pixels the depth test keeps
 
@@ -206,7 +207,7 @@ bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out ve
     if (relit) {
         uint index = atomicAdd(tl_fixup_counters.w, 1u);
 #ifdef TL_UPSAMPLE_TILES
-        if (index < uint(tl_fixup_entries.length())) {
+        if (index < uint(tl_fixup_entries.length()) / 2u) {
             entry = int(index);
             diffuse = specular = fresnel = vec3(0.0);
             return true;
@@ -236,12 +237,15 @@ bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out ve
     return relit;
 }
 
-// A listed pixel's entry: what the light-fixup pass multiplies its light sums by.
-void tl_upsample_list(int entry, vec3 albedo, vec3 f0)
+// A listed pixel's entry: what the light-fixup pass multiplies its light sums by, and the colour
+// without them it writes the result over (not adds to: two coplanar surfaces drawn at one pixel
+// both list it, and each entry then writes a whole colour of its own surface).
+void tl_upsample_list(int entry, vec3 albedo, vec3 f0, vec3 base)
 {
     uvec2 px = uvec2(gl_FragCoord.xy);
-    tl_fixup_entries[entry] = uvec4(px.x | (px.y << 16), packHalf2x16(albedo.rg), packHalf2x16(vec2(albedo.b, f0.r)),
-                                    packHalf2x16(f0.gb));
+    tl_fixup_entries[2 * entry] = uvec4(px.x | (px.y << 16), packHalf2x16(albedo.rg), packHalf2x16(vec2(albedo.b, f0.r)),
+                                        packHalf2x16(f0.gb));
+    tl_fixup_entries[2 * entry + 1] = uvec4(packHalf2x16(base.rg), packHalf2x16(vec2(base.b, 0.0)), 0u, 0u);
     if ((entry & 63) == 0) atomicAdd(tl_fixup_counters.x, 1u); // one compute group per 64 entries
 }
 

@@ -76,18 +76,19 @@ void main()
 #ifdef TL_SSAO_AMBIENT
     // SSAO (docs/effects.md): the ambient term, and with TL_SSAO_DIFFUSE the diffuse light
     float ao = texelFetch(u_ao, ivec2(gl_FragCoord.xy), 0).r;
+    vec3 lit_albedo = s.albedo; // what the diffuse light is multiplied by
 #ifdef TL_SSAO_DIFFUSE
     diffuse *= ao;
-#if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
-    if (entry >= 0) tl_upsample_list(entry, s.albedo * ao, f0);
-#endif
+    lit_albedo *= ao;
 #endif
     vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + f0 * specular + fresnel + s.emissive;
 #else
+    vec3 lit_albedo = s.albedo;
     vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + f0 * specular + fresnel + s.emissive;
 #endif
-#if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS) && !defined(TL_SSAO_DIFFUSE)
-    if (entry >= 0) tl_upsample_list(entry, s.albedo, f0);
+#if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
+    // a pixel left to the light-fixup pass: c holds no light yet (its sums are 0 here)
+    if (entry >= 0) tl_upsample_list(entry, lit_albedo, f0, min(c, vec3(65504.0)));
 #endif
     o_color = vec4(min(c, vec3(65504.0)), alpha);
 }

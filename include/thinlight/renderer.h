@@ -422,7 +422,7 @@ typedef enum tl_target_id {
     TL_TARGET_LIGHT_RT0,      /**< light_scale below 1: RT0 of that nearest sample, the light buffer's size */
     TL_TARGET_LIGHT_OFFSET,   /**< light_scale below 1: R8, that sample's pixel within its block (x + 4 y; 16: its centre) */
     TL_TARGET_LIGHT_FIXUP,    /**< light_scale below 1: a storage buffer, the count of re-lit pixels and (tiled)
-                                   the list the fix-up pass re-lights: up to a quarter of the frame's pixels */
+                                   the list the fix-up pass re-lights: up to an eighth of the frame's pixels */
     TL_TARGET_OPAQUE_DEPTH,   /**< stipple: the opaque surfaces' depth (depth's format); the material pass tests against it */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;

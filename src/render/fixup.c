@@ -24,8 +24,8 @@ tl_result tl__fixup_configure(tl__device *dev, tl__fixup *f, size_t capacity)
     if (f->buffer && f->capacity == capacity) return TL_OK;
     const GladGLContext *gl = &dev->gl;
     tl__fixup_release(dev, f);
-    size_t bytes = 16u + 16u * capacity;
-    if (bytes > dev->lim.storage_max) capacity = (dev->lim.storage_max - 16u) / 16u, bytes = 16u + 16u * capacity;
+    size_t bytes = 16u + 32u * capacity; /* counters, then two uvec4 per entry */
+    if (bytes > dev->lim.storage_max) capacity = (dev->lim.storage_max - 16u) / 32u, bytes = 16u + 32u * capacity;
     gl->CreateBuffers(1, &f->buffer);
     gl->NamedBufferStorage(f->buffer, (GLsizeiptr)bytes, NULL, 0);
     tl__gl_label(gl, GL_BUFFER, f->buffer, "buffer.fixup");

@@ -52,14 +52,14 @@ const tl__pass_def tl__pass_light_reduce = {
 /* ---- the edge fix-up (fixup.c) ---------------------------------------------------------------- */
 
 /* The count of re-lit pixels, and with tiled lists the list of the pixels the material pass leaves
- * to the fix-up pass: a quarter of the frame's pixels, 16 bytes each (4 B/px); past it the
+ * to the fix-up pass: an eighth of the frame's pixels, 32 bytes each (4 B/px); past it the
  * material pass re-lights them itself. */
 static size_t tl__fixup_capacity(const tl_frame_plan *p)
 {
-    return p->light_strategy == TL_LIGHT_STRATEGY_TILED ? ((size_t)p->width * p->height + 3u) / 4u : 0u;
+    return p->light_strategy == TL_LIGHT_STRATEGY_TILED ? ((size_t)p->width * p->height + 7u) / 8u : 0u;
 }
 
-static size_t tl__fixup_bytes(const tl_frame_plan *p) { return 16u + 16u * tl__fixup_capacity(p); }
+static size_t tl__fixup_bytes(const tl_frame_plan *p) { return 16u + 32u * tl__fixup_capacity(p); }
 
 static const tl__target_def tl__target_light_fixup = {TL__TARGET(LIGHT_FIXUP, "light.fixup"),
                                                       .buffer_bytes = tl__fixup_bytes, .store = TL__STORE_LISTS};
