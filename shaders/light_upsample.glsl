@@ -24,7 +24,7 @@
 #include "frame.glsl"
 #include "light_eval.glsl"
 #include "object.glsl"
-#include "tiles.glsl" // the visible lights block, and the tile lists
+#include "tile_lights.glsl" // the visible lights block, the tile lists and their sums
 #ifndef TL_UPSAMPLE_TILES
 layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
 #endif
@@ -107,25 +107,6 @@ float tl_upsample_gather(vec4 rt0_f, vec3 n_f, float power, float z_f, vec2 dz, 
     return total;
 }
 
-// One light's clamped terms added to the sums; nothing when it cannot reach p (as lights_tiled.glsl).
-void tl_upsample_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout vec3 diffuse, inout vec3 specular,
-                     inout vec3 fresnel)
-{
-    int type = int(l.color_type.w);
-    if (type != 3) {
-        vec3 to_light = l.position_radius.xyz - p;
-        float d2 = dot(to_light, to_light);
-        if (d2 >= l.position_radius.w * l.position_radius.w) return;
-        if (type == 2 && d2 > 0.0 && dot(-to_light, l.direction_cos_outer.xyz) <= l.direction_cos_outer.w * sqrt(d2)) return;
-    }
-    vec3 t = tl_light_weights(type, p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz, l.cos_inner.x,
-                              l.direction_cos_outer.w, l.cos_inner.y);
-    const vec3 fp16_max = vec3(65504.0);
-    diffuse += min(l.color_type.rgb * t.x, fp16_max);
-    specular += min(l.color_type.rgb * t.y, fp16_max);
-    fresnel += min(l.color_type.rgb * t.z, fp16_max);
-}
-
 // The light of a pixel inside an interior quad (light_reduce.frag.glsl, flag 32: four texels on
 // one plane with one normal) whose own normal is that one: the weights would all be 1, so one
 // bilinear fetch per target, before any weight is computed (most pixels of flat surfaces).
@@ -163,18 +144,11 @@ void tl_upsample_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 l
     float shape = tl_lobe_shape(gloss);
     vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
 #ifdef TL_UPSAMPLE_TILES
-    for (uint i = 0u; i < u_light_counts.x; i++) tl_upsample_add(tl_lights[i], p, n, v, shape, diffuse, specular, fresnel);
-    uint tile = tl_tile_index(ivec2(gl_FragCoord.xy)), chunks = tl_tile_chunks();
-    for (uint c = 0u; c < chunks; c++) {
-        uvec2 h = tl_tile_headers[tl_tile_header_index(tile, c)];
-        uint count = tl_tile_list_size(h, c);
-        for (uint k = 0u; k < count; k++)
-            tl_upsample_add(tl_lights[tl_tile_list_light(h, c, k)], p, n, v, shape, diffuse, specular, fresnel);
-    }
+    tl_tile_lights_add(tl_tile_index(ivec2(gl_FragCoord.xy)), p, n, v, shape, diffuse, specular, fresnel);
 #else
     uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
     for (uint i = 0u; i < count; i++)
-        tl_upsample_add(tl_lights[tl_light_indices[first + i]], p, n, v, shape, diffuse, specular, fresnel);
+        tl_tiled_add(tl_lights[tl_light_indices[first + i]], p, n, v, shape, diffuse, specular, fresnel);
 #endif
 #ifndef TL_FRESNEL_SUMS
     specular += fresnel; // one sum: Fresnel is applied per pixel
