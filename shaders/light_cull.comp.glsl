@@ -9,7 +9,17 @@
 #include "tiles.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
+#ifdef TL_DEPTH_SAMPLES // forward with MSAA: the bounds of every sample
+layout(binding = TL_UNIT_DEPTH) uniform sampler2DMS u_depth;
+#define TL_CULL_SAMPLES TL_DEPTH_SAMPLES
+#define tl_cull_depth(p, s) texelFetch(u_depth, p, s).r
+#define tl_cull_size() textureSize(u_depth)
+#else
 layout(binding = TL_UNIT_DEPTH) uniform sampler2D u_depth;
+#define TL_CULL_SAMPLES 1
+#define tl_cull_depth(p, s) texelFetch(u_depth, p, 0).r
+#define tl_cull_size() textureSize(u_depth, 0)
+#endif
 
 // The tile's frustum: four side planes through the eye (inward unit normals) and a bounding
 // sphere of its part between the depth bounds (for the cone test).
@@ -109,20 +119,22 @@ void main()
     uint chunk = gl_GlobalInvocationID.z;
     if (tile.x >= u_tiles.y || tile.y >= u_tiles.z || chunk >= tl_tile_chunks()) return;
     uint index = tl_tile_header_index(tile.y * u_tiles.y + tile.x, chunk);
-    ivec2 size = textureSize(u_depth, 0);
+    ivec2 size = tl_cull_size();
     ivec2 p0 = ivec2(tile * u_tiles.x), p1 = min(p0 + int(u_tiles.x), size);
     // depth bounds of the tile's surfaces (window depth: nearer is smaller, larger when reversed)
     bool reversed = u_depth_params.w > 0.5;
     float nearest = reversed ? -1.0 : 2.0, farthest = reversed ? 2.0 : -1.0;
     uint pixels = 0u;
     for (int y = p0.y; y < p1.y; y++)
-        for (int x = p0.x; x < p1.x; x++) {
-            float d = texelFetch(u_depth, ivec2(x, y), 0).r;
-            if (d == u_clear_depth) continue;
-            nearest = reversed ? max(nearest, d) : min(nearest, d);
-            farthest = reversed ? min(farthest, d) : max(farthest, d);
-            pixels++;
-        }
+        for (int x = p0.x; x < p1.x; x++)
+            for (int s = 0; s < TL_CULL_SAMPLES; s++) {
+                float d = tl_cull_depth(ivec2(x, y), s);
+                if (d == u_clear_depth) continue;
+                nearest = reversed ? max(nearest, d) : min(nearest, d);
+                farthest = reversed ? min(farthest, d) : max(farthest, d);
+                pixels++;
+            }
+    pixels = (pixels + uint(TL_CULL_SAMPLES) - 1u) / uint(TL_CULL_SAMPLES);
     if (pixels == 0u) {
         tl_tile_headers[index] = uvec2(0u, 0u);
         return;
@@ -130,10 +142,11 @@ void main()
     vec2 ndc0 = vec2(p0) * u_inv_size * 2.0 - 1.0, ndc1 = vec2(p1) * u_inv_size * 2.0 - 1.0;
     tl_tile_frustum f = tl_tile_frustum_make(ndc0, ndc1, tl_distance(nearest), tl_distance(farthest));
     for (int y = p0.y; y < p1.y; y++)
-        for (int x = p0.x; x < p1.x; x++) {
-            float d = texelFetch(u_depth, ivec2(x, y), 0).r;
-            if (d != u_clear_depth) f.depth_mask |= 1u << tl_slice(f, tl_distance(d));
-        }
+        for (int x = p0.x; x < p1.x; x++)
+            for (int s = 0; s < TL_CULL_SAMPLES; s++) {
+                float d = tl_cull_depth(ivec2(x, y), s);
+                if (d != u_clear_depth) f.depth_mask |= 1u << tl_slice(f, tl_distance(d));
+            }
     uint first = u_light_counts.x + chunk * uint(TL_CULL_CHUNK);
     uint last = min(first + uint(TL_CULL_CHUNK), u_light_counts.x + u_light_counts.y), n = 0u;
     for (uint i = first; i < last; i++) n += tl_light_in_tile(f, tl_lights[i]) ? 1u : 0u;

@@ -20,21 +20,8 @@
 #ifndef TL_LIGHT_UPSAMPLE_GLSL
 #define TL_LIGHT_UPSAMPLE_GLSL
 
-#include "codec.glsl"
-#include "frame.glsl"
-#include "light_eval.glsl"
-#include "object.glsl"
-#include "tile_lights.glsl" // the visible lights block, the tile lists and their sums
-#ifndef TL_UPSAMPLE_TILES
-layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
-#endif
-// light.fixup (fixup.c): (compute groups of 64 listed pixels, 1, 1, re-lit pixels), then the list
-// of the pixels left to the light-fixup pass (tiled), two uvec4 each: pixel, albedo and specular
-// colour as halves; the colour the material pass wrote without the light, as halves
-layout(std430, binding = TL_SSBO_FIXUP) buffer tl_fixup_buffer { uvec4 tl_fixup_counters; uvec4 tl_fixup_entries[]; };
-layout(early_fragment_tests) in; // the counts and the list: only the pixels the depth test keeps
+#include "light_relight.glsl" // RT0 and its decoding, the fix-up buffer, the re-lighting from lists
 
-layout(binding = TL_UNIT_RT0) uniform sampler2D u_rt0;
 layout(binding = TL_UNIT_LIGHT_DEPTH) uniform sampler2D u_light_depth;
 layout(binding = TL_UNIT_LIGHT_RT0) uniform sampler2D u_light_rt0;
 layout(binding = TL_UNIT_LIGHT_OFFSET) uniform sampler2D u_light_offset;
@@ -43,21 +30,6 @@ const float TL_UPSAMPLE_CREDIBLE = 0.5;    // below it, the pixel is re-lit
 const float TL_UPSAMPLE_DEPTH_RELATIVE = 0.01;
 const float TL_UPSAMPLE_NORMAL_POWER = 16.0; // cos 10 degrees: 0.78, cos 30 degrees: 0.1
 const float TL_UPSAMPLE_LOBE_POWER_MAX = 256.0;
-
-vec4 tl_upsample_rt0(vec4 t) // normal and gloss, as the light pass decodes them
-{
-#ifdef TL_RT0_RGB10A2
-    uvec4 q = uvec4(t * vec4(1023.0, 1023.0, 1023.0, 3.0) + 0.5);
-    return tl_rt0_decode_rgb10a2(q.x | (q.y << 10) | (q.z << 20) | (q.w << 30));
-#else
-    return tl_rt0_decode_rgba8(tl_unorm8_bytes(t));
-#endif
-}
-
-float tl_upsample_linear_depth(float d)
-{
-    return tl_depth_linearize(d, u_depth_params.x, u_depth_params.y, u_depth_params.z, u_depth_params.w > 0.5);
-}
 
 // The weighted sums of the 4 texels (diffuse with its alpha, specular, Fresnel) and their weight.
 // Depth and offset come by textureGather (the targets clamp to their edge, as the texel indices
@@ -85,9 +57,9 @@ float tl_upsample_gather(vec4 rt0_f, vec3 n_f, float power, float z_f, vec2 dz, 
         uint off = uint(og[g] * 255.0 + 0.5) & 31u; // 32: the interior flag
         vec2 c = off == 16u ? (vec2(q) + 0.5) * k : vec2(q * (1 << TL_UPSAMPLE) + ivec2(off & 3u, off >> 2)) + 0.5; // lit there
         float predicted = z_f + dot(dz, c - gl_FragCoord.xy);
-        float wz = clamp(1.0 - abs(tl_upsample_linear_depth(d) - predicted) / tol_z, 0.0, 1.0);
+        float wz = clamp(1.0 - abs(tl_relight_linear_depth(d) - predicted) / tol_z, 0.0, 1.0);
         vec4 t = texelFetch(u_light_rt0, q, 0); // the pixel's own RT0 texel (a flat surface): weight 1
-        float wn = tl_rt0_same_normal(t, rt0_f) ? 1.0 : pow(clamp(dot(tl_upsample_rt0(t).xyz, n_f), 0.0, 1.0), power);
+        float wn = tl_rt0_same_normal(t, rt0_f) ? 1.0 : pow(clamp(dot(tl_relight_rt0(t).xyz, n_f), 0.0, 1.0), power);
         w[j] = wb * wz * wn;
         total += w[j];
     }
@@ -132,33 +104,6 @@ bool tl_upsample_interior(vec4 rt0, out vec4 ld, out vec3 ls, out vec3 lf)
     return true;
 }
 
-// The fix-up here, for the pixels the light-fixup pass does not take: the pixel's own light sums,
-// over the directional lights and its tile's lists (tiled: the tiles are in the frame's pixels and
-// their depth bounds cover every pixel: a list that filled up), or its object's light list
-// (volumes: the forward path's, every visible light whose range reaches the object's bounds).
-void tl_upsample_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 ls, out vec3 lf)
-{
-    vec2 ndc = gl_FragCoord.xy * u_inv_size * 2.0 - 1.0;
-    vec3 p = tl_view_position(z_f, ndc, u_ray_params);
-    vec3 v = normalize(-p);
-    float shape = tl_lobe_shape(gloss);
-    vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
-#ifdef TL_UPSAMPLE_TILES
-    tl_tile_lights_add(tl_tile_index(ivec2(gl_FragCoord.xy)), p, n, v, shape, diffuse, specular, fresnel);
-#else
-    uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
-    for (uint i = 0u; i < count; i++)
-        tl_tiled_add(tl_lights[tl_light_indices[first + i]], p, n, v, shape, diffuse, specular, fresnel);
-#endif
-#ifndef TL_FRESNEL_SUMS
-    specular += fresnel; // one sum: Fresnel is applied per pixel
-    fresnel = vec3(0.0);
-#endif
-    ld = vec4(diffuse, tl_luminance(specular));
-    ls = specular;
-    lf = fresnel;
-}
-
 // The light at this pixel: upsampled, or re-lit where no reduced texel is credible (true). A
 // re-lit pixel is counted; with tile lists it is listed for the light-fixup pass while the list has
 // room (entry: its index; its light is left at 0 here and added to HDR by that pass), else re-lit here.
@@ -171,7 +116,7 @@ bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out ve
     vec3 ls, lf;
     float total = 1.0;
     if (!tl_upsample_interior(rt0, ld, ls, lf)) {
-        ng = tl_upsample_rt0(rt0);
+        ng = tl_relight_rt0(rt0);
         // a specular material's lobe: cos(angle)^power falls as the lobe does (exp(-power angle^2 / 2))
         float power = glossy ? clamp(tl_gloss_to_specular_power(ng.w), TL_UPSAMPLE_NORMAL_POWER, TL_UPSAMPLE_LOBE_POWER_MAX)
                              : TL_UPSAMPLE_NORMAL_POWER;
@@ -180,34 +125,21 @@ bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out ve
     bool relit = total < TL_UPSAMPLE_CREDIBLE;
     if (relit) {
         uint index = atomicAdd(tl_fixup_counters.w, 1u);
-#ifdef TL_UPSAMPLE_TILES
+#ifdef TL_RELIGHT_TILES
         if (index < uint(tl_fixup_entries.length()) / 2u) {
             entry = int(index);
             diffuse = specular = fresnel = vec3(0.0);
             return true;
         }
 #endif
-        tl_upsample_relight(ng.xyz, ng.w, z_f, ld, ls, lf);
+        tl_relight(ng.xyz, ng.w, z_f, ld, ls, lf);
     } else {
         float inv = 1.0 / total;
         ld *= inv;
         ls *= inv;
         lf *= inv;
     }
-    diffuse = tl_finite(ld.rgb);
-    specular = fresnel = vec3(0.0);
-#if defined(TL_SPECULAR_EXACT)
-    specular = tl_finite(ls);
-#ifdef TL_FRESNEL_SUMS
-    fresnel = tl_finite(lf);
-#endif
-#elif defined(TL_SPECULAR_COMPACT)
-    if (relit) specular = tl_finite(ls);
-    else {
-        float lum = tl_luminance(diffuse);
-        specular = lum > 1e-8 ? diffuse * (min(ld.a, 65504.0) / lum) : vec3(0.0);
-    }
-#endif
+    tl_relight_finish(ld, ls, lf, relit, diffuse, specular, fresnel);
     return relit;
 }
 

@@ -22,19 +22,28 @@ vec3 tl_finite(vec3 c) // FP16 sums of many bright lights can reach Inf: keep ta
 // files are included once, at their first #include: the ones both blocks below use come first
 #include "object.glsl"
 #include "tiles.glsl"
+#if (defined(TL_UPSAMPLE) || defined(TL_MSAA_LIGHT)) && !defined(TL_NO_LIGHTS)
+#include "light_relight.glsl" // re-lighting from lists: the light scale's fix-up and MSAA's edges
+#endif
 #if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
 #include "light_upsample.glsl"
 #endif
 #if defined(TL_STIPPLE) && !defined(TL_NO_LIGHTS)
 #include "stipple_opaque.glsl" // transparent layers took some of the G-buffer's pixels
 #endif
+#if defined(TL_MSAA_LIGHT) && !defined(TL_NO_LIGHTS)
+#include "light_msaa.glsl" // multisampled over the one-sample light buffer
+#endif
 
 void main()
 {
 #if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
     // the light scale: the pixel's view depth and its plane's slope, before any discard
-    float z_f = tl_upsample_linear_depth(gl_FragCoord.z);
+    float z_f = tl_relight_linear_depth(gl_FragCoord.z);
     vec2 dz = vec2(dFdx(z_f), dFdy(z_f));
+#endif
+#if defined(TL_MSAA_LIGHT) && !defined(TL_NO_LIGHTS)
+    vec2 dzw = vec2(dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z)); // MSAA: the fragment's depth slope
 #endif
 #if defined(TL_STIPPLE) && !defined(TL_NO_LIGHTS)
     float z_s = tl_stipple_linear_depth(gl_FragCoord.z);
@@ -48,6 +57,10 @@ void main()
     // HDR's alpha (read by no pass) marks the pixels the fix-up re-lit: 0.5 (tests, the figures)
     int entry;
     if (tl_upsample_light(z_f, dz, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular, fresnel, entry)) alpha = 0.5;
+#elif defined(TL_MSAA_LIGHT) && !defined(TL_NO_LIGHTS)
+    if (tl_msaa_light(dzw, tl_material_normal(), s.gloss, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular,
+                      fresnel))
+        alpha = 0.5; // re-lit here, as the light scale's fix-up marks its pixels
 #elif defined(TL_STIPPLE) && !defined(TL_NO_LIGHTS)
     if (tl_stipple_opaque_light(z_s, dz_s, tl_material_normal(), s.gloss, any(greaterThan(s.specular, vec3(0.0))), diffuse,
                                 specular, fresnel))

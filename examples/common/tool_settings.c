@@ -20,10 +20,12 @@ const char tl_tool_settings_help[] =
     "  --tile-size T         tiled: 8, 16 (default) or 32 pixels\n"
     "  --tiled-shading K     tiled: fragment (default) or compute\n"
     "  --fxaa P              off, 12, 29 (default) or 39\n"
+    "  --msaa N              1 (default: off), 2, 4 or 8 samples: thin-lpp's material pass, or forward,\n"
+    "                        multisampled (with --fxaa off for MSAA alone)\n"
     "  --exposure E          exposure before tone mapping (default 1; above 0, at most 1e6)\n";
 
 enum { S_MODE, S_NO_PREPASS, S_STRATEGY, S_DEPTH, S_RT0, S_LIGHT_BUFFER, S_LIGHT_FORMAT, S_LIGHTING, S_FRESNEL,
-       S_AMBIENT, S_TILE_SIZE, S_TILED_SHADING, S_FXAA, S_EXPOSURE, S_LIGHT_SCALE, S_TRANSPARENCY };
+       S_AMBIENT, S_TILE_SIZE, S_TILED_SHADING, S_FXAA, S_EXPOSURE, S_LIGHT_SCALE, S_TRANSPARENCY, S_MSAA };
 
 static const char *const depth_names[] = {"d24", "d32f-reversed", NULL};
 static const int depth_values[] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
@@ -41,6 +43,8 @@ static const char *const light_scale_names[] = {"1", "0.5", "0.25", NULL};
 static const int light_scale_values[] = {1, 2, 4}; /* the divisor */
 static const char *const transparency_names[] = {"auto", "forward", "stipple", NULL};
 static const int transparency_values[] = {TL_TRANSPARENCY_DEFAULT, TL_TRANSPARENCY_FORWARD, TL_TRANSPARENCY_STIPPLE};
+static const char *const msaa_names[] = {"1", "2", "4", "8", NULL};
+static const int msaa_values[] = {1, 2, 4, 8};
 static const char *const fxaa_names[] = {"off", "12", "29", "39", NULL};
 static const int fxaa_values[] = {TL_FXAA_OFF, TL_FXAA_12, TL_FXAA_29, TL_FXAA_39};
 
@@ -62,6 +66,7 @@ static const tl_opt settings_opts[] = {
     {"--tile-size", TL_OPT_TEXT, .id = S_TILE_SIZE, CHOICE(tile)},
     {"--tiled-shading", TL_OPT_TEXT, .id = S_TILED_SHADING, CHOICE(shading)},
     {"--fxaa", TL_OPT_TEXT, .id = S_FXAA, CHOICE(fxaa)},
+    {"--msaa", TL_OPT_TEXT, .id = S_MSAA, CHOICE(msaa)},
     {"--exposure", TL_OPT_REAL, .id = S_EXPOSURE, .min = 0.0, .max = 1e6, .flags = TL_OPT_MIN_OPEN},
 };
 
@@ -100,6 +105,7 @@ int tl_tool_settings_apply(const char *tool, tl_renderer_desc *d, const tl_opt *
     case S_EXPOSURE: d->options.exposure = (float)v->f[0]; break;
     case S_LIGHT_SCALE: d->options.light_scale = 1.0f / (float)u; break;
     case S_TRANSPARENCY: d->options.transparency = (tl_transparency)u; break;
+    case S_MSAA: d->options.msaa = (uint32_t)u; break;
     default: return tl__settings_named(tool, d, o->id, v->text);
     }
     return 1;

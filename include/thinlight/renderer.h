@@ -290,6 +290,14 @@ typedef struct tl_renderer_options {
     float light_scale;
     /** Alpha-blended materials: auto (default), forward or stipple (tl_transparency). */
     tl_transparency transparency;
+    /** Multisample antialiasing (docs/antialiasing.md): samples per pixel, 2, 4 or 8 (at most the
+     *  context's GL_MAX_SAMPLES); 0 or 1, the default: off. thin-lpp keeps its G-buffer and light
+     *  buffer at one sample and runs the material pass multisampled, each sample taking the light
+     *  of the light-buffer texel that matches its surface (or re-lit where none does); forward
+     *  renders multisampled. The resolve tone-maps every sample before averaging. Planned without
+     *  (tl_frame_plan.msaa_reason says why) in thin-deferred and fat, at a light scale below 1 and
+     *  with the screen-space effects, which read a one-sample HDR or depth. */
+    uint32_t msaa;
     tl_fxaa_preset fxaa;               /**< default 29 */
     float fxaa_edge_threshold;         /**< default 0.166 (relative local contrast) */
     float fxaa_edge_threshold_min;     /**< default 0.0833 (absolute, in gamma-encoded luma) */
@@ -424,6 +432,7 @@ typedef enum tl_target_id {
     TL_TARGET_LIGHT_FIXUP,    /**< light_scale below 1: a storage buffer, the count of re-lit pixels and (tiled)
                                    the list the fix-up pass re-lights: up to an eighth of the frame's pixels */
     TL_TARGET_OPAQUE_DEPTH,   /**< stipple: the opaque surfaces' depth (depth's format); the material pass tests against it */
+    TL_TARGET_DEPTH_MSAA,     /**< thin-lpp with MSAA: the multisampled depth the material pass tests against (depth's format) */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -463,7 +472,8 @@ typedef struct tl_plan_target {
     uint32_t width;           /**< size of its first level: the frame's, or divided and rounded up */
     uint32_t height;          /**< (never 0) */
     uint32_t levels;          /**< mip levels (1 for most targets; each level is half the last, rounded down, at least 1) */
-    size_t bytes;             /**< memory of all its levels; bytes_per_pixel is this over the frame's pixels, rounded up */
+    size_t bytes;             /**< memory of all its levels and samples; bytes_per_pixel is this over the frame's pixels, rounded up */
+    uint32_t samples;         /**< samples per pixel: 1, or the MSAA count of a multisampled target */
 } tl_plan_target;
 
 /** One allocation that targets with disjoint lifetimes and view-compatible formats share
@@ -515,6 +525,8 @@ typedef struct tl_frame_plan {
     char light_scale_reason[96];                 /**< why, when the options asked for a scale below 1 */
     tl_transparency transparency;                /**< forward or stipple (never auto); forward without blended materials */
     char transparency_reason[96];                /**< why, when the scene has blended materials */
+    uint32_t msaa;                               /**< samples per pixel of the multisampled targets; 1: no MSAA */
+    char msaa_reason[96];                        /**< how MSAA is applied, or why not, when the options ask for it */
     size_t program_count;                        /**< entries used in programs */
     tl_plan_program programs[TL_PLAN_MAX_PROGRAMS]; /**< every permutation the frame compiles */
 } tl_frame_plan;

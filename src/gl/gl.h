@@ -118,6 +118,7 @@ typedef struct tl__target_desc {
     const char *label;      /* glObjectLabel of the texture, e.g. "gbuffer.rt0" */
     GLenum internal_format; /* a format tl__format_lookup knows */
     uint32_t width, height; /* 1 .. GL_MAX_TEXTURE_SIZE */
+    uint32_t samples;       /* 0 or 1: GL_TEXTURE_2D; 2 .. GL_MAX_SAMPLES: GL_TEXTURE_2D_MULTISAMPLE (one level, fixed sample locations) */
 } tl__target_desc;
 
 typedef struct tl__target {
@@ -125,7 +126,8 @@ typedef struct tl__target {
     GLenum internal_format;
     uint32_t width, height; /* of level 0 */
     uint32_t levels;
-    size_t bytes; /* bytes_per_pixel * width * height over its levels */
+    uint32_t samples; /* 1, or the samples of a GL_TEXTURE_2D_MULTISAMPLE texture */
+    size_t bytes; /* bytes_per_pixel * width * height over its levels, times its samples */
 } tl__target;
 
 /* TL_ERROR_UNSUPPORTED for unknown formats, TL_ERROR_LIMIT beyond GL_MAX_TEXTURE_SIZE,

@@ -103,33 +103,46 @@ tl_result tl__target_create_levels(const GladGLContext *gl, const tl__target_des
         return TL_ERROR_LIMIT;
     }
 
+    uint32_t samples = desc->samples > 1 ? desc->samples : 1u;
+    GLint max_samples = 1;
+    if (samples > 1) gl->GetIntegerv(GL_MAX_SAMPLES, &max_samples);
+    if (samples > (uint32_t)max_samples) {
+        tl__msg(msg, msg_size, "target \"%s\": %u samples, the context allows %d (GL_MAX_SAMPLES)", label, (unsigned)samples,
+                (int)max_samples);
+        return TL_ERROR_UNSUPPORTED;
+    }
     GLuint tex = 0;
-    gl->CreateTextures(GL_TEXTURE_2D, 1, &tex);
+    gl->CreateTextures(samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, 1, &tex);
     if (!tex) {
         tl__msg(msg, msg_size, "target \"%s\": glCreateTextures failed", label);
         return TL_ERROR_GL;
     }
     uint32_t side = desc->width > desc->height ? desc->width : desc->height;
-    if (!levels) levels = 1;
+    if (!levels || samples > 1) levels = 1;
     while (levels > 1 && (side >> (levels - 1)) == 0) levels--; /* GL's chain ends at 1x1 */
-    gl->TextureStorage2D(tex, (GLsizei)levels, f->internal_format, (GLsizei)desc->width,
-                         (GLsizei)desc->height);
+    if (samples > 1)
+        gl->TextureStorage2DMultisample(tex, (GLsizei)samples, f->internal_format, (GLsizei)desc->width,
+                                        (GLsizei)desc->height, GL_TRUE);
+    else
+        gl->TextureStorage2D(tex, (GLsizei)levels, f->internal_format, (GLsizei)desc->width, (GLsizei)desc->height);
     /* Storage that failed (GL_OUT_OF_MEMORY, ...) leaves the texture mutable; checking this avoids
      * glGetError, which would also consume the caller's pending errors. */
     GLint immutable = GL_FALSE;
     gl->GetTextureParameteriv(tex, GL_TEXTURE_IMMUTABLE_FORMAT, &immutable);
     if (!immutable) {
         gl->DeleteTextures(1, &tex);
-        tl__msg(msg, msg_size, "target \"%s\": could not allocate %ux%u %s (%zu bytes)", label,
-                (unsigned)desc->width, (unsigned)desc->height, f->name,
-                pixels * f->bytes_per_pixel);
+        tl__msg(msg, msg_size, "target \"%s\": could not allocate %ux%u %s x %u samples (%zu bytes)", label,
+                (unsigned)desc->width, (unsigned)desc->height, f->name, (unsigned)samples,
+                pixels * f->bytes_per_pixel * samples);
         return TL_ERROR_GL;
     }
-    GLint filter = linear ? GL_LINEAR : GL_NEAREST;
-    gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, filter);
-    gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
-    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    if (samples == 1) { /* a multisampled texture has no sampler state: texelFetch reads it */
+        GLint filter = linear ? GL_LINEAR : GL_NEAREST;
+        gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, filter);
+        gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
+        gl->TextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl->TextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
     tl__gl_label(gl, GL_TEXTURE, tex, desc->label);
 
     out->texture = tex;
@@ -137,10 +150,11 @@ tl_result tl__target_create_levels(const GladGLContext *gl, const tl__target_des
     out->width = desc->width;
     out->height = desc->height;
     out->levels = levels;
+    out->samples = samples;
     out->bytes = 0;
     for (uint32_t k = 0; k < levels; k++) {
         size_t w = desc->width >> k, h = desc->height >> k;
-        out->bytes += (w ? w : 1u) * (h ? h : 1u) * f->bytes_per_pixel;
+        out->bytes += (w ? w : 1u) * (h ? h : 1u) * f->bytes_per_pixel * samples;
     }
     return TL_OK;
 }
@@ -157,18 +171,22 @@ tl_result tl__target_create_view(const GladGLContext *gl, const tl__target *stor
         return TL_ERROR_INVALID_ARGUMENT;
     }
     GLuint tex = 0;
+    int ms = storage->samples > 1;
     gl->GenTextures(1, &tex); /* a view needs a name that was never bound: not glCreateTextures */
-    gl->TextureView(tex, GL_TEXTURE_2D, storage->texture, internal_format, 0, 1, 0, 1);
-    gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl->TextureView(tex, ms ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, storage->texture, internal_format, 0, 1, 0, 1);
+    if (!ms) {
+        gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        gl->TextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        gl->TextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
     tl__gl_label(gl, GL_TEXTURE, tex, label);
     out->texture = tex;
     out->internal_format = internal_format;
     out->width = storage->width;
     out->height = storage->height;
     out->levels = 1;
+    out->samples = ms ? storage->samples : 1u;
     out->bytes = 0;
     return TL_OK;
 }
@@ -197,6 +215,7 @@ tl_result tl__target_create_level(const GladGLContext *gl, const tl__target *sto
     out->width = w ? w : 1u;
     out->height = h ? h : 1u;
     out->levels = 1;
+    out->samples = 1;
     return TL_OK;
 }
 
@@ -231,6 +250,45 @@ static size_t tl__transfer_bytes(GLenum format, GLenum type)
     }
 }
 
+/* A multisampled target resolved into a one-sample copy by a blit: colour averaged over the
+ * samples, depth as GL's resolve picks one sample. The state a blit obeys (scissor, rasterizer
+ * discard, colour and depth masks) is set for it and restored. */
+static tl_result tl__target_resolve(const GladGLContext *gl, const tl__target *t, tl__target *out, char *msg,
+                                    size_t msg_size)
+{
+    const tl__format_info *f = tl__format_lookup(t->internal_format);
+    tl__target_desc td = {"target.resolve", t->internal_format, t->width, t->height, 1};
+    tl_result res = tl__target_create(gl, &td, out, msg, msg_size);
+    if (res != TL_OK || !f) return res != TL_OK ? res : TL_ERROR_UNSUPPORTED;
+    int color = f->kind == TL__FORMAT_COLOR;
+    const tl__target *src = t;
+    GLuint fbo[2] = {0, 0};
+    res = tl__framebuffer_create(gl, "fbo.resolve.read", color ? &src : NULL, color, color ? NULL : t, &fbo[0], msg, msg_size);
+    const tl__target *dst = out;
+    if (res == TL_OK)
+        res = tl__framebuffer_create(gl, "fbo.resolve.draw", color ? &dst : NULL, color, color ? NULL : out, &fbo[1], msg, msg_size);
+    if (res == TL_OK) {
+        GLboolean scissor = gl->IsEnabled(GL_SCISSOR_TEST), discard = gl->IsEnabled(GL_RASTERIZER_DISCARD);
+        GLboolean cmask[4], dmask;
+        gl->GetBooleani_v(GL_COLOR_WRITEMASK, 0, cmask);
+        gl->GetBooleanv(GL_DEPTH_WRITEMASK, &dmask);
+        gl->Disable(GL_SCISSOR_TEST);
+        gl->Disable(GL_RASTERIZER_DISCARD);
+        gl->ColorMaski(0, GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        gl->DepthMask(GL_TRUE);
+        gl->BlitNamedFramebuffer(fbo[0], fbo[1], 0, 0, (GLint)t->width, (GLint)t->height, 0, 0, (GLint)t->width,
+                                 (GLint)t->height, color ? GL_COLOR_BUFFER_BIT : GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        if (scissor) gl->Enable(GL_SCISSOR_TEST);
+        if (discard) gl->Enable(GL_RASTERIZER_DISCARD);
+        gl->ColorMaski(0, cmask[0], cmask[1], cmask[2], cmask[3]);
+        gl->DepthMask(dmask);
+    }
+    tl__framebuffer_destroy(gl, &fbo[0]);
+    tl__framebuffer_destroy(gl, &fbo[1]);
+    if (res != TL_OK) tl__target_destroy(gl, out);
+    return res;
+}
+
 tl_result tl__target_read(const GladGLContext *gl, const tl__target *t, GLenum format, GLenum type,
                           void *dst, size_t dst_size, char *msg, size_t msg_size)
 {
@@ -256,10 +314,18 @@ tl_result tl__target_read(const GladGLContext *gl, const tl__target *t, GLenum f
                 (unsigned)t->width, (unsigned)t->height, need, dst_size);
         return TL_ERROR_LIMIT;
     }
+    tl__target resolved;
+    memset(&resolved, 0, sizeof resolved);
+    if (t->samples > 1) {
+        tl_result res = tl__target_resolve(gl, t, &resolved, msg, msg_size);
+        if (res != TL_OK) return res;
+        t = &resolved;
+    }
     tl__pixel_store saved; /* the application's pack state and buffer come back afterwards */
     tl__pixel_store_enter(gl, 0, &saved);
     gl->GetTextureImage(t->texture, 0, format, type, (GLsizei)need, dst);
     tl__pixel_store_leave(gl, &saved);
+    tl__target_destroy(gl, &resolved);
     return TL_OK;
 }
 

@@ -20,11 +20,11 @@
     X(IMAGE_LIGHT_SPECULAR, 1)                                                                    \
     X(IMAGE_HDR, 2)                                                                               \
     X(IMAGE_LIGHT_FRESNEL, 3)                                                                     \
-    X(UNIT_ALBEDO_TEXTURE, 25)   /* material textures (units below 25 are the targets') */        \
-    X(UNIT_NORMAL_TEXTURE, 26)                                                                    \
-    X(UNIT_MR_TEXTURE, 27)                                                                        \
-    X(UNIT_EMISSIVE_TEXTURE, 28)                                                                  \
-    X(UNIT_OCCLUSION_TEXTURE, 29)                                                                 \
+    X(UNIT_ALBEDO_TEXTURE, 32)   /* material textures (units below 32 are the targets') */        \
+    X(UNIT_NORMAL_TEXTURE, 33)                                                                    \
+    X(UNIT_MR_TEXTURE, 34)                                                                        \
+    X(UNIT_EMISSIVE_TEXTURE, 35)                                                                  \
+    X(UNIT_OCCLUSION_TEXTURE, 36)                                                                 \
     X(CULL_CHUNK, 16384)         /* local lights one light-cull invocation tests (tiles.glsl) */
 
 enum {
@@ -32,7 +32,7 @@ enum {
     TL__BINDING_LIST(TL__BINDING_ENUM)
 #undef TL__BINDING_ENUM
     TL__MATERIAL_TEXTURES = 5,
-    TL__TEXTURE_UNITS_USED = 30, /* units the renderer may bind: 0 .. 29 */
+    TL__TEXTURE_UNITS_USED = 37, /* units the renderer may bind: 0 .. 36 */
     TL__BUFFER_BINDINGS_USED = 6, /* uniform and storage binding points it may bind: 0 .. 5 */
     TL__IMAGE_UNITS_USED = 4     /* image units it may bind: 0 .. 3 */
 };

@@ -57,7 +57,7 @@ static tl_result tl__graph_storage(tl__device *dev, tl__graph *r, tl__storage_po
     for (size_t i = 0; i < pool->count; i++) {
         const tl__target *t = &pool->storage[i];
         if (t->internal_format != td->internal_format || t->width != td->width || t->height != td->height ||
-            t->levels != levels || pool->linear[i] != linear)
+            t->levels != levels || t->samples != (td->samples > 1 ? td->samples : 1u) || pool->linear[i] != linear)
             continue;
         r->blocks[b] = *t;
         pool->storage[i] = pool->storage[--pool->count];
@@ -86,7 +86,7 @@ static tl_result tl__graph_block(tl__device *dev, tl__graph *r, tl__storage_pool
         }
     if (r->plan.targets[first]->buffer_bytes) return TL_OK; /* storage buffers: lights.h, tl__tiles_configure */
     const tl_plan_target *ti = &p->target_info[first];
-    tl__target_desc td = {label, ti->format, ti->width, ti->height};
+    tl__target_desc td = {label, ti->format, ti->width, ti->height, ti->samples};
     tl_result res;
     if (members == 1) { /* memory of its own: the target is the texture, with a view per level */
         snprintf(label, sizeof label, "target.%s", tl_target_name((tl_target_id)first));

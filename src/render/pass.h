@@ -56,6 +56,7 @@ typedef struct tl__plan_input {
     char spec_define[48];
     const char *rt0_define;     /* TL_RT0_RGBA8 or TL_RT0_RGB10A2 */
     char material_defines[96];  /* the geometry passes' material switches (leading space each) */
+    uint32_t msaa;              /* samples of the multisampled targets (tl__msaa_samples), 1: no MSAA */
     int stipple;                /* the blended materials go through the G-buffer's 2x2 stipple (pass_stipple.c) */
     char transparency_reason[96];
 } tl__plan_input;

@@ -23,8 +23,19 @@ uint32_t tl__rt0_format(const tl_renderer_options *o)
     return o->rt0 == TL_RT0_RGB10A2 ? GL_RGB10_A2 : GL_RGBA8;
 }
 
+/* MSAA (docs/antialiasing.md): forward's depth and the HDR image of forward and thin-lpp are
+ * multisampled; thin-lpp's G-buffer depth stays at one sample for the light pass, and the material
+ * pass tests against a multisampled depth of its own that the depth pre-pass writes. */
+static uint32_t tl__depth_samples(const tl_renderer_options *o)
+{
+    return o->mode == TL_MODE_FORWARD ? tl__msaa_samples(o) : 1u;
+}
+
 static const tl__target_def tl__target_depth = {TL__TARGET(DEPTH, "depth"), .format_of = tl__depth_format,
-                                                .store = TL__STORE_GBUFFER, .depth = 1};
+                                                .samples_of = tl__depth_samples, .store = TL__STORE_GBUFFER, .depth = 1};
+static const tl__target_def tl__target_depth_msaa = {TL__TARGET(DEPTH_MSAA, "depth.msaa"), .format_of = tl__depth_format,
+                                                     .samples_of = tl__msaa_samples, .store = TL__STORE_GBUFFER,
+                                                     .depth = 1};
 static const tl__target_def tl__target_rt0 = {TL__TARGET(RT0, "rt0"), .format_of = tl__rt0_format,
                                               .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_rt1 = {TL__TARGET(RT1, "rt1"), .format = GL_RGBA8, .store = TL__STORE_GBUFFER};
@@ -36,7 +47,7 @@ static const tl__target_def tl__target_fat_albedo = {TL__TARGET(FAT_ALBEDO, "fat
                                                      .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_fat_material = {TL__TARGET(FAT_MATERIAL, "fat.material"), .format = GL_RGBA16F,
                                                        .store = TL__STORE_GBUFFER};
-static const tl__target_def tl__target_hdr = {TL__TARGET(HDR, "hdr"), .format = GL_RGBA16F};
+static const tl__target_def tl__target_hdr = {TL__TARGET(HDR, "hdr"), .format = GL_RGBA16F, .samples_of = tl__msaa_samples};
 
 /* Every geometry pass that decides visibility tests LEQUAL (GEQUAL reversed): of fragments at the
  * same stored depth the last drawn wins, as it does in a later pass at EQUAL, which draws the same
@@ -58,12 +69,19 @@ static tl__pipeline tl__geometry_state(const tl__plan_input *in, tl__depth_test 
 
 /* Forward+ (forward with tiled lights): the tiles' depth bounds come from the depth pre-pass. */
 
-/* ---- depth pre-pass (forward) ---------------------------------------------------------------- */
+/* ---- depth pre-pass (forward; thin-lpp's multisampled depth with MSAA) ----------------------- */
+
+/* The depth the material and transparent passes test against. */
+static tl_target_id tl__shading_depth(const tl__plan_input *in)
+{
+    return in->mode->material_pass && in->msaa > 1 ? TL_TARGET_DEPTH_MSAA : TL_TARGET_DEPTH;
+}
 
 static void tl__prepass_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!in->mode->forward || !tl__forward_prepass(in)) return;
-    d->writes = d->clears = TL__B(DEPTH);
+    if (in->mode->forward ? !tl__forward_prepass(in) : tl__shading_depth(in) == TL_TARGET_DEPTH) return;
+    d->depth_target = (uint8_t)tl__shading_depth(in);
+    d->writes = d->clears = TL_TARGET_BIT(d->depth_target);
     d->attach_depth = 1;
     d->state = tl__geometry_state(in, TL__DEPTH_LEQUAL, 1, TL__BLEND_OFF);
     d->state.color_write = 0;
@@ -80,6 +98,7 @@ const tl__pass_def tl__pass_depth_prepass = {
     .id = TL_PASS_DEPTH_PREPASS,
     .name = "depth-prepass",
     .programs = {{"depth-prepass", "gbuffer.vert.glsl", "forward.frag.glsl"}},
+    .targets = {&tl__target_depth_msaa},
     .declare = tl__prepass_declare,
     .permute = tl__prepass_permute,
     .execute = tl__draw_opaque,
@@ -120,6 +139,17 @@ const tl__pass_def tl__pass_gbuffer = {
 
 /* ---- material: the light pre-pass's second geometry pass ------------------------------------- */
 
+/* The lists a material pass re-lights a pixel from: its tile's (tiled) or its object's (volumes). */
+static void tl__material_relight_lists(const tl__plan_input *in, tl__pass_decl *d)
+{
+    if (in->strategy == TL_LIGHT_STRATEGY_TILED) {
+        d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_TILES;
+        d->reads |= TL__B(LIGHT_LISTS);
+    } else {
+        d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | TL__LIGHTS_OBJECT_LISTS;
+    }
+}
+
 static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
     if (!in->mode->material_pass) return;
@@ -133,13 +163,17 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
          * lists here); volumes, they loop over their object's light list here */
         d->samples |= TL__B(LIGHT_DEPTH) | TL__B(LIGHT_RT0) | TL__B(LIGHT_OFFSET) | TL__B(RT0);
         d->writes |= TL__B(LIGHT_FIXUP);
-        if (in->strategy == TL_LIGHT_STRATEGY_TILED) {
-            d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_TILES;
-            d->reads |= TL__B(LIGHT_LISTS);
-        } else {
-            d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | TL__LIGHTS_OBJECT_LISTS;
-        }
+        tl__material_relight_lists(in, d);
     }
+    if (in->msaa > 1 && in->lights) {
+        /* MSAA: a sample whose surface is not the one the G-buffer kept at its pixel (an edge)
+         * takes the light of the neighbouring texel with its depth and normal, else it is re-lit
+         * here from its tile's lists or its object's (light_msaa.glsl); the re-lit ones are counted */
+        d->samples |= TL__B(DEPTH) | TL__B(RT0);
+        d->writes |= TL__B(LIGHT_FIXUP);
+        tl__material_relight_lists(in, d);
+    }
+    d->depth_target = (uint8_t)tl__shading_depth(in);
     if (in->stipple) {
         /* transparent layers took some G-buffer pixels (pass_stipple.c): the opaque depth decides
          * visibility; the G-buffer which samples are whose; the object's lights where none is */
@@ -147,7 +181,7 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
         d->depth_target = TL_TARGET_OPAQUE_DEPTH;
         d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | TL__LIGHTS_OBJECT_LISTS;
     }
-    d->reads |= d->samples | TL__B(DEPTH) | (in->stipple ? TL__B(OPAQUE_DEPTH) : 0u);
+    d->reads |= d->samples | TL_TARGET_BIT(d->depth_target);
     d->attach_depth = 1;
     /* the stipple's copy of the opaque depth may lie a step behind (pass_stipple.c): LEQUAL then
      * passes the same fragments as EQUAL would, the last drawn of a coplanar pair winning */
@@ -161,9 +195,12 @@ static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *
     if ((d->samples & TL__B(LIGHT_DIFFUSE)) && (d->samples & TL__B(LIGHT_RT0)))
         snprintf(upsample, sizeof upsample, " TL_UPSAMPLE=%u%s%s", (unsigned)in->light_shift,
                  in->o->rt0 == TL_RT0_RGB10A2 ? " TL_RT0_RGB10A2" : "",
-                 (d->reads & TL__B(LIGHT_LISTS)) ? " TL_UPSAMPLE_TILES" : "");
+                 (d->reads & TL__B(LIGHT_LISTS)) ? " TL_RELIGHT_TILES" : "");
     if (in->stipple && (d->samples & TL__B(LIGHT_DIFFUSE)))
         snprintf(upsample, sizeof upsample, " TL_STIPPLE %s", in->rt0_define);
+    if (d->depth_target == TL_TARGET_DEPTH_MSAA && (d->samples & TL__B(LIGHT_DIFFUSE)))
+        snprintf(upsample, sizeof upsample, " TL_MSAA_LIGHT %s%s", in->rt0_define,
+                 (d->reads & TL__B(LIGHT_LISTS)) ? " TL_RELIGHT_TILES" : "");
     snprintf(out->slot[0], sizeof out->slot[0], "%s%s%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",
              in->material_defines, tl__ssao_defines(in, d), upsample);
 }
@@ -228,7 +265,8 @@ static void tl__transparent_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
     if (!in->f.has_alpha_blend || in->stipple) return; /* the stipple's passes draw them (pass_stipple.c) */
     d->writes = TL__B(HDR);
-    d->reads = TL__B(DEPTH) | TL__B(HDR); /* blended onto */
+    d->depth_target = (uint8_t)tl__shading_depth(in);
+    d->reads = TL_TARGET_BIT(d->depth_target) | TL__B(HDR); /* blended onto */
     d->attach_depth = 1;
     /* per-object lists: tiles hold lights for the opaque surfaces' depths only */
     d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | TL__LIGHTS_OBJECT_LISTS;

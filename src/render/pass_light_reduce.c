@@ -56,7 +56,9 @@ const tl__pass_def tl__pass_light_reduce = {
  * material pass re-lights them itself. */
 static size_t tl__fixup_capacity(const tl_frame_plan *p)
 {
-    return p->light_strategy == TL_LIGHT_STRATEGY_TILED ? ((size_t)p->width * p->height + 7u) / 8u : 0u;
+    /* MSAA's material pass only counts the samples it re-lights (pass_geometry.c) */
+    return p->light_strategy == TL_LIGHT_STRATEGY_TILED && p->light_scale < 1.0f ? ((size_t)p->width * p->height + 7u) / 8u
+                                                                                 : 0u;
 }
 
 static size_t tl__fixup_bytes(const tl_frame_plan *p) { return 16u + 32u * tl__fixup_capacity(p); }

@@ -46,14 +46,16 @@ static void tl__tonemap_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__tonemap_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s", (d->samples & TL__B(BLOOM)) ? "TL_BLOOM" : "");
-    (void)in;
+    if (in->msaa > 1 && (in->mode->forward || in->mode->material_pass)) /* HDR is multisampled (pass_geometry.c) */
+        snprintf(out->slot[0], sizeof out->slot[0], "TL_MSAA_SAMPLES=%u", (unsigned)in->msaa);
+    else
+        snprintf(out->slot[0], sizeof out->slot[0], "%s", (d->samples & TL__B(BLOOM)) ? "TL_BLOOM" : "");
 }
 
 /* Into a caller's framebuffer of another size the image is resampled: linear filtering then. */
 static void tl__tonemap_execute(const tl__pass_ctx *ctx)
 {
-    if (ctx->to_caller) ctx->gl->BindSampler(TL_TARGET_HDR, ctx->linear_sampler);
+    if (ctx->to_caller) ctx->gl->BindSampler(TL_TARGET_HDR, ctx->linear_sampler); /* a multisampled HDR ignores it */
     tl__draw_fullscreen(ctx);
     if (ctx->to_caller) ctx->gl->BindSampler(TL_TARGET_HDR, 0);
 }

@@ -38,6 +38,8 @@ static void tl__cull_permute(const tl__plan_input *in, const tl__pass_decl *d, t
     /* the light scale: tiles are in the frame's pixels (their depth bounds cover every pixel the
      * edge fix-up may re-light); the pairs counted are the light buffer's texels */
     if (in->light_shift) snprintf(out->slot[0], sizeof out->slot[0], "TL_LIGHT_SHIFT=%u", (unsigned)in->light_shift);
+    /* forward's depth is multisampled with MSAA (pass_geometry.c) */
+    if (in->mode->forward && in->msaa > 1) snprintf(out->slot[0], sizeof out->slot[0], "TL_DEPTH_SAMPLES=%u", (unsigned)in->msaa);
 }
 
 const tl__pass_def tl__pass_light_cull = {

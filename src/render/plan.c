@@ -79,6 +79,7 @@ static void tl__plan_transparency(tl__plan_input *in)
     if (o->transparency == TL_TRANSPARENCY_FORWARD) why = "forced by the options";
     else if (!in->mode->material_pass) why = "only thin-lpp lights its G-buffer's layers";
     else if (in->light_shift) why = "the reduced light buffer would collapse the 2x2 stipple";
+    else if (in->msaa > 1) why = "MSAA: the material pass's samples would split the 2x2 stipple";
     else if (!in->lights) why = "no lights: nothing to gather";
     else if (o->fog.mode != TL_FOG_OFF || o->dof.enabled || o->ssr.enabled)
         why = "fog, depth of field or reflections read depth after the layers";
@@ -116,6 +117,7 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     in->mode = &tl__modes[d->options.mode];
     in->lights = f->point_lights + f->spot_lights + f->directional_lights > 0;
     in->light_shift = tl__light_shift(in->o);
+    in->msaa = tl__msaa_samples(in->o);
     tl__plan_strategy(in);
     in->spec = f->has_specular != 0;
     tl__plan_lighting(in);
@@ -221,10 +223,11 @@ static void tl__target_memory(const tl_renderer_desc *d, const tl__target_def *d
     ti->format = tl__target_format(def, &d->options);
     bpp = tl__format_bytes_per_pixel(ti->format);
     tl__target_size(def, &d->options, d->width, d->height, &ti->width, &ti->height, &ti->levels);
+    ti->samples = tl__target_samples(def, &d->options);
     ti->bytes = 0;
     for (uint32_t k = 0; k < ti->levels; k++) {
         size_t w = ti->width >> k, h = ti->height >> k;
-        ti->bytes += (w ? w : 1u) * (h ? h : 1u) * bpp;
+        ti->bytes += (w ? w : 1u) * (h ? h : 1u) * bpp * ti->samples;
     }
     if (def->buffer_bytes) ti->bytes = def->buffer_bytes(fp);
     ti->bytes_per_pixel = (uint32_t)((ti->bytes + px - 1) / px);
@@ -273,6 +276,7 @@ static void tl__share_memory(tl__plan *p, const tl_renderer_options *o)
             if (!ti->bytes_per_pixel || ti->first_pass != step) continue;
             /* a block is one texture of the frame's size and one level: a reduced target keeps its own */
             unsigned cls = tl__target_shift(p->targets[t], o) || ti->levels > 1 ? 0u : tl__format_view_class(ti->format);
+            cls = cls ? cls * 16u + ti->samples : 0u; /* a view has its storage's samples */
             size_t b = fp->block_count;
             for (size_t k = 0; cls && k < fp->block_count; k++)
                 if (block_class[k] == cls && block_end[k] < ti->first_pass) {
@@ -362,6 +366,14 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
         snprintf(p->pub.light_scale_reason, sizeof p->pub.light_scale_reason, "%s",
                  in.light_shift ? "asked; lights on the reduced depth, upsampled, edges re-lit"
                                 : "asked, but only thin-lpp has a light buffer to reduce");
+    p->pub.msaa = in.msaa;
+    if (d.options.msaa > 1) {
+        const char *why = tl__msaa_refusal(&d.options);
+        snprintf(p->pub.msaa_reason, sizeof p->pub.msaa_reason, "%s%s", why ? "asked, but " : "",
+                 why                     ? why
+                 : in.mode->material_pass ? "material pass multisampled over the 1x G-buffer and light buffer"
+                                          : "forward: every pass multisampled");
+    }
     p->pub.transparency = in.stipple ? TL_TRANSPARENCY_STIPPLE : TL_TRANSPARENCY_FORWARD;
     snprintf(p->pub.transparency_reason, sizeof p->pub.transparency_reason, "%s", in.transparency_reason);
     if (in.strategy == TL_LIGHT_STRATEGY_TILED) {

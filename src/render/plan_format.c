@@ -69,6 +69,7 @@ static void tl__print_targets_table(tl__out *o, const tl_frame_plan *p)
         if (t->levels > 1 || t->width != p->width || t->height != p->height)
             tl__printf(o, " (%ux%u, %u level%s, %zu bytes)", t->width, t->height, t->levels, t->levels > 1 ? "s" : "",
                        t->bytes);
+        if (t->samples > 1) tl__printf(o, " (%u samples)", t->samples);
         tl__printf(o, "\n");
     }
     tl__printf(o, "  %-15s %2u (G-buffer and light buffer: %u)\n", "sum", p->bytes_per_pixel, p->gbuffer_bytes_per_pixel);
@@ -96,6 +97,7 @@ size_t tl_frame_plan_format(const tl_frame_plan *p, char *buffer, size_t size)
     tl__printf(&o, "\n");
     if (p->light_scale_reason[0])
         tl__printf(&o, "light scale: %g (%s)\n", (double)p->light_scale, p->light_scale_reason);
+    if (p->msaa_reason[0]) tl__printf(&o, "msaa: %u sample%s (%s)\n", p->msaa, p->msaa > 1 ? "s" : "", p->msaa_reason);
     if (p->transparency_reason[0])
         tl__printf(&o, "transparency: %s (%s)\n", tl_transparency_name(p->transparency), p->transparency_reason);
     tl__printf(&o, "lighting: %s (%s)", tl_lighting_model_name(p->lighting), p->lighting_reason);

@@ -7,6 +7,8 @@
 
 /* A target samples on texture unit = its id: the material textures' units come after them. */
 _Static_assert((int)TL_TARGET_COUNT <= (int)TL__UNIT_ALBEDO_TEXTURE, "target texture units overlap the material textures'");
+/* TL_TARGET_BIT sets are 32 bits */
+_Static_assert((int)TL_TARGET_COUNT <= 32, "more targets than TL_TARGET_BIT sets hold");
 
 void tl__target_defs(const tl__target_def *out[TL_TARGET_COUNT])
 {
@@ -48,6 +50,24 @@ uint32_t tl__target_shift(const tl__target_def *def, const tl_renderer_options *
     if (!def) return 0u;
     return def->shift_of ? def->shift_of(o) : def->shift;
 }
+
+uint32_t tl__target_samples(const tl__target_def *def, const tl_renderer_options *o)
+{
+    return def && def->samples_of ? def->samples_of(o) : 1u;
+}
+
+const char *tl__msaa_refusal(const tl_renderer_options *o)
+{
+    if (o->msaa <= 1u) return NULL;
+    if (o->mode != TL_MODE_THIN_LPP && o->mode != TL_MODE_FORWARD) return "thin-deferred and fat have no multisampled G-buffer";
+    if (tl__light_shift(o)) return "the reduced light buffer's upsample runs at one sample";
+    if (o->ssao.method != TL_SSAO_OFF || o->fog.mode != TL_FOG_OFF || o->dof.enabled || o->bloom.enabled || o->ssr.enabled ||
+        o->vignette.enabled)
+        return "screen-space effects read a one-sample HDR and depth";
+    return NULL;
+}
+
+uint32_t tl__msaa_samples(const tl_renderer_options *o) { return o->msaa > 1u && !tl__msaa_refusal(o) ? o->msaa : 1u; }
 
 uint32_t tl__light_shift(const tl_renderer_options *o)
 {

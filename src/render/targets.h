@@ -29,6 +29,7 @@ typedef struct tl__target_def {
     uint8_t store;      /* tl__store: what the technique stores, and as which part */
     uint8_t shift;      /* its first level is the frame's size divided by 2^shift, rounded up */
     uint32_t (*shift_of)(const tl_renderer_options *o); /* the shift in a configuration (NULL: shift) */
+    uint32_t (*samples_of)(const tl_renderer_options *o); /* samples per pixel (NULL: 1): MSAA's targets */
     uint8_t linear;     /* sampled with bilinear filtering (of its first level) */
     uint8_t depth;      /* a depth target: a pass's depth attachment (depth_target), never a colour write */
 } tl__target_def;
@@ -47,6 +48,14 @@ uint32_t tl__target_format(const tl__target_def *def, const tl_renderer_options 
 
 /* A target's shift in a resolved configuration: its first level is the frame's size over 2^shift. */
 uint32_t tl__target_shift(const tl__target_def *def, const tl_renderer_options *o);
+
+/* A target's samples per pixel in a resolved configuration (1, or the MSAA count). */
+uint32_t tl__target_samples(const tl__target_def *def, const tl_renderer_options *o);
+
+/* MSAA in a resolved configuration: why the options' samples are not planned (NULL: they are, or
+ * none were asked for), and the samples of the multisampled targets (1: no MSAA). */
+const char *tl__msaa_refusal(const tl_renderer_options *o);
+uint32_t tl__msaa_samples(const tl_renderer_options *o);
 
 /* The light buffer's shift (light_scale 1, 0.5, 0.25: 0, 1, 2): thin-lpp only, every other mode 0. */
 uint32_t tl__light_shift(const tl_renderer_options *o);

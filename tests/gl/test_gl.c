@@ -189,7 +189,7 @@ TL_TEST(gl_render_target_bytes)
     tl__target t[4];
     for (size_t i = 0; i < 4; i++) {
         tl_result r = tl__target_create(
-            gl, &(tl__target_desc){cases[i].label, cases[i].format, 64, 32}, &t[i], msg, sizeof msg);
+            gl, &(tl__target_desc){cases[i].label, cases[i].format, 64, 32, 1}, &t[i], msg, sizeof msg);
         if (r != TL_OK) fprintf(stderr, "%s\n", msg);
         TL_CHECK(r == TL_OK && t[i].texture != 0);
         TL_CHECK_EQ_U(t[i].bytes, (size_t)64 * 32 * cases[i].bpp);
@@ -217,22 +217,22 @@ TL_TEST(gl_render_target_bytes)
     TL_CHECK(tl__framebuffer_create(gl, "bad", wrong, 1, NULL, &fbo, msg, sizeof msg) ==
              TL_ERROR_INVALID_ARGUMENT);
     tl__target small;
-    TL_CHECK(tl__target_create(gl, &(tl__target_desc){"small", GL_RGBA8, 8, 8}, &small, msg,
+    TL_CHECK(tl__target_create(gl, &(tl__target_desc){"small", GL_RGBA8, 8, 8, 1}, &small, msg,
                                sizeof msg) == TL_OK);
     TL_CHECK_EQ_U(small.bytes, 8 * 8 * 4);
     const tl__target *mixed[] = {&t[0], &small};
     TL_CHECK(tl__framebuffer_create(gl, "bad", mixed, 2, NULL, &fbo, msg, sizeof msg) ==
              TL_ERROR_INVALID_ARGUMENT);
     tl__target bad;
-    TL_CHECK(tl__target_create(gl, &(tl__target_desc){"bad", GL_RGB, 8, 8}, &bad, msg, sizeof msg) ==
+    TL_CHECK(tl__target_create(gl, &(tl__target_desc){"bad", GL_RGB, 8, 8, 1}, &bad, msg, sizeof msg) ==
              TL_ERROR_UNSUPPORTED);
     TL_CHECK(bad.texture == 0);
     GLint max_tex = 0;
     gl->GetIntegerv(GL_MAX_TEXTURE_SIZE, &max_tex);
-    TL_CHECK(tl__target_create(gl, &(tl__target_desc){"huge", GL_RGBA8, (uint32_t)max_tex + 1, 1},
+    TL_CHECK(tl__target_create(gl, &(tl__target_desc){"huge", GL_RGBA8, (uint32_t)max_tex + 1, 1, 1},
                                &bad, msg, sizeof msg) == TL_ERROR_LIMIT);
     printf("too large: %s\n", msg);
-    TL_CHECK(tl__target_create(gl, &(tl__target_desc){"empty", GL_RGBA8, 0, 1}, &bad, msg,
+    TL_CHECK(tl__target_create(gl, &(tl__target_desc){"empty", GL_RGBA8, 0, 1, 1}, &bad, msg,
                                sizeof msg) == TL_ERROR_INVALID_ARGUMENT);
 
     tl__target_destroy(gl, &small);
@@ -246,7 +246,7 @@ static bool draw_fullscreen(const GladGLContext *gl, GLuint prog, float *pixels)
 {
     char msg[256];
     tl__target t;
-    if (tl__target_create(gl, &(tl__target_desc){"test.readback", GL_RGBA32F, 16, 8}, &t, msg,
+    if (tl__target_create(gl, &(tl__target_desc){"test.readback", GL_RGBA32F, 16, 8, 1}, &t, msg,
                           sizeof msg) != TL_OK) {
         fprintf(stderr, "%s\n", msg);
         return false;

@@ -1,0 +1,87 @@
+// Re-lighting one pixel of the material pass from light lists, where the light buffer has no
+// texel of its surface: the light scale's edge fix-up (light_upsample.glsl) and MSAA's edge
+// samples (light_msaa.glsl). TL_RELIGHT_TILES: the tiled lists of the pixel's tile; otherwise the
+// object's own list (the forward path's). Also what both read of the G-buffer and the fix-up
+// buffer, where re-lit pixels are counted.
+#ifndef TL_LIGHT_RELIGHT_GLSL
+#define TL_LIGHT_RELIGHT_GLSL
+
+#include "codec.glsl"
+#include "frame.glsl"
+#include "light_eval.glsl"
+#include "object.glsl"
+#include "tile_lights.glsl" // the visible lights block, the tile lists and their sums
+#ifndef TL_RELIGHT_TILES
+layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
+#endif
+// light.fixup (fixup.c): (compute groups of 64 listed pixels, 1, 1, re-lit pixels), then the list
+// of the pixels left to the light-fixup pass (tiled light scale), two uvec4 each: pixel, albedo and
+// specular colour as halves; the colour the material pass wrote without the light, as halves
+layout(std430, binding = TL_SSBO_FIXUP) buffer tl_fixup_buffer { uvec4 tl_fixup_counters; uvec4 tl_fixup_entries[]; };
+layout(early_fragment_tests) in; // the counts and the list: only the pixels the depth test keeps
+
+layout(binding = TL_UNIT_RT0) uniform sampler2D u_rt0;
+
+vec4 tl_relight_rt0(vec4 t) // normal and gloss, as the light pass decodes them
+{
+#ifdef TL_RT0_RGB10A2
+    uvec4 q = uvec4(t * vec4(1023.0, 1023.0, 1023.0, 3.0) + 0.5);
+    return tl_rt0_decode_rgb10a2(q.x | (q.y << 10) | (q.z << 20) | (q.w << 30));
+#else
+    return tl_rt0_decode_rgba8(tl_unorm8_bytes(t));
+#endif
+}
+
+float tl_relight_linear_depth(float d)
+{
+    return tl_depth_linearize(d, u_depth_params.x, u_depth_params.y, u_depth_params.z, u_depth_params.w > 0.5);
+}
+
+// The pixel's own light sums at view depth z_f on its pixel's centre: over the directional lights
+// and its tile's lists (tiled: the tiles are in the frame's pixels and their depth bounds cover
+// every pixel), or its object's light list (volumes: every visible light whose range reaches the
+// object's bounds).
+void tl_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 ls, out vec3 lf)
+{
+    vec2 ndc = gl_FragCoord.xy * u_inv_size * 2.0 - 1.0;
+    vec3 p = tl_view_position(z_f, ndc, u_ray_params);
+    vec3 v = normalize(-p);
+    float shape = tl_lobe_shape(gloss);
+    vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
+#ifdef TL_RELIGHT_TILES
+    tl_tile_lights_add(tl_tile_index(ivec2(gl_FragCoord.xy)), p, n, v, shape, diffuse, specular, fresnel);
+#else
+    uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
+    for (uint i = 0u; i < count; i++)
+        tl_tiled_add(tl_lights[tl_light_indices[first + i]], p, n, v, shape, diffuse, specular, fresnel);
+#endif
+#ifndef TL_FRESNEL_SUMS
+    specular += fresnel; // one sum: Fresnel is applied per pixel
+    fresnel = vec3(0.0);
+#endif
+    ld = vec4(diffuse, tl_luminance(specular));
+    ls = specular;
+    lf = fresnel;
+}
+
+// Sums as the material pass uses them: finite, and the compact layout's specular recoloured by
+// the diffuse light (a re-lit pixel has its own exact specular).
+void tl_relight_finish(vec4 ld, vec3 ls, vec3 lf, bool relit, out vec3 diffuse, out vec3 specular, out vec3 fresnel)
+{
+    diffuse = tl_finite(ld.rgb);
+    specular = fresnel = vec3(0.0);
+#if defined(TL_SPECULAR_EXACT)
+    specular = tl_finite(ls);
+#ifdef TL_FRESNEL_SUMS
+    fresnel = tl_finite(lf);
+#endif
+#elif defined(TL_SPECULAR_COMPACT)
+    if (relit) specular = tl_finite(ls);
+    else {
+        float lum = tl_luminance(diffuse);
+        specular = lum > 1e-8 ? diffuse * (min(ld.a, 65504.0) / lum) : vec3(0.0);
+    }
+#endif
+}
+
+#endif
