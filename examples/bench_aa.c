@@ -205,6 +205,12 @@ static int bench__group_open(bench_run *run, tl_context *ctx, bench_scene *scene
         const bench__aa_item *it = &g->items[g->first + k];
         g->r[k] = bench_renderer(run, ctx, k, bench__aa_desc(&run->opt, it->config, it->aa), bench_scene_get(scene));
         if (!g->r[k]) return 1;
+        tl_frame_plan plan; /* the renderer's own plan applies what the pure plan promised */
+        if (tl_renderer_get_plan(g->r[k], &plan) == TL_OK && plan.msaa != bench_aa_samples(it->aa)) {
+            tl_tool_fail(BENCH_TOOL, "--aa, %s %s: the renderer planned %u samples (%s)", bench_config_name(it->config),
+                         bench_aa_name(it->aa), plan.msaa, plan.msaa_reason);
+            return 1;
+        }
         if (tl_renderer_set_lights(g->r[k], lights, count) != TL_OK) {
             tl_tool_log_error(&run->log, "%s", tl_renderer_last_error(g->r[k]));
             return 1;
