@@ -26,7 +26,7 @@ static int bench__check_doc(const char *path, const char *begin, const char *end
     return tl_tool_doc_split(BENCH_TOOL, path, *text, begin, end, &head, &tail);
 }
 
-static int bench__check_outputs(bench_options *o, char **doc_text, char **effects_text)
+static int bench__check_outputs(bench_options *o, char **doc_text, char **effects_text, char **aa_text)
 {
     int e;
     if (o->out && !tl_tool_have_io()) {
@@ -46,6 +46,7 @@ static int bench__check_outputs(bench_options *o, char **doc_text, char **effect
     if (o->doc && bench__check_doc(o->doc, BENCH_DOC_BEGIN, BENCH_DOC_END, doc_text)) return 1;
     if (o->effects_doc && bench__check_doc(o->effects_doc, BENCH_EFFECTS_DOC_BEGIN, BENCH_EFFECTS_DOC_END, effects_text))
         return 1;
+    if (o->aa_doc && bench__check_doc(o->aa_doc, BENCH_AA_DOC_BEGIN, BENCH_AA_DOC_END, aa_text)) return 1;
     if (o->out && !o->no_plot && !tl_tool_have_gnuplot()) {
         fprintf(stderr, BENCH_TOOL ": warning: gnuplot not found on PATH, no plots (install gnuplot-nox)\n");
         o->no_plot = 1;
@@ -100,26 +101,32 @@ int main(int argc, char **argv)
         return rc < 0 ? 0 : rc;
     }
     bench_options *opt = &run->opt;
-    char *doc_text = NULL, *effects_text = NULL;
+    char *doc_text = NULL, *effects_text = NULL, *aa_text = NULL;
     bench_scene *scene = NULL;
     rc = BENCH_EXIT_BAD_INPUT;
-    if (bench_scene_open(opt, &scene, run) || bench__check_outputs(opt, &doc_text, &effects_text)) goto done;
+    if (bench_scene_open(opt, &scene, run) || bench__check_outputs(opt, &doc_text, &effects_text, &aa_text) ||
+        bench_aa_check_budget(run, scene))
+        goto done;
     bench__fresnel_variant(opt, scene);
     tl_tool_machine(run->cpu, sizeof run->cpu, &run->cores);
     /* the plans first: the sweep times each planned mode against its no_planning renderer */
     if (bench_planning_compare(run, scene) || bench_sweep(run, scene)) goto done;
-    int plot_failed = opt->out && !opt->no_plot && bench_plots(run);
+    int plot_failed = opt->out && !opt->no_plot && (bench_plots(run) || bench_aa_plot(run));
     bench_print_table(run);
     bench_effects_print_table(run);
+    bench_aa_print_table(run);
     if (opt->json && bench_write_json(run, opt->json)) goto done;
     if (opt->doc && bench_update_doc(run, doc_text)) goto done;
     if (opt->effects_doc && bench_effects_update_doc(run, effects_text)) goto done;
+    if (opt->aa_doc && bench_aa_update_doc(run, aa_text)) goto done;
     rc = plot_failed ? BENCH_EXIT_BAD_INPUT : 0;
 done:
     bench_scene_close(scene);
     free(doc_text);
     free(effects_text);
+    free(aa_text);
     free(run->effects);
+    bench_aa_free(run);
     for (size_t i = 0; i < run->record_count; i++) free(run->records[i].frame_ms);
     free(run->records);
     free(run->images);

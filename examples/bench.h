@@ -107,6 +107,25 @@ const char *bench_effect_name(bench_effect e);
 /* Every effect's name in bench_effect order, then "none" (--effects) and NULL. */
 extern const char *const bench_effect_names[BENCH_EFFECTS + 2];
 
+/* Antialiasing methods the bench can measure (--aa), each against a supersampled truth
+ * (bench_aa.c): FXAA off, FXAA (the renderer's default preset), MSAA with 2, 4 or 8 samples. */
+typedef enum bench_aa {
+    BENCH_AA_NONE,
+    BENCH_AA_FXAA,
+    BENCH_AA_MSAA2,
+    BENCH_AA_MSAA4,
+    BENCH_AA_MSAA8,
+    BENCH_AAS
+} bench_aa;
+/* Every method's name in bench_aa order, then NULL (--aa). */
+extern const char *const bench_aa_names[BENCH_AAS + 1];
+const char *bench_aa_name(bench_aa a);
+/* Samples per pixel of MSAA (1 for none and FXAA). */
+uint32_t bench_aa_samples(bench_aa a);
+/* The truth: fat at BENCH_AA_TRUTH_SCALE times the width and the height, FXAA off, every sample
+ * tone-mapped on the CPU, each block averaged in tone-mapped linear space, then sRGB-encoded. */
+#define BENCH_AA_TRUTH_SCALE 4u
+
 typedef struct bench_options {
     const char *scene;        /* "default" or a glTF file */
     bench_size sizes[BENCH_MAX_SIZES];
@@ -134,6 +153,8 @@ typedef struct bench_options {
     unsigned effects;                /* --effects: bits (1u << bench_effect); 0: none measured */
     tl_renderer_desc effect_desc;    /* the effects' parameters (--ssao-*, --fog-*, --dof-*, --bloom-*, --ssr-*) */
     const char *effects_doc;         /* --effects-doc: the effects table between its markers */
+    unsigned aa;                     /* --aa: bits (1u << bench_aa); 0: not measured */
+    const char *aa_doc;              /* --aa-doc: the AA table between its markers */
 } bench_options;
 
 /* bench_args.c: the command line into `o`: 0; -1 after --help or --list-options (printed); or 2
@@ -154,6 +175,30 @@ typedef struct bench_effect_record {
     tl_image_error ao;             /* SSAO: the AO target vs fat's (peak 1) */
     uint32_t bytes_per_pixel, base_bytes_per_pixel; /* memory the targets occupy, with and without */
 } bench_effect_record;
+
+/* One AA method in one mode at the first size and one light count, against the truth of that
+ * light count (bench_aa.c). */
+typedef struct bench_aa_record {
+    bench_aa aa;
+    bench_config config;           /* the mode with the first strategy */
+    uint32_t samples, lights, width, height, frames;
+    double ms_median;              /* frame time (GPU timers, else the wall clock) */
+    double ratio_vs_fxaa;          /* median of (this / the same mode's FXAA frame beside it), or of the
+                                      medians when they were not rendered side by side; NaN: no FXAA record */
+    tl_image_error ldr, edge_ldr;  /* final image vs the truth, RGB 8-bit; over the edge pixels alone */
+    double edge_fraction;          /* edge pixels over all (the truth's) */
+    uint32_t bytes_per_pixel;      /* memory the targets occupy */
+    double relit_fraction;         /* thin-lpp with MSAA: tl_frame_stats.relit_fraction; NaN elsewhere */
+} bench_aa_record;
+
+/* The truth of one light count (bench_aa.c): its image and edge mask at the first size. */
+typedef struct bench_aa_truth {
+    uint32_t lights, width, height;
+    uint8_t *rgb;                  /* RGB, rows bottom up */
+    uint8_t *edge;                 /* 1 = edge pixel */
+    size_t edge_pixels;
+    double ms;                     /* the supersampled frame's time */
+} bench_aa_truth;
 
 /* One (mode, lights, size): medians over the timed frames, sizes from the plan, errors against the
  * fat image of the same frame. */
@@ -221,6 +266,16 @@ typedef struct bench_image_file {
     uint32_t lights, width, height;
 } bench_image_file;
 
+/* An image of the AA measurement: the truth's (aa = BENCH_AAS) or a record's, full size or the doc's
+ * crop. */
+typedef struct bench_aa_image {
+    char path[512];
+    bench_config config;
+    bench_aa aa;                   /* BENCH_AAS: the truth */
+    int crop;
+    uint32_t lights;
+} bench_aa_image;
+
 /* What planning saves for one mode (the plan against tl_renderer_options.no_planning), for the scene
  * with the largest light count. */
 typedef struct bench_planning {
@@ -255,6 +310,13 @@ typedef struct bench_run {
     size_t planning_count;
     bench_effect_record *effects;  /* --effects: per configuration (fat first), per effect */
     size_t effect_count;
+    bench_aa_record *aa;           /* --aa: per light count, per mode, per method */
+    size_t aa_count;
+    char aa_skipped[BENCH_MODES * BENCH_AAS][160]; /* "mode msaaN: why not" of each method not applied */
+    size_t aa_skipped_count;
+    bench_aa_image *aa_images;     /* the images of the AA doc (--out) */
+    size_t aa_image_count;
+    int aa_plot_made;
     /* renderers made once and given each configuration's options and size in turn (bench_renderer) */
     tl_renderer *renderers[BENCH_CONFIGS + 1];
 } bench_run;
@@ -326,6 +388,46 @@ int bench_effects_update_doc(const bench_run *run, const char *doc_text);
 #define BENCH_EFFECTS_DOC_BEGIN "<!-- bench-effects:begin -->"
 #define BENCH_EFFECTS_DOC_END "<!-- bench-effects:end -->"
 
+/* bench_aa.c: measures opt.aa (at the first size, every light count, the requested modes with the
+ * first strategy, against the truth); frames it renders, for the progress bar. */
+int bench_aa_measure(bench_run *run, tl_context *ctx, bench_scene *scene, tl_tool_progress *progress, uint64_t *done);
+uint64_t bench_aa_frames(const bench_run *run, const bench_scene *scene);
+/* Refuses (one line, before any GL work) a truth whose targets are over the target-memory budget. */
+int bench_aa_check_budget(const bench_run *run, const bench_scene *scene);
+void bench_aa_free(bench_run *run);
+
+/* bench_aa_truth.c (pure: no GL): the tone map of shaders/tonemap.frag.glsl on the CPU. */
+/* One channel of linear HDR radiance into linear display [0, 1]: clamped to [0, 65504] (NaN: 0),
+ * times the exposure, through the ACES fit (Narkowicz 2015), clamped to [0, 1]. */
+float bench_aa_tone(float c, float exposure);
+/* Linear display [0, 1] to an 8-bit sRGB step (rounded). */
+uint8_t bench_aa_srgb8(float l);
+/* The image of a `scale` times wider and taller HDR frame (RGBA floats, rows bottom up, as
+ * tl_renderer_read_target gives them) at w x h: each scale x scale block tone-mapped per sample,
+ * averaged, sRGB-encoded (RGB, rows bottom up). scale 1: the renderer's tone map with FXAA off. */
+void bench_aa_resolve(const float *hdr, uint32_t w, uint32_t h, uint32_t scale, float exposure, uint8_t *rgb);
+/* The w x h mask of the pixels whose block of a scale-times-larger mask has a marked sample;
+ * returns how many. */
+size_t bench_aa_reduce_mask(const uint8_t *fine, uint32_t w, uint32_t h, uint32_t scale, uint8_t *mask);
+
+/* bench_aa_report.c: the AA table (stdout), JSON member and Markdown table (with the plot and crops). */
+void bench_aa_print_table(const bench_run *run);
+void bench_aa_json(tl_tool_json *j, const bench_run *run);
+int bench_aa_update_doc(const bench_run *run, const char *doc_text);
+/* bench_aa_images.c: into opt.out, the truth's image (rec NULL) or a record's, full size and the doc's
+ * crop; listed in run->aa_images. */
+int bench_aa_images(bench_run *run, const bench_aa_truth *truth, const bench_aa_record *rec, const uint8_t *rgb);
+/* bench_aa_plot.c: the edge PSNR against the frame time, a panel per light count, into opt.out. */
+int bench_aa_plot(bench_run *run);
+#define BENCH_AA_PLOT "bench_aa_error_vs_ms"
+/* The doc's crops (bench_aa_images.c): BENCH_AA_CROP_W x BENCH_AA_CROP_H pixels (at most the frame)
+ * where the truth has the most edge pixels, magnified BENCH_AA_CROP_ZOOM times. */
+#define BENCH_AA_CROP_W 160u
+#define BENCH_AA_CROP_H 90u
+#define BENCH_AA_CROP_ZOOM 3u
+#define BENCH_AA_PNG_MAX_BYTES (1024u * 1024u)
+#define BENCH_AA_DOC_BEGIN "<!-- bench-aa:begin -->"
+#define BENCH_AA_DOC_END "<!-- bench-aa:end -->"
 /* bench_plan.c: fills run->planning for every rendered mode (pure: no GL; the times stay NaN). */
 int bench_planning_compare(bench_run *run, bench_scene *scene);
 

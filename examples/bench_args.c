@@ -14,6 +14,7 @@ static const char usage_head[] =
     "                       [--frames N] [--warmup N] [--json OUT.json] [--out DIR] [--quick]\n"
     "                       [--doc FILE.md] [--seed S] [--lighting M] [--fresnel F] [--no-plot]\n"
     "                       [--effects E,...] [--effects-doc FILE.md] [effect options]\n"
+    "                       [--aa M,...] [--aa-doc FILE.md]\n"
     "                       [--context C] [--device N] [memory budgets]\n"
     "                       [--list-devices] [--list-options] [--help]\n"
     "\n"
@@ -64,7 +65,17 @@ static const char usage_outputs[] =
     "                   their parameter options set it up:\n";
 static const char usage_middle[] =
     "  --effects-doc FILE replace the text between " BENCH_EFFECTS_DOC_BEGIN " and\n"
-    "                   " BENCH_EFFECTS_DOC_END " in FILE with the effects' table\n";
+    "                   " BENCH_EFFECTS_DOC_END " in FILE with the effects' table\n"
+    "  --aa LIST        antialiasing methods, none, fxaa, msaa2, msaa4, msaa8 (default: not measured):\n"
+    "                   at the first size and every light count, each requested mode of the first\n"
+    "                   strategy with each method its plan applies (MSAA: thin-lpp and forward, up to\n"
+    "                   the context's GL_MAX_SAMPLES), the renderers taking turns frame by frame; the\n"
+    "                   error of each final image against a truth (fat at 4x4 the pixels, tone-mapped\n"
+    "                   per sample on the CPU, averaged) over the frame and over the edge pixels,\n"
+    "                   its time against the same mode's FXAA, its bytes per pixel and (thin-lpp MSAA)\n"
+    "                   the re-lit fraction: a table, the JSON (\"aa\"), a plot and images in --out\n"
+    "  --aa-doc FILE    replace the text between " BENCH_AA_DOC_BEGIN " and " BENCH_AA_DOC_END "\n"
+    "                   in FILE with the AA table, and copy the plot and crops to img/ beside it\n";
 static const char usage_tail[] =
     "  --list-options   list every option and the values it takes, then exit\n"
     "  --help           this text\n"
@@ -84,7 +95,7 @@ static const char usage_tail[] =
 
 enum {
     B_HELP, B_LIST, B_QUICK, B_NO_PLOT, B_SCENE, B_SIZE, B_LIGHTS, B_MODES, B_STRATEGIES, B_FORMATS, B_SCALES, B_FRAMES,
-    B_WARMUP, B_SEED, B_LIGHTING, B_FRESNEL, B_JSON, B_OUT, B_DOC, B_EFFECTS, B_EFFECTS_DOC
+    B_WARMUP, B_SEED, B_LIGHTING, B_FRESNEL, B_JSON, B_OUT, B_DOC, B_EFFECTS, B_EFFECTS_DOC, B_AA, B_AA_DOC
 };
 
 static const char *const bench__format_names[] = {"rgba16f", "r11g11b10f", NULL};
@@ -113,6 +124,8 @@ static const tl_opt bench__opts[] = {
     {"--doc", TL_OPT_TEXT, .id = B_DOC},
     {"--effects", TL_OPT_TEXT_LIST, .id = B_EFFECTS, .items = 2 * BENCH_EFFECTS + 1, .choices = bench_effect_names},
     {"--effects-doc", TL_OPT_TEXT, .id = B_EFFECTS_DOC},
+    {"--aa", TL_OPT_TEXT_LIST, .id = B_AA, .items = 2 * BENCH_AAS, .choices = bench_aa_names},
+    {"--aa-doc", TL_OPT_TEXT, .id = B_AA_DOC},
 };
 
 static const uint32_t bench__default_lights[] = {8, 16, 32, 64, 128, 256, 512, 1024};
@@ -222,6 +235,11 @@ static int bench__option(bench_options *o, bench__given *g, const tl_opt_table *
             if (v->u[i] < BENCH_EFFECTS) o->effects |= 1u << v->u[i];
         break;
     case B_EFFECTS_DOC: o->effects_doc = v->text; break;
+    case B_AA:
+        o->aa = 0;
+        for (size_t i = 0; i < v->count; i++) o->aa |= 1u << v->u[i];
+        break;
+    case B_AA_DOC: o->aa_doc = v->text; break;
     default: break;
     }
     return 0;

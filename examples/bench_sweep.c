@@ -717,7 +717,8 @@ int bench_sweep(bench_run *run, bench_scene *scene)
     bench_config modes[BENCH_CONFIGS];
     uint64_t total = (uint64_t)opt->size_count * opt->light_count * bench_render_modes(opt, modes) *
                      (opt->warmup + opt->frames) +
-                     (uint64_t)run->planning_count * 2 * (opt->warmup + opt->frames) + bench_effects_frames(opt);
+                     (uint64_t)run->planning_count * 2 * (opt->warmup + opt->frames) + bench_effects_frames(opt) +
+                     bench_aa_frames(run, scene);
     tl_tool_progress progress;
     tl_tool_progress_begin(&progress, total);
     run->timers_ok = 1;
@@ -729,6 +730,7 @@ int bench_sweep(bench_run *run, bench_scene *scene)
         err = bench__sweep_size(run, ctx, scene, opt->sizes[si], &progress, &done);
     if (!err) err = bench__planning_times(run, ctx, scene, &progress, &done);
     if (!err) err = bench_effects_measure(run, ctx, scene, &progress, &done);
+    if (!err) err = bench_aa_measure(run, ctx, scene, &progress, &done);
     run->seconds = (tl_tool_now_ms() - t0) * 1e-3;
     run->load_end = tl_tool_load_average();
     tl_tool_progress_end(&progress);

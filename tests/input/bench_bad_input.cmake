@@ -32,7 +32,10 @@ function(check_bad_usage)
     "--bloom-levels|0" "zero bloom levels"
     "--bloom-threshold|-1" "negative bloom threshold"
     "--bloom-scatter|1.5" "bloom scatter over 1"
-    "--ssao-samples|65" "too many SSAO samples")
+    "--ssao-samples|65" "too many SSAO samples"
+    "--aa|none,msaa3" "unknown AA method"
+    "--aa|fxaa,,none" "empty item in --aa"
+    "--aa" "--aa without a value")
   list(LENGTH cases n)
   math(EXPR last "${n} - 1")
   foreach(i RANGE 0 ${last} 2)
@@ -76,6 +79,12 @@ function(check_bad_input)
   file(READ "${WORK}/doc.md" doc)
   if(NOT doc STREQUAL "no markers here\n")
     message(FATAL_ERROR "--effects-doc without markers changed the file")
+  endif()
+  run_tool(--quick --no-plot --aa none --aa-doc "${WORK}/doc.md" --json "${WORK}/x.json")
+  expect_exit(1 "--aa-doc without markers")
+  file(READ "${WORK}/doc.md" doc)
+  if(NOT doc STREQUAL "no markers here\n")
+    message(FATAL_ERROR "--aa-doc without markers changed the file")
   endif()
   expect_only("bad input" file doc.md)
 endfunction()
