@@ -9,8 +9,12 @@
 #include "tiles.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-#ifdef TL_DEPTH_SAMPLES // forward with MSAA: the bounds of every sample
+#ifdef TL_DEPTH_SAMPLES // MSAA: the bounds of every sample (forward's depth, thin-lpp's depth.msaa)
+#ifdef TL_CULL_DEPTH_MSAA
+layout(binding = TL_UNIT_DEPTH_MSAA) uniform sampler2DMS u_depth;
+#else
 layout(binding = TL_UNIT_DEPTH) uniform sampler2DMS u_depth;
+#endif
 #define TL_CULL_SAMPLES TL_DEPTH_SAMPLES
 #define tl_cull_depth(p, s) texelFetch(u_depth, p, s).r
 #define tl_cull_size() textureSize(u_depth)

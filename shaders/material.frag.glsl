@@ -58,8 +58,7 @@ void main()
     int entry;
     if (tl_upsample_light(z_f, dz, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular, fresnel, entry)) alpha = 0.5;
 #elif defined(TL_MSAA_LIGHT) && !defined(TL_NO_LIGHTS)
-    if (tl_msaa_light(dzw, tl_material_normal(), s.gloss, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular,
-                      fresnel))
+    if (tl_msaa_light(dzw, tl_material_normal(), s.gloss, diffuse, specular, fresnel))
         alpha = 0.5; // re-lit here, as the light scale's fix-up marks its pixels
 #elif defined(TL_STIPPLE) && !defined(TL_NO_LIGHTS)
     if (tl_stipple_opaque_light(z_s, dz_s, tl_material_normal(), s.gloss, any(greaterThan(s.specular, vec3(0.0))), diffuse,

@@ -67,6 +67,7 @@ static const char vw_keys[] =
     "  [ / ]                 exposure /1.25 / x1.25\n"
     "  R                     light scale (thin-lpp): 1, 1/2, 1/4\n"
     "  Shift+R               dynamic light scale on / off (lower while the camera moves)\n"
+    "  M                     antialiasing: none, FXAA, MSAA 2x, 4x, 8x (MSAA: thin-lpp and forward)\n"
     "  H or F1               hide / show the panel\n"
     "  P or F12              screenshot (viewer-N.png in the current directory)\n"
     "  Escape                quit\n";

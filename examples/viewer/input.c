@@ -54,6 +54,8 @@ static void vw_key_settings(vw_app *app, int key, int mods)
     } else if (key == GLFW_KEY_R) {
         if (mods & GLFW_MOD_SHIFT) vw_light_scale_toggle_dynamic(app);
         else vw_light_scale_cycle(app);
+    } else if (key == GLFW_KEY_M) {
+        vw_aa_cycle(app);
     } else if (key == GLFW_KEY_L) {
         app->animate = !app->animate;
     } else if (key == GLFW_KEY_LEFT_BRACKET || key == GLFW_KEY_RIGHT_BRACKET) {

@@ -87,6 +87,23 @@ static bool vw_ui_light_scale(vw_app *app)
     return c;
 }
 
+// Antialiasing: none, FXAA or MSAA n (aa.c), and what the plan made of it.
+static bool vw_ui_aa(vw_app *app)
+{
+    vw_aa a = vw_aa_of(&app->desc.options);
+    bool c = false;
+    if (ImGui::BeginCombo("antialiasing", vw_aa_name(a))) {
+        for (int i = 0; i < VW_AA_COUNT; i++)
+            if (ImGui::Selectable(vw_aa_name(static_cast<vw_aa>(i)), i == a) && i != a) {
+                vw_aa_set(app, static_cast<vw_aa>(i));
+                c = true;
+            }
+        ImGui::EndCombo();
+    }
+    if (app->plan.msaa_reason[0]) ImGui::TextDisabled("  msaa: %u (%s)", app->plan.msaa, app->plan.msaa_reason);
+    return c;
+}
+
 static void vw_ui_settings(vw_app *app)
 {
     static const char *modes[] = {"thin-lpp", "thin-deferred", "fat", "forward"};
@@ -103,7 +120,8 @@ static void vw_ui_settings(vw_app *app)
     c |= vw_combo("depth", &d->options.depth_format, depths, TL_DEPTH_FORMAT_D24, 3);
     c |= vw_combo("RT0 packing", &d->options.rt0, rt0s, TL_RT0_RGBA8, 2);
     c |= vw_combo("light buffer", &d->options.light_buffer, buffers, TL_LIGHT_BUFFER_EXACT, 2);
-    c |= vw_combo("FXAA", &d->options.fxaa, fxaas, TL_FXAA_OFF, 4);
+    c |= vw_ui_aa(app);
+    if (d->options.msaa <= 1 && d->options.fxaa != TL_FXAA_OFF) c |= vw_combo("FXAA preset", &d->options.fxaa, fxaas, TL_FXAA_OFF, 4);
     if (d->options.exposure <= 0) d->options.exposure = 1.0f;
     ImGui::SliderFloat("exposure", &d->options.exposure, 0.05f, 20.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
     c |= ImGui::IsItemDeactivatedAfterEdit();

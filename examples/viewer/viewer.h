@@ -37,6 +37,7 @@ typedef enum vw_view {
     VW_VIEW_DOF_COC,        /* depth of field: circle of confusion radius (dof target alpha), heat scale */
     VW_VIEW_SSR,            /* screen-space reflections: the term added to HDR (ssr target) */
     VW_VIEW_BLOOM,          /* bloom: the glow the tone-map pass adds to HDR (bloom target, first level) */
+    VW_VIEW_MSAA_EDGES,     /* MSAA in thin-lpp: pixels with a sample re-lit from the lists (its texel another surface's) */
     VW_VIEW_COUNT
 } vw_view;
 
@@ -173,6 +174,15 @@ const char *vw_light_scale_name(float scale);
 void vw_light_scale_cycle(vw_app *app);
 /** Shift+R: the dynamic light scale on or off. */
 void vw_light_scale_toggle_dynamic(vw_app *app);
+
+/* aa.c: antialiasing as one choice (key M, the panel) */
+typedef enum vw_aa { VW_AA_NONE, VW_AA_FXAA, VW_AA_MSAA2, VW_AA_MSAA4, VW_AA_MSAA8, VW_AA_COUNT } vw_aa;
+vw_aa vw_aa_of(const tl_renderer_options *o);
+const char *vw_aa_name(vw_aa a);
+/** Sets the options' fxaa and msaa for `a` and asks for a rebuild. */
+void vw_aa_set(vw_app *app, vw_aa a);
+/** The M key: none -> FXAA -> MSAA 2x -> 4x -> 8x -> none. */
+void vw_aa_cycle(vw_app *app);
 
 /* ui.cpp */
 int vw_ui_init(void *glfw_window);

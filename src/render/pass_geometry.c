@@ -199,8 +199,9 @@ static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *
     if (in->stipple && (d->samples & TL__B(LIGHT_DIFFUSE)))
         snprintf(upsample, sizeof upsample, " TL_STIPPLE %s", in->rt0_define);
     if (d->depth_target == TL_TARGET_DEPTH_MSAA && (d->samples & TL__B(LIGHT_DIFFUSE)))
-        snprintf(upsample, sizeof upsample, " TL_MSAA_LIGHT %s%s", in->rt0_define,
-                 (d->reads & TL__B(LIGHT_LISTS)) ? " TL_RELIGHT_TILES" : "");
+        snprintf(upsample, sizeof upsample, " TL_MSAA_LIGHT %s%s%s", in->rt0_define,
+                 (d->reads & TL__B(LIGHT_LISTS)) ? " TL_RELIGHT_TILES" : "",
+                 tl__depth_format(in->o) == GL_DEPTH_COMPONENT32F ? " TL_DEPTH_FLOAT" : "");
     snprintf(out->slot[0], sizeof out->slot[0], "%s%s%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",
              in->material_defines, tl__ssao_defines(in, d), upsample);
 }

@@ -25,7 +25,9 @@ static const tl__target_def tl__target_light_lists = {TL__TARGET(LIGHT_LISTS, "l
 static void tl__cull_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
     if (!tl__tiled(in)) return;
-    d->reads = d->samples = TL__B(DEPTH);
+    /* MSAA in thin-lpp: the tiles' bounds cover every sample's depth (the multisampled depth the
+     * material pass tests against), so the edge samples it re-lights from the lists miss no light */
+    d->reads = d->samples = in->msaa > 1 && in->mode->material_pass ? TL__B(DEPTH_MSAA) : TL__B(DEPTH);
     d->writes = TL__B(LIGHT_LISTS);
     d->compute = 1;
     d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_TILES;
@@ -33,13 +35,14 @@ static void tl__cull_declare(const tl__plan_input *in, tl__pass_decl *d)
 
 static void tl__cull_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
-    (void)d;
     out->used[0] = 1;
     /* the light scale: tiles are in the frame's pixels (their depth bounds cover every pixel the
      * edge fix-up may re-light); the pairs counted are the light buffer's texels */
     if (in->light_shift) snprintf(out->slot[0], sizeof out->slot[0], "TL_LIGHT_SHIFT=%u", (unsigned)in->light_shift);
-    /* forward's depth is multisampled with MSAA (pass_geometry.c) */
-    if (in->mode->forward && in->msaa > 1) snprintf(out->slot[0], sizeof out->slot[0], "TL_DEPTH_SAMPLES=%u", (unsigned)in->msaa);
+    /* forward's depth is multisampled with MSAA, and thin-lpp's cull reads its material pass's (pass_geometry.c) */
+    if (in->msaa > 1)
+        snprintf(out->slot[0], sizeof out->slot[0], "TL_DEPTH_SAMPLES=%u%s", (unsigned)in->msaa,
+                 (d->samples & TL__B(DEPTH_MSAA)) ? " TL_CULL_DEPTH_MSAA" : "");
 }
 
 const tl__pass_def tl__pass_light_cull = {
