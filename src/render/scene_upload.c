@@ -158,6 +158,13 @@ tl_result tl__scene_validate(tl__device *r, const tl_scene *s)
         for (int k = 0; k < 3; k++)
             if (!isfinite(s->vertices[i].position[k]))
                 return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: vertex %zu has a non-finite position", i);
+    /* NaN in a vertex colour or the second UV set would reach every target it shades */
+    const struct { const float *v; size_t n; const char *what; } extra[2] = {{s->colors, 4, "colors"}, {s->uv1, 2, "uv1"}};
+    for (int a = 0; a < 2; a++)
+        for (size_t i = 0; extra[a].v && i < s->vertex_count * extra[a].n; i++)
+            if (!isfinite(extra[a].v[i]))
+                return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: %s of vertex %zu is not finite", extra[a].what,
+                                i / extra[a].n);
     return tl__scene_parts(r, s);
 }
 

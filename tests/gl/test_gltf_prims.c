@@ -246,3 +246,28 @@ TL_TEST(gltf_points_lines_pass_and_attributes_planned_only_when_used)
         TL_CHECK(!(without.vertex_attributes & TL_ATTRIBUTE_UV1)); /* no uv1 without textures */
     }
 }
+
+TL_TEST(renderer_non_finite_vertex_color_or_uv1_refused)
+{
+    static float colors[3][4] = {{1, 1, 1, 1}, {1, 1, 1, 1}, {1, 1, 1, 1}}, uv1[3][2] = {{0, 0}, {1, 0}, {0, 1}};
+    tl_vertex v[3] = {{.position = {0, 0, 0}}, {.position = {1, 0, 0}}, {.position = {0, 1, 0}}};
+    uint32_t idx[3] = {0, 1, 2};
+    tl_object o = {.index_count = 3};
+    tl_scene s = {.vertices = v, .vertex_count = 3, .indices = idx, .index_count = 3, .objects = &o, .object_count = 1,
+                  .colors = &colors[0][0], .uv1 = &uv1[0][0]};
+    if (!ensure_context()) return;
+    tl_renderer_desc d = {.width = 8, .height = 8, .get_proc_address = tl_context_proc_loader,
+                          .get_proc_address_user = g_ctx};
+    tl_renderer *r = NULL;
+    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
+    if (!r) return;
+    TL_CHECK(tl_renderer_set_scene(r, &s) == TL_OK);
+    colors[1][2] = NAN;
+    TL_CHECK(tl_renderer_set_scene(r, &s) == TL_ERROR_INVALID_ARGUMENT);
+    colors[1][2] = 1.0f;
+    uv1[2][0] = INFINITY;
+    TL_CHECK(tl_renderer_set_scene(r, &s) == TL_ERROR_INVALID_ARGUMENT);
+    uv1[2][0] = 0.0f;
+    TL_CHECK(tl_renderer_set_scene(r, &s) == TL_OK && tl_renderer_render(r, NULL, NULL) == TL_OK);
+    tl_renderer_destroy(r);
+}
