@@ -1,6 +1,7 @@
 // Material evaluation shared by every geometry pass (G-buffer, material, forward, transparent).
 // Permutations (frame plan): TL_HAS_UV, TL_NORMAL_MAP, TL_MR_TEXTURE, TL_EMISSIVE_TEXTURE,
-// TL_OCCLUSION, TL_ALPHA_MASK; per-material switches are uniforms (u_texture_mask, u_material_flags).
+// TL_OCCLUSION, TL_ALPHA_MASK, TL_VCOLOR (vertex colours), TL_UV1 (a second UV set); per-material
+// switches are uniforms (u_texture_mask, u_uv1_mask, u_material_flags).
 
 #ifndef TL_MATERIAL_GLSL
 #define TL_MATERIAL_GLSL
@@ -20,6 +21,7 @@ layout(std140, binding = TL_UBO_MATERIAL) uniform tl_material_block {
     float u_occlusion_strength;
     int u_material_flags; // TL_MATERIAL_* of scene.h
     int u_texture_mask;   // 1 albedo, 2 normal, 4 metallic-roughness, 8 emissive, 16 occlusion
+    int u_uv1_mask;       // the same bits: the maps that read the second UV set
 };
 layout(binding = TL_UNIT_ALBEDO_TEXTURE) uniform sampler2D u_albedo_texture;       // sRGB
 layout(binding = TL_UNIT_NORMAL_TEXTURE) uniform sampler2D u_normal_texture;
@@ -32,6 +34,22 @@ in vec2 v_uv;
 in vec4 v_tangent;
 in vec3 v_view_position;
 flat in uint v_object;
+#ifdef TL_VCOLOR
+in vec4 v_color;
+#endif
+#ifdef TL_UV1
+in vec2 v_uv1;
+#endif
+
+// The texture coordinates of map `bit` (a bit of u_texture_mask).
+vec2 tl_uv(int bit)
+{
+#ifdef TL_UV1
+    return (u_uv1_mask & bit) != 0 ? v_uv1 : v_uv;
+#else
+    return v_uv;
+#endif
+}
 
 struct tl_surface {
     vec3 albedo;   // linear diffuse colour
@@ -48,7 +66,10 @@ tl_surface tl_material_surface()
     tl_surface s;
     vec4 base = vec4(u_albedo, u_alpha);
 #ifdef TL_HAS_UV
-    if ((u_texture_mask & 1) != 0) base *= texture(u_albedo_texture, v_uv);
+    if ((u_texture_mask & 1) != 0) base *= texture(u_albedo_texture, tl_uv(1));
+#endif
+#ifdef TL_VCOLOR
+    base *= v_color;
 #endif
     s.albedo = base.rgb;
     s.alpha = base.a;
@@ -58,7 +79,7 @@ tl_surface tl_material_surface()
     if ((u_material_flags & 8) != 0) {
         float metal = u_metallic, rough = u_roughness;
         if ((u_texture_mask & 4) != 0) {
-            vec4 mr = texture(u_mr_texture, v_uv);
+            vec4 mr = texture(u_mr_texture, tl_uv(4));
             metal *= mr.b;
             rough *= mr.g;
         }
@@ -70,12 +91,12 @@ tl_surface tl_material_surface()
 #endif
     s.emissive = u_emissive;
 #ifdef TL_EMISSIVE_TEXTURE
-    if ((u_texture_mask & 8) != 0) s.emissive *= texture(u_emissive_texture, v_uv).rgb;
+    if ((u_texture_mask & 8) != 0) s.emissive *= texture(u_emissive_texture, tl_uv(8)).rgb;
 #endif
     s.occlusion = 1.0;
 #ifdef TL_OCCLUSION
     if ((u_texture_mask & 16) != 0)
-        s.occlusion = 1.0 + u_occlusion_strength * (texture(u_occlusion_texture, v_uv).r - 1.0);
+        s.occlusion = 1.0 + u_occlusion_strength * (texture(u_occlusion_texture, tl_uv(16)).r - 1.0);
 #endif
     return s;
 }
@@ -104,7 +125,7 @@ vec3 tl_material_normal()
         if (tl2 > 1e-20) {
             t *= inversesqrt(tl2);
             vec3 b = cross(n, t) * (v_tangent.w < 0.0 ? -1.0 : 1.0);
-            vec3 m = texture(u_normal_texture, v_uv).xyz * 2.0 - 1.0;
+            vec3 m = texture(u_normal_texture, tl_uv(2)).xyz * 2.0 - 1.0;
             m.xy *= u_normal_scale;
             vec3 p = t * m.x + b * m.y + n * m.z;
             float pl2 = dot(p, p);

@@ -399,6 +399,7 @@ typedef enum tl_pass {
     TL_PASS_STIPPLE_DEPTH, /**< stipple: the opaque depth copied before the transparent layers overwrite it */
     TL_PASS_STIPPLE,       /**< stipple: transparent layers into depth and RT0, one pixel of each 2x2 quad each */
     TL_PASS_STIPPLE_RESOLVE, /**< "stipple-blend": transparent layers blended onto HDR with the light of their own pixels */
+    TL_PASS_POINTS_LINES,  /**< points and lines, forward-lit after the opaque frame (1 pixel wide) */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
@@ -444,6 +445,10 @@ typedef enum tl_target_id {
 #define TL_ATTRIBUTE_UV 4u
 /** Tangent attribute bit (only with normal maps). */
 #define TL_ATTRIBUTE_TANGENT 8u
+/** Vertex colour attribute bit (only with tl_scene.colors). */
+#define TL_ATTRIBUTE_COLOR 16u
+/** Second texture coordinate attribute bit (only with tl_scene.uv1 and a map that reads it). */
+#define TL_ATTRIBUTE_UV1 32u
 
 /** Capacity of tl_frame_plan.programs. */
 #define TL_PLAN_MAX_PROGRAMS 48

@@ -78,7 +78,18 @@ typedef struct tl_material {
     uint32_t occlusion_map;   /**< R ambient occlusion; 0 = none */
     uint32_t flags;           /**< TL_MATERIAL_*; 0: single-sided, opaque, Blinn-Phong */
     char name[64];            /**< for messages, NUL-terminated; may be empty */
+    /** TL_MAP_* bits: the maps sampled with the second texture coordinate set (tl_scene.uv1,
+     *  glTF textureInfo.texCoord = 1); 0: every map reads tl_vertex.uv. In a scene without uv1
+     *  such a map reads tl_vertex.uv. */
+    uint32_t uv1_maps;
 } tl_material;
+
+/** Bits of tl_material.uv1_maps, one per texture map. */
+#define TL_MAP_ALBEDO 1u
+#define TL_MAP_NORMAL 2u             /**< see TL_MAP_ALBEDO */
+#define TL_MAP_METALLIC_ROUGHNESS 4u /**< see TL_MAP_ALBEDO */
+#define TL_MAP_EMISSIVE 8u           /**< see TL_MAP_ALBEDO */
+#define TL_MAP_OCCLUSION 16u         /**< see TL_MAP_ALBEDO */
 
 /** Material flag: no back-face culling; back faces are shaded with the flipped normal. */
 #define TL_MATERIAL_DOUBLE_SIDED 1u
@@ -92,10 +103,22 @@ typedef struct tl_material {
  *  TL_LIGHTING_DEFAULT a scene that draws one is lit with GGX. */
 #define TL_MATERIAL_MICROFACET 16u
 
+/** What an object's indices draw (tl_object.primitive). Points and lines have no surface for a
+ *  G-buffer: every mode draws them forward after the opaque frame, 1 pixel wide (GL core has no
+ *  wider lines), lit with their normal, or facing the viewer where their normal is zero
+ *  (docs/gltf.md, "Points and lines"). */
+typedef enum tl_primitive {
+    TL_PRIMITIVE_TRIANGLES = 0, /**< 3 indices a triangle (the default) */
+    TL_PRIMITIVE_LINES,         /**< 2 indices a line segment */
+    TL_PRIMITIVE_POINTS,        /**< 1 index a point */
+    TL_PRIMITIVE_COUNT_         /**< number of values */
+} tl_primitive;
+
 /** A drawable object: a range of the scene's index buffer with one material and a world transform. */
 typedef struct tl_object {
     uint32_t first_index;  /**< first index in tl_scene.indices */
-    uint32_t index_count;  /**< a multiple of 3; 0: an empty object, never drawn */
+    /** A multiple of 3 for triangles, of 2 for lines (`primitive`); 0: an empty object, never drawn */
+    uint32_t index_count;
     /** Index into tl_scene.materials; in a scene with no materials, 0 is the zeroed (plain grey)
      *  material. */
     uint32_t material;
@@ -107,6 +130,7 @@ typedef struct tl_object {
      *  contain the object let culling drop it where it is visible. */
     float bounds_min[3];
     float bounds_max[3];   /**< see bounds_min */
+    uint32_t primitive;    /**< tl_primitive; 0: triangles */
 } tl_object;
 
 /** Kinds of light; each is drawn as its own instanced light volume. */
@@ -169,8 +193,8 @@ typedef struct tl_camera {
 typedef struct tl_scene {
     tl_vertex *vertices;      /**< vertex_count vertices */
     size_t vertex_count;      /**< at most 2^32 - 1 */
-    uint32_t *indices;        /**< triangles, 3 per face */
-    size_t index_count;       /**< a multiple of 3 */
+    uint32_t *indices;        /**< the objects' triangles, lines and points (tl_object.primitive) */
+    size_t index_count;       /**< number of indices */
     tl_object *objects;       /**< object_count objects */
     size_t object_count;      /**< number of objects */
     tl_material *materials;   /**< material_count materials */
@@ -186,6 +210,14 @@ typedef struct tl_scene {
     float bounds_min[3];
     float bounds_max[3];      /**< see bounds_min */
     tl_allocator allocator;   /**< what allocated the arrays; zeroed: malloc/free */
+    /** Per-vertex colours (glTF COLOR_0): vertex_count linear RGBA quadruples that multiply the
+     *  material's base colour and alpha (the albedo and alpha in every mode; the constant specular
+     *  of a material without a metallic-roughness map is not tinted, as with an albedo map);
+     *  NULL: white. */
+    float *colors;
+    /** The second texture coordinate set (glTF TEXCOORD_1): vertex_count pairs, read by the maps
+     *  named in tl_material.uv1_maps; NULL: none. */
+    float *uv1;
 } tl_scene;
 
 /** What a scene uses, for the frame planner (DESIGN.md section 4). Only materials that some
@@ -210,6 +242,9 @@ typedef struct tl_scene_feature_set {
     int has_microfacet;   /**< some material is authored for GGX (TL_MATERIAL_MICROFACET or metallic-roughness) */
     size_t triangle_count; /**< triangles in the index buffer */
     size_t object_count;   /**< objects in the scene */
+    int has_points_lines;  /**< some non-empty object draws points or lines (the points-lines pass) */
+    int has_vertex_colors; /**< the scene has colors and some non-empty object (the colour attribute) */
+    int has_uv1;           /**< the scene has uv1 and a drawn material samples a map with it */
 } tl_scene_feature_set;
 
 /** Fills *out with what `scene` uses; a NULL scene gives all zeros. */

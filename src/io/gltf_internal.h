@@ -291,11 +291,15 @@ tl_material convert_material(const context &c, const tinygltf::Model &m, int ind
 // One glTF primitive's slice of the scene's vertex and index arrays (shared by every instance).
 struct primitive_plan {
     int mesh = -1, primitive = -1;
-    bool skipped = false;       // not triangles, or no POSITION: warned, no object
+    bool skipped = false;       // no POSITION, or an unknown mode: warned, no object
+    int mode = 4;               // glTF's primitive mode (TINYGLTF_MODE_*)
+    uint32_t draws = 0;         // what its indices draw (tl_primitive): strips and fans become lists
     bool indexed = false;
     bool has_normals = false;
     bool has_uvs = false;
     bool has_tangents = false;
+    bool has_colors = false;    // COLOR_0
+    bool has_uv1 = false;       // TEXCOORD_1
     bool unweld = false;        // flat normals to generate on an indexed primitive
     bool needs_tangents = false; // the material has a normal map
     int gltf_material = -1;
@@ -310,9 +314,16 @@ struct primitive_plan {
 
 // Validates the primitive's accessors and fills counts (not offsets). Throws.
 void plan_primitive(const context &c, const tinygltf::Model &m, int mesh, int primitive, primitive_plan *p);
-// Fills vertices[p.first_vertex ...] and indices[p.first_index ...] (global indices). Throws.
+// The scene's optional per-vertex arrays (nullptr when the scene has none): RGBA colours (white
+// where a primitive has no COLOR_0) and the second UV set (the first where it has no TEXCOORD_1).
+struct vertex_extras {
+    float *colors = nullptr;
+    float *uv1 = nullptr;
+};
+// Fills vertices[p.first_vertex ...], indices[p.first_index ...] (global indices) and the extras
+// of its vertices. Throws.
 void build_primitive(const context &c, const tinygltf::Model &m, const primitive_plan &p, tl_vertex *vertices,
-                     uint32_t *indices);
+                     uint32_t *indices, const vertex_extras &extras);
 
 // Normal and tangent generation on one primitive (`idx` are local indices, 3 per triangle).
 void flat_normals(tl_vertex *v, size_t vertex_count); // vertices unshared: 3 per triangle

@@ -9,6 +9,7 @@
 
 #include "gltf_internal.h"
 #include "gltf_math.h"
+#include "scene/validate.h"
 
 namespace tl_gltf {
 namespace {
@@ -27,6 +28,8 @@ void free_scene(const context &c, tl_scene *s)
     free_bytes(c, s->objects, s->object_count * sizeof(tl_object));
     free_bytes(c, s->materials, s->material_count * sizeof(tl_material));
     free_bytes(c, s->lights, s->light_count * sizeof(tl_light));
+    free_bytes(c, s->colors, s->colors ? s->vertex_count * 4 * sizeof(float) : 0);
+    free_bytes(c, s->uv1, s->uv1 ? s->vertex_count * 2 * sizeof(float) : 0);
     free_bytes(c, s, sizeof(tl_scene));
 }
 
@@ -140,7 +143,7 @@ void plan_materials(const context &c, const tinygltf::Model &model, load_state *
             material_slot[slot] = (uint32_t)(st->materials.size() - 1);
         }
         p.material = material_slot[slot];
-        p.needs_tangents = st->materials[p.material].normal_map != 0;
+        p.needs_tangents = st->materials[p.material].normal_map != 0 && p.draws == TL_PRIMITIVE_TRIANGLES;
     }
 }
 
@@ -158,8 +161,9 @@ void plan_geometry(const context &c, const tinygltf::Model &model, load_state *s
             primitive_plan &pl = st->plans[first + p];
             if (pl.skipped || !pl.index_count) continue;
             st->object_total++;
-            drawn = add_counted(drawn, pl.index_count / 3, c.max_triangles, over_triangles);
-            if (mirrors(mi.world)) pl.mirrored = true;
+            // points and lines count as triangles: one per point or line
+            drawn = add_counted(drawn, pl.index_count / tl__primitive_indices(pl.draws), c.max_triangles, over_triangles);
+            if (mirrors(mi.world) && pl.draws == TL_PRIMITIVE_TRIANGLES) pl.mirrored = true;
         }
     }
     for (primitive_plan &p : st->plans) {
@@ -180,16 +184,36 @@ void plan_geometry(const context &c, const tinygltf::Model &model, load_state *s
                                  std::to_string(c.max_triangles));
 }
 
-// The shared vertex and index arrays, and the mirrored index copies.
+// Whether the scene keeps vertex colours (some drawn primitive has COLOR_0) and a second UV set
+// (some drawn primitive has TEXCOORD_1 and its material reads it).
+void plan_extras(const load_state &st, bool *colors, bool *uv1)
+{
+    *colors = *uv1 = false;
+    for (const primitive_plan &p : st.plans) {
+        if (p.skipped || !p.index_count) continue;
+        *colors = *colors || p.has_colors;
+        *uv1 = *uv1 || (p.has_uv1 && st.materials[p.material].uv1_maps != 0);
+    }
+}
+
+// The shared vertex and index arrays (with the optional colours and second UV set), and the
+// mirrored index copies.
 void build_geometry(const context &c, const tinygltf::Model &model, const load_state &st, tl_scene *s)
 {
     s->vertices = scene_array<tl_vertex>(c, st.vertex_total, std::to_string(st.vertex_total) + " vertices");
     s->vertex_count = st.vertex_total;
     s->indices = scene_array<uint32_t>(c, st.index_total, std::to_string(st.index_total) + " indices");
     s->index_count = st.index_total;
+    bool colors, uv1;
+    plan_extras(st, &colors, &uv1);
+    if (colors) s->colors = scene_array<float>(c, 4 * st.vertex_total, "vertex colours");
+    if (uv1) s->uv1 = scene_array<float>(c, 2 * st.vertex_total, "TEXCOORD_1");
+    vertex_extras extras;
+    extras.colors = s->colors;
+    extras.uv1 = s->uv1;
     for (const primitive_plan &p : st.plans) {
         if (p.skipped) continue;
-        build_primitive(c, model, p, s->vertices, s->indices);
+        build_primitive(c, model, p, s->vertices, s->indices, extras);
         if (!p.mirrored) continue;
         const uint32_t *src = s->indices + p.first_index;
         uint32_t *dst = s->indices + p.mirrored_first_index;
@@ -216,6 +240,7 @@ void build_objects(const context &c, const tinygltf::Model &model, const load_st
             o.first_index = (uint32_t)(mirrors(mi.world) ? pl.mirrored_first_index : pl.first_index);
             o.index_count = (uint32_t)pl.index_count;
             o.material = pl.material;
+            o.primitive = pl.draws;
             for (int k = 0; k < 16; k++) o.transform[k] = (float)mi.world[k];
             if (!object_bounds(s->vertices + pl.first_vertex, pl.vertex_count, mi.world, o.bounds_min, o.bounds_max))
                 fail(TL_ERROR_PARSE, element("nodes", (size_t)mi.node) + ": world-space positions overflow single precision");

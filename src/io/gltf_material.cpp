@@ -26,13 +26,22 @@ const tinygltf::Material &default_material()
     return d;
 }
 
-// A texture slot: the scene texture's map (index + 1, 0 = none), with a warning for the texture
-// coordinate sets we ignore.
-uint32_t slot(const context &c, const tinygltf::Model &m, texture_table *t, int index, int tex_coord,
-              const std::string &what)
+// A texture slot: the scene texture's map (index + 1, 0 = none); texCoord 1 sets the map's bit
+// (TL_MAP_*) in uv1_maps, and the sets past it are read as TEXCOORD_0 with a warning.
+uint32_t slot(const context &c, const tinygltf::Model &m, texture_table *t, const tinygltf::TextureInfo &info,
+              uint32_t bit, const std::string &what, uint32_t *uv1_maps)
 {
-    if (index >= 0 && tex_coord != 0) warn(c, what + ": texCoord " + std::to_string(tex_coord) + " is read as TEXCOORD_0");
-    return texture_for(c, m, t, index, what);
+    if (info.index >= 0 && info.texCoord == 1) *uv1_maps |= bit;
+    if (info.index >= 0 && info.texCoord > 1)
+        warn(c, what + ": texCoord " + std::to_string(info.texCoord) + " is read as TEXCOORD_0");
+    return texture_for(c, m, t, info.index, what);
+}
+template <class Info> tinygltf::TextureInfo plain(const Info &i)
+{
+    tinygltf::TextureInfo out;
+    out.index = i.index;
+    out.texCoord = i.texCoord;
+    return out;
 }
 
 // A positive scale: the material's 0 means "default 1", so an explicit 0 becomes the smallest
@@ -76,12 +85,13 @@ tl_material convert_material(const context &c, const tinygltf::Model &m, int ind
     }
 
     tl_material out = {};
-    out.albedo_map = slot(c, m, t, pbr.baseColorTexture.index, pbr.baseColorTexture.texCoord, name + ".baseColorTexture");
-    out.metallic_roughness_map = slot(c, m, t, pbr.metallicRoughnessTexture.index, pbr.metallicRoughnessTexture.texCoord,
-                                      name + ".metallicRoughnessTexture");
-    out.normal_map = slot(c, m, t, g.normalTexture.index, g.normalTexture.texCoord, name + ".normalTexture");
-    out.occlusion_map = slot(c, m, t, g.occlusionTexture.index, g.occlusionTexture.texCoord, name + ".occlusionTexture");
-    out.emissive_map = slot(c, m, t, g.emissiveTexture.index, g.emissiveTexture.texCoord, name + ".emissiveTexture");
+    uint32_t *uv1 = &out.uv1_maps;
+    out.albedo_map = slot(c, m, t, pbr.baseColorTexture, TL_MAP_ALBEDO, name + ".baseColorTexture", uv1);
+    out.metallic_roughness_map =
+        slot(c, m, t, pbr.metallicRoughnessTexture, TL_MAP_METALLIC_ROUGHNESS, name + ".metallicRoughnessTexture", uv1);
+    out.normal_map = slot(c, m, t, plain(g.normalTexture), TL_MAP_NORMAL, name + ".normalTexture", uv1);
+    out.occlusion_map = slot(c, m, t, plain(g.occlusionTexture), TL_MAP_OCCLUSION, name + ".occlusionTexture", uv1);
+    out.emissive_map = slot(c, m, t, g.emissiveTexture, TL_MAP_EMISSIVE, name + ".emissiveTexture", uv1);
 
     bool mr_map = out.metallic_roughness_map != 0;
     for (int i = 0; i < 3; i++) {

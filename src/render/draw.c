@@ -23,15 +23,21 @@ static void tl__sort_far_to_near(uint32_t *order, float *keys, size_t n)
     }
 }
 
+/* The set an object is drawn in: 0 opaque triangles, 1 blended triangles, 2 points and lines. */
+static int tl__draw_set(const tl__scene_gpu *g, const tl_object *o)
+{
+    if (o->primitive != TL_PRIMITIVE_TRIANGLES) return 2;
+    return (g->materials[o->material].flags & TL_MATERIAL_ALPHA_BLEND) != 0;
+}
+
 size_t tl__visibility(tl__scene_gpu *g, const tl__view *v)
 {
     size_t n = 0;
-    for (int set = 0; set < 2; set++) {
+    for (int set = 0; set < 3; set++) {
         size_t first = n;
         for (size_t i = 0; i < g->object_count; i++) {
             const tl_object *o = &g->objects[i];
-            int blend = (g->materials[o->material].flags & TL_MATERIAL_ALPHA_BLEND) != 0;
-            if (blend != set || !o->index_count || g->object_state[i]) continue; /* hidden or removed */
+            if (!o->index_count || g->object_state[i] || tl__draw_set(g, o) != set) continue; /* hidden or removed */
             if (!tl__box_visible((float(*)[4])v->planes, o->bounds_min, o->bounds_max)) continue;
             float d2 = 0.0f;
             for (int k = 0; k < 3; k++) {
@@ -42,9 +48,12 @@ size_t tl__visibility(tl__scene_gpu *g, const tl__view *v)
             g->draw_keys[n++] = d2;
         }
         if (set == 0) g->visible_opaque = n;
-        else tl__sort_far_to_near(g->visible + first, g->draw_keys + first, n - first);
+        if (set == 1) {
+            tl__sort_far_to_near(g->visible + first, g->draw_keys + first, n - first);
+            g->visible_transparent = n - first;
+        }
+        if (set == 2) g->visible_points_lines = n - first;
     }
-    g->visible_transparent = n - g->visible_opaque;
     return g->visible_opaque;
 }
 
@@ -82,14 +91,15 @@ static void tl__bind_material(const GladGLContext *gl, const tl__scene_gpu *g, u
         if (m->textures[k]) gl->BindTextureUnit((GLuint)(TL__UNIT_ALBEDO_TEXTURE + k), m->textures[k]);
 }
 
-static void tl__draw_objects(const tl__pass_ctx *ctx, int transparent)
+/* Draws visible[first, first + count): triangles cull their back faces unless double-sided; points
+ * and lines are never culled. */
+static void tl__draw_objects(const tl__pass_ctx *ctx, size_t first, size_t count)
 {
+    static const GLenum modes[TL_PRIMITIVE_COUNT_] = {GL_TRIANGLES, GL_LINES, GL_POINTS};
     const GladGLContext *gl = ctx->gl;
     const tl__scene_gpu *g = ctx->scene;
     tl__state_vertex_array(gl, ctx->state, g->vao);
     tl__state_program(gl, ctx->state, ctx->programs[0]);
-    size_t first = transparent ? g->visible_opaque : 0;
-    size_t count = transparent ? g->visible_transparent : g->visible_opaque;
     uint32_t last_material = UINT32_MAX;
     for (size_t j = first; j < first + count; j++) {
         uint32_t i = g->visible[j];
@@ -99,17 +109,27 @@ static void tl__draw_objects(const tl__pass_ctx *ctx, int transparent)
             last_material = o->material;
         }
         int double_sided = (g->materials[o->material].flags & TL_MATERIAL_DOUBLE_SIDED) != 0;
-        tl__state_cull(gl, ctx->state, double_sided ? TL__CULL_OFF : TL__CULL_BACK);
-        gl->DrawElementsInstancedBaseInstance(GL_TRIANGLES, (GLsizei)o->index_count, GL_UNSIGNED_INT,
+        int surface = o->primitive == TL_PRIMITIVE_TRIANGLES;
+        tl__state_cull(gl, ctx->state, double_sided || !surface ? TL__CULL_OFF : TL__CULL_BACK);
+        gl->DrawElementsInstancedBaseInstance(modes[o->primitive], (GLsizei)o->index_count, GL_UNSIGNED_INT,
                                               (const void *)(uintptr_t)(o->first_index * 4u), 1, i);
         ctx->out->indices += o->index_count;
         ctx->out->draw_calls++;
     }
 }
 
-void tl__draw_opaque(const tl__pass_ctx *ctx) { tl__draw_objects(ctx, 0); }
+void tl__draw_opaque(const tl__pass_ctx *ctx) { tl__draw_objects(ctx, 0, ctx->scene->visible_opaque); }
 
-void tl__draw_transparent(const tl__pass_ctx *ctx) { tl__draw_objects(ctx, 1); }
+void tl__draw_transparent(const tl__pass_ctx *ctx)
+{
+    tl__draw_objects(ctx, ctx->scene->visible_opaque, ctx->scene->visible_transparent);
+}
+
+void tl__draw_points_lines(const tl__pass_ctx *ctx)
+{
+    const tl__scene_gpu *g = ctx->scene;
+    tl__draw_objects(ctx, g->visible_opaque + g->visible_transparent, g->visible_points_lines);
+}
 
 void tl__draw_fullscreen(const tl__pass_ctx *ctx)
 {

@@ -55,7 +55,7 @@ typedef struct tl__plan_input {
      * TL_SPECULAR_NONE, then TL_GGX with GGX, then TL_FRESNEL_SUMS or TL_FRESNEL_NV in thin-lpp */
     char spec_define[48];
     const char *rt0_define;     /* TL_RT0_RGBA8 or TL_RT0_RGB10A2 */
-    char material_defines[96];  /* the geometry passes' material switches (leading space each) */
+    char material_defines[128]; /* the geometry passes' material switches (leading space each) */
     uint32_t msaa;              /* samples of the multisampled targets (tl__msaa_samples), 1: no MSAA */
     int stipple;                /* the blended materials go through the G-buffer's 2x2 stipple (pass_stipple.c) */
     char transparency_reason[96];
@@ -89,7 +89,7 @@ typedef struct tl__pass_decl {
 
 /* The defines of each of a pass's programs ("" leaves the slot out). */
 typedef struct tl__pass_defines {
-    char slot[TL__PASS_MAX_PROGRAMS][192];
+    char slot[TL__PASS_MAX_PROGRAMS][224];
     uint8_t used[TL__PASS_MAX_PROGRAMS];
 } tl__pass_defines;
 
@@ -167,6 +167,9 @@ void tl__light_pass_defines(const tl__plan_input *in, const tl__pass_decl *d, ch
 /* Forward shading reads tile lists (Forward+) in this plan; it has a depth pre-pass (modes.c). */
 int tl__forward_plus(const tl__plan_input *in);
 int tl__forward_prepass(const tl__plan_input *in);
+/* The depth the passes drawing into HDR after the opaque frame test against: DEPTH, or with MSAA
+ * in thin-lpp the material pass's multisampled depth.msaa (pass_geometry.c). */
+tl_target_id tl__shading_depth(const tl__plan_input *in);
 /* The depth and RT0 formats in a configuration (pass_geometry.c; the light scale's reduced copies too). */
 uint32_t tl__depth_format(const tl_renderer_options *o);
 uint32_t tl__rt0_format(const tl_renderer_options *o);
@@ -181,10 +184,12 @@ int tl__ssao_pass(const tl__plan_input *in);
 const char *tl__ssao_defines(const tl__plan_input *in, const tl__pass_decl *d);
 
 /* Execute steps several passes share (draw.c): a full-screen triangle with the first program;
- * the scene's visible opaque or transparent objects with the first program. */
+ * the scene's visible opaque or transparent triangles, or its points and lines, with the first
+ * program. */
 void tl__draw_fullscreen(const tl__pass_ctx *ctx);
 void tl__draw_opaque(const tl__pass_ctx *ctx);
 void tl__draw_transparent(const tl__pass_ctx *ctx);
+void tl__draw_points_lines(const tl__pass_ctx *ctx);
 
 /* The table, in execution order; application passes go between its entries. */
 extern const tl__pass_def *const tl__pass_table[TL_PASS_COUNT];

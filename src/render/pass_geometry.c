@@ -71,8 +71,7 @@ static tl__pipeline tl__geometry_state(const tl__plan_input *in, tl__depth_test 
 
 /* ---- depth pre-pass (forward; thin-lpp's multisampled depth with MSAA) ----------------------- */
 
-/* The depth the material and transparent passes test against. */
-static tl_target_id tl__shading_depth(const tl__plan_input *in)
+tl_target_id tl__shading_depth(const tl__plan_input *in)
 {
     return in->mode->material_pass && in->msaa > 1 ? TL_TARGET_DEPTH_MSAA : TL_TARGET_DEPTH;
 }

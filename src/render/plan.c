@@ -14,10 +14,11 @@
 
 static void tl__material_defines(const tl_scene_feature_set *f, char *out, size_t size)
 {
-    snprintf(out, size, "%s%s%s%s%s%s", f->has_textures ? " TL_HAS_UV" : "",
+    snprintf(out, size, "%s%s%s%s%s%s%s%s", f->has_textures ? " TL_HAS_UV" : "",
              f->has_normal_maps ? " TL_NORMAL_MAP" : "", f->has_metallic_roughness ? " TL_MR_TEXTURE" : "",
              f->has_emissive_texture ? " TL_EMISSIVE_TEXTURE" : "", f->has_occlusion ? " TL_OCCLUSION" : "",
-             f->has_alpha_mask ? " TL_ALPHA_MASK" : "");
+             f->has_alpha_mask ? " TL_ALPHA_MASK" : "", f->has_vertex_colors ? " TL_VCOLOR" : "",
+             f->has_uv1 && f->has_textures ? " TL_UV1" : "");
 }
 
 /* Volumes or tiles: forced by the options, else by the number of local lights (docs/frame.md
@@ -390,6 +391,8 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     p->pub.vertex_attributes = TL_ATTRIBUTE_POSITION | TL_ATTRIBUTE_NORMAL;
     if (in.f.has_textures) p->pub.vertex_attributes |= TL_ATTRIBUTE_UV;
     if (in.f.has_normal_maps) p->pub.vertex_attributes |= TL_ATTRIBUTE_TANGENT;
+    if (in.f.has_vertex_colors) p->pub.vertex_attributes |= TL_ATTRIBUTE_COLOR;
+    if (in.f.has_uv1 && in.f.has_textures) p->pub.vertex_attributes |= TL_ATTRIBUTE_UV1;
     if (in.f.point_lights) p->pub.light_types |= 1u << TL_LIGHT_POINT;
     if (in.f.spot_lights) p->pub.light_types |= 1u << TL_LIGHT_SPOT;
     if (in.f.directional_lights) p->pub.light_types |= 1u << TL_LIGHT_DIRECTIONAL;

@@ -86,8 +86,10 @@ size_t tl_frame_plan_format(const tl_frame_plan *p, char *buffer, size_t size)
     tl__printf(&o, "frame plan: mode %s, %ux%u\n", tl_render_mode_name(p->mode), p->width, p->height);
     tl__print_passes(&o, p);
     tl__print_targets_table(&o, p);
-    tl__printf(&o, "vertex attributes: position, normal%s%s\n", p->vertex_attributes & TL_ATTRIBUTE_UV ? ", uv" : "",
-               p->vertex_attributes & TL_ATTRIBUTE_TANGENT ? ", tangent" : "");
+    tl__printf(&o, "vertex attributes: position, normal%s%s%s%s\n", p->vertex_attributes & TL_ATTRIBUTE_UV ? ", uv" : "",
+               p->vertex_attributes & TL_ATTRIBUTE_TANGENT ? ", tangent" : "",
+               p->vertex_attributes & TL_ATTRIBUTE_COLOR ? ", color" : "",
+               p->vertex_attributes & TL_ATTRIBUTE_UV1 ? ", uv1" : "");
     tl__printf(&o, "light types:%s%s%s%s\n", p->light_types & (1u << TL_LIGHT_POINT) ? " point" : "",
                p->light_types & (1u << TL_LIGHT_SPOT) ? " spot" : "",
                p->light_types & (1u << TL_LIGHT_DIRECTIONAL) ? " directional" : "", p->light_types ? "" : " none");

@@ -27,7 +27,7 @@ typedef struct tl__material_ubo {
     float specular[3], alpha;
     float emissive[3], alpha_cutoff;
     float metallic, roughness, normal_scale, occlusion_strength;
-    int32_t flags, texture_mask, pad[2];
+    int32_t flags, texture_mask, uv1_mask, pad;
 } tl__material_ubo;
 
 typedef struct tl__gpu_material {
@@ -45,6 +45,7 @@ typedef struct tl__box {
 
 struct tl__scene_gpu {
     GLuint vao, vbo, ibo, vbo_object_ids, ubo_materials;
+    GLuint vbo_colors, vbo_uv1; /* tl_scene.colors and uv1 (vertex_capacity entries), 0 when the scene has none */
     size_t vertex_count, index_count;        /* in the two buffers */
     size_t vertex_capacity, index_capacity;  /* what the buffers hold room for (tl_renderer_add_geometry) */
     uint32_t vao_attributes; /* TL_ATTRIBUTE_* the vertex array binds */
@@ -58,14 +59,17 @@ struct tl__scene_gpu {
     tl__box *object_local;    /* per slot: its triangles' box in object space (bounds follow transforms) */
     int bounds_dirty;         /* an object moved: bounds_min/max are made again before the next view */
     uint32_t *material_uses;  /* per material: the objects with indices that draw it */
+    size_t points_lines_objects; /* objects with indices that draw points or lines */
     tl_scene_feature_set *material_features; /* per material: what it alone needs (tl_scene_features) */
     tl__gpu_material *materials;
     size_t material_count;
     GLuint *tex_srgb, *tex_linear; /* per scene texture, created on first use by a material */
     size_t texture_count;
-    uint32_t *visible;   /* per frame: opaque objects in scene order, then transparent far to near */
+    /* per frame: opaque triangles in scene order, then transparent ones far to near, then points and
+     * lines in scene order */
+    uint32_t *visible;
     float *draw_keys;    /* scratch for sorting transparent objects */
-    size_t visible_opaque, visible_transparent;
+    size_t visible_opaque, visible_transparent, visible_points_lines;
     tl_camera camera;
     float bounds_min[3], bounds_max[3]; /* the union of the objects' bounds: the near plane's floor */
     int has_bounds;
@@ -115,7 +119,7 @@ int tl__scene_features_refresh(tl__scene_gpu *g);
 /* The union of the objects' bounds again, after objects moved (before a view is resolved). */
 void tl__scene_bounds_refresh(tl__scene_gpu *g);
 
-/* draw.c: the visible objects once per frame (returns the opaque count), their per-object data
+/* draw.c: the visible objects once per frame (returns the opaque triangles' count), their per-object data
  * (with the per-object light lists' ranges when `first` is not NULL). */
 size_t tl__visibility(tl__scene_gpu *g, const tl__view *v);
 void tl__objects_fill(const tl__scene_gpu *g, const tl__view *v, const uint32_t *first, const uint32_t *count,

@@ -32,13 +32,24 @@ static int tl__material_of(const tl__scene_gpu *g, const tl_object *o)
     return g->material_count ? (int)o->material : 0;
 }
 
+/* An object with indices counted in (+1) or out (-1) of its material's uses and of the points and
+ * lines the scene draws. */
+static void tl__object_uses(tl__scene_gpu *g, const tl_object *o, int delta)
+{
+    if (!o->index_count) return;
+    g->material_uses[tl__material_of(g, o)] += (uint32_t)delta;
+    if (o->primitive != TL_PRIMITIVE_TRIANGLES) g->points_lines_objects += (size_t)(ptrdiff_t)delta;
+}
+
 /* Whether the scene's features (what the plan depends on) changed with the materials' uses. */
 int tl__scene_features_refresh(tl__scene_gpu *g)
 {
     tl_scene_feature_set f = {0};
     size_t nm = g->material_count ? g->material_count : 1;
+    int drawn = 0;
     for (size_t m = 0; m < nm; m++) {
         if (!g->material_uses[m]) continue;
+        drawn = 1;
         const tl_scene_feature_set *a = &g->material_features[m];
         f.has_specular |= a->has_specular;
         f.has_textures |= a->has_textures;
@@ -52,7 +63,10 @@ int tl__scene_features_refresh(tl__scene_gpu *g)
         f.has_emissive_texture |= a->has_emissive_texture;
         f.has_double_sided |= a->has_double_sided;
         f.has_microfacet |= a->has_microfacet;
+        f.has_uv1 |= a->has_uv1 && g->vbo_uv1;
     }
+    f.has_points_lines = g->points_lines_objects > 0;
+    f.has_vertex_colors = g->vbo_colors && drawn;
     tl_scene_feature_set *o = &g->features;
     f.point_lights = o->point_lights;
     f.spot_lights = o->spot_lights;
@@ -64,7 +78,9 @@ int tl__scene_features_refresh(tl__scene_gpu *g)
                    f.has_alpha_mask != o->has_alpha_mask || f.has_alpha_blend != o->has_alpha_blend ||
                    f.has_metallic_roughness != o->has_metallic_roughness || f.has_occlusion != o->has_occlusion ||
                    f.has_emissive_texture != o->has_emissive_texture || f.has_double_sided != o->has_double_sided ||
-                   f.has_microfacet != o->has_microfacet || f.alpha_blend_objects != o->alpha_blend_objects);
+                   f.has_microfacet != o->has_microfacet || f.alpha_blend_objects != o->alpha_blend_objects ||
+                   f.has_points_lines != o->has_points_lines || f.has_vertex_colors != o->has_vertex_colors ||
+                   f.has_uv1 != o->has_uv1);
     *o = f;
     return changed;
 }
@@ -76,7 +92,7 @@ void tl__scene_objects_init(tl__scene_gpu *g, const tl_scene *s)
         memset(local.transform, 0, sizeof local.transform); /* the identity: the box in object space */
         tl__object_bounds_compute(s, &local, g->object_local[i].min, g->object_local[i].max);
         g->object_state[i] = 0;
-        if (g->objects[i].index_count) g->material_uses[tl__material_of(g, &g->objects[i])]++;
+        tl__object_uses(g, &g->objects[i], 1);
     }
     for (size_t m = 0; m < s->material_count; m++)
         tl__material_features(&s->materials[m], s->texture_count, &g->material_features[m]);
@@ -190,10 +206,11 @@ static tl_result tl__object_resolve(tl__device *dev, const tl__scene_gpu *g, con
     char msg[TL__CHECK_MESSAGE_SIZE];
     tl_result res = tl__object_check(in, "object", msg, sizeof msg);
     if (res != TL_OK) return tl__fail(dev, res, "renderer: %s: %s", call, msg);
-    if ((uint64_t)in->first_index + in->index_count > g->index_count || in->index_count % 3)
+    if ((uint64_t)in->first_index + in->index_count > g->index_count || in->index_count % tl__primitive_indices(in->primitive))
         return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT,
                         "renderer: %s: object.first_index %u + index_count %u: outside the scene's %zu indices or "
-                        "not whole triangles", call, in->first_index, in->index_count, g->index_count);
+                        "not whole %s", call, in->first_index, in->index_count, g->index_count,
+                        tl__primitive_name(in->primitive));
     if (in->material >= g->material_count && !(g->material_count == 0 && in->material == 0))
         return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: object.material = %u: past the scene's %zu "
                         "materials", call, in->material, g->material_count);
@@ -214,11 +231,11 @@ static tl_result tl__object_resolve(tl__device *dev, const tl__scene_gpu *g, con
 static int tl__slot_put(tl__scene_gpu *g, uint32_t id, const tl_object *o, const tl__box *local)
 {
     tl_object *old = &g->objects[id];
-    if (old->index_count && !(g->object_state[id] & TL__OBJECT_REMOVED)) g->material_uses[tl__material_of(g, old)]--;
+    if (!(g->object_state[id] & TL__OBJECT_REMOVED)) tl__object_uses(g, old, -1);
     *old = *o;
     g->object_local[id] = *local;
     g->object_state[id] = 0;
-    if (o->index_count) g->material_uses[tl__material_of(g, o)]++;
+    tl__object_uses(g, o, 1);
     g->bounds_dirty = 1;
     return tl__scene_features_refresh(g);
 }
@@ -311,7 +328,7 @@ tl_result tl__scene_remove_object(tl__device *dev, tl__scene_gpu *g, uint32_t id
         if (!g->free_slots) return tl__fail(dev, TL_ERROR_OUT_OF_MEMORY, "renderer: remove_object: out of memory");
     }
     tl_object *o = &g->objects[id];
-    if (o->index_count) g->material_uses[tl__material_of(g, o)]--;
+    tl__object_uses(g, o, -1);
     memset(o, 0, sizeof *o); /* no indices: never drawn, culled or lit */
     memcpy(o->transform, tl__identity, sizeof o->transform);
     g->object_state[id] = TL__OBJECT_REMOVED;
@@ -330,6 +347,32 @@ static GLuint tl__buffer_grown(const GladGLContext *gl, GLuint old, size_t keep,
     if (keep) gl->CopyNamedBufferSubData(old, b, 0, 0, (GLsizeiptr)keep);
     tl__gl_label(gl, GL_BUFFER, b, label);
     return b;
+}
+
+/* The scene's colour and second-UV buffers (when it has them) follow appended vertices: white, and
+ * the vertices' own uv (tl_scene.colors and uv1 say what a vertex without them reads). */
+static tl_result tl__extras_append(tl__device *dev, tl__scene_gpu *g, const tl_vertex *vertices, size_t n, size_t cap)
+{
+    const GladGLContext *gl = &dev->gl;
+    struct { GLuint *buffer; size_t floats; const char *label; } x[2] = {{&g->vbo_colors, 4, "buffer.colors"},
+                                                                        {&g->vbo_uv1, 2, "buffer.uv1"}};
+    for (int k = 0; k < 2; k++) {
+        if (!*x[k].buffer || !n) continue;
+        size_t bytes = x[k].floats * sizeof(float);
+        float *data = (float *)tl__alloc_array(&dev->alloc, n, bytes);
+        if (!data) return tl__fail(dev, TL_ERROR_OUT_OF_MEMORY, "renderer: add_geometry: out of memory");
+        for (size_t i = 0; i < n; i++)
+            for (size_t c = 0; c < x[k].floats; c++) data[i * x[k].floats + c] = k == 0 ? 1.0f : vertices[i].uv[c];
+        if (cap != g->vertex_capacity) {
+            GLuint b = tl__buffer_grown(gl, *x[k].buffer, g->vertex_count * bytes, cap * bytes, x[k].label);
+            gl->DeleteBuffers(1, x[k].buffer);
+            *x[k].buffer = b;
+            if (g->vao) gl->VertexArrayVertexBuffer(g->vao, 2 + (GLuint)k, b, 0, (GLsizei)bytes);
+        }
+        gl->NamedBufferSubData(*x[k].buffer, (GLintptr)(g->vertex_count * bytes), (GLsizeiptr)(n * bytes), data);
+        tl__free(&dev->alloc, data);
+    }
+    return TL_OK;
 }
 
 tl_result tl__scene_add_geometry(tl__device *dev, tl__scene_gpu *g, const tl_vertex *vertices, size_t vertex_count,
@@ -361,9 +404,17 @@ tl_result tl__scene_add_geometry(tl__device *dev, tl__scene_gpu *g, const tl_ver
     for (size_t i = 0; i < index_count; i++) shifted[i] = indices[i] + (uint32_t)g->vertex_count;
     const GladGLContext *gl = &dev->gl;
     size_t vb = sizeof(tl_vertex);
+    size_t cap = g->vertex_capacity;
     if (g->vertex_count + vertex_count > g->vertex_capacity) { /* grown by half: appends cost their own bytes */
-        size_t cap = g->vertex_count + vertex_count + (g->vertex_count + vertex_count) / 2;
+        cap = g->vertex_count + vertex_count + (g->vertex_count + vertex_count) / 2;
         if (cap > UINT32_MAX) cap = UINT32_MAX;
+    }
+    tl_result res = tl__extras_append(dev, g, vertices, vertex_count, cap);
+    if (res != TL_OK) {
+        tl__free(&dev->alloc, shifted);
+        return res;
+    }
+    if (cap != g->vertex_capacity) {
         GLuint b = tl__buffer_grown(gl, g->vbo, g->vertex_count * vb, cap * vb, "buffer.vertices");
         gl->DeleteBuffers(1, &g->vbo);
         g->vbo = b;
@@ -371,12 +422,12 @@ tl_result tl__scene_add_geometry(tl__device *dev, tl__scene_gpu *g, const tl_ver
         if (g->vao) gl->VertexArrayVertexBuffer(g->vao, 0, g->vbo, 0, sizeof(tl_vertex));
     }
     if (g->index_count + index_count > g->index_capacity) {
-        size_t cap = g->index_count + index_count + (g->index_count + index_count) / 2;
-        if (cap > TL__MAX_SCENE_INDICES) cap = TL__MAX_SCENE_INDICES;
-        GLuint b = tl__buffer_grown(gl, g->ibo, g->index_count * 4u, cap * 4u, "buffer.indices");
+        size_t icap = g->index_count + index_count + (g->index_count + index_count) / 2;
+        if (icap > TL__MAX_SCENE_INDICES) icap = TL__MAX_SCENE_INDICES;
+        GLuint b = tl__buffer_grown(gl, g->ibo, g->index_count * 4u, icap * 4u, "buffer.indices");
         gl->DeleteBuffers(1, &g->ibo);
         g->ibo = b;
-        g->index_capacity = cap;
+        g->index_capacity = icap;
         if (g->vao) gl->VertexArrayElementBuffer(g->vao, g->ibo);
     }
     if (vertex_count)

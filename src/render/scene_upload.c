@@ -14,8 +14,8 @@ _Static_assert(TL__MATERIAL_TEXTURES == TL__MATERIAL_TEXTURE_SLOTS, "one texture
 void tl__scene_release(tl__device *dev, tl__scene_gpu *g)
 {
     const GladGLContext *gl = &dev->gl;
-    GLuint buffers[4] = {g->vbo, g->ibo, g->vbo_object_ids, g->ubo_materials};
-    for (int i = 0; i < 4; i++)
+    GLuint buffers[6] = {g->vbo, g->ibo, g->vbo_object_ids, g->ubo_materials, g->vbo_colors, g->vbo_uv1};
+    for (int i = 0; i < 6; i++)
         if (buffers[i]) gl->DeleteBuffers(1, &buffers[i]);
     if (g->vao) gl->DeleteVertexArrays(1, &g->vao);
     for (size_t i = 0; i < g->texture_count; i++) {
@@ -30,7 +30,8 @@ void tl__scene_release(tl__device *dev, tl__scene_gpu *g)
 }
 
 /* The vertex array binds only the attributes the plan needs, plus the object id (location 4, one
- * per instance: draw i uses base instance i). */
+ * per instance: draw i uses base instance i); vertex colours (location 5) and the second UV set
+ * (location 6) come from their own buffers (bindings 2 and 3). */
 void tl__scene_vao(tl__device *dev, tl__scene_gpu *g, uint32_t attributes)
 {
     if (!g->vbo || (g->vao && g->vao_attributes == attributes)) return;
@@ -47,6 +48,15 @@ void tl__scene_vao(tl__device *dev, tl__scene_gpu *g, uint32_t attributes)
         gl->EnableVertexArrayAttrib(g->vao, a);
         gl->VertexArrayAttribFormat(g->vao, a, sizes[a], GL_FLOAT, GL_FALSE, offs[a]);
         gl->VertexArrayAttribBinding(g->vao, a, 0);
+    }
+    const struct { uint32_t bit; GLuint buffer; GLint size; } extra[2] = {
+        {TL_ATTRIBUTE_COLOR, g->vbo_colors, 4}, {TL_ATTRIBUTE_UV1, g->vbo_uv1, 2}};
+    for (GLuint k = 0; k < 2; k++) {
+        if (!(attributes & extra[k].bit) || !extra[k].buffer) continue;
+        gl->VertexArrayVertexBuffer(g->vao, 2 + k, extra[k].buffer, 0, (GLsizei)(extra[k].size * sizeof(float)));
+        gl->EnableVertexArrayAttrib(g->vao, 5 + k);
+        gl->VertexArrayAttribFormat(g->vao, 5 + k, extra[k].size, GL_FLOAT, GL_FALSE, 0);
+        gl->VertexArrayAttribBinding(g->vao, 5 + k, 2 + k);
     }
     gl->VertexArrayVertexBuffer(g->vao, 1, g->vbo_object_ids, 0, sizeof(uint32_t));
     gl->VertexArrayBindingDivisor(g->vao, 1, 1);
@@ -86,8 +96,6 @@ static tl_result tl__scene_counts(tl__device *r, const tl_scene *s)
     for (size_t i = 0; i < sizeof a / sizeof a[0]; i++)
         if (a[i].count && !a[i].array)
             return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: %zu %s but no array", a[i].count, a[i].what);
-    if (s->index_count % 3)
-        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: %zu indices are not whole triangles", s->index_count);
     return TL_OK;
 }
 
@@ -135,12 +143,12 @@ tl_result tl__scene_validate(tl__device *r, const tl_scene *s)
                             "indices and %zu materials", i, o->first_index,
                             (unsigned long long)o->first_index + o->index_count, o->material, s->index_count,
                             s->material_count);
-        if (o->index_count % 3)
-            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: object %zu draws %u indices, not whole triangles",
-                            i, o->index_count);
         char what[32], msg[TL__CHECK_MESSAGE_SIZE];
         snprintf(what, sizeof what, "objects[%zu]", i);
         if ((res = tl__object_check(o, what, msg, sizeof msg)) != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
+        if (o->index_count % tl__primitive_indices(o->primitive))
+            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: object %zu draws %u indices, not whole %s", i,
+                            o->index_count, tl__primitive_name(o->primitive));
     }
     for (size_t i = 0; i < s->index_count; i++)
         if (s->indices[i] >= s->vertex_count)
@@ -150,6 +158,13 @@ tl_result tl__scene_validate(tl__device *r, const tl_scene *s)
         for (int k = 0; k < 3; k++)
             if (!isfinite(s->vertices[i].position[k]))
                 return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: vertex %zu has a non-finite position", i);
+    /* NaN in a vertex colour or the second UV set would reach every target it shades */
+    const struct { const float *v; size_t n; const char *what; } extra[2] = {{s->colors, 4, "colors"}, {s->uv1, 2, "uv1"}};
+    for (int a = 0; a < 2; a++)
+        for (size_t i = 0; extra[a].v && i < s->vertex_count * extra[a].n; i++)
+            if (!isfinite(extra[a].v[i]))
+                return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: %s of vertex %zu is not finite", extra[a].what,
+                                i / extra[a].n);
     return tl__scene_parts(r, s);
 }
 
@@ -226,6 +241,7 @@ static void tl__material_record(const tl_material *m, int texture_mask, tl__mate
     u->occlusion_strength = m->occlusion_strength != 0.0f ? m->occlusion_strength : 1.0f;
     u->flags = (int32_t)m->flags;
     u->texture_mask = texture_mask;
+    u->uv1_mask = (int32_t)(m->uv1_maps & (uint32_t)texture_mask);
 }
 
 /* Textures and one std140 record per material (a scene without materials: the zeroed one), with
@@ -313,6 +329,8 @@ tl_result tl__scene_upload(tl__device *dev, tl__scene_gpu *g, const tl_scene *s)
     g->vbo = tl__static_buffer(gl, s->vertex_count * sizeof(tl_vertex), s->vertices, "buffer.vertices");
     g->ibo = tl__static_buffer(gl, s->index_count * 4u, s->indices, "buffer.indices");
     g->vbo_object_ids = tl__static_buffer(gl, no * sizeof(uint32_t), ids, "buffer.object_ids");
+    if (s->colors) g->vbo_colors = tl__static_buffer(gl, s->vertex_count * 16u, s->colors, "buffer.colors");
+    if (s->uv1) g->vbo_uv1 = tl__static_buffer(gl, s->vertex_count * 8u, s->uv1, "buffer.uv1");
     tl__free(a, ids);
     g->vertex_count = g->vertex_capacity = s->vertex_count;
     g->index_count = g->index_capacity = s->index_count;

@@ -19,6 +19,8 @@ void tl_scene_destroy(tl_scene *scene)
     tl__free(&a, scene->objects);
     tl__free(&a, scene->materials);
     tl__free(&a, scene->lights);
+    tl__free(&a, scene->colors);
+    tl__free(&a, scene->uv1);
     tl__free(&a, scene);
 }
 
@@ -50,6 +52,8 @@ void tl__material_features(const tl_material *material, size_t texture_count, tl
     if (tl__nonzero3(m.emissive) && (m.emissive_map == 0 || emissive)) out->has_emissive = 1;
     if (m.flags & TL_MATERIAL_ALPHA_MASK) out->has_alpha_mask = 1;
     if (m.flags & TL_MATERIAL_ALPHA_BLEND) out->has_alpha_blend = 1;
+    for (int k = 0; k < TL__MATERIAL_TEXTURE_SLOTS; k++) /* the scene's uv1 decides (tl_scene_features) */
+        if ((m.uv1_maps & (1u << k)) && tl__material_has_texture(&m, k, nt)) out->has_uv1 = 1;
 }
 
 void tl_scene_features(const tl_scene *scene, tl_scene_feature_set *out)
@@ -77,6 +81,13 @@ void tl_scene_features(const tl_scene *scene, tl_scene_feature_set *out)
         tl__material_features(&scene->materials[o->material], scene->textures ? scene->texture_count : 0, out);
         if (scene->materials[o->material].flags & TL_MATERIAL_ALPHA_BLEND) out->alpha_blend_objects++;
     }
+    for (size_t i = 0; i < scene->object_count && scene->objects; i++) {
+        const tl_object *o = &scene->objects[i];
+        if (!o->index_count) continue;
+        if (o->primitive != TL_PRIMITIVE_TRIANGLES) out->has_points_lines = 1;
+        if (scene->colors) out->has_vertex_colors = 1;
+    }
+    if (!scene->uv1) out->has_uv1 = 0;
 
     out->triangle_count = scene->indices ? scene->index_count / 3 : 0;
     out->object_count = scene->object_count;

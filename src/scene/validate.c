@@ -50,8 +50,23 @@ int tl__objects_bounds(const tl_object *objects, size_t count, float min[3], flo
     return any;
 }
 
+uint32_t tl__primitive_indices(uint32_t primitive)
+{
+    static const uint32_t n[TL_PRIMITIVE_COUNT_] = {3, 2, 1};
+    return primitive < TL_PRIMITIVE_COUNT_ ? n[primitive] : 0u;
+}
+
+const char *tl__primitive_name(uint32_t primitive)
+{
+    static const char *const names[TL_PRIMITIVE_COUNT_] = {"triangles", "lines", "points"};
+    return primitive < TL_PRIMITIVE_COUNT_ ? names[primitive] : "unknown";
+}
+
 tl_result tl__object_check(const tl_object *o, const char *what, char *message, size_t size)
 {
+    if (o->primitive >= TL_PRIMITIVE_COUNT_)
+        return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size, "%s.primitive = %u: not a tl_primitive", what,
+                       o->primitive);
     for (int k = 0; k < 16; k++)
         if (!isfinite(o->transform[k]))
             return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size, "%s.transform[%d] = %g: not finite", what, k,

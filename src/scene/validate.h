@@ -41,10 +41,14 @@ int tl__objects_bounds(const tl_object *objects, size_t count, float min[3], flo
 int tl__transform_is_zero(const float m[16]);
 /* Whether all six bounds of an object are zero (the default: computed from its vertices). */
 int tl__bounds_are_zero(const tl_object *o);
-/* An object's transform (finite) and its bounds unless zero (finite, min <= max on every axis;
+/* An object's primitive (a tl_primitive), its transform (finite) and its bounds unless zero (finite, min <= max on every axis;
  * checked for objects with indices only: an empty object is never drawn). TL_ERROR_INVALID_ARGUMENT
  * naming the field after `what` ("objects[3].bounds_min = (1, nan, 0): not finite"). */
 tl_result tl__object_check(const tl_object *o, const char *what, char *message, size_t size);
+/* Indices per element of a primitive (3 triangles, 2 lines, 1 points), 0 for a value outside
+ * tl_primitive; and the element's name for messages ("triangles", "lines", "points"). */
+uint32_t tl__primitive_indices(uint32_t primitive);
+const char *tl__primitive_name(uint32_t primitive);
 /* tl_object_compute_bounds for an object whose index range, indices and positions the caller has
  * checked: no error. */
 void tl__object_bounds_compute(const tl_scene *s, const tl_object *o, float min[3], float max[3]);

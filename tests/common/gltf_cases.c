@@ -424,6 +424,11 @@ int tlf_write_case(const char *dir, const char *name, char *path, size_t path_si
                          "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1,\"mode\":1},"
                          "{\"attributes\":{\"POSITION\":0},\"indices\":1}]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]",
                          1, path, path_size);
+    if (strcmp(name, "unknown_mode") == 0)
+        return quad_case(dir, name, TLF_EXTERNAL,
+                         "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1,\"mode\":7},"
+                         "{\"attributes\":{\"POSITION\":0},\"indices\":1}]}],\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]",
+                         1, path, path_size);
     if (strcmp(name, "multi_scene") == 0)
         /* scene 0 draws node 0 (x = 0), scene 1 (the default) node 1 (x = 5) */
         return quad_case(dir, name, TLF_EXTERNAL,
@@ -476,5 +481,5 @@ const char *const tlf_case_names[] = {
     "texture_unsupported", "texture_truncated_png", "texture_jpeg", "texture_huge", "texture_4x4", "bufferview_out_of_range", "accessor_past_view",
     "view_past_buffer", "accessor_ref_out_of_range", "mesh_ref_out_of_range", "index_out_of_range", "node_cycle",
     "node_self_child", "node_two_parents", "node_child_out_of_range", "nan_position", "inf_position",
-    "zero_normals", "empty_scene", "no_scenes", "required_extension", "sparse_accessor", "lines_mode",
+    "zero_normals", "empty_scene", "no_scenes", "required_extension", "sparse_accessor", "lines_mode", "unknown_mode",
     "multi_scene", "zero_accessors", "mirrored", "orthographic_camera", "camera_zfar", NULL};

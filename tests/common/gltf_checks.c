@@ -117,14 +117,18 @@ float dot3f(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[
 void check_geometry(const tl_scene *s)
 {
     for (size_t i = 0; i < s->index_count; i++) TL_CHECK(s->indices[i] < s->vertex_count);
+    int points_lines = 0; /* whose vertices may have a zero normal: they face the viewer */
+    for (size_t i = 0; i < s->object_count; i++) points_lines |= s->objects[i].primitive != TL_PRIMITIVE_TRIANGLES;
     for (size_t i = 0; i < s->vertex_count; i++) {
         const tl_vertex *v = &s->vertices[i];
         TL_CHECK_FINITE3(v->position);
-        TL_CHECK(near(len3(v->normal), 1.0f, 1e-5f));
+        TL_CHECK(near(len3(v->normal), 1.0f, 1e-5f) || (points_lines && len3(v->normal) == 0.0f));
     }
     for (size_t i = 0; i < s->object_count; i++) {
         const tl_object *o = &s->objects[i];
         TL_CHECK((size_t)o->first_index + o->index_count <= s->index_count);
+        TL_CHECK(o->primitive < TL_PRIMITIVE_COUNT_);
+        TL_CHECK(o->index_count % (o->primitive == TL_PRIMITIVE_LINES ? 2u : o->primitive == TL_PRIMITIVE_POINTS ? 1u : 3u) == 0);
         TL_CHECK(o->material < s->material_count);
         for (int k = 0; k < 3; k++) {
             TL_CHECK(o->bounds_min[k] <= o->bounds_max[k]);

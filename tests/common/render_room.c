@@ -47,8 +47,8 @@ void build_room(test_scene *t)
     add_quad(t, &nv, &ni, (float[3]){B, 0, B}, (float[3]){0, 0, -2 * B}, (float[3]){0, BH, 0});      /* +X */
     add_quad(t, &nv, &ni, (float[3]){-B, 0, -B}, (float[3]){0, 0, 2 * B}, (float[3]){0, BH, 0});     /* -X */
     const float id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    t->obj[0] = (tl_object){0, (uint32_t)room_indices, 0, {0}, {-S, 0, -S}, {S, H, S}};
-    t->obj[1] = (tl_object){(uint32_t)room_indices, (uint32_t)(ni - room_indices), 1, {0}, {-B, 0, -B}, {B, BH, B}};
+    t->obj[0] = (tl_object){0, (uint32_t)room_indices, 0, {0}, {-S, 0, -S}, {S, H, S}, TL_PRIMITIVE_TRIANGLES};
+    t->obj[1] = (tl_object){(uint32_t)room_indices, (uint32_t)(ni - room_indices), 1, {0}, {-B, 0, -B}, {B, BH, B}, TL_PRIMITIVE_TRIANGLES};
     memcpy(t->obj[0].transform, id, sizeof id);
     memcpy(t->obj[1].transform, id, sizeof id);
     const tl_material plain = {.alpha = 1.0f};

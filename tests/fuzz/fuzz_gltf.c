@@ -20,7 +20,7 @@ static void check_textures(const tl_scene *s, uint32_t map)
 
 static void check_scene(const tl_scene *s)
 {
-    FUZZ_REQUIRE(s->vertex_count <= UINT32_MAX && s->index_count % 3 == 0);
+    FUZZ_REQUIRE(s->vertex_count <= UINT32_MAX);
     for (size_t i = 0; i < s->index_count; i++) FUZZ_REQUIRE(s->indices[i] < s->vertex_count);
     for (size_t i = 0; i < s->vertex_count; i++) {
         FUZZ_REQUIRE(finite3(s->vertices[i].position));
@@ -28,7 +28,9 @@ static void check_scene(const tl_scene *s)
     }
     for (size_t i = 0; i < s->object_count; i++) {
         const tl_object *o = &s->objects[i];
-        FUZZ_REQUIRE(o->index_count % 3 == 0 && (size_t)o->first_index + o->index_count <= s->index_count);
+        uint32_t per = o->primitive == TL_PRIMITIVE_LINES ? 2u : o->primitive == TL_PRIMITIVE_POINTS ? 1u : 3u;
+        FUZZ_REQUIRE(o->primitive < TL_PRIMITIVE_COUNT_);
+        FUZZ_REQUIRE(o->index_count % per == 0 && (size_t)o->first_index + o->index_count <= s->index_count);
         FUZZ_REQUIRE(o->material < s->material_count);
         FUZZ_REQUIRE(finite3(o->bounds_min) && finite3(o->bounds_max));
     }

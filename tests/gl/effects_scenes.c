@@ -25,7 +25,7 @@ static void quad(quads *q, const float o[3], const float du[3], const float dv[3
 
 static void quads_finish(quads *q, const tl_camera *cam)
 {
-    q->obj[0] = (tl_object){0, (uint32_t)q->ni, 0, {0}, {-1000, -1000, -1000}, {1000, 1000, 1000}};
+    q->obj[0] = (tl_object){0, (uint32_t)q->ni, 0, {0}, {-1000, -1000, -1000}, {1000, 1000, 1000}, TL_PRIMITIVE_TRIANGLES};
     const float id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     memcpy(q->obj[0].transform, id, sizeof id);
     q->mat[0] = (tl_material){.alpha = 1.0f, .albedo = {0.5f, 0.5f, 0.5f}};

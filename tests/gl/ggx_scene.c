@@ -51,8 +51,8 @@ void ggx_scene_build(ggx_scene *g)
     add_plane(g, &nv, &ni);
     add_sphere(g, &nv, &ni);
     const float id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    g->obj[0] = (tl_object){0, 6, 0, {0}, {-6, 0, -6}, {6, 0, 6}};
-    g->obj[1] = (tl_object){6, (uint32_t)(ni - 6), 1, {0}, {-1, 0.3f, -1}, {1, 2.3f, 1}};
+    g->obj[0] = (tl_object){0, 6, 0, {0}, {-6, 0, -6}, {6, 0, 6}, TL_PRIMITIVE_TRIANGLES};
+    g->obj[1] = (tl_object){6, (uint32_t)(ni - 6), 1, {0}, {-1, 0.3f, -1}, {1, 2.3f, 1}, TL_PRIMITIVE_TRIANGLES};
     memcpy(g->obj[0].transform, id, sizeof id);
     memcpy(g->obj[1].transform, id, sizeof id);
     const tl_material none = {.alpha = 1.0f};

@@ -49,7 +49,7 @@ static void quad(mirror_scene *m, int q, const float o[3], const float du[3], co
     const uint32_t t[6] = {0, 1, 2, 0, 2, 3};
     for (int i = 0; i < 6; i++) m->idx[6 * q + i] = (uint32_t)(4 * q) + t[i];
     const float id[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    m->obj[q] = (tl_object){(uint32_t)(6 * q), 6, (uint32_t)q, {0}, {-100, -100, -100}, {100, 100, 100}};
+    m->obj[q] = (tl_object){(uint32_t)(6 * q), 6, (uint32_t)q, {0}, {-100, -100, -100}, {100, 100, 100}, TL_PRIMITIVE_TRIANGLES};
     memcpy(m->obj[q].transform, id, sizeof id);
     m->mat[q] = (tl_material){.alpha = 1.0f};
 }

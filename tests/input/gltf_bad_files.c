@@ -250,12 +250,29 @@ TL_TEST(gltf_sparse_accessor_unsupported)
     expect_failure("gltf_sparse_accessor_unsupported", "sparse_accessor", TL_ERROR_UNSUPPORTED, "accessors[0]: sparse");
 }
 
-TL_TEST(gltf_non_triangle_mode_skipped)
+TL_TEST(gltf_lines_mode_loaded_as_lines)
 {
     loaded l;
-    load(&l, "gltf_non_triangle_mode_skipped", "lines_mode");
+    load(&l, "gltf_lines_mode_loaded_as_lines", "lines_mode");
     TL_CHECK(l.result == TL_OK);
-    TL_CHECK(strstr(l.log.warnings_text, "meshes[0].primitives[0]: mode 1") != NULL);
+    TL_CHECK_EQ_U(l.log.warnings, 0);
+    if (l.result == TL_OK && l.scene->object_count == 2) {
+        const tl_object *o = l.scene->objects;
+        TL_CHECK_EQ_U(o[0].primitive, TL_PRIMITIVE_LINES);
+        TL_CHECK_EQ_U(o[1].primitive, TL_PRIMITIVE_TRIANGLES);
+        TL_CHECK_EQ_U(o[0].index_count, o[1].index_count); /* the same indices: 6 make 3 lines or 2 triangles */
+    } else {
+        TL_CHECK(0 && "two objects");
+    }
+    unload(&l);
+}
+
+TL_TEST(gltf_unknown_mode_skipped)
+{
+    loaded l;
+    load(&l, "gltf_unknown_mode_skipped", "unknown_mode");
+    TL_CHECK(l.result == TL_OK);
+    TL_CHECK(strstr(l.log.warnings_text, "meshes[0].primitives[0]: mode 7 is not a glTF primitive mode") != NULL);
     if (l.result == TL_OK) TL_CHECK_EQ_U(l.scene->object_count, 1);
     unload(&l);
 }

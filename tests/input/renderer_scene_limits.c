@@ -122,8 +122,8 @@ TL_TEST(renderer_scene_counts_past_32_bits_refused_before_reading)
     s.objects = NULL;
     refused(r, &c, &s, TL_ERROR_INVALID_ARGUMENT, "2 objects but no array");
     s = t.s;
-    s.index_count = t.s.index_count - 1;
-    refused(r, &c, &s, TL_ERROR_INVALID_ARGUMENT, "not whole triangles");
+    s.index_count = t.s.index_count - 1; /* objects are checked against it (whole elements: per object) */
+    refused(r, &c, &s, TL_ERROR_INVALID_ARGUMENT, "object 1 draws indices");
     tl_renderer_destroy(r);
 }
 
