@@ -362,6 +362,10 @@ const bench_record *bench_find(const bench_run *run, bench_config config, uint32
 /* The fat record the error of `config` was measured against (the same strategy). */
 bench_config bench_reference_of(bench_config config);
 
+/* Median and 90th percentile (nearest rank) of v[0..n), n > 0; both sort v (bench_sweep.c). */
+void bench_median_p90(double *v, size_t n, double *median, double *p90);
+double bench_median(double *v, size_t n);
+
 /* Derived figures shared by the table, JSON and doc. */
 /* How many times faster `a` is than `b`: the median over the timed frames of b's frame time over
  * a's frame rendered right before or after it (robust to a machine busy with other work), or the

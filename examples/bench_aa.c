@@ -177,17 +177,6 @@ static int bench__truth(bench_run *run, tl_context *ctx, bench_scene *scene, con
     return bench__truth_edges(r, t);
 }
 
-static int bench__cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double bench__median(double *v, size_t n)
-{
-    qsort(v, n, sizeof *v, bench__cmp);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /* A group of renderers taking turns: the items [first, first + count) and their frames. */
 typedef struct bench__aa_group {
@@ -255,7 +244,7 @@ static int bench__group_record(bench_run *run, bench__aa_group *g, size_t k, con
     memcpy(ms, g->ms + k * run->opt.frames, run->opt.frames * sizeof *ms);
     *rec = (bench_aa_record){.aa = it->aa, .config = it->config, .samples = bench_aa_samples(it->aa),
                              .lights = t->lights, .width = t->width, .height = t->height, .frames = run->opt.frames,
-                             .ms_median = bench__median(ms, run->opt.frames), .ratio_vs_fxaa = NAN,
+                             .ms_median = bench_median(ms, run->opt.frames), .ratio_vs_fxaa = NAN,
                              .edge_fraction = (double)t->edge_pixels / (double)n, .relit_fraction = NAN};
     if (tl_renderer_read_output(g->r[k], rgb, &(size_t){n * 4}) != TL_OK) {
         tl_tool_fail(BENCH_TOOL, "--aa, %s %s: %s", bench_config_name(it->config), bench_aa_name(it->aa),
@@ -284,7 +273,7 @@ static void bench__group_ratios(const bench_run *run, const bench__aa_group *g, 
             if (b->aa != BENCH_AA_FXAA || b->config != a->config) continue;
             double ratios[BENCH_MAX_FRAMES];
             for (uint32_t f = 0; f < frames; f++) ratios[f] = g->ms[k * frames + f] / g->ms[x * frames + f];
-            recs[k].ratio_vs_fxaa = bench__median(ratios, frames);
+            recs[k].ratio_vs_fxaa = bench_median(ratios, frames);
         }
 }
 

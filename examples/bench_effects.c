@@ -94,17 +94,6 @@ uint64_t bench_effects_frames(const bench_options *opt)
     return frames;
 }
 
-static int bench__cmp(const void *a, const void *b)
-{
-    double x = *(const double *)a, y = *(const double *)b;
-    return (x > y) - (x < y);
-}
-
-static double bench__median(double *v, size_t n)
-{
-    qsort(v, n, sizeof *v, bench__cmp);
-    return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 /* Images of one configuration ([0]: no effect, [e + 1]: with effect e), and fat's. */
 typedef struct bench__effect_images {
@@ -199,11 +188,11 @@ static int bench__effect_summarise(bench_run *run, bench_config c, tl_renderer *
         *e = (bench_effect_record){.effect = list[s - 1], .config = c, .lights = opt->lights[0],
                                    .width = opt->sizes[0].width, .height = opt->sizes[0].height, .frames = frames};
         for (uint32_t f = 0; f < frames; f++) ratios[f] = ms[s * frames + f] / ms[f];
-        e->ratio = bench__median(ratios, frames);
-        e->effect_ms = bench__median(effect + s * frames, frames);
-        e->frame_ms = bench__median(ms + s * frames, frames);
+        e->ratio = bench_median(ratios, frames);
+        e->effect_ms = bench_median(effect + s * frames, frames);
+        e->frame_ms = bench_median(ms + s * frames, frames);
         memcpy(ratios, ms, frames * sizeof *ratios);
-        e->base_ms = bench__median(ratios, frames);
+        e->base_ms = bench_median(ratios, frames);
         e->bytes_per_pixel = bench__bpp(r[s], im->pixels);
         e->base_bytes_per_pixel = bench__bpp(r[0], im->pixels);
         size_t n3 = im->pixels * 3, k = (size_t)list[s - 1] + 1;

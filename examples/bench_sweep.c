@@ -17,7 +17,6 @@
 #include "tool_log.h"
 #include "tool_util.h"
 
-static void bench__median_p90(double *v, size_t n, double *median, double *p90);
 
 static const char *const bench__names[BENCH_STRATEGIES][BENCH_MODES][2] = {
     /* TL_MODE_THIN_LPP .. TL_MODE_FORWARD (tl_render_mode order, DEFAULT left out): name, slug */
@@ -93,7 +92,7 @@ double bench_speedup(const bench_record *a, const bench_record *b)
     double ratios[BENCH_MAX_FRAMES], unused, median;
     if (!a->frame_ms || !b->frame_ms || a->frames != b->frames || !a->frames) return b->ms_median / a->ms_median;
     for (uint32_t f = 0; f < a->frames; f++) ratios[f] = b->frame_ms[f] / a->frame_ms[f];
-    bench__median_p90(ratios, a->frames, &median, &unused);
+    bench_median_p90(ratios, a->frames, &median, &unused);
     return median;
 }
 
@@ -128,13 +127,19 @@ static int bench__cmp(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-/* Median and 90th percentile (nearest rank) of v[0..n); sorts v. */
-static void bench__median_p90(double *v, size_t n, double *median, double *p90)
+void bench_median_p90(double *v, size_t n, double *median, double *p90)
 {
     qsort(v, n, sizeof *v, bench__cmp);
     *median = n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
     size_t rank = (size_t)ceil(0.9 * (double)n);
     *p90 = v[rank ? rank - 1 : 0];
+}
+
+double bench_median(double *v, size_t n)
+{
+    double median, p90;
+    bench_median_p90(v, n, &median, &p90);
+    return median;
 }
 
 /* ---- one (mode, lights, size) ---------------------------------------------------------------- */
@@ -247,11 +252,11 @@ static void bench__summarise_frames(bench_run *run, tl_renderer *r, bench__sampl
     const tl_frame_stats *st = &smp->last;
     rec->frame_ms = malloc(frames * sizeof *rec->frame_ms);
     if (rec->frame_ms) memcpy(rec->frame_ms, smp->gpu, frames * sizeof *rec->frame_ms);
-    bench__median_p90(smp->gpu, frames, &rec->ms_median, &rec->ms_p90);
-    bench__median_p90(smp->wall, frames, &rec->wall_ms_median, &rec->wall_ms_p90);
+    bench_median_p90(smp->gpu, frames, &rec->ms_median, &rec->ms_p90);
+    bench_median_p90(smp->wall, frames, &rec->wall_ms_median, &rec->wall_ms_p90);
     double unused;
-    bench__median_p90(smp->cpu, frames, &rec->cpu_ms_median, &unused);
-    for (int p = 0; p < TL_PASS_COUNT; p++) bench__median_p90(smp->pass + p * frames, frames, &rec->pass_ms[p], &unused);
+    bench_median_p90(smp->cpu, frames, &rec->cpu_ms_median, &unused);
+    for (int p = 0; p < TL_PASS_COUNT; p++) bench_median_p90(smp->pass + p * frames, frames, &rec->pass_ms[p], &unused);
     for (int p = 0; p < TL_PASS_COUNT; p++) {
         rec->pass_bytes[p] = st->pass_bytes[p];
         rec->pass_fragments[p] = st->pass_fragments[p];
@@ -696,8 +701,8 @@ static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *s
         }
         if (!err) {
             double unused;
-            bench__median_p90(ms, opt->frames, &p->planned_ms, &unused);
-            bench__median_p90(ms + opt->frames, opt->frames, &p->unplanned_ms, &unused);
+            bench_median_p90(ms, opt->frames, &p->planned_ms, &unused);
+            bench_median_p90(ms + opt->frames, opt->frames, &p->unplanned_ms, &unused);
         }
     }
     free(ms);
