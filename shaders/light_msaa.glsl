@@ -48,13 +48,7 @@ bool tl_msaa_light(vec2 dzw, vec3 n_f, float gloss, out vec3 diffuse, out vec3 s
         atomicAdd(tl_fixup_counters.w, 1u);
         tl_relight(n_f, gloss, tl_relight_linear_depth(gl_FragCoord.z), ld, ls, lf);
     } else {
-        ld = texelFetch(u_light_diffuse, px, 0);
-#ifdef TL_SPECULAR_EXACT
-        ls = texelFetch(u_light_specular, px, 0).rgb;
-#ifdef TL_FRESNEL_SUMS
-        lf = texelFetch(u_light_fresnel, px, 0).rgb;
-#endif
-#endif
+        tl_light_texel_add(px, 1.0, ld, ls, lf);
     }
     tl_relight_finish(ld, ls, lf, relit, diffuse, specular, fresnel);
     return relit;

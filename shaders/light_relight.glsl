@@ -37,6 +37,19 @@ float tl_relight_linear_depth(float d)
     return tl_depth_linearize(d, u_depth_params.x, u_depth_params.y, u_depth_params.z, u_depth_params.w > 0.5);
 }
 
+// Adds w times the light buffer's texel q to the sums (the light scale's weighted texels, MSAA's
+// own texel with w = 1).
+void tl_light_texel_add(ivec2 q, float w, inout vec4 ld, inout vec3 ls, inout vec3 lf)
+{
+    ld += w * texelFetch(u_light_diffuse, q, 0);
+#ifdef TL_SPECULAR_EXACT
+    ls += w * texelFetch(u_light_specular, q, 0).rgb;
+#ifdef TL_FRESNEL_SUMS
+    lf += w * texelFetch(u_light_fresnel, q, 0).rgb;
+#endif
+#endif
+}
+
 // The pixel's own light sums at view depth z_f on its pixel's centre: over the directional lights
 // and its tile's lists (tiled: the tiles are in the frame's pixels and their depth bounds cover
 // every pixel), or its object's light list (volumes: every visible light whose range reaches the

@@ -67,14 +67,7 @@ float tl_upsample_gather(vec4 rt0_f, vec3 n_f, float power, float z_f, vec2 dz, 
     ls = lf = vec3(0.0);
     for (int j = 0; j < 4; j++) {
         if (w[j] <= 0.0) continue;
-        ivec2 q = clamp(ivec2(base) + ivec2(j & 1, j >> 1), ivec2(0), size - 1);
-        ld += w[j] * texelFetch(u_light_diffuse, q, 0);
-#ifdef TL_SPECULAR_EXACT
-        ls += w[j] * texelFetch(u_light_specular, q, 0).rgb;
-#ifdef TL_FRESNEL_SUMS
-        lf += w[j] * texelFetch(u_light_fresnel, q, 0).rgb;
-#endif
-#endif
+        tl_light_texel_add(clamp(ivec2(base) + ivec2(j & 1, j >> 1), ivec2(0), size - 1), w[j], ld, ls, lf);
     }
     return total;
 }

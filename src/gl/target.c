@@ -71,18 +71,21 @@ tl_result tl__target_create(const GladGLContext *gl, const tl__target_desc *desc
     return tl__target_create_levels(gl, desc, 1, 0, out, msg, msg_size);
 }
 
-tl_result tl__target_create_levels(const GladGLContext *gl, const tl__target_desc *desc, uint32_t levels, int linear,
-                                   tl__target *out, char *msg, size_t msg_size)
+/* Filtering of level 0 and clamping to the edge (a multisampled texture has no sampler state:
+ * texelFetch reads it). */
+static void tl__texture_sampling(const GladGLContext *gl, GLuint tex, GLint filter)
 {
-    tl__msg(msg, msg_size, "%s", "");
-    if (out) memset(out, 0, sizeof *out);
-    if (!gl || !desc || !out) {
-        tl__msg(msg, msg_size, "tl__target_create: NULL %s",
-                !gl ? "context" : !desc ? "descriptor" : "output");
-        return TL_ERROR_INVALID_ARGUMENT;
-    }
-    const char *label = desc->label ? desc->label : "";
-    const tl__format_info *f = tl__format_lookup(desc->internal_format);
+    gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, filter);
+    gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
+    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+}
+
+/* What a descriptor asks for that no allocation can give: an unknown format, a size outside
+ * 1..GL_MAX_TEXTURE_SIZE or beyond size_t, more samples than GL_MAX_SAMPLES. */
+static tl_result tl__target_check(const GladGLContext *gl, const tl__target_desc *desc, const char *label,
+                                  const tl__format_info *f, char *msg, size_t msg_size)
+{
     if (!f) {
         tl__msg(msg, msg_size, "target \"%s\": internal format 0x%04x is not in the format table",
                 label, (unsigned)desc->internal_format);
@@ -96,30 +99,31 @@ tl_result tl__target_create_levels(const GladGLContext *gl, const tl__target_des
                 label, (unsigned)desc->width, (unsigned)desc->height, (int)max_size);
         return desc->width == 0 || desc->height == 0 ? TL_ERROR_INVALID_ARGUMENT : TL_ERROR_LIMIT;
     }
-    size_t pixels = (size_t)desc->width * desc->height;
-    if (pixels > SIZE_MAX / f->bytes_per_pixel) {
+    if ((size_t)desc->width * desc->height > SIZE_MAX / f->bytes_per_pixel) {
         tl__msg(msg, msg_size, "target \"%s\": %ux%u %s overflows size_t", label,
                 (unsigned)desc->width, (unsigned)desc->height, f->name);
         return TL_ERROR_LIMIT;
     }
-
-    uint32_t samples = desc->samples > 1 ? desc->samples : 1u;
     GLint max_samples = 1;
-    if (samples > 1) gl->GetIntegerv(GL_MAX_SAMPLES, &max_samples);
-    if (samples > (uint32_t)max_samples) {
-        tl__msg(msg, msg_size, "target \"%s\": %u samples, the context allows %d (GL_MAX_SAMPLES)", label, (unsigned)samples,
-                (int)max_samples);
+    if (desc->samples > 1) gl->GetIntegerv(GL_MAX_SAMPLES, &max_samples);
+    if (desc->samples > 1 && desc->samples > (uint32_t)max_samples) {
+        tl__msg(msg, msg_size, "target \"%s\": %u samples, the context allows %d (GL_MAX_SAMPLES)", label,
+                (unsigned)desc->samples, (int)max_samples);
         return TL_ERROR_UNSUPPORTED;
     }
+    return TL_OK;
+}
+
+/* An immutable texture of `levels` levels (or `samples` samples, one level); 0 after a message. */
+static GLuint tl__target_storage(const GladGLContext *gl, const tl__target_desc *desc, const char *label,
+                                 const tl__format_info *f, uint32_t levels, uint32_t samples, char *msg, size_t msg_size)
+{
     GLuint tex = 0;
     gl->CreateTextures(samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, 1, &tex);
     if (!tex) {
         tl__msg(msg, msg_size, "target \"%s\": glCreateTextures failed", label);
-        return TL_ERROR_GL;
+        return 0;
     }
-    uint32_t side = desc->width > desc->height ? desc->width : desc->height;
-    if (!levels || samples > 1) levels = 1;
-    while (levels > 1 && (side >> (levels - 1)) == 0) levels--; /* GL's chain ends at 1x1 */
     if (samples > 1)
         gl->TextureStorage2DMultisample(tex, (GLsizei)samples, f->internal_format, (GLsizei)desc->width,
                                         (GLsizei)desc->height, GL_TRUE);
@@ -133,16 +137,33 @@ tl_result tl__target_create_levels(const GladGLContext *gl, const tl__target_des
         gl->DeleteTextures(1, &tex);
         tl__msg(msg, msg_size, "target \"%s\": could not allocate %ux%u %s x %u samples (%zu bytes)", label,
                 (unsigned)desc->width, (unsigned)desc->height, f->name, (unsigned)samples,
-                pixels * f->bytes_per_pixel * samples);
-        return TL_ERROR_GL;
+                (size_t)desc->width * desc->height * f->bytes_per_pixel * samples);
+        return 0;
     }
-    if (samples == 1) { /* a multisampled texture has no sampler state: texelFetch reads it */
-        GLint filter = linear ? GL_LINEAR : GL_NEAREST;
-        gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, filter);
-        gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, filter);
-        gl->TextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        gl->TextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return tex;
+}
+
+tl_result tl__target_create_levels(const GladGLContext *gl, const tl__target_desc *desc, uint32_t levels, int linear,
+                                   tl__target *out, char *msg, size_t msg_size)
+{
+    tl__msg(msg, msg_size, "%s", "");
+    if (out) memset(out, 0, sizeof *out);
+    if (!gl || !desc || !out) {
+        tl__msg(msg, msg_size, "tl__target_create: NULL %s",
+                !gl ? "context" : !desc ? "descriptor" : "output");
+        return TL_ERROR_INVALID_ARGUMENT;
     }
+    const char *label = desc->label ? desc->label : "";
+    const tl__format_info *f = tl__format_lookup(desc->internal_format);
+    tl_result res = tl__target_check(gl, desc, label, f, msg, msg_size);
+    if (res != TL_OK) return res;
+    uint32_t samples = desc->samples > 1 ? desc->samples : 1u;
+    uint32_t side = desc->width > desc->height ? desc->width : desc->height;
+    if (!levels || samples > 1) levels = 1;
+    while (levels > 1 && (side >> (levels - 1)) == 0) levels--; /* GL's chain ends at 1x1 */
+    GLuint tex = tl__target_storage(gl, desc, label, f, levels, samples, msg, msg_size);
+    if (!tex) return TL_ERROR_GL;
+    if (samples == 1) tl__texture_sampling(gl, tex, linear ? GL_LINEAR : GL_NEAREST);
     tl__gl_label(gl, GL_TEXTURE, tex, desc->label);
 
     out->texture = tex;
@@ -174,12 +195,7 @@ tl_result tl__target_create_view(const GladGLContext *gl, const tl__target *stor
     int ms = storage->samples > 1;
     gl->GenTextures(1, &tex); /* a view needs a name that was never bound: not glCreateTextures */
     gl->TextureView(tex, ms ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, storage->texture, internal_format, 0, 1, 0, 1);
-    if (!ms) {
-        gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-        gl->TextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        gl->TextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    }
+    if (!ms) tl__texture_sampling(gl, tex, GL_NEAREST);
     tl__gl_label(gl, GL_TEXTURE, tex, label);
     out->texture = tex;
     out->internal_format = internal_format;
@@ -204,10 +220,7 @@ tl_result tl__target_create_level(const GladGLContext *gl, const tl__target *sto
     GLuint tex = 0;
     gl->GenTextures(1, &tex);
     gl->TextureView(tex, GL_TEXTURE_2D, storage->texture, storage->internal_format, level, 1, 0, 1);
-    gl->TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    gl->TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    gl->TextureParameteri(tex, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    tl__texture_sampling(gl, tex, GL_LINEAR);
     tl__gl_label(gl, GL_TEXTURE, tex, label);
     uint32_t w = storage->width >> level, h = storage->height >> level;
     out->texture = tex;
@@ -347,6 +360,38 @@ const char *tl__framebuffer_status_string(GLenum status)
     }
 }
 
+/* Every attachment created, of its kind (colour or depth) and of the first one's size. */
+static tl_result tl__framebuffer_check(const tl__target *const *colors, size_t color_count, const tl__target *depth,
+                                       const char *label, char *msg, size_t msg_size)
+{
+    const tl__target *first = color_count ? colors[0] : depth;
+    for (size_t i = 0; i <= color_count; i++) {
+        const tl__target *t = i < color_count ? colors[i] : depth;
+        if (!t) {
+            if (i < color_count) {
+                tl__msg(msg, msg_size, "framebuffer \"%s\": colour target %zu is NULL", label, i);
+                return TL_ERROR_INVALID_ARGUMENT;
+            }
+            continue;
+        }
+        const tl__format_info *f = tl__format_lookup(t->internal_format);
+        bool want_color = i < color_count;
+        if (!t->texture || !f || (f->kind == TL__FORMAT_COLOR) != want_color) {
+            tl__msg(msg, msg_size, "framebuffer \"%s\": %s target %zu is %s", label,
+                    want_color ? "colour" : "depth", i,
+                    !t->texture || !f ? "not created" : "of the wrong kind");
+            return TL_ERROR_INVALID_ARGUMENT;
+        }
+        if (t->width != first->width || t->height != first->height) {
+            tl__msg(msg, msg_size, "framebuffer \"%s\": target sizes differ (%ux%u and %ux%u)",
+                    label, (unsigned)first->width, (unsigned)first->height, (unsigned)t->width,
+                    (unsigned)t->height);
+            return TL_ERROR_INVALID_ARGUMENT;
+        }
+    }
+    return TL_OK;
+}
+
 tl_result tl__framebuffer_create(const GladGLContext *gl, const char *label,
                                  const tl__target *const *colors, size_t color_count,
                                  const tl__target *depth, GLuint *out_fbo, char *msg,
@@ -374,31 +419,8 @@ tl_result tl__framebuffer_create(const GladGLContext *gl, const char *label,
         tl__msg(msg, msg_size, "framebuffer \"%s\": no target", label);
         return TL_ERROR_INVALID_ARGUMENT;
     }
-    const tl__target *first = color_count ? colors[0] : depth;
-    for (size_t i = 0; i <= color_count; i++) {
-        const tl__target *t = i < color_count ? colors[i] : depth;
-        if (!t) {
-            if (i < color_count) {
-                tl__msg(msg, msg_size, "framebuffer \"%s\": colour target %zu is NULL", label, i);
-                return TL_ERROR_INVALID_ARGUMENT;
-            }
-            continue;
-        }
-        const tl__format_info *f = tl__format_lookup(t->internal_format);
-        bool want_color = i < color_count;
-        if (!t->texture || !f || (f->kind == TL__FORMAT_COLOR) != want_color) {
-            tl__msg(msg, msg_size, "framebuffer \"%s\": %s target %zu is %s", label,
-                    want_color ? "colour" : "depth", i,
-                    !t->texture || !f ? "not created" : "of the wrong kind");
-            return TL_ERROR_INVALID_ARGUMENT;
-        }
-        if (t->width != first->width || t->height != first->height) {
-            tl__msg(msg, msg_size, "framebuffer \"%s\": target sizes differ (%ux%u and %ux%u)",
-                    label, (unsigned)first->width, (unsigned)first->height, (unsigned)t->width,
-                    (unsigned)t->height);
-            return TL_ERROR_INVALID_ARGUMENT;
-        }
-    }
+    tl_result res = tl__framebuffer_check(colors, color_count, depth, label, msg, msg_size);
+    if (res != TL_OK) return res;
 
     GLuint fbo = 0;
     gl->CreateFramebuffers(1, &fbo);
