@@ -12,9 +12,10 @@
  * - The bytes go first to a file with no name (Linux O_TMPFILE), which is given a name in the same
  *   folder and renamed over `path` only once it is whole; a process killed while writing leaves
  *   nothing. Only between that link and the rename (two system calls) would a kill leave the
- *   temporary name `PATH.tmpPID-N`. Where the file system has no O_TMPFILE (or the file cannot
- *   be linked), the bytes go to that temporary name from the start, and a kill mid-write leaves
- *   it behind.
+ *   temporary name `PATH.tmpPID-N` (holding the whole new file). Where the file system has no
+ *   O_TMPFILE (or the file cannot be linked), the bytes go to that temporary name from the start,
+ *   and a kill mid-write leaves it behind. The next tl_file_write of `PATH` removes such names
+ *   whose process no longer runs (a regular file only; a live process's name is left alone).
  * - `path` may be absent or a regular file. Anything else is refused with TL_ERROR_IO and nothing
  *   is touched: a directory, FIFO, socket or device (`/dev/null` included), and a symbolic link,
  *   which is not followed (replacing the link would lose it, writing through it would let a link

@@ -10,10 +10,13 @@
 
 #if defined(__unix__) || defined(__APPLE__)
 
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <signal.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -33,6 +36,40 @@ typedef struct tl__out {
     int replace;              /* path is a regular file now */
     mode_t mode;              /* its permission bits */
 } tl__out;
+
+/* The process ID in `name` when it is a temporary name of `base` ("BASE.tmpPID-N"), else 0. */
+static long tl__temp_pid(const char *name, const char *base, size_t len)
+{
+    if (strncmp(name, base, len) != 0 || strncmp(name + len, ".tmp", 4) != 0) return 0;
+    const char *digits = name + len + 4;
+    char *end = NULL, *last = NULL;
+    long pid = strtol(digits, &end, 10);
+    if (end == digits || *end != '-' || end[1] < '0' || end[1] > '9') return 0;
+    (void)strtol(end + 1, &last, 10);
+    return *last ? 0 : pid;
+}
+
+/* Removes the temporary names of `path` that a process which no longer runs left (killed between
+ * its link and its rename, or mid-write without O_TMPFILE): the next writer of a path cleans up
+ * after the one before. A live process's name, and anything not a regular file, is left alone. */
+static void tl__out_reclaim(const tl__out *o)
+{
+    const char *slash = strrchr(o->path, '/');
+    const char *base = slash ? slash + 1 : o->path;
+    size_t len = strlen(base);
+    DIR *d = opendir(o->dir);
+    if (!d) return;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL) {
+        long pid = tl__temp_pid(e->d_name, base, len);
+        struct stat st;
+        if (pid <= 0 || pid == (long)getpid() || (pid_t)pid != pid) continue;
+        if (kill((pid_t)pid, 0) == 0 || errno != ESRCH) continue;
+        if (fstatat(dirfd(d), e->d_name, &st, AT_SYMLINK_NOFOLLOW) == 0 && S_ISREG(st.st_mode))
+            (void)unlinkat(dirfd(d), e->d_name, 0);
+    }
+    closedir(d);
+}
 
 static tl_result tl__out_fail(tl__out *o, const char *what, int err)
 {
@@ -207,6 +244,7 @@ tl_result tl_file_write(const char *path, const void *data, size_t size, const t
     tl_result r = tl__out_begin(&o, path, desc);
     if (r != TL_OK) return r;
     if (!data && size) return tl__logger_fail(o.logger, TL_ERROR_INVALID_ARGUMENT, "%s: NULL data", path);
+    tl__out_reclaim(&o);
     if ((r = tl__out_open(&o, 1)) != TL_OK) return r;
     int step = tl__out_finish(&o, data, size, &r);
     if (step == 1) { /* unnamed but not linkable: once more through a named file */
