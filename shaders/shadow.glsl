@@ -9,6 +9,8 @@
 #ifndef TL_SHADOW_GLSL
 #define TL_SHADOW_GLSL
 
+#include "frame.glsl"
+
 struct tl_shadow_view {
     mat4 m;      // view space to the view's clip space
     vec4 rect;   // atlas uv offset (xy) and scale (zw) of the view's tile
@@ -36,18 +38,21 @@ float tl_shadow_sample(tl_shadow_view sv, vec3 q)
     vec2 uv = sv.rect.xy + (ndc.xy * 0.5 + 0.5) * sv.rect.zw;
     float t = u_shadow_params.x;
     vec2 lo = sv.rect.xy + vec2(0.5 * t), hi = sv.rect.xy + sv.rect.zw - vec2(0.5 * t);
+    // kernel radius r: (2 r)^2 bilinear compare taps half a texel off the grid cover the
+    // (2 r + 1)^2 texels a tent-weighted r-texel kernel reads (r = 0: one bilinear tap)
     int r = int(u_shadow_params.y);
+    if (r == 0) return texture(u_shadow_atlas, vec3(clamp(uv, lo, hi), ref));
     float sum = 0.0;
-    for (int y = -r; y <= r; y++)
-        for (int x = -r; x <= r; x++)
-            sum += texture(u_shadow_atlas, vec3(clamp(uv + vec2(x, y) * t, lo, hi), ref));
-    return sum / float((2 * r + 1) * (2 * r + 1));
+    for (int y = 0; y < 2 * r; y++)
+        for (int x = 0; x < 2 * r; x++)
+            sum += texture(u_shadow_atlas, vec3(clamp(uv + (vec2(x, y) - float(r) + 0.5) * t, lo, hi), ref));
+    return sum / float(4 * r * r);
 }
 
-// How far a view's tile contains p: max(|ndc.x|, |ndc.y|) (above 1: outside), 2 behind the view.
-float tl_shadow_extent(tl_shadow_view sv, vec3 p)
+// How far view v's tile contains p: max(|ndc.x|, |ndc.y|) (above 1: outside), 2 behind the view.
+float tl_shadow_extent(uint v, vec3 p)
 {
-    vec4 c = sv.m * vec4(p, 1.0);
+    vec4 c = tl_shadow_views[v].m * vec4(p, 1.0);
     if (c.w <= 0.0) return 2.0;
     vec2 a = abs(c.xy / c.w);
     return max(a.x, a.y);
@@ -66,8 +71,9 @@ vec3 tl_shadow_biased(tl_shadow_view sv, vec3 p, vec3 n, vec3 l)
     return p + n * ((u_shadow_params.y + 1.0) * texel * sin_t + e_gbuffer) + l * e_atlas;
 }
 
-// The visibility of light slot `slot` (> 0) at view-space p with normal n, l towards the light.
-float tl_shadow(float slot, vec3 p, vec3 n, vec3 l)
+// The visibility of light slot `slot` (> 0) at view-space p with normal n, l towards the light and
+// `light` its view-space position (point lights).
+float tl_shadow(float slot, vec3 p, vec3 n, vec3 l, vec3 light)
 {
     tl_shadow_light sl = tl_shadow_lights[uint(slot) - 1u];
     uint first = sl.info.x, count = sl.info.y;
@@ -76,26 +82,25 @@ float tl_shadow(float slot, vec3 p, vec3 n, vec3 l)
     float s = 1.0;
     if (sl.info.z == 3u) { // cascades: the first that holds p, blended into the next near its edge
         for (uint i = 0u; i < count; i++) {
-            tl_shadow_view sv = tl_shadow_views[first + i];
-            float e = tl_shadow_extent(sv, p);
+            float e = tl_shadow_extent(first + i, p);
             if (e > margin) continue;
+            tl_shadow_view sv = tl_shadow_views[first + i];
             s = tl_shadow_sample(sv, tl_shadow_biased(sv, p, n, l));
             float blend = smoothstep(0.8 * margin, margin, e);
-            if (blend > 0.0 && i + 1u < count) {
+            if (blend > 0.0 && i + 1u < count && tl_shadow_extent(first + i + 1u, p) <= margin) {
                 tl_shadow_view nv = tl_shadow_views[first + i + 1u];
-                if (tl_shadow_extent(nv, p) <= margin) s = mix(s, tl_shadow_sample(nv, tl_shadow_biased(nv, p, n, l)), blend);
+                s = mix(s, tl_shadow_sample(nv, tl_shadow_biased(nv, p, n, l)), blend);
             }
             break;
         }
-    } else { // spot map or cube face: the view p lies most centrally in
-        uint best = first;
-        float best_e = 4.0;
-        for (uint i = 0u; i < count; i++) {
-            float e = tl_shadow_extent(tl_shadow_views[first + i], p);
-            if (e < best_e) { best_e = e; best = first + i; }
+    } else {
+        uint v = first; // spot: its map; point: the cube face of the direction's major axis (world space)
+        if (sl.info.z == 1u) {
+            vec3 d = transpose(mat3(u_view)) * (p - light), a = abs(d);
+            v += a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0u : 1u) : a.y >= a.z ? (d.y >= 0.0 ? 2u : 3u) : (d.z >= 0.0 ? 4u : 5u);
         }
-        if (best_e > 1.0) return 1.0;
-        tl_shadow_view sv = tl_shadow_views[best];
+        if (tl_shadow_extent(v, p) > 1.0) return 1.0;
+        tl_shadow_view sv = tl_shadow_views[v];
         s = tl_shadow_sample(sv, tl_shadow_biased(sv, p, n, l));
     }
     return mix(1.0, s, sl.fade.x);

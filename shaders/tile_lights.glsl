@@ -24,7 +24,7 @@ void tl_tiled_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout ve
     vec3 t = tl_light_weights(type, p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz, l.cos_inner.x,
                               l.direction_cos_outer.w, l.cos_inner.y);
 #ifdef TL_SHADOWS
-    if (l.cos_inner.z > 0.0) t *= tl_shadow(l.cos_inner.z, p, n, tl_shadow_to_light(type, p, l.position_radius.xyz, l.direction_cos_outer.xyz));
+    if (l.cos_inner.z > 0.0 && t != vec3(0.0)) t *= tl_shadow(l.cos_inner.z, p, n, tl_shadow_to_light(type, p, l.position_radius.xyz, l.direction_cos_outer.xyz), l.position_radius.xyz);
 #endif
     const vec3 fp16_max = vec3(65504.0);
     diffuse += min(l.color_type.rgb * t.x, fp16_max);
