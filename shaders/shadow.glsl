@@ -19,6 +19,7 @@ struct tl_shadow_view {
 struct tl_shadow_light {
     uvec4 info;  // first view, view count, kind (1 point, 2 spot, 3 directional), 0
     vec4 fade;   // x: strength 0..1 (a light losing or gaining its map fades), y: tile side in texels
+    vec4 splits; // cascades: the view depth where each ends
 };
 layout(std430, binding = TL_SSBO_SHADOWS) readonly buffer tl_shadow_buffer {
     vec4 u_shadow_params;   // 1 / atlas side, PCF radius, G-buffer error: a z + b z^2 (a, b)
@@ -80,18 +81,17 @@ float tl_shadow(float slot, vec3 p, vec3 n, vec3 l, vec3 light)
     if (count == 0u || sl.fade.x <= 0.0) return 1.0;
     float margin = 1.0 - 2.0 * (u_shadow_params.y + 2.0) / sl.fade.y; // kernel and offset stay inside
     float s = 1.0;
-    if (sl.info.z == 3u) { // cascades: the first that holds p, blended into the next near its edge
-        for (uint i = 0u; i < count; i++) {
-            float e = tl_shadow_extent(first + i, p);
-            if (e > margin) continue;
-            tl_shadow_view sv = tl_shadow_views[first + i];
-            s = tl_shadow_sample(sv, tl_shadow_biased(sv, p, n, l));
-            float blend = smoothstep(0.8 * margin, margin, e);
-            if (blend > 0.0 && i + 1u < count && tl_shadow_extent(first + i + 1u, p) <= margin) {
-                tl_shadow_view nv = tl_shadow_views[first + i + 1u];
-                s = mix(s, tl_shadow_sample(nv, tl_shadow_biased(nv, p, n, l)), blend);
-            }
-            break;
+    if (sl.info.z == 3u) { // cascades: by view depth (each one's sphere holds its slice), blended
+        float z = -p.z;    // into the next over the last 10 % of its slice
+        uint i = z < sl.splits.x ? 0u : z < sl.splits.y ? 1u : z < sl.splits.z ? 2u : 3u;
+        if (z >= sl.splits.w) return 1.0;
+        float end = sl.splits[i], start = i > 0u ? sl.splits[i - 1u] : 0.0;
+        tl_shadow_view sv = tl_shadow_views[first + i];
+        s = tl_shadow_sample(sv, tl_shadow_biased(sv, p, n, l));
+        float blend = smoothstep(end - 0.1 * (end - start), end, z);
+        if (blend > 0.0 && i + 1u < count && tl_shadow_extent(first + i + 1u, p) <= margin) {
+            tl_shadow_view nv = tl_shadow_views[first + i + 1u];
+            s = mix(s, tl_shadow_sample(nv, tl_shadow_biased(nv, p, n, l)), blend);
         }
     } else {
         uint v = first; // spot: its map; point: the cube face of the direction's major axis (world space)
@@ -112,6 +112,52 @@ vec3 tl_shadow_to_light(int type, vec3 p, vec3 position, vec3 direction)
     vec3 d = position - p;
     float d2 = dot(d, d);
     return type == 3 ? -direction : d2 > 0.0 ? d * inversesqrt(d2) : vec3(0.0, 0.0, 1.0); // a light at the point
+}
+
+// Casting lights met in a loop over many lights, shadowed after it: llvmpipe runs a branch's code
+// in every SIMD lane whatever the condition, so a lookup inside the loop would cost every light of
+// every pixel. Between tl_shadow_defer_begin and tl_shadow_defer_end a casting light's contribution
+// is added unshadowed and recorded (up to TL_SHADOW_DEFER, the rest are looked up at once); the end
+// takes the unlit part away again.
+#define TL_SHADOW_DEFER 8
+bool tl_shadow_deferring = false;
+uint tl_shadow_deferred = 0u;
+vec4 tl_shadow_def_light[TL_SHADOW_DEFER];  // view-space position, slot
+vec4 tl_shadow_def_dir[TL_SHADOW_DEFER];    // view-space direction light travels, type
+vec3 tl_shadow_def_d[TL_SHADOW_DEFER], tl_shadow_def_s[TL_SHADOW_DEFER], tl_shadow_def_f[TL_SHADOW_DEFER];
+
+void tl_shadow_defer_begin()
+{
+    tl_shadow_deferring = true;
+    tl_shadow_deferred = 0u;
+}
+
+// 1 when the light was recorded (its contribution is added unshadowed by the caller).
+bool tl_shadow_defer(float slot, int type, vec3 position, vec3 direction, vec3 d, vec3 s, vec3 f)
+{
+    if (!tl_shadow_deferring || tl_shadow_deferred >= uint(TL_SHADOW_DEFER)) return false;
+    uint k = tl_shadow_deferred++;
+    tl_shadow_def_light[k] = vec4(position, slot);
+    tl_shadow_def_dir[k] = vec4(direction, float(type));
+    tl_shadow_def_d[k] = d;
+    tl_shadow_def_s[k] = s;
+    tl_shadow_def_f[k] = f;
+    return true;
+}
+
+void tl_shadow_defer_end(vec3 p, vec3 n, inout vec3 diffuse, inout vec3 specular, inout vec3 fresnel)
+{
+    tl_shadow_deferring = false;
+    for (uint k = 0u; k < tl_shadow_deferred; k++) {
+        vec4 a = tl_shadow_def_light[k], b = tl_shadow_def_dir[k];
+        float unlit = 1.0 - tl_shadow(a.w, p, n, tl_shadow_to_light(int(b.w), p, a.xyz, b.xyz), a.xyz);
+        diffuse -= unlit * tl_shadow_def_d[k];
+        specular -= unlit * tl_shadow_def_s[k];
+        fresnel -= unlit * tl_shadow_def_f[k];
+    }
+    diffuse = max(diffuse, vec3(0.0));
+    specular = max(specular, vec3(0.0));
+    fresnel = max(fresnel, vec3(0.0));
 }
 
 #endif

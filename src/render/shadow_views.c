@@ -327,7 +327,7 @@ static void tl__cascade_depth(const tl__view_ctx *c, const tl__mat4 *look, const
  * sphere (its radius depends only on the slice and the field of view, so it does not change when the
  * camera turns) and its centre snapped to whole texels in the light's view (no shimmer when it moves). */
 static void tl__cascade_views(tl__shadows *s, const tl__view_ctx *c, const tl_light *l, const uint32_t *xy,
-                              uint32_t size)
+                              uint32_t size, float splits[4])
 {
     float dir[3] = {l->direction[0], l->direction[1], l->direction[2]}, origin[3] = {0, 0, 0};
     tl__vec3_normalize(dir);
@@ -339,6 +339,7 @@ static void tl__cascade_views(tl__shadows *s, const tl__view_ctx *c, const tl_li
     for (int i = 0; i < TL__SHADOW_CASCADES; i++) {
         float t0 = (float)i / TL__SHADOW_CASCADES, t1 = (float)(i + 1) / TL__SHADOW_CASCADES;
         float a = i ? near * powf(far / near, t0) : c->v->near_z, b = near * powf(far / near, t1);
+        splits[i] = b;
         float zc = 0.5f * (a + b) * (1.0f + k2), r;
         if (zc >= b) zc = b, r = b * sqrtf(k2);
         else r = sqrtf((zc - a) * (zc - a) + a * a * k2);
@@ -434,7 +435,7 @@ tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights 
         rec->info[0] = (uint32_t)s->view_count;
         if (kind == TL_LIGHT_SPOT) tl__spot_views(s, &c, li, xy, size);
         else if (kind == TL_LIGHT_POINT) tl__point_views(s, &c, li, xy, size);
-        else tl__cascade_views(s, &c, li, xy, size);
+        else tl__cascade_views(s, &c, li, xy, size, rec->splits);
         rec->info[1] = (uint32_t)s->view_count - rec->info[0];
         rec->info[2] = (uint32_t)kind;
         rec->fade[0] = s->fade[i];

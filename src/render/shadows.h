@@ -24,6 +24,7 @@ typedef struct tl__shadow_view_gpu {
 typedef struct tl__shadow_light_gpu {
     uint32_t info[4]; /* first view, view count, kind, 0 */
     float fade[4];    /* strength, tile side in texels, 0, 0 */
+    float splits[4];  /* cascades: the view depth where each ends */
 } tl__shadow_light_gpu;
 typedef struct tl__shadow_block {
     float params[4];   /* 1 / atlas side, PCF radius, G-buffer position error a z + b z^2 */
