@@ -29,9 +29,7 @@ void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout 
     vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
                               l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
 #ifdef TL_SHADOWS
-    if (l.cos_inner.z > 0.0 && t != vec3(0.0) &&
-        !tl_shadow_defer(l.cos_inner.z, int(l.color_type.w), l.position_radius.xyz, l.direction_cos_outer.xyz,
-                         l.color_type.rgb * t.x, l.color_type.rgb * t.y, l.color_type.rgb * t.z))
+    if (l.cos_inner.z > 0.0 && t != vec3(0.0))
         t *= tl_shadow(l.cos_inner.z, p, n, tl_shadow_to_light(int(l.color_type.w), p, l.position_radius.xyz, l.direction_cos_outer.xyz), l.position_radius.xyz);
 #endif
     diffuse += l.color_type.rgb * t.x;
@@ -54,9 +52,6 @@ void main()
     vec3 v = normalize(-p);
     float shape = tl_lobe_shape(s.gloss);
     vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
-#ifdef TL_SHADOWS
-    tl_shadow_defer_begin();
-#endif
 #ifdef TL_FORWARD_TILED
     // Forward+: the directional lights, then the pixel's tile lists (every local light of a chunk
     // whose list overflowed)
@@ -88,9 +83,6 @@ void main()
         for (uint k = 0u; k < count; k++)
             tl_forward_add(tl_lights[tl_light_indices[first + k]], p, n, v, shape, diffuse, specular, fresnel);
     }
-#endif
-#ifdef TL_SHADOWS
-    tl_shadow_defer_end(p, n, diffuse, specular, fresnel);
 #endif
 #ifdef TL_SPECULAR_NONE
     specular = fresnel = vec3(0.0);

@@ -99,8 +99,9 @@ float tl_shadow(float slot, vec3 p, vec3 n, vec3 l, vec3 light)
             vec3 d = transpose(mat3(u_view)) * (p - light), a = abs(d);
             v += a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0u : 1u) : a.y >= a.z ? (d.y >= 0.0 ? 2u : 3u) : (d.z >= 0.0 ? 4u : 5u);
         }
-        if (tl_shadow_extent(v, p) > 1.0) return 1.0;
-        tl_shadow_view sv = tl_shadow_views[v];
+        tl_shadow_view sv = tl_shadow_views[v]; // loaded once: storage loads are what a lookup costs
+        vec4 c = sv.m * vec4(p, 1.0);
+        if (c.w <= 0.0 || max(abs(c.x), abs(c.y)) > c.w) return 1.0;
         s = tl_shadow_sample(sv, tl_shadow_biased(sv, p, n, l));
     }
     return mix(1.0, s, sl.fade.x);
@@ -112,52 +113,6 @@ vec3 tl_shadow_to_light(int type, vec3 p, vec3 position, vec3 direction)
     vec3 d = position - p;
     float d2 = dot(d, d);
     return type == 3 ? -direction : d2 > 0.0 ? d * inversesqrt(d2) : vec3(0.0, 0.0, 1.0); // a light at the point
-}
-
-// Casting lights met in a loop over many lights, shadowed after it: llvmpipe runs a branch's code
-// in every SIMD lane whatever the condition, so a lookup inside the loop would cost every light of
-// every pixel. Between tl_shadow_defer_begin and tl_shadow_defer_end a casting light's contribution
-// is added unshadowed and recorded (up to TL_SHADOW_DEFER, the rest are looked up at once); the end
-// takes the unlit part away again.
-#define TL_SHADOW_DEFER 8
-bool tl_shadow_deferring = false;
-uint tl_shadow_deferred = 0u;
-vec4 tl_shadow_def_light[TL_SHADOW_DEFER];  // view-space position, slot
-vec4 tl_shadow_def_dir[TL_SHADOW_DEFER];    // view-space direction light travels, type
-vec3 tl_shadow_def_d[TL_SHADOW_DEFER], tl_shadow_def_s[TL_SHADOW_DEFER], tl_shadow_def_f[TL_SHADOW_DEFER];
-
-void tl_shadow_defer_begin()
-{
-    tl_shadow_deferring = true;
-    tl_shadow_deferred = 0u;
-}
-
-// 1 when the light was recorded (its contribution is added unshadowed by the caller).
-bool tl_shadow_defer(float slot, int type, vec3 position, vec3 direction, vec3 d, vec3 s, vec3 f)
-{
-    if (!tl_shadow_deferring || tl_shadow_deferred >= uint(TL_SHADOW_DEFER)) return false;
-    uint k = tl_shadow_deferred++;
-    tl_shadow_def_light[k] = vec4(position, slot);
-    tl_shadow_def_dir[k] = vec4(direction, float(type));
-    tl_shadow_def_d[k] = d;
-    tl_shadow_def_s[k] = s;
-    tl_shadow_def_f[k] = f;
-    return true;
-}
-
-void tl_shadow_defer_end(vec3 p, vec3 n, inout vec3 diffuse, inout vec3 specular, inout vec3 fresnel)
-{
-    tl_shadow_deferring = false;
-    for (uint k = 0u; k < tl_shadow_deferred; k++) {
-        vec4 a = tl_shadow_def_light[k], b = tl_shadow_def_dir[k];
-        float unlit = 1.0 - tl_shadow(a.w, p, n, tl_shadow_to_light(int(b.w), p, a.xyz, b.xyz), a.xyz);
-        diffuse -= unlit * tl_shadow_def_d[k];
-        specular -= unlit * tl_shadow_def_s[k];
-        fresnel -= unlit * tl_shadow_def_f[k];
-    }
-    diffuse = max(diffuse, vec3(0.0));
-    specular = max(specular, vec3(0.0));
-    fresnel = max(fresnel, vec3(0.0));
 }
 
 #endif

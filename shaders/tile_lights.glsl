@@ -25,10 +25,7 @@ void tl_tiled_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout ve
                               l.direction_cos_outer.w, l.cos_inner.y);
     const vec3 fp16_max = vec3(65504.0);
 #ifdef TL_SHADOWS
-    if (l.cos_inner.z > 0.0 && t != vec3(0.0) &&
-        !tl_shadow_defer(l.cos_inner.z, type, l.position_radius.xyz, l.direction_cos_outer.xyz,
-                         min(l.color_type.rgb * t.x, fp16_max), min(l.color_type.rgb * t.y, fp16_max),
-                         min(l.color_type.rgb * t.z, fp16_max)))
+    if (l.cos_inner.z > 0.0 && t != vec3(0.0))
         t *= tl_shadow(l.cos_inner.z, p, n, tl_shadow_to_light(type, p, l.position_radius.xyz, l.direction_cos_outer.xyz), l.position_radius.xyz);
 #endif
     diffuse += min(l.color_type.rgb * t.x, fp16_max);
@@ -40,9 +37,6 @@ void tl_tiled_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout ve
 void tl_tile_lights_add(uint tile, vec3 p, vec3 n, vec3 v, float shape, inout vec3 diffuse, inout vec3 specular,
                         inout vec3 fresnel)
 {
-#ifdef TL_SHADOWS
-    tl_shadow_defer_begin();
-#endif
     for (uint i = 0u; i < u_light_counts.x; i++) tl_tiled_add(tl_lights[i], p, n, v, shape, diffuse, specular, fresnel);
     uint chunks = tl_tile_chunks();
     for (uint c = 0u; c < chunks; c++) {
@@ -51,9 +45,6 @@ void tl_tile_lights_add(uint tile, vec3 p, vec3 n, vec3 v, float shape, inout ve
         for (uint k = 0u; k < count; k++)
             tl_tiled_add(tl_lights[tl_tile_list_light(h, c, k)], p, n, v, shape, diffuse, specular, fresnel);
     }
-#ifdef TL_SHADOWS
-    tl_shadow_defer_end(p, n, diffuse, specular, fresnel);
-#endif
 }
 
 #endif
