@@ -2,7 +2,7 @@
 # Installs the Debian packages thinlight needs, and only those that are missing.
 # Run as root (or with sudo available). Safe to run again: it does nothing when all are there.
 set -eu
-PACKAGES="cmake make gcc g++ pkg-config python3 python3-glad libosmesa6-dev libegl-dev libegl-mesa0 libgl-dev libglfw3-dev \
+PACKAGES="cmake make gcc g++ pkg-config python3 python3-glad libosmesa6-dev libegl-dev libegl-mesa0 libgl-dev libglfw3-dev libembree-dev \
 libtinygltf-dev nlohmann-json3-dev libopenimageio-dev gnuplot-nox glslang-tools doxygen \
 clang libclang-rt-14-dev valgrind libimgui-dev xvfb xauth"
 missing=""

@@ -18,6 +18,10 @@ static const char usage_head[] =
     "  --no-directional      leave out the directional light\n"
     "  --seed S              scene seed (default 1)\n"
     "  --glass N             the built-in scene with N alpha-blended glass panes (default 0; 0..8)\n"
+    "  --shadows             the built-in scene's moonlight and braziers cast shadows (docs/shadows.md)\n"
+    "  --shadow-no-cache     render every shadow map every frame (default: unchanged maps are kept)\n"
+    "  --shadow-max N        casting lights given a map per frame (default 8; 1..64)\n"
+    "  --shadow-pcf R        PCF kernel radius in texels (default 1; 0: one bilinear tap; 0..3)\n"
     "  --frames N            render N frames and report the last (default 1; 1..100000)\n"
     "  --stats               print per-pass GPU times and target bytes\n"
     "  --print-plan          print the frame plan: passes, inputs, outputs, targets, programs\n"
@@ -33,7 +37,7 @@ static const char usage_tail[] =
     "Exit status: 0 success, 1 bad input (an unreadable scene, an unwritable output, a frame over\n"
     "the target-memory budget), 2 bad usage (an unknown option, a malformed or out-of-range value).\n";
 
-enum { R_HELP, R_LIST, R_OUT, R_DUMP, R_SIZE, R_LIGHTS, R_SPOTS, R_NO_DIRECTIONAL, R_SEED, R_FRAMES, R_STATS, R_PLAN, R_GLASS };
+enum { R_HELP, R_LIST, R_OUT, R_DUMP, R_SIZE, R_LIGHTS, R_SPOTS, R_NO_DIRECTIONAL, R_SEED, R_FRAMES, R_STATS, R_PLAN, R_GLASS, R_SHADOWS, R_SHADOW_NO_CACHE, R_SHADOW_MAX, R_SHADOW_PCF };
 
 static const tl_opt render_opts[] = {
     {"--help", TL_OPT_FLAG, .id = R_HELP},
@@ -50,6 +54,10 @@ static const tl_opt render_opts[] = {
     {"--stats", TL_OPT_FLAG, .id = R_STATS},
     {"--print-plan", TL_OPT_FLAG, .id = R_PLAN},
     {"--glass", TL_OPT_UINT, .id = R_GLASS, .lo = 0, .hi = 8},
+    {"--shadows", TL_OPT_FLAG, .id = R_SHADOWS},
+    {"--shadow-no-cache", TL_OPT_FLAG, .id = R_SHADOW_NO_CACHE},
+    {"--shadow-max", TL_OPT_UINT, .id = R_SHADOW_MAX, .lo = 1, .hi = 64},
+    {"--shadow-pcf", TL_OPT_UINT, .id = R_SHADOW_PCF, .lo = 0, .hi = 3},
 };
 
 /* One option of render_opts; 0, or -1 after --help or --list-options. */
@@ -73,6 +81,13 @@ static int render_option(render_args *a, const tl_opt_table *tables, size_t ntab
     case R_STATS: a->stats = 1; break;
     case R_PLAN: a->plan = 1; break;
     case R_GLASS: a->sd.glass_panes = (uint32_t)v->u[0]; break;
+    case R_SHADOWS: a->sd.shadows = 1; break;
+    case R_SHADOW_NO_CACHE: a->rd.options.shadows.no_cache = 1; break;
+    case R_SHADOW_MAX: a->rd.options.shadows.max_lights = (uint32_t)v->u[0]; break;
+    case R_SHADOW_PCF:
+        a->rd.options.shadows.pcf_radius = (uint32_t)v->u[0];
+        a->rd.options.shadows.no_pcf = v->u[0] == 0;
+        break;
     default: break;
     }
     return 0;

@@ -13,6 +13,9 @@
 
 #ifndef TL_DEPTH_ONLY
 #include "tiles.glsl" // the lights block (and, for Forward+, the tile lists)
+#ifdef TL_SHADOWS
+#include "shadow.glsl"
+#endif
 layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
@@ -25,6 +28,10 @@ void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout 
 {
     vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
                               l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
+#ifdef TL_SHADOWS
+    if (l.cos_inner.z > 0.0 && t != vec3(0.0))
+        t *= tl_shadow(l.cos_inner.z, p, n, tl_shadow_to_light(int(l.color_type.w), p, l.position_radius.xyz, l.direction_cos_outer.xyz), l.position_radius.xyz);
+#endif
     diffuse += l.color_type.rgb * t.x;
     specular += l.color_type.rgb * t.y;
     fresnel += l.color_type.rgb * t.z;

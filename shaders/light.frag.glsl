@@ -3,6 +3,10 @@
 // material from the G-buffer and add shaded radiance to HDR.
 #include "gbuffer_decode.glsl"
 #include "light_eval.glsl"
+#ifdef TL_SHADOWS
+#include "shadow.glsl"
+flat in float f_shadow; // the light's shadow slot (0: casts none)
+#endif
 
 flat in vec4 f_position_radius;
 flat in vec3 f_color;
@@ -51,6 +55,9 @@ void main()
     vec3 v = normalize(-p);
     vec3 t = tl_light_weights(TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(gloss), f_position_radius, f_direction_cos_outer.xyz,
                               f_cos_inner, f_direction_cos_outer.w, f_source_radius);
+#ifdef TL_SHADOWS
+    if (f_shadow > 0.0 && t != vec3(0.0)) t *= tl_shadow(f_shadow, p, n, tl_shadow_to_light(TL_LIGHT_TYPE, p, f_position_radius.xyz, f_direction_cos_outer.xyz), f_position_radius.xyz);
+#endif
     // One light's output never exceeds the FP16 maximum, whatever its colour (an Inf would poison
     // every later sum); sums past it are the readers' job (material.frag, tonemap.frag).
     const vec3 fp16_max = vec3(65504.0);

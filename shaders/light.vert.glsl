@@ -14,6 +14,9 @@ flat out vec3 f_color;
 flat out vec4 f_direction_cos_outer; // view space
 flat out float f_cos_inner;
 flat out float f_source_radius;
+#ifdef TL_SHADOWS
+flat out float f_shadow; // the light's shadow slot (shadow.glsl), in the colour's alpha
+#endif
 
 void main()
 {
@@ -22,6 +25,9 @@ void main()
     f_direction_cos_outer = vec4(normalize(mat3(u_view) * i_direction_cos_outer.xyz), i_direction_cos_outer.w);
     f_cos_inner = i_cos_inner_source.x;
     f_source_radius = i_cos_inner_source.y;
+#ifdef TL_SHADOWS
+    f_shadow = i_color.w;
+#endif
 #if TL_LIGHT_TYPE == 3 || defined(TL_LIGHT_FULLSCREEN)
     gl_Position = vec4(tl_fullscreen_position(gl_VertexID), 0.0, 1.0);
 #elif TL_LIGHT_TYPE == 2

@@ -6,6 +6,9 @@
 
 #include "light_eval.glsl"
 #include "tiles.glsl"
+#ifdef TL_SHADOWS
+#include "shadow.glsl"
+#endif
 
 // One light's clamped terms added to the sums; nothing when it cannot reach p (as the volumes discard).
 void tl_tiled_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout vec3 diffuse, inout vec3 specular,
@@ -21,6 +24,10 @@ void tl_tiled_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout ve
     vec3 t = tl_light_weights(type, p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz, l.cos_inner.x,
                               l.direction_cos_outer.w, l.cos_inner.y);
     const vec3 fp16_max = vec3(65504.0);
+#ifdef TL_SHADOWS
+    if (l.cos_inner.z > 0.0 && t != vec3(0.0))
+        t *= tl_shadow(l.cos_inner.z, p, n, tl_shadow_to_light(type, p, l.position_radius.xyz, l.direction_cos_outer.xyz), l.position_radius.xyz);
+#endif
     diffuse += min(l.color_type.rgb * t.x, fp16_max);
     specular += min(l.color_type.rgb * t.y, fp16_max);
     fresnel += min(l.color_type.rgb * t.z, fp16_max);

@@ -256,6 +256,19 @@ typedef struct tl_vignette_desc {
     float softness; /**< the fall-off's width (same unit); default 0.5 */
 } tl_vignette_desc;
 
+/** Shadows of the lights with tl_light.shadow (docs/shadows.md): one depth atlas holding a
+ *  perspective map per spot light, six cube faces per point light and four stable cascades per
+ *  directional light; looked up with PCF and a bias derived from the texel size and the depth
+ *  formats. Zeroed: the defaults below (shadows on for lights that ask for them). */
+typedef struct tl_shadow_desc {
+    int disabled;         /**< 1: no light casts, whatever tl_light.shadow says */
+    uint32_t atlas_size;  /**< the atlas's side in texels, 1024..16384, a power of two; default 4096 */
+    uint32_t max_lights;  /**< most casting lights given a map per frame (the budget), 1..64; default 8 */
+    uint32_t pcf_radius;  /**< PCF kernel: (2 r + 1)^2 bilinear compare taps, r in 0..3; 0 means the default 1 */
+    int no_pcf;           /**< 1: a single bilinear compare tap (the kernel r = 0) */
+    int no_cache;         /**< 1: every map is rendered every frame (default: unchanged maps are kept) */
+} tl_shadow_desc;
+
 /** A GL entry point as a loader returns it. */
 typedef void (*tl_gl_function)(void);
 /** Loader for GL entry points, e.g. tl_context_proc_loader or a wrapper of glfwGetProcAddress. */
@@ -331,6 +344,7 @@ typedef struct tl_renderer_options {
     tl_bloom_desc bloom;               /**< bloom; zeroed: off */
     tl_ssr_desc ssr;                   /**< screen-space reflections; zeroed: off */
     tl_vignette_desc vignette;         /**< vignette; zeroed: off */
+    tl_shadow_desc shadows;            /**< the shadow atlas of lights with tl_light.shadow (docs/shadows.md) */
 } tl_renderer_options;
 
 /** What tl_renderer_create() needs: the first options and what only creation decides (the
@@ -534,6 +548,8 @@ typedef struct tl_frame_plan {
     char msaa_reason[96];                        /**< how MSAA is applied, or why not, when the options ask for it */
     size_t program_count;                        /**< entries used in programs */
     tl_plan_program programs[TL_PLAN_MAX_PROGRAMS]; /**< every permutation the frame compiles */
+    uint32_t shadow_lights;                      /**< casting lights the plan looks up shadows for; 0: no
+                                                      shadow pass and no shadow branch in any shader */
 } tl_frame_plan;
 
 /**
@@ -586,6 +602,12 @@ typedef struct tl_frame_stats {
     uint64_t relit_pixels;              /**< light_scale below 1: pixels the edge fix-up re-lit at full resolution
                                              (fragments: a pixel two coplanar surfaces both draw counts twice) */
     double relit_fraction;              /**< relit_pixels over the frame's pixels */
+    uint32_t shadow_lights;             /**< casting lights given a map this frame (at most the budget) */
+    uint32_t shadow_lights_fading;      /**< casting lights over the budget, fading out instead of a map */
+    uint32_t shadow_maps_rendered;      /**< atlas views (cascades, cube faces, spot maps) rendered this frame */
+    uint32_t shadow_maps_cached;        /**< atlas views kept from an earlier frame (nothing in range changed) */
+    size_t shadow_atlas_bytes;          /**< the shadow atlas's memory (0 without casting lights) */
+    double shadow_ms;                   /**< GPU time of the shadow-map rendering (timer query); -1: unavailable */
 } tl_frame_stats;
 
 /** "gbuffer", "lights", ... ("unknown" out of range); the names of debug groups and timers. */

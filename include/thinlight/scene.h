@@ -163,6 +163,9 @@ typedef struct tl_light {
      *  0 (the default): a punctual light; >= 0. The window and the cone are measured from the
      *  centre, so `radius` still bounds everything the light reaches. */
     float source_radius;
+    /** Non-zero: the light casts shadows through the shadow atlas (docs/shadows.md); 0 (the
+     *  default): it does not, and a scene with no casting light plans and renders as before. */
+    int shadow;
 } tl_light;
 
 /** A perspective camera looking from position at target. The renderer refuses, naming the field,
@@ -245,6 +248,7 @@ typedef struct tl_scene_feature_set {
     int has_points_lines;  /**< some non-empty object draws points or lines (the points-lines pass) */
     int has_vertex_colors; /**< the scene has colors and some non-empty object (the colour attribute) */
     int has_uv1;           /**< the scene has uv1 and a drawn material samples a map with it */
+    size_t shadow_lights;  /**< lights with tl_light.shadow set (the shadow pass and lookups) */
 } tl_scene_feature_set;
 
 /** Fills *out with what `scene` uses; a NULL scene gives all zeros. */
@@ -280,6 +284,9 @@ typedef struct tl_default_scene_desc {
      *  (transparency: docs/frame.md, "2d. Transparency through the light buffer"). */
     uint32_t glass_panes;
     tl_allocator allocator;  /**< zeroed: malloc/free; used for every allocation of the scene */
+    /** 1: the moonlight and the braziers (the point lights above the braziers, one in eight of
+     *  them at most) cast shadows (tl_light.shadow); default 0: no light casts. */
+    int shadows;
 } tl_default_scene_desc;
 
 /** Builds the built-in crypt scene (a vaulted hall crypt, metres, Y up; exposure 1 with an ACES or

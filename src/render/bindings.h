@@ -16,6 +16,7 @@
     X(SSBO_TILE_HEADERS, 3)      /* tiled: counters and per-tile (offset, count) */               \
     X(SSBO_TILE_ENTRIES, 4)      /* tiled: the lists' light indices */                            \
     X(SSBO_FIXUP, 5)             /* the light scale's fix-up: counters, list of pixels (fixup.c) */ \
+    X(SSBO_SHADOWS, 6)           /* shadow atlas views and casting lights (shadows.c) */            \
     X(IMAGE_LIGHT_DIFFUSE, 0)    /* image units of the compute shading pass's writes */           \
     X(IMAGE_LIGHT_SPECULAR, 1)                                                                    \
     X(IMAGE_HDR, 2)                                                                               \
@@ -25,6 +26,7 @@
     X(UNIT_MR_TEXTURE, 34)                                                                        \
     X(UNIT_EMISSIVE_TEXTURE, 35)                                                                  \
     X(UNIT_OCCLUSION_TEXTURE, 36)                                                                 \
+    X(UNIT_SHADOW_ATLAS, 37)     /* the shadow atlas, a depth-compare sampler (shadows.c) */       \
     X(CULL_CHUNK, 16384)         /* local lights one light-cull invocation tests (tiles.glsl) */
 
 enum {
@@ -32,8 +34,8 @@ enum {
     TL__BINDING_LIST(TL__BINDING_ENUM)
 #undef TL__BINDING_ENUM
     TL__MATERIAL_TEXTURES = 5,
-    TL__TEXTURE_UNITS_USED = 37, /* units the renderer may bind: 0 .. 36 */
-    TL__BUFFER_BINDINGS_USED = 6, /* uniform and storage binding points it may bind: 0 .. 5 */
+    TL__TEXTURE_UNITS_USED = 38, /* units the renderer may bind: 0 .. 37 */
+    TL__BUFFER_BINDINGS_USED = 7, /* uniform and storage binding points it may bind: 0 .. 6 */
     TL__IMAGE_UNITS_USED = 4     /* image units it may bind: 0 .. 3 */
 };
 

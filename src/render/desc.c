@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "plan_internal.h"
+#include "shadows.h"
 
 /* The general options: their defaults, and the first one out of range named in *bad. */
 static int tl__general_resolve(tl_renderer_options *o, const char **bad)
@@ -26,6 +27,7 @@ static int tl__general_resolve(tl_renderer_options *o, const char **bad)
     if (!(o->exposure > 0.0f)) o->exposure = 1.0f;
     if (o->light_scale == 0.0f) o->light_scale = 1.0f;
     if (o->msaa == 0) o->msaa = 1;
+    tl__shadow_desc_resolve(&o->shadows);
     const struct { int bad; const char *name; } checks[] = {
         {(unsigned)o->mode >= TL_MODE_COUNT_, "mode"},
         {(unsigned)o->depth_format >= TL_DEPTH_FORMAT_COUNT_, "depth_format"},
@@ -41,6 +43,7 @@ static int tl__general_resolve(tl_renderer_options *o, const char **bad)
         {!isfinite(o->ambient[0]) || !isfinite(o->ambient[1]) || !isfinite(o->ambient[2]), "ambient"},
         {o->tile_size != 8 && o->tile_size != 16 && o->tile_size != 32, "tile_size (8, 16 or 32)"},
         {o->light_scale != 1.0f && o->light_scale != 0.5f && o->light_scale != 0.25f, "light_scale (1, 0.5 or 0.25)"},
+        {!tl__shadow_desc_valid(&o->shadows), "shadows (atlas_size a power of two in 1024..16384, max_lights 1..64, pcf_radius 0..3)"},
         {o->msaa != 1 && o->msaa != 2 && o->msaa != 4 && o->msaa != 8, "msaa (0, 1, 2, 4 or 8 samples)"},
         /* R11G11B10F has no alpha for the compact layout's specular luminance */
         {o->light_format == TL_LIGHT_FORMAT_R11G11B10F && o->light_buffer != TL_LIGHT_BUFFER_EXACT,

@@ -163,6 +163,12 @@ void tl__run_pass(tl_renderer *r, const tl__compiled_pass *cp, tl__frame_record 
 static tl_result tl__prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec)
 {
     rec->st.objects_drawn = (uint32_t)tl__visibility(&r->scene, v);
+    r->lights.shadow_slots = NULL;
+    if (r->graph.plan.pub.shadow_lights) { /* the lights' shadow slots before their data is made */
+        tl_result res = tl__shadows_prepare(&r->dev, &r->shadows, &r->lights, &r->scene, v, &r->desc.options, &rec->st);
+        if (res != TL_OK) return res;
+        r->lights.shadow_slots = r->shadows.slots;
+    }
     return tl__lights_prepare(&r->dev, &r->lights, &r->scene, v, r->graph.light_data, r->desc.options.fullscreen_lights,
                               r->frame_index, &rec->st, &rec->stream_bytes);
 }
@@ -219,6 +225,7 @@ static tl_result tl__issue(tl_renderer *r, const tl__view *v, const tl_render_ou
     if (res == TL_OK) res = tl__upload(r, v, rec);
     if (res != TL_OK) return res;
     tl__state_enter(gl, &dev->state, TL__TEXTURE_UNITS_USED);
+    if (r->graph.plan.pub.shadow_lights) tl__shadows_render(dev, &r->shadows, &r->scene, r->frame_index, &rec->st);
     for (size_t i = 0; i < r->graph.pass_count; i++) tl__run(r, &r->graph.passes[i], rec, i, out, v, slot);
     tl__state_reset(gl, &dev->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED, TL__IMAGE_UNITS_USED);
     if (out) gl->Viewport((GLint)out->x, (GLint)out->y, out->width ? (GLsizei)out->width : (GLsizei)r->desc.width,

@@ -55,6 +55,7 @@ static size_t tl__add_visible(tl__lights *r, const tl__view *v, int directional,
         tl__light_sphere(l, c, &rad);
         if (!directional && (rad <= 0.0f || !tl__sphere_visible((float(*)[4])v->planes, c, rad))) continue;
         tl__view_light(v, l, type, &r->view[n]);
+        if (r->shadow_slots) r->view[n].cos_inner[2] = r->shadow_slots[i];
         memcpy(r->view_spheres[n], c, sizeof c);
         r->view_spheres[n][3] = directional ? -1.0f : rad;
         r->view_index[n++] = (uint32_t)i;

@@ -169,7 +169,9 @@ void tl__volumes_prepare(tl__lights *r, const tl__view *v, tl_frame_stats *st, s
                 if (type - 1 != k) continue;
                 int side = tl__light_side(r, v, l, type);
                 if (side < 0 || side != (pass == 0)) continue;
-                tl__instance_fill(l, type, &r->instances[n++]);
+                tl__instance_fill(l, type, &r->instances[n]);
+                if (r->shadow_slots) r->instances[n].color[3] = r->shadow_slots[i];
+                n++;
                 r->instance_count[k]++;
                 r->instance_outside[k] += (size_t)side;
             }

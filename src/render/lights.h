@@ -83,6 +83,9 @@ struct tl__lights {
     tl__tiles tiles;
     /* the light scale's fix-up list (fixup.c) */
     tl__fixup fixup;
+    /* per scene light: its shadow slot (shadow.glsl) for this frame, 0: none; NULL without shadows
+     * (owned by the shadow module, shadows.c) */
+    const float *shadow_slots;
 };
 
 /* lights.c: validated copies of the lights (with per-frame scratch for them), counted by type;

@@ -53,12 +53,13 @@ typedef struct tl__plan_input {
     char lighting_reason[96];
     /* every lighting program's model switches: TL_SPECULAR_EXACT, TL_SPECULAR_COMPACT or
      * TL_SPECULAR_NONE, then TL_GGX with GGX, then TL_FRESNEL_SUMS or TL_FRESNEL_NV in thin-lpp */
-    char spec_define[48];
+    char spec_define[52];
     const char *rt0_define;     /* TL_RT0_RGBA8 or TL_RT0_RGB10A2 */
     char material_defines[128]; /* the geometry passes' material switches (leading space each) */
     uint32_t msaa;              /* samples of the multisampled targets (tl__msaa_samples), 1: no MSAA */
     int stipple;                /* the blended materials go through the G-buffer's 2x2 stipple (pass_stipple.c) */
     char transparency_reason[96];
+    uint32_t shadows;           /* casting lights looked up (TL_SHADOWS in spec_define); 0: none */
 } tl__plan_input;
 
 /* What a pass needs of the lights module each frame (tl__pass_decl.light_data). */

@@ -67,6 +67,16 @@ static void tl__plan_lighting(tl__plan_input *in)
              in->fresnel == TL_FRESNEL_TWO_SUMS ? " TL_FRESNEL_SUMS" : in->fresnel == TL_FRESNEL_NV ? " TL_FRESNEL_NV" : "");
 }
 
+/* Shadows (docs/shadows.md): only with a casting light that some lighting pass evaluates; every
+ * lighting program then has TL_SHADOWS. Without one the plan is exactly the plan without shadows. */
+static void tl__plan_shadows(tl__plan_input *in)
+{
+    if (!in->lights || !in->f.shadow_lights || in->o->shadows.disabled) return;
+    in->shadows = (uint32_t)in->f.shadow_lights;
+    size_t n = strlen(in->spec_define);
+    snprintf(in->spec_define + n, sizeof in->spec_define - n, " TL_SHADOWS");
+}
+
 /* Stipple or forward for the alpha-blended materials (docs/frame.md, "2d. Transparency through the
  * light buffer"). The stipple has TL_STIPPLE_LAYERS layers and the frame gives each visible blended
  * object its own, far to near (draw.c), so it fits in every view when the scene draws at most that
@@ -122,6 +132,7 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     tl__plan_strategy(in);
     in->spec = f->has_specular != 0;
     tl__plan_lighting(in);
+    tl__plan_shadows(in);
     tl__plan_transparency(in);
     in->rt0_define = d->options.rt0 == TL_RT0_RGB10A2 ? "TL_RT0_RGB10A2" : "TL_RT0_RGBA8";
     tl__material_defines(f, in->material_defines, sizeof in->material_defines);
@@ -368,6 +379,7 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
                  in.light_shift ? "asked; lights on the reduced depth, upsampled, edges re-lit"
                                 : "asked, but only thin-lpp has a light buffer to reduce");
     p->pub.msaa = in.msaa;
+    p->pub.shadow_lights = in.shadows;
     if (d.options.msaa > 1) {
         const char *why = tl__msaa_refusal(&d.options);
         snprintf(p->pub.msaa_reason, sizeof p->pub.msaa_reason, "%s%s", why ? "asked, but " : "",

@@ -136,6 +136,7 @@ void tl_renderer_destroy(tl_renderer *r)
     if (tl__need_context(&r->dev, "tl_renderer_destroy") != TL_OK) return;
     tl__scene_release(&r->dev, &r->scene);
     tl__lights_release(&r->dev, &r->lights);
+    tl__shadows_release(&r->dev, &r->shadows);
     tl__graph_release(&r->dev, &r->graph);
     tl__queries_destroy(&r->dev, &r->queries);
     tl__device_release(&r->dev);
@@ -195,6 +196,10 @@ tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t 
     f->point_lights = kinds[0];
     f->spot_lights = kinds[1];
     f->directional_lights = kinds[2];
+    size_t shadows_before = f->shadow_lights;
+    f->shadow_lights = 0;
+    for (size_t i = 0; i < r->lights.count; i++) f->shadow_lights += r->lights.lights[i].shadow != 0;
+    changed |= f->shadow_lights != shadows_before; /* the plan reports the count */
     /* light types decide passes and programs: re-plan when they change */
     return changed ? tl__replan(r) : TL_OK;
 }

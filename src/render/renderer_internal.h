@@ -9,6 +9,7 @@
 #include "graph.h"
 #include "lights.h"
 #include "scene_gpu.h"
+#include "shadows.h"
 #include "stats.h"
 #include "view.h"
 
@@ -26,6 +27,7 @@ struct tl_renderer {
     tl__frame_record last;         /* the last frame's CPU figures (frames without statistics) */
     int last_measured;             /* the last frame issued queries (into queries.ring[last_slot]) */
     unsigned last_slot;
+    tl__shadows shadows;           /* the shadow atlas (shadows.c), used while the plan has shadow_lights */
 };
 
 /* frame.c: one frame through the compiled passes; the prologue of work outside a frame; waiting. */

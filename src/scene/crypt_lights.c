@@ -158,6 +158,7 @@ static void tl__point_lights(const tl__light_plan *plan, tl__r2 *seq, tl__rng *r
         l->radius = radius * tl__rng_range(rng, 0.8f, 1.2f);
         /* emitters as spheres (GGX lighting): braziers at the warm spots, torch flames elsewhere */
         l->source_radius = warm_spot ? TL__BRAZIER_RADIUS : TL__TORCH_RADIUS;
+        l->shadow = warm_spot && plan->shadows;
     }
 }
 
@@ -219,5 +220,8 @@ void tl__crypt_lights(const tl__light_plan *plan, tl_light *out)
     tl__r2 seq = {tl__rng_unit(&rng), tl__rng_unit(&rng)};
     tl__point_lights(plan, &seq, &rng, out);
     tl__spot_lights(plan, &seq, &rng, out + plan->point_lights);
-    if (plan->directional) tl__moonlight(out + plan->point_lights + plan->spot_lights);
+    if (plan->directional) {
+        tl__moonlight(out + plan->point_lights + plan->spot_lights);
+        out[plan->point_lights + plan->spot_lights].shadow = plan->shadows;
+    }
 }

@@ -653,6 +653,7 @@ static void tl__crypt_light_set(tl_scene *scene, const tl__crypt *layout, const 
         .solid_count = layout->solid_count,
         .warm_spots = (const float (*)[3])layout->warm,
         .warm_spot_count = layout->warm_count,
+        .shadows = d->shadows,
     };
     tl__crypt_lights(&plan, scene->lights);
     scene->light_count = light_count;

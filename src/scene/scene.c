@@ -70,6 +70,7 @@ void tl_scene_features(const tl_scene *scene, tl_scene_feature_set *out)
         case TL_LIGHT_DIRECTIONAL: out->directional_lights++; break;
         case TL_LIGHT_TYPE_COUNT_: break;
         }
+        out->shadow_lights += scene->lights[i].shadow != 0;
     }
 
     /* Only materials that some non-empty object draws with count: an unused material needs no

@@ -193,6 +193,7 @@ typedef struct tl__light_plan {
     size_t solid_count;
     const float (*warm_spots)[3]; /* brazier tops: the first point lights sit above them */
     size_t warm_spot_count;
+    int shadows;                  /* the braziers and the moonlight cast shadows */
 } tl__light_plan;
 
 void tl__crypt_lights(const tl__light_plan *plan, tl_light *out);

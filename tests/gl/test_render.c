@@ -58,7 +58,7 @@ static void compare_volumes(test_scene *t, const tl_camera *cam, tl_depth_format
 
 static void set_point(test_scene *t, float x, float y, float z, float radius)
 {
-    t->lights[0] = (tl_light){TL_LIGHT_POINT, {x, y, z}, {0, -1, 0}, {4, 3, 2}, radius, 0, 0, 0};
+    t->lights[0] = (tl_light){TL_LIGHT_POINT, {x, y, z}, {0, -1, 0}, {4, 3, 2}, radius, 0, 0, 0, 0};
     t->s.light_count = 1;
 }
 
@@ -103,7 +103,7 @@ TL_TEST(light_volume_spot_camera_inside)
 {
     test_scene t;
     build_room(&t);
-    t.lights[0] = (tl_light){TL_LIGHT_SPOT, {0, 4, 8.5f}, {0, -0.5f, -1}, {6, 6, 9}, 14.0f, 0.9f, 0.75f, 0};
+    t.lights[0] = (tl_light){TL_LIGHT_SPOT, {0, 4, 8.5f}, {0, -0.5f, -1}, {6, 6, 9}, 14.0f, 0.9f, 0.75f, 0, 0};
     t.s.light_count = 1;
     compare_volumes(&t, NULL, TL_DEPTH_FORMAT_D24, "spot, camera inside (D24)");
 }
@@ -112,10 +112,10 @@ TL_TEST(light_volume_mixed_types_draw_calls)
 {
     test_scene t;
     build_room(&t);
-    t.lights[0] = (tl_light){TL_LIGHT_POINT, {-4, 2, -2}, {0, -1, 0}, {3, 1, 1}, 4.0f, 0, 0, 0};
-    t.lights[1] = (tl_light){TL_LIGHT_POINT, {4, 1, 0}, {0, -1, 0}, {1, 3, 1}, 3.0f, 0, 0, 0};
-    t.lights[2] = (tl_light){TL_LIGHT_SPOT, {0, 9, 0}, {0, -1, 0}, {2, 2, 4}, 12.0f, 0.95f, 0.8f, 0};
-    t.lights[3] = (tl_light){TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {-0.3f, -1, -0.2f}, {0.2f, 0.2f, 0.3f}, 0, 0, 0, 0};
+    t.lights[0] = (tl_light){TL_LIGHT_POINT, {-4, 2, -2}, {0, -1, 0}, {3, 1, 1}, 4.0f, 0, 0, 0, 0};
+    t.lights[1] = (tl_light){TL_LIGHT_POINT, {4, 1, 0}, {0, -1, 0}, {1, 3, 1}, 3.0f, 0, 0, 0, 0};
+    t.lights[2] = (tl_light){TL_LIGHT_SPOT, {0, 9, 0}, {0, -1, 0}, {2, 2, 4}, 12.0f, 0.95f, 0.8f, 0, 0};
+    t.lights[3] = (tl_light){TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {-0.3f, -1, -0.2f}, {0.2f, 0.2f, 0.3f}, 0, 0, 0, 0, 0};
     t.s.light_count = 4;
     compare_volumes(&t, NULL, TL_DEPTH_FORMAT_D24, "mixed types (D24)");
     /* draw calls grow with light types, not counts */
@@ -143,7 +143,7 @@ TL_TEST(fxaa_reduces_edge_gradient)
     if (!g_ctx) return;
     test_scene t;
     build_room(&t);
-    t.lights[0] = (tl_light){TL_LIGHT_POINT, {2, 4, 4}, {0, -1, 0}, {30, 30, 30}, 14.0f, 0, 0, 0};
+    t.lights[0] = (tl_light){TL_LIGHT_POINT, {2, 4, 4}, {0, -1, 0}, {30, 30, 30}, 14.0f, 0, 0, 0, 0};
     t.s.light_count = 1;
     /* a slightly rotated view so that the box's silhouette edges are not axis-aligned */
     tl_camera cam = {{2.5f, 2.2f, 6.5f}, {0, 1.2f, 0}, {0.12f, 1, 0}, 0.9f, 0.1f, 100.0f};
@@ -360,7 +360,7 @@ TL_TEST(default_scene_image_sanity)
     more[scene->light_count] = (tl_light){TL_LIGHT_POINT,
                                           {c->position[0] + 6 * f[0] / fl, c->position[1] + 6 * f[1] / fl,
                                            c->position[2] + 6 * f[2] / fl},
-                                          {0, -1, 0}, {40, 40, 40}, 8.0f, 0, 0, 0};
+                                          {0, -1, 0}, {40, 40, 40}, 8.0f, 0, 0, 0, 0};
     TL_CHECK(tl_renderer_set_lights(r, more, scene->light_count + 1) == TL_OK);
     TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
     TL_CHECK(tl_renderer_read_target(r, TL_TARGET_HDR, after, &(size_t){nf}) == TL_OK);

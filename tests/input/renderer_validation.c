@@ -45,8 +45,8 @@ static tl_renderer *renderer(seen *log, tl_depth_format depth)
 static void lit_room(test_scene *t)
 {
     build_room(t);
-    t->lights[0] = (tl_light){TL_LIGHT_POINT, {4, 6, -3}, {0, 0, 0}, {60, 50, 40}, 30, 0, 0, 0};
-    t->lights[1] = (tl_light){TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {-0.3f, -1, -0.2f}, {0.6f, 0.6f, 0.7f}, 0, 0, 0, 0};
+    t->lights[0] = (tl_light){TL_LIGHT_POINT, {4, 6, -3}, {0, 0, 0}, {60, 50, 40}, 30, 0, 0, 0, 0};
+    t->lights[1] = (tl_light){TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {-0.3f, -1, -0.2f}, {0.6f, 0.6f, 0.7f}, 0, 0, 0, 0, 0};
     t->s.light_count = 2;
     t->s.ambient[0] = t->s.ambient[1] = t->s.ambient[2] = 0.05f;
 }
@@ -368,9 +368,9 @@ TL_TEST(renderer_lights_refused_naming_the_field)
     lit_room(&t);
     TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_OK);
     uint8_t *before = frame(r, NULL);
-    const tl_light point = {TL_LIGHT_POINT, {0, 5, 0}, {0, 0, 0}, {5, 5, 5}, 10, 0, 0, 0};
-    const tl_light spot = {TL_LIGHT_SPOT, {0, 5, 0}, {0, -1, 0}, {5, 5, 5}, 10, 0.9f, 0.8f, 0};
-    const tl_light dir = {TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {0, -1, 0}, {1, 1, 1}, 0, 0, 0, 0};
+    const tl_light point = {TL_LIGHT_POINT, {0, 5, 0}, {0, 0, 0}, {5, 5, 5}, 10, 0, 0, 0, 0};
+    const tl_light spot = {TL_LIGHT_SPOT, {0, 5, 0}, {0, -1, 0}, {5, 5, 5}, 10, 0.9f, 0.8f, 0, 0};
+    const tl_light dir = {TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {0, -1, 0}, {1, 1, 1}, 0, 0, 0, 0, 0};
     struct { tl_light l; const char *message; } cases[14];
     size_t n = 0;
 #define CASE(base, field, value, text)                                                                  \

@@ -1,0 +1,2 @@
+// The shadow pass writes depth only.
+void main() {}

@@ -1,0 +1,167 @@
+/* The shadow atlas on the GPU (docs/shadows.md): one D32F depth texture with a depth-compare
+ * sampler state, its framebuffer, the lookup block (shadow.glsl) and a buffer of the views'
+ * matrices for the shadow pass. Each frame the views shadow_views.c marked are rendered (their
+ * tile scissored, cleared and drawn with the casters in their frustum); the others keep what an
+ * earlier frame drew. The pass's GPU time is measured with a ring of timer queries read once
+ * their results are available (never waited for). */
+#include <string.h>
+
+#include "shadows.h"
+
+static void tl__atlas_release(const GladGLContext *gl, tl__shadows *s)
+{
+    if (s->fbo) gl->DeleteFramebuffers(1, &s->fbo);
+    if (s->atlas) gl->DeleteTextures(1, &s->atlas);
+    s->fbo = s->atlas = 0;
+    s->atlas_size = 0;
+    s->kept_count = 0;
+}
+
+/* The atlas for `size` and the depth convention; 1 when it was made again (every tile is empty). */
+static int tl__atlas_make(tl__device *dev, tl__shadows *s, uint32_t size, int reversed)
+{
+    const GladGLContext *gl = &dev->gl;
+    if (s->atlas && s->atlas_size == size && s->reversed == reversed) return 0;
+    tl__atlas_release(gl, s);
+    gl->CreateTextures(GL_TEXTURE_2D, 1, &s->atlas);
+    gl->TextureStorage2D(s->atlas, 1, GL_DEPTH_COMPONENT32F, (GLsizei)size, (GLsizei)size);
+    gl->TextureParameteri(s->atlas, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl->TextureParameteri(s->atlas, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl->TextureParameteri(s->atlas, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->TextureParameteri(s->atlas, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl->TextureParameteri(s->atlas, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+    gl->TextureParameteri(s->atlas, GL_TEXTURE_COMPARE_FUNC, reversed ? GL_GEQUAL : GL_LEQUAL); /* 1: lit */
+    tl__gl_label(gl, GL_TEXTURE, s->atlas, "shadow.atlas");
+    gl->CreateFramebuffers(1, &s->fbo);
+    gl->NamedFramebufferTexture(s->fbo, GL_DEPTH_ATTACHMENT, s->atlas, 0);
+    gl->NamedFramebufferDrawBuffer(s->fbo, GL_NONE);
+    tl__gl_label(gl, GL_FRAMEBUFFER, s->fbo, "shadow.atlas");
+    s->atlas_size = size;
+    s->reversed = reversed;
+    return 1;
+}
+
+static void tl__shadow_buffers(tl__device *dev, tl__shadows *s)
+{
+    const GladGLContext *gl = &dev->gl;
+    if (s->ssbo) return;
+    size_t bytes = sizeof(tl__shadow_block) + TL__SHADOW_MAX_VIEWS * sizeof(tl__shadow_view_gpu);
+    gl->CreateBuffers(1, &s->ssbo);
+    gl->NamedBufferStorage(s->ssbo, (GLsizeiptr)bytes, NULL, GL_DYNAMIC_STORAGE_BIT);
+    tl__gl_label(gl, GL_BUFFER, s->ssbo, "shadow.lookup");
+    s->ubo_stride = (64 + dev->lim.ubo_align - 1) / dev->lim.ubo_align * dev->lim.ubo_align;
+    gl->CreateBuffers(1, &s->ubo);
+    gl->NamedBufferStorage(s->ubo, (GLsizeiptr)(s->ubo_stride * TL__SHADOW_MAX_VIEWS), NULL, GL_DYNAMIC_STORAGE_BIT);
+    tl__gl_label(gl, GL_BUFFER, s->ubo, "shadow.views");
+    gl->GenQueries(TL__QUERY_RING, s->queries);
+    s->last_ms = -1.0;
+}
+
+void tl__shadows_release(tl__device *dev, tl__shadows *s)
+{
+    const GladGLContext *gl = &dev->gl;
+    tl__atlas_release(gl, s);
+    if (s->ssbo) {
+        gl->DeleteBuffers(1, &s->ssbo);
+        gl->DeleteBuffers(1, &s->ubo);
+        gl->DeleteQueries(TL__QUERY_RING, s->queries);
+    }
+    void *a[] = {s->slots, s->fade, s->score, s->order};
+    for (int i = 0; i < 4; i++) tl__free(&dev->alloc, a[i]);
+    memset(s, 0, sizeof *s);
+}
+
+typedef struct tl__caster_draw {
+    const GladGLContext *gl;
+    const tl__scene_gpu *g;
+    uint32_t draws;
+} tl__caster_draw;
+
+static void tl__draw_caster(void *user, uint32_t object)
+{
+    tl__caster_draw *d = (tl__caster_draw *)user;
+    const tl_object *o = &d->g->objects[object];
+    d->gl->DrawElementsInstancedBaseInstance(GL_TRIANGLES, (GLsizei)o->index_count, GL_UNSIGNED_INT,
+                                             (const void *)(uintptr_t)(o->first_index * 4u), 1, object);
+    d->draws++;
+}
+
+/* The views marked for rendering: each tile scissored, cleared to the far depth, its casters drawn
+ * (both faces: open meshes cast too; depth clamp keeps casters in front of the near plane). */
+static uint32_t tl__shadow_draw(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g, GLuint program)
+{
+    const GladGLContext *gl = &dev->gl;
+    tl__caster_draw d = {gl, g, 0};
+    tl__state_framebuffer(gl, &dev->state, s->fbo);
+    tl__state_program(gl, &dev->state, program);
+    tl__state_vertex_array(gl, &dev->state, g->vao);
+    tl__pipeline p = {.depth_test = TL__DEPTH_LESS, .depth_write = 1, .color_write = 0, .cull = TL__CULL_OFF,
+                      .depth_clamp = 1, .clip_zero_one = (uint8_t)s->reversed};
+    tl__state_apply(gl, &dev->state, &p);
+    gl->Enable(GL_SCISSOR_TEST);
+    float far = s->reversed ? 0.0f : 1.0f;
+    for (size_t i = 0; i < s->view_count; i++) {
+        tl__shadow_view *v = &s->views[i];
+        if (!v->render) continue;
+        tl__state_viewport(gl, &dev->state, (GLint)v->x, (GLint)v->y, (GLsizei)v->size, (GLsizei)v->size);
+        gl->Scissor((GLint)v->x, (GLint)v->y, (GLsizei)v->size, (GLsizei)v->size);
+        gl->ClearNamedFramebufferfv(s->fbo, GL_DEPTH, 0, &far);
+        gl->BindBufferRange(GL_UNIFORM_BUFFER, TL__UBO_PASS, s->ubo, (GLintptr)(i * s->ubo_stride), 64);
+        tl__shadow_casters(g, &v->world_clip, tl__draw_caster, &d);
+    }
+    gl->Disable(GL_SCISSOR_TEST);
+    return d.draws;
+}
+
+/* The newest finished timer query (never waits). */
+static void tl__shadow_time(const GladGLContext *gl, tl__shadows *s, uint64_t frame, int issued)
+{
+    for (uint64_t k = 1; k < TL__QUERY_RING; k++) {
+        unsigned slot = (unsigned)((frame + TL__QUERY_RING - k) % TL__QUERY_RING);
+        if (!s->query_pending[slot]) continue;
+        GLuint ready = 0;
+        gl->GetQueryObjectuiv(s->queries[slot], GL_QUERY_RESULT_AVAILABLE, &ready);
+        if (!ready) continue;
+        GLuint64 ns = 0;
+        gl->GetQueryObjectui64v(s->queries[slot], GL_QUERY_RESULT, &ns);
+        s->query_pending[slot] = 0;
+        s->last_ms = (double)ns * 1e-6;
+        break;
+    }
+    (void)issued;
+}
+
+void tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g, uint64_t frame, tl_frame_stats *st)
+{
+    const GladGLContext *gl = &dev->gl;
+    tl__shadow_buffers(dev, s);
+    if (tl__atlas_make(dev, s, (uint32_t)(1.0f / s->block.params[0] + 0.5f), (int)s->block.flags[0])) s->kept_count = 0;
+    uint32_t rendered = 0;
+    for (size_t i = 0; i < s->view_count; i++) {
+        tl__shadow_view *v = &s->views[i];
+        if (i >= s->kept_count || s->kept[i] != v->signature) v->render = 1;
+        if (!v->render) continue;
+        gl->NamedBufferSubData(s->ubo, (GLintptr)(i * s->ubo_stride), 64, v->world_clip.m);
+        rendered++;
+    }
+    gl->NamedBufferSubData(s->ssbo, 0, sizeof s->block, &s->block);
+    if (s->view_count)
+        gl->NamedBufferSubData(s->ssbo, sizeof s->block, (GLsizeiptr)(s->view_count * sizeof(tl__shadow_view_gpu)),
+                               s->views_gpu);
+    unsigned slot = (unsigned)(frame % TL__QUERY_RING);
+    int timed = rendered && !s->query_pending[slot];
+    if (timed) gl->BeginQuery(GL_TIME_ELAPSED, s->queries[slot]);
+    if (rendered) st->draw_calls += tl__shadow_draw(dev, s, g, s->program);
+    if (timed) {
+        gl->EndQuery(GL_TIME_ELAPSED);
+        s->query_pending[slot] = 1;
+    }
+    tl__shadow_time(gl, s, frame, timed);
+    for (size_t i = 0; i < s->view_count; i++) s->kept[i] = s->views[i].signature;
+    s->kept_count = s->view_count;
+    gl->BindBufferBase(GL_SHADER_STORAGE_BUFFER, TL__SSBO_SHADOWS, s->ssbo);
+    gl->BindTextureUnit(TL__UNIT_SHADOW_ATLAS, s->atlas);
+    st->shadow_maps_rendered = rendered;
+    st->shadow_maps_cached = (uint32_t)(s->view_count - rendered);
+    st->shadow_ms = rendered ? s->last_ms : 0.0;
+}

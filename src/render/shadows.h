@@ -1,0 +1,86 @@
+/* The shadow module (docs/shadows.md): which casting lights get a map this frame, where their views
+ * lie in the one depth atlas and with which matrices (shadow_views.c, CPU only), and the atlas, its
+ * rendering and the lookup data the lighting shaders read (shadows.c). The frame calls prepare
+ * before the lights module fills its light data (the lights' slots) and render before its passes. */
+#ifndef TL_RENDER_SHADOWS_H
+#define TL_RENDER_SHADOWS_H
+
+#include "lights.h"
+#include "scene_gpu.h"
+
+enum {
+    TL__SHADOW_MAX_LIGHTS = 64, /* light records of the lookup block (shadow.glsl) */
+    TL__SHADOW_CASCADES = 4,
+    TL__SHADOW_MAX_VIEWS = TL__SHADOW_MAX_LIGHTS * 6,
+    TL__SHADOW_FADE_FRAMES = 8  /* frames a light takes to gain or lose its shadow */
+};
+
+/* std430 records of shadow.glsl. */
+typedef struct tl__shadow_view_gpu {
+    float m[16];    /* view space to the view's clip space */
+    float rect[4];  /* atlas uv offset, scale */
+    float texel[4]; /* texel world size per clip w; atlas depth quantum c0 + c1 w + c2 w^2 */
+} tl__shadow_view_gpu;
+typedef struct tl__shadow_light_gpu {
+    uint32_t info[4]; /* first view, view count, kind, 0 */
+    float fade[4];    /* strength, tile side in texels, 0, 0 */
+    float splits[4];  /* cascades: the view depth where each ends */
+} tl__shadow_light_gpu;
+typedef struct tl__shadow_block {
+    float params[4];   /* 1 / atlas side, PCF radius, G-buffer position error a z + b z^2 */
+    uint32_t flags[4]; /* reversed depth */
+    tl__shadow_light_gpu lights[TL__SHADOW_MAX_LIGHTS];
+} tl__shadow_block;
+
+/* One view of the atlas for this frame. */
+typedef struct tl__shadow_view {
+    tl__mat4 world_clip;       /* world to the view's clip space (rendering, culling) */
+    uint32_t x, y, size;       /* its tile in texels */
+    uint64_t signature;        /* matrix, tile and the casters in it: equal to the kept one, not rendered */
+    int render;                /* rendered this frame */
+} tl__shadow_view;
+
+typedef struct tl__shadows {
+    /* CPU, per scene light (grown with the lights) */
+    float *slots;              /* slot of each scene light (lights.shadow_slots), 0: none */
+    float *fade;               /* shadow strength 0..1 */
+    float *score;              /* this frame's priority (screen coverage times intensity) */
+    uint32_t *order;           /* casting lights by score */
+    size_t light_capacity;
+    /* this frame */
+    tl__shadow_block block;
+    tl__shadow_view_gpu views_gpu[TL__SHADOW_MAX_VIEWS];
+    tl__shadow_view views[TL__SHADOW_MAX_VIEWS];
+    size_t view_count, light_count;
+    uint64_t kept[TL__SHADOW_MAX_VIEWS]; /* the signature each tile holds (0: nothing) */
+    size_t kept_count;
+    /* GL */
+    GLuint atlas, fbo, ssbo, ubo;
+    GLuint program;            /* the shadow pass's (the device's program cache owns it) */
+    uint32_t atlas_size;
+    int reversed;
+    size_t ubo_stride;
+    GLuint queries[TL__QUERY_RING];
+    uint8_t query_pending[TL__QUERY_RING];
+    double last_ms;
+} tl__shadows;
+
+/* desc.c: the defaults of tl_shadow_desc, and whether it is in range. */
+void tl__shadow_desc_resolve(tl_shadow_desc *s);
+int tl__shadow_desc_valid(const tl_shadow_desc *s);
+
+/* shadow_views.c: selects the casting lights (budget, fading), places their views in the atlas and
+ * computes every matrix; decides which views must be rendered again (signatures); fills the slots,
+ * the lookup block and the frame's statistics. */
+tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights *l, const tl__scene_gpu *g,
+                              const tl__view *v, const tl_renderer_options *o, tl_frame_stats *st);
+/* The casters of a view: calls `draw` for each opaque triangle object inside its frustum. */
+uint64_t tl__shadow_casters(const tl__scene_gpu *g, const tl__mat4 *world_clip,
+                            void (*draw)(void *user, uint32_t object), void *user);
+
+/* shadows.c: the atlas (made again when its size or depth convention changes), the changed views
+ * rendered into it, the lookup block uploaded and bound with the atlas for the lighting passes. */
+void tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g, uint64_t frame, tl_frame_stats *st);
+void tl__shadows_release(tl__device *dev, tl__shadows *s);
+
+#endif

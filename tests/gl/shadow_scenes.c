@@ -1,0 +1,167 @@
+/* The shadow tests' scenes and the renderer's shadow term (shadow_scenes.h). */
+#include "shadow_scenes.h"
+
+#include <math.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "render_fixture.h"
+
+typedef struct tl__builder {
+    tl_vertex *v;
+    uint32_t *ix;
+    size_t nv, ni;
+} tl__builder;
+
+/* A quad (two triangles) from corner o along edges a and b, normal a x b. */
+static void tl__quad(tl__builder *b, const float o[3], const float a[3], const float e[3])
+{
+    float n[3] = {a[1] * e[2] - a[2] * e[1], a[2] * e[0] - a[0] * e[2], a[0] * e[1] - a[1] * e[0]};
+    float l = sqrtf(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (int k = 0; k < 3; k++) n[k] /= l;
+    uint32_t base = (uint32_t)b->nv;
+    for (int c = 0; c < 4; c++) {
+        tl_vertex *v = &b->v[b->nv++];
+        memset(v, 0, sizeof *v);
+        for (int k = 0; k < 3; k++) {
+            v->position[k] = o[k] + ((c & 1) ? a[k] : 0.0f) + ((c & 2) ? e[k] : 0.0f);
+            v->normal[k] = n[k];
+        }
+    }
+    const uint32_t t[6] = {0, 1, 3, 0, 3, 2};
+    for (int k = 0; k < 6; k++) b->ix[b->ni++] = base + t[k];
+}
+
+/* An axis-aligned box from lo to hi, faces outwards. */
+static void tl__box(tl__builder *b, const float lo[3], const float hi[3])
+{
+    float dx = hi[0] - lo[0], dy = hi[1] - lo[1], dz = hi[2] - lo[2];
+    tl__quad(b, (float[3]){lo[0], lo[1], hi[2]}, (float[3]){dx, 0, 0}, (float[3]){0, dy, 0});  /* +z */
+    tl__quad(b, (float[3]){hi[0], lo[1], lo[2]}, (float[3]){-dx, 0, 0}, (float[3]){0, dy, 0}); /* -z */
+    tl__quad(b, (float[3]){hi[0], lo[1], hi[2]}, (float[3]){0, 0, -dz}, (float[3]){0, dy, 0}); /* +x */
+    tl__quad(b, (float[3]){lo[0], lo[1], lo[2]}, (float[3]){0, 0, dz}, (float[3]){0, dy, 0});  /* -x */
+    tl__quad(b, (float[3]){lo[0], hi[1], hi[2]}, (float[3]){dx, 0, 0}, (float[3]){0, 0, -dz}); /* +y */
+    tl__quad(b, (float[3]){lo[0], lo[1], lo[2]}, (float[3]){dx, 0, 0}, (float[3]){0, 0, dz});  /* -y */
+}
+
+int tl_shadow_stiff_case(tl_shadow_case *c)
+{
+    memset(c, 0, sizeof *c);
+    tl_scene *s = calloc(1, sizeof *s);
+    tl__builder b = {calloc(64, sizeof(tl_vertex)), calloc(96, sizeof(uint32_t)), 0, 0};
+    tl_object *objects = calloc(3, sizeof *objects);
+    if (!s || !b.v || !b.ix || !objects) return 0;
+    /* the plane: 40 m wide, 4 km long, to the horizon from 1.6 m above it */
+    tl__quad(&b, (float[3]){-20, 0, 10}, (float[3]){40, 0, 0}, (float[3]){0, 0, -4000});
+    objects[0] = (tl_object){.first_index = 0, .index_count = 6};
+    tl__box(&b, (float[3]){-0.02f, 0, -6.02f}, (float[3]){0.02f, 3.0f, -5.98f}); /* the thin pole: 4 cm */
+    objects[1] = (tl_object){.first_index = 6, .index_count = 36};
+    tl__box(&b, (float[3]){1.0f, 0, -9.0f}, (float[3]){2.0f, 1.0f, -8.0f}); /* a box resting on the plane */
+    objects[2] = (tl_object){.first_index = 42, .index_count = 36};
+    s->vertices = b.v, s->vertex_count = b.nv, s->indices = b.ix, s->index_count = b.ni;
+    s->objects = objects, s->object_count = 3;
+    s->camera = (tl_camera){.position = {3.0f, 1.6f, 6.0f}, .target = {0.0f, 0.0f, -8.0f}, .fov_y = 1.0f,
+                            .near_z = 0.01f, .far_z = 1e4f};
+    c->scene = s;
+    c->built = 1;
+    /* a low sun (10 degrees above the plane) across the view, and a point light 1 cm above it */
+    c->lights[0] = (tl_light){.type = TL_LIGHT_DIRECTIONAL, .direction = {0.5f, -0.1763f, 0.85f}, .color = {3, 3, 3},
+                              .shadow = 1};
+    c->lights[1] = (tl_light){.type = TL_LIGHT_POINT, .position = {0.4f, 0.01f, -7.0f}, .color = {20, 20, 20},
+                              .radius = 30.0f, .shadow = 1};
+    c->light_names[0] = "directional 10 deg";
+    c->light_names[1] = "point 1 cm above the plane";
+    c->light_count = 2;
+    return tl_scene_compute_bounds(s) == TL_OK;
+}
+
+int tl_shadow_crypt_case(tl_shadow_case *c, uint32_t detail)
+{
+    memset(c, 0, sizeof *c);
+    if (tl_scene_create_default(&(tl_default_scene_desc){.shadows = 1, .detail = detail}, &c->scene) != TL_OK) return 0;
+    tl_scene *s = c->scene;
+    for (size_t i = 0; i < s->material_count; i++) memset(s->materials[i].emissive, 0, sizeof s->materials[i].emissive);
+    /* the moonlight, the two braziers nearest the camera and its nearest lantern (a spot light,
+     * made to cast here) */
+    size_t best[3] = {SIZE_MAX, SIZE_MAX, SIZE_MAX};
+    float best_d[3] = {INFINITY, INFINITY, INFINITY};
+    for (size_t i = 0; i < s->light_count; i++) {
+        const tl_light *l = &s->lights[i];
+        if (l->type == TL_LIGHT_DIRECTIONAL && l->shadow) {
+            c->light_names[c->light_count] = "moonlight";
+            c->lights[c->light_count++] = *l;
+            continue;
+        }
+        if (l->type == TL_LIGHT_POINT && !l->shadow) continue;
+        float d = 0.0f;
+        for (int k = 0; k < 3; k++) d += (l->position[k] - s->camera.position[k]) * (l->position[k] - s->camera.position[k]);
+        int slot = l->type == TL_LIGHT_SPOT ? 2 : d < best_d[0] ? 0 : 1;
+        if (slot == 0) best[1] = best[0], best_d[1] = best_d[0];
+        if (d < best_d[slot]) best[slot] = i, best_d[slot] = d;
+    }
+    static const char *const names[3] = {"nearest brazier", "second brazier", "nearest lantern (spot)"};
+    for (int k = 0; k < 3; k++) {
+        if (best[k] == SIZE_MAX) continue;
+        c->light_names[c->light_count] = names[k];
+        c->lights[c->light_count++] = s->lights[best[k]];
+    }
+    return c->light_count > 0;
+}
+
+void tl_shadow_case_free(tl_shadow_case *c)
+{
+    if (!c->scene) return;
+    if (c->built) {
+        free(c->scene->vertices);
+        free(c->scene->indices);
+        free(c->scene->objects);
+        free(c->scene);
+    } else {
+        tl_scene_destroy(c->scene);
+    }
+    c->scene = NULL;
+}
+
+static float *tl__hdr_luma(tl_renderer *r, size_t n)
+{
+    float *p = tl_test_read_target(r, TL_TARGET_HDR, n);
+    if (!p) return NULL;
+    for (size_t i = 0; i < n; i++) p[i] = p[4 * i] + p[4 * i + 1] + p[4 * i + 2];
+    return p;
+}
+
+float *tl_shadow_term(const tl_shadow_case *c, const tl_light *light, tl_renderer_options o, uint32_t w, uint32_t h,
+                      tl_frame_stats *stats)
+{
+    tl_scene s = *c->scene;
+    tl_light l = *light;
+    l.shadow = 1;
+    s.lights = &l;
+    s.light_count = 1;
+    o.ambient[0] = o.ambient[1] = o.ambient[2] = -1.0f;
+    o.synchronous_stats = 1;
+    tl_renderer *r = tl_test_render_once(&s, (tl_renderer_desc){.width = w, .height = h, .options = o});
+    if (!r) return NULL;
+    size_t n = (size_t)w * h;
+    if (stats) tl_renderer_render(r, NULL, stats);
+    float *on = tl__hdr_luma(r, n), *off = NULL;
+    l.shadow = 0;
+    if (on && tl_renderer_set_lights(r, &l, 1) == TL_OK && tl_renderer_render(r, NULL, NULL) == TL_OK &&
+        tl_renderer_wait(r, NULL) == TL_OK)
+        off = tl__hdr_luma(r, n);
+    tl_renderer_destroy(r);
+    if (!on || !off) {
+        free(on);
+        free(off);
+        return NULL;
+    }
+    float peak = 0.0f;
+    for (size_t i = 0; i < n; i++) peak = fmaxf(peak, off[i]);
+    /* a light that adds less than 2^-12 (the FP16 targets hold 11 bits) is not measured */
+    float floor = fmaxf(1e-6f * peak, 2.44e-4f);
+    for (size_t i = 0; i < n; i++) on[i] = off[i] > floor ? fminf(on[i] / off[i], 1.0f) : -1.0f;
+    free(off);
+    return on;
+}

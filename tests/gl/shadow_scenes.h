@@ -1,0 +1,28 @@
+/* The shadow tests' scenes (shadow_scenes.c): the stiff scene (a long plane seen at grazing angles
+ * with near/far 1:10^6, a thin pole, a box resting on the plane, a low directional light and a
+ * point light at the surface) and the crypt with its braziers and moonlight casting. */
+#ifndef TL_SHADOW_SCENES_H
+#define TL_SHADOW_SCENES_H
+
+#include "thinlight/renderer.h"
+#include "shadow_rt.h"
+
+typedef struct tl_shadow_case {
+    tl_scene *scene;    /* owned: freed by tl_shadow_case_free */
+    int built;          /* 1: arrays malloc'd here, 0: tl_scene_create_default */
+    tl_light lights[4]; /* the casting lights measured, one at a time */
+    size_t light_count;
+    const char *light_names[4];
+} tl_shadow_case;
+
+int tl_shadow_stiff_case(tl_shadow_case *c);
+int tl_shadow_crypt_case(tl_shadow_case *c, uint32_t detail);
+void tl_shadow_case_free(tl_shadow_case *c);
+
+/* The shadow term of `light` (the only light) as the renderer draws it with `o`: the HDR image
+ * with the light casting over the image without, per pixel (-1 where the light adds nothing);
+ * malloc'd, rows bottom-up, or NULL after a line on stderr. */
+float *tl_shadow_term(const tl_shadow_case *c, const tl_light *light, tl_renderer_options o, uint32_t w, uint32_t h,
+                      tl_frame_stats *stats);
+
+#endif

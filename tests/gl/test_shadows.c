@@ -1,0 +1,311 @@
+/* Shadows (docs/shadows.md) against ray-traced truth (Embree, tests/common/reference/shadow_rt.c):
+ * the fraction of pixels whose lit or shadowed state differs from the truth outside the penumbra
+ * (acne and leaks apart), per mode, strategy and depth format, on the stiff scene and the crypt;
+ * and what the planner and the cache promise. Figures go to stdout. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "render_fixture.h"
+#include "shadow_rt.h"
+#include "shadow_scenes.h"
+#include "tl_test.h"
+
+enum { TL__BAND = 2 }; /* pixels beside a change of the truth's state: the penumbra's reach on screen */
+
+typedef struct tl__truth {
+    uint8_t *state;
+    uint32_t *object;
+} tl__truth;
+
+static int tl__truth_make(const tl_shadow_case *c, const tl_light *l, uint32_t w, uint32_t h, tl__truth *t)
+{
+    tl_shadow_rt *rt = tl_shadow_rt_create(c->scene);
+    t->state = malloc((size_t)w * h);
+    t->object = malloc((size_t)w * h * sizeof(uint32_t));
+    if (!rt || !t->state || !t->object) {
+        tl_shadow_rt_destroy(rt);
+        return 0;
+    }
+    tl_shadow_rt_truth(rt, &c->scene->camera, w, h, l, t->state, t->object);
+    tl_shadow_rt_destroy(rt);
+    return 1;
+}
+
+static void tl__truth_free(tl__truth *t)
+{
+    free(t->state);
+    free(t->object);
+}
+
+static const char *tl__depth_name(tl_depth_format f) { return f == TL_DEPTH_FORMAT_D32F_REVERSED ? "D32F-rev" : "D24"; }
+
+/* With TL_SHADOW_DUMP=DIR: the term (grey, blue where the light adds nothing), the truth (white lit,
+ * grey shadowed, dark blue facing away) and their disagreement (red acne, green leaks) as PPM. */
+static void tl__dump(const char *name, const float *term, const tl__truth *t, uint32_t w, uint32_t h)
+{
+    const char *dir = getenv("TL_SHADOW_DUMP");
+    if (!dir) return;
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s.ppm", dir, name);
+    FILE *f = fopen(path, "wb");
+    if (!f) return;
+    fprintf(f, "P6\n%u %u\n255\n", w * 2, h);
+    for (uint32_t yy = 0; yy < h; yy++) {
+        uint32_t y = h - 1 - yy;
+        for (uint32_t x = 0; x < 2 * w; x++) {
+            size_t i = (size_t)y * w + (x % w);
+            uint8_t px[3] = {0, 0, 64};
+            if (x < w && term[i] >= 0.0f) px[0] = px[1] = px[2] = (uint8_t)(term[i] * 255.0f);
+            if (x >= w) {
+                uint8_t s = t->state[i];
+                uint8_t v = s == TL_RT_LIT ? 255 : s == TL_RT_SHADOWED ? 96 : 0;
+                px[0] = px[1] = px[2] = v;
+                if (s == TL_RT_AWAY) px[2] = 128;
+                if (term[i] >= 0.0f && s == TL_RT_LIT && term[i] < 0.5f) px[0] = 255, px[1] = px[2] = 0;
+                if (term[i] >= 0.0f && s == TL_RT_SHADOWED && term[i] >= 0.5f) px[1] = 255, px[0] = px[2] = 0;
+            }
+            fwrite(px, 1, 3, f);
+        }
+    }
+    fclose(f);
+}
+
+/* One configuration against the truth: prints the figures, returns the error. */
+static tl_shadow_error tl__measure(const char *scene, const tl_shadow_case *c, size_t light, const tl__truth *t,
+                                   tl_renderer_options o, const char *what, uint32_t w, uint32_t h, float **keep)
+{
+    tl_shadow_error e = {0};
+    float *term = tl_shadow_term(c, &c->lights[light], o, w, h, NULL);
+    TL_CHECK(term != NULL);
+    if (!term) return e;
+    e = tl_shadow_rt_compare(t->state, t->object, term, w, h, TL__BAND);
+    printf("shadow-error scene=%s light=\"%s\" %s depth=%s size=%ux%u counted=%zu acne=%zu (%.4f%%) leaks=%zu "
+           "(%.4f%%) wrong=%.4f%%\n", scene, c->light_names[light], what, tl__depth_name(o.depth_format), w, h,
+           e.counted, e.acne, 100.0 * (double)e.acne / (double)(e.counted ? e.counted : 1), e.leaks,
+           100.0 * (double)e.leaks / (double)(e.counted ? e.counted : 1), 100.0 * e.wrong);
+    TL_CHECK(e.counted > 0);
+    char name[160];
+    snprintf(name, sizeof name, "%s-%zu-%s-%.24s", scene, light, tl__depth_name(o.depth_format), what + 5);
+    for (char *ch = name; *ch; ch++)
+        if (*ch == ' ' || *ch == '=' || *ch == '(' || *ch == ')') *ch = '_';
+    tl__dump(name, term, t, w, h);
+    if (keep) *keep = term;
+    else free(term);
+    return e;
+}
+
+/* Every mode and strategy the lookup lives in (light volumes, tiled fragment and compute, forward
+ * with per-object lists and Forward+). */
+typedef struct tl__config {
+    const char *name;
+    tl_render_mode mode;
+    tl_light_strategy strategy;
+    tl_tiled_shading tiled;
+} tl__config;
+static const tl__config tl__configs[] = {
+    {"mode=thin-lpp strategy=volumes", TL_MODE_THIN_LPP, TL_LIGHT_STRATEGY_VOLUMES, TL_TILED_SHADING_DEFAULT},
+    {"mode=thin-lpp strategy=tiled", TL_MODE_THIN_LPP, TL_LIGHT_STRATEGY_TILED, TL_TILED_SHADING_FRAGMENT},
+    {"mode=thin-lpp strategy=tiled-compute", TL_MODE_THIN_LPP, TL_LIGHT_STRATEGY_TILED, TL_TILED_SHADING_COMPUTE},
+    {"mode=thin-deferred strategy=volumes", TL_MODE_THIN_DEFERRED, TL_LIGHT_STRATEGY_VOLUMES, TL_TILED_SHADING_DEFAULT},
+    {"mode=fat strategy=volumes", TL_MODE_FAT, TL_LIGHT_STRATEGY_VOLUMES, TL_TILED_SHADING_DEFAULT},
+    {"mode=forward strategy=volumes", TL_MODE_FORWARD, TL_LIGHT_STRATEGY_VOLUMES, TL_TILED_SHADING_DEFAULT},
+    {"mode=forward strategy=tiled(Forward+)", TL_MODE_FORWARD, TL_LIGHT_STRATEGY_TILED, TL_TILED_SHADING_DEFAULT},
+};
+
+static tl_renderer_options tl__options(const tl__config *k, tl_depth_format depth)
+{
+    return (tl_renderer_options){.mode = k->mode, .light_strategy = k->strategy, .tiled_shading = k->tiled,
+                                 .depth_format = depth};
+}
+
+/* The stiff scene: every mode and strategy, both depth formats, both lights. No acne anywhere
+ * (the grazing plane included) and at most 0.5 % of the pixels in the wrong state. */
+TL_TEST(shadows_stiff_scene_against_truth)
+{
+    tl_shadow_case c;
+    TL_CHECK(tl_shadow_stiff_case(&c));
+    const uint32_t w = 480, h = 270;
+    for (size_t l = 0; l < c.light_count; l++) {
+        tl__truth t;
+        TL_CHECK(tl__truth_make(&c, &c.lights[l], w, h, &t));
+        for (int d = 0; d < 2; d++)
+            for (size_t k = 0; k < sizeof tl__configs / sizeof tl__configs[0]; k++) {
+                tl_depth_format depth = d ? TL_DEPTH_FORMAT_D32F_REVERSED : TL_DEPTH_FORMAT_D24;
+                tl_shadow_error e = tl__measure("stiff", &c, l, &t, tl__options(&tl__configs[k], depth),
+                                                tl__configs[k].name, w, h, NULL);
+                TL_CHECK_LE(e.acne, 0);
+                TL_CHECK_LE(e.wrong, 0.005);
+            }
+        tl__truth_free(&t);
+    }
+    tl_shadow_case_free(&c);
+}
+
+/* The crypt (its moonlight and two braziers, one at a time): thin-lpp and fat with D24 and reversed
+ * D32F. Targets: at most 0.5 % of the pixels in the wrong state with reversed D32F; thin-lpp and fat
+ * differ from each other by less than either differs from the truth (the rebuilt position is not
+ * what limits the shadows). TL_SHADOW_SIZE=WxH measures at another size (the figures of
+ * docs/shadows.md are at 1280x720). */
+TL_TEST(shadows_crypt_against_truth)
+{
+    tl_shadow_case c;
+    TL_CHECK(tl_shadow_crypt_case(&c, 0));
+    uint32_t w = 320, h = 180;
+    const char *size = getenv("TL_SHADOW_SIZE");
+    if (size && sscanf(size, "%ux%u", &w, &h) != 2) w = 320, h = 180;
+    for (size_t l = 0; l < c.light_count; l++) {
+        tl__truth t;
+        TL_CHECK(tl__truth_make(&c, &c.lights[l], w, h, &t));
+        for (int d = 0; d < 2; d++) {
+            tl_depth_format depth = d ? TL_DEPTH_FORMAT_D32F_REVERSED : TL_DEPTH_FORMAT_D24;
+            float *thin = NULL, *fat = NULL;
+            tl_shadow_error et = tl__measure("crypt", &c, l, &t, tl__options(&tl__configs[0], depth), tl__configs[0].name,
+                                             w, h, &thin);
+            tl_shadow_error ef = tl__measure("crypt", &c, l, &t, tl__options(&tl__configs[4], depth), tl__configs[4].name,
+                                             w, h, &fat);
+            if (thin && fat) {
+                tl_shadow_error tf = tl_shadow_rt_compare_terms(t.state, t.object, thin, fat, w, h, TL__BAND);
+                printf("shadow-thin-vs-fat scene=crypt light=\"%s\" depth=%s differ=%.4f%% thin-vs-truth=%.4f%% "
+                       "fat-vs-truth=%.4f%%\n", c.light_names[l], tl__depth_name(depth), 100.0 * tf.wrong,
+                       100.0 * et.wrong, 100.0 * ef.wrong);
+                TL_CHECK_LE(tf.wrong, et.wrong > ef.wrong ? et.wrong : ef.wrong);
+            }
+            if (d) TL_CHECK_LE(et.wrong, 0.005);
+            free(thin);
+            free(fat);
+        }
+        tl__truth_free(&t);
+    }
+    tl_shadow_case_free(&c);
+}
+
+/* A renderer on the stiff scene with `lights` (every target kept, statistics synchronous). */
+static tl_renderer *tl__stiff_renderer(tl_shadow_case *c, tl_light *lights, size_t n, tl_renderer_options o)
+{
+    tl_scene s = *c->scene;
+    s.lights = lights;
+    s.light_count = n;
+    o.synchronous_stats = 1;
+    return tl_test_render_once(&s, (tl_renderer_desc){.width = 160, .height = 90, .options = o});
+}
+
+/* No casting light: no shadow pass, no TL_SHADOWS in any program, the same plan and the same image
+ * whatever the shadow options say, and no atlas. */
+TL_TEST(shadows_left_out_without_casters)
+{
+    tl_shadow_case c;
+    TL_CHECK(tl_shadow_stiff_case(&c));
+    tl_light lights[2] = {c.lights[0], c.lights[1]};
+    lights[0].shadow = lights[1].shadow = 0;
+    tl_renderer_options other = {.shadows = {.atlas_size = 1024, .max_lights = 2, .pcf_radius = 3}};
+    tl_renderer *a = tl__stiff_renderer(&c, lights, 2, (tl_renderer_options){0});
+    tl_renderer *b = tl__stiff_renderer(&c, lights, 2, other);
+    TL_CHECK(a && b);
+    if (a && b) {
+        tl_frame_plan pa, pb;
+        TL_CHECK(tl_renderer_get_plan(a, &pa) == TL_OK && tl_renderer_get_plan(b, &pb) == TL_OK);
+        TL_CHECK_EQ_U(pa.shadow_lights, 0);
+        for (size_t i = 0; i < pa.program_count; i++) TL_CHECK(strstr(pa.programs[i].defines, "TL_SHADOWS") == NULL);
+        char ta[16384], tb[16384];
+        tl_frame_plan_format(&pa, ta, sizeof ta);
+        tl_frame_plan_format(&pb, tb, sizeof tb);
+        TL_CHECK(strcmp(ta, tb) == 0);
+        tl_frame_stats st;
+        TL_CHECK(tl_renderer_render(a, NULL, &st) == TL_OK);
+        TL_CHECK_EQ_U(st.shadow_atlas_bytes, 0);
+        TL_CHECK_EQ_U(st.shadow_maps_rendered, 0);
+        float *ia = tl_test_read_target(a, TL_TARGET_HDR, 160 * 90), *ib = tl_test_read_target(b, TL_TARGET_HDR, 160 * 90);
+        TL_CHECK(ia && ib && memcmp(ia, ib, 160 * 90 * 4 * sizeof(float)) == 0);
+        free(ia);
+        free(ib);
+    }
+    tl_renderer_destroy(a);
+    tl_renderer_destroy(b);
+    tl_shadow_case_free(&c);
+}
+
+/* With a casting light the plan says so and every lighting program has the switch. */
+TL_TEST(shadows_planned_with_a_caster)
+{
+    tl_shadow_case c;
+    TL_CHECK(tl_shadow_stiff_case(&c));
+    tl_renderer *r = tl__stiff_renderer(&c, c.lights, 2, (tl_renderer_options){0});
+    TL_CHECK(r != NULL);
+    tl_frame_plan p;
+    if (r && tl_renderer_get_plan(r, &p) == TL_OK) {
+        TL_CHECK_EQ_U(p.shadow_lights, 2);
+        int lights = 0;
+        for (size_t i = 0; i < p.program_count; i++)
+            if (strncmp(p.programs[i].name, "lights.", 7) == 0) {
+                lights++;
+                TL_CHECK(strstr(p.programs[i].defines, "TL_SHADOWS") != NULL);
+            }
+        TL_CHECK(lights > 0);
+        tl_light off[2] = {c.lights[0], c.lights[1]};
+        off[0].shadow = off[1].shadow = 0; /* set_lights re-plans without shadows */
+        TL_CHECK(tl_renderer_set_lights(r, off, 2) == TL_OK && tl_renderer_get_plan(r, &p) == TL_OK);
+        TL_CHECK_EQ_U(p.shadow_lights, 0);
+    }
+    tl_renderer_destroy(r);
+    tl_shadow_case_free(&c);
+}
+
+/* Caching: a second frame with nothing changed renders no map and draws the same image as a frame
+ * that renders every map; moving the box renders again only the views it is in. */
+TL_TEST(shadows_cache_keeps_unchanged_maps)
+{
+    tl_shadow_case c;
+    TL_CHECK(tl_shadow_stiff_case(&c));
+    tl_renderer *r = tl__stiff_renderer(&c, c.lights, 2, (tl_renderer_options){0});
+    tl_renderer *u = tl__stiff_renderer(&c, c.lights, 2, (tl_renderer_options){.shadows = {.no_cache = 1}});
+    TL_CHECK(r && u);
+    if (r && u) {
+        tl_frame_stats st, su;
+        TL_CHECK(tl_renderer_render(r, NULL, &st) == TL_OK && tl_renderer_render(u, NULL, &su) == TL_OK);
+        TL_CHECK_EQ_U(st.shadow_maps_rendered, 0);
+        TL_CHECK_EQ_U(st.shadow_maps_cached, 4 + 6);
+        TL_CHECK_EQ_U(su.shadow_maps_rendered, 4 + 6);
+        TL_CHECK_EQ_U(st.shadow_lights, 2);
+        TL_CHECK_EQ_U(st.shadow_atlas_bytes, 4096u * 4096u * 4u);
+        float *a = tl_test_read_target(r, TL_TARGET_HDR, 160 * 90), *b = tl_test_read_target(u, TL_TARGET_HDR, 160 * 90);
+        TL_CHECK(a && b && memcmp(a, b, 160 * 90 * 4 * sizeof(float)) == 0);
+        free(a);
+        free(b);
+        const float moved[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.5f, 0, 0, 1};
+        TL_CHECK(tl_renderer_set_object_transform(r, 2, moved) == TL_OK && tl_renderer_render(r, NULL, &st) == TL_OK);
+        TL_CHECK(st.shadow_maps_rendered > 0);
+        TL_CHECK(st.shadow_maps_rendered + st.shadow_maps_cached == 4 + 6);
+        printf("shadow-cache moved-box rendered=%u cached=%u\n", st.shadow_maps_rendered, st.shadow_maps_cached);
+    }
+    tl_renderer_destroy(r);
+    tl_renderer_destroy(u);
+    tl_shadow_case_free(&c);
+}
+
+/* More casting lights than the budget: the budget's worth get a map; a bad atlas size is refused. */
+TL_TEST(shadows_budget_and_bad_options)
+{
+    tl_shadow_case c;
+    TL_CHECK(tl_shadow_stiff_case(&c));
+    tl_light many[12];
+    for (int i = 0; i < 12; i++)
+        many[i] = (tl_light){.type = TL_LIGHT_POINT, .position = {-3.0f + 0.5f * (float)i, 1.0f, -6.0f},
+                             .color = {1.0f + (float)i, 1, 1}, .radius = 8.0f, .shadow = 1};
+    tl_renderer *r = tl__stiff_renderer(&c, many, 12, (tl_renderer_options){.shadows = {.max_lights = 4}});
+    TL_CHECK(r != NULL);
+    tl_frame_stats st;
+    if (r && tl_renderer_render(r, NULL, &st) == TL_OK) {
+        TL_CHECK_EQ_U(st.shadow_lights, 4);
+        TL_CHECK_EQ_U(st.shadow_maps_rendered + st.shadow_maps_cached, 4 * 6);
+    }
+    tl_renderer_destroy(r);
+    tl_renderer *bad = NULL;
+    if (ensure_context())
+        TL_CHECK(tl_renderer_create(&(tl_renderer_desc){.get_proc_address = tl_context_proc_loader,
+                                                        .get_proc_address_user = g_ctx,
+                                                        .options = {.shadows = {.atlas_size = 1000}}},
+                                    &bad) == TL_ERROR_INVALID_ARGUMENT);
+    tl_renderer_destroy(bad);
+    tl_shadow_case_free(&c);
+}
