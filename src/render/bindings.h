@@ -25,6 +25,10 @@
     X(UNIT_MR_TEXTURE, 34)                                                                        \
     X(UNIT_EMISSIVE_TEXTURE, 35)                                                                  \
     X(UNIT_OCCLUSION_TEXTURE, 36)                                                                 \
+    X(UBO_ENVIRONMENT, 3)        /* the environment's SH and intensity (environment.c) */          \
+    X(UNIT_ENV_SKY, 37)          /* the environment image (the sky pass) */                        \
+    X(UNIT_ENV_SPECULAR, 38)     /* its GGX-prefiltered mip chain (image-based light) */           \
+    X(UNIT_ENV_BRDF, 39)         /* the split-sum BRDF table */                                    \
     X(CULL_CHUNK, 16384)         /* local lights one light-cull invocation tests (tiles.glsl) */
 
 enum {
@@ -32,7 +36,7 @@ enum {
     TL__BINDING_LIST(TL__BINDING_ENUM)
 #undef TL__BINDING_ENUM
     TL__MATERIAL_TEXTURES = 5,
-    TL__TEXTURE_UNITS_USED = 37, /* units the renderer may bind: 0 .. 36 */
+    TL__TEXTURE_UNITS_USED = 40, /* units the renderer may bind: 0 .. 39 */
     TL__BUFFER_BINDINGS_USED = 6, /* uniform and storage binding points it may bind: 0 .. 5 */
     TL__IMAGE_UNITS_USED = 4     /* image units it may bind: 0 .. 3 */
 };
