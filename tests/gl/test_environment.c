@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "ibl_ref.h"
 #include "render_fixture.h"
@@ -265,9 +266,8 @@ TL_TEST(background_colour_through_tone_map_every_mode)
             size_t x = i % W, y = i / W;
             if (!background_inside(pos, x, y)) continue;
             n++;
-            size_t j = (H - 1 - y) * W + x; /* rows of the output are top-down, of the targets bottom-up */
-            for (int c = 0; c < 3; c++)
-                if (fabs(out[j * 4 + c] - 255.0 * srgb(aces(bg[c] * 1.3))) > 1.0) bad++;
+            for (int c = 0; c < 3; c++) /* the output's rows are bottom-up, as the targets' */
+                if (fabs(out[i * 4 + c] - 255.0 * srgb(aces(bg[c] * 1.3))) > 1.0) bad++;
         }
         TL_CHECK(n > (size_t)W * H / 3);
         TL_CHECK_EQ_U(bad, 0);
@@ -279,19 +279,20 @@ TL_TEST(background_colour_through_tone_map_every_mode)
 
 /* ---- the sky ------------------------------------------------------------------------------------ */
 
-/* The world direction of pixel (x, y) (y up) of the sphere rows' camera. */
-static void pixel_ray(size_t x, size_t y, double d[3])
+/* The world direction of pixel (x, y) (y up) of the sphere rows' camera (looking down -Z), or of
+ * the same camera turned to look down -X (seam: the image's wrap at u = 0 is in view). */
+static void pixel_ray(size_t x, size_t y, int seam, double d[3])
 {
     double nx = (x + 0.5) / W * 2.0 - 1.0, ny = (y + 0.5) / H * 2.0 - 1.0;
-    d[0] = nx * FOV_TAN * W / H;
-    d[1] = ny * FOV_TAN;
-    d[2] = -1.0;
-    double l = sqrt(d[0] * d[0] + d[1] * d[1] + 1.0);
-    for (int k = 0; k < 3; k++) d[k] /= l;
+    double vx = nx * FOV_TAN * W / H, vy = ny * FOV_TAN, l = sqrt(vx * vx + vy * vy + 1.0);
+    d[0] = (seam ? -1.0 : vx) / l; /* looking down -X, right is -Z */
+    d[1] = vy / l;
+    d[2] = (seam ? -vx : -1.0) / l;
 }
 
 /* HDR's background pixels hold the environment's bilinear radiance in their view ray times the
- * intensity, in every mode: within 1 % (FP16 storage and llvmpipe's 8-bit filter weights). */
+ * intensity, in every mode, looking at the image's middle and at its wrap (no seam): within 1 %
+ * (FP16 storage and llvmpipe's 8-bit filter weights). */
 TL_TEST(environment_sky_is_the_image_every_mode)
 {
     sphere_row *g = malloc(sizeof *g);
@@ -299,28 +300,69 @@ TL_TEST(environment_sky_is_the_image_every_mode)
     sphere_row_build(g);
     ibl_ref_env e = {env, ENV_W, ENV_H};
     render_rows(g, (tl_renderer_options){.mode = TL_MODE_FAT}, NULL, NULL, &pos, NULL);
-    for (int m = 0; m < 4 && pos; m++) {
+    for (int m = 0; m < 8 && pos; m++) {
+        int seam = m >= 4;
+        g->s.camera.target[0] = seam ? -10.0f : 0.0f;
+        g->s.camera.target[2] = seam ? (float)CAM_Z : 0.0f;
         float *hdr = NULL;
-        tl_renderer_options o = {.mode = all_modes[m]};
+        tl_renderer_options o = {.mode = all_modes[m % 4]};
         o.environment.intensity = 0.75f;
         render_rows(g, o, env, &hdr, NULL, NULL);
         double worst = 0.0;
+        size_t n = 0;
         for (size_t i = 0; hdr && i < (size_t)W * H; i++) {
-            if (pos[i * 4 + 3] != 0.0f) continue;
+            if (!seam && pos[i * 4 + 3] != 0.0f) continue; /* looking down -X no sphere is in view */
             double d[3], c[3];
-            pixel_ray(i % W, i / W, d);
+            pixel_ray(i % W, i / W, seam, d);
             ibl_ref_radiance(&e, d, c);
+            n++;
             for (int k = 0; k < 3; k++) {
                 double err = fabs(hdr[i * 4 + k] - 0.75 * c[k]) / (0.75 * c[k] + 1e-3);
                 if (err > worst) worst = err;
             }
         }
-        printf("sky, %s: largest relative error %.4f %%\n", tl_render_mode_name(all_modes[m]), 100.0 * worst);
-        TL_CHECK(hdr != NULL);
+        printf("sky, %s%s: %zu pixels, largest relative error %.4f %%\n", tl_render_mode_name(all_modes[m % 4]),
+               seam ? " (looking at the wrap)" : "", n, 100.0 * worst);
+        TL_CHECK(hdr != NULL && n > (size_t)W * H / 3);
         TL_CHECK_LE(worst, 0.01);
         free(hdr);
     }
     free(pos);
+    free(env);
+    free(g);
+}
+
+/* No NaN, Inf or negative value reaches HDR with an environment, in every mode (and MSAA, a light
+ * scale of 1/2); with TL_TEST_IMAGE_DIR set, the thin-lpp output is written there to look at. */
+TL_TEST(environment_finite_every_mode)
+{
+    sphere_row *g = malloc(sizeof *g);
+    float *env = environment_image();
+    sphere_row_build(g);
+    env[5] = NAN; /* bad pixels are taken as 0 */
+    env[7] = -1.0f;
+    env[9] = INFINITY;
+    for (int m = 0; m < 6; m++) {
+        float *hdr = NULL;
+        uint8_t *out = NULL;
+        tl_renderer_options o = {.mode = all_modes[m % 4], .msaa = m == 4 ? 4u : 0u, .light_scale = m == 5 ? 0.5f : 0.0f};
+        render_rows(g, o, env, &hdr, NULL, &out);
+        size_t bad = 0;
+        for (size_t i = 0; hdr && i < (size_t)W * H * 4; i++) bad += !(hdr[i] >= 0.0f && hdr[i] <= 65504.0f);
+        TL_CHECK(hdr && out);
+        TL_CHECK_EQ_U(bad, 0);
+#if TL_TEST_WITH_IO
+        const char *dir = getenv("TL_TEST_IMAGE_DIR");
+        if (dir && out && m == 0) {
+            char path[512];
+            snprintf(path, sizeof path, "%s/environment_spheres.png", dir);
+            tl_image_desc d = {.width = W, .height = H, .channels = 4, .type = TL_PIXEL_U8, .bottom_up = 1};
+            TL_CHECK(tl_image_write(path, &d, out) == TL_OK);
+        }
+#endif
+        free(hdr);
+        free(out);
+    }
     free(env);
     free(g);
 }
@@ -454,3 +496,71 @@ TL_TEST(environment_spheres_against_monte_carlo)
     free(env);
     free(g);
 }
+
+/* ---- bad input and files ------------------------------------------------------------------------ */
+
+/* Wrong shapes and NULL pixels are refused with a message naming the problem, and the environment
+ * set before stays (the plan still has it). */
+TL_TEST(environment_bad_input_refused)
+{
+    sphere_row *g = malloc(sizeof *g);
+    float *env = environment_image();
+    sphere_row_build(g);
+    tl_renderer *r = make((tl_renderer_options){0});
+    TL_CHECK(r && tl_renderer_set_scene(r, &g->s) == TL_OK);
+    tl_environment_desc ok = {.rgb = env, .width = ENV_W, .height = ENV_H};
+    TL_CHECK(r && tl_renderer_set_environment(r, &ok) == TL_OK);
+    const tl_environment_desc bad[] = {{.rgb = NULL, .width = ENV_W, .height = ENV_H},
+                                       {.rgb = env, .width = ENV_W, .height = ENV_W},
+                                       {.rgb = env, .width = 2, .height = 1},
+                                       {.rgb = env, .width = 0, .height = 0},
+                                       {.rgb = env, .width = 32768, .height = 16384}};
+    for (size_t i = 0; r && i < sizeof bad / sizeof bad[0]; i++) {
+        TL_CHECK(tl_renderer_set_environment(r, &bad[i]) != TL_OK);
+        TL_CHECK(strstr(tl_renderer_last_error(r), "environment") != NULL);
+        tl_frame_plan p;
+        tl_renderer_get_plan(r, &p);
+        TL_CHECK(plan_has(&p, TL_PASS_SKY, NULL) && plan_has(&p, TL_PASS_COUNT, "TL_IBL"));
+    }
+    TL_CHECK(tl_renderer_set_environment(NULL, &ok) == TL_ERROR_INVALID_ARGUMENT);
+    tl_renderer_options o = {0};
+    o.environment.intensity = -1.0f;
+    TL_CHECK(r && tl_renderer_set_options(r, &o) == TL_ERROR_INVALID_ARGUMENT);
+    o.environment.intensity = 0.0f;
+    o.environment.background[1] = NAN;
+    TL_CHECK(r && tl_renderer_set_options(r, &o) == TL_ERROR_INVALID_ARGUMENT);
+    tl_renderer_destroy(r);
+    free(env);
+    free(g);
+}
+
+#if TL_TEST_WITH_IO
+/* An environment written as OpenEXR (full float) reads back as the same floats; a missing file is
+ * TL_ERROR_IO and a file that is no image TL_ERROR_PARSE, never a crash. */
+TL_TEST(environment_file_read_and_bad_files)
+{
+    float *env = environment_image();
+    char path[64], junk[64];
+    snprintf(path, sizeof path, "environment_%d.exr", (int)getpid());
+    snprintf(junk, sizeof junk, "environment_%d.hdr", (int)getpid());
+    tl_image_desc d = {.width = ENV_W, .height = ENV_H, .channels = 3, .type = TL_PIXEL_F32, .full_float = 1};
+    TL_CHECK(tl_image_write(path, &d, env) == TL_OK);
+    tl_float_image img;
+    TL_CHECK(tl_image_read_rgb_float(path, NULL, &img) == TL_OK);
+    TL_CHECK(img.width == ENV_W && img.height == ENV_H && img.rgb);
+    TL_CHECK(img.rgb && memcmp(img.rgb, env, (size_t)ENV_W * ENV_H * 3 * sizeof(float)) == 0);
+    tl_float_image_free(&img);
+    TL_CHECK(img.rgb == NULL);
+    FILE *f = fopen(junk, "wb");
+    if (f) {
+        fputs("#?RADIANCE\nnot really\n", f);
+        fclose(f);
+    }
+    TL_CHECK(tl_image_read_rgb_float(junk, NULL, &img) == TL_ERROR_PARSE && img.rgb == NULL);
+    TL_CHECK(tl_image_read_rgb_float("no/such/environment.hdr", NULL, &img) == TL_ERROR_IO);
+    TL_CHECK(tl_image_read_rgb_float(NULL, NULL, &img) == TL_ERROR_INVALID_ARGUMENT);
+    remove(path);
+    remove(junk);
+    free(env);
+}
+#endif
