@@ -58,7 +58,18 @@ static GLuint tl__environment_chain(const GladGLContext *gl, const tl__ibl_pyram
     return t;
 }
 
-/* Everything on the CPU, then the GL objects into *e (zeroed); TL_ERROR_OUT_OF_MEMORY before any. */
+/* The split-sum table, the same for every environment: computed once per renderer (it is the
+ * largest part of the first set's time) and kept while an environment is. */
+static GLuint tl__environment_table(const GladGLContext *gl, float *scratch)
+{
+    tl__ibl_brdf_table(scratch);
+    GLuint t = tl__env_texture(gl, 1, GL_RG32F, TL__IBL_BRDF_SIZE, TL__IBL_BRDF_SIZE, 0, "environment.brdf");
+    gl->TextureSubImage2D(t, 0, 0, 0, TL__IBL_BRDF_SIZE, TL__IBL_BRDF_SIZE, GL_RG, GL_FLOAT, scratch);
+    return t;
+}
+
+/* Everything on the CPU, then the GL objects into *e (zeroed; e->brdf the table to keep, or 0);
+ * TL_ERROR_OUT_OF_MEMORY before any. */
 static tl_result tl__environment_make(tl__device *dev, const tl_environment_desc *d, tl__environment *e)
 {
     const GladGLContext *gl = &dev->gl;
@@ -82,9 +93,7 @@ static tl_result tl__environment_make(tl__device *dev, const tl_environment_desc
     e->sky = tl__env_texture(gl, 1, GL_RGBA16F, (GLsizei)d->width, (GLsizei)d->height, 1, "environment.sky");
     gl->TextureSubImage2D(e->sky, 0, 0, 0, (GLsizei)d->width, (GLsizei)d->height, GL_RGB, GL_FLOAT, img);
     e->specular = tl__environment_chain(gl, &p, scratch);
-    tl__ibl_brdf_table(scratch);
-    e->brdf = tl__env_texture(gl, 1, GL_RG32F, TL__IBL_BRDF_SIZE, TL__IBL_BRDF_SIZE, 0, "environment.brdf");
-    gl->TextureSubImage2D(e->brdf, 0, 0, 0, TL__IBL_BRDF_SIZE, TL__IBL_BRDF_SIZE, GL_RG, GL_FLOAT, scratch);
+    if (!e->brdf) e->brdf = tl__environment_table(gl, scratch);
     tl__pixel_store_leave(gl, &saved);
     gl->CreateBuffers(1, &e->ubo);
     gl->NamedBufferStorage(e->ubo, sizeof block, block, GL_DYNAMIC_STORAGE_BIT);
@@ -108,12 +117,15 @@ tl_result tl__environment_set(tl__device *dev, tl__environment *e, const tl_envi
     double t0 = tl__now_ms();
     tl__environment next;
     memset(&next, 0, sizeof next);
+    next.brdf = e->loaded ? e->brdf : 0; /* the table does not depend on the environment */
     if ((res = tl__environment_make(dev, d, &next)) != TL_OK) return res;
     GLenum err = dev->gl.GetError();
     if (err != GL_NO_ERROR) {
+        if (next.brdf == e->brdf) next.brdf = 0; /* still the current environment's */
         tl__environment_release(dev, &next);
         return tl__fail(dev, TL_ERROR_GL, "environment: %s while uploading it", tl__gl_error_string(err));
     }
+    if (next.brdf == e->brdf) e->brdf = 0; /* handed over */
     tl__environment_release(dev, e);
     *e = next;
     e->bake_ms = tl__now_ms() - t0;
@@ -123,8 +135,8 @@ tl_result tl__environment_set(tl__device *dev, tl__environment *e, const tl_envi
 void tl__environment_release(tl__device *dev, tl__environment *e)
 {
     const GLuint t[3] = {e->sky, e->specular, e->brdf};
-    if (e->loaded) {
-        dev->gl.DeleteTextures(3, t);
+    if (e->loaded || e->sky) {
+        dev->gl.DeleteTextures(3, t); /* 0 (a table handed over) is ignored */
         dev->gl.DeleteBuffers(1, &e->ubo);
     }
     memset(e, 0, sizeof *e);

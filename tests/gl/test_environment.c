@@ -2,11 +2,13 @@
  * mode, the sky drawn from the environment, image-based light on two rows of spheres of varying
  * roughness against a double-precision Monte Carlo reference of the same environment
  * (tests/common/reference/ibl_ref.c) and against fat, the plan without them, and bad input. */
+#define _POSIX_C_SOURCE 200809L /* clock_gettime, getpid */
 #include <math.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "ibl_ref.h"
@@ -564,3 +566,40 @@ TL_TEST(environment_file_read_and_bad_files)
     free(env);
 }
 #endif
+
+/* What setting an environment costs on the CPU (SH projection, the prefiltered chain, the BRDF
+ * table, the upload), printed for docs/renderer.md; checks that each size is accepted and that
+ * setting the same size again keeps the plan (no re-plan, no new programs). */
+TL_TEST(environment_set_cost_printed)
+{
+    sphere_row *g = malloc(sizeof *g);
+    sphere_row_build(g);
+    tl_renderer *r = make((tl_renderer_options){0});
+    TL_CHECK(r && tl_renderer_set_scene(r, &g->s) == TL_OK);
+    static const uint32_t widths[] = {256, 1024};
+    for (size_t i = 0; r && i < sizeof widths / sizeof widths[0]; i++) {
+        uint32_t w = widths[i], h = w / 2;
+        float *rgb = malloc((size_t)w * h * 3 * sizeof *rgb);
+        TL_CHECK(rgb != NULL);
+        if (!rgb) continue;
+        ibl_ref_sky_image(w, h, rgb);
+        tl_environment_desc e = {.rgb = rgb, .width = w, .height = h};
+        struct timespec t0, t1;
+        double ms[2];
+        for (int k = 0; k < 2; k++) {
+            tl_frame_plan before, after;
+            tl_renderer_get_plan(r, &before);
+            clock_gettime(CLOCK_MONOTONIC, &t0);
+            TL_CHECK(tl_renderer_set_environment(r, &e) == TL_OK);
+            clock_gettime(CLOCK_MONOTONIC, &t1);
+            tl_renderer_get_plan(r, &after);
+            if (i || k) TL_CHECK(memcmp(&before, &after, sizeof before) == 0);
+            ms[k] = (t1.tv_sec - t0.tv_sec) * 1e3 + (t1.tv_nsec - t0.tv_nsec) * 1e-6;
+        }
+        printf("tl_renderer_set_environment %ux%u: %.1f ms%s, %.1f ms replacing it\n", (unsigned)w, (unsigned)h, ms[0],
+               i ? "" : " (the first: with the BRDF table)", ms[1]);
+        free(rgb);
+    }
+    tl_renderer_destroy(r);
+    free(g);
+}
