@@ -28,7 +28,7 @@ void ibl_ref_sky(const double d[3], double out[3])
     double y = d[1], up = y > 0.0 ? sqrt(y) : 0.0, down = y < 0.0 ? 1.0 - exp(8.0 * y) : 0.0;
     double az = 1.0 + 0.35 * cos(atan2(d[2], d[0]) * 3.0); /* azimuthal bands on the ground */
     double c = d[0] * sun_dir[0] + d[1] * sun_dir[1] + d[2] * sun_dir[2];
-    double s = exp((c - 1.0) / 0.01); /* about 8 degrees wide */
+    double s = exp((c - 1.0) / 0.01); /* exp(-theta^2 / 0.02): 0.1 rad standard deviation */
     for (int k = 0; k < 3; k++) {
         double sky = horizon[k] + (zenith[k] - horizon[k]) * up;
         double g = horizon[k] + (ground[k] * az - horizon[k]) * down;

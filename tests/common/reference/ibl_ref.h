@@ -16,7 +16,7 @@ typedef struct ibl_ref_env {
 
 /* The test sky's radiance in unit direction d: a blue zenith over a bright horizon, a darker
  * ground that varies with azimuth (so the image's wrap at u = 0 carries detail), and a soft sun
- * (a lobe of about 8 degrees, peak radiance 24). Smooth everywhere. */
+ * (a Gaussian lobe of standard deviation 0.1 rad, about 6 degrees; peak radiance 24). Smooth everywhere. */
 void ibl_ref_sky(const double d[3], double out[3]);
 /* The sky at every texel centre of a w x h image. */
 void ibl_ref_sky_image(uint32_t w, uint32_t h, float *rgb);
