@@ -183,44 +183,66 @@ static double tl__level_alpha(uint32_t level)
     return tl_gloss_to_ggx_alpha(1.0f - (float)level / (float)(TL__IBL_LEVELS - 1));
 }
 
+/* 512 whatever the image: the last level (roughness 1) is then 8 x 4 texels; at 4 x 2 (level 0 at
+ * 256) rough gold's mean error against the Monte Carlo reference was 4.4 % instead of 2.8 %. */
 uint32_t tl__ibl_base_width(uint32_t w)
 {
-    uint32_t b = 128;
-    while (b < 512 && b * 2 <= w) b *= 2;
-    return b;
+    (void)w;
+    return 512;
+}
+
+#define TL__LOBE_MAX 512
+
+/* A level's samples around +Z, the same for every texel (n = v = r): each the direction l in the
+ * lobe's frame, its n.l in l[2], and the pyramid level matching its solid angle 1 / (N pdf). */
+typedef struct tl__lobe {
+    uint32_t count;
+    double l[TL__LOBE_MAX][4];
+} tl__lobe;
+
+static void tl__lobe_make(double alpha, uint32_t samples, double texel, tl__lobe *lobe)
+{
+    const double z[3] = {0, 0, 1}, x[3] = {1, 0, 0}, y[3] = {0, 1, 0};
+    lobe->count = 0;
+    for (uint32_t i = 0; i < samples && i < TL__LOBE_MAX; i++) {
+        double h[3], nh = tl__ggx_half(i, samples, alpha, z, x, y, h);
+        double *l = lobe->l[lobe->count];
+        for (int k = 0; k < 3; k++) l[k] = 2.0 * nh * h[k] - z[k];
+        if (l[2] <= 0.0) continue;
+        double pdf = tl__ggx_d(nh, alpha) * 0.25; /* D n.h / (4 v.h), v = n */
+        l[3] = 0.5 * log2(1.0 / (samples * pdf * texel)) + 1.0;
+        lobe->count++;
+    }
 }
 
 /* One texel of a level: the lobe around r, n.l-weighted (Karis 2013). */
-static void tl__prefilter_texel(const tl__ibl_pyramid *p, double alpha, uint32_t samples, const double r[3],
-                                double out[3])
+static void tl__prefilter_texel(const tl__ibl_pyramid *p, const tl__lobe *lobe, const double r[3], double out[3])
 {
-    double t[3], b[3], h[3], sum[3] = {0, 0, 0}, wsum = 0.0;
-    double texel = 4.0 * TL__PI / ((double)p->w[0] * p->h[0]);
+    double t[3], b[3], sum[3] = {0, 0, 0}, wsum = 0.0;
     tl__basis(r, t, b);
-    for (uint32_t i = 0; i < samples; i++) {
-        double nh = tl__ggx_half(i, samples, alpha, r, t, b, h), l[3], c[3];
-        for (int k = 0; k < 3; k++) l[k] = 2.0 * nh * h[k] - r[k];
-        double nl = l[0] * r[0] + l[1] * r[1] + l[2] * r[2];
-        if (nl <= 0.0) continue;
-        double pdf = tl__ggx_d(nh, alpha) * 0.25; /* D n.h / (4 v.h), v = n */
-        double lod = 0.5 * log2(1.0 / (samples * pdf * texel)) + 1.0;
-        tl__ibl_pyramid_sample(p, l, lod, c);
-        for (int k = 0; k < 3; k++) sum[k] += c[k] * nl;
-        wsum += nl;
+    for (uint32_t i = 0; i < lobe->count; i++) {
+        const double *l = lobe->l[i];
+        double d[3], c[3];
+        for (int k = 0; k < 3; k++) d[k] = l[0] * t[k] + l[1] * b[k] + l[2] * r[k];
+        tl__ibl_pyramid_sample(p, d, l[3], c);
+        for (int k = 0; k < 3; k++) sum[k] += c[k] * l[2];
+        wsum += l[2];
     }
     for (int k = 0; k < 3; k++) out[k] = wsum > 0.0 ? sum[k] / wsum : 0.0;
 }
 
 void tl__ibl_prefilter_level(const tl__ibl_pyramid *p, uint32_t level, uint32_t ow, uint32_t oh, float *out)
 {
-    double alpha = tl__level_alpha(level);
-    uint32_t samples = level == 0 ? 0u : 64u << (level - 1 < 3 ? level - 1 : 3);
+    static const uint32_t samples[TL__IBL_LEVELS] = {0, 64, 128, 256, 512, 512, 512};
+    tl__lobe lobe;
+    tl__lobe_make(tl__level_alpha(level), samples[level < TL__IBL_LEVELS ? level : 0],
+                  4.0 * TL__PI / ((double)p->w[0] * p->h[0]), &lobe);
     double lod0 = log2((double)p->w[0] / ow); /* the mirror: the source at the texel's footprint */
     for (uint32_t j = 0; j < oh; j++)
         for (uint32_t i = 0; i < ow; i++) {
             double r[3], c[3];
             tl__ibl_direction((i + 0.5) / ow, (j + 0.5) / oh, r);
-            if (samples) tl__prefilter_texel(p, alpha, samples, r, c);
+            if (lobe.count) tl__prefilter_texel(p, &lobe, r, c);
             else tl__ibl_pyramid_sample(p, r, lod0, c);
             float *o = out + ((size_t)j * ow + i) * 4;
             for (int k = 0; k < 3; k++) o[k] = (float)(c[k] < 65504.0 ? c[k] : 65504.0);

@@ -39,8 +39,8 @@ void tl__ibl_pyramid_build(const float *rgb, uint32_t w, uint32_t h, float *stor
 /* Trilinear radiance of the pyramid in direction d at fractional level lod (u wraps, v clamps). */
 void tl__ibl_pyramid_sample(const tl__ibl_pyramid *p, const double d[3], double lod, double out[3]);
 
-/* The size of the prefiltered chain's level 0 for an environment of width w (a power of two,
- * 128 .. 512, height half of it). */
+/* The width of the prefiltered chain's level 0 for an environment of width w (512; height half
+ * of it). */
 uint32_t tl__ibl_base_width(uint32_t w);
 /* One level of the prefiltered chain (RGBA floats, ow x oh): GGX lobes of the level's roughness
  * around each texel's direction, n = v = r (Karis 2013), importance-sampled with the pyramid's
