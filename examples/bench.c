@@ -104,7 +104,8 @@ int main(int argc, char **argv)
     char *doc_text = NULL, *effects_text = NULL, *aa_text = NULL;
     bench_scene *scene = NULL;
     rc = BENCH_EXIT_BAD_INPUT;
-    if (bench_scene_open(opt, &scene, run) || bench__check_outputs(opt, &doc_text, &effects_text, &aa_text) ||
+    if (tl_tool_environment_read(BENCH_TOOL, &opt->env) || bench_scene_open(opt, &scene, run) ||
+        bench__check_outputs(opt, &doc_text, &effects_text, &aa_text) ||
         bench_aa_check_budget(run, scene))
         goto done;
     bench__fresnel_variant(opt, scene);
@@ -121,6 +122,7 @@ int main(int argc, char **argv)
     if (opt->aa_doc && bench_aa_update_doc(run, aa_text)) goto done;
     rc = plot_failed ? BENCH_EXIT_BAD_INPUT : 0;
 done:
+    tl_tool_environment_free(&opt->env);
     bench_scene_close(scene);
     free(doc_text);
     free(effects_text);

@@ -13,6 +13,7 @@
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
 #include "tool_budget.h"
+#include "tool_environment.h"
 #include "tool_gl.h"
 #include "tool_log.h"
 #include "tool_util.h"
@@ -152,6 +153,8 @@ typedef struct bench_options {
     tl_fresnel_layout fresnel;       /* --fresnel (thin-lpp with GGX) */
     unsigned effects;                /* --effects: bits (1u << bench_effect); 0: none measured */
     tl_renderer_desc effect_desc;    /* the effects' parameters (--ssao-*, --fog-*, --dof-*, --bloom-*, --ssr-*) */
+    tl_tool_environment env;         /* --environment; --background and its intensity in env_desc.options */
+    tl_renderer_desc env_desc;
     const char *effects_doc;         /* --effects-doc: the effects table between its markers */
     unsigned aa;                     /* --aa: bits (1u << bench_aa); 0: not measured */
     const char *aa_doc;              /* --aa-doc: the AA table between its markers */

@@ -188,8 +188,8 @@ static int bench__option(bench_options *o, bench__given *g, const tl_opt_table *
 {
     switch (opt->id) {
     case B_HELP:
-        printf("%s%s%s%s%s%s%s", usage_head, usage_outputs, tl_tool_effects_help, usage_middle, TL_TOOL_CONTEXT_HELP,
-               tl_tool_budget_help, usage_tail);
+        printf("%s%s%s%s%s%s%s%s", usage_head, usage_outputs, tl_tool_effects_help, tl_tool_environment_help, usage_middle,
+               TL_TOOL_CONTEXT_HELP, tl_tool_budget_help, usage_tail);
         return -1;
     case B_LIST: tl_opt_list(stdout, tables, ntables); return -1;
     case B_QUICK: o->quick = 1; break;
@@ -285,7 +285,7 @@ int bench_parse_args(int argc, char **argv, bench_options *o)
     o->light_scales = 3u;
     bench__given given = {0};
     const tl_opt_table tables[] = {TL_OPT_TABLE(bench__opts), tl_tool_effect_options, tl_tool_context_option_table,
-                                   tl_tool_budget_option_table};
+                                   tl_tool_budget_option_table, tl_tool_environment_option_table};
     size_t ntables = sizeof tables / sizeof tables[0];
     tl_opt_parser p;
     tl_opt_begin(&p, BENCH_TOOL, argc, argv, tables, ntables);
@@ -294,6 +294,7 @@ int bench_parse_args(int argc, char **argv, bench_options *o)
     int rc;
     while ((rc = tl_opt_next(&p, &opt, &v)) == 1) {
         if (!opt) return tl_opt_usage(BENCH_TOOL, "unexpected argument '%s'", v.text);
+        if (tl_tool_environment_apply(&o->env, &o->env_desc, opt, &v)) continue;
         if (!bench__effect_option(o, opt, &v) && !tl_tool_context_option(&o->context_args, opt, &v) &&
             !tl_tool_budget_option(&o->budgets, opt, &v) && (rc = bench__option(o, &given, tables, ntables, opt, &v)))
             return rc;

@@ -340,10 +340,16 @@ void bench_renderer_desc(bench_run *run, tl_context *ctx, tl_renderer_desc *d)
 tl_renderer *bench_renderer(bench_run *run, tl_context *ctx, size_t slot, tl_renderer_desc d, const tl_scene *scene)
 {
     tl_renderer **r = &run->renderers[slot];
+    d.options.environment = run->opt.env_desc.options.environment; /* --background, --environment-intensity */
     if (!*r) {
         bench_renderer_desc(run, ctx, &d);
         if (tl_renderer_create(&d, r) != TL_OK) return NULL; /* the logger said why */
-        if (tl_renderer_set_scene(*r, scene) == TL_OK) return *r;
+        if (tl_renderer_set_scene(*r, scene) == TL_OK) {
+            if (!tl_tool_environment_set(BENCH_TOOL, &run->opt.env, *r)) return *r;
+            tl_renderer_destroy(*r); /* the line is said */
+            *r = NULL;
+            return NULL;
+        }
     } else if (tl_renderer_set_options(*r, &d.options) == TL_OK && tl_renderer_resize(*r, d.width, d.height) == TL_OK) {
         return *r;
     }

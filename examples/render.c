@@ -205,6 +205,7 @@ static int render(render_args *a, tl_renderer *r, const tl_scene *scene, tl_tool
         tl_tool_log_error(log, "%s", tl_renderer_last_error(r));
         return 1;
     }
+    if (tl_tool_environment_set(RENDER_TOOL, &a->env, r)) return 1;
     for (uint32_t f = 0; f < a->frames; f++) {
         if (a->frames > 1 && f % 10 == 0) fprintf(stderr, "\rframe %u/%u", f + 1, a->frames);
         if (tl_renderer_render(r, NULL, &st) != TL_OK) {
@@ -246,11 +247,16 @@ int main(int argc, char **argv)
     if (a.context_args.list_devices) return tl_tool_list_devices(RENDER_TOOL);
     if (check_inputs(&a)) return 1;
     tl_scene *scene = NULL;
-    if (load_scene(&a, &log, &scene)) return 1;
+    if (tl_tool_environment_read(RENDER_TOOL, &a.env)) return 1; /* a bad file: one line, before any context */
+    if (load_scene(&a, &log, &scene)) {
+        tl_tool_environment_free(&a.env);
+        return 1;
+    }
     tl_context *ctx = NULL;
     if (describe_renderer(&a, scene, &log) ||
         tl_tool_context_open(RENDER_TOOL, &a.ctx, a.rd.width, a.rd.height, &ctx)) {
         tl_scene_destroy(scene);
+        tl_tool_environment_free(&a.env);
         return 1;
     }
     a.rd.get_proc_address = tl_context_proc_loader;
@@ -261,5 +267,6 @@ int main(int argc, char **argv)
     tl_renderer_destroy(r);
     tl_context_destroy(ctx);
     tl_scene_destroy(scene);
+    tl_tool_environment_free(&a.env);
     return rc;
 }

@@ -5,6 +5,7 @@
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
 #include "tool_budget.h"
+#include "tool_environment.h"
 #include "tool_gl.h"
 
 #define RENDER_TOOL "thinlight-render"
@@ -18,6 +19,7 @@ typedef struct render_args {
     tl_tool_context_args context_args;
     tl_tool_context_options ctx;
     tl_tool_budgets budgets;
+    tl_tool_environment env; /* --background, --environment (tool_environment.h) */
 } render_args;
 
 /* argv into `a`: 0; -1 after --help or --list-options (printed); or 2 after one line on stderr. */

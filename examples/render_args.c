@@ -66,8 +66,8 @@ static int render_option(render_args *a, const tl_opt_table *tables, size_t ntab
 {
     switch (o->id) {
     case R_HELP:
-        printf("%s%s%s%s%s%s", usage_head, tl_tool_settings_help, tl_tool_effects_help, TL_TOOL_CONTEXT_HELP,
-               tl_tool_budget_help, usage_tail);
+        printf("%s%s%s%s%s%s%s", usage_head, tl_tool_settings_help, tl_tool_environment_help, tl_tool_effects_help,
+               TL_TOOL_CONTEXT_HELP, tl_tool_budget_help, usage_tail);
         return -1;
     case R_LIST: tl_opt_list(stdout, tables, ntables); return -1;
     case R_OUT: a->out = v->text; break;
@@ -99,6 +99,7 @@ static int render_apply(render_args *a, const tl_opt_table *tables, size_t ntabl
 {
     int rc = tl_tool_settings_apply(RENDER_TOOL, &a->rd, o, v);
     if (rc) return rc == 1 ? 0 : rc;
+    if (tl_tool_environment_apply(&a->env, &a->rd, o, v)) return 0;
     if (tl_tool_effect_apply(&a->rd, o, v) || tl_tool_context_option(&a->context_args, o, v) ||
         tl_tool_budget_option(&a->budgets, o, v))
         return 0;
@@ -110,7 +111,8 @@ int render_parse_args(int argc, char **argv, render_args *a)
     memset(a, 0, sizeof *a);
     a->frames = 1;
     const tl_opt_table tables[] = {TL_OPT_TABLE(render_opts), tl_tool_settings_option_table, tl_tool_effect_options,
-                                   tl_tool_context_option_table, tl_tool_budget_option_table};
+                                   tl_tool_context_option_table, tl_tool_budget_option_table,
+                                   tl_tool_environment_option_table};
     size_t ntables = sizeof tables / sizeof tables[0];
     tl_opt_parser p;
     tl_opt_begin(&p, RENDER_TOOL, argc, argv, tables, ntables);

@@ -7,6 +7,9 @@
 #include "light_eval.glsl"
 #include "material.glsl"
 #include "object.glsl"
+#ifdef TL_IBL
+#include "ibl.glsl" // image-based light from the environment
+#endif
 #ifdef TL_STIPPLE
 #include "stipple_gather.glsl" // the layer's light from its own pixels of the G-buffer
 #endif
@@ -96,6 +99,9 @@ void main()
     vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + s.specular * specular + fresnel + s.emissive;
 #else
     vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + s.specular * specular + fresnel + s.emissive;
+#endif
+#ifdef TL_IBL
+    c += tl_ibl(s.albedo, s.specular, s.gloss, s.occlusion, n, v);
 #endif
 #ifdef TL_TRANSPARENT
     o_color = vec4(min(c, vec3(65504.0)), clamp(s.alpha, 0.0, 1.0));

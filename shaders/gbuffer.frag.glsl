@@ -6,6 +6,9 @@
 #include "frame.glsl"
 #include "lighting.glsl"
 #include "material.glsl"
+#ifdef TL_IBL
+#include "ibl.glsl" // image-based light into HDR (thin-deferred, fat), as ambient
+#endif
 #ifdef TL_STIPPLE
 #include "stipple.glsl" // transparent layers: one pixel of each 2x2 quad each
 #endif
@@ -90,6 +93,10 @@ void main()
     o_material = vec4(s.specular, 0.0);
 #endif
 #ifdef TL_OUT_HDR
-    o_hdr = vec4(min(s.albedo * u_ambient * s.occlusion + s.emissive, vec3(65504.0)), 1.0);
+    vec3 c = s.albedo * u_ambient * s.occlusion + s.emissive;
+#ifdef TL_IBL
+    c += tl_ibl(s.albedo, s.specular, s.gloss, s.occlusion, tl_material_normal(), normalize(-v_view_position));
+#endif
+    o_hdr = vec4(min(c, vec3(65504.0)), 1.0);
 #endif
 }

@@ -3,6 +3,9 @@
 #include "frame.glsl"
 #include "light_eval.glsl"
 #include "material.glsl"
+#ifdef TL_IBL
+#include "ibl.glsl" // image-based light: the environment's, with this pass's F0, gloss and normal
+#endif
 
 layout(binding = TL_UNIT_LIGHT_DIFFUSE) uniform sampler2D u_light_diffuse;
 layout(binding = TL_UNIT_LIGHT_SPECULAR) uniform sampler2D u_light_specular;
@@ -97,6 +100,9 @@ void main()
 #else
     vec3 lit_albedo = s.albedo;
     vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + f0 * specular + fresnel + s.emissive;
+#endif
+#ifdef TL_IBL
+    c += tl_ibl(s.albedo, s.specular, s.gloss, s.occlusion, tl_material_normal(), normalize(-v_view_position));
 #endif
 #if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
     // a pixel left to the light-fixup pass: c holds no light yet (its sums are 0 here)

@@ -76,6 +76,7 @@ void vw_print_usage(FILE *f)
 {
     fputs(vw_usage, f);
     fputs(tl_tool_settings_help, f);
+    fputs(tl_tool_environment_help, f);
     fputs(vw_usage_effects, f);
     fputs(tl_tool_effects_help, f);
     fputs(vw_usage_budgets, f);
@@ -150,6 +151,7 @@ static int vw_apply(vw_args *a, const tl_opt_table *tables, size_t ntables, cons
 {
     int rc = tl_tool_settings_apply(VW_TOOL, &a->desc, o, v);
     if (rc) return rc == 1 ? -1 : rc;
+    if (tl_tool_environment_apply(&a->env, &a->desc, o, v)) return -1;
     if (tl_tool_effect_apply(&a->desc, o, v) || tl_tool_budget_option(&a->budgets, o, v)) return -1;
     return vw_option(a, tables, ntables, o, v);
 }
@@ -160,7 +162,7 @@ int vw_parse_args(int argc, char **argv, vw_args *a)
     a->width = 1280;
     a->height = 720;
     const tl_opt_table tables[] = {TL_OPT_TABLE(vw_opts), tl_tool_settings_option_table, tl_tool_effect_options,
-                                   tl_tool_budget_option_table};
+                                   tl_tool_budget_option_table, tl_tool_environment_option_table};
     size_t ntables = sizeof tables / sizeof tables[0];
     tl_opt_parser p;
     tl_opt_begin(&p, VW_TOOL, argc, argv, tables, ntables);

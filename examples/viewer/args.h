@@ -5,6 +5,7 @@
 #include <stdio.h>
 
 #include "tool_budget.h"
+#include "tool_environment.h"
 #include "viewer.h"
 
 typedef struct vw_args {
@@ -24,6 +25,7 @@ typedef struct vw_args {
     double light_budget_ms;      /* --light-budget-ms (default 33.3) */
     uint32_t move_first, move_count; /* --move-camera FIRST,COUNT: scripted orbit (tests); count 0: none */
     int print_frames;            /* --print-frames: one line per frame on stdout */
+    tl_tool_environment env;     /* --background, --environment (tool_environment.h) */
 } vw_args;
 
 void vw_print_usage(FILE *f);

@@ -336,11 +336,18 @@ int main(int argc, char **argv)
     int status = vw_parse_args(argc, argv, &run.args);
     if (status >= 0) return status;
     vw_settings(&run);
-    if (vw_load_scene(&run.app)) return 1; /* bad input fails before any window or display is needed */
+    /* bad input fails before any window or display is needed */
+    if (tl_tool_environment_read("thinlight-viewer", &run.args.env)) return 1;
+    run.app.env = &run.args.env;
+    if (vw_load_scene(&run.app)) {
+        tl_tool_environment_free(&run.args.env);
+        return 1;
+    }
     if (!glfwInit()) {
         const char *why = NULL;
         glfwGetError(&why);
         fprintf(stderr, "thinlight-viewer: GLFW: %s\n", why ? why : "cannot initialise (no display?)");
+        tl_tool_environment_free(&run.args.env);
         return 1;
     }
     run.window = vw_window(&run.args);
@@ -353,6 +360,7 @@ int main(int argc, char **argv)
     }
     vw_views_free(&run.app);
     tl_scene_destroy(run.app.scene);
+    tl_tool_environment_free(&run.args.env);
     free(run.app.base_lights);
     free(run.app.plan_text);
     glfwTerminate();

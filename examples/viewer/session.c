@@ -89,7 +89,8 @@ static tl_renderer *vw_make(vw_app *app, tl_render_mode mode, uint32_t keep)
     d.logger = vw_logger(app);
     tl_renderer *r = NULL;
     if (tl_renderer_create(&d, &r) != TL_OK) return NULL;
-    if (tl_renderer_set_scene(r, app->scene) != TL_OK) {
+    if (tl_renderer_set_scene(r, app->scene) != TL_OK ||
+        (app->env && tl_tool_environment_set("thinlight-viewer", app->env, r))) {
         tl_renderer_destroy(r);
         return NULL;
     }

@@ -14,6 +14,7 @@ extern "C" {
 #endif
 
 #include "tool_budget.h"
+#include "tool_environment.h"
 #include "tool_log.h"
 
 /** What the window shows (view_table in views.c holds the names and what each reads). */
@@ -89,6 +90,7 @@ typedef struct vw_app {
     float center[3], extent;         /* scene bounds: centre and diagonal */
     /* renderers */
     tl_renderer_desc desc;           /* the settings the panel edits (get_proc_address set once) */
+    const tl_tool_environment *env;  /* --environment's pixels, set on every renderer made */
     tl_tool_budgets budgets;         /* the memory budgets (the target budget is in desc) */
     tl_tool_log log;                 /* the loader's and the renderers' lines, each printed once */
     tl_renderer *r;                  /* the main one */

@@ -87,6 +87,27 @@ TL_API tl_result tl_image_read_rgba8(const char *path, const tl_image_read_desc 
 /** Frees the pixels with the allocator that made them and zeroes *image; NULL is ignored. */
 TL_API void tl_rgba8_image_free(tl_rgba8_image *image);
 
+/** Linear RGB float pixels from tl_image_read_rgb_float, freed by tl_float_image_free. */
+typedef struct tl_float_image {
+    uint32_t width;         /**< pixels */
+    uint32_t height;        /**< pixels */
+    float *rgb;             /**< width * height * 3 floats, rows top to bottom */
+    tl_allocator allocator; /**< what allocated `rgb` */
+} tl_float_image;
+
+/**
+ * Reads a high-dynamic-range image file (Radiance .hdr, OpenEXR .exr, or another format
+ * OpenImageIO reads) as linear RGB floats, e.g. an environment for tl_renderer_set_environment:
+ * the first three channels (grey is widened), values as stored. Only a regular file is opened.
+ * Returns TL_ERROR_INVALID_ARGUMENT (NULL path or out), TL_ERROR_IO (missing, unreadable, not a
+ * regular file), TL_ERROR_PARSE (not an image OIIO reads, truncated or corrupt), TL_ERROR_LIMIT
+ * (desc.max_pixels, 65536 per side) or TL_ERROR_OUT_OF_MEMORY, with one line to desc.logger
+ * naming the file; on failure *out is zeroed.
+ */
+TL_API tl_result tl_image_read_rgb_float(const char *path, const tl_image_read_desc *desc, tl_float_image *out);
+/** Frees the pixels with the allocator that made them and zeroes *image; NULL is ignored. */
+TL_API void tl_float_image_free(tl_float_image *image);
+
 /* ---- glTF 2.0 scenes (docs/gltf.md) ---------------------------------------------------------- */
 
 /** How normals are made for primitives without a NORMAL attribute. */

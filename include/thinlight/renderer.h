@@ -268,6 +268,17 @@ typedef struct tl_shadow_desc {
     int no_pcf;           /**< 1: a single bilinear compare tap (the kernel r = 0) */
     int no_cache;         /**< 1: every map is rendered every frame (default: unchanged maps are kept) */
 } tl_shadow_desc;
+/** What is seen where no geometry is drawn, and how bright the environment is (docs/renderer.md,
+ *  "Background and environment"). Zeroed: black, and an environment (if one is set) as it is. */
+typedef struct tl_environment_options {
+    /** Linear radiance of the background where no geometry is drawn and no environment is set,
+     *  tone-mapped like the scene; zero (the default): black, and no sky pass in the plan.
+     *  Components must be finite and at least 0, at most 65504. */
+    float background[3];
+    /** Scales the environment set by tl_renderer_set_environment, as sky and as light (diffuse and
+     *  specular); 0: the default, 1. Finite, at least 0 (a negative value is refused). */
+    float intensity;
+} tl_environment_options;
 
 /** A GL entry point as a loader returns it. */
 typedef void (*tl_gl_function)(void);
@@ -345,6 +356,7 @@ typedef struct tl_renderer_options {
     tl_ssr_desc ssr;                   /**< screen-space reflections; zeroed: off */
     tl_vignette_desc vignette;         /**< vignette; zeroed: off */
     tl_shadow_desc shadows;            /**< the shadow atlas of lights with tl_light.shadow (docs/shadows.md) */
+    tl_environment_options environment; /**< background colour and environment intensity; zeroed: black, 1 */
 } tl_renderer_options;
 
 /** What tl_renderer_create() needs: the first options and what only creation decides (the
@@ -414,6 +426,7 @@ typedef enum tl_pass {
     TL_PASS_STIPPLE,       /**< stipple: transparent layers into depth and RT0, one pixel of each 2x2 quad each */
     TL_PASS_STIPPLE_RESOLVE, /**< "stipple-blend": transparent layers blended onto HDR with the light of their own pixels */
     TL_PASS_POINTS_LINES,  /**< points and lines, forward-lit after the opaque frame (1 pixel wide) */
+    TL_PASS_SKY,           /**< the background colour or the environment where no geometry is drawn */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
@@ -710,6 +723,25 @@ TL_API tl_result tl_renderer_get_object(tl_renderer *r, uint32_t object, tl_obje
  * TL_ERROR_INVALID_ARGUMENT naming it, a plan over tl_renderer_desc.max_target_bytes
  * TL_ERROR_LIMIT; either way the renderer keeps its options. NULL is TL_ERROR_INVALID_ARGUMENT.
  */
+/** An environment: an equirectangular image of linear RGB radiance (docs/renderer.md, "Background
+ *  and environment"). Row 0 is the top (+Y, up), column 0 is the direction -X, the middle column
+ *  +X, a quarter across -Z (u = atan2(z, x) / 2 pi + 1/2, v = acos(y) / pi, world space). */
+typedef struct tl_environment_desc {
+    const float *rgb;  /**< width * height * 3 floats, rows top to bottom; NaN and negative values
+                            are taken as 0, values above 65504 (and +Inf) as 65504 */
+    uint32_t width;    /**< pixels; exactly twice the height, at most 16384 */
+    uint32_t height;   /**< pixels; at least 2 */
+} tl_environment_desc;
+
+/**
+ * Sets the environment drawn as the sky and lighting every material (image-based light: diffuse
+ * from 9 spherical-harmonic coefficients, specular from a GGX-prefiltered mip chain and a split-sum
+ * BRDF table, both computed here on the CPU), in every mode; NULL removes it. The pixels are
+ * copied. TL_ERROR_INVALID_ARGUMENT names the problem (size, NULL pixels); the previous
+ * environment stays then. Re-plans when an environment appears or goes.
+ */
+TL_API tl_result tl_renderer_set_environment(tl_renderer *r, const tl_environment_desc *desc);
+
 TL_API tl_result tl_renderer_set_options(tl_renderer *r, const tl_renderer_options *options);
 /** The options as last given (to tl_renderer_create or tl_renderer_set_options), zeroed fields
  *  as they were: change a field and give them back. A zeroed struct for NULL. */

@@ -249,6 +249,9 @@ typedef struct tl_scene_feature_set {
     int has_vertex_colors; /**< the scene has colors and some non-empty object (the colour attribute) */
     int has_uv1;           /**< the scene has uv1 and a drawn material samples a map with it */
     size_t shadow_lights;  /**< lights with tl_light.shadow set (the shadow pass and lookups) */
+    /** An environment lights the frame (tl_renderer_set_environment; the renderer sets this, the
+     *  scene never does): image-based light in the shading passes, the sky pass. */
+    int has_environment;
 } tl_scene_feature_set;
 
 /** Fills *out with what `scene` uses; a NULL scene gives all zeros. */

@@ -27,6 +27,10 @@
     X(UNIT_EMISSIVE_TEXTURE, 35)                                                                  \
     X(UNIT_OCCLUSION_TEXTURE, 36)                                                                 \
     X(UNIT_SHADOW_ATLAS, 37)     /* the shadow atlas, a depth-compare sampler (shadows.c) */       \
+    X(UBO_ENVIRONMENT, 3)        /* the environment's SH and intensity (environment.c) */          \
+    X(UNIT_ENV_SKY, 38)          /* the environment image (the sky pass) */                        \
+    X(UNIT_ENV_SPECULAR, 39)     /* its GGX-prefiltered mip chain (image-based light) */           \
+    X(UNIT_ENV_BRDF, 40)         /* the split-sum BRDF table */                                    \
     X(CULL_CHUNK, 16384)         /* local lights one light-cull invocation tests (tiles.glsl) */
 
 enum {
@@ -34,7 +38,7 @@ enum {
     TL__BINDING_LIST(TL__BINDING_ENUM)
 #undef TL__BINDING_ENUM
     TL__MATERIAL_TEXTURES = 5,
-    TL__TEXTURE_UNITS_USED = 38, /* units the renderer may bind: 0 .. 37 */
+    TL__TEXTURE_UNITS_USED = 41, /* units the renderer may bind: 0 .. 40 */
     TL__BUFFER_BINDINGS_USED = 7, /* uniform and storage binding points it may bind: 0 .. 6 */
     TL__IMAGE_UNITS_USED = 4     /* image units it may bind: 0 .. 3 */
 };

@@ -42,7 +42,9 @@ static tl_result tl__replan(tl_renderer *r)
 {
     tl__plan plan;
     tl__graph *g = &r->graph;
-    tl_result res = tl__plan_build(&r->desc, &r->scene.features, g->apps, g->app_count, &plan);
+    tl_scene_feature_set f = r->scene.features;
+    f.has_environment = r->env.loaded; /* the renderer's, not the scene's */
+    tl_result res = tl__plan_build(&r->desc, &f, g->apps, g->app_count, &plan);
     if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: planning the frame failed");
     if ((res = tl__plan_budget(r, &plan)) != TL_OK) return res;
     int same = g->pass_count && memcmp(&plan, &g->plan, sizeof plan) == 0;
@@ -137,6 +139,7 @@ void tl_renderer_destroy(tl_renderer *r)
     tl__scene_release(&r->dev, &r->scene);
     tl__lights_release(&r->dev, &r->lights);
     tl__shadows_release(&r->dev, &r->shadows);
+    tl__environment_release(&r->dev, &r->env);
     tl__graph_release(&r->dev, &r->graph);
     tl__queries_destroy(&r->dev, &r->queries);
     tl__device_release(&r->dev);
@@ -205,6 +208,17 @@ tl_result tl_renderer_set_lights(tl_renderer *r, const tl_light *lights, size_t 
 }
 
 /* ---- scene updates (scene_update.c) --------------------------------------------------------- */
+
+tl_result tl_renderer_set_environment(tl_renderer *r, const tl_environment_desc *desc)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_set_environment");
+    if (res != TL_OK) return res;
+    int had = r->env.loaded;
+    if ((res = tl__environment_set(&r->dev, &r->env, desc)) != TL_OK) return res;
+    /* the sky pass and the shading passes' TL_IBL come and go with it */
+    return had != r->env.loaded ? tl__replan(r) : TL_OK;
+}
 
 /* After an update: the lights' per-object lists as long as the objects' slots, a new plan when the
  * scene's features changed. */

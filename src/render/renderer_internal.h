@@ -6,6 +6,7 @@
 #ifndef TL_RENDER_RENDERER_INTERNAL_H
 #define TL_RENDER_RENDERER_INTERNAL_H
 
+#include "environment.h"
 #include "graph.h"
 #include "lights.h"
 #include "scene_gpu.h"
@@ -20,6 +21,7 @@ struct tl_renderer {
     tl__scene_gpu scene;
     tl__lights lights;
     tl__graph graph;
+    tl__environment env;           /* tl_renderer_set_environment's (environment.c) */
     tl__queries queries;
     float ambient[3];              /* resolved: the options' or the scene's */
     uint64_t frame_index;

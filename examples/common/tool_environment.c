@@ -1,0 +1,112 @@
+/* The background and environment options of the renderer tools (tool_environment.h). */
+#include "tool_environment.h"
+
+#include <float.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "thinlight/io.h"
+
+#if TL_TOOL_WITH_IO
+#define tl__env_image_free tl_float_image_free
+#else
+static void tl__env_image_free(tl_float_image *img)
+{
+    (void)img;
+}
+#endif
+
+const char tl_tool_environment_help[] =
+    "  --background R,G,B    linear background radiance where nothing is drawn (default 0,0,0: black)\n"
+    "  --environment FILE    equirectangular HDR image (.hdr, .exr; twice as wide as high) drawn as the sky\n"
+    "                        and lighting every material (diffuse from SH, specular split sum)\n"
+    "  --environment-intensity K  scales the environment (default 1)\n";
+
+enum { E_BACKGROUND = 1, E_FILE, E_INTENSITY };
+
+static const tl_opt env_opts[] = {
+    {"--background", TL_OPT_REALS, .id = E_BACKGROUND, .min = 0.0, .max = 65504.0, .items = 3},
+    {"--environment", TL_OPT_TEXT, .id = E_FILE},
+    {"--environment-intensity", TL_OPT_REAL, .id = E_INTENSITY, .min = 0.0, .max = 65504.0, .flags = TL_OPT_MIN_OPEN},
+};
+
+const tl_opt_table tl_tool_environment_option_table = TL_OPT_TABLE(env_opts);
+
+int tl_tool_environment_apply(tl_tool_environment *e, tl_renderer_desc *d, const tl_opt *o, const tl_opt_value *v)
+{
+    if (!tl_opt_in(o, tl_tool_environment_option_table)) return 0;
+    switch (o->id) {
+    case E_BACKGROUND:
+        for (int k = 0; k < 3; k++) d->options.environment.background[k] = (float)v->f[k];
+        break;
+    case E_FILE: e->path = v->text; break;
+    case E_INTENSITY: d->options.environment.intensity = (float)v->f[0]; break;
+    default: break;
+    }
+    return 1;
+}
+
+static void tl__env_log(void *user, tl_log_level level, const char *message)
+{
+    (void)level;
+    snprintf((char *)user, 256, "%s", message);
+}
+
+#if TL_TOOL_WITH_IO
+static int tl__env_read(const char *tool, const char *path, tl_float_image *img)
+{
+    char why[256] = "cannot read it";
+    tl_image_read_desc d = {.logger = {tl__env_log, why}};
+    if (tl_image_read_rgb_float(path, &d, img) == TL_OK) return 0;
+    fprintf(stderr, "%s: --environment: %s\n", tool, why); /* the reader's line names the file */
+    return 1;
+}
+#else
+static int tl__env_read(const char *tool, const char *path, tl_float_image *img)
+{
+    (void)img;
+    (void)tl__env_log;
+    fprintf(stderr, "%s: --environment %s: this build has no image reading (THINLIGHT_WITH_IO off)\n", tool, path);
+    return 1;
+}
+#endif
+
+int tl_tool_environment_read(const char *tool, tl_tool_environment *e)
+{
+    if (!e->path) return 0;
+    tl_float_image img;
+    if (tl__env_read(tool, e->path, &img)) return 1;
+    if (img.height < 2 || img.width != 2 * img.height) {
+        fprintf(stderr, "%s: --environment %s: %ux%u is not equirectangular (twice as wide as high)\n", tool, e->path,
+                (unsigned)img.width, (unsigned)img.height);
+        tl__env_image_free(&img);
+        return 1;
+    }
+    size_t n = (size_t)img.width * img.height * 3;
+    e->rgb = malloc(n * sizeof *e->rgb);
+    if (!e->rgb) {
+        fprintf(stderr, "%s: --environment %s: out of memory\n", tool, e->path);
+        tl__env_image_free(&img);
+        return 1;
+    }
+    for (size_t i = 0; i < n; i++) e->rgb[i] = img.rgb[i];
+    e->width = img.width;
+    e->height = img.height;
+    tl__env_image_free(&img);
+    return 0;
+}
+
+int tl_tool_environment_set(const char *tool, const tl_tool_environment *e, tl_renderer *r)
+{
+    if (!e->rgb) return 0;
+    tl_environment_desc d = {.rgb = e->rgb, .width = e->width, .height = e->height};
+    if (tl_renderer_set_environment(r, &d) == TL_OK) return 0;
+    fprintf(stderr, "%s: --environment %s: %s\n", tool, e->path, tl_renderer_last_error(r));
+    return 1;
+}
+
+void tl_tool_environment_free(tl_tool_environment *e)
+{
+    free(e->rgb);
+    e->rgb = NULL;
+}

@@ -1,0 +1,31 @@
+# thinlight-render's --environment and --background (examples/common/tool_environment.c): a
+# missing, corrupt or non-equirectangular file is exit 1 with one line naming it, before any
+# context; a malformed colour is bad usage (2); no output is left behind.
+cmake_minimum_required(VERSION 3.25)
+include(${CMAKE_CURRENT_LIST_DIR}/../common/cli_checks.cmake)
+
+function(check_bad_files)
+  run_tool(default --size 32x18 --environment "${WORK}/missing.hdr" -o "${WORK}/out.png")
+  expect_exit(1 "missing environment")
+  if(NOT err MATCHES "missing.hdr")
+    message(FATAL_ERROR "missing environment: the line does not name the file: ${err}")
+  endif()
+  file(WRITE "${WORK}/junk.hdr" "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\nxx")
+  run_tool(default --size 32x18 --environment "${WORK}/junk.hdr" -o "${WORK}/out.png")
+  expect_exit(1 "truncated environment")
+  file(WRITE "${WORK}/square.hdr" "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 1 +X 1\n@@@@")
+  run_tool(default --size 32x18 --environment "${WORK}/square.hdr" -o "${WORK}/out.png")
+  expect_exit(1 "square environment")
+  if(NOT err MATCHES "equirectangular")
+    message(FATAL_ERROR "square environment: expected the shape named: ${err}")
+  endif()
+  run_tool(default --size 32x18 --environment "${WORK}" -o "${WORK}/out.png")
+  expect_exit(1 "a directory as environment")
+  run_tool(default --size 32x18 --background 1,2 -o "${WORK}/out.png")
+  expect_exit(2 "two components of background")
+  run_tool(default --size 32x18 --environment-intensity 0 -o "${WORK}/out.png")
+  expect_exit(2 "zero intensity")
+  expect_only("bad environment files" junk.hdr square.hdr)
+endfunction()
+
+cli_run_check()
