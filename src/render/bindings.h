@@ -10,13 +10,13 @@
     X(UBO_FRAME, 0)              /* per frame and view: matrices, depth, sizes, post parameters */ \
     X(UBO_MATERIAL, 1)           /* per material: one std140 record, bound as a range */          \
     X(UBO_PASS, 2)               /* the running pass's parameter block (tl__pass_def.params) */     \
+    X(UBO_SHADOWS, 3)            /* shadow atlas views and casting lights (shadows.c, std140) */  \
     X(SSBO_OBJECTS, 0)           /* per object: model and normal matrices, forward light range */ \
     X(SSBO_LIGHTS, 1)            /* the visible lights, view space, directional ones first */     \
     X(SSBO_FORWARD_INDICES, 2)   /* forward: per-object light index lists */                      \
     X(SSBO_TILE_HEADERS, 3)      /* tiled: counters and per-tile (offset, count) */               \
     X(SSBO_TILE_ENTRIES, 4)      /* tiled: the lists' light indices */                            \
     X(SSBO_FIXUP, 5)             /* the light scale's fix-up: counters, list of pixels (fixup.c) */ \
-    X(SSBO_SHADOWS, 6)           /* shadow atlas views and casting lights (shadows.c) */            \
     X(IMAGE_LIGHT_DIFFUSE, 0)    /* image units of the compute shading pass's writes */           \
     X(IMAGE_LIGHT_SPECULAR, 1)                                                                    \
     X(IMAGE_HDR, 2)                                                                               \
@@ -27,6 +27,8 @@
     X(UNIT_EMISSIVE_TEXTURE, 35)                                                                  \
     X(UNIT_OCCLUSION_TEXTURE, 36)                                                                 \
     X(UNIT_SHADOW_ATLAS, 37)     /* the shadow atlas, a depth-compare sampler (shadows.c) */       \
+    X(SHADOW_LIGHTS, 64)         /* light records of the shadow lookup block (shadow.glsl) */      \
+    X(SHADOW_VIEWS, 384)         /* its views: 6 per light (a point light's faces) */            \
     X(CULL_CHUNK, 16384)         /* local lights one light-cull invocation tests (tiles.glsl) */
 
 enum {
