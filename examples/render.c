@@ -1,6 +1,7 @@
 /* thinlight-render: renders the built-in scene or a glTF file headless and writes the
  * final image (PNG) or the HDR image (EXR); optionally every intermediate target. */
 #include <errno.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -195,6 +196,32 @@ static int write_output(tl_renderer *r, const render_args *a, tl_tool_log *log)
     return rc;
 }
 
+/* --shadow-move: the first casting local light (or, for an object, the object whose origin is
+ * nearest it) moves 1 cm along x each frame after the first, so the shadow cache keeps every map
+ * but that light's (or those whose frusta hold the object). */
+static tl_result move_for_shadows(tl_renderer *r, const tl_scene *scene, tl_light *lights, int what, uint32_t f)
+{
+    size_t li = 0;
+    while (li < scene->light_count && (!lights[li].shadow || lights[li].type == TL_LIGHT_DIRECTIONAL)) li++;
+    if (li == scene->light_count || f == 0) return TL_OK;
+    if (what == 1) {
+        lights[li].position[0] += 0.01f;
+        return tl_renderer_set_lights(r, lights, scene->light_count);
+    }
+    size_t best = 0;
+    float best_d = INFINITY;
+    for (size_t i = 0; i < scene->object_count; i++) {
+        const float *m = scene->objects[i].transform, *p = lights[li].position;
+        float d = (m[12] - p[0]) * (m[12] - p[0]) + (m[13] - p[1]) * (m[13] - p[1]) + (m[14] - p[2]) * (m[14] - p[2]);
+        if (d < best_d) best_d = d, best = i;
+    }
+    float m[16];
+    memcpy(m, scene->objects[best].transform, sizeof m);
+    if (m[15] == 0.0f) m[0] = m[5] = m[10] = m[15] = 1.0f; /* all zero: the identity */
+    m[12] += 0.01f * (float)f;
+    return tl_renderer_set_object_transform(r, (uint32_t)best, m);
+}
+
 /* Renders the frames and writes what was asked for; 0 or 1. A failed call's message goes through
  * the log, which printed it already when the renderer's logger did. */
 static int render(render_args *a, tl_renderer *r, const tl_scene *scene, tl_tool_log *log)
@@ -206,14 +233,19 @@ static int render(render_args *a, tl_renderer *r, const tl_scene *scene, tl_tool
         return 1;
     }
     if (tl_tool_environment_set(RENDER_TOOL, &a->env, r)) return 1;
+    tl_light *lights = a->shadow_move ? malloc(scene->light_count * sizeof *lights + 1) : NULL;
+    if (lights) memcpy(lights, scene->lights, scene->light_count * sizeof *lights);
     for (uint32_t f = 0; f < a->frames; f++) {
         if (a->frames > 1 && f % 10 == 0) fprintf(stderr, "\rframe %u/%u", f + 1, a->frames);
-        if (tl_renderer_render(r, NULL, &st) != TL_OK) {
+        if ((lights && move_for_shadows(r, scene, lights, a->shadow_move, f) != TL_OK) ||
+            tl_renderer_render(r, NULL, &st) != TL_OK) {
+            free(lights);
             if (a->frames > 1) fputc('\n', stderr);
             tl_tool_log_error(log, "%s", tl_renderer_last_error(r));
             return 1;
         }
     }
+    free(lights);
     if (a->frames > 1) fprintf(stderr, "\n");
     if (a->plan) print_plan(r, &st, scene);
     if (a->stats) print_stats(r, &st, scene, a->rd.width, a->rd.height);

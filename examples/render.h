@@ -16,6 +16,7 @@ typedef struct render_args {
     tl_default_scene_desc sd;
     uint32_t frames;
     int stats, plan, zero_points, zero_spots, hdr_out;
+    int shadow_move; /* 1: a casting local light moves every frame, 2: an object near it does */
     tl_tool_context_args context_args;
     tl_tool_context_options ctx;
     tl_tool_budgets budgets;

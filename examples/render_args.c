@@ -22,6 +22,9 @@ static const char usage_head[] =
     "  --shadow-no-cache     render every shadow map every frame (default: unchanged maps are kept)\n"
     "  --shadow-max N        casting lights given a map per frame (default 8; 1..64)\n"
     "  --shadow-pcf R        PCF kernel radius in texels (default 1; 0: one bilinear tap; 0..3)\n"
+    "  --shadow-move         every frame after the first, the first casting local light moves 1 cm\n"
+    "                        (measures the shadow cache with one light moving)\n"
+    "  --shadow-move-object  every frame after the first, the object nearest that light moves 1 cm\n"
     "  --frames N            render N frames and report the last (default 1; 1..100000)\n"
     "  --stats               print per-pass GPU times and target bytes\n"
     "  --print-plan          print the frame plan: passes, inputs, outputs, targets, programs\n"
@@ -37,7 +40,7 @@ static const char usage_tail[] =
     "Exit status: 0 success, 1 bad input (an unreadable scene, an unwritable output, a frame over\n"
     "the target-memory budget), 2 bad usage (an unknown option, a malformed or out-of-range value).\n";
 
-enum { R_HELP, R_LIST, R_OUT, R_DUMP, R_SIZE, R_LIGHTS, R_SPOTS, R_NO_DIRECTIONAL, R_SEED, R_FRAMES, R_STATS, R_PLAN, R_GLASS, R_SHADOWS, R_SHADOW_NO_CACHE, R_SHADOW_MAX, R_SHADOW_PCF };
+enum { R_HELP, R_LIST, R_OUT, R_DUMP, R_SIZE, R_LIGHTS, R_SPOTS, R_NO_DIRECTIONAL, R_SEED, R_FRAMES, R_STATS, R_PLAN, R_GLASS, R_SHADOWS, R_SHADOW_NO_CACHE, R_SHADOW_MAX, R_SHADOW_PCF, R_SHADOW_MOVE, R_SHADOW_MOVE_OBJECT };
 
 static const tl_opt render_opts[] = {
     {"--help", TL_OPT_FLAG, .id = R_HELP},
@@ -58,6 +61,8 @@ static const tl_opt render_opts[] = {
     {"--shadow-no-cache", TL_OPT_FLAG, .id = R_SHADOW_NO_CACHE},
     {"--shadow-max", TL_OPT_UINT, .id = R_SHADOW_MAX, .lo = 1, .hi = 64},
     {"--shadow-pcf", TL_OPT_UINT, .id = R_SHADOW_PCF, .lo = 0, .hi = 3},
+    {"--shadow-move", TL_OPT_FLAG, .id = R_SHADOW_MOVE},
+    {"--shadow-move-object", TL_OPT_FLAG, .id = R_SHADOW_MOVE_OBJECT},
 };
 
 /* One option of render_opts; 0, or -1 after --help or --list-options. */
@@ -84,6 +89,8 @@ static int render_option(render_args *a, const tl_opt_table *tables, size_t ntab
     case R_SHADOWS: a->sd.shadows = 1; break;
     case R_SHADOW_NO_CACHE: a->rd.options.shadows.no_cache = 1; break;
     case R_SHADOW_MAX: a->rd.options.shadows.max_lights = (uint32_t)v->u[0]; break;
+    case R_SHADOW_MOVE: a->shadow_move = 1; break;
+    case R_SHADOW_MOVE_OBJECT: a->shadow_move = 2; break;
     case R_SHADOW_PCF:
         a->rd.options.shadows.pcf_radius = (uint32_t)v->u[0];
         a->rd.options.shadows.no_pcf = v->u[0] == 0;

@@ -15,7 +15,7 @@ layout(std140, binding = TL_UBO_FRAME) uniform tl_frame_block {
     float u_clear_depth;  // the depth of background pixels
     vec2 u_inv_size;      // 1 / target size
     uvec4 u_tiles;        // tiled: tile side in pixels, tiles across, tiles down, list entries the buffer holds
-    uvec4 u_light_counts; // visible lights: directional (first in the lights block), local after them
+    uvec4 u_light_counts; // visible lights: directional (first in the lights block), local after them; z: end of the casting local lights (first)
 };
 
 #endif

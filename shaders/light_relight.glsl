@@ -66,7 +66,7 @@ void tl_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 ls, out ve
 #else
     uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
     for (uint i = 0u; i < count; i++)
-        tl_tiled_add(tl_lights[tl_light_indices[first + i]], p, n, v, shape, diffuse, specular, fresnel);
+        tl_tiled_add_shadowed(tl_lights[tl_light_indices[first + i]], p, n, v, shape, diffuse, specular, fresnel);
 #endif
 #ifndef TL_FRESNEL_SUMS
     specular += fresnel; // one sum: Fresnel is applied per pixel

@@ -21,15 +21,19 @@ struct tl_shadow_light {
     vec4 fade;   // x: strength 0..1 (a light losing or gaining its map fades), y: tile side in texels
     vec4 splits; // cascades: the view depth where each ends
 };
-layout(std430, binding = TL_SSBO_SHADOWS) readonly buffer tl_shadow_buffer {
+// A uniform block, not a storage buffer: on llvmpipe the lookup's per-lane storage loads were most
+// of the shadows' cost (docs/shadows.md, Cost); 32 + 64 x 48 + 384 x 96 bytes = 39 KiB.
+layout(std140, binding = TL_UBO_SHADOWS) uniform tl_shadow_block {
     vec4 u_shadow_params;   // 1 / atlas side, PCF radius, G-buffer error: a z + b z^2 (a, b)
     uvec4 u_shadow_flags;   // x: reversed depth (atlas compare GEQUAL)
-    tl_shadow_light tl_shadow_lights[64];
-    tl_shadow_view tl_shadow_views[];
+    tl_shadow_light tl_shadow_lights[TL_SHADOW_LIGHTS];
+    tl_shadow_view tl_shadow_views[TL_SHADOW_VIEWS];
 };
 layout(binding = TL_UNIT_SHADOW_ATLAS) uniform sampler2DShadow u_shadow_atlas;
 
-// The view's PCF result at view-space point q (already biased); 1 outside the tile.
+// The view's PCF result at view-space point q (already biased); 1 outside the tile. One tap site
+// for every radius: (2 r)^2 bilinear compare taps half a texel off the grid cover the (2 r + 1)^2
+// texels a tent-weighted r-texel kernel reads (r = 0: one tap, at the point).
 float tl_shadow_sample(tl_shadow_view sv, vec3 q)
 {
     vec4 c = sv.m * vec4(q, 1.0);
@@ -39,31 +43,18 @@ float tl_shadow_sample(tl_shadow_view sv, vec3 q)
     vec2 uv = sv.rect.xy + (ndc.xy * 0.5 + 0.5) * sv.rect.zw;
     float t = u_shadow_params.x;
     vec2 lo = sv.rect.xy + vec2(0.5 * t), hi = sv.rect.xy + sv.rect.zw - vec2(0.5 * t);
-    // kernel radius r: (2 r)^2 bilinear compare taps half a texel off the grid cover the
-    // (2 r + 1)^2 texels a tent-weighted r-texel kernel reads (r = 0: one bilinear tap)
-    int r = int(u_shadow_params.y);
-    if (r == 0) return texture(u_shadow_atlas, vec3(clamp(uv, lo, hi), ref));
-    float sum = 0.0;
-    for (int y = 0; y < 2 * r; y++)
-        for (int x = 0; x < 2 * r; x++)
-            sum += texture(u_shadow_atlas, vec3(clamp(uv + (vec2(x, y) - float(r) + 0.5) * t, lo, hi), ref));
-    return sum / float(4 * r * r);
+    int taps = max(2 * int(u_shadow_params.y), 1);
+    float centre = 0.5 * float(taps - 1), sum = 0.0;
+    for (int y = 0; y < taps; y++)
+        for (int x = 0; x < taps; x++)
+            sum += texture(u_shadow_atlas, vec3(clamp(uv + (vec2(x, y) - centre) * t, lo, hi), ref));
+    return sum / float(taps * taps);
 }
 
-// How far view v's tile contains p: max(|ndc.x|, |ndc.y|) (above 1: outside), 2 behind the view.
-float tl_shadow_extent(uint v, vec3 p)
+// p biased for view sv whose clip w at p is w: n and l unit, view space (l towards the light).
+vec3 tl_shadow_biased(tl_shadow_view sv, float w, vec3 p, vec3 n, vec3 l)
 {
-    vec4 c = tl_shadow_views[v].m * vec4(p, 1.0);
-    if (c.w <= 0.0) return 2.0;
-    vec2 a = abs(c.xy / c.w);
-    return max(a.x, a.y);
-}
-
-// p biased for view sv: n and l unit, view space (l towards the light).
-vec3 tl_shadow_biased(tl_shadow_view sv, vec3 p, vec3 n, vec3 l)
-{
-    vec4 c = sv.m * vec4(p, 1.0);
-    float w = max(c.w, 0.0);
+    w = max(w, 0.0);
     float texel = sv.texel.x * w;
     float cos_t = clamp(dot(n, l), 0.0, 1.0), sin_t = sqrt(1.0 - cos_t * cos_t);
     float z = -p.z;
@@ -73,36 +64,39 @@ vec3 tl_shadow_biased(tl_shadow_view sv, vec3 p, vec3 n, vec3 l)
 }
 
 // The visibility of light slot `slot` (> 0) at view-space p with normal n, l towards the light and
-// `light` its view-space position (point lights).
+// `light` its view-space position (point lights). The view is chosen first (the cascade of the
+// view depth, the cube face of the direction's major axis in world space, or the spot map); one
+// loop then samples it and, over the last 10 % of a cascade's slice, the next cascade where its
+// tile holds the point: a single sampling site, since llvmpipe runs every branch's code.
 float tl_shadow(float slot, vec3 p, vec3 n, vec3 l, vec3 light)
 {
     tl_shadow_light sl = tl_shadow_lights[uint(slot) - 1u];
-    uint first = sl.info.x, count = sl.info.y;
+    uint v = sl.info.x, count = sl.info.y;
     if (count == 0u || sl.fade.x <= 0.0) return 1.0;
-    float margin = 1.0 - 2.0 * (u_shadow_params.y + 2.0) / sl.fade.y; // kernel and offset stay inside
-    float s = 1.0;
-    if (sl.info.z == 3u) { // cascades: by view depth (each one's sphere holds its slice), blended
-        float z = -p.z;    // into the next over the last 10 % of its slice
-        uint i = z < sl.splits.x ? 0u : z < sl.splits.y ? 1u : z < sl.splits.z ? 2u : 3u;
+    float blend = 0.0;
+    int views = 1;
+    if (sl.info.z == 3u) {
+        float z = -p.z;
         if (z >= sl.splits.w) return 1.0;
+        uint i = z < sl.splits.x ? 0u : z < sl.splits.y ? 1u : z < sl.splits.z ? 2u : 3u;
         float end = sl.splits[i], start = i > 0u ? sl.splits[i - 1u] : 0.0;
-        tl_shadow_view sv = tl_shadow_views[first + i];
-        s = tl_shadow_sample(sv, tl_shadow_biased(sv, p, n, l));
-        float blend = smoothstep(end - 0.1 * (end - start), end, z);
-        if (blend > 0.0 && i + 1u < count && tl_shadow_extent(first + i + 1u, p) <= margin) {
-            tl_shadow_view nv = tl_shadow_views[first + i + 1u];
-            s = mix(s, tl_shadow_sample(nv, tl_shadow_biased(nv, p, n, l)), blend);
-        }
-    } else {
-        uint v = first; // spot: its map; point: the cube face of the direction's major axis (world space)
-        if (sl.info.z == 1u) {
-            vec3 d = transpose(mat3(u_view)) * (p - light), a = abs(d);
-            v += a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0u : 1u) : a.y >= a.z ? (d.y >= 0.0 ? 2u : 3u) : (d.z >= 0.0 ? 4u : 5u);
-        }
-        tl_shadow_view sv = tl_shadow_views[v]; // loaded once: storage loads are what a lookup costs
+        blend = smoothstep(end - 0.1 * (end - start), end, z);
+        v += i;
+        views = blend > 0.0 && i + 1u < count ? 2 : 1;
+    } else if (sl.info.z == 1u) {
+        vec3 d = transpose(mat3(u_view)) * (p - light), a = abs(d);
+        v += a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0u : 1u) : a.y >= a.z ? (d.y >= 0.0 ? 2u : 3u) : (d.z >= 0.0 ? 4u : 5u);
+    }
+    // kernel and offset stay inside the next cascade's tile; a spot or face view must hold p
+    float margin = 1.0 - 2.0 * (u_shadow_params.y + 2.0) / sl.fade.y, s = 1.0;
+    for (int k = 0; k < views; k++) {
+        tl_shadow_view sv = tl_shadow_views[v + uint(k)];
         vec4 c = sv.m * vec4(p, 1.0);
-        if (c.w <= 0.0 || max(abs(c.x), abs(c.y)) > c.w) return 1.0;
-        s = tl_shadow_sample(sv, tl_shadow_biased(sv, p, n, l));
+        float extent = c.w > 0.0 ? max(abs(c.x), abs(c.y)) / c.w : 2.0;
+        if (k == 0 && sl.info.z != 3u && extent > 1.0) return 1.0;
+        if (k == 1 && extent > margin) break;
+        float sk = tl_shadow_sample(sv, tl_shadow_biased(sv, c.w, p, n, l));
+        s = k == 0 ? sk : mix(s, sk, blend);
     }
     return mix(1.0, s, sl.fade.x);
 }

@@ -187,7 +187,7 @@ static tl_result tl__upload(tl_renderer *r, const tl__view *v, tl__frame_record 
     size_t fo = 0, oo = 0;
     tl__frame_ubo *u = (tl__frame_ubo *)tl__stream_reserve(&dev->stream, sizeof *u, dev->lim.ubo_align, &fo);
     tl__object_gpu *o = (tl__object_gpu *)tl__stream_reserve(&dev->stream, nobj * sizeof *o, dev->lim.ssbo_align, &oo);
-    uint32_t counts[2], tiles[4];
+    uint32_t counts[3], tiles[4];
     tl__lights_frame_block(&r->lights, needs, counts, tiles);
     tl__frame_ubo_fill(&r->desc, v, r->ambient, tiles, counts, u);
     int lists = (needs & TL__LIGHTS_OBJECT_LISTS) != 0;

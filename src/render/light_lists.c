@@ -44,13 +44,16 @@ static void tl__view_light(const tl__view *v, const tl_light *l, int type, tl__f
     fl->cos_inner[2] = fl->cos_inner[3] = 0.0f;
 }
 
-/* Appends the visible lights of one kind (directional or local); returns the new count. */
-static size_t tl__add_visible(tl__lights *r, const tl__view *v, int directional, size_t n)
+/* Appends the visible lights of one kind (0: directional, 1: local with a shadow slot, 2: the
+ * other local ones); returns the new count. */
+static size_t tl__add_visible(tl__lights *r, const tl__view *v, int kind, size_t n)
 {
+    int directional = kind == 0;
     for (size_t i = 0; i < r->count; i++) {
         const tl_light *l = &r->lights[i];
         int type = l->type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : (int)l->type;
         if ((type == TL_LIGHT_DIRECTIONAL) != directional) continue;
+        if (!directional && (kind == 1) != (r->shadow_slots && r->shadow_slots[i] > 0.0f)) continue;
         float c[3], rad;
         tl__light_sphere(l, c, &rad);
         if (!directional && (rad <= 0.0f || !tl__sphere_visible((float(*)[4])v->planes, c, rad))) continue;
@@ -65,8 +68,11 @@ static size_t tl__add_visible(tl__lights *r, const tl__view *v, int directional,
 
 void tl__visible_lights(tl__device *dev, tl__lights *r, const tl__view *v, size_t *stream_bytes)
 {
-    r->view_dir_count = tl__add_visible(r, v, 1, 0);
-    r->view_count = tl__add_visible(r, v, 0, r->view_dir_count);
+    /* casting local lights first: a tile list (in light order) starts with them, so the tiled loop
+     * runs the shadow lookup's code only for them (docs/shadows.md, Cost) */
+    r->view_dir_count = tl__add_visible(r, v, 0, 0);
+    r->view_cast_end = tl__add_visible(r, v, 1, r->view_dir_count);
+    r->view_count = tl__add_visible(r, v, 2, r->view_cast_end);
     *stream_bytes += (r->view_count + 1) * sizeof(tl__forward_light) + dev->lim.ssbo_align;
 }
 

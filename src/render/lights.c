@@ -30,7 +30,7 @@ static void tl__lights_free_arrays(tl__device *dev, tl__lights *l)
     l->view = NULL;
     l->view_index = NULL;
     l->view_spheres = NULL;
-    l->count = l->view_count = l->view_dir_count = l->allocated = 0;
+    l->count = l->view_count = l->view_dir_count = l->view_cast_end = l->allocated = 0;
 }
 
 /* Negative light is clamped to none (docs/renderer-limits.md): -inf otherwise in FP16 targets;
@@ -67,7 +67,7 @@ tl_result tl__lights_store(tl__device *dev, tl__lights *l, const tl_light *light
         memcpy(l->lights, lights, count * sizeof *l->lights);
         tl__lights_sanitize(l->lights, count);
         l->count = count;
-        l->view_count = l->view_dir_count = 0;
+        l->view_count = l->view_dir_count = l->view_cast_end = 0;
         memcpy(l->kinds, kinds, sizeof kinds);
         return TL_OK;
     }
@@ -131,7 +131,7 @@ tl_result tl__lights_prepare(tl__device *dev, tl__lights *l, const tl__scene_gpu
                              unsigned needs, int fullscreen, uint64_t frame, tl_frame_stats *st, size_t *stream_bytes)
 {
     tl_result res = TL_OK;
-    l->view_count = l->view_dir_count = 0;
+    l->view_count = l->view_dir_count = l->view_cast_end = 0;
     if (needs & TL__LIGHTS_INSTANCES) {
         l->fullscreen = fullscreen;
         tl__volumes_prepare(l, v, st, stream_bytes);
@@ -152,12 +152,13 @@ void tl__lights_upload(tl__device *dev, tl__lights *l, unsigned needs)
     tl__fixup_bind(dev, &l->fixup); /* the light scale's, when the plan has it */
 }
 
-void tl__lights_frame_block(const tl__lights *l, unsigned needs, uint32_t counts[2], uint32_t tiles[4])
+void tl__lights_frame_block(const tl__lights *l, unsigned needs, uint32_t counts[3], uint32_t tiles[4])
 {
-    counts[0] = counts[1] = 0;
+    counts[0] = counts[1] = counts[2] = 0;
     if (needs & TL__LIGHTS_VISIBLE) { /* built this frame by a pass that reads them */
         counts[0] = (uint32_t)l->view_dir_count;
         counts[1] = (uint32_t)(l->view_count - l->view_dir_count);
+        counts[2] = (uint32_t)l->view_cast_end;
     }
     tiles[0] = l->tiles.size;
     tiles[1] = l->tiles.x;

@@ -74,6 +74,7 @@ struct tl__lights {
     uint32_t *view_index;      /* scene light index of each */
     float (*view_spheres)[4];  /* world-space bounding sphere of each; radius < 0: reaches everything */
     size_t view_count, view_dir_count;
+    size_t view_cast_end;      /* local lights with a shadow slot come first: [view_dir_count, view_cast_end) */
     /* forward per-object lists (forward_lists.c) */
     uint32_t *fwd_indices;
     size_t fwd_capacity, fwd_count;
@@ -102,7 +103,7 @@ tl_result tl__lights_prepare(tl__device *dev, tl__lights *l, const tl__scene_gpu
 /* Into the frame's stream, bound where the shaders read it. */
 void tl__lights_upload(tl__device *dev, tl__lights *l, unsigned needs);
 /* The frame block's light counts (visible directional, visible local) and tile layout. */
-void tl__lights_frame_block(const tl__lights *l, unsigned needs, uint32_t counts[2], uint32_t tiles[4]);
+void tl__lights_frame_block(const tl__lights *l, unsigned needs, uint32_t counts[3], uint32_t tiles[4]);
 
 /* light_volumes.c */
 void tl__light_volumes_create(tl__device *dev, tl__lights *l);

@@ -8,6 +8,9 @@
 
 #include "shadows.h"
 
+_Static_assert(sizeof(tl__shadow_block) + TL__SHADOW_MAX_VIEWS * sizeof(tl__shadow_view_gpu) <= 65536,
+               "the shadow lookup block fits a 64 KiB uniform block");
+
 static void tl__atlas_release(const GladGLContext *gl, tl__shadows *s)
 {
     if (s->fbo) gl->DeleteFramebuffers(1, &s->fbo);
@@ -44,11 +47,11 @@ static int tl__atlas_make(tl__device *dev, tl__shadows *s, uint32_t size, int re
 static void tl__shadow_buffers(tl__device *dev, tl__shadows *s)
 {
     const GladGLContext *gl = &dev->gl;
-    if (s->ssbo) return;
+    if (s->lookup) return;
     size_t bytes = sizeof(tl__shadow_block) + TL__SHADOW_MAX_VIEWS * sizeof(tl__shadow_view_gpu);
-    gl->CreateBuffers(1, &s->ssbo);
-    gl->NamedBufferStorage(s->ssbo, (GLsizeiptr)bytes, NULL, GL_DYNAMIC_STORAGE_BIT);
-    tl__gl_label(gl, GL_BUFFER, s->ssbo, "shadow.lookup");
+    gl->CreateBuffers(1, &s->lookup);
+    gl->NamedBufferStorage(s->lookup, (GLsizeiptr)bytes, NULL, GL_DYNAMIC_STORAGE_BIT);
+    tl__gl_label(gl, GL_BUFFER, s->lookup, "shadow.lookup");
     s->ubo_stride = (64 + dev->lim.ubo_align - 1) / dev->lim.ubo_align * dev->lim.ubo_align;
     gl->CreateBuffers(1, &s->ubo);
     gl->NamedBufferStorage(s->ubo, (GLsizeiptr)(s->ubo_stride * TL__SHADOW_MAX_VIEWS), NULL, GL_DYNAMIC_STORAGE_BIT);
@@ -61,8 +64,8 @@ void tl__shadows_release(tl__device *dev, tl__shadows *s)
 {
     const GladGLContext *gl = &dev->gl;
     tl__atlas_release(gl, s);
-    if (s->ssbo) {
-        gl->DeleteBuffers(1, &s->ssbo);
+    if (s->lookup) {
+        gl->DeleteBuffers(1, &s->lookup);
         gl->DeleteBuffers(1, &s->ubo);
         gl->DeleteQueries(TL__QUERY_RING, s->queries);
     }
@@ -144,9 +147,9 @@ void tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g,
         gl->NamedBufferSubData(s->ubo, (GLintptr)(i * s->ubo_stride), 64, v->world_clip.m);
         rendered++;
     }
-    gl->NamedBufferSubData(s->ssbo, 0, sizeof s->block, &s->block);
+    gl->NamedBufferSubData(s->lookup, 0, sizeof s->block, &s->block);
     if (s->view_count)
-        gl->NamedBufferSubData(s->ssbo, sizeof s->block, (GLsizeiptr)(s->view_count * sizeof(tl__shadow_view_gpu)),
+        gl->NamedBufferSubData(s->lookup, sizeof s->block, (GLsizeiptr)(s->view_count * sizeof(tl__shadow_view_gpu)),
                                s->views_gpu);
     unsigned slot = (unsigned)(frame % TL__QUERY_RING);
     int timed = rendered && !s->query_pending[slot];
@@ -159,7 +162,7 @@ void tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g,
     tl__shadow_time(gl, s, frame, timed);
     for (size_t i = 0; i < s->view_count; i++) s->kept[i] = s->views[i].signature;
     s->kept_count = s->view_count;
-    gl->BindBufferBase(GL_SHADER_STORAGE_BUFFER, TL__SSBO_SHADOWS, s->ssbo);
+    gl->BindBufferBase(GL_UNIFORM_BUFFER, TL__UBO_SHADOWS, s->lookup);
     gl->BindTextureUnit(TL__UNIT_SHADOW_ATLAS, s->atlas);
     st->shadow_maps_rendered = rendered;
     st->shadow_maps_cached = (uint32_t)(s->view_count - rendered);

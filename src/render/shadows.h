@@ -9,13 +9,13 @@
 #include "scene_gpu.h"
 
 enum {
-    TL__SHADOW_MAX_LIGHTS = 64, /* light records of the lookup block (shadow.glsl) */
+    TL__SHADOW_MAX_LIGHTS = TL__SHADOW_LIGHTS, /* light records of the lookup block (shadow.glsl) */
     TL__SHADOW_CASCADES = 4,
-    TL__SHADOW_MAX_VIEWS = TL__SHADOW_MAX_LIGHTS * 6,
+    TL__SHADOW_MAX_VIEWS = TL__SHADOW_VIEWS,
     TL__SHADOW_FADE_FRAMES = 8  /* frames a light takes to gain or lose its shadow */
 };
 
-/* std430 records of shadow.glsl. */
+/* std140 records of shadow.glsl's uniform block (every member a multiple of 16 bytes). */
 typedef struct tl__shadow_view_gpu {
     float m[16];    /* view space to the view's clip space */
     float rect[4];  /* atlas uv offset, scale */
@@ -55,7 +55,7 @@ typedef struct tl__shadows {
     uint64_t kept[TL__SHADOW_MAX_VIEWS]; /* the signature each tile holds (0: nothing) */
     size_t kept_count;
     /* GL */
-    GLuint atlas, fbo, ssbo, ubo;
+    GLuint atlas, fbo, lookup, ubo;
     GLuint program;            /* the shadow pass's (the device's program cache owns it) */
     uint32_t atlas_size;
     int reversed;

@@ -78,7 +78,7 @@ void tl__frame_ubo_post(const tl_renderer_desc *d, tl__frame_ubo *u)
 }
 
 void tl__frame_ubo_fill(const tl_renderer_desc *d, const tl__view *v, const float ambient[3], const uint32_t tiles[4],
-                        const uint32_t light_counts[2], tl__frame_ubo *u)
+                        const uint32_t light_counts[3], tl__frame_ubo *u)
 {
     tl__frame_ubo_post(d, u);
     memcpy(u->view, v->view.m, sizeof u->view);
@@ -98,4 +98,5 @@ void tl__frame_ubo_fill(const tl_renderer_desc *d, const tl__view *v, const floa
     memcpy(u->tiles, tiles, sizeof u->tiles);
     u->light_counts[0] = light_counts[0];
     u->light_counts[1] = light_counts[1];
+    u->light_counts[2] = light_counts[2];
 }

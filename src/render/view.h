@@ -28,7 +28,7 @@ typedef struct tl__frame_ubo {
     float ambient[3], clear_depth;
     float inv_size[2], pad[2];
     uint32_t tiles[4];        /* tile side, tiles across, tiles down, list entries the buffer holds */
-    uint32_t light_counts[4]; /* visible directional lights (first), local lights after them */
+    uint32_t light_counts[4]; /* visible directional lights (first), local lights after them, end of the casting ones */
 } tl__frame_ubo;
 
 /* Resolves a camera (scene/validate.h) with the scene's bounds: an error naming the field after
@@ -42,5 +42,5 @@ tl_result tl__view_setup(tl__device *dev, tl__scene_gpu *scene, const tl_rendere
 void tl__frame_ubo_post(const tl_renderer_desc *d, tl__frame_ubo *u);
 /* The whole block: the view, the ambient term, the tiles' layout, the visible lights' counts. */
 void tl__frame_ubo_fill(const tl_renderer_desc *d, const tl__view *v, const float ambient[3], const uint32_t tiles[4],
-                        const uint32_t light_counts[2], tl__frame_ubo *u);
+                        const uint32_t light_counts[3], tl__frame_ubo *u);
 #endif
