@@ -87,6 +87,15 @@ typedef enum tl_tiled_shading {
     TL_TILED_SHADING_COUNT_       /**< number of values */
 } tl_tiled_shading;
 
+/** How a multisampled frame is lit (`msaa` above 1; docs/antialiasing.md). */
+typedef enum tl_msaa_lighting {
+    TL_MSAA_LIGHTING_DEFAULT = 0,      /**< thin-lpp: the material pass; thin-deferred and fat: per-sample edges */
+    TL_MSAA_LIGHTING_MATERIAL_PASS,    /**< thin-lpp: G-buffer and light buffer at 1x, the material pass multisampled */
+    TL_MSAA_LIGHTING_SAMPLE_EDGES,     /**< multisampled G-buffer; edge pixels (samples differing in depth or
+                                            normal) lit per sample, the rest per pixel (thin-deferred, fat) */
+    TL_MSAA_LIGHTING_COUNT_            /**< number of values */
+} tl_msaa_lighting;
+
 /** Storage of the light buffer's targets (thin-lpp). */
 typedef enum tl_light_format {
     TL_LIGHT_FORMAT_DEFAULT = 0, /**< = TL_LIGHT_FORMAT_RGBA16F */
@@ -331,6 +340,9 @@ typedef struct tl_renderer_options {
     tl_bloom_desc bloom;               /**< bloom; zeroed: off */
     tl_ssr_desc ssr;                   /**< screen-space reflections; zeroed: off */
     tl_vignette_desc vignette;         /**< vignette; zeroed: off */
+    /** With `msaa` above 1: how the multisampled frame is lit (tl_msaa_lighting; zeroed: the
+     *  mode's default, today's behaviour). */
+    tl_msaa_lighting msaa_lighting;
 } tl_renderer_options;
 
 /** What tl_renderer_create() needs: the first options and what only creation decides (the
@@ -400,6 +412,8 @@ typedef enum tl_pass {
     TL_PASS_STIPPLE,       /**< stipple: transparent layers into depth and RT0, one pixel of each 2x2 quad each */
     TL_PASS_STIPPLE_RESOLVE, /**< "stipple-blend": transparent layers blended onto HDR with the light of their own pixels */
     TL_PASS_POINTS_LINES,  /**< points and lines, forward-lit after the opaque frame (1 pixel wide) */
+    TL_PASS_MSAA_CLASSIFY, /**< MSAA per-sample edges: the pixels whose samples differ in depth or normal, into msaa.edges */
+    TL_PASS_LIGHTS_SAMPLES, /**< MSAA per-sample edges: the light pass again, per sample, on edge pixels only */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
@@ -434,6 +448,7 @@ typedef enum tl_target_id {
                                    the list the fix-up pass re-lights: up to an eighth of the frame's pixels */
     TL_TARGET_OPAQUE_DEPTH,   /**< stipple: the opaque surfaces' depth (depth's format); the material pass tests against it */
     TL_TARGET_DEPTH_MSAA,     /**< thin-lpp with MSAA: the multisampled depth the material pass tests against (depth's format) */
+    TL_TARGET_MSAA_EDGES,     /**< MSAA per-sample edges: R8, 1 where the pixel's samples differ in depth or normal */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -586,6 +601,8 @@ typedef struct tl_frame_stats {
     uint64_t relit_pixels;              /**< light_scale below 1: pixels the edge fix-up re-lit at full resolution
                                              (fragments: a pixel two coplanar surfaces both draw counts twice) */
     double relit_fraction;              /**< relit_pixels over the frame's pixels */
+    uint64_t msaa_edge_pixels;          /**< MSAA per-sample edges: pixels lit per sample (msaa-classify's count) */
+    double msaa_edge_fraction;          /**< msaa_edge_pixels over the frame's pixels */
 } tl_frame_stats;
 
 /** "gbuffer", "lights", ... ("unknown" out of range); the names of debug groups and timers. */

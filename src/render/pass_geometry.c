@@ -23,12 +23,14 @@ uint32_t tl__rt0_format(const tl_renderer_options *o)
     return o->rt0 == TL_RT0_RGB10A2 ? GL_RGB10_A2 : GL_RGBA8;
 }
 
-/* MSAA (docs/antialiasing.md): forward's depth and the HDR image of forward and thin-lpp are
- * multisampled; thin-lpp's G-buffer depth stays at one sample for the light pass, and the material
- * pass tests against a multisampled depth of its own that the depth pre-pass writes. */
+/* MSAA (docs/antialiasing.md): with per-sample edges (thin-deferred, fat; pass_msaa.c) the whole
+ * G-buffer is multisampled (tl__gbuffer_samples); otherwise forward's depth and the HDR image of
+ * forward and thin-lpp are multisampled; thin-lpp's G-buffer depth stays at one sample for the
+ * light pass, and the material pass tests against a multisampled depth of its own that the depth
+ * pre-pass writes. */
 static uint32_t tl__depth_samples(const tl_renderer_options *o)
 {
-    return o->mode == TL_MODE_FORWARD ? tl__msaa_samples(o) : 1u;
+    return o->mode == TL_MODE_FORWARD ? tl__msaa_samples(o) : tl__gbuffer_samples(o);
 }
 
 static const tl__target_def tl__target_depth = {TL__TARGET(DEPTH, "depth"), .format_of = tl__depth_format,
@@ -37,16 +39,17 @@ static const tl__target_def tl__target_depth_msaa = {TL__TARGET(DEPTH_MSAA, "dep
                                                      .samples_of = tl__msaa_samples, .store = TL__STORE_GBUFFER,
                                                      .depth = 1};
 static const tl__target_def tl__target_rt0 = {TL__TARGET(RT0, "rt0"), .format_of = tl__rt0_format,
-                                              .store = TL__STORE_GBUFFER};
-static const tl__target_def tl__target_rt1 = {TL__TARGET(RT1, "rt1"), .format = GL_RGBA8, .store = TL__STORE_GBUFFER};
+                                              .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
+static const tl__target_def tl__target_rt1 = {TL__TARGET(RT1, "rt1"), .format = GL_RGBA8,
+                                              .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_fat_position = {TL__TARGET(FAT_POSITION, "fat.position"), .format = GL_RGBA32F,
-                                                       .store = TL__STORE_GBUFFER};
+                                                       .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_fat_normal = {TL__TARGET(FAT_NORMAL, "fat.normal"), .format = GL_RGBA16F,
-                                                     .store = TL__STORE_GBUFFER};
+                                                     .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_fat_albedo = {TL__TARGET(FAT_ALBEDO, "fat.albedo"), .format = GL_RGBA16F,
-                                                     .store = TL__STORE_GBUFFER};
+                                                     .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_fat_material = {TL__TARGET(FAT_MATERIAL, "fat.material"), .format = GL_RGBA16F,
-                                                       .store = TL__STORE_GBUFFER};
+                                                       .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_hdr = {TL__TARGET(HDR, "hdr"), .format = GL_RGBA16F, .samples_of = tl__msaa_samples};
 
 /* Every geometry pass that decides visibility tests LEQUAL (GEQUAL reversed): of fragments at the
