@@ -110,7 +110,7 @@ extern const char *const bench_effect_names[BENCH_EFFECTS + 2];
 /* Antialiasing methods the bench can measure (--aa), each against a supersampled truth
  * (bench_aa.c): FXAA off, FXAA (the renderer's default preset), MSAA with 2, 4 or 8 samples
  * (msaaN: thin-lpp's material pass, forward's own; msaaNe: per-sample lighting on edges over a
- * multisampled G-buffer, thin-deferred and fat; tl_renderer_options.msaa_lighting). */
+ * multisampled G-buffer, thin-lpp, thin-deferred and fat; tl_renderer_options.msaa_lighting). */
 typedef enum bench_aa {
     BENCH_AA_NONE,
     BENCH_AA_FXAA,

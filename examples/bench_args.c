@@ -68,7 +68,7 @@ static const char usage_middle[] =
     "                   " BENCH_EFFECTS_DOC_END " in FILE with the effects' table\n"
     "  --aa LIST        antialiasing methods, none, fxaa, msaa2, msaa4, msaa8 (thin-lpp's material\n"
     "                   pass, forward), msaa2e, msaa4e, msaa8e (per-sample lighting on edges:\n"
-    "                   thin-deferred, fat) (default: not measured):\n"
+    "                   thin-lpp, thin-deferred, fat) (default: not measured):\n"
     "                   at the first size and every light count, each requested mode of the first\n"
     "                   strategy with each method its plan applies (up to the context's\n"
     "                   GL_MAX_SAMPLES), the renderers taking turns frame by frame; the\n"

@@ -32,12 +32,15 @@ vec3 tl_classify_normal(ivec2 px, int s)
 }
 
 // Sample s's material as stored: thin RT1 (luma, the pixel's chroma, specular), fat albedo and specular.
+// thin-lpp: none (its material pass shades each primitive's samples with their own material).
 vec4 tl_classify_material(ivec2 px, int s)
 {
-#ifdef TL_CLASSIFY_FAT
+#if defined(TL_CLASSIFY_FAT)
     return vec4(texelFetch(u_fat_albedo, px, s).rgb, texelFetch(u_fat_material, px, s).r);
-#else
+#elif defined(TL_CLASSIFY_RT1)
     return texelFetch(u_rt1, px, s);
+#else
+    return vec4(0.0);
 #endif
 }
 

@@ -23,8 +23,8 @@ const char tl_tool_settings_help[] =
     "  --msaa N              1 (default: off), 2, 4 or 8 samples: thin-lpp's material pass, or forward,\n"
     "                        multisampled (with --fxaa off for MSAA alone)\n"
     "  --msaa-lighting L     with --msaa: default (thin-lpp: material-pass; thin-deferred, fat:\n"
-    "                        per-sample-edges), material-pass or per-sample-edges (a multisampled\n"
-    "                        G-buffer, edge pixels lit per sample)\n"
+    "                        per-sample-edges), material-pass or per-sample-edges (thin-lpp too: a\n"
+    "                        multisampled G-buffer, edge pixels lit per sample)\n"
     "  --exposure E          exposure before tone mapping (default 1; above 0, at most 1e6)\n";
 
 enum { S_MODE, S_NO_PREPASS, S_STRATEGY, S_DEPTH, S_RT0, S_LIGHT_BUFFER, S_LIGHT_FORMAT, S_LIGHTING, S_FRESNEL,

@@ -91,8 +91,10 @@ typedef enum tl_tiled_shading {
 typedef enum tl_msaa_lighting {
     TL_MSAA_LIGHTING_DEFAULT = 0,      /**< thin-lpp: the material pass; thin-deferred and fat: per-sample edges */
     TL_MSAA_LIGHTING_MATERIAL_PASS,    /**< thin-lpp: G-buffer and light buffer at 1x, the material pass multisampled */
-    TL_MSAA_LIGHTING_SAMPLE_EDGES,     /**< multisampled G-buffer; edge pixels (samples differing in depth or
-                                            normal) lit per sample, the rest per pixel (thin-deferred, fat) */
+    TL_MSAA_LIGHTING_SAMPLE_EDGES,     /**< multisampled G-buffer (thin-lpp: and light buffer); edge pixels
+                                            (samples differing in depth, normal or material) lit per sample,
+                                            the rest per pixel (thin-lpp, thin-deferred, fat; volumes or the
+                                            fragment tiled pass) */
     TL_MSAA_LIGHTING_COUNT_            /**< number of values */
 } tl_msaa_lighting;
 
@@ -303,9 +305,11 @@ typedef struct tl_renderer_options {
      *  context's GL_MAX_SAMPLES); 0 or 1, the default: off. thin-lpp keeps its G-buffer and light
      *  buffer at one sample and runs the material pass multisampled, each sample taking the light
      *  of the light-buffer texel that matches its surface (or re-lit where none does); forward
-     *  renders multisampled. The resolve tone-maps every sample before averaging. Planned without
-     *  (tl_frame_plan.msaa_reason says why) in thin-deferred and fat, at a light scale below 1 and
-     *  with the screen-space effects, which read a one-sample HDR or depth. */
+     *  renders multisampled; msaa_lighting picks per-sample lighting on edges instead (thin-lpp) or
+     *  as the default (thin-deferred, fat). The resolve tone-maps every sample before averaging.
+     *  Planned without (tl_frame_plan.msaa_reason says why) at a light scale below 1, with the
+     *  screen-space effects, which read a one-sample HDR or depth, and where msaa_lighting names a
+     *  method the mode lacks. */
     uint32_t msaa;
     tl_fxaa_preset fxaa;               /**< default 29 */
     float fxaa_edge_threshold;         /**< default 0.166 (relative local contrast) */

@@ -76,7 +76,9 @@ static tl__pipeline tl__geometry_state(const tl__plan_input *in, tl__depth_test 
 
 tl_target_id tl__shading_depth(const tl__plan_input *in)
 {
-    return in->mode->material_pass && in->msaa > 1 ? TL_TARGET_DEPTH_MSAA : TL_TARGET_DEPTH;
+    /* per-sample edges: the G-buffer's own depth is multisampled (pass_msaa.c) */
+    return in->mode->material_pass && in->msaa > 1 && !tl__msaa_sample_edges(in->o) ? TL_TARGET_DEPTH_MSAA
+                                                                                     : TL_TARGET_DEPTH;
 }
 
 static void tl__prepass_declare(const tl__plan_input *in, tl__pass_decl *d)
@@ -193,15 +195,17 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     out->used[0] = 1;
-    char upsample[64] = "";
+    char upsample[96] = "";
     if ((d->samples & TL__B(LIGHT_DIFFUSE)) && (d->samples & TL__B(LIGHT_RT0)))
         snprintf(upsample, sizeof upsample, " TL_UPSAMPLE=%u%s%s", (unsigned)in->light_shift,
                  in->o->rt0 == TL_RT0_RGB10A2 ? " TL_RT0_RGB10A2" : "",
                  (d->reads & TL__B(LIGHT_LISTS)) ? " TL_RELIGHT_TILES" : "");
     if (in->stipple && (d->samples & TL__B(LIGHT_DIFFUSE)))
         snprintf(upsample, sizeof upsample, " TL_STIPPLE %s", in->rt0_define);
-    if (d->depth_target == TL_TARGET_DEPTH_MSAA && (d->samples & TL__B(LIGHT_DIFFUSE)))
-        snprintf(upsample, sizeof upsample, " TL_MSAA_LIGHT %s%s%s", in->rt0_define,
+    char samples[32] = ""; /* per-sample edges: the G-buffer and light buffer multisampled (pass_msaa.c) */
+    if (tl__msaa_sample_edges(in->o)) snprintf(samples, sizeof samples, "TL_LIGHT_SAMPLES=%u ", (unsigned)in->msaa);
+    if ((d->depth_target == TL_TARGET_DEPTH_MSAA || samples[0]) && (d->samples & TL__B(LIGHT_DIFFUSE)))
+        snprintf(upsample, sizeof upsample, " TL_MSAA_LIGHT %s%s%s%s", samples, in->rt0_define,
                  (d->reads & TL__B(LIGHT_LISTS)) ? " TL_RELIGHT_TILES" : "",
                  tl__depth_format(in->o) == GL_DEPTH_COMPONENT32F ? " TL_DEPTH_FLOAT" : "");
     snprintf(out->slot[0], sizeof out->slot[0], "%s%s%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",

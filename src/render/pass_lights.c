@@ -11,7 +11,9 @@
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
-/* The light buffer (thin-lpp): R11G11B10F keeps each value to 6 or 5 mantissa bits in 4 bytes. */
+/* The light buffer (thin-lpp): R11G11B10F keeps each value to 6 or 5 mantissa bits in 4 bytes.
+ * With MSAA's per-sample edges it has the G-buffer's samples (pass_msaa.c): an edge pixel's light
+ * per sample, every other pixel's in all its samples. */
 static uint32_t tl__light_format(const tl_renderer_options *o)
 {
     return o->light_format == TL_LIGHT_FORMAT_R11G11B10F ? GL_R11F_G11F_B10F : GL_RGBA16F;
@@ -19,12 +21,15 @@ static uint32_t tl__light_format(const tl_renderer_options *o)
 
 static const tl__target_def tl__target_light_diffuse = {TL__TARGET(LIGHT_DIFFUSE, "light.diffuse"),
                                                         .format_of = tl__light_format, .shift_of = tl__light_shift,
+                                                        .samples_of = tl__gbuffer_samples,
                                                         .store = TL__STORE_LIGHT};
 static const tl__target_def tl__target_light_specular = {TL__TARGET(LIGHT_SPECULAR, "light.specular"),
                                                          .format_of = tl__light_format, .shift_of = tl__light_shift,
+                                                        .samples_of = tl__gbuffer_samples,
                                                         .store = TL__STORE_LIGHT};
 static const tl__target_def tl__target_light_fresnel = {TL__TARGET(LIGHT_FRESNEL, "light.fresnel"),
                                                         .format_of = tl__light_format, .shift_of = tl__light_shift,
+                                                        .samples_of = tl__gbuffer_samples,
                                                         .store = TL__STORE_LIGHT};
 
 /* What the light pass reads and writes in this mode, whatever the strategy (the tiled pass too). */

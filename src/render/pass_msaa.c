@@ -1,11 +1,14 @@
 /* MSAA with per-sample lighting on edges (docs/antialiasing.md; Lauritzen 2010, CryENGINE 3's
- * sample mask) for thin-deferred and fat: the G-buffer pass draws into a multisampled G-buffer
- * (tl__gbuffer_samples, pass_geometry.c), msaa-classify marks the pixels whose samples differ in
- * depth or normal in msaa.edges, the light pass (volumes or the tiled fragment pass) lights every
- * other pixel once from sample 0's surface, and lights-samples runs the same light pass again with
- * sample-rate shading on the edge pixels alone (shaders/gbuffer_samples.glsl says which pixels a
- * pass lights). The thin G-buffer's checkerboard chroma is rebuilt per sample from the four
- * neighbours' same sample index (gbuffer_decode.glsl, tl_rt1_read). */
+ * sample mask) for thin-lpp, thin-deferred and fat: the G-buffer pass draws into a multisampled
+ * G-buffer (tl__gbuffer_samples, pass_geometry.c), msaa-classify marks the pixels whose samples
+ * differ in depth, normal or (deferred modes) material in msaa.edges, the light pass (volumes or
+ * the tiled fragment pass) lights every other pixel once from sample 0's surface, and
+ * lights-samples runs the same light pass again with sample-rate shading on the edge pixels alone
+ * (shaders/gbuffer_samples.glsl says which pixels a pass lights). thin-lpp's light buffer is
+ * multisampled too, and its material pass (multisampled, depth EQUAL against the G-buffer's depth)
+ * takes the light of the first sample it covers that holds its surface (light_msaa.glsl). The thin
+ * G-buffer's checkerboard chroma is rebuilt per sample from the four neighbours' same sample index
+ * (gbuffer_decode.glsl, tl_rt1_read). */
 #include <stdio.h>
 #include <string.h>
 
@@ -35,10 +38,9 @@ static void tl__classify_declare(const tl__plan_input *in, tl__pass_decl *d)
 
 static void tl__classify_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
-    (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_GBUFFER_SAMPLES=%u %s%s", (unsigned)in->msaa, in->rt0_define,
-             in->o->mode == TL_MODE_FAT ? " TL_CLASSIFY_FAT" : "");
+    const char *material = in->o->mode == TL_MODE_FAT ? " TL_CLASSIFY_FAT" : (d->samples & TL__B(RT1)) ? " TL_CLASSIFY_RT1" : "";
+    snprintf(out->slot[0], sizeof out->slot[0], "TL_GBUFFER_SAMPLES=%u %s%s", (unsigned)in->msaa, in->rt0_define, material);
 }
 
 const tl__pass_def tl__pass_msaa_classify = {

@@ -54,19 +54,24 @@ static int has_pass(const tl_frame_plan *p, tl_pass pass)
     return 0;
 }
 
-/* Per-sample edges (thin-deferred, fat; the default there, and by name): the whole G-buffer, depth
- * and HDR at n samples, the one-sample edge mask, the classify and per-sample light passes, with
- * volumes and tiles. */
+/* Per-sample edges (thin-deferred, fat: the default there, and by name; thin-lpp by name): the
+ * whole G-buffer (thin-lpp: and its light buffer), depth and HDR at n samples, the one-sample edge
+ * mask, the classify and per-sample light passes, with volumes and tiles; no depth.msaa. */
 static void check_sample_edges_plan(const tl_scene_feature_set *f, uint32_t n, tl_render_mode mode)
 {
-    const uint32_t gbuffer = mode == TL_MODE_FAT ? TL_TARGET_BIT(TL_TARGET_FAT_POSITION) | TL_TARGET_BIT(TL_TARGET_FAT_NORMAL) |
-                                                       TL_TARGET_BIT(TL_TARGET_FAT_ALBEDO) | TL_TARGET_BIT(TL_TARGET_FAT_MATERIAL)
-                                                 : TL_TARGET_BIT(TL_TARGET_RT0) | TL_TARGET_BIT(TL_TARGET_RT1);
+    const uint32_t fat = TL_TARGET_BIT(TL_TARGET_FAT_POSITION) | TL_TARGET_BIT(TL_TARGET_FAT_NORMAL) |
+                         TL_TARGET_BIT(TL_TARGET_FAT_ALBEDO) | TL_TARGET_BIT(TL_TARGET_FAT_MATERIAL),
+                   lpp = TL_TARGET_BIT(TL_TARGET_RT0) | TL_TARGET_BIT(TL_TARGET_LIGHT_DIFFUSE) |
+                         TL_TARGET_BIT(TL_TARGET_LIGHT_SPECULAR);
+    const uint32_t gbuffer = mode == TL_MODE_FAT        ? fat
+                             : mode == TL_MODE_THIN_LPP ? lpp
+                                                        : TL_TARGET_BIT(TL_TARGET_RT0) | TL_TARGET_BIT(TL_TARGET_RT1);
     for (int k = 0; k < 4; k++) {
         tl_frame_plan p;
         tl_renderer_desc d = {.width = 1281, .height = 721, .options.msaa = n, .options.mode = mode};
         d.options.light_strategy = k & 1 ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
-        d.options.msaa_lighting = k & 2 ? TL_MSAA_LIGHTING_SAMPLE_EDGES : TL_MSAA_LIGHTING_DEFAULT;
+        int named = (k & 2) || mode == TL_MODE_THIN_LPP;
+        d.options.msaa_lighting = named ? TL_MSAA_LIGHTING_SAMPLE_EDGES : TL_MSAA_LIGHTING_DEFAULT;
         TL_CHECK(tl_frame_plan_build(&d, f, &p) == TL_OK);
         TL_CHECK_EQ_U(p.msaa, n);
         TL_CHECK(strstr(p.msaa_reason, "per-sample edges") != NULL);
@@ -79,6 +84,7 @@ static void check_sample_edges_plan(const tl_scene_feature_set *f, uint32_t n, t
         TL_CHECK(!(p.targets & TL_TARGET_BIT(TL_TARGET_DEPTH_MSAA)));
         TL_CHECK(has_pass(&p, TL_PASS_MSAA_CLASSIFY) && has_pass(&p, TL_PASS_LIGHTS_SAMPLES));
         TL_CHECK(has_pass(&p, k & 1 ? TL_PASS_LIGHTS_TILED : TL_PASS_LIGHTS));
+        TL_CHECK(has_pass(&p, TL_PASS_MATERIAL) == (mode == TL_MODE_THIN_LPP) && !has_pass(&p, TL_PASS_DEPTH_PREPASS));
         char text[8192];
         tl_frame_plan_format(&p, text, sizeof text);
         TL_CHECK(strstr(text, "msaa: ") && strstr(text, "per-sample edges") && strstr(text, "msaa.edges"));
@@ -127,15 +133,16 @@ TL_TEST(msaa_plan_targets_and_refusals)
         TL_CHECK(tl_frame_plan_build(&d, &f, &q) == TL_OK);
         TL_CHECK(memcmp(&p, &q, sizeof p) == 0);
         d.options.msaa_lighting = TL_MSAA_LIGHTING_DEFAULT;
+        check_sample_edges_plan(&f, n, TL_MODE_THIN_LPP);
         check_sample_edges_plan(&f, n, TL_MODE_THIN_DEFERRED);
         check_sample_edges_plan(&f, n, TL_MODE_FAT);
     }
-    /* planned without, and said why: a method a mode lacks, per-sample edges in thin-lpp (not built)
-     * and with the compute tiled pass, a reduced light buffer, effects */
+    /* planned without, and said why: a method a mode lacks, per-sample edges with the compute tiled
+     * pass or a reduced light buffer, a reduced light buffer, effects */
     tl_renderer_desc refused[9] = {
         {.options.mode = TL_MODE_FAT, .options.msaa_lighting = TL_MSAA_LIGHTING_MATERIAL_PASS},
         {.options.mode = TL_MODE_THIN_DEFERRED, .options.msaa_lighting = TL_MSAA_LIGHTING_MATERIAL_PASS},
-        {.options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES},
+        {.options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES, .options.light_scale = 0.5f},
         {.options.mode = TL_MODE_FORWARD, .options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES},
         {.options.mode = TL_MODE_FAT, .options.light_strategy = TL_LIGHT_STRATEGY_TILED,
          .options.tiled_shading = TL_TILED_SHADING_COMPUTE},
@@ -295,9 +302,11 @@ typedef struct frame {
     double relit, edges; /* relit_fraction (material pass), msaa_edge_fraction (per-sample edges) */
 } frame;
 
-static int render_frame(const tl_scene *s, tl_render_mode mode, tl_light_strategy st, uint32_t msaa, frame *f)
+static int render_frame(const tl_scene *s, tl_render_mode mode, tl_light_strategy st, uint32_t msaa, tl_msaa_lighting how,
+                        frame *f)
 {
     tl_renderer_desc d = {.width = W, .height = H};
+    d.options.msaa_lighting = how;
     d.options.mode = mode;
     d.options.light_strategy = st;
     d.options.msaa = msaa;
@@ -328,7 +337,7 @@ static int interior(const tri_scene *t, int i, int j)
 
 /* Edge pixels: the resolved coverage (from the tone-mapped linear output between the two surfaces'
  * interior values) against the analytic area; interior pixels: HDR against the one-sample frame. */
-static void check_triangle(tl_render_mode mode, tl_light_strategy st, uint32_t n, int light_only)
+static void check_triangle(tl_render_mode mode, tl_light_strategy st, uint32_t n, int light_only, tl_msaa_lighting how)
 {
     static tri_scene t;
     tri_scene_init(&t);
@@ -338,7 +347,7 @@ static void check_triangle(tl_render_mode mode, tl_light_strategy st, uint32_t n
         t.mat[1] = t.mat[0];
     }
     static frame one, ms;
-    if (!render_frame(&t.s, mode, st, 1, &one) || !render_frame(&t.s, mode, st, n, &ms)) {
+    if (!render_frame(&t.s, mode, st, 1, TL_MSAA_LIGHTING_DEFAULT, &one) || !render_frame(&t.s, mode, st, n, how, &ms)) {
         TL_CHECK(!"rendered");
         free(one.hdr), free(ms.hdr), one.hdr = ms.hdr = NULL;
         return;
@@ -378,15 +387,16 @@ static void check_triangle(tl_render_mode mode, tl_light_strategy st, uint32_t n
             mixed += sc > 0.0 && sc < 1.0 && got > step && got < 1.0 - step;
             edges++;
         }
-    printf("%s/%s msaa %u%s: %zu edge pixels (%zu with samples on both sides, %zu mixed), worst |resolved - analytic coverage| %.3f (1/samples "
+    printf("%s/%s msaa %u%s%s: %zu edge pixels (%zu with samples on both sides, %zu mixed), worst |resolved - analytic coverage| %.3f (1/samples "
            "%.3f), |resolved - covered sample positions| %.4f (one 8-bit step %.4f); %zu interior pixels, worst "
            "relative HDR difference %.2g; re-lit %.2f %%, per-sample edges %.2f %%\n",
-           tl_render_mode_name(mode), tl_light_strategy_name(st), n, light_only ? " (light only)" : "", edges, partial, mixed,
+           tl_render_mode_name(mode), tl_light_strategy_name(st), n, how == TL_MSAA_LIGHTING_SAMPLE_EDGES ? " per-sample edges" : "",
+           light_only ? " (light only)" : "", edges, partial, mixed,
            worst_edge, 1.0 / n, worst_sampled, step, inside, worst_interior, 100.0 * ms.relit, 100.0 * ms.edges);
     TL_CHECK(fabs(lin_in - lin_out) > (light_only ? 0.1 : 0.3) && edges > 200 && inside > (size_t)W * H / 2);
     /* a pixel with samples on both surfaces is a mix of both (its samples lit apart), not either alone */
     TL_CHECK(partial > 50 && mixed == partial);
-    if (mode == TL_MODE_FAT || mode == TL_MODE_THIN_DEFERRED) { /* those pixels, and no other, lit per sample */
+    if (how == TL_MSAA_LIGHTING_SAMPLE_EDGES) { /* those pixels, and no other, lit per sample */
         double classified = ms.edges * W * H;
         TL_CHECK(classified > partial - 0.5 && classified < partial + 0.5);
     }
@@ -431,25 +441,25 @@ TL_TEST(msaa_triangle_edge_coverage_and_interior_pixels)
     for (uint32_t n = 2; n <= top; n *= 2)
         for (int k = 0; k < 2; k++) {
             tl_light_strategy st = k ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
-            check_triangle(TL_MODE_THIN_LPP, st, n, 0);
-            check_triangle(TL_MODE_FORWARD, st, n, 0);
+            check_triangle(TL_MODE_THIN_LPP, st, n, 0, TL_MSAA_LIGHTING_DEFAULT);
+            check_triangle(TL_MODE_FORWARD, st, n, 0, TL_MSAA_LIGHTING_DEFAULT);
         }
 }
 
-/* MSAA with per-sample lighting on edges (thin-deferred, fat): the same coverage and interior
+/* MSAA with per-sample lighting on edges (thin-lpp, thin-deferred, fat): the same coverage and interior
  * checks, and the edge pixels of two surfaces that differ only in their light resolve to the mix
  * of both lights (a pixel lit once, from one surface, would be either alone). */
 TL_TEST(msaa_sample_edges_triangle_coverage_and_per_sample_light)
 {
     if (!ensure_context()) return;
     uint32_t top = max_samples();
+    const tl_render_mode modes3[3] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT};
     for (uint32_t n = 2; n <= top; n *= 2)
         for (int k = 0; k < 2; k++)
-            for (int m = 0; m < 2; m++) {
+            for (int m = 0; m < 3; m++) {
                 tl_light_strategy st = k ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
-                tl_render_mode mode = m ? TL_MODE_FAT : TL_MODE_THIN_DEFERRED;
-                check_triangle(mode, st, n, 0);
-                check_triangle(mode, st, n, 1);
+                check_triangle(modes3[m], st, n, 0, TL_MSAA_LIGHTING_SAMPLE_EDGES);
+                check_triangle(modes3[m], st, n, 1, TL_MSAA_LIGHTING_SAMPLE_EDGES);
             }
 }
 
