@@ -109,20 +109,26 @@ const char *bench_effect_name(bench_effect e);
 extern const char *const bench_effect_names[BENCH_EFFECTS + 2];
 
 /* Antialiasing methods the bench can measure (--aa), each against a supersampled truth
- * (bench_aa.c): FXAA off, FXAA (the renderer's default preset), MSAA with 2, 4 or 8 samples. */
+ * (bench_aa.c): FXAA off, FXAA (the renderer's default preset), MSAA with 2, 4 or 8 samples
+ * (msaaN: thin-lpp's material pass, forward's own; msaaNe: per-sample lighting on edges over a
+ * multisampled G-buffer, thin-lpp, thin-deferred and fat; tl_renderer_options.msaa_lighting). */
 typedef enum bench_aa {
     BENCH_AA_NONE,
     BENCH_AA_FXAA,
     BENCH_AA_MSAA2,
     BENCH_AA_MSAA4,
     BENCH_AA_MSAA8,
+    BENCH_AA_MSAA2E,
+    BENCH_AA_MSAA4E,
+    BENCH_AA_MSAA8E,
     BENCH_AAS
 } bench_aa;
 /* Every method's name in bench_aa order, then NULL (--aa). */
 extern const char *const bench_aa_names[BENCH_AAS + 1];
 const char *bench_aa_name(bench_aa a);
-/* Samples per pixel of MSAA (1 for none and FXAA). */
+/* Samples per pixel of MSAA (1 for none and FXAA), and how MSAA lights the frame. */
 uint32_t bench_aa_samples(bench_aa a);
+tl_msaa_lighting bench_aa_lighting(bench_aa a);
 /* The truth: fat at BENCH_AA_TRUTH_SCALE times the width and the height, FXAA off, every sample
  * tone-mapped on the CPU, each block averaged in tone-mapped linear space, then sRGB-encoded. */
 #define BENCH_AA_TRUTH_SCALE 4u
@@ -188,10 +194,12 @@ typedef struct bench_aa_record {
     double ms_median;              /* frame time (GPU timers, else the wall clock) */
     double ratio_vs_fxaa;          /* median of (this / the same mode's FXAA frame beside it), or of the
                                       medians when they were not rendered side by side; NaN: no FXAA record */
+    double ratio_vs_none;          /* the same against the mode's no-AA frame (the 1x frame); NaN: no such record */
     tl_image_error ldr, edge_ldr;  /* final image vs the truth, RGB 8-bit; over the edge pixels alone */
     double edge_fraction;          /* edge pixels over all (the truth's) */
     uint32_t bytes_per_pixel;      /* memory the targets occupy */
-    double relit_fraction;         /* thin-lpp with MSAA: tl_frame_stats.relit_fraction; NaN elsewhere */
+    double relit_fraction;         /* thin-lpp with MSAA: tl_frame_stats.relit_fraction; per-sample edges
+                                      (msaaNe): tl_frame_stats.msaa_edge_fraction; NaN elsewhere */
 } bench_aa_record;
 
 /* The truth of one light count (bench_aa.c): its image and edge mask at the first size. */

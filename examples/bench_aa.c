@@ -15,8 +15,15 @@
 #include "bench.h"
 #include "tool_log.h"
 
-const char *const bench_aa_names[BENCH_AAS + 1] = {"none", "fxaa", "msaa2", "msaa4", "msaa8", NULL};
-static const uint32_t bench__aa_sample_counts[BENCH_AAS] = {1, 1, 2, 4, 8};
+const char *const bench_aa_names[BENCH_AAS + 1] = {"none",  "fxaa",   "msaa2",  "msaa4", "msaa8",
+                                                   "msaa2e", "msaa4e", "msaa8e", NULL};
+static const uint32_t bench__aa_sample_counts[BENCH_AAS] = {1, 1, 2, 4, 8, 2, 4, 8};
+
+tl_msaa_lighting bench_aa_lighting(bench_aa a)
+{
+    if (a >= BENCH_AA_MSAA2E && a < BENCH_AAS) return TL_MSAA_LIGHTING_SAMPLE_EDGES;
+    return a >= BENCH_AA_MSAA2 && a < BENCH_AAS ? TL_MSAA_LIGHTING_MATERIAL_PASS : TL_MSAA_LIGHTING_DEFAULT;
+}
 
 const char *bench_aa_name(bench_aa a) { return (unsigned)a < BENCH_AAS ? bench_aa_names[a] : "truth"; }
 uint32_t bench_aa_samples(bench_aa a) { return (unsigned)a < BENCH_AAS ? bench__aa_sample_counts[a] : 1; }
@@ -32,7 +39,8 @@ static tl_renderer_desc bench__aa_desc(const bench_options *opt, bench_config c,
     tl_renderer_desc d = {.options.mode = bench_config_mode(c), .options.light_strategy = bench_config_strategy(c),
                           .options.lighting = opt->lighting, .options.fresnel = bench_config_fresnel(c, opt->fresnel),
                           .options.fxaa = aa == BENCH_AA_FXAA ? TL_FXAA_DEFAULT : TL_FXAA_OFF,
-                          .options.msaa = bench_aa_samples(aa), .width = opt->sizes[0].width,
+                          .options.msaa = bench_aa_samples(aa), .options.msaa_lighting = bench_aa_lighting(aa),
+                          .width = opt->sizes[0].width,
                           .height = opt->sizes[0].height, .options.synchronous_stats = 1};
     tl_tool_budget_renderer(&opt->budgets, &d);
     return d;
@@ -244,7 +252,7 @@ static int bench__group_record(bench_run *run, bench__aa_group *g, size_t k, con
     memcpy(ms, g->ms + k * run->opt.frames, run->opt.frames * sizeof *ms);
     *rec = (bench_aa_record){.aa = it->aa, .config = it->config, .samples = bench_aa_samples(it->aa),
                              .lights = t->lights, .width = t->width, .height = t->height, .frames = run->opt.frames,
-                             .ms_median = bench_median(ms, run->opt.frames), .ratio_vs_fxaa = NAN,
+                             .ms_median = bench_median(ms, run->opt.frames), .ratio_vs_fxaa = NAN, .ratio_vs_none = NAN,
                              .edge_fraction = (double)t->edge_pixels / (double)n, .relit_fraction = NAN};
     if (tl_renderer_read_output(g->r[k], rgb, &(size_t){n * 4}) != TL_OK) {
         tl_tool_fail(BENCH_TOOL, "--aa, %s %s: %s", bench_config_name(it->config), bench_aa_name(it->aa),
@@ -256,25 +264,37 @@ static int bench__group_record(bench_run *run, bench__aa_group *g, size_t k, con
     tl_image_compare_u8(rgb, t->rgb, n * 3, &rec->ldr);
     bench_edges_compare(rgb, t->rgb, t->edge, n, &rec->edge_ldr);
     rec->bytes_per_pixel = (uint32_t)((g->last[k].allocated_target_bytes + n / 2) / n);
-    if (bench_config_mode(it->config) == TL_MODE_THIN_LPP && rec->samples > 1)
+    if (bench_aa_lighting(it->aa) == TL_MSAA_LIGHTING_SAMPLE_EDGES)
+        rec->relit_fraction = g->last[k].msaa_edge_fraction;
+    else if (bench_config_mode(it->config) == TL_MODE_THIN_LPP && rec->samples > 1)
         rec->relit_fraction = g->last[k].relit_fraction;
     if (run->opt.out && t->lights == run->opt.lights[run->opt.light_count - 1])
         return bench_aa_images(run, t, rec, rgb);
     return 0;
 }
 
-/* The ratios to the same mode's FXAA frames rendered beside them (the group's). */
-static void bench__group_ratios(const bench_run *run, const bench__aa_group *g, bench_aa_record *recs)
+/* The ratio of item k's frames to those of the same mode's method `base` rendered beside them
+ * (the group's), NaN when the group has no such item. */
+static double bench__group_ratio(const bench_run *run, const bench__aa_group *g, size_t k, bench_aa base)
 {
     uint32_t frames = run->opt.frames;
-    for (size_t k = 0; k < g->count; k++)
-        for (size_t x = 0; x < g->count; x++) {
-            const bench__aa_item *a = &g->items[g->first + k], *b = &g->items[g->first + x];
-            if (b->aa != BENCH_AA_FXAA || b->config != a->config) continue;
-            double ratios[BENCH_MAX_FRAMES];
-            for (uint32_t f = 0; f < frames; f++) ratios[f] = g->ms[k * frames + f] / g->ms[x * frames + f];
-            recs[k].ratio_vs_fxaa = bench_median(ratios, frames);
-        }
+    for (size_t x = 0; x < g->count; x++) {
+        const bench__aa_item *a = &g->items[g->first + k], *b = &g->items[g->first + x];
+        if (b->aa != base || b->config != a->config) continue;
+        double ratios[BENCH_MAX_FRAMES];
+        for (uint32_t f = 0; f < frames; f++) ratios[f] = g->ms[k * frames + f] / g->ms[x * frames + f];
+        return bench_median(ratios, frames);
+    }
+    return NAN;
+}
+
+/* The ratios to the same mode's FXAA and no-AA frames rendered beside them. */
+static void bench__group_ratios(const bench_run *run, const bench__aa_group *g, bench_aa_record *recs)
+{
+    for (size_t k = 0; k < g->count; k++) {
+        recs[k].ratio_vs_fxaa = bench__group_ratio(run, g, k, BENCH_AA_FXAA);
+        recs[k].ratio_vs_none = bench__group_ratio(run, g, k, BENCH_AA_NONE);
+    }
 }
 
 /* How many items from `first` the next group takes: whole modes while they fit in at_once. */
@@ -294,9 +314,13 @@ static size_t bench__group_size(const bench__aa_item *items, size_t n, size_t fi
 static void bench__median_ratios(bench_aa_record *recs, size_t n)
 {
     for (size_t k = 0; k < n; k++)
-        for (size_t x = 0; x < n && isnan(recs[k].ratio_vs_fxaa); x++)
-            if (recs[x].aa == BENCH_AA_FXAA && recs[x].config == recs[k].config)
+        for (size_t x = 0; x < n; x++) {
+            if (recs[x].config != recs[k].config) continue;
+            if (recs[x].aa == BENCH_AA_FXAA && isnan(recs[k].ratio_vs_fxaa))
                 recs[k].ratio_vs_fxaa = recs[k].ms_median / recs[x].ms_median;
+            if (recs[x].aa == BENCH_AA_NONE && isnan(recs[k].ratio_vs_none))
+                recs[k].ratio_vs_none = recs[k].ms_median / recs[x].ms_median;
+        }
 }
 
 /* Every item at one light count, a group at a time; records at recs[0..n). */

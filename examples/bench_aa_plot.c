@@ -1,6 +1,6 @@
 /* The AA plot (--aa with --out, gnuplot): the error over the edge pixels against the frame time, a
  * panel per light count, a point per (mode, method) labelled with the method, a mode's methods
- * joined in the order none, fxaa, msaa2, msaa4, msaa8. */
+ * joined in the order none, fxaa, msaa2, msaa4, msaa8, msaa2e, msaa4e, msaa8e. */
 #include <math.h>
 #include <stdio.h>
 

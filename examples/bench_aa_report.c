@@ -36,18 +36,19 @@ void bench_aa_print_table(const bench_run *run)
            "at %ux supersampled)\n",
            r0->width, r0->height, tl_light_strategy_name(bench_config_strategy(r0->config)), r0->frames,
            run->timers_ok ? "GPU timers" : "wall clock", BENCH_AA_TRUTH_SCALE * BENCH_AA_TRUTH_SCALE);
-    printf("%6s %-22s %-6s %9s %8s %5s %10s %10s %5s %5s %7s %6s\n", "lights", "mode", "AA", "ms", "x FXAA", "B/px",
-           "PSNR", "edge PSNR", "max", "edge", "re-lit", "edges");
+    printf("%6s %-22s %-6s %9s %8s %8s %5s %10s %10s %5s %5s %7s %6s\n", "lights", "mode", "AA", "ms", "x FXAA",
+           "x none", "B/px", "PSNR", "edge PSNR", "max", "edge", "re-lit", "edges");
     for (size_t i = 0; i < run->aa_count; i++) {
         const bench_aa_record *r = &run->aa[i];
-        char psnr[24], edge[24], ratio[16], relit[16];
+        char psnr[24], edge[24], ratio[16], ratio_none[16], relit[16];
         bench__db(psnr, sizeof psnr, r->ldr.psnr_db);
         bench__db(edge, sizeof edge, r->edge_ldr.psnr_db);
         bench__num(ratio, sizeof ratio, "%.3f", r->ratio_vs_fxaa);
+        bench__num(ratio_none, sizeof ratio_none, "%.3f", r->ratio_vs_none);
         bench__num(relit, sizeof relit, "%.4f", r->relit_fraction);
-        printf("%6u %-22s %-6s %9.2f %8s %5u %10s %10s %5.0f %5.0f %7s %5.1f%%\n", r->lights,
-               bench_config_name(r->config), bench_aa_name(r->aa), r->ms_median, ratio, r->bytes_per_pixel, psnr, edge,
-               r->ldr.max_abs, r->edge_ldr.max_abs, relit, 100.0 * r->edge_fraction);
+        printf("%6u %-22s %-6s %9.2f %8s %8s %5u %10s %10s %5.0f %5.0f %7s %5.1f%%\n", r->lights,
+               bench_config_name(r->config), bench_aa_name(r->aa), r->ms_median, ratio, ratio_none, r->bytes_per_pixel,
+               psnr, edge, r->ldr.max_abs, r->edge_ldr.max_abs, relit, 100.0 * r->edge_fraction);
     }
     for (size_t i = 0; i < run->aa_skipped_count; i++) printf("not measured: %s\n", run->aa_skipped[i]);
     fflush(stdout);
@@ -67,6 +68,7 @@ static void bench__json_record(tl_tool_json *j, const bench_aa_record *r)
     tl_tool_json_uint(j, "frames", r->frames);
     tl_tool_json_num(j, "ms_median", r->ms_median);
     tl_tool_json_num(j, "ratio_vs_fxaa", r->ratio_vs_fxaa);
+    tl_tool_json_num(j, "ratio_vs_none", r->ratio_vs_none);
     tl_tool_json_num(j, "psnr_db", r->ldr.psnr_db);
     tl_tool_json_num(j, "edge_psnr_db", r->edge_ldr.psnr_db);
     tl_tool_json_num(j, "max_abs_error", r->ldr.max_abs);
@@ -121,6 +123,8 @@ static void bench__md_row(FILE *f, const bench_aa_record *r)
     fprintf(f, "| %u | %s | %s | %.1f |", r->lights, bench_config_name(r->config), bench_aa_name(r->aa), r->ms_median);
     if (isfinite(r->ratio_vs_fxaa)) fprintf(f, " %.3f |", r->ratio_vs_fxaa);
     else fputs(" – |", f);
+    if (isfinite(r->ratio_vs_none)) fprintf(f, " %.3f |", r->ratio_vs_none);
+    else fputs(" – |", f);
     fprintf(f, " %u |", r->bytes_per_pixel);
     bench__md_db(f, r->ldr.psnr_db);
     bench__md_db(f, r->edge_ldr.psnr_db);
@@ -137,10 +141,12 @@ static void bench__md_intro(FILE *f, const bench_run *run)
     fprintf(f, "%s at %ux%u (%s), the %s light strategy; %u timed frames after %u warm-up per record, each "
                "mode's methods taking turns frame by frame. GL: %s, %s, on %s (%zu cores; 1-minute load average "
                "%.1f before the run, %.1f after). Time: %s, median; \"× FXAA\": the median over the frames of the "
-               "frame time over the same mode's FXAA frame beside it. Errors: the final image (8-bit sRGB, RGB) "
+               "frame time over the same mode's FXAA frame beside it, \"× none\" the same over its no-AA (1x) frame. Errors: the final image (8-bit sRGB, RGB) "
                "against the truth, over the frame and over the edge pixels alone (%.1f %% of the frame at %u "
-               "lights). Re-lit: thin-lpp with MSAA, the material-pass samples that found no matching light-buffer "
-               "texel and were re-lit, over the frame's pixels (tl_frame_stats.relit_fraction).\n\n",
+               "lights). Re-lit: thin-lpp with MSAA (msaaN), the material-pass samples that found no matching "
+               "light-buffer texel and were re-lit, over the frame's pixels (tl_frame_stats.relit_fraction); with "
+               "per-sample edges (msaaNe), the pixels classified as edges and lit per sample, over the frame's "
+               "pixels (tl_frame_stats.msaa_edge_fraction).\n\n",
             run->scene_name, r0->width, r0->height, run->light_definition,
             tl_light_strategy_name(bench_config_strategy(r0->config)), run->opt.frames, run->opt.warmup,
             run->gl_renderer, run->gl_version, run->cpu, run->cores, run->load_start, run->load_end,
@@ -173,8 +179,10 @@ static int bench__write_doc(FILE *f, const void *ctx)
     const bench_run *run = d->run;
     fwrite(d->text, 1, d->head, f);
     bench__md_intro(f, run);
-    fputs("| lights | mode | AA | ms | × FXAA | B/px | PSNR | edge PSNR | max | edge max | mean | edge mean | re-lit |\n"
-          "|-------:|------|----|---:|-------:|-----:|-----:|----------:|----:|---------:|-----:|----------:|-------:|\n",
+    fputs("| lights | mode | AA | ms | × FXAA | × none | B/px | PSNR | edge PSNR | max | edge max | mean | edge mean | "
+          "re-lit |\n"
+          "|-------:|------|----|---:|-------:|-------:|-----:|-----:|----------:|----:|---------:|-----:|----------:|"
+          "-------:|\n",
           f);
     for (size_t i = 0; i < run->aa_count; i++) bench__md_row(f, &run->aa[i]);
     if (run->aa_skipped_count) fputs("\nNot measured (the plan does not apply it):\n\n", f);

@@ -66,14 +66,17 @@ static const char usage_outputs[] =
 static const char usage_middle[] =
     "  --effects-doc FILE replace the text between " BENCH_EFFECTS_DOC_BEGIN " and\n"
     "                   " BENCH_EFFECTS_DOC_END " in FILE with the effects' table\n"
-    "  --aa LIST        antialiasing methods, none, fxaa, msaa2, msaa4, msaa8 (default: not measured):\n"
+    "  --aa LIST        antialiasing methods, none, fxaa, msaa2, msaa4, msaa8 (thin-lpp's material\n"
+    "                   pass, forward), msaa2e, msaa4e, msaa8e (per-sample lighting on edges:\n"
+    "                   thin-lpp, thin-deferred, fat) (default: not measured):\n"
     "                   at the first size and every light count, each requested mode of the first\n"
-    "                   strategy with each method its plan applies (MSAA: thin-lpp and forward, up to\n"
-    "                   the context's GL_MAX_SAMPLES), the renderers taking turns frame by frame; the\n"
+    "                   strategy with each method its plan applies (up to the context's\n"
+    "                   GL_MAX_SAMPLES), the renderers taking turns frame by frame; the\n"
     "                   error of each final image against a truth (fat at 4x4 the pixels, tone-mapped\n"
     "                   per sample on the CPU, averaged) over the frame and over the edge pixels,\n"
-    "                   its time against the same mode's FXAA, its bytes per pixel and (thin-lpp MSAA)\n"
-    "                   the re-lit fraction: a table, the JSON (\"aa\"), a plot and images in --out\n"
+    "                   its time against the same mode's FXAA and no AA, its bytes per pixel and the\n"
+    "                   re-lit (thin-lpp MSAA) or per-sample (msaaNe) fraction: a table, the JSON\n"
+    "                   (\"aa\"), a plot and images in --out\n"
     "  --aa-doc FILE    replace the text between " BENCH_AA_DOC_BEGIN " and " BENCH_AA_DOC_END "\n"
     "                   in FILE with the AA table, and copy the plot and crops to img/ beside it\n";
 static const char usage_tail[] =

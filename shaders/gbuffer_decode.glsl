@@ -4,6 +4,23 @@
 #include "codec.glsl"
 #include "frame.glsl"
 
+// MSAA with per-sample lighting on edges (gbuffer_samples.glsl): the G-buffer is multisampled.
+#ifdef TL_GBUFFER_SAMPLES
+#define TL_GSAMPLER sampler2DMS
+int tl_gbuffer_sample = 0; // the sample read, unless the pass is the per-sample one (gl_SampleID)
+#ifdef TL_MSAA_SAMPLE
+#define TL_GSAMPLE gl_SampleID
+#else
+#define TL_GSAMPLE tl_gbuffer_sample
+#endif
+#define tl_gfetch(s, p) texelFetch(s, p, TL_GSAMPLE)
+#define tl_gsize(s) textureSize(s)
+#else
+#define TL_GSAMPLER sampler2D
+#define tl_gfetch(s, p) texelFetch(s, p, 0)
+#define tl_gsize(s) textureSize(s, 0)
+#endif
+
 #ifdef TL_LIGHT_SHIFT
 // The light scale: the light pass reads the reduced depth and RT0 (light_reduce.frag.glsl)
 layout(binding = TL_UNIT_LIGHT_DEPTH) uniform sampler2D u_depth;
@@ -18,27 +35,35 @@ vec2 tl_reduced_pixel_centre(ivec2 px)
     return o == 16u ? (vec2(px) + 0.5) * k : vec2(px * (1 << TL_LIGHT_SHIFT) + ivec2(o & 3u, o >> 2)) + 0.5;
 }
 #else
-layout(binding = TL_UNIT_DEPTH) uniform sampler2D u_depth;
-layout(binding = TL_UNIT_RT0) uniform sampler2D u_rt0;
+layout(binding = TL_UNIT_DEPTH) uniform TL_GSAMPLER u_depth;
+layout(binding = TL_UNIT_RT0) uniform TL_GSAMPLER u_rt0;
 #endif
-layout(binding = TL_UNIT_RT1) uniform sampler2D u_rt1;
-layout(binding = TL_UNIT_FAT_POSITION) uniform sampler2D u_fat_position;
-layout(binding = TL_UNIT_FAT_NORMAL) uniform sampler2D u_fat_normal;
-layout(binding = TL_UNIT_FAT_ALBEDO) uniform sampler2D u_fat_albedo;
-layout(binding = TL_UNIT_FAT_MATERIAL) uniform sampler2D u_fat_material;
+layout(binding = TL_UNIT_RT1) uniform TL_GSAMPLER u_rt1;
+layout(binding = TL_UNIT_FAT_POSITION) uniform TL_GSAMPLER u_fat_position;
+layout(binding = TL_UNIT_FAT_NORMAL) uniform TL_GSAMPLER u_fat_normal;
+layout(binding = TL_UNIT_FAT_ALBEDO) uniform TL_GSAMPLER u_fat_albedo;
+layout(binding = TL_UNIT_FAT_MATERIAL) uniform TL_GSAMPLER u_fat_material;
+#ifdef TL_GBUFFER_SAMPLES
+#include "gbuffer_samples.glsl"
+#else
+bool tl_msaa_lit_here(ivec2 px) { return true; }
+float tl_gbuffer_depth(ivec2 px) { return texelFetch(u_depth, px, 0).r; }
+vec2 tl_gbuffer_point(ivec2 px) { return vec2(px) + 0.5; }
+#endif
 
 // The view-space position from depth; false for background pixels (depth at the clear value).
 bool tl_gbuffer_position(ivec2 px, out vec3 p)
 {
-    float d = texelFetch(u_depth, px, 0).r;
     p = vec3(0.0);
+    if (!tl_msaa_lit_here(px)) return false; // MSAA per-sample edges: the other light pass's pixel
+    float d = tl_gbuffer_depth(px);
     if (d == u_clear_depth) return false;
     float z = tl_depth_linearize(d, u_depth_params.x, u_depth_params.y, u_depth_params.z, u_depth_params.w > 0.5);
 #ifdef TL_LIGHT_SHIFT
     // a reduced texel is lit at the position of the pixel its depth and normal came from
     vec2 ndc = tl_reduced_pixel_centre(px) * u_inv_size * 2.0 - 1.0;
 #else
-    vec2 ndc = (vec2(px) + 0.5) * u_inv_size * 2.0 - 1.0;
+    vec2 ndc = tl_gbuffer_point(px) * u_inv_size * 2.0 - 1.0;
 #endif
     p = tl_view_position(z, ndc, u_ray_params);
     return true;
@@ -47,7 +72,7 @@ bool tl_gbuffer_position(ivec2 px, out vec3 p)
 // RT0 -> view-space normal and gloss.
 void tl_gbuffer_normal_gloss(ivec2 px, out vec3 n, out float gloss)
 {
-    vec4 t = texelFetch(u_rt0, px, 0);
+    vec4 t = tl_gfetch(u_rt0, px);
 #ifdef TL_RT0_RGB10A2
     uvec4 q = uvec4(t * vec4(1023.0, 1023.0, 1023.0, 3.0) + 0.5);
     vec4 ng = tl_rt0_decode_rgb10a2(q.x | (q.y << 10) | (q.z << 20) | (q.w << 30));
@@ -65,11 +90,13 @@ float tl_srgb_to_linear1(float c)
 
 // RT1: the pixel's luma and own chroma, the missing chroma from the 4 neighbours (which store it)
 // with the codec's edge-aware weights; neighbours outside the image are mirrored back in, as in
-// tl_albedo_reconstruct. Specular is stored as sqrt of its luminance (grey F0).
+// tl_albedo_reconstruct. Specular is stored as sqrt of its luminance (grey F0). A multisampled
+// RT1 (per-sample edges): the neighbours' same sample index, whose chroma parity is the
+// neighbour pixel's, as at one sample.
 void tl_rt1_read(ivec2 px, out vec3 albedo, out vec3 specular)
 {
-    ivec2 size = textureSize(u_rt1, 0);
-    uvec4 c = tl_unorm8_bytes(texelFetch(u_rt1, px, 0));
+    ivec2 size = tl_gsize(u_rt1);
+    uvec4 c = tl_unorm8_bytes(tl_gfetch(u_rt1, px));
     ivec2 offs[4] = ivec2[4](ivec2(-1, 0), ivec2(1, 0), ivec2(0, -1), ivec2(0, 1));
     ivec4 nl = ivec4(0), nc = ivec4(0);
     int count = 0;
@@ -80,7 +107,7 @@ void tl_rt1_read(ivec2 px, out vec3 albedo, out vec3 specular)
         if (q.x >= size.x) q.x = size.x - 2;
         if (q.y >= size.y) q.y = size.y - 2;
         if (q.x < 0 || q.y < 0) continue;
-        uvec4 b = tl_unorm8_bytes(texelFetch(u_rt1, q, 0));
+        uvec4 b = tl_unorm8_bytes(tl_gfetch(u_rt1, q));
         nl[count] = int(b.x);
         nc[count] = int(b.y);
         count++;
@@ -96,21 +123,21 @@ void tl_rt1_read(ivec2 px, out vec3 albedo, out vec3 specular)
 
 bool tl_fat_position(ivec2 px, out vec3 p)
 {
-    vec4 pos = texelFetch(u_fat_position, px, 0);
+    vec4 pos = tl_gfetch(u_fat_position, px);
     p = pos.xyz;
-    return pos.w > 0.5;
+    return pos.w > 0.5 && tl_msaa_lit_here(px);
 }
 
 void tl_fat_surface(ivec2 px, out vec3 n, out float gloss, out vec3 albedo, out vec3 specular)
 {
-    vec4 ng = texelFetch(u_fat_normal, px, 0);
+    vec4 ng = tl_gfetch(u_fat_normal, px);
     float l2 = dot(ng.xyz, ng.xyz);
     n = l2 > 0.0 ? ng.xyz * inversesqrt(l2) : vec3(0.0, 0.0, 1.0);
     gloss = ng.w;
-    albedo = texelFetch(u_fat_albedo, px, 0).rgb;
+    albedo = tl_gfetch(u_fat_albedo, px).rgb;
 #ifdef TL_SPECULAR_NONE
     specular = vec3(0.0);
 #else
-    specular = texelFetch(u_fat_material, px, 0).rgb;
+    specular = tl_gfetch(u_fat_material, px).rgb;
 #endif
 }

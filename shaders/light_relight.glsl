@@ -20,7 +20,11 @@ layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index
 layout(std430, binding = TL_SSBO_FIXUP) buffer tl_fixup_buffer { uvec4 tl_fixup_counters; uvec4 tl_fixup_entries[]; };
 layout(early_fragment_tests) in; // the counts and the list: only the pixels the depth test keeps
 
+#ifdef TL_LIGHT_SAMPLES // MSAA per-sample edges: the G-buffer is multisampled (light_msaa.glsl)
+layout(binding = TL_UNIT_RT0) uniform sampler2DMS u_rt0;
+#else
 layout(binding = TL_UNIT_RT0) uniform sampler2D u_rt0;
+#endif
 
 vec4 tl_relight_rt0(vec4 t) // normal and gloss, as the light pass decodes them
 {

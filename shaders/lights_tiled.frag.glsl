@@ -17,6 +17,10 @@ layout(location = TL_OUT_HDR) out vec4 o_color;
 
 void main()
 {
+#ifdef TL_GBUFFER_SAMPLES
+    // MSAA per-sample edges (gbuffer_samples.glsl): the other light pass's pixels keep their light
+    if (!tl_msaa_lit_here(ivec2(gl_FragCoord.xy))) discard;
+#endif
     tl_tiled_result r = tl_tiled_shade(ivec2(gl_FragCoord.xy));
 #ifdef TL_LIGHT_ACCUM
 #if defined(TL_SPECULAR_EXACT)

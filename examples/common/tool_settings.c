@@ -22,10 +22,14 @@ const char tl_tool_settings_help[] =
     "  --fxaa P              off, 12, 29 (default) or 39\n"
     "  --msaa N              1 (default: off), 2, 4 or 8 samples: thin-lpp's material pass, or forward,\n"
     "                        multisampled (with --fxaa off for MSAA alone)\n"
+    "  --msaa-lighting L     with --msaa: default (thin-lpp: material-pass; thin-deferred, fat:\n"
+    "                        per-sample-edges), material-pass or per-sample-edges (thin-lpp too: a\n"
+    "                        multisampled G-buffer, edge pixels lit per sample)\n"
     "  --exposure E          exposure before tone mapping (default 1; above 0, at most 1e6)\n";
 
 enum { S_MODE, S_NO_PREPASS, S_STRATEGY, S_DEPTH, S_RT0, S_LIGHT_BUFFER, S_LIGHT_FORMAT, S_LIGHTING, S_FRESNEL,
-       S_AMBIENT, S_TILE_SIZE, S_TILED_SHADING, S_FXAA, S_EXPOSURE, S_LIGHT_SCALE, S_TRANSPARENCY, S_MSAA };
+       S_AMBIENT, S_TILE_SIZE, S_TILED_SHADING, S_FXAA, S_EXPOSURE, S_LIGHT_SCALE, S_TRANSPARENCY, S_MSAA,
+       S_MSAA_LIGHTING };
 
 static const char *const depth_names[] = {"d24", "d32f-reversed", NULL};
 static const int depth_values[] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
@@ -45,6 +49,9 @@ static const char *const transparency_names[] = {"auto", "forward", "stipple", N
 static const int transparency_values[] = {TL_TRANSPARENCY_DEFAULT, TL_TRANSPARENCY_FORWARD, TL_TRANSPARENCY_STIPPLE};
 static const char *const msaa_names[] = {"1", "2", "4", "8", NULL};
 static const int msaa_values[] = {1, 2, 4, 8};
+static const char *const msaa_lighting_names[] = {"default", "material-pass", "per-sample-edges", NULL};
+static const int msaa_lighting_values[] = {TL_MSAA_LIGHTING_DEFAULT, TL_MSAA_LIGHTING_MATERIAL_PASS,
+                                           TL_MSAA_LIGHTING_SAMPLE_EDGES};
 static const char *const fxaa_names[] = {"off", "12", "29", "39", NULL};
 static const int fxaa_values[] = {TL_FXAA_OFF, TL_FXAA_12, TL_FXAA_29, TL_FXAA_39};
 
@@ -67,6 +74,7 @@ static const tl_opt settings_opts[] = {
     {"--tiled-shading", TL_OPT_TEXT, .id = S_TILED_SHADING, CHOICE(shading)},
     {"--fxaa", TL_OPT_TEXT, .id = S_FXAA, CHOICE(fxaa)},
     {"--msaa", TL_OPT_TEXT, .id = S_MSAA, CHOICE(msaa)},
+    {"--msaa-lighting", TL_OPT_TEXT, .id = S_MSAA_LIGHTING, CHOICE(msaa_lighting)},
     {"--exposure", TL_OPT_REAL, .id = S_EXPOSURE, .min = 0.0, .max = 1e6, .flags = TL_OPT_MIN_OPEN},
 };
 
@@ -106,6 +114,7 @@ int tl_tool_settings_apply(const char *tool, tl_renderer_desc *d, const tl_opt *
     case S_LIGHT_SCALE: d->options.light_scale = 1.0f / (float)u; break;
     case S_TRANSPARENCY: d->options.transparency = (tl_transparency)u; break;
     case S_MSAA: d->options.msaa = (uint32_t)u; break;
+    case S_MSAA_LIGHTING: d->options.msaa_lighting = (tl_msaa_lighting)u; break;
     default: return tl__settings_named(tool, d, o->id, v->text);
     }
     return 1;

@@ -343,17 +343,20 @@ static int vw_view_before_fxaa(vw_app *app, tl_renderer *r, const tl_camera *cam
     return 0;
 }
 
-/* MSAA in thin-lpp: the material pass writes HDR alpha 0.5 where a sample's light texel was
- * another surface's and it was re-lit from the lists; the resolved alpha is below 1 there. */
+/* MSAA: the pixels the method treats as edges, red over the darkened image. thin-lpp's material
+ * pass writes HDR alpha 0.5 where a sample's light texel was another surface's and it was re-lit
+ * from the lists (the resolved alpha is below 1 there); per-sample edges (thin-deferred, fat) mark
+ * the pixels lit per sample in msaa.edges. */
 static int vw_view_msaa_edges(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
 {
-    if (app->plan.msaa <= 1 || app->desc.options.mode != TL_MODE_THIN_LPP)
-        return vw_unavailable(app, "MSAA is off, or not thin-lpp's material pass");
-    const float *h = vw_read(app, r, TL_TARGET_HDR, 0);
-    if (!h || vw_view_final(app, r, cam, out)) return vw_unavailable(app, "no HDR target");
+    int per_sample = (app->plan.targets & TL_TARGET_BIT(TL_TARGET_MSAA_EDGES)) != 0;
+    if (app->plan.msaa <= 1 || (app->desc.options.mode != TL_MODE_THIN_LPP && !per_sample))
+        return vw_unavailable(app, "MSAA is off, or lit in neither the material pass nor per sample on edges");
+    const float *h = vw_read(app, r, per_sample ? TL_TARGET_MSAA_EDGES : TL_TARGET_HDR, 0);
+    if (!h || vw_view_final(app, r, cam, out)) return vw_unavailable(app, "no HDR target or edge mask");
     for (size_t i = 0, n = vw_pixels(app); i < n; i++) {
         uint8_t *p = out + 4 * i;
-        if (h[4 * i + 3] < 1.0f) p[0] = 255, p[1] = p[2] = 0;
+        if (per_sample ? h[4 * i] > 0.5f : h[4 * i + 3] < 1.0f) p[0] = 255, p[1] = p[2] = 0;
         else p[0] = (uint8_t)(p[0] / 3), p[1] = (uint8_t)(p[1] / 3), p[2] = (uint8_t)(p[2] / 3);
     }
     return 0;
@@ -572,8 +575,8 @@ static const vw_view_def vw_view_table[VW_VIEW_COUNT] = {
     [VW_VIEW_SSR] = {"ssr", "screen-space reflections: the term added to HDR, x/(1+x)", vw_view_ssr, NULL},
     [VW_VIEW_BLOOM] = {"bloom", "bloom: the glow added to HDR (first level, upsampled) times intensity, x/(1+x)",
                        vw_view_bloom, NULL},
-    [VW_VIEW_MSAA_EDGES] = {"msaa-edges", "MSAA (thin-lpp): red where a sample's light texel was another surface's and "
-                            "it was re-lit from the light lists; the image darkened", vw_view_msaa_edges, NULL},
+    [VW_VIEW_MSAA_EDGES] = {"msaa-edges", "MSAA: red where thin-lpp's material pass re-lit a sample from the light lists, "
+                            "or where per-sample edges lit a pixel per sample; the image darkened", vw_view_msaa_edges, NULL},
 };
 
 const char *vw_view_name(vw_view v) { return v < VW_VIEW_COUNT ? vw_view_table[v].name : "unknown"; }

@@ -87,6 +87,17 @@ typedef enum tl_tiled_shading {
     TL_TILED_SHADING_COUNT_       /**< number of values */
 } tl_tiled_shading;
 
+/** How a multisampled frame is lit (`msaa` above 1; docs/antialiasing.md). */
+typedef enum tl_msaa_lighting {
+    TL_MSAA_LIGHTING_DEFAULT = 0,      /**< thin-lpp: the material pass; thin-deferred and fat: per-sample edges */
+    TL_MSAA_LIGHTING_MATERIAL_PASS,    /**< thin-lpp: G-buffer and light buffer at 1x, the material pass multisampled */
+    TL_MSAA_LIGHTING_SAMPLE_EDGES,     /**< multisampled G-buffer (thin-lpp: and light buffer); edge pixels
+                                            (samples differing in depth, normal or material) lit per sample,
+                                            the rest per pixel (thin-lpp, thin-deferred, fat; volumes or the
+                                            fragment tiled pass) */
+    TL_MSAA_LIGHTING_COUNT_            /**< number of values */
+} tl_msaa_lighting;
+
 /** Storage of the light buffer's targets (thin-lpp). */
 typedef enum tl_light_format {
     TL_LIGHT_FORMAT_DEFAULT = 0, /**< = TL_LIGHT_FORMAT_RGBA16F */
@@ -318,9 +329,11 @@ typedef struct tl_renderer_options {
      *  context's GL_MAX_SAMPLES); 0 or 1, the default: off. thin-lpp keeps its G-buffer and light
      *  buffer at one sample and runs the material pass multisampled, each sample taking the light
      *  of the light-buffer texel that matches its surface (or re-lit where none does); forward
-     *  renders multisampled. The resolve tone-maps every sample before averaging. Planned without
-     *  (tl_frame_plan.msaa_reason says why) in thin-deferred and fat, at a light scale below 1 and
-     *  with the screen-space effects, which read a one-sample HDR or depth. */
+     *  renders multisampled; msaa_lighting picks per-sample lighting on edges instead (thin-lpp) or
+     *  as the default (thin-deferred, fat). The resolve tone-maps every sample before averaging.
+     *  Planned without (tl_frame_plan.msaa_reason says why) at a light scale below 1, with the
+     *  screen-space effects, which read a one-sample HDR or depth, and where msaa_lighting names a
+     *  method the mode lacks. */
     uint32_t msaa;
     tl_fxaa_preset fxaa;               /**< default 29 */
     float fxaa_edge_threshold;         /**< default 0.166 (relative local contrast) */
@@ -357,6 +370,9 @@ typedef struct tl_renderer_options {
     tl_vignette_desc vignette;         /**< vignette; zeroed: off */
     tl_shadow_desc shadows;            /**< the shadow atlas of lights with tl_light.shadow (docs/shadows.md) */
     tl_environment_options environment; /**< background colour and environment intensity; zeroed: black, 1 */
+    /** With `msaa` above 1: how the multisampled frame is lit (tl_msaa_lighting; zeroed: the
+     *  mode's default, today's behaviour). */
+    tl_msaa_lighting msaa_lighting;
 } tl_renderer_options;
 
 /** What tl_renderer_create() needs: the first options and what only creation decides (the
@@ -427,6 +443,8 @@ typedef enum tl_pass {
     TL_PASS_STIPPLE_RESOLVE, /**< "stipple-blend": transparent layers blended onto HDR with the light of their own pixels */
     TL_PASS_POINTS_LINES,  /**< points and lines, forward-lit after the opaque frame (1 pixel wide) */
     TL_PASS_SKY,           /**< the background colour or the environment where no geometry is drawn */
+    TL_PASS_MSAA_CLASSIFY, /**< MSAA per-sample edges: the pixels whose samples differ in depth or normal, into msaa.edges */
+    TL_PASS_LIGHTS_SAMPLES, /**< MSAA per-sample edges: the light pass again, per sample, on edge pixels only */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
@@ -461,6 +479,7 @@ typedef enum tl_target_id {
                                    the list the fix-up pass re-lights: up to an eighth of the frame's pixels */
     TL_TARGET_OPAQUE_DEPTH,   /**< stipple: the opaque surfaces' depth (depth's format); the material pass tests against it */
     TL_TARGET_DEPTH_MSAA,     /**< thin-lpp with MSAA: the multisampled depth the material pass tests against (depth's format) */
+    TL_TARGET_MSAA_EDGES,     /**< MSAA per-sample edges: R8, 1 where the pixel's samples differ in depth or normal */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -621,6 +640,8 @@ typedef struct tl_frame_stats {
     uint32_t shadow_maps_cached;        /**< atlas views kept from an earlier frame (nothing in range changed) */
     size_t shadow_atlas_bytes;          /**< the shadow atlas's memory (0 without casting lights) */
     double shadow_ms;                   /**< GPU time of the shadow-map rendering (timer query); -1: unavailable */
+    uint64_t msaa_edge_pixels;          /**< MSAA per-sample edges: pixels lit per sample (msaa-classify's count) */
+    double msaa_edge_fraction;          /**< msaa_edge_pixels over the frame's pixels */
 } tl_frame_stats;
 
 /** "gbuffer", "lights", ... ("unknown" out of range); the names of debug groups and timers. */

@@ -13,7 +13,7 @@
 #include "device.h"
 #include "targets.h"
 
-#define TL__PASS_MAX_PROGRAMS 3 /* programs of one pass (lights: one per light type) */
+#define TL__PASS_MAX_PROGRAMS 4 /* programs of one pass (lights: one per light type; lights-samples: + tiled) */
 #define TL__PASS_MAX_QUERIES 3  /* samples-passed queries a pass issues itself */
 #define TL__PASS_MAX_TARGETS 8  /* targets one pass declares (the G-buffer pass: depth, RT0, RT1, fat's, HDR) */
 

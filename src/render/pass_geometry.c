@@ -23,12 +23,14 @@ uint32_t tl__rt0_format(const tl_renderer_options *o)
     return o->rt0 == TL_RT0_RGB10A2 ? GL_RGB10_A2 : GL_RGBA8;
 }
 
-/* MSAA (docs/antialiasing.md): forward's depth and the HDR image of forward and thin-lpp are
- * multisampled; thin-lpp's G-buffer depth stays at one sample for the light pass, and the material
- * pass tests against a multisampled depth of its own that the depth pre-pass writes. */
+/* MSAA (docs/antialiasing.md): with per-sample edges (thin-deferred, fat; pass_msaa.c) the whole
+ * G-buffer is multisampled (tl__gbuffer_samples); otherwise forward's depth and the HDR image of
+ * forward and thin-lpp are multisampled; thin-lpp's G-buffer depth stays at one sample for the
+ * light pass, and the material pass tests against a multisampled depth of its own that the depth
+ * pre-pass writes. */
 static uint32_t tl__depth_samples(const tl_renderer_options *o)
 {
-    return o->mode == TL_MODE_FORWARD ? tl__msaa_samples(o) : 1u;
+    return o->mode == TL_MODE_FORWARD ? tl__msaa_samples(o) : tl__gbuffer_samples(o);
 }
 
 static const tl__target_def tl__target_depth = {TL__TARGET(DEPTH, "depth"), .format_of = tl__depth_format,
@@ -37,16 +39,17 @@ static const tl__target_def tl__target_depth_msaa = {TL__TARGET(DEPTH_MSAA, "dep
                                                      .samples_of = tl__msaa_samples, .store = TL__STORE_GBUFFER,
                                                      .depth = 1};
 static const tl__target_def tl__target_rt0 = {TL__TARGET(RT0, "rt0"), .format_of = tl__rt0_format,
-                                              .store = TL__STORE_GBUFFER};
-static const tl__target_def tl__target_rt1 = {TL__TARGET(RT1, "rt1"), .format = GL_RGBA8, .store = TL__STORE_GBUFFER};
+                                              .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
+static const tl__target_def tl__target_rt1 = {TL__TARGET(RT1, "rt1"), .format = GL_RGBA8,
+                                              .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_fat_position = {TL__TARGET(FAT_POSITION, "fat.position"), .format = GL_RGBA32F,
-                                                       .store = TL__STORE_GBUFFER};
+                                                       .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_fat_normal = {TL__TARGET(FAT_NORMAL, "fat.normal"), .format = GL_RGBA16F,
-                                                     .store = TL__STORE_GBUFFER};
+                                                     .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_fat_albedo = {TL__TARGET(FAT_ALBEDO, "fat.albedo"), .format = GL_RGBA16F,
-                                                     .store = TL__STORE_GBUFFER};
+                                                     .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_fat_material = {TL__TARGET(FAT_MATERIAL, "fat.material"), .format = GL_RGBA16F,
-                                                       .store = TL__STORE_GBUFFER};
+                                                       .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_hdr = {TL__TARGET(HDR, "hdr"), .format = GL_RGBA16F, .samples_of = tl__msaa_samples};
 
 /* Every geometry pass that decides visibility tests LEQUAL (GEQUAL reversed): of fragments at the
@@ -73,7 +76,9 @@ static tl__pipeline tl__geometry_state(const tl__plan_input *in, tl__depth_test 
 
 tl_target_id tl__shading_depth(const tl__plan_input *in)
 {
-    return in->mode->material_pass && in->msaa > 1 ? TL_TARGET_DEPTH_MSAA : TL_TARGET_DEPTH;
+    /* per-sample edges: the G-buffer's own depth is multisampled (pass_msaa.c) */
+    return in->mode->material_pass && in->msaa > 1 && !tl__msaa_sample_edges(in->o) ? TL_TARGET_DEPTH_MSAA
+                                                                                     : TL_TARGET_DEPTH;
 }
 
 static void tl__prepass_declare(const tl__plan_input *in, tl__pass_decl *d)
@@ -190,15 +195,17 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     out->used[0] = 1;
-    char upsample[64] = "";
+    char upsample[96] = "";
     if ((d->samples & TL__B(LIGHT_DIFFUSE)) && (d->samples & TL__B(LIGHT_RT0)))
         snprintf(upsample, sizeof upsample, " TL_UPSAMPLE=%u%s%s", (unsigned)in->light_shift,
                  in->o->rt0 == TL_RT0_RGB10A2 ? " TL_RT0_RGB10A2" : "",
                  (d->reads & TL__B(LIGHT_LISTS)) ? " TL_RELIGHT_TILES" : "");
     if (in->stipple && (d->samples & TL__B(LIGHT_DIFFUSE)))
         snprintf(upsample, sizeof upsample, " TL_STIPPLE %s", in->rt0_define);
-    if (d->depth_target == TL_TARGET_DEPTH_MSAA && (d->samples & TL__B(LIGHT_DIFFUSE)))
-        snprintf(upsample, sizeof upsample, " TL_MSAA_LIGHT %s%s%s", in->rt0_define,
+    char samples[32] = ""; /* per-sample edges: the G-buffer and light buffer multisampled (pass_msaa.c) */
+    if (tl__msaa_sample_edges(in->o)) snprintf(samples, sizeof samples, "TL_LIGHT_SAMPLES=%u ", (unsigned)in->msaa);
+    if ((d->depth_target == TL_TARGET_DEPTH_MSAA || samples[0]) && (d->samples & TL__B(LIGHT_DIFFUSE)))
+        snprintf(upsample, sizeof upsample, " TL_MSAA_LIGHT %s%s%s%s", samples, in->rt0_define,
                  (d->reads & TL__B(LIGHT_LISTS)) ? " TL_RELIGHT_TILES" : "",
                  tl__depth_format(in->o) == GL_DEPTH_COMPONENT32F ? " TL_DEPTH_FLOAT" : "");
     snprintf(out->slot[0], sizeof out->slot[0], "%s%s%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",

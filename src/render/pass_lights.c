@@ -11,7 +11,9 @@
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
-/* The light buffer (thin-lpp): R11G11B10F keeps each value to 6 or 5 mantissa bits in 4 bytes. */
+/* The light buffer (thin-lpp): R11G11B10F keeps each value to 6 or 5 mantissa bits in 4 bytes.
+ * With MSAA's per-sample edges it has the G-buffer's samples (pass_msaa.c): an edge pixel's light
+ * per sample, every other pixel's in all its samples. */
 static uint32_t tl__light_format(const tl_renderer_options *o)
 {
     return o->light_format == TL_LIGHT_FORMAT_R11G11B10F ? GL_R11F_G11F_B10F : GL_RGBA16F;
@@ -19,12 +21,15 @@ static uint32_t tl__light_format(const tl_renderer_options *o)
 
 static const tl__target_def tl__target_light_diffuse = {TL__TARGET(LIGHT_DIFFUSE, "light.diffuse"),
                                                         .format_of = tl__light_format, .shift_of = tl__light_shift,
+                                                        .samples_of = tl__gbuffer_samples,
                                                         .store = TL__STORE_LIGHT};
 static const tl__target_def tl__target_light_specular = {TL__TARGET(LIGHT_SPECULAR, "light.specular"),
                                                          .format_of = tl__light_format, .shift_of = tl__light_shift,
+                                                        .samples_of = tl__gbuffer_samples,
                                                         .store = TL__STORE_LIGHT};
 static const tl__target_def tl__target_light_fresnel = {TL__TARGET(LIGHT_FRESNEL, "light.fresnel"),
                                                         .format_of = tl__light_format, .shift_of = tl__light_shift,
+                                                        .samples_of = tl__gbuffer_samples,
                                                         .store = TL__STORE_LIGHT};
 
 /* What the light pass reads and writes in this mode, whatever the strategy (the tiled pass too). */
@@ -39,6 +44,10 @@ void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
     d->samples = m->light_samples & d->reads;
     d->neighbourhood = d->samples & TL__B(RT1); /* chroma from the four neighbours */
     if (d->writes & TL__B(HDR)) d->reads |= TL__B(HDR); /* shading adds to it */
+    if (tl__msaa_sample_edges(in->o)) { /* which pixels each of the two light passes lights (pass_msaa.c) */
+        d->reads |= TL__B(MSAA_EDGES);
+        d->samples |= TL__B(MSAA_EDGES);
+    }
     if (in->light_shift) { /* the light scale: the reduced depth and RT0 (pass_light_reduce.c) */
         uint32_t full = TL__B(DEPTH) | TL__B(RT0), reduced = TL__B(LIGHT_DEPTH) | TL__B(LIGHT_RT0) | TL__B(LIGHT_OFFSET);
         d->reads = (d->reads & ~full) | reduced;
@@ -54,7 +63,9 @@ void tl__light_pass_defines(const tl__plan_input *in, const tl__pass_decl *d, ch
     int rt0 = (d->reads & (TL__B(RT0) | TL__B(LIGHT_RT0))) != 0;
     char shift[32] = "";
     if (in->light_shift) snprintf(shift, sizeof shift, " TL_LIGHT_SHIFT=%u", (unsigned)in->light_shift);
-    snprintf(out, size, "%s%s%s", rt0 ? " " : "", rt0 ? in->rt0_define : "", shift);
+    char samples[32] = ""; /* MSAA per-sample edges: a multisampled G-buffer (pass_msaa.c) */
+    if (tl__msaa_sample_edges(in->o)) snprintf(samples, sizeof samples, " TL_GBUFFER_SAMPLES=%u", (unsigned)in->msaa);
+    snprintf(out, size, "%s%s%s%s", rt0 ? " " : "", rt0 ? in->rt0_define : "", shift, samples);
 }
 
 static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)

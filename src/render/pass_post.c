@@ -46,7 +46,7 @@ static void tl__tonemap_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__tonemap_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     out->used[0] = 1;
-    if (in->msaa > 1 && (in->mode->forward || in->mode->material_pass)) /* HDR is multisampled (pass_geometry.c) */
+    if (in->msaa > 1) /* HDR is multisampled (pass_geometry.c) */
         snprintf(out->slot[0], sizeof out->slot[0], "TL_MSAA_SAMPLES=%u", (unsigned)in->msaa);
     else
         snprintf(out->slot[0], sizeof out->slot[0], "%s", (d->samples & TL__B(BLOOM)) ? "TL_BLOOM" : "");

@@ -27,7 +27,7 @@ static void tl__cull_declare(const tl__plan_input *in, tl__pass_decl *d)
     if (!tl__tiled(in)) return;
     /* MSAA in thin-lpp: the tiles' bounds cover every sample's depth (the multisampled depth the
      * material pass tests against), so the edge samples it re-lights from the lists miss no light */
-    d->reads = d->samples = in->msaa > 1 && in->mode->material_pass ? TL__B(DEPTH_MSAA) : TL__B(DEPTH);
+    d->reads = d->samples = TL_TARGET_BIT(tl__shading_depth(in)); /* depth.msaa, or DEPTH (per-sample edges) */
     d->writes = TL__B(LIGHT_LISTS);
     d->compute = 1;
     d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_TILES;

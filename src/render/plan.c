@@ -384,9 +384,7 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     if (d.options.msaa > 1) {
         const char *why = tl__msaa_refusal(&d.options);
         snprintf(p->pub.msaa_reason, sizeof p->pub.msaa_reason, "%s%s", why ? "asked, but " : "",
-                 why                     ? why
-                 : in.mode->material_pass ? "material pass multisampled over the 1x G-buffer and light buffer"
-                                          : "forward: every pass multisampled");
+                 why ? why : tl__msaa_how(&d.options));
     }
     p->pub.transparency = in.stipple ? TL_TRANSPARENCY_STIPPLE : TL_TRANSPARENCY_FORWARD;
     snprintf(p->pub.transparency_reason, sizeof p->pub.transparency_reason, "%s", in.transparency_reason);

@@ -152,6 +152,9 @@ static void tl__slot_read(tl__device *dev, tl__queries *r, tl__query_slot *q)
     }
     if (p->light_lists) tl__tiles_collect(dev, r->tiles, st);
     if (p->light_fixup) tl__fixup_collect(dev, r->fixup, p->width * p->height, st);
+    /* MSAA per-sample edges: msaa-classify writes the edge pixels alone (pass_msaa.c) */
+    st->msaa_edge_pixels = st->pass_fragments[TL_PASS_MSAA_CLASSIFY];
+    st->msaa_edge_fraction = p->width && p->height ? (double)st->msaa_edge_pixels / ((double)p->width * p->height) : 0.0;
     st->gpu_valid = 1;
     q->pending = 0;
 }

@@ -56,10 +56,31 @@ uint32_t tl__target_samples(const tl__target_def *def, const tl_renderer_options
     return def && def->samples_of ? def->samples_of(o) : 1u;
 }
 
+/* The MSAA method the options ask for in their mode (the default: thin-lpp's material pass, the
+ * deferred modes' per-sample edges; forward, which shades every sample, counts as the first). */
+static tl_msaa_lighting tl__msaa_method(const tl_renderer_options *o)
+{
+    if (o->msaa_lighting != TL_MSAA_LIGHTING_DEFAULT) return o->msaa_lighting;
+    int deferred = o->mode == TL_MODE_THIN_DEFERRED || o->mode == TL_MODE_FAT;
+    return deferred ? TL_MSAA_LIGHTING_SAMPLE_EDGES : TL_MSAA_LIGHTING_MATERIAL_PASS;
+}
+
+/* Why per-sample lighting on edges cannot be planned (NULL: it can). */
+static const char *tl__sample_edges_refusal(const tl_renderer_options *o)
+{
+    if (o->mode == TL_MODE_FORWARD) return "forward shades every sample: no per-sample-edges";
+    if (o->tiled_shading == TL_TILED_SHADING_COMPUTE && o->light_strategy != TL_LIGHT_STRATEGY_VOLUMES)
+        return "per-sample-edges has no compute tiled pass: fragment shading or volumes";
+    return NULL;
+}
+
 const char *tl__msaa_refusal(const tl_renderer_options *o)
 {
     if (o->msaa <= 1u) return NULL;
-    if (o->mode != TL_MODE_THIN_LPP && o->mode != TL_MODE_FORWARD) return "thin-deferred and fat have no multisampled G-buffer";
+    tl_msaa_lighting m = tl__msaa_method(o);
+    if (m == TL_MSAA_LIGHTING_SAMPLE_EDGES && tl__sample_edges_refusal(o)) return tl__sample_edges_refusal(o);
+    if (m == TL_MSAA_LIGHTING_MATERIAL_PASS && o->mode != TL_MODE_THIN_LPP && o->mode != TL_MODE_FORWARD)
+        return "thin-deferred and fat have no material pass (msaa-lighting per-sample-edges)";
     if (tl__light_shift(o)) return "the reduced light buffer's upsample runs at one sample";
     if (o->ssao.method != TL_SSAO_OFF || o->fog.mode != TL_FOG_OFF || o->dof.enabled || o->bloom.enabled || o->ssr.enabled ||
         o->vignette.enabled)
@@ -67,7 +88,21 @@ const char *tl__msaa_refusal(const tl_renderer_options *o)
     return NULL;
 }
 
+const char *tl__msaa_how(const tl_renderer_options *o)
+{
+    if (o->mode == TL_MODE_FORWARD) return "forward: every pass multisampled";
+    if (tl__msaa_sample_edges(o)) return "per-sample edges: G-buffer multisampled, edge pixels lit per sample";
+    return "material pass multisampled over the 1x G-buffer and light buffer";
+}
+
 uint32_t tl__msaa_samples(const tl_renderer_options *o) { return o->msaa > 1u && !tl__msaa_refusal(o) ? o->msaa : 1u; }
+
+int tl__msaa_sample_edges(const tl_renderer_options *o)
+{
+    return tl__msaa_samples(o) > 1u && o->mode != TL_MODE_FORWARD && tl__msaa_method(o) == TL_MSAA_LIGHTING_SAMPLE_EDGES;
+}
+
+uint32_t tl__gbuffer_samples(const tl_renderer_options *o) { return tl__msaa_sample_edges(o) ? o->msaa : 1u; }
 
 uint32_t tl__light_shift(const tl_renderer_options *o)
 {

@@ -56,6 +56,11 @@ uint32_t tl__target_samples(const tl__target_def *def, const tl_renderer_options
  * none were asked for), and the samples of the multisampled targets (1: no MSAA). */
 const char *tl__msaa_refusal(const tl_renderer_options *o);
 uint32_t tl__msaa_samples(const tl_renderer_options *o);
+/* How planned MSAA lights the frame (tl_frame_plan.msaa_reason); 1 when it is per-sample lighting
+ * on edges (a multisampled G-buffer: tl__gbuffer_samples its samples, else 1). */
+const char *tl__msaa_how(const tl_renderer_options *o);
+int tl__msaa_sample_edges(const tl_renderer_options *o);
+uint32_t tl__gbuffer_samples(const tl_renderer_options *o);
 
 /* The light buffer's shift (light_scale 1, 0.5, 0.25: 0, 1, 2): thin-lpp only, every other mode 0. */
 uint32_t tl__light_shift(const tl_renderer_options *o);

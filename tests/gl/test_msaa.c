@@ -36,6 +36,13 @@ TL_TEST(msaa_off_plans_todays_frame)
             TL_CHECK(memcmp(&a, &b, sizeof a) == 0); /* 0 bytes differ */
             TL_CHECK_EQ_U(a.msaa, 1u);
             TL_CHECK(!(a.targets & TL_TARGET_BIT(TL_TARGET_DEPTH_MSAA)));
+            TL_CHECK(!(a.targets & TL_TARGET_BIT(TL_TARGET_MSAA_EDGES)));
+            /* the method alone changes nothing while MSAA is off */
+            for (int l = 0; l < TL_MSAA_LIGHTING_COUNT_; l++) {
+                d.options.msaa_lighting = (tl_msaa_lighting)l;
+                TL_CHECK(tl_frame_plan_build(&d, &f, &b) == TL_OK);
+                TL_CHECK(memcmp(&a, &b, sizeof a) == 0);
+            }
             for (int t = 0; t < TL_TARGET_COUNT; t++) TL_CHECK(!(a.targets & TL_TARGET_BIT(t)) || a.target_info[t].samples == 1);
         }
 }
@@ -45,6 +52,43 @@ static int has_pass(const tl_frame_plan *p, tl_pass pass)
     for (size_t i = 0; i < p->pass_count; i++)
         if (p->passes[i].pass == pass) return 1;
     return 0;
+}
+
+/* Per-sample edges (thin-deferred, fat: the default there, and by name; thin-lpp by name): the
+ * whole G-buffer (thin-lpp: and its light buffer), depth and HDR at n samples, the one-sample edge
+ * mask, the classify and per-sample light passes, with volumes and tiles; no depth.msaa. */
+static void check_sample_edges_plan(const tl_scene_feature_set *f, uint32_t n, tl_render_mode mode)
+{
+    const uint32_t fat = TL_TARGET_BIT(TL_TARGET_FAT_POSITION) | TL_TARGET_BIT(TL_TARGET_FAT_NORMAL) |
+                         TL_TARGET_BIT(TL_TARGET_FAT_ALBEDO) | TL_TARGET_BIT(TL_TARGET_FAT_MATERIAL),
+                   lpp = TL_TARGET_BIT(TL_TARGET_RT0) | TL_TARGET_BIT(TL_TARGET_LIGHT_DIFFUSE) |
+                         TL_TARGET_BIT(TL_TARGET_LIGHT_SPECULAR);
+    const uint32_t gbuffer = mode == TL_MODE_FAT        ? fat
+                             : mode == TL_MODE_THIN_LPP ? lpp
+                                                        : TL_TARGET_BIT(TL_TARGET_RT0) | TL_TARGET_BIT(TL_TARGET_RT1);
+    for (int k = 0; k < 4; k++) {
+        tl_frame_plan p;
+        tl_renderer_desc d = {.width = 1281, .height = 721, .options.msaa = n, .options.mode = mode};
+        d.options.light_strategy = k & 1 ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
+        int named = (k & 2) || mode == TL_MODE_THIN_LPP;
+        d.options.msaa_lighting = named ? TL_MSAA_LIGHTING_SAMPLE_EDGES : TL_MSAA_LIGHTING_DEFAULT;
+        TL_CHECK(tl_frame_plan_build(&d, f, &p) == TL_OK);
+        TL_CHECK_EQ_U(p.msaa, n);
+        TL_CHECK(strstr(p.msaa_reason, "per-sample edges") != NULL);
+        TL_CHECK((p.targets & gbuffer) == gbuffer);
+        for (int t = 0; t < TL_TARGET_COUNT; t++)
+            if ((gbuffer | TL_TARGET_BIT(TL_TARGET_DEPTH) | TL_TARGET_BIT(TL_TARGET_HDR)) & TL_TARGET_BIT(t))
+                TL_CHECK_EQ_U(p.target_info[t].samples, n);
+        TL_CHECK(p.targets & TL_TARGET_BIT(TL_TARGET_MSAA_EDGES));
+        TL_CHECK_EQ_U(p.target_info[TL_TARGET_MSAA_EDGES].samples, 1u);
+        TL_CHECK(!(p.targets & TL_TARGET_BIT(TL_TARGET_DEPTH_MSAA)));
+        TL_CHECK(has_pass(&p, TL_PASS_MSAA_CLASSIFY) && has_pass(&p, TL_PASS_LIGHTS_SAMPLES));
+        TL_CHECK(has_pass(&p, k & 1 ? TL_PASS_LIGHTS_TILED : TL_PASS_LIGHTS));
+        TL_CHECK(has_pass(&p, TL_PASS_MATERIAL) == (mode == TL_MODE_THIN_LPP) && !has_pass(&p, TL_PASS_DEPTH_PREPASS));
+        char text[8192];
+        tl_frame_plan_format(&p, text, sizeof text);
+        TL_CHECK(strstr(text, "msaa: ") && strstr(text, "per-sample edges") && strstr(text, "msaa.edges"));
+    }
 }
 
 TL_TEST(msaa_plan_targets_and_refusals)
@@ -81,12 +125,30 @@ TL_TEST(msaa_plan_targets_and_refusals)
         TL_CHECK_EQ_U(p.target_info[TL_TARGET_DEPTH].samples, n);
         TL_CHECK_EQ_U(p.target_info[TL_TARGET_HDR].samples, n);
         TL_CHECK(!(p.targets & TL_TARGET_BIT(TL_TARGET_DEPTH_MSAA)));
+        /* thin-lpp's material pass asked for by name is the default's plan */
+        tl_frame_plan q;
+        d.options.mode = TL_MODE_THIN_LPP;
+        TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
+        d.options.msaa_lighting = TL_MSAA_LIGHTING_MATERIAL_PASS;
+        TL_CHECK(tl_frame_plan_build(&d, &f, &q) == TL_OK);
+        TL_CHECK(memcmp(&p, &q, sizeof p) == 0);
+        d.options.msaa_lighting = TL_MSAA_LIGHTING_DEFAULT;
+        check_sample_edges_plan(&f, n, TL_MODE_THIN_LPP);
+        check_sample_edges_plan(&f, n, TL_MODE_THIN_DEFERRED);
+        check_sample_edges_plan(&f, n, TL_MODE_FAT);
     }
-    /* planned without, and said why: the deferred modes, a reduced light buffer, effects */
-    tl_renderer_desc refused[5] = {{.options.mode = TL_MODE_FAT}, {.options.mode = TL_MODE_THIN_DEFERRED},
-                                   {.options.light_scale = 0.5f}, {.options.ssao.method = TL_SSAO_DISC},
-                                   {.options.bloom.enabled = 1}};
-    for (int i = 0; i < 5; i++) {
+    /* planned without, and said why: a method a mode lacks, per-sample edges with the compute tiled
+     * pass or a reduced light buffer, a reduced light buffer, effects */
+    tl_renderer_desc refused[9] = {
+        {.options.mode = TL_MODE_FAT, .options.msaa_lighting = TL_MSAA_LIGHTING_MATERIAL_PASS},
+        {.options.mode = TL_MODE_THIN_DEFERRED, .options.msaa_lighting = TL_MSAA_LIGHTING_MATERIAL_PASS},
+        {.options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES, .options.light_scale = 0.5f},
+        {.options.mode = TL_MODE_FORWARD, .options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES},
+        {.options.mode = TL_MODE_FAT, .options.light_strategy = TL_LIGHT_STRATEGY_TILED,
+         .options.tiled_shading = TL_TILED_SHADING_COMPUTE},
+        {.options.mode = TL_MODE_FAT, .options.ssao.method = TL_SSAO_DISC},
+        {.options.light_scale = 0.5f}, {.options.ssao.method = TL_SSAO_DISC}, {.options.bloom.enabled = 1}};
+    for (int i = 0; i < 9; i++) {
         tl_frame_plan p, off;
         refused[i].options.msaa = 4;
         TL_CHECK(tl_frame_plan_build(&refused[i], &f, &p) == TL_OK);
@@ -237,12 +299,14 @@ static double srgb_decode(uint8_t v)
 typedef struct frame {
     uint8_t out[W * H * 4];
     float *hdr;
-    double relit;
+    double relit, edges; /* relit_fraction (material pass), msaa_edge_fraction (per-sample edges) */
 } frame;
 
-static int render_frame(const tl_scene *s, tl_render_mode mode, tl_light_strategy st, uint32_t msaa, frame *f)
+static int render_frame(const tl_scene *s, tl_render_mode mode, tl_light_strategy st, uint32_t msaa, tl_msaa_lighting how,
+                        frame *f)
 {
     tl_renderer_desc d = {.width = W, .height = H};
+    d.options.msaa_lighting = how;
     d.options.mode = mode;
     d.options.light_strategy = st;
     d.options.msaa = msaa;
@@ -253,9 +317,9 @@ static int render_frame(const tl_scene *s, tl_render_mode mode, tl_light_strateg
     int ok = r && tl_renderer_read_output(r, f->out, &size) == TL_OK;
     f->hdr = ok ? tl_test_read_target(r, TL_TARGET_HDR, (size_t)W * H) : NULL;
     tl_frame_stats st_out; /* the count of a frame waited for */
-    f->relit = ok && tl_renderer_render(r, NULL, &st_out) == TL_OK && tl_renderer_wait(r, &st_out) == TL_OK
-                   ? st_out.relit_fraction
-                   : 0.0;
+    int waited = ok && tl_renderer_render(r, NULL, &st_out) == TL_OK && tl_renderer_wait(r, &st_out) == TL_OK;
+    f->relit = waited ? st_out.relit_fraction : 0.0;
+    f->edges = waited ? st_out.msaa_edge_fraction : 0.0;
     tl_renderer_destroy(r);
     return ok && f->hdr;
 }
@@ -273,12 +337,17 @@ static int interior(const tri_scene *t, int i, int j)
 
 /* Edge pixels: the resolved coverage (from the tone-mapped linear output between the two surfaces'
  * interior values) against the analytic area; interior pixels: HDR against the one-sample frame. */
-static void check_triangle(tl_render_mode mode, tl_light_strategy st, uint32_t n)
+static void check_triangle(tl_render_mode mode, tl_light_strategy st, uint32_t n, int light_only, tl_msaa_lighting how)
 {
     static tri_scene t;
     tri_scene_init(&t);
+    /* light_only: both surfaces of one albedo, so an edge pixel's mix is the two lights' alone */
+    if (light_only) {
+        t.mat[0].albedo[0] = t.mat[0].albedo[1] = t.mat[0].albedo[2] = 0.3f;
+        t.mat[1] = t.mat[0];
+    }
     static frame one, ms;
-    if (!render_frame(&t.s, mode, st, 1, &one) || !render_frame(&t.s, mode, st, n, &ms)) {
+    if (!render_frame(&t.s, mode, st, 1, TL_MSAA_LIGHTING_DEFAULT, &one) || !render_frame(&t.s, mode, st, n, how, &ms)) {
         TL_CHECK(!"rendered");
         free(one.hdr), free(ms.hdr), one.hdr = ms.hdr = NULL;
         return;
@@ -301,7 +370,10 @@ static void check_triangle(tl_render_mode mode, tl_light_strategy st, uint32_t n
             inside++;
         }
     /* one 8-bit step of the output, in coverage: the steepest sRGB step between the two values */
-    double step = (srgb_decode(255) - srgb_decode(254)) / (lin_in - lin_out);
+    double step = (srgb_decode(255) - srgb_decode(254)) / fabs(lin_in - lin_out);
+    /* partial: edge pixels with sample positions on both sides; mixed: those resolved strictly
+     * between the two surfaces' values, by more than a step */
+    size_t partial = 0, mixed = 0;
     for (int j = 0; j < H; j++)
         for (int i = 0; i < W; i++) {
             double c = coverage(&t, i, j);
@@ -311,14 +383,23 @@ static void check_triangle(tl_render_mode mode, tl_light_strategy st, uint32_t n
             if (fabs(got - c) > worst_edge) worst_edge = fabs(got - c);
             double sc = sampled_coverage(&t, i, j, n, pos);
             if (fabs(got - sc) > worst_sampled) worst_sampled = fabs(got - sc);
+            partial += sc > 0.0 && sc < 1.0;
+            mixed += sc > 0.0 && sc < 1.0 && got > step && got < 1.0 - step;
             edges++;
         }
-    printf("%s/%s msaa %u: %zu edge pixels, worst |resolved - analytic coverage| %.3f (1/samples %.3f), "
-           "|resolved - covered sample positions| %.4f (one 8-bit step %.4f); %zu interior pixels, worst relative "
-           "HDR difference %.2g; re-lit %.2f %%\n",
-           tl_render_mode_name(mode), tl_light_strategy_name(st), n, edges, worst_edge, 1.0 / n, worst_sampled, step,
-           inside, worst_interior, 100.0 * ms.relit);
-    TL_CHECK(lin_in > lin_out + 0.3 && edges > 200 && inside > (size_t)W * H / 2);
+    printf("%s/%s msaa %u%s%s: %zu edge pixels (%zu with samples on both sides, %zu mixed), worst |resolved - analytic coverage| %.3f (1/samples "
+           "%.3f), |resolved - covered sample positions| %.4f (one 8-bit step %.4f); %zu interior pixels, worst "
+           "relative HDR difference %.2g; re-lit %.2f %%, per-sample edges %.2f %%\n",
+           tl_render_mode_name(mode), tl_light_strategy_name(st), n, how == TL_MSAA_LIGHTING_SAMPLE_EDGES ? " per-sample edges" : "",
+           light_only ? " (light only)" : "", edges, partial, mixed,
+           worst_edge, 1.0 / n, worst_sampled, step, inside, worst_interior, 100.0 * ms.relit, 100.0 * ms.edges);
+    TL_CHECK(fabs(lin_in - lin_out) > (light_only ? 0.1 : 0.3) && edges > 200 && inside > (size_t)W * H / 2);
+    /* a pixel with samples on both surfaces is a mix of both (its samples lit apart), not either alone */
+    TL_CHECK(partial > 50 && mixed == partial);
+    if (how == TL_MSAA_LIGHTING_SAMPLE_EDGES) { /* those pixels, and no other, lit per sample */
+        double classified = ms.edges * W * H;
+        TL_CHECK(classified > partial - 0.5 && classified < partial + 0.5);
+    }
     /* every sample has its own surface's colour: the resolve is the covered positions' share */
     TL_CHECK_LE(worst_sampled, step);
     /* two positions sample a corner pixel's area coarsely (0.68 measured); from 4 on, 1/samples holds */
@@ -360,9 +441,26 @@ TL_TEST(msaa_triangle_edge_coverage_and_interior_pixels)
     for (uint32_t n = 2; n <= top; n *= 2)
         for (int k = 0; k < 2; k++) {
             tl_light_strategy st = k ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
-            check_triangle(TL_MODE_THIN_LPP, st, n);
-            check_triangle(TL_MODE_FORWARD, st, n);
+            check_triangle(TL_MODE_THIN_LPP, st, n, 0, TL_MSAA_LIGHTING_DEFAULT);
+            check_triangle(TL_MODE_FORWARD, st, n, 0, TL_MSAA_LIGHTING_DEFAULT);
         }
+}
+
+/* MSAA with per-sample lighting on edges (thin-lpp, thin-deferred, fat): the same coverage and interior
+ * checks, and the edge pixels of two surfaces that differ only in their light resolve to the mix
+ * of both lights (a pixel lit once, from one surface, would be either alone). */
+TL_TEST(msaa_sample_edges_triangle_coverage_and_per_sample_light)
+{
+    if (!ensure_context()) return;
+    uint32_t top = max_samples();
+    const tl_render_mode modes3[3] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT};
+    for (uint32_t n = 2; n <= top; n *= 2)
+        for (int k = 0; k < 2; k++)
+            for (int m = 0; m < 3; m++) {
+                tl_light_strategy st = k ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
+                check_triangle(modes3[m], st, n, 0, TL_MSAA_LIGHTING_SAMPLE_EDGES);
+                check_triangle(modes3[m], st, n, 1, TL_MSAA_LIGHTING_SAMPLE_EDGES);
+            }
 }
 
 /* ---- run-time switches ------------------------------------------------------------------------------ */

@@ -293,6 +293,33 @@ TL_TEST(viewer_light_scale_fixed_without_dynamic_never_above_chosen)
     check_dynamic("--light-scale 0.25 --dynamic-light-scale --light-budget-ms 1e6", 0.25f, 0.25f);
 }
 
+/* MSAA with per-sample lighting on edges (fat, --msaa 4): the final view is thinlight-render's
+ * image, and the msaa-edges view marks in red the pixels msaa-classify lit per sample (msaa.edges:
+ * some, never most of the frame). */
+TL_TEST(viewer_msaa_sample_edges_view)
+{
+    char cmd[2048];
+    snprintf(cmd, sizeof cmd,
+             "'%s' default --size %ux%u --mode fat --msaa 4 --fxaa off --light-strategy tiled -o '%s/%s' 2>/dev/null",
+             TL_RENDER, VW_W, VW_H, TL_WORK, "render_msaa_fat.png");
+    TL_CHECK(run(cmd) == 0);
+    TL_CHECK(viewer("--size 320x180 --mode fat --msaa 4 --fxaa off", "final_msaa_fat.png") == 0);
+    TL_CHECK(viewer("--size 320x180 --mode fat --msaa 4 --fxaa off --view msaa-edges", "edges_msaa_fat.png") == 0);
+    image ref = load("render_msaa_fat.png"), fin = load("final_msaa_fat.png"), e = load("edges_msaa_fat.png");
+    TL_CHECK(fin.px && ref.px && compare(&fin, &ref).max_abs == 0.0);
+    size_t red = 0, n = (size_t)VW_W * VW_H;
+    for (uint32_t y = 0; e.px && y < VW_H; y++)
+        for (uint32_t x = 0; x < VW_W; x++) {
+            const uint8_t *p = at(&e, x, y);
+            red += p[0] == 255 && p[1] == 0 && p[2] == 0;
+        }
+    printf("msaa-edges, fat per-sample edges: %zu of %zu pixels red\n", red, n);
+    TL_CHECK(red > 50 && red < n / 5);
+    release(&ref);
+    release(&fin);
+    release(&e);
+}
+
 /* MSAA (key M, --msaa): thin-lpp's final view is thinlight-render's image with the same samples,
  * and the msaa-edges view marks in red the pixels whose material pass re-lit a sample (edge pixels:
  * 11 % of the crypt at 320x180, never most of the frame); without MSAA the view is the placeholder. */
