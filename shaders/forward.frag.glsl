@@ -14,6 +14,9 @@
 #ifndef TL_DEPTH_ONLY
 #include "tiles.glsl" // the lights block (and, for Forward+, the tile lists)
 layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
+#if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD)
+#include "material_models.glsl" // per-material models: each light's exact terms
+#endif
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
 #ifdef TL_SSAO_AMBIENT
@@ -28,6 +31,9 @@ void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout 
     diffuse += l.color_type.rgb * t.x;
     specular += l.color_type.rgb * t.y;
     fresnel += l.color_type.rgb * t.z;
+#if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD)
+    tl_model_light_add(l, p, n, v);
+#endif
 }
 #endif
 
@@ -86,9 +92,14 @@ void main()
 #ifdef TL_SSAO_DIFFUSE
     diffuse *= ao;
 #endif
-    vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + s.specular * specular + fresnel + s.emissive;
+    vec3 ambient = u_ambient * (s.occlusion * ao);
 #else
-    vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + s.specular * specular + fresnel + s.emissive;
+    vec3 ambient = u_ambient * s.occlusion;
+#endif
+    vec3 c = s.albedo * (diffuse + ambient) + s.specular * specular + fresnel + s.emissive;
+#if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD) && !defined(TL_STIPPLE)
+    c = tl_model_shade(u_material_model, s, clamp(dot(n, v), 0.0, 1.0), diffuse, ambient, s.specular * specular + fresnel,
+                       tl_model_acc);
 #endif
 #ifdef TL_TRANSPARENT
     o_color = vec4(min(c, vec3(65504.0)), clamp(s.alpha, 0.0, 1.0));

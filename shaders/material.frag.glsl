@@ -3,6 +3,9 @@
 #include "frame.glsl"
 #include "light_eval.glsl"
 #include "material.glsl"
+#ifdef TL_MODEL
+#include "material_models.glsl" // this program's material model (TL_MODEL: its tl_material_model)
+#endif
 
 layout(binding = TL_UNIT_LIGHT_DIFFUSE) uniform sampler2D u_light_diffuse;
 layout(binding = TL_UNIT_LIGHT_SPECULAR) uniform sampler2D u_light_specular;
@@ -93,10 +96,16 @@ void main()
     diffuse *= ao;
     lit_albedo *= ao;
 #endif
-    vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + f0 * specular + fresnel + s.emissive;
+    vec3 ambient = u_ambient * (s.occlusion * ao);
 #else
     vec3 lit_albedo = s.albedo;
-    vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + f0 * specular + fresnel + s.emissive;
+    vec3 ambient = u_ambient * s.occlusion;
+#endif
+    vec3 c = s.albedo * (diffuse + ambient) + f0 * specular + fresnel + s.emissive;
+#ifdef TL_MODEL
+    float nv_m = clamp(dot(tl_material_normal(), normalize(-v_view_position)), 0.0, 1.0);
+    c = tl_model_shade(TL_MODEL, s, nv_m, diffuse, ambient, f0 * specular + fresnel,
+                       tl_model_sums_from_buffer(diffuse, specular + fresnel, nv_m));
 #endif
 #if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
     // a pixel left to the light-fixup pass: c holds no light yet (its sums are 0 here)

@@ -82,7 +82,31 @@ typedef struct tl_material {
      *  glTF textureInfo.texCoord = 1); 0: every map reads tl_vertex.uv. In a scene without uv1
      *  such a map reads tl_vertex.uv. */
     uint32_t uv1_maps;
+    /** tl_material_model: how the material pass shades it (docs/lighting.md, "Material models");
+     *  0: the standard model. The fields below are read only by the model they name. */
+    uint32_t model;
+    /** TL_MATERIAL_METALLIC_ROUGHNESS: the dielectric F0 that `specular = mix(F0, base, metal)`
+     *  starts from (glTF KHR_materials_ior and _specular); all zero = 0.04 (ior 1.5), a negative
+     *  component means exactly 0. */
+    float dielectric_f0[3];
+    float clearcoat;           /**< TL_MATERIAL_MODEL_CLEARCOAT: the coat's weight (0,1]; 0 = 1 */
+    float clearcoat_roughness; /**< TL_MATERIAL_MODEL_CLEARCOAT: the coat's perceptual roughness; 0 = the smoothest lobe */
+    float sheen_color[3];      /**< TL_MATERIAL_MODEL_SHEEN: linear sheen colour; all zero = white */
+    float sheen_roughness;     /**< TL_MATERIAL_MODEL_SHEEN: [0,1], floored at 0.07; 0 = 0.5 */
+    float wrap;                /**< TL_MATERIAL_MODEL_WRAP: how far light wraps past the terminator (0,1]; 0 = 0.5 */
+    uint32_t toon_steps;       /**< TL_MATERIAL_MODEL_TOON: bands of the diffuse ramp, 1..64; 0 = 3 */
 } tl_material;
+
+/** Per-material shading models (tl_material.model; docs/lighting.md, "Material models"). */
+typedef enum tl_material_model {
+    TL_MATERIAL_MODEL_STANDARD = 0, /**< Lambert + the frame's specular (today's model) */
+    TL_MATERIAL_MODEL_UNLIT,        /**< albedo + emissive, no light (KHR_materials_unlit) */
+    TL_MATERIAL_MODEL_CLEARCOAT,    /**< standard under a GGX coat of F0 0.04 (KHR_materials_clearcoat) */
+    TL_MATERIAL_MODEL_SHEEN,        /**< standard plus a Charlie sheen lobe (KHR_materials_sheen, cloth) */
+    TL_MATERIAL_MODEL_WRAP,         /**< wrapped diffuse (thin translucent, skin-like) */
+    TL_MATERIAL_MODEL_TOON,         /**< a banded ramp on the light sums */
+    TL_MATERIAL_MODEL_COUNT_        /**< number of values */
+} tl_material_model;
 
 /** Bits of tl_material.uv1_maps, one per texture map. */
 #define TL_MAP_ALBEDO 1u
@@ -245,6 +269,9 @@ typedef struct tl_scene_feature_set {
     int has_points_lines;  /**< some non-empty object draws points or lines (the points-lines pass) */
     int has_vertex_colors; /**< the scene has colors and some non-empty object (the colour attribute) */
     int has_uv1;           /**< the scene has uv1 and a drawn material samples a map with it */
+    /** Bits 1u << tl_material_model of the drawn materials' models; 0 (a feature set made by hand)
+     *  is the standard model only. */
+    uint32_t material_models;
 } tl_scene_feature_set;
 
 /** Fills *out with what `scene` uses; a NULL scene gives all zeros. */

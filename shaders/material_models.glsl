@@ -1,0 +1,150 @@
+// Material models (scene.h tl_material.model; docs/lighting.md, "Material models"): the pixel's
+// colour from the light sums under its material's model. forward adds each light's exact terms
+// (tl_model_light_add); the light pre-pass's material pass has only the light buffer's sums and
+// approximates the terms the sums do not hold (tl_model_sums_from_buffer). Needs material.glsl
+// (the parameters) and lighting.glsl / light_eval.glsl.
+
+#ifndef TL_MATERIAL_MODELS_GLSL
+#define TL_MATERIAL_MODELS_GLSL
+
+const int TL_MODEL_STANDARD = 0;
+const int TL_MODEL_UNLIT = 1;
+const int TL_MODEL_CLEARCOAT = 2;
+const int TL_MODEL_SHEEN = 3;
+const int TL_MODEL_WRAP = 4;
+const int TL_MODEL_TOON = 5;
+
+// The sums a model needs besides the standard ones (light colour times weight, summed):
+// coat: the coat's GGX lobe with F = 1; sheen: the Charlie lobe; wrap: the wrapped diffuse.
+struct tl_model_sums {
+    vec3 coat;
+    vec3 sheen;
+    vec3 wrap;
+};
+
+// Charlie sheen distribution (Estevez and Kulla, "Production Friendly Microfacet Sheen BRDF", 2017),
+// r: sheen roughness (floored at 0.07 on the CPU).
+float tl_charlie_d(float nh, float r)
+{
+    float inv = 1.0 / r;
+    float sin2 = max(1.0 - nh * nh, 0.0);
+    return (2.0 + inv) * pow(sin2, 0.5 * inv) / (2.0 * TL_PI);
+}
+
+// Neubelt and Pettineo's cloth visibility 1 / (4 (n.l + n.v - n.l n.v)), finite at n.l = n.v = 0.
+float tl_sheen_vis(float nl, float nv)
+{
+    return 1.0 / max(4.0 * (nl + nv - nl * nv), 1e-4);
+}
+
+// Energy-conserving wrapped Lambert: max(n.l + w, 0) / (1 + w)^2 (integrates to Lambert's pi).
+float tl_wrap_weight(float nl, float w)
+{
+    return max(nl + w, 0.0) / ((1.0 + w) * (1.0 + w));
+}
+
+// Coat Fresnel with n.v (glTF's fresnel_coat), times the coat's weight.
+float tl_coat_fresnel(float nv)
+{
+    return u_clearcoat * (0.04 + 0.96 * tl_fresnel_weight(nv));
+}
+
+// Toon: the diffuse light's luminance rounded to 1 / steps bands (its chromaticity kept), the
+// highlight a flat one of luminance 1 where the specular radiance's luminance passes 1/2.
+vec3 tl_toon_ramp(vec3 d, float steps)
+{
+    float l = tl_luminance(d);
+    if (!(l > 0.0)) return vec3(0.0);
+    return d * (floor(l * steps + 0.5) / (steps * l));
+}
+
+vec3 tl_toon_highlight(vec3 sp)
+{
+    float l = tl_luminance(sp);
+    return l > 0.5 ? sp / l : vec3(0.0);
+}
+
+// The pixel's colour under `model`. d: the diffuse light sum; a: the ambient term (ambient times
+// occlusion); sp: the standard specular radiance (F0 S1 + S2, or the frame's equivalent).
+vec3 tl_model_shade(int model, tl_surface s, float nv, vec3 d, vec3 a, vec3 sp, tl_model_sums m)
+{
+    if (model == TL_MODEL_UNLIT) return s.albedo + s.emissive;
+    if (model == TL_MODEL_WRAP) d = m.wrap;
+    if (model == TL_MODEL_TOON) {
+        d = tl_toon_ramp(d, u_toon_steps);
+        sp = tl_toon_highlight(sp);
+    }
+    vec3 c = s.albedo * (d + a) + sp + s.emissive;
+    if (model == TL_MODEL_SHEEN) c += u_sheen_color * m.sheen;
+    if (model == TL_MODEL_CLEARCOAT) {
+        float fc = tl_coat_fresnel(nv);
+        c = c * (1.0 - fc) + fc * m.coat;
+    }
+    return c;
+}
+
+// The light pre-pass: the models' sums from the light buffer's. d: the diffuse sum; spec: the
+// specular sum with F = 1 (S1 + S2). The coat takes the base lobe's sum (exact when the coat's
+// roughness is the base's); the sheen lobe is evaluated once, for light along the normal, and
+// scales the diffuse sum; the wrap scales the diffuse sum to the wrapped weight at n.l = 1/2.
+tl_model_sums tl_model_sums_from_buffer(vec3 d, vec3 spec, float nv)
+{
+    tl_model_sums m;
+    m.coat = spec;
+    m.sheen = d * (TL_PI * tl_charlie_d(sqrt(0.5 + 0.5 * nv), u_sheen_roughness) * tl_sheen_vis(1.0, nv));
+    m.wrap = d * (tl_wrap_weight(0.5, u_wrap) / 0.5);
+    return m;
+}
+
+#ifdef TL_FORWARD
+// forward: each light's exact model terms, summed over the pixel's lights (tl_model_light_add).
+tl_model_sums tl_model_acc = tl_model_sums(vec3(0.0), vec3(0.0), vec3(0.0));
+
+// The light's windowed falloff (and spot cone) with the direction to it, as the standard model's
+// punctual diffuse weight has them (a sphere light's centre stands for the sphere).
+float tl_model_falloff(int type, vec3 p, vec3 n, vec4 position_radius, vec3 direction, float cos_inner,
+                       float cos_outer, out vec3 l)
+{
+    if (type == 3) {
+        l = -direction;
+        return 1.0;
+    }
+    vec3 to = position_radius.xyz - p;
+    float dist = length(to);
+    l = dist > 1e-6 ? to / dist : n;
+    float att = tl_attenuation(dist, position_radius.w);
+    if (type == 2) att *= tl_spot(l, direction, cos_inner, cos_outer);
+    return att;
+}
+
+void tl_model_light_add(tl_light_data ld, vec3 p, vec3 n, vec3 v)
+{
+    int model = u_material_model, type = int(ld.color_type.w);
+    vec3 c = ld.color_type.rgb;
+    if (model == TL_MODEL_CLEARCOAT) {
+        float shape = tl_lobe_shape(1.0 - u_clearcoat_roughness);
+        vec3 t = tl_light_weights(type, p, n, v, shape, ld.position_radius, ld.direction_cos_outer.xyz, ld.cos_inner.x,
+                                  ld.direction_cos_outer.w, ld.cos_inner.y);
+        tl_model_acc.coat += c * min(t.y + t.z, TL_LIGHT_CLAMP);
+        return;
+    }
+    if (model != TL_MODEL_SHEEN && model != TL_MODEL_WRAP) return;
+    vec3 l;
+    float att = tl_model_falloff(type, p, n, ld.position_radius, ld.direction_cos_outer.xyz, ld.cos_inner.x,
+                                 ld.direction_cos_outer.w, l);
+    float nl = dot(n, l);
+    if (model == TL_MODEL_WRAP) {
+        tl_model_acc.wrap += c * min(att * tl_wrap_weight(nl, u_wrap), TL_LIGHT_CLAMP);
+        return;
+    }
+    vec3 h = l + v;
+    float hl2 = dot(h, h);
+    if (!(nl > 0.0) || hl2 < 1e-12) return;
+    float nh = dot(n, h * inversesqrt(hl2));
+    float nv = clamp(dot(n, v), 0.0, 1.0);
+    float w = TL_PI * tl_charlie_d(nh, u_sheen_roughness) * tl_sheen_vis(nl, nv) * nl * att;
+    tl_model_acc.sheen += c * min(w, TL_LIGHT_CLAMP);
+}
+#endif
+
+#endif
