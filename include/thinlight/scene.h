@@ -317,6 +317,19 @@ TL_API tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_s
 /** Frees a scene from any tl_scene_* constructor; NULL is ignored. */
 TL_API void tl_scene_destroy(tl_scene *scene);
 
+/** Parameters of the material-model showcase; zero means the default. */
+typedef struct tl_showcase_scene_desc {
+    uint32_t point_lights;  /**< default 8; at most 65536; their total light is the same at any count */
+    uint64_t seed;          /**< default 1; moves only the lights */
+    tl_allocator allocator; /**< zeroed: malloc/free */
+} tl_showcase_scene_desc;
+
+/** Builds the material-model showcase (docs/lighting.md, "Material models"): a row of five spheres
+ *  per tl_material_model (standard nearest the camera, then unlit, clearcoat, sheen, wrap, toon),
+ *  perceptual roughness 0.1 to 0.9 from left to right, on a grey floor under seeded point lights.
+ *  NULL desc means all defaults. Errors as tl_scene_create_default. *out is NULL on failure. */
+TL_API tl_result tl_scene_create_showcase(const tl_showcase_scene_desc *desc, tl_scene **out);
+
 #ifdef __cplusplus
 }
 #endif
