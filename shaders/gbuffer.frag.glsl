@@ -54,6 +54,9 @@ void main()
     vec3 n = tl_material_normal();
 #endif
 #ifdef TL_OUT_RT0
+#ifdef TL_MATERIAL_MODELS // a clearcoat's light sums are its coat's lobe (material_models.glsl)
+    if (u_material_model == 2) s.gloss = 1.0 - u_clearcoat_roughness;
+#endif
 #ifdef TL_RT0_RGB10A2
     uint t = tl_rt0_encode_rgb10a2(n, s.gloss, 0u);
     o_rt0 = vec4(float(t & 1023u), float((t >> 10) & 1023u), float((t >> 20) & 1023u), float(t >> 30)) /

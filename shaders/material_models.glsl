@@ -83,15 +83,34 @@ vec3 tl_model_shade(int model, tl_surface s, float nv, vec3 d, vec3 a, vec3 sp, 
     return c;
 }
 
+// The sheen lobe's mean over light directions weighted as the diffuse sum weighs them (n.l):
+// pi D V averaged over 4 x 4 stratified cosine-weighted directions, v in the x-z plane of the
+// normal's frame. The sheen sum is the diffuse sum times this: exact for light arriving evenly
+// from the hemisphere, approximate for a few lights.
+float tl_sheen_mean(float nv, float r)
+{
+    vec3 v = vec3(sqrt(max(1.0 - nv * nv, 0.0)), 0.0, nv);
+    float sum = 0.0;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            float u1 = (float(i) + 0.5) / 4.0, phi = 2.0 * TL_PI * (float(j) + 0.5) / 4.0;
+            float st = sqrt(u1), nl = sqrt(1.0 - u1);
+            vec3 h = normalize(vec3(st * cos(phi), st * sin(phi), nl) + v);
+            sum += TL_PI * tl_charlie_d(h.z, r) * tl_sheen_vis(nl, nv);
+        }
+    return sum / 16.0;
+}
+
 // The light pre-pass: the models' sums from the light buffer's. d: the diffuse sum; spec: the
-// specular sum with F = 1 (S1 + S2). The coat takes the base lobe's sum (exact when the coat's
-// roughness is the base's); the sheen lobe is evaluated once, for light along the normal, and
-// scales the diffuse sum; the wrap scales the diffuse sum to the wrapped weight at n.l = 1/2.
+// specular sum with F = 1 (S1 + S2). A clearcoat's G-buffer holds the coat's roughness
+// (gbuffer.frag.glsl), so spec is the coat's own sum (and the base's specular is approximated with
+// the coat's lobe); the sheen sum is the diffuse sum times the lobe's mean (tl_sheen_mean); the
+// wrap scales the diffuse sum to the wrapped weight at n.l = 1/2.
 tl_model_sums tl_model_sums_from_buffer(vec3 d, vec3 spec, float nv)
 {
     tl_model_sums m;
     m.coat = spec;
-    m.sheen = d * (TL_PI * tl_charlie_d(sqrt(0.5 + 0.5 * nv), u_sheen_roughness) * tl_sheen_vis(1.0, nv));
+    m.sheen = d * tl_sheen_mean(nv, u_sheen_roughness);
     m.wrap = d * (tl_wrap_weight(0.5, u_wrap) / 0.5);
     return m;
 }

@@ -107,6 +107,8 @@ typedef enum tl_material_model {
     TL_MATERIAL_MODEL_TOON,         /**< a banded ramp on the light sums */
     TL_MATERIAL_MODEL_COUNT_        /**< number of values */
 } tl_material_model;
+/** The model's name ("standard", "unlit", "clearcoat", "sheen", "wrap", "toon"); "unknown" past them. */
+TL_API const char *tl_material_model_name(uint32_t model);
 
 /** Bits of tl_material.uv1_maps, one per texture map. */
 #define TL_MAP_ALBEDO 1u

@@ -8,7 +8,7 @@
 static const char *const tl__model_names[TL_MATERIAL_MODEL_COUNT_] = {"standard", "unlit", "clearcoat",
                                                                       "sheen",    "wrap",  "toon"};
 
-const char *tl__material_model_name(uint32_t model)
+const char *tl_material_model_name(uint32_t model)
 {
     return model < TL_MATERIAL_MODEL_COUNT_ ? tl__model_names[model] : "unknown";
 }

@@ -114,10 +114,9 @@ tl_result tl__material_check(const tl_material *m, const char *what, size_t text
  * component is 0, normal_scale and occlusion_strength 0 are 1. */
 void tl__material_defaults(const tl_material *in, tl_material *out);
 /* material_models.c: the models' parameters with their zeroes resolved (called by
- * tl__material_defaults), their check (called by tl__material_check) and a model's name. */
+ * tl__material_defaults) and their check (called by tl__material_check). */
 void tl__material_model_defaults(tl_material *m);
 tl_result tl__material_model_check(const tl_material *m, const char *what, char *message, size_t size);
-const char *tl__material_model_name(uint32_t model);
 /* Sets in *out the flags (has_*) that `material` alone needs, as tl_scene_features counts them
  * for a material some object draws; `texture_count` is the scene's. Counts are left alone. */
 void tl__material_features(const tl_material *material, size_t texture_count, tl_scene_feature_set *out);
