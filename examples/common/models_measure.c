@@ -42,9 +42,14 @@ int tl_mm_render(const tl_scene *s, tl_renderer_desc d, uint32_t frames, float *
     d.options.synchronous_stats = 1;
     tl_renderer *r = NULL;
     tl_frame_stats st;
+    double least = INFINITY; /* the material pass's fastest frame after the first: robust to a busy machine */
     if (tl_renderer_create(&d, &r) != TL_OK) return 1;
     int bad = tl_renderer_set_scene(r, s) != TL_OK;
-    for (uint32_t f = 0; !bad && f < (frames ? frames : 1); f++) bad = tl_renderer_render(r, NULL, &st) != TL_OK;
+    for (uint32_t f = 0; !bad && f < (frames ? frames : 1); f++) {
+        bad = tl_renderer_render(r, NULL, &st) != TL_OK;
+        if (!bad && (f > 0 || frames <= 1)) least = fmin(least, st.pass_ms[TL_PASS_MATERIAL]);
+    }
+    if (!bad) st.pass_ms[TL_PASS_MATERIAL] = least;
     size_t size = (size_t)d.width * d.height * 4 * sizeof(float);
     if (!bad && hdr) bad = tl_renderer_read_target(r, TL_TARGET_HDR, hdr, &size) != TL_OK;
     if (bad) fprintf(stderr, "models: rendering the showcase: %s\n", tl_renderer_last_error(r));
@@ -63,7 +68,8 @@ int tl_mm_rows(const tl_scene *s, tl_renderer_desc d, uint8_t *rows)
         tl_material *m = &c->materials[i];
         uint32_t row = m->model;
         int floor = i + 1 == c->material_count;
-        *m = (tl_material){.model = TL_MATERIAL_MODEL_UNLIT, .albedo = {floor ? -1.0f : (float)(row + 1) / 8.0f, -1, -1}};
+        float code = floor ? -1.0f : (float)(row + 1) / 8.0f;
+        *m = (tl_material){.model = TL_MATERIAL_MODEL_UNLIT, .albedo = {code, -1, -1}};
     }
     if (!bad) {
         c->light_count = 0;

@@ -28,7 +28,8 @@ void tl_mm_free(tl_scene *copy);
 /* rows[w * h]: the showcase row (tl_material_model) each pixel shows, TL_MM_NO_ROW for the floor and
  * the sky. `d` carries the size and the GL loader. 0, or 1 after a line on stderr. */
 int tl_mm_rows(const tl_scene *s, tl_renderer_desc d, uint8_t *rows);
-/* Renders `frames` frames of `s` with `d` and reads HDR into hdr[w * h * 4]; stats of the last. */
+/* Renders `frames` frames of `s` with `d` and reads HDR into hdr[w * h * 4] (NULL: not read); stats
+ * of the last, with the material pass's time the least of the frames after the first. */
 int tl_mm_render(const tl_scene *s, tl_renderer_desc d, uint32_t frames, float *hdr, tl_frame_stats *stats);
 /* `a` against `ref` over the pixels of each row (out[TL_MATERIAL_MODEL_COUNT_]). */
 void tl_mm_compare(const float *a, const float *ref, const uint8_t *rows, size_t n, tl_mm_error *out);

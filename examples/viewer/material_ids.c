@@ -38,7 +38,8 @@ static int vw_material_ids_make(vw_app *app)
     for (size_t i = 0; i < n; i++) {
         uint32_t model = s->material_count ? s->materials[i].model : 0;
         m[i] = (tl_material){.model = TL_MATERIAL_MODEL_UNLIT, .albedo = {(float)(model + 1) / 8.0f, -1, -1}};
-        if (s->material_count) m[i].flags = s->materials[i].flags & (TL_MATERIAL_DOUBLE_SIDED | TL_MATERIAL_ALPHA_BLEND);
+        uint32_t kept = TL_MATERIAL_DOUBLE_SIDED | TL_MATERIAL_ALPHA_BLEND; /* what decides the surface drawn */
+        if (s->material_count) m[i].flags = s->materials[i].flags & kept;
     }
     c->materials = m;
     c->material_count = s->material_count;

@@ -100,7 +100,8 @@ void convert_material_extensions(const context &c, const tinygltf::Material &g, 
         textures_ignored(c, sheen, name + ".KHR_materials_sheen", keys);
     }
     const char *chosen = tl_material_model_name(out->model);
-    if (unlit && coat && coat_factor > 0.0) warn(c, name + ": KHR_materials_clearcoat ignored: the material is " + chosen);
+    if (unlit && coat && coat_factor > 0.0)
+        warn(c, name + ": KHR_materials_clearcoat ignored: the material is " + chosen);
     if ((unlit || (coat && coat_factor > 0.0)) && has_sheen)
         warn(c, name + ": KHR_materials_sheen ignored: the material is " + chosen);
 }
