@@ -70,11 +70,12 @@ int vw_material_ids(vw_app *app, const tl_camera *cam, float *hdr, uint8_t *out)
     if (tl_renderer_render(app->ids, cam, NULL) != TL_OK ||
         tl_renderer_read_target(app->ids, TL_TARGET_HDR, hdr, &size) != TL_OK)
         return 1;
-    for (size_t i = 0; i < n; i++) {
+    for (size_t i = 0; i < n; i++) { /* the model's colour, shaded by the image's luma (in out) */
         long code = lround(hdr[4 * i] * 8.0f);
         uint8_t *p = out + 4 * i;
-        if (code >= 1 && code <= TL_MATERIAL_MODEL_COUNT_) memcpy(p, vw_model_colours[code - 1], 3);
-        else p[0] = p[1] = p[2] = 0;
+        float shade = 0.35f + 0.65f * (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]) / 255.0f;
+        for (int k = 0; k < 3; k++)
+            p[k] = code >= 1 && code <= TL_MATERIAL_MODEL_COUNT_ ? (uint8_t)(vw_model_colours[code - 1][k] * shade) : 0;
         p[3] = 255;
     }
     return 0;

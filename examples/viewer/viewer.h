@@ -142,8 +142,9 @@ typedef struct vw_app {
     uint32_t ids_width, ids_height;
 } vw_app;
 
-/* material_ids.c: the material-model view into out (hdr: scratch of width x height x 4 floats);
- * 0, or 1 when there is no scene or the renderer failed. */
+/* material_ids.c: the material-model view into out, which holds the final image (its luma shades
+ * the models' colours; hdr: scratch of width x height x 4 floats); 0, or 1 when there is no scene
+ * or the renderer failed. */
 int vw_material_ids(vw_app *app, const tl_camera *cam, float *hdr, uint8_t *out);
 void vw_material_ids_free(vw_app *app);
 

@@ -362,8 +362,9 @@ static int vw_view_msaa_edges(vw_app *app, tl_renderer *r, const tl_camera *cam,
 /* Each pixel's material model (material_ids.c; legend in docs/viewer.md). */
 static int vw_view_material_model(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
 {
-    (void)r;
-    return vw_material_ids(app, cam, app->scratch[2], out) ? vw_unavailable(app, "no scene to draw") : 0;
+    if (vw_view_final(app, r, cam, out) || vw_material_ids(app, cam, app->scratch[2], out))
+        return vw_unavailable(app, "no scene to draw");
+    return 0;
 }
 
 /* Largest channel difference of the two outputs, times diff_scale, on the heat scale. */
@@ -582,7 +583,7 @@ static const vw_view_def vw_view_table[VW_VIEW_COUNT] = {
     [VW_VIEW_MSAA_EDGES] = {"msaa-edges", "MSAA (thin-lpp): red where a sample's light texel was another surface's and "
                             "it was re-lit from the light lists; the image darkened", vw_view_msaa_edges, NULL},
     [VW_VIEW_MATERIAL_MODEL] = {"material-model", "material model: grey standard, yellow unlit, blue clearcoat, "
-                                "magenta sheen, orange wrap, green toon", vw_view_material_model, NULL},
+                                "magenta sheen, orange wrap, green toon; shaded by the image's luma", vw_view_material_model, NULL},
 };
 
 const char *vw_view_name(vw_view v) { return v < VW_VIEW_COUNT ? vw_view_table[v].name : "unknown"; }
