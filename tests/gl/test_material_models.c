@@ -258,3 +258,34 @@ TL_TEST(material_models_bad_parameters_refused)
     tl_renderer_destroy(r);
     tl_scene_destroy(s);
 }
+
+static void half_free(void *p, void *user)
+{
+    (void)user;
+    free(p);
+}
+
+/* tl_showcase_scene_desc: zeroed is the NULL descriptor's scene (8 lights, seed 1); bad input is
+ * refused with nothing returned. */
+TL_TEST(material_models_showcase_desc_zero_is_default)
+{
+    tl_scene *a = NULL, *b = NULL, *c = NULL;
+    TL_CHECK(tl_scene_create_showcase(NULL, &a) == TL_OK);
+    TL_CHECK(tl_scene_create_showcase(&(tl_showcase_scene_desc){0}, &b) == TL_OK);
+    TL_CHECK(tl_scene_create_showcase(&(tl_showcase_scene_desc){.point_lights = 8, .seed = 1}, &c) == TL_OK);
+    if (a && b && c) {
+        TL_CHECK_EQ_U(a->light_count, 8);
+        TL_CHECK(a->light_count == b->light_count);
+        TL_CHECK(memcmp(a->lights, b->lights, a->light_count * sizeof *a->lights) == 0);
+        TL_CHECK(memcmp(a->lights, c->lights, a->light_count * sizeof *a->lights) == 0);
+        TL_CHECK_EQ_U(a->object_count, (size_t)TL_MATERIAL_MODEL_COUNT_ * 5 + 1);
+    }
+    tl_scene *d = (tl_scene *)&d;
+    TL_CHECK(tl_scene_create_showcase(&(tl_showcase_scene_desc){.point_lights = 65537}, &d) == TL_ERROR_LIMIT && !d);
+    tl_allocator half = {.alloc = NULL, .free = half_free};
+    TL_CHECK(tl_scene_create_showcase(&(tl_showcase_scene_desc){.allocator = half}, &d) == TL_ERROR_INVALID_ARGUMENT);
+    TL_CHECK(tl_scene_create_showcase(NULL, NULL) == TL_ERROR_INVALID_ARGUMENT);
+    tl_scene_destroy(a);
+    tl_scene_destroy(b);
+    tl_scene_destroy(c);
+}
