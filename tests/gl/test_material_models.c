@@ -289,3 +289,63 @@ TL_TEST(material_models_showcase_desc_zero_is_default)
     tl_scene_destroy(b);
     tl_scene_destroy(c);
 }
+
+/* Four quads facing the camera (view-space normal exactly +Z: the octahedral code is exact; gloss
+ * k/255 exact in RT0; reversed D32F depth): thin-lpp differs from forward only by FP16. Standard
+ * (a dielectric F0 other than 0.04), unlit and an emissive of strength 4 over 8 point lights: every
+ * pixel within (lights + 2) FP16 ULPs of forward's value: each light's blend into a sum converts to
+ * FP16 once and each mode's HDR write once, the terms are non-negative, and GL leaves the rounding
+ * of a float-to-half conversion to the implementation (truncation allowed: a whole ULP each). */
+TL_TEST(material_models_exact_ones_within_fp16_on_a_facing_plane)
+{
+    enum { Q = 4, L = 8 };
+    static tl_vertex v[Q * 4];
+    static uint32_t idx[Q * 6];
+    static tl_object obj[Q];
+    static tl_material mat[Q];
+    static tl_light lights[L];
+    for (int q = 0; q < Q; q++) {
+        const float c[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        for (int k = 0; k < 4; k++)
+            v[q * 4 + k] = (tl_vertex){.position = {c[k][0] - 2.0f + (float)q, c[k][1] - 0.5f, 0.0f}, .normal = {0, 0, 1}};
+        const uint32_t t[6] = {0, 1, 2, 0, 2, 3};
+        for (int k = 0; k < 6; k++) idx[q * 6 + k] = (uint32_t)(q * 4) + t[k];
+        obj[q] = (tl_object){.first_index = (uint32_t)(q * 6), .index_count = 6, .material = (uint32_t)q};
+        mat[q] = (tl_material){.albedo = {0.6f, 0.4f, 0.3f}, .gloss = 153.0f / 255.0f, .flags = TL_MATERIAL_MICROFACET};
+    }
+    const float f0 = (float)((0.6 / 2.6) * (0.6 / 2.6)); /* ior 1.6 */
+    for (int k = 0; k < 3; k++) mat[0].specular[k] = mat[2].specular[k] = f0;
+    mat[1].model = TL_MATERIAL_MODEL_UNLIT;
+    for (int k = 0; k < 3; k++) mat[3].emissive[k] = 4.0f * 0.25f;
+    for (int i = 0; i < L; i++)
+        lights[i] = (tl_light){.type = TL_LIGHT_POINT, .position = {-2.0f + 0.55f * (float)i, 0.3f * (float)(i % 3) - 0.3f,
+                                                                    0.4f + 0.2f * (float)(i % 4)},
+                               .color = {1.0f, 0.8f, 0.6f}, .radius = 6.0f};
+    tl_scene s = {.vertices = v, .vertex_count = Q * 4, .indices = idx, .index_count = Q * 6, .objects = obj,
+                  .object_count = Q, .materials = mat, .material_count = Q, .lights = lights, .light_count = L,
+                  .camera = {.position = {0, 0, 4}, .target = {0, 0, 0}, .up = {0, 1, 0}, .near_z = 1, .far_z = 10}};
+    if (!ensure_context()) return;
+    size_t n = (size_t)W * H;
+    float *a = malloc(n * 16), *f = malloc(n * 16);
+    tl_renderer_desc d = desc(TL_MODE_THIN_LPP);
+    d.options.depth_format = TL_DEPTH_FORMAT_D32F_REVERSED;
+    TL_CHECK(a && f && tl_mm_render(&s, d, 1, a, NULL) == 0);
+    d.options.mode = TL_MODE_FORWARD;
+    TL_CHECK(a && f && tl_mm_render(&s, d, 1, f, NULL) == 0);
+    size_t lit = 0, over = 0;
+    double worst = 0.0;
+    for (size_t i = 0; a && f && i < n; i++) {
+        if (f[4 * i] == 0.0f && f[4 * i + 1] == 0.0f && f[4 * i + 2] == 0.0f) continue; /* background */
+        lit++;
+        for (int k = 0; k < 3; k++) {
+            double ref = f[4 * i + k], tol = (L + 2) * ldexp(1.0, -10) * ref + 1e-6, e = fabs(a[4 * i + k] - ref);
+            worst = fmax(worst, e / fmax(ref, 1e-6));
+            over += e > tol;
+        }
+    }
+    printf("  %zu pixels; largest relative difference %.3g (tolerance %.3g)\n", lit, worst, (L + 2) * ldexp(1.0, -10));
+    TL_CHECK_LE(n / 16, lit);
+    TL_CHECK_EQ_U(over, 0);
+    free(a);
+    free(f);
+}
