@@ -1,9 +1,10 @@
 #define _POSIX_C_SOURCE 200809L /* clock_gettime */
 /* thinlight-models-report: the material models measured on the showcase scene (docs/lighting.md,
  * "Material models"): per model and light count, thin-lpp against forward (the exact per-light
- * evaluation) and against fat, the bytes per pixel the plan allocates and the material pass's time
- * with every sphere in that model; then a frame with every model on screen against the same frame
- * with the standard model only (thin-lpp, interleaved runs). Writes a markdown table on stdout. */
+ * evaluation) and against fat, fat and thin-deferred against forward, the bytes per pixel the plan
+ * allocates and the material pass's time with every sphere in that model; then a frame with every
+ * model on screen against the same frame with the standard model only (thin-lpp, interleaved
+ * runs). Writes a markdown table on stdout. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -90,19 +91,22 @@ static int error_table(const args *a, tl_renderer_desc d, uint32_t lights)
     tl_scene *s = NULL;
     if (tl_scene_create_showcase(&(tl_showcase_scene_desc){.point_lights = lights}, &s) != TL_OK) return 1;
     size_t n = (size_t)a->width * a->height;
-    float *img[3] = {malloc(n * 16), malloc(n * 16), malloc(n * 16)};
+    float *img[4] = {malloc(n * 16), malloc(n * 16), malloc(n * 16), malloc(n * 16)};
     uint8_t *rows = malloc(n);
-    const tl_render_mode modes[3] = {TL_MODE_THIN_LPP, TL_MODE_FORWARD, TL_MODE_FAT};
-    int bad = !img[0] || !img[1] || !img[2] || !rows || tl_mm_rows(s, d, rows);
-    tl_frame_stats st[3];
-    for (int k = 0; k < 3 && !bad; k++) {
+    const tl_render_mode modes[4] = {TL_MODE_THIN_LPP, TL_MODE_FORWARD, TL_MODE_FAT, TL_MODE_THIN_DEFERRED};
+    int bad = !img[0] || !img[1] || !img[2] || !img[3] || !rows || tl_mm_rows(s, d, rows);
+    tl_frame_stats st[4];
+    for (int k = 0; k < 4 && !bad; k++) {
         d.options.mode = modes[k];
         bad = tl_mm_render(s, d, a->frames, img[k], &st[k]);
     }
-    tl_mm_error fwd[TL_MATERIAL_MODEL_COUNT_], fat[TL_MATERIAL_MODEL_COUNT_];
+    tl_mm_error fwd[TL_MATERIAL_MODEL_COUNT_], fat[TL_MATERIAL_MODEL_COUNT_], fat_fwd[TL_MATERIAL_MODEL_COUNT_],
+        td_fwd[TL_MATERIAL_MODEL_COUNT_];
     if (!bad) {
         tl_mm_compare(img[0], img[1], rows, n, fwd);
         tl_mm_compare(img[0], img[2], rows, n, fat);
+        tl_mm_compare(img[2], img[1], rows, n, fat_fwd); /* fat and thin-deferred against forward */
+        tl_mm_compare(img[3], img[1], rows, n, td_fwd);
     }
     for (uint32_t m = 0; m < TL_MATERIAL_MODEL_COUNT_ && !bad; m++) {
         tl_scene *c = one_model(s, m);
@@ -115,11 +119,12 @@ static int error_table(const args *a, tl_renderer_desc d, uint32_t lights)
         tl_mm_free(c);
         if (bad) break;
         double extra = ((double)one.total_target_bytes - (double)base.total_target_bytes) / (double)n;
-        printf("| %u | %s | %zu | %.1f | %.3g | %.3g | %.1f | %.3g | %+.2f | %.2f | %.2f |\n", lights,
-               tl_material_model_name(m), fwd[m].pixels, fwd[m].psnr_db, fwd[m].max_abs, fwd[m].max_rel,
-               fat[m].psnr_db, fat[m].max_abs, extra, one.pass_ms[TL_PASS_MATERIAL], base.pass_ms[TL_PASS_MATERIAL]);
+        printf("| %u | %s | %zu | %.1f | %.3g | %.3g | %.1f | %.3g | %.1f | %.3g | %.1f | %.3g | %+.2f | %.2f | %.2f |\n",
+               lights, tl_material_model_name(m), fwd[m].pixels, fwd[m].psnr_db, fwd[m].max_abs, fwd[m].max_rel,
+               fat[m].psnr_db, fat[m].max_abs, fat_fwd[m].psnr_db, fat_fwd[m].max_abs, td_fwd[m].psnr_db,
+               td_fwd[m].max_abs, extra, one.pass_ms[TL_PASS_MATERIAL], base.pass_ms[TL_PASS_MATERIAL]);
     }
-    for (int k = 0; k < 3; k++) free(img[k]);
+    for (int k = 0; k < 4; k++) free(img[k]);
     free(rows);
     tl_scene_destroy(s);
     return bad;
@@ -187,8 +192,9 @@ int main(int argc, char **argv)
     tl_renderer_desc d = {.width = a.width, .height = a.height, .get_proc_address = tl_context_proc_loader,
                           .get_proc_address_user = ctx};
     printf("| lights | model | pixels | PSNR vs forward (dB) | max abs vs forward | max rel vs forward | PSNR vs fat "
-           "(dB) | max abs vs fat | extra B/px | material pass, all spheres this model (ms) | material pass, all "
-           "standard (ms) |\n|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+           "(dB) | max abs vs fat | fat vs forward (dB) | fat max abs vs forward | thin-deferred vs forward (dB) | "
+           "thin-deferred max abs vs forward | extra B/px | material pass, all spheres this model (ms) | material "
+           "pass, all standard (ms) |\n|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
     for (size_t i = 0; i < a.light_count && !rc; i++) {
         fprintf(stderr, TOOL ": errors at %u lights\n", a.lights[i]);
         rc = error_table(&a, d, a.lights[i]);

@@ -3,6 +3,9 @@
 // material from the G-buffer and add shaded radiance to HDR.
 #include "gbuffer_decode.glsl"
 #include "light_eval.glsl"
+#if defined(TL_MATERIAL_MODELS) && !defined(TL_LIGHT_ACCUM)
+#include "fat_models.glsl" // each light under the pixel's material model
+#endif
 
 flat in vec4 f_position_radius;
 flat in vec3 f_color;
@@ -49,6 +52,21 @@ void main()
     tl_gbuffer_normal_gloss(px, n, gloss);
 #endif
     vec3 v = normalize(-p);
+#if defined(TL_MATERIAL_MODELS) && !defined(TL_LIGHT_ACCUM)
+    tl_fat_model fm = tl_fat_model_read(px, n, v);
+    if (fm.model != 0) {
+#ifdef TL_LIGHT_SHADE_THIN
+        vec3 albedo, spec_color;
+        tl_rt1_read(px, albedo, spec_color);
+#endif
+        o_color = vec4(min(tl_fat_model_radiance(fm, TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(gloss), f_color,
+                                                 f_position_radius, f_direction_cos_outer.xyz, f_cos_inner,
+                                                 f_direction_cos_outer.w, f_source_radius, albedo, spec_color),
+                           vec3(65504.0)),
+                       0.0);
+        return;
+    }
+#endif
     vec3 t = tl_light_weights(TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(gloss), f_position_radius, f_direction_cos_outer.xyz,
                               f_cos_inner, f_direction_cos_outer.w, f_source_radius);
     // One light's output never exceeds the FP16 maximum, whatever its colour (an Inf would poison

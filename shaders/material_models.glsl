@@ -7,6 +7,8 @@
 #ifndef TL_MATERIAL_MODELS_GLSL
 #define TL_MATERIAL_MODELS_GLSL
 
+#include "model_light.glsl" // tl_wrap_weight, tl_model_falloff
+
 const int TL_MODEL_STANDARD = 0;
 const int TL_MODEL_UNLIT = 1;
 const int TL_MODEL_CLEARCOAT = 2;
@@ -21,27 +23,6 @@ struct tl_model_sums {
     vec3 sheen;
     vec3 wrap;
 };
-
-// Charlie sheen distribution (Estevez and Kulla, "Production Friendly Microfacet Sheen BRDF", 2017),
-// r: sheen roughness (floored at 0.07 on the CPU).
-float tl_charlie_d(float nh, float r)
-{
-    float inv = 1.0 / r;
-    float sin2 = max(1.0 - nh * nh, 0.0);
-    return (2.0 + inv) * pow(sin2, 0.5 * inv) / (2.0 * TL_PI);
-}
-
-// Neubelt and Pettineo's cloth visibility 1 / (4 (n.l + n.v - n.l n.v)), finite at n.l = n.v = 0.
-float tl_sheen_vis(float nl, float nv)
-{
-    return 1.0 / max(4.0 * (nl + nv - nl * nv), 1e-4);
-}
-
-// Energy-conserving wrapped Lambert: max(n.l + w, 0) / (1 + w)^2 (integrates to Lambert's pi).
-float tl_wrap_weight(float nl, float w)
-{
-    return max(nl + w, 0.0) / ((1.0 + w) * (1.0 + w));
-}
 
 // Coat Fresnel with n.v (glTF's fresnel_coat), times the coat's weight.
 float tl_coat_fresnel(float nv)
@@ -119,23 +100,6 @@ tl_model_sums tl_model_sums_from_buffer(vec3 d, vec3 spec, float nv)
 // forward: each light's exact model terms, summed over the pixel's lights (tl_model_light_add).
 tl_model_sums tl_model_acc = tl_model_sums(vec3(0.0), vec3(0.0), vec3(0.0));
 
-// The light's windowed falloff (and spot cone) with the direction to it, as the standard model's
-// punctual diffuse weight has them (a sphere light's centre stands for the sphere).
-float tl_model_falloff(int type, vec3 p, vec3 n, vec4 position_radius, vec3 direction, float cos_inner,
-                       float cos_outer, out vec3 l)
-{
-    if (type == 3) {
-        l = -direction;
-        return 1.0;
-    }
-    vec3 to = position_radius.xyz - p;
-    float dist = length(to);
-    l = dist > 1e-6 ? to / dist : n;
-    float att = tl_attenuation(dist, position_radius.w);
-    if (type == 2) att *= tl_spot(l, direction, cos_inner, cos_outer);
-    return att;
-}
-
 void tl_model_light_add(tl_light_data ld, vec3 p, vec3 n, vec3 v)
 {
     int model = u_material_model, type = int(ld.color_type.w);
@@ -156,13 +120,7 @@ void tl_model_light_add(tl_light_data ld, vec3 p, vec3 n, vec3 v)
         tl_model_acc.wrap += c * min(att * tl_wrap_weight(nl, u_wrap), TL_LIGHT_CLAMP);
         return;
     }
-    vec3 h = l + v;
-    float hl2 = dot(h, h);
-    if (!(nl > 0.0) || hl2 < 1e-12) return;
-    float nh = dot(n, h * inversesqrt(hl2));
-    float nv = clamp(dot(n, v), 0.0, 1.0);
-    float w = TL_PI * tl_charlie_d(nh, u_sheen_roughness) * tl_sheen_vis(nl, nv) * nl * att;
-    tl_model_acc.sheen += c * min(w, TL_LIGHT_CLAMP);
+    tl_model_acc.sheen += c * tl_sheen_weight(n, v, l, att, u_sheen_roughness);
 }
 #endif
 
