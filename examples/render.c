@@ -112,6 +112,12 @@ static int load_scene(render_args *a, tl_tool_log *log, tl_scene **out)
 {
     tl_scene *scene = NULL;
     tl_result res;
+    if (strcmp(a->scene, "showcase") == 0) { /* the material models' spheres (scene.h) */
+        res = tl_scene_create_showcase(&(tl_showcase_scene_desc){.point_lights = a->sd.point_lights, .seed = a->sd.seed},
+                                       out);
+        if (res != TL_OK) fprintf(stderr, "thinlight-render: building the showcase scene: %s\n", tl_result_string(res));
+        return res != TL_OK;
+    }
     if (strcmp(a->scene, "default") != 0) {
         /* a glTF file: its own lights (or the default rig), plus --lights N seeded point lights */
         char gerr[1024] = "";

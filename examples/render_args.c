@@ -8,8 +8,8 @@
 #include "tool_settings.h"
 
 static const char usage_head[] =
-    "usage: thinlight-render SCENE.gltf|SCENE.glb|default -o OUT.png|OUT.exr [options]\n"
-    "       thinlight-render SCENE.gltf|SCENE.glb|default --stats|--print-plan [options]\n"
+    "usage: thinlight-render SCENE.gltf|SCENE.glb|default|showcase -o OUT.png|OUT.exr [options]\n"
+    "       thinlight-render SCENE.gltf|SCENE.glb|default|showcase --stats|--print-plan [options]\n"
     "       thinlight-render --list-devices\n"
     "  --size WxH            image size (default 1280x720; 1..16384 per side)\n"
     "  --lights N            point lights of the built-in scene (default 64; 0..65536); for a glTF\n"

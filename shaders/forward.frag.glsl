@@ -20,6 +20,9 @@
 #include "shadow.glsl"
 #endif
 layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
+#if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD)
+#include "material_models.glsl" // per-material models: each light's exact terms
+#endif
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
 #ifdef TL_SSAO_AMBIENT
@@ -31,13 +34,23 @@ void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout 
 {
     vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
                               l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
+    float vis = 1.0;
 #ifdef TL_SHADOWS
-    if (l.cos_inner.z > 0.0 && t != vec3(0.0))
-        t *= tl_shadow(l.cos_inner.z, p, n, tl_shadow_to_light(int(l.color_type.w), p, l.position_radius.xyz, l.direction_cos_outer.xyz), l.position_radius.xyz);
+#if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD)
+    bool lit = true; // a model's own terms (wrap, sheen) may reach past the standard ones
+#else
+    bool lit = t != vec3(0.0);
+#endif
+    if (l.cos_inner.z > 0.0 && lit)
+        vis = tl_shadow(l.cos_inner.z, p, n, tl_shadow_to_light(int(l.color_type.w), p, l.position_radius.xyz, l.direction_cos_outer.xyz), l.position_radius.xyz);
+    t *= vis;
 #endif
     diffuse += l.color_type.rgb * t.x;
     specular += l.color_type.rgb * t.y;
     fresnel += l.color_type.rgb * t.z;
+#if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD)
+    tl_model_light_add(l, p, n, v, vis);
+#endif
 }
 #endif
 
@@ -96,9 +109,14 @@ void main()
 #ifdef TL_SSAO_DIFFUSE
     diffuse *= ao;
 #endif
-    vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + s.specular * specular + fresnel + s.emissive;
+    vec3 ambient = u_ambient * (s.occlusion * ao);
 #else
-    vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + s.specular * specular + fresnel + s.emissive;
+    vec3 ambient = u_ambient * s.occlusion;
+#endif
+    vec3 c = s.albedo * (diffuse + ambient) + s.specular * specular + fresnel + s.emissive;
+#if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD) && !defined(TL_STIPPLE)
+    c = tl_model_shade(u_material_model, s, clamp(dot(n, v), 0.0, 1.0), diffuse, ambient, s.specular * specular + fresnel,
+                       tl_model_acc);
 #endif
 #ifdef TL_IBL
     c += tl_ibl(s.albedo, s.specular, s.gloss, s.occlusion, n, v);

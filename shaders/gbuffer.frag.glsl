@@ -40,6 +40,55 @@ layout(location = TL_OUT_FAT_MATERIAL) out vec4 o_material;
 layout(location = TL_OUT_HDR) out vec4 o_hdr;
 #endif
 
+// The deferred modes' light pass shades by the material model where the G-buffer stores it
+// (fat_models.glsl): fat in fat.position.w, thin-deferred in RT1.a (unless SSAO stores occlusion
+// there).
+#if defined(TL_OUT_RT1) && defined(TL_OUT_HDR) && !defined(TL_AO_STORE)
+#define TL_THIN_DEFERRED_BYTE // thin-deferred with RT1.a free
+#endif
+#if defined(TL_MATERIAL_MODELS) && (defined(TL_OUT_FAT_POSITION) || defined(TL_THIN_DEFERRED_BYTE))
+#define TL_DEFERRED_MODELS
+#endif
+
+#ifdef TL_DEFERRED_MODELS
+// fat: 1 + model + frac / 2 (frac: the wrap, the clearcoat's 8-bit factor and roughness, or the
+// sheen's 4-bit colour and 8-bit roughness).
+float tl_fat_model_word()
+{
+    float frac = 0.0;
+    if (u_material_model == 4) frac = clamp(u_wrap, 0.0, 1.0);
+    if (u_material_model == 2) frac = float(tl_unorm8(u_clearcoat) * 256u + tl_unorm8(u_clearcoat_roughness)) / 65536.0;
+    if (u_material_model == 3) {
+        uvec3 c = uvec3(clamp(u_sheen_color, 0.0, 1.0) * 15.0 + 0.5);
+        frac = float((c.r << 16) | (c.g << 12) | (c.b << 8) | tl_unorm8(u_sheen_roughness)) / 1048576.0;
+    }
+    return 1.0 + float(u_material_model) + 0.5 * frac;
+}
+
+// thin-deferred: model | q5 << 3 (q5: the wrap or the coat's roughness in 5 bits), as RT1.a's unorm.
+float tl_thin_model_byte()
+{
+    float param = u_material_model == 4 ? u_wrap : u_material_model == 2 ? u_clearcoat_roughness : 0.0;
+    uint q = uint(clamp(param, 0.0, 1.0) * 31.0 + 0.5);
+    return float(uint(u_material_model) | (q << 3)) / 255.0;
+}
+
+// The G-buffer pass's HDR (ambient and emissive) under the model, as forward's tl_model_shade has
+// them: unlit is its colour, a clearcoat's base is scaled by 1 - the coat's Fresnel.
+vec3 tl_deferred_model_hdr(tl_surface s, vec3 n, vec3 c)
+{
+    if (u_material_model == 1) return s.albedo + s.emissive;
+    if (u_material_model != 2) return c;
+    float nv = clamp(dot(n, normalize(-v_view_position)), 0.0, 1.0);
+#ifdef TL_OUT_FAT_POSITION
+    float k = u_clearcoat;
+#else
+    float k = 1.0; // thin-deferred's light pass takes the coat's factor as 1
+#endif
+    return c * (1.0 - k * (0.04 + 0.96 * tl_fresnel_weight(nv)));
+}
+#endif
+
 float tl_linear_to_srgb1(float c)
 {
     c = clamp(c, 0.0, 1.0);
@@ -57,6 +106,11 @@ void main()
     vec3 n = tl_material_normal();
 #endif
 #ifdef TL_OUT_RT0
+// thin-lpp (and thin-deferred without the model's byte): a clearcoat's light sums are its coat's
+// lobe (material_models.glsl)
+#if defined(TL_MATERIAL_MODELS) && !defined(TL_DEFERRED_MODELS)
+    if (u_material_model == 2) s.gloss = 1.0 - u_clearcoat_roughness;
+#endif
 #ifdef TL_RT0_RGB10A2
     uint t = tl_rt0_encode_rgb10a2(n, s.gloss, 0u);
     o_rt0 = vec4(float(t & 1023u), float((t >> 10) & 1023u), float((t >> 20) & 1023u), float(t >> 30)) /
@@ -72,12 +126,18 @@ void main()
     uint spec = tl_unorm8(sqrt(clamp(tl_luminance(s.specular), 0.0, 1.0)));
 #ifdef TL_AO_STORE
     o_rt1 = vec4(float(yc.x) / 255.0, float(yc.y) / 255.0, float(spec) / 255.0, s.occlusion); // for ssao-apply
+#elif defined(TL_DEFERRED_MODELS)
+    o_rt1 = vec4(float(yc.x) / 255.0, float(yc.y) / 255.0, float(spec) / 255.0, tl_thin_model_byte());
 #else
     o_rt1 = vec4(float(yc.x), float(yc.y), float(spec), 0.0) / 255.0;
 #endif
 #endif
 #ifdef TL_OUT_FAT_POSITION
+#ifdef TL_DEFERRED_MODELS
+    o_position = vec4(v_view_position, tl_fat_model_word());
+#else
     o_position = vec4(v_view_position, 1.0);
+#endif
 #endif
 #ifdef TL_OUT_FAT_NORMAL
     o_normal = vec4(n, s.gloss);
@@ -96,6 +156,9 @@ void main()
     vec3 c = s.albedo * u_ambient * s.occlusion + s.emissive;
 #ifdef TL_IBL
     c += tl_ibl(s.albedo, s.specular, s.gloss, s.occlusion, tl_material_normal(), normalize(-v_view_position));
+#endif
+#ifdef TL_DEFERRED_MODELS
+    c = tl_deferred_model_hdr(s, n, c); // unlit: albedo and emissive alone (no ambient, no environment)
 #endif
     o_hdr = vec4(min(c, vec3(65504.0)), 1.0);
 #endif

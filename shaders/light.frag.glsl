@@ -7,6 +7,9 @@
 #include "shadow.glsl"
 flat in float f_shadow; // the light's shadow slot (0: casts none)
 #endif
+#if defined(TL_MATERIAL_MODELS) && !defined(TL_LIGHT_ACCUM)
+#include "fat_models.glsl" // each light under the pixel's material model
+#endif
 
 flat in vec4 f_position_radius;
 flat in vec3 f_color;
@@ -53,6 +56,26 @@ void main()
     tl_gbuffer_normal_gloss(px, n, gloss);
 #endif
     vec3 v = normalize(-p);
+#if defined(TL_MATERIAL_MODELS) && !defined(TL_LIGHT_ACCUM)
+    tl_fat_model fm = tl_fat_model_read(px, n, v);
+    if (fm.model != 0) {
+#ifdef TL_LIGHT_SHADE_THIN
+        vec3 albedo, spec_color;
+        tl_rt1_read(px, albedo, spec_color);
+#endif
+        vec3 radiance = tl_fat_model_radiance(fm, TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(gloss), f_color,
+                                              f_position_radius, f_direction_cos_outer.xyz, f_cos_inner,
+                                              f_direction_cos_outer.w, f_source_radius, albedo, spec_color);
+#ifdef TL_SHADOWS
+        // one light's radiance is linear in its visibility, whatever the model
+        if (f_shadow > 0.0 && radiance != vec3(0.0))
+            radiance *= tl_shadow(f_shadow, p, n, tl_shadow_to_light(TL_LIGHT_TYPE, p, f_position_radius.xyz, f_direction_cos_outer.xyz),
+                                  f_position_radius.xyz);
+#endif
+        o_color = vec4(min(radiance, vec3(65504.0)), 0.0);
+        return;
+    }
+#endif
     vec3 t = tl_light_weights(TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(gloss), f_position_radius, f_direction_cos_outer.xyz,
                               f_cos_inner, f_direction_cos_outer.w, f_source_radius);
 #ifdef TL_SHADOWS

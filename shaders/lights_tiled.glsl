@@ -5,6 +5,46 @@
 // rounding. TL_LIGHT_ACCUM, TL_LIGHT_SHADE_THIN or TL_LIGHT_SHADE_FAT as for the volumes.
 #include "gbuffer_decode.glsl"
 #include "tile_lights.glsl"
+#if defined(TL_MATERIAL_MODELS) && !defined(TL_LIGHT_ACCUM)
+#include "fat_models.glsl" // each light under the pixel's material model
+
+// fat, thin-deferred: one light's radiance under the pixel's model; nothing where it cannot reach p (as tl_tiled_add).
+vec3 tl_fat_tiled_add(tl_fat_model fm, tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, vec3 albedo,
+                      vec3 spec_color)
+{
+    int type = int(l.color_type.w);
+    if (type != 3) {
+        vec3 to_light = l.position_radius.xyz - p;
+        float d2 = dot(to_light, to_light);
+        if (d2 >= l.position_radius.w * l.position_radius.w) return vec3(0.0);
+        if (type == 2 && d2 > 0.0 && dot(-to_light, l.direction_cos_outer.xyz) <= l.direction_cos_outer.w * sqrt(d2))
+            return vec3(0.0);
+    }
+    vec3 c = tl_fat_model_radiance(fm, type, p, n, v, shape, l.color_type.rgb, l.position_radius, l.direction_cos_outer.xyz,
+                                   l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y, albedo, spec_color);
+#ifdef TL_SHADOWS
+    if (l.cos_inner.z > 0.0 && c != vec3(0.0)) // a casting light (its shadow slot): linear in its visibility
+        c *= tl_shadow(l.cos_inner.z, p, n, tl_shadow_to_light(type, p, l.position_radius.xyz, l.direction_cos_outer.xyz),
+                       l.position_radius.xyz);
+#endif
+    return c;
+}
+
+// fat, thin-deferred: the directional lights, then the lights of `tile`'s lists, as tl_tile_lights_add visits them.
+vec3 tl_fat_tile_models(tl_fat_model fm, uint tile, vec3 p, vec3 n, vec3 v, float shape, vec3 albedo, vec3 spec_color)
+{
+    vec3 c = vec3(0.0);
+    for (uint i = 0u; i < u_light_counts.x; i++) c += tl_fat_tiled_add(fm, tl_lights[i], p, n, v, shape, albedo, spec_color);
+    uint chunks = tl_tile_chunks();
+    for (uint ch = 0u; ch < chunks; ch++) {
+        uvec2 h = tl_tile_headers[tl_tile_header_index(tile, ch)];
+        uint count = tl_tile_list_size(h, ch);
+        for (uint k = 0u; k < count; k++)
+            c += tl_fat_tiled_add(fm, tl_lights[tl_tile_list_light(h, ch, k)], p, n, v, shape, albedo, spec_color);
+    }
+    return c;
+}
+#endif
 
 struct tl_tiled_result {
     bool surface;   // false: background, nothing to add
@@ -36,6 +76,17 @@ tl_tiled_result tl_tiled_shade(ivec2 px)
     uint tile = tl_tile_index(px << TL_LIGHT_SHIFT); // tiles are in the frame's pixels
 #else
     uint tile = tl_tile_index(px);
+#endif
+#if defined(TL_MATERIAL_MODELS) && !defined(TL_LIGHT_ACCUM)
+    tl_fat_model fm = tl_fat_model_read(px, n, v);
+    if (fm.model != 0) {
+#ifdef TL_LIGHT_SHADE_THIN
+        vec3 albedo, spec_color;
+        tl_rt1_read(px, albedo, spec_color);
+#endif
+        res.diffuse = min(tl_fat_tile_models(fm, tile, p, n, v, shape, albedo, spec_color), vec3(65504.0));
+        return res;
+    }
 #endif
     tl_tile_lights_add(tile, p, n, v, shape, diffuse, specular, fresnel);
     const vec3 fp16_max = vec3(65504.0);

@@ -6,6 +6,9 @@
 #ifdef TL_IBL
 #include "ibl.glsl" // image-based light: the environment's, with this pass's F0, gloss and normal
 #endif
+#ifdef TL_MODEL
+#include "material_models.glsl" // this program's material model (TL_MODEL: its tl_material_model)
+#endif
 
 layout(binding = TL_UNIT_LIGHT_DIFFUSE) uniform sampler2D u_light_diffuse;
 layout(binding = TL_UNIT_LIGHT_SPECULAR) uniform sampler2D u_light_specular;
@@ -56,16 +59,23 @@ void main()
     if (tl_material_masked(s)) discard;
     vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
     float alpha = 1.0;
+#if defined(TL_MODEL) && TL_MODEL == 2
+    float relight_gloss = 1.0 - u_clearcoat_roughness; // a clearcoat's sums are its coat's (gbuffer.frag.glsl)
+#else
+    float relight_gloss = s.gloss;
+#endif
 #if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
     // HDR's alpha (read by no pass) marks the pixels the fix-up re-lit: 0.5 (tests, the figures)
-    int entry;
+    int entry = -1;
+#if !defined(TL_MODEL) || TL_MODEL != 1 // unlit takes no light: never listed for the fix-up's standard light
     if (tl_upsample_light(z_f, dz, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular, fresnel, entry)) alpha = 0.5;
+#endif
 #elif defined(TL_MSAA_LIGHT) && !defined(TL_NO_LIGHTS)
-    if (tl_msaa_light(dzw, tl_material_normal(), s.gloss, diffuse, specular, fresnel))
+    if (tl_msaa_light(dzw, tl_material_normal(), relight_gloss, diffuse, specular, fresnel))
         alpha = 0.5; // re-lit here, as the light scale's fix-up marks its pixels
 #elif defined(TL_STIPPLE) && !defined(TL_NO_LIGHTS)
-    if (tl_stipple_opaque_light(z_s, dz_s, tl_material_normal(), s.gloss, any(greaterThan(s.specular, vec3(0.0))), diffuse,
-                                specular, fresnel))
+    if (tl_stipple_opaque_light(z_s, dz_s, tl_material_normal(), relight_gloss, any(greaterThan(s.specular, vec3(0.0))),
+                                diffuse, specular, fresnel))
         alpha = 0.5; // lit here, as the light scale's fix-up marks its pixels
 #elif !defined(TL_NO_LIGHTS)
     ivec2 px = ivec2(gl_FragCoord.xy);
@@ -96,12 +106,18 @@ void main()
     diffuse *= ao;
     lit_albedo *= ao;
 #endif
-    vec3 c = s.albedo * (diffuse + u_ambient * (s.occlusion * ao)) + f0 * specular + fresnel + s.emissive;
+    vec3 ambient = u_ambient * (s.occlusion * ao);
 #else
     vec3 lit_albedo = s.albedo;
-    vec3 c = s.albedo * (diffuse + u_ambient * s.occlusion) + f0 * specular + fresnel + s.emissive;
+    vec3 ambient = u_ambient * s.occlusion;
 #endif
-#ifdef TL_IBL
+    vec3 c = s.albedo * (diffuse + ambient) + f0 * specular + fresnel + s.emissive;
+#ifdef TL_MODEL
+    float nv_m = clamp(dot(tl_material_normal(), normalize(-v_view_position)), 0.0, 1.0);
+    c = tl_model_shade(TL_MODEL, s, nv_m, diffuse, ambient, f0 * specular + fresnel,
+                       tl_model_sums_from_buffer(diffuse, specular + fresnel, nv_m));
+#endif
+#if defined(TL_IBL) && (!defined(TL_MODEL) || TL_MODEL != 1) // an unlit material takes no light, the environment's neither
     c += tl_ibl(s.albedo, s.specular, s.gloss, s.occlusion, tl_material_normal(), normalize(-v_view_position));
 #endif
 #if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)

@@ -22,6 +22,14 @@ layout(std140, binding = TL_UBO_MATERIAL) uniform tl_material_block {
     int u_material_flags; // TL_MATERIAL_* of scene.h
     int u_texture_mask;   // 1 albedo, 2 normal, 4 metallic-roughness, 8 emissive, 16 occlusion
     int u_uv1_mask;       // the same bits: the maps that read the second UV set
+    int u_material_model; // tl_material_model (material_models.glsl); the parameters below
+    vec3 u_dielectric_f0; // TL_MATERIAL_METALLIC_ROUGHNESS: F0 of the dielectric (0.04 by default)
+    float u_clearcoat;
+    vec3 u_sheen_color;
+    float u_sheen_roughness;
+    float u_clearcoat_roughness;
+    float u_wrap;
+    float u_toon_steps;
 };
 layout(binding = TL_UNIT_ALBEDO_TEXTURE) uniform sampler2D u_albedo_texture;       // sRGB
 layout(binding = TL_UNIT_NORMAL_TEXTURE) uniform sampler2D u_normal_texture;
@@ -84,7 +92,7 @@ tl_surface tl_material_surface()
             rough *= mr.g;
         }
         metal = clamp(metal, 0.0, 1.0);
-        s.specular = mix(vec3(0.04), base.rgb, metal);
+        s.specular = mix(u_dielectric_f0, base.rgb, metal);
         s.albedo = base.rgb * (1.0 - metal);
         s.gloss = clamp(1.0 - rough, 0.0, 1.0);
     }

@@ -10,7 +10,7 @@
 #define VW_TOOL "thinlight-viewer"
 
 static const char vw_usage[] =
-    "usage: thinlight-viewer [SCENE.gltf|SCENE.glb|crypt] [options]\n"
+    "usage: thinlight-viewer [SCENE.gltf|SCENE.glb|crypt|showcase] [options]\n"
     "Opens a window on the built-in crypt (default) or a glTF 2.0 file.\n"
     "  --size WxH            window size (default 1280x720; 16..8192 per side)\n"
     "  --lights N            crypt: point lights (default 64); glTF: seeded point lights added (0..65536)\n"

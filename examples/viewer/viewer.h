@@ -39,6 +39,7 @@ typedef enum vw_view {
     VW_VIEW_SSR,            /* screen-space reflections: the term added to HDR (ssr target) */
     VW_VIEW_BLOOM,          /* bloom: the glow the tone-map pass adds to HDR (bloom target, first level) */
     VW_VIEW_MSAA_EDGES,     /* MSAA in thin-lpp: pixels with a sample re-lit from the lists (its texel another surface's) */
+    VW_VIEW_MATERIAL_MODEL, /* each pixel's material model (tl_material_model), one colour per model (material_ids.c) */
     VW_VIEW_COUNT
 } vw_view;
 
@@ -136,7 +137,18 @@ typedef struct vw_app {
     uint64_t r_frames;               /* frames r rendered (its tl_frame_stats.frame numbering) */
     const tl_renderer *counted_r;    /* the renderer r_frames counts */
     float frame_scale[16];           /* the scale of r's frame n at [n % 16] */
+    /* the material-model view (material_ids.c): its renderer, coded scene, and what they were made for */
+    tl_renderer *ids;
+    tl_scene *id_scene;
+    const tl_scene *ids_of;
+    uint32_t ids_width, ids_height;
 } vw_app;
+
+/* material_ids.c: the material-model view into out, which holds the final image (its luma shades
+ * the models' colours; hdr: scratch of width x height x 4 floats); 0, or 1 when there is no scene
+ * or the renderer failed. */
+int vw_material_ids(vw_app *app, const tl_camera *cam, float *hdr, uint8_t *out);
+void vw_material_ids_free(vw_app *app);
 
 /* views.c */
 const char *vw_view_name(vw_view v);
@@ -153,7 +165,7 @@ void vw_views_free(vw_app *app);
 void vw_heat(float t, uint8_t rgb[3]);
 /** Grid of every view: columns and rows (first view top left, row by row). */
 #define VW_GRID_COLS 5u
-#define VW_GRID_ROWS 4u
+#define VW_GRID_ROWS 5u
 
 /* camera.c */
 void vw_camera_from_scene(vw_camera *c, const tl_camera *scene_cam, float extent);

@@ -362,6 +362,14 @@ static int vw_view_msaa_edges(vw_app *app, tl_renderer *r, const tl_camera *cam,
     return 0;
 }
 
+/* Each pixel's material model (material_ids.c; legend in docs/viewer.md). */
+static int vw_view_material_model(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    if (vw_view_final(app, r, cam, out) || vw_material_ids(app, cam, app->scratch[2], out))
+        return vw_unavailable(app, "no scene to draw");
+    return 0;
+}
+
 /* Largest channel difference of the two outputs, times diff_scale, on the heat scale. */
 static int vw_view_diff_fat(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
 {
@@ -577,6 +585,8 @@ static const vw_view_def vw_view_table[VW_VIEW_COUNT] = {
                        vw_view_bloom, NULL},
     [VW_VIEW_MSAA_EDGES] = {"msaa-edges", "MSAA: red where thin-lpp's material pass re-lit a sample from the light lists, "
                             "or where per-sample edges lit a pixel per sample; the image darkened", vw_view_msaa_edges, NULL},
+    [VW_VIEW_MATERIAL_MODEL] = {"material-model", "material model: grey standard, yellow unlit, blue clearcoat, "
+                                "magenta sheen, orange wrap, green toon; shaded by the image's luma", vw_view_material_model, NULL},
 };
 
 const char *vw_view_name(vw_view v) { return v < VW_VIEW_COUNT ? vw_view_table[v].name : "unknown"; }
@@ -719,6 +729,7 @@ int vw_views_init(vw_app *app, void *(*loader)(const char *))
 
 void vw_views_free(vw_app *app)
 {
+    vw_material_ids_free(app);
     free(app->gl);
     free(app->image);
     for (int i = 0; i < 3; i++) free(app->scratch[i]);

@@ -82,7 +82,33 @@ typedef struct tl_material {
      *  glTF textureInfo.texCoord = 1); 0: every map reads tl_vertex.uv. In a scene without uv1
      *  such a map reads tl_vertex.uv. */
     uint32_t uv1_maps;
+    /** tl_material_model: how the material pass shades it (docs/lighting.md, "Material models");
+     *  0: the standard model. The fields below are read only by the model they name. */
+    uint32_t model;
+    /** TL_MATERIAL_METALLIC_ROUGHNESS: the dielectric F0 that `specular = mix(F0, base, metal)`
+     *  starts from (glTF KHR_materials_ior and _specular); all zero = 0.04 (ior 1.5), a negative
+     *  component means exactly 0. */
+    float dielectric_f0[3];
+    float clearcoat;           /**< TL_MATERIAL_MODEL_CLEARCOAT: the coat's weight (0,1]; 0 = 1 */
+    float clearcoat_roughness; /**< TL_MATERIAL_MODEL_CLEARCOAT: the coat's perceptual roughness; 0 = the smoothest lobe */
+    float sheen_color[3];      /**< TL_MATERIAL_MODEL_SHEEN: linear sheen colour; all zero = white */
+    float sheen_roughness;     /**< TL_MATERIAL_MODEL_SHEEN: [0,1], floored at 0.07; 0 = 0.5 */
+    float wrap;                /**< TL_MATERIAL_MODEL_WRAP: how far light wraps past the terminator (0,1]; 0 = 0.5 */
+    uint32_t toon_steps;       /**< TL_MATERIAL_MODEL_TOON: bands of the diffuse ramp, 1..64; 0 = 3 */
 } tl_material;
+
+/** Per-material shading models (tl_material.model; docs/lighting.md, "Material models"). */
+typedef enum tl_material_model {
+    TL_MATERIAL_MODEL_STANDARD = 0, /**< Lambert + the frame's specular (today's model) */
+    TL_MATERIAL_MODEL_UNLIT,        /**< albedo + emissive, no light (KHR_materials_unlit) */
+    TL_MATERIAL_MODEL_CLEARCOAT,    /**< standard under a GGX coat of F0 0.04 (KHR_materials_clearcoat) */
+    TL_MATERIAL_MODEL_SHEEN,        /**< standard plus a Charlie sheen lobe (KHR_materials_sheen, cloth) */
+    TL_MATERIAL_MODEL_WRAP,         /**< wrapped diffuse (thin translucent, skin-like) */
+    TL_MATERIAL_MODEL_TOON,         /**< a banded ramp on the light sums */
+    TL_MATERIAL_MODEL_COUNT_        /**< number of values */
+} tl_material_model;
+/** The model's name ("standard", "unlit", "clearcoat", "sheen", "wrap", "toon"); "unknown" past them. */
+TL_API const char *tl_material_model_name(uint32_t model);
 
 /** Bits of tl_material.uv1_maps, one per texture map. */
 #define TL_MAP_ALBEDO 1u
@@ -252,6 +278,9 @@ typedef struct tl_scene_feature_set {
     /** An environment lights the frame (tl_renderer_set_environment; the renderer sets this, the
      *  scene never does): image-based light in the shading passes, the sky pass. */
     int has_environment;
+    /** Bits 1u << tl_material_model of the drawn materials' models; 0 (a feature set made by hand)
+     *  is the standard model only. */
+    uint32_t material_models;
 } tl_scene_feature_set;
 
 /** Fills *out with what `scene` uses; a NULL scene gives all zeros. */
@@ -299,6 +328,19 @@ typedef struct tl_default_scene_desc {
 TL_API tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **out);
 /** Frees a scene from any tl_scene_* constructor; NULL is ignored. */
 TL_API void tl_scene_destroy(tl_scene *scene);
+
+/** Parameters of the material-model showcase; zero means the default. */
+typedef struct tl_showcase_scene_desc {
+    uint32_t point_lights;  /**< default 8; at most 65536; their total light is the same at any count */
+    uint64_t seed;          /**< default 1; moves only the lights */
+    tl_allocator allocator; /**< zeroed: malloc/free */
+} tl_showcase_scene_desc;
+
+/** Builds the material-model showcase (docs/lighting.md, "Material models"): a row of five spheres
+ *  per tl_material_model (standard nearest the camera, then unlit, clearcoat, sheen, wrap, toon),
+ *  perceptual roughness 0.1 to 0.9 from left to right, on a grey floor under seeded point lights.
+ *  NULL desc means all defaults. Errors as tl_scene_create_default. *out is NULL on failure. */
+TL_API tl_result tl_scene_create_showcase(const tl_showcase_scene_desc *desc, tl_scene **out);
 
 #ifdef __cplusplus
 }

@@ -285,6 +285,10 @@ uint32_t texture_for(const context &c, const tinygltf::Model &m, texture_table *
 
 // glTF material (or -1, the default material) to tl_material; textures are decoded into `t`.
 tl_material convert_material(const context &c, const tinygltf::Model &m, int index, texture_table *t);
+// gltf_material_ext.cpp: the material extensions into the model, its parameters and the
+// dielectric F0 (base: the base colour factor, metal: the metallic factor).
+void convert_material_extensions(const context &c, const tinygltf::Material &g, const std::string &name,
+                                 const float base[3], float metal, tl_material *out);
 
 // ---- meshes (gltf_mesh.cpp, gltf_normals.cpp) -----------------------------------------------
 

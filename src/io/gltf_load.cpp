@@ -49,7 +49,9 @@ template <class T> T *scene_array(const context &c, size_t n, const std::string 
 // integer attributes go through the generic accessor reader).
 bool supported_extension(const std::string &e)
 {
-    return e == "KHR_lights_punctual" || e == "KHR_materials_emissive_strength" || e == "KHR_mesh_quantization";
+    return e == "KHR_lights_punctual" || e == "KHR_materials_emissive_strength" || e == "KHR_mesh_quantization" ||
+           e == "KHR_materials_unlit" || e == "KHR_materials_clearcoat" || e == "KHR_materials_sheen" ||
+           e == "KHR_materials_specular" || e == "KHR_materials_ior";
 }
 
 void check_extensions(const context &c, const tinygltf::Model &m)

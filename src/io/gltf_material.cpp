@@ -124,6 +124,7 @@ tl_material convert_material(const context &c, const tinygltf::Model &m, int ind
     } else if (g.alphaMode != "OPAQUE") {
         warn(c, name + ": unknown alphaMode \"" + g.alphaMode + "\"; drawing it opaque");
     }
+    convert_material_extensions(c, g, name, base, metal, &out); // gltf_material_ext.cpp
     const std::string &label = !g.name.empty() ? g.name : name;
     std::strncpy(out.name, label.c_str(), sizeof out.name - 1);
     return out;

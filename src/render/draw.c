@@ -91,19 +91,21 @@ static void tl__bind_material(const GladGLContext *gl, const tl__scene_gpu *g, u
         if (m->textures[k]) gl->BindTextureUnit((GLuint)(TL__UNIT_ALBEDO_TEXTURE + k), m->textures[k]);
 }
 
-/* Draws visible[first, first + count): triangles cull their back faces unless double-sided; points
- * and lines are never culled. */
-static void tl__draw_objects(const tl__pass_ctx *ctx, size_t first, size_t count)
+/* Draws visible[first, first + count) with `program`, those whose material's model is `model` (or
+ * every one: UINT32_MAX): triangles cull their back faces unless double-sided; points and lines are
+ * never culled. */
+static void tl__draw_objects_of(const tl__pass_ctx *ctx, size_t first, size_t count, GLuint program, uint32_t model)
 {
     static const GLenum modes[TL_PRIMITIVE_COUNT_] = {GL_TRIANGLES, GL_LINES, GL_POINTS};
     const GladGLContext *gl = ctx->gl;
     const tl__scene_gpu *g = ctx->scene;
     tl__state_vertex_array(gl, ctx->state, g->vao);
-    tl__state_program(gl, ctx->state, ctx->programs[0]);
+    tl__state_program(gl, ctx->state, program);
     uint32_t last_material = UINT32_MAX;
     for (size_t j = first; j < first + count; j++) {
         uint32_t i = g->visible[j];
         const tl_object *o = &g->objects[i];
+        if (model != UINT32_MAX && g->materials[o->material].model != model) continue;
         if (o->material != last_material) {
             tl__bind_material(gl, g, o->material);
             last_material = o->material;
@@ -118,7 +120,17 @@ static void tl__draw_objects(const tl__pass_ctx *ctx, size_t first, size_t count
     }
 }
 
+static void tl__draw_objects(const tl__pass_ctx *ctx, size_t first, size_t count)
+{
+    tl__draw_objects_of(ctx, first, count, ctx->programs[0], UINT32_MAX);
+}
+
 void tl__draw_opaque(const tl__pass_ctx *ctx) { tl__draw_objects(ctx, 0, ctx->scene->visible_opaque); }
+
+void tl__draw_opaque_model(const tl__pass_ctx *ctx, uint32_t model)
+{
+    tl__draw_objects_of(ctx, 0, ctx->scene->visible_opaque, ctx->programs[model], model);
+}
 
 void tl__draw_transparent(const tl__pass_ctx *ctx)
 {

@@ -13,7 +13,7 @@
 #include "device.h"
 #include "targets.h"
 
-#define TL__PASS_MAX_PROGRAMS 4 /* programs of one pass (lights: one per light type; lights-samples: + tiled) */
+#define TL__PASS_MAX_PROGRAMS 6 /* programs of one pass (lights: one per light type; material: one per model) */
 #define TL__PASS_MAX_QUERIES 3  /* samples-passed queries a pass issues itself */
 #define TL__PASS_MAX_TARGETS 8  /* targets one pass declares (the G-buffer pass: depth, RT0, RT1, fat's, HDR) */
 
@@ -189,7 +189,16 @@ const char *tl__ssao_defines(const tl__plan_input *in, const tl__pass_decl *d);
  * program. */
 void tl__draw_fullscreen(const tl__pass_ctx *ctx);
 void tl__draw_opaque(const tl__pass_ctx *ctx);
+/* The opaque objects whose material has model `model`, with the pass's program of that slot. */
+void tl__draw_opaque_model(const tl__pass_ctx *ctx, uint32_t model);
 void tl__draw_transparent(const tl__pass_ctx *ctx);
+/* material_models.c: the models the plan shades (1u << tl_material_model; the standard one when
+ * the features name none), " TL_MATERIAL_MODELS" when some model is not the standard one, the
+ * material pass's program per model (`defines` after each one's TL_MODEL) and its draws. */
+uint32_t tl__plan_models(const tl_scene_feature_set *f);
+const char *tl__models_define(const tl_scene_feature_set *f);
+void tl__material_model_slots(const tl__plan_input *in, const char *defines, tl__pass_defines *out);
+void tl__material_models_draw(const tl__pass_ctx *ctx);
 void tl__draw_points_lines(const tl__pass_ctx *ctx);
 
 /* The table, in execution order; application passes go between its entries. */

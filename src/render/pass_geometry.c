@@ -194,8 +194,7 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
 
 static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
-    out->used[0] = 1;
-    char upsample[96] = "";
+    char upsample[96] = "", defines[sizeof out->slot[0]];
     if ((d->samples & TL__B(LIGHT_DIFFUSE)) && (d->samples & TL__B(LIGHT_RT0)))
         snprintf(upsample, sizeof upsample, " TL_UPSAMPLE=%u%s%s", (unsigned)in->light_shift,
                  in->o->rt0 == TL_RT0_RGB10A2 ? " TL_RT0_RGB10A2" : "",
@@ -208,8 +207,9 @@ static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *
         snprintf(upsample, sizeof upsample, " TL_MSAA_LIGHT %s%s%s%s", samples, in->rt0_define,
                  (d->reads & TL__B(LIGHT_LISTS)) ? " TL_RELIGHT_TILES" : "",
                  tl__depth_format(in->o) == GL_DEPTH_COMPONENT32F ? " TL_DEPTH_FLOAT" : "");
-    snprintf(out->slot[0], sizeof out->slot[0], "%s%s%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",
+    snprintf(defines, sizeof defines, "%s%s%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",
              in->material_defines, tl__ssao_defines(in, d), upsample);
+    tl__material_model_slots(in, defines, out); /* one program per material model */
 }
 
 /* The light scale's upsample reads the light buffer bilinearly inside surfaces: a linear sampler on
@@ -221,7 +221,7 @@ static void tl__material_execute(const tl__pass_ctx *ctx)
     tl__fixup *f = ctx->lights ? &ctx->lights->fixup : NULL;
     for (int k = 0; k < 3; k++) gl->BindSampler(units[k], ctx->linear_sampler);
     if (f) tl__fixup_begin(gl, f);
-    tl__draw_opaque(ctx);
+    tl__material_models_draw(ctx);
     if (f) tl__fixup_end(gl, f, ctx->frame);
     for (int k = 0; k < 3; k++) gl->BindSampler(units[k], 0);
 }
@@ -229,7 +229,12 @@ static void tl__material_execute(const tl__pass_ctx *ctx)
 const tl__pass_def tl__pass_material = {
     .id = TL_PASS_MATERIAL,
     .name = "material",
-    .programs = {{"material", "gbuffer.vert.glsl", "material.frag.glsl"}},
+    .programs = {{"material", "gbuffer.vert.glsl", "material.frag.glsl"},
+                 {"material.unlit", "gbuffer.vert.glsl", "material.frag.glsl"},
+                 {"material.clearcoat", "gbuffer.vert.glsl", "material.frag.glsl"},
+                 {"material.sheen", "gbuffer.vert.glsl", "material.frag.glsl"},
+                 {"material.wrap", "gbuffer.vert.glsl", "material.frag.glsl"},
+                 {"material.toon", "gbuffer.vert.glsl", "material.frag.glsl"}},
     .declare = tl__material_declare,
     .permute = tl__material_permute,
     .execute = tl__material_execute,

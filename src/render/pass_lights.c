@@ -65,7 +65,11 @@ void tl__light_pass_defines(const tl__plan_input *in, const tl__pass_decl *d, ch
     if (in->light_shift) snprintf(shift, sizeof shift, " TL_LIGHT_SHIFT=%u", (unsigned)in->light_shift);
     char samples[32] = ""; /* MSAA per-sample edges: a multisampled G-buffer (pass_msaa.c) */
     if (tl__msaa_sample_edges(in->o)) snprintf(samples, sizeof samples, " TL_GBUFFER_SAMPLES=%u", (unsigned)in->msaa);
-    snprintf(out, size, "%s%s%s%s", rt0 ? " " : "", rt0 ? in->rt0_define : "", shift, samples);
+    /* fat, and thin-deferred where RT1.a is not SSAO's, shade each light under the pixel's material
+     * model (fat_models.glsl) */
+    int model_stored = (d->reads & TL__B(FAT_POSITION)) || ((d->reads & TL__B(RT1)) && tl__ssao_pass(in) != 2);
+    const char *models = model_stored ? tl__models_define(&in->f) : "";
+    snprintf(out, size, "%s%s%s%s%s", rt0 ? " " : "", rt0 ? in->rt0_define : "", shift, samples, models);
 }
 
 static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
@@ -86,7 +90,7 @@ static void tl__lights_permute(const tl__plan_input *in, const tl__pass_decl *d,
     for (int k = 0; k < 3; k++) {
         if (!counts[k]) continue;
         out->used[k] = 1;
-        char reads[64];
+        char reads[96];
         tl__light_pass_defines(in, d, reads, sizeof reads);
         snprintf(out->slot[k], sizeof out->slot[k], "TL_LIGHT_TYPE=%d %s%s %s%s", k + 1, in->mode->light_define, reads,
                  in->spec_define, k < 2 ? fullscreen : "");

@@ -82,7 +82,7 @@ static void tl__tiled_permute(const tl__plan_input *in, const tl__pass_decl *d, 
     int slot = tl__compute_shading(in);
     const char *image_format = in->o->light_format == TL_LIGHT_FORMAT_R11G11B10F ? "r11f_g11f_b10f" : "rgba16f";
     out->used[slot] = 1;
-    char reads[64];
+    char reads[96];
     tl__light_pass_defines(in, d, reads, sizeof reads);
     snprintf(out->slot[slot], sizeof out->slot[slot], "%s%s %s%s%s", in->mode->light_define, reads, in->spec_define,
              slot ? " TL_LIGHT_IMAGE_FORMAT=" : "", slot ? image_format : "");

@@ -19,6 +19,7 @@ static void tl__material_defines(const tl_scene_feature_set *f, char *out, size_
              f->has_emissive_texture ? " TL_EMISSIVE_TEXTURE" : "", f->has_occlusion ? " TL_OCCLUSION" : "",
              f->has_alpha_mask ? " TL_ALPHA_MASK" : "", f->has_vertex_colors ? " TL_VCOLOR" : "",
              f->has_uv1 && f->has_textures ? " TL_UV1" : "");
+    snprintf(out + strlen(out), size - strlen(out), "%s", tl__models_define(f)); /* material_models.c */
 }
 
 /* Volumes or tiles: forced by the options, else by the number of local lights (docs/frame.md

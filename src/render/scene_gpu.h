@@ -27,12 +27,16 @@ typedef struct tl__material_ubo {
     float specular[3], alpha;
     float emissive[3], alpha_cutoff;
     float metallic, roughness, normal_scale, occlusion_strength;
-    int32_t flags, texture_mask, uv1_mask, pad;
+    int32_t flags, texture_mask, uv1_mask, model;
+    float dielectric_f0[3], clearcoat;    /* the models' parameters (material_models.glsl) */
+    float sheen_color[3], sheen_roughness;
+    float clearcoat_roughness, wrap, toon_steps, pad;
 } tl__material_ubo;
 
 typedef struct tl__gpu_material {
     uint32_t flags;
     GLuint textures[TL__MATERIAL_TEXTURES]; /* albedo, normal, mr, emissive, occlusion; 0 = none */
+    uint32_t model; /* tl_material_model: the material pass's program */
 } tl__gpu_material;
 
 /* What an object slot is besides its tl_object (tl__scene_gpu.object_state). */

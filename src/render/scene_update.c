@@ -64,6 +64,7 @@ int tl__scene_features_refresh(tl__scene_gpu *g)
         f.has_double_sided |= a->has_double_sided;
         f.has_microfacet |= a->has_microfacet;
         f.has_uv1 |= a->has_uv1 && g->vbo_uv1;
+        f.material_models |= a->material_models;
     }
     f.has_points_lines = g->points_lines_objects > 0;
     f.has_vertex_colors = g->vbo_colors && drawn;
@@ -80,7 +81,7 @@ int tl__scene_features_refresh(tl__scene_gpu *g)
                    f.has_emissive_texture != o->has_emissive_texture || f.has_double_sided != o->has_double_sided ||
                    f.has_microfacet != o->has_microfacet || f.alpha_blend_objects != o->alpha_blend_objects ||
                    f.has_points_lines != o->has_points_lines || f.has_vertex_colors != o->has_vertex_colors ||
-                   f.has_uv1 != o->has_uv1);
+                   f.has_uv1 != o->has_uv1 || f.material_models != o->material_models);
     *o = f;
     return changed;
 }

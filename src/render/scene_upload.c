@@ -242,6 +242,14 @@ static void tl__material_record(const tl_material *m, int texture_mask, tl__mate
     u->flags = (int32_t)m->flags;
     u->texture_mask = texture_mask;
     u->uv1_mask = (int32_t)(m->uv1_maps & (uint32_t)texture_mask);
+    u->model = (int32_t)m->model;
+    memcpy(u->dielectric_f0, m->dielectric_f0, sizeof u->dielectric_f0);
+    memcpy(u->sheen_color, m->sheen_color, sizeof u->sheen_color);
+    u->clearcoat = m->clearcoat;
+    u->clearcoat_roughness = m->clearcoat_roughness;
+    u->sheen_roughness = m->sheen_roughness;
+    u->wrap = m->wrap;
+    u->toon_steps = (float)m->toon_steps;
 }
 
 /* Textures and one std140 record per material (a scene without materials: the zeroed one), with
@@ -258,6 +266,7 @@ static tl_result tl__upload_materials(tl__device *dev, tl__scene_gpu *g, const t
         const tl_material *m = &resolved;
         int mask = 0;
         g->materials[i].flags = m->flags;
+        g->materials[i].model = m->model;
         for (int k = 0; k < TL__MATERIAL_TEXTURES; k++) {
             g->materials[i].textures[k] =
                 tl__slot_texture(dev, g, s, tl__material_texture(m, k), tl__material_texture_slots[k].srgb);
@@ -383,6 +392,7 @@ tl_result tl__scene_set_material(tl__device *dev, tl__scene_gpu *g, uint32_t ind
     dev->gl.NamedBufferSubData(g->ubo_materials, (GLintptr)(index * g->material_stride), (GLsizeiptr)sizeof record,
                                &record);
     g->materials[index].flags = resolved.flags;
+    g->materials[index].model = resolved.model;
     memcpy(g->materials[index].textures, textures, sizeof textures);
     g->material_features[index] = (tl_scene_feature_set){0};
     tl__material_features(m, g->texture_count, &g->material_features[index]);

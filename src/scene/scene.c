@@ -52,6 +52,8 @@ void tl__material_features(const tl_material *material, size_t texture_count, tl
     if (tl__nonzero3(m.emissive) && (m.emissive_map == 0 || emissive)) out->has_emissive = 1;
     if (m.flags & TL_MATERIAL_ALPHA_MASK) out->has_alpha_mask = 1;
     if (m.flags & TL_MATERIAL_ALPHA_BLEND) out->has_alpha_blend = 1;
+    if (m.model < TL_MATERIAL_MODEL_COUNT_) out->material_models |= 1u << m.model;
+    if (m.model == TL_MATERIAL_MODEL_CLEARCOAT) out->has_specular = 1; /* the coat reads the specular sums */
     for (int k = 0; k < TL__MATERIAL_TEXTURE_SLOTS; k++) /* the scene's uv1 decides (tl_scene_features) */
         if ((m.uv1_maps & (1u << k)) && tl__material_has_texture(&m, k, nt)) out->has_uv1 = 1;
 }

@@ -352,7 +352,7 @@ tl_result tl__material_check(const tl_material *m, const char *what, size_t text
                            "TL_TEXTURE_MAP; 0 for none)",
                            what, tl__material_texture_slots[k].name, map, map - 1u, texture_count);
     }
-    return TL_OK;
+    return tl__material_model_check(m, what, message, size);
 }
 
 void tl__material_defaults(const tl_material *in, tl_material *out)
@@ -364,6 +364,7 @@ void tl__material_defaults(const tl_material *in, tl_material *out)
         out->albedo[k] = !colour ? TL_MATERIAL_DEFAULT_ALBEDO : in->albedo[k] < 0.0f ? 0.0f : in->albedo[k];
     if (out->normal_scale == 0.0f) out->normal_scale = 1.0f;
     if (out->occlusion_strength == 0.0f) out->occlusion_strength = 1.0f;
+    tl__material_model_defaults(out);
 }
 
 /* ---- lights ------------------------------------------------------------------------------------ */

@@ -113,6 +113,10 @@ tl_result tl__material_check(const tl_material *m, const char *what, size_t text
  * (albedo, specular and emissive all zero) gets TL_MATERIAL_DEFAULT_ALBEDO, a negative albedo
  * component is 0, normal_scale and occlusion_strength 0 are 1. */
 void tl__material_defaults(const tl_material *in, tl_material *out);
+/* material_models.c: the models' parameters with their zeroes resolved (called by
+ * tl__material_defaults) and their check (called by tl__material_check). */
+void tl__material_model_defaults(tl_material *m);
+tl_result tl__material_model_check(const tl_material *m, const char *what, char *message, size_t size);
 /* Sets in *out the flags (has_*) that `material` alone needs, as tl_scene_features counts them
  * for a material some object draws; `texture_count` is the scene's. Counts are left alone. */
 void tl__material_features(const tl_material *material, size_t texture_count, tl_scene_feature_set *out);

@@ -1,0 +1,388 @@
+/* Material models (scene.h tl_material.model; docs/lighting.md, "Material models"), on the
+ * showcase scene: the plan builds one material-pass program per model present and nothing for a
+ * standard-only scene; the standard model's pixels do not change when other models are on screen;
+ * the models the light sums hold exactly match forward's per-light evaluation as closely as the
+ * standard model does; the specular/ior mapping is the F0 it says; bad parameters are refused. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "models_measure.h"
+#include "render_fixture.h"
+#include "thinlight/renderer.h"
+#include "thinlight/scene.h"
+#include "tl_test.h"
+
+#define W 320
+#define H 180
+
+static tl_renderer_desc desc(tl_render_mode mode)
+{
+    return (tl_renderer_desc){.width = W, .height = H, .options = {.mode = mode},
+                              .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
+                              .logger = tl_test_logger};
+}
+
+static tl_scene *showcase(uint32_t lights)
+{
+    tl_scene *s = NULL;
+    TL_CHECK(tl_scene_create_showcase(&(tl_showcase_scene_desc){.point_lights = lights}, &s) == TL_OK);
+    return s;
+}
+
+/* The material pass's programs of a plan for `models`: count, and whether any program of any pass
+ * names the models' switches. */
+static size_t material_programs(uint32_t models, int *switches, char names[][32])
+{
+    tl_scene_feature_set f = {.point_lights = 4, .has_specular = 1, .has_microfacet = 1, .material_models = models};
+    static tl_frame_plan p;
+    TL_CHECK(tl_frame_plan_build(&(tl_renderer_desc){.width = 64, .height = 64}, &f, &p) == TL_OK);
+    size_t n = 0;
+    *switches = 0;
+    for (size_t i = 0; i < p.program_count; i++) {
+        if (strstr(p.programs[i].defines, "TL_MODEL") || strstr(p.programs[i].defines, "TL_MATERIAL_MODELS"))
+            *switches = 1;
+        if (p.programs[i].pass == TL_PASS_MATERIAL) snprintf(names[n++], 32, "%s", p.programs[i].name);
+    }
+    return n;
+}
+
+TL_TEST(material_models_plan_one_program_per_model)
+{
+    char names[8][32];
+    int switches = 0;
+    /* a hand-made feature set (0) and a scene of standard materials (bit 0): today's one program */
+    for (uint32_t models = 0; models <= 1; models++) {
+        TL_CHECK_EQ_U(material_programs(models, &switches, names), 1);
+        TL_CHECK(strcmp(names[0], "material") == 0);
+        TL_CHECK(!switches);
+    }
+    TL_CHECK_EQ_U(material_programs(1u << TL_MATERIAL_MODEL_TOON, &switches, names), 1);
+    TL_CHECK(strcmp(names[0], "material.toon") == 0 && switches);
+    TL_CHECK_EQ_U(material_programs((1u << TL_MATERIAL_MODEL_COUNT_) - 1u, &switches, names), TL_MATERIAL_MODEL_COUNT_);
+    for (uint32_t m = 1; m < TL_MATERIAL_MODEL_COUNT_; m++) {
+        char want[32];
+        snprintf(want, sizeof want, "material.%s", tl_material_model_name(m));
+        TL_CHECK(strcmp(names[m], want) == 0);
+    }
+    /* the showcase's features name all six; its standard-only copy none but the standard one */
+    tl_scene *s = showcase(8), *std = s ? tl_mm_standard_only(s) : NULL;
+    if (!std) return;
+    tl_scene_feature_set fs, fstd;
+    tl_scene_features(s, &fs);
+    tl_scene_features(std, &fstd);
+    TL_CHECK_EQ_U(fs.material_models, (1u << TL_MATERIAL_MODEL_COUNT_) - 1u);
+    TL_CHECK_EQ_U(fstd.material_models, 1u);
+    tl_mm_free(std);
+    tl_scene_destroy(s);
+}
+
+/* The standard row's pixels, byte for byte, with and without the other models on screen. */
+TL_TEST(material_models_standard_pixels_unchanged_by_other_models)
+{
+    if (!ensure_context()) return;
+    tl_scene *s = showcase(8), *std = s ? tl_mm_standard_only(s) : NULL;
+    size_t n = (size_t)W * H;
+    float *a = malloc(n * 16), *b = malloc(n * 16);
+    uint8_t *rows = malloc(n);
+    TL_CHECK(std && a && b && rows && tl_mm_rows(s, desc(TL_MODE_FORWARD), rows) == 0);
+    const tl_render_mode modes[4] = {TL_MODE_THIN_LPP, TL_MODE_FORWARD, TL_MODE_FAT, TL_MODE_THIN_DEFERRED};
+    for (int k = 0; k < 4 && std && a && b && rows; k++) {
+        TL_CHECK(tl_mm_render(s, desc(modes[k]), 1, a, NULL) == 0);
+        TL_CHECK(tl_mm_render(std, desc(modes[k]), 1, b, NULL) == 0);
+        size_t standard = 0, differ = 0;
+        for (size_t i = 0; i < n; i++) {
+            if (rows[i] != TL_MATERIAL_MODEL_STANDARD) continue;
+            standard++;
+            differ += memcmp(a + 4 * i, b + 4 * i, 3 * sizeof(float)) != 0;
+        }
+        printf("  %s: %zu standard pixels, %zu differ\n", tl_render_mode_name(modes[k]), standard, differ);
+        TL_CHECK_LE(W * H / 50, standard);
+        TL_CHECK_EQ_U(differ, 0);
+    }
+    free(a);
+    free(b);
+    free(rows);
+    tl_mm_free(std);
+    tl_scene_destroy(s);
+}
+
+/* Errors of thin-lpp against forward of `s` per row of the showcase `layout` (s or a copy). */
+static int row_errors(const tl_scene *layout, const tl_scene *s, tl_mm_error *e)
+{
+    size_t n = (size_t)W * H;
+    float *a = malloc(n * 16), *f = malloc(n * 16);
+    uint8_t *rows = malloc(n);
+    int bad = !a || !f || !rows || tl_mm_rows(layout, desc(TL_MODE_FORWARD), rows) ||
+              tl_mm_render(s, desc(TL_MODE_THIN_LPP), 1, a, NULL) || tl_mm_render(s, desc(TL_MODE_FORWARD), 1, f, NULL);
+    if (!bad) tl_mm_compare(a, f, rows, n, e);
+    free(a);
+    free(f);
+    free(rows);
+    return bad;
+}
+
+/* Unlit is exact (no light at all); toon ramps the same sums forward forms, so it is off only
+ * where FP16 rounding moves a sum across a band edge; the clearcoat whose coat has the base's
+ * roughness is exact in its coat and as close as the standard model in its base. */
+TL_TEST(material_models_exact_ones_match_forward)
+{
+    if (!ensure_context()) return;
+    tl_scene *s = showcase(64);
+    if (!s) return;
+    for (size_t i = 0; i + 1 < s->material_count; i++) /* the coats as rough as their bases */
+        s->materials[i].clearcoat_roughness = 1.0f - s->materials[i].gloss;
+    tl_mm_error e[TL_MATERIAL_MODEL_COUNT_], base[TL_MATERIAL_MODEL_COUNT_];
+    tl_scene *std = tl_mm_standard_only(s); /* the same spheres, every one standard */
+    TL_CHECK(std && row_errors(s, s, e) == 0 && row_errors(s, std, base) == 0);
+    tl_mm_free(std);
+    for (int m = 0; m < TL_MATERIAL_MODEL_COUNT_; m++) {
+        printf("  %-9s %5zu px  PSNR %6.1f dB  max abs %.3g  max rel %.3g\n", tl_material_model_name((uint32_t)m),
+               e[m].pixels, e[m].psnr_db, e[m].max_abs, e[m].max_rel);
+        TL_CHECK_EQ_U(e[m].nan_pixels, 0);
+        TL_CHECK_LE(W * H / 200, e[m].pixels);
+    }
+    /* FP16: unlit reads no light, so its colour is the same float computation in both modes */
+    TL_CHECK_LE(e[TL_MATERIAL_MODEL_UNLIT].max_rel, 1.0 / 1024.0);
+    /* the coat's sums are the standard model's sums (same roughness, same G-buffer): its error is
+     * the thin G-buffer's, on pixels whose specular light the coat at most doubles (Fc <= 1 on
+     * top of the base's (1 - Fc)): at most 20 log10(2) = 6.02 dB below the same spheres' error
+     * when standard */
+    printf("  the clearcoat row's spheres as standard: PSNR %.1f dB\n", base[TL_MATERIAL_MODEL_CLEARCOAT].psnr_db);
+    TL_CHECK_LE(base[TL_MATERIAL_MODEL_CLEARCOAT].psnr_db - 6.03, e[TL_MATERIAL_MODEL_CLEARCOAT].psnr_db);
+    TL_CHECK_LE(40.0, e[TL_MATERIAL_MODEL_TOON].psnr_db); /* the target */
+    TL_CHECK_LE(40.0, e[TL_MATERIAL_MODEL_STANDARD].psnr_db);
+    tl_scene_destroy(s);
+}
+
+/* The deferred modes shade each light under the model the G-buffer stores (fat_models.glsl): unlit
+ * is exact (no light at all), wrap, clearcoat (and fat's sheen) are forward's per-light terms with
+ * their parameters quantized (fat: 8 bits, the sheen's colour 4; thin-deferred: 5 bits, the coat's
+ * factor 1 as the showcase's). Before the model was stored they were shaded as standard: 23, 30
+ * and 12 dB against forward. */
+TL_TEST(material_models_deferred_modes_match_forward)
+{
+    if (!ensure_context()) return;
+    tl_scene *s = showcase(8);
+    size_t n = (size_t)W * H;
+    float *a = malloc(n * 16), *f = malloc(n * 16);
+    uint8_t *rows = malloc(n);
+    int bad = !s || !a || !f || !rows || tl_mm_rows(s, desc(TL_MODE_FORWARD), rows) ||
+              tl_mm_render(s, desc(TL_MODE_FORWARD), 1, f, NULL);
+    TL_CHECK(!bad);
+    const tl_render_mode modes[2] = {TL_MODE_FAT, TL_MODE_THIN_DEFERRED};
+    const double floor_db[2] = {50.0, 40.0}; /* measured 60.5 / 56.8 (fat), 43.5 / 53.6 (thin-deferred) */
+    for (int k = 0; k < 2 && !bad; k++) {
+        tl_mm_error e[TL_MATERIAL_MODEL_COUNT_];
+        TL_CHECK(tl_mm_render(s, desc(modes[k]), 1, a, NULL) == 0);
+        tl_mm_compare(a, f, rows, n, e);
+        for (int m = 0; m < TL_MATERIAL_MODEL_COUNT_; m++)
+            printf("  %-13s %-9s PSNR %6.1f dB  max abs %.3g\n", tl_render_mode_name(modes[k]),
+                   tl_material_model_name((uint32_t)m), e[m].psnr_db, e[m].max_abs);
+        TL_CHECK_LE(W * H / 200, e[TL_MATERIAL_MODEL_UNLIT].pixels);
+        TL_CHECK_LE(e[TL_MATERIAL_MODEL_UNLIT].max_rel, 1.0 / 1024.0);
+        TL_CHECK_LE(floor_db[k], e[TL_MATERIAL_MODEL_WRAP].psnr_db);
+        TL_CHECK_LE(floor_db[k], e[TL_MATERIAL_MODEL_CLEARCOAT].psnr_db);
+        TL_CHECK_LE(floor_db[k], e[TL_MATERIAL_MODEL_STANDARD].psnr_db);
+        if (modes[k] == TL_MODE_FAT) TL_CHECK_LE(50.0, e[TL_MATERIAL_MODEL_SHEEN].psnr_db); /* measured 64.4 */
+    }
+    free(a);
+    free(f);
+    free(rows);
+    tl_scene_destroy(s);
+}
+
+/* KHR_materials_specular/_ior map onto F0: a metallic-roughness material converted per pixel from
+ * dielectric_f0 renders as the constant material whose specular is mix(F0, base, metal) computed
+ * here, in thin-lpp and forward. */
+TL_TEST(material_models_dielectric_f0_is_the_specular_colour)
+{
+    if (!ensure_context()) return;
+    tl_scene *s = showcase(8), *c = s ? tl_mm_standard_only(s) : NULL, *k = s ? tl_mm_standard_only(s) : NULL;
+    uint8_t mr_px[4] = {0, 255, 255, 255}; /* roughness and metal factors taken as they are */
+    tl_texture tex = {.width = 1, .height = 1, .rgba = mr_px, .name = "mr"};
+    size_t n = (size_t)W * H;
+    float *a = malloc(n * 16), *b = malloc(n * 16);
+    if (!c || !k || !a || !b) goto done;
+    c->textures = &tex;
+    c->texture_count = 1;
+    const float f0[3] = {0.12f, 0.08f, 0.05f}, metal = 0.3f;
+    for (size_t i = 0; i + 1 < c->material_count; i++) {
+        tl_material *m = &c->materials[i], *q = &k->materials[i];
+        m->flags |= TL_MATERIAL_METALLIC_ROUGHNESS;
+        m->metallic_roughness_map = TL_TEXTURE_MAP(0);
+        m->metallic = metal;
+        m->roughness = 1.0f - m->gloss;
+        memcpy(m->dielectric_f0, f0, sizeof f0);
+        for (int j = 0; j < 3; j++) {
+            q->specular[j] = (float)((1.0 - metal) * f0[j] + (double)metal * m->albedo[j]);
+            q->albedo[j] = (float)(m->albedo[j] * (1.0 - metal));
+        }
+    }
+    const tl_render_mode modes[2] = {TL_MODE_THIN_LPP, TL_MODE_FORWARD};
+    for (int mo = 0; mo < 2; mo++) {
+        TL_CHECK(tl_mm_render(c, desc(modes[mo]), 1, a, NULL) == 0);
+        TL_CHECK(tl_mm_render(k, desc(modes[mo]), 1, b, NULL) == 0);
+        double worst = 0.0;
+        for (size_t i = 0; i < 4 * n; i++)
+            if (i % 4 != 3) worst = fmax(worst, fabs(a[i] - b[i]) / fmax(fabs(b[i]), 1e-3));
+        printf("  %s: largest relative difference %.3g\n", tl_render_mode_name(modes[mo]), worst);
+        /* float rounding of the two conversions, through FP16 sums: well inside one FP16 step */
+        TL_CHECK_LE(worst, 1.0 / 1024.0);
+    }
+done:
+    free(a);
+    free(b);
+    tl_mm_free(c);
+    tl_mm_free(k);
+    tl_scene_destroy(s);
+}
+
+/* Every mode draws every model finite and lit (fat and thin-deferred as the standard model). */
+TL_TEST(material_models_every_mode_finite_and_lit)
+{
+    if (!ensure_context()) return;
+    tl_scene *s = showcase(8);
+    size_t n = (size_t)W * H;
+    float *a = malloc(n * 16);
+    uint8_t *rows = malloc(n);
+    if (!s || !a || !rows) goto done;
+    TL_CHECK(tl_mm_rows(s, desc(TL_MODE_FORWARD), rows) == 0);
+    const tl_render_mode modes[4] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
+    for (int k = 0; k < 4; k++) {
+        TL_CHECK(tl_mm_render(s, desc(modes[k]), 1, a, NULL) == 0);
+        double mean[TL_MATERIAL_MODEL_COUNT_] = {0};
+        size_t count[TL_MATERIAL_MODEL_COUNT_] = {0}, bad = 0;
+        for (size_t i = 0; i < n; i++) {
+            for (int c = 0; c < 3; c++) bad += !isfinite(a[4 * i + c]);
+            if (rows[i] < TL_MATERIAL_MODEL_COUNT_) {
+                mean[rows[i]] += a[4 * i] + a[4 * i + 1] + a[4 * i + 2];
+                count[rows[i]]++;
+            }
+        }
+        TL_CHECK_EQ_U(bad, 0);
+        for (int m = 0; m < TL_MATERIAL_MODEL_COUNT_; m++) TL_CHECK(count[m] > 0 && mean[m] / (double)count[m] > 0.05);
+    }
+done:
+    free(a);
+    free(rows);
+    tl_scene_destroy(s);
+}
+
+TL_TEST(material_models_bad_parameters_refused)
+{
+    if (!ensure_context()) return;
+    tl_scene *s = showcase(8);
+    if (!s) return;
+    tl_renderer *r = NULL;
+    tl_renderer_desc d = desc(TL_MODE_THIN_LPP);
+    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
+    const char *want[3] = {"model", "toon_steps", "sheen_roughness"};
+    for (int k = 0; k < 3 && r; k++) {
+        tl_material keep = s->materials[3];
+        if (k == 0) s->materials[3].model = TL_MATERIAL_MODEL_COUNT_;
+        if (k == 1) s->materials[3].toon_steps = 65;
+        if (k == 2) s->materials[3].sheen_roughness = NAN;
+        TL_CHECK(tl_renderer_set_scene(r, s) == TL_ERROR_INVALID_ARGUMENT);
+        TL_CHECK(strstr(tl_renderer_last_error(r), want[k]) != NULL);
+        s->materials[3] = keep;
+        TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);
+        tl_material bad = s->materials[3];
+        bad.model = 77;
+        TL_CHECK(tl_renderer_set_material(r, 3, &bad) == TL_ERROR_INVALID_ARGUMENT);
+    }
+    tl_renderer_destroy(r);
+    tl_scene_destroy(s);
+}
+
+static void half_free(void *p, void *user)
+{
+    (void)user;
+    free(p);
+}
+
+/* tl_showcase_scene_desc: zeroed is the NULL descriptor's scene (8 lights, seed 1); bad input is
+ * refused with nothing returned. */
+TL_TEST(material_models_showcase_desc_zero_is_default)
+{
+    tl_scene *a = NULL, *b = NULL, *c = NULL;
+    TL_CHECK(tl_scene_create_showcase(NULL, &a) == TL_OK);
+    TL_CHECK(tl_scene_create_showcase(&(tl_showcase_scene_desc){0}, &b) == TL_OK);
+    TL_CHECK(tl_scene_create_showcase(&(tl_showcase_scene_desc){.point_lights = 8, .seed = 1}, &c) == TL_OK);
+    if (a && b && c) {
+        TL_CHECK_EQ_U(a->light_count, 8);
+        TL_CHECK(a->light_count == b->light_count);
+        TL_CHECK(memcmp(a->lights, b->lights, a->light_count * sizeof *a->lights) == 0);
+        TL_CHECK(memcmp(a->lights, c->lights, a->light_count * sizeof *a->lights) == 0);
+        TL_CHECK_EQ_U(a->object_count, (size_t)TL_MATERIAL_MODEL_COUNT_ * 5 + 1);
+    }
+    tl_scene *d = (tl_scene *)&d;
+    TL_CHECK(tl_scene_create_showcase(&(tl_showcase_scene_desc){.point_lights = 65537}, &d) == TL_ERROR_LIMIT && !d);
+    tl_allocator half = {.alloc = NULL, .free = half_free};
+    TL_CHECK(tl_scene_create_showcase(&(tl_showcase_scene_desc){.allocator = half}, &d) == TL_ERROR_INVALID_ARGUMENT);
+    TL_CHECK(tl_scene_create_showcase(NULL, NULL) == TL_ERROR_INVALID_ARGUMENT);
+    tl_scene_destroy(a);
+    tl_scene_destroy(b);
+    tl_scene_destroy(c);
+}
+
+/* Four quads facing the camera (view-space normal exactly +Z: the octahedral code is exact; gloss
+ * k/255 exact in RT0; reversed D32F depth): thin-lpp differs from forward only by FP16. Standard
+ * (a dielectric F0 other than 0.04), unlit and an emissive of strength 4 over 8 point lights: every
+ * pixel within (lights + 2) FP16 ULPs of forward's value: each light's blend into a sum converts to
+ * FP16 once and each mode's HDR write once, the terms are non-negative, and GL leaves the rounding
+ * of a float-to-half conversion to the implementation (truncation allowed: a whole ULP each). */
+TL_TEST(material_models_exact_ones_within_fp16_on_a_facing_plane)
+{
+    enum { Q = 4, L = 8 };
+    static tl_vertex v[Q * 4];
+    static uint32_t idx[Q * 6];
+    static tl_object obj[Q];
+    static tl_material mat[Q];
+    static tl_light lights[L];
+    for (int q = 0; q < Q; q++) {
+        const float c[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        for (int k = 0; k < 4; k++)
+            v[q * 4 + k] = (tl_vertex){.position = {c[k][0] - 2.0f + (float)q, c[k][1] - 0.5f, 0.0f}, .normal = {0, 0, 1}};
+        const uint32_t t[6] = {0, 1, 2, 0, 2, 3};
+        for (int k = 0; k < 6; k++) idx[q * 6 + k] = (uint32_t)(q * 4) + t[k];
+        obj[q] = (tl_object){.first_index = (uint32_t)(q * 6), .index_count = 6, .material = (uint32_t)q};
+        mat[q] = (tl_material){.albedo = {0.6f, 0.4f, 0.3f}, .gloss = 153.0f / 255.0f, .flags = TL_MATERIAL_MICROFACET};
+    }
+    const float f0 = (float)((0.6 / 2.6) * (0.6 / 2.6)); /* ior 1.6 */
+    for (int k = 0; k < 3; k++) mat[0].specular[k] = mat[2].specular[k] = f0;
+    mat[1].model = TL_MATERIAL_MODEL_UNLIT;
+    for (int k = 0; k < 3; k++) mat[3].emissive[k] = 4.0f * 0.25f;
+    for (int i = 0; i < L; i++)
+        lights[i] = (tl_light){.type = TL_LIGHT_POINT, .position = {-2.0f + 0.55f * (float)i, 0.3f * (float)(i % 3) - 0.3f,
+                                                                    0.4f + 0.2f * (float)(i % 4)},
+                               .color = {1.0f, 0.8f, 0.6f}, .radius = 6.0f};
+    tl_scene s = {.vertices = v, .vertex_count = Q * 4, .indices = idx, .index_count = Q * 6, .objects = obj,
+                  .object_count = Q, .materials = mat, .material_count = Q, .lights = lights, .light_count = L,
+                  .camera = {.position = {0, 0, 4}, .target = {0, 0, 0}, .up = {0, 1, 0}, .near_z = 1, .far_z = 10}};
+    if (!ensure_context()) return;
+    size_t n = (size_t)W * H;
+    float *a = malloc(n * 16), *f = malloc(n * 16);
+    tl_renderer_desc d = desc(TL_MODE_THIN_LPP);
+    d.options.depth_format = TL_DEPTH_FORMAT_D32F_REVERSED;
+    TL_CHECK(a && f && tl_mm_render(&s, d, 1, a, NULL) == 0);
+    d.options.mode = TL_MODE_FORWARD;
+    TL_CHECK(a && f && tl_mm_render(&s, d, 1, f, NULL) == 0);
+    size_t lit = 0, over = 0;
+    double worst = 0.0;
+    for (size_t i = 0; a && f && i < n; i++) {
+        if (f[4 * i] == 0.0f && f[4 * i + 1] == 0.0f && f[4 * i + 2] == 0.0f) continue; /* background */
+        lit++;
+        for (int k = 0; k < 3; k++) {
+            double ref = f[4 * i + k], tol = (L + 2) * ldexp(1.0, -10) * ref + 1e-6, e = fabs(a[4 * i + k] - ref);
+            worst = fmax(worst, e / fmax(ref, 1e-6));
+            over += e > tol;
+        }
+    }
+    printf("  %zu pixels; largest relative difference %.3g (tolerance %.3g)\n", lit, worst, (L + 2) * ldexp(1.0, -10));
+    TL_CHECK_LE(n / 16, lit);
+    TL_CHECK_EQ_U(over, 0);
+    free(a);
+    free(f);
+}
