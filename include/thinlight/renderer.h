@@ -734,16 +734,6 @@ TL_API tl_result tl_renderer_set_material(tl_renderer *r, uint32_t index, const 
 /** An object as the renderer draws it (transform and bounds resolved) and whether it is visible;
  *  TL_ERROR_INVALID_ARGUMENT for an id that does not exist or was removed. */
 TL_API tl_result tl_renderer_get_object(tl_renderer *r, uint32_t object, tl_object *desc, int *visible);
-/**
- * Changes the options from the next frame on (and for tl_renderer_apply_fxaa): mode, depth format,
- * light strategy, lighting model, effects, FXAA, ... Every zeroed field means its default, as in
- * tl_renderer_desc.options. The scene, its lights and the application passes stay; the frame is
- * planned again, and only what the new plan changes is made again: targets whose format or size
- * changed, programs not built before (each permutation is built once per renderer and kept), the
- * scene's vertex array when the plan binds other attributes. An option out of range is
- * TL_ERROR_INVALID_ARGUMENT naming it, a plan over tl_renderer_desc.max_target_bytes
- * TL_ERROR_LIMIT; either way the renderer keeps its options. NULL is TL_ERROR_INVALID_ARGUMENT.
- */
 /** An environment: an equirectangular image of linear RGB radiance (docs/renderer.md, "Background
  *  and environment"). Row 0 is the top (+Y, up), column 0 is the direction -X, the middle column
  *  +X, a quarter across -Z (u = atan2(z, x) / 2 pi + 1/2, v = acos(y) / pi, world space). */
@@ -763,6 +753,16 @@ typedef struct tl_environment_desc {
  */
 TL_API tl_result tl_renderer_set_environment(tl_renderer *r, const tl_environment_desc *desc);
 
+/**
+ * Changes the options from the next frame on (and for tl_renderer_apply_fxaa): mode, depth format,
+ * light strategy, lighting model, effects, FXAA, ... Every zeroed field means its default, as in
+ * tl_renderer_desc.options. The scene, its lights and the application passes stay; the frame is
+ * planned again, and only what the new plan changes is made again: targets whose format or size
+ * changed, programs not built before (each permutation is built once per renderer and kept), the
+ * scene's vertex array when the plan binds other attributes. An option out of range is
+ * TL_ERROR_INVALID_ARGUMENT naming it, a plan over tl_renderer_desc.max_target_bytes
+ * TL_ERROR_LIMIT; either way the renderer keeps its options. NULL is TL_ERROR_INVALID_ARGUMENT.
+ */
 TL_API tl_result tl_renderer_set_options(tl_renderer *r, const tl_renderer_options *options);
 /** The options as last given (to tl_renderer_create or tl_renderer_set_options), zeroed fields
  *  as they were: change a field and give them back. A zeroed struct for NULL. */
