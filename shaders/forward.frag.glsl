@@ -42,7 +42,7 @@ void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout 
     bool lit = t != vec3(0.0);
 #endif
     if (l.cos_inner.z > 0.0 && lit)
-        vis = tl_shadow(l.cos_inner.z, p, n, tl_shadow_to_light(int(l.color_type.w), p, l.position_radius.xyz, l.direction_cos_outer.xyz), l.position_radius.xyz);
+        vis = tl_light_shadow(l.cos_inner.z, int(l.color_type.w), p, n, l.position_radius.xyz, l.direction_cos_outer.xyz);
     t *= vis;
 #endif
     diffuse += l.color_type.rgb * t.x;

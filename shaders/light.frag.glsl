@@ -69,8 +69,7 @@ void main()
 #ifdef TL_SHADOWS
         // one light's radiance is linear in its visibility, whatever the model
         if (f_shadow > 0.0 && radiance != vec3(0.0))
-            radiance *= tl_shadow(f_shadow, p, n, tl_shadow_to_light(TL_LIGHT_TYPE, p, f_position_radius.xyz, f_direction_cos_outer.xyz),
-                                  f_position_radius.xyz);
+            radiance *= tl_light_shadow(f_shadow, TL_LIGHT_TYPE, p, n, f_position_radius.xyz, f_direction_cos_outer.xyz);
 #endif
         o_color = vec4(min(radiance, vec3(65504.0)), 0.0);
         return;
@@ -79,7 +78,7 @@ void main()
     vec3 t = tl_light_weights(TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(gloss), f_position_radius, f_direction_cos_outer.xyz,
                               f_cos_inner, f_direction_cos_outer.w, f_source_radius);
 #ifdef TL_SHADOWS
-    if (f_shadow > 0.0 && t != vec3(0.0)) t *= tl_shadow(f_shadow, p, n, tl_shadow_to_light(TL_LIGHT_TYPE, p, f_position_radius.xyz, f_direction_cos_outer.xyz), f_position_radius.xyz);
+    if (f_shadow > 0.0 && t != vec3(0.0)) t *= tl_light_shadow(f_shadow, TL_LIGHT_TYPE, p, n, f_position_radius.xyz, f_direction_cos_outer.xyz);
 #endif
     // One light's output never exceeds the FP16 maximum, whatever its colour (an Inf would poison
     // every later sum); sums past it are the readers' job (material.frag, tonemap.frag).

@@ -24,8 +24,7 @@ vec3 tl_fat_tiled_add(tl_fat_model fm, tl_light_data l, vec3 p, vec3 n, vec3 v, 
                                    l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y, albedo, spec_color);
 #ifdef TL_SHADOWS
     if (l.cos_inner.z > 0.0 && c != vec3(0.0)) // a casting light (its shadow slot): linear in its visibility
-        c *= tl_shadow(l.cos_inner.z, p, n, tl_shadow_to_light(type, p, l.position_radius.xyz, l.direction_cos_outer.xyz),
-                       l.position_radius.xyz);
+        c *= tl_light_shadow(l.cos_inner.z, type, p, n, l.position_radius.xyz, l.direction_cos_outer.xyz);
 #endif
     return c;
 }

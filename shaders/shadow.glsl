@@ -109,4 +109,11 @@ vec3 tl_shadow_to_light(int type, vec3 p, vec3 position, vec3 direction)
     return type == 3 ? -direction : d2 > 0.0 ? d * inversesqrt(d2) : vec3(0.0, 0.0, 1.0); // a light at the point
 }
 
+// The visibility of a light of tl_light_data layout (type 3: directional) with shadow slot `slot`
+// (> 0) at view-space p with normal n: tl_shadow with the direction towards the light.
+float tl_light_shadow(float slot, int type, vec3 p, vec3 n, vec3 position, vec3 direction)
+{
+    return tl_shadow(slot, p, n, tl_shadow_to_light(type, p, position, direction), position);
+}
+
 #endif

@@ -47,7 +47,7 @@ void tl_tiled_add_shadowed(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape,
     vec3 t = tl_tiled_terms(l, p, n, v, shape);
 #ifdef TL_SHADOWS
     if (l.cos_inner.z > 0.0 && t != vec3(0.0))
-        t *= tl_shadow(l.cos_inner.z, p, n, tl_shadow_to_light(int(l.color_type.w), p, l.position_radius.xyz, l.direction_cos_outer.xyz), l.position_radius.xyz);
+        t *= tl_light_shadow(l.cos_inner.z, int(l.color_type.w), p, n, l.position_radius.xyz, l.direction_cos_outer.xyz);
 #endif
     tl_tiled_sum(l, t, diffuse, specular, fresnel);
 }
