@@ -11,36 +11,54 @@
 #include "thinlight/version.h"
 #include "tool_util.h"
 
-#define BENCH__SUMMARY_MAX 24
 #define BENCH__STR2(x) #x
 #define BENCH__STR(x) BENCH__STR2(x)
-#define BENCH__LINE 512
+#define BENCH__LINE 2048
 
+/* The summary's lines, as many as the sizes and configurations make (a fixed count once dropped
+ * the last size's lines without a word); `lost` counts lines an allocation failure left out. */
 typedef struct bench__summary {
-    char lines[BENCH__SUMMARY_MAX][BENCH__LINE];
-    size_t count;
+    char (*lines)[BENCH__LINE];
+    size_t count, capacity, lost;
 } bench__summary;
 
 static void bench__say(bench__summary *s, const char *fmt, ...) TL_TOOL_PRINTF(2, 3);
 static void bench__say(bench__summary *s, const char *fmt, ...)
 {
-    if (s->count == BENCH__SUMMARY_MAX) return;
+    if (s->count == s->capacity) {
+        size_t cap = s->capacity ? 2 * s->capacity : 32;
+        char(*grown)[BENCH__LINE] = realloc(s->lines, cap * sizeof *grown);
+        if (!grown) {
+            s->lost++;
+            return;
+        }
+        s->lines = grown;
+        s->capacity = cap;
+    }
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(s->lines[s->count++], BENCH__LINE, fmt, ap);
     va_end(ap);
 }
 
-/* Appends to a line being built. */
+static void bench__summary_free(bench__summary *s)
+{
+    free(s->lines);
+    *s = (bench__summary){0};
+}
+
+/* Appends to a line being built; a line that would not fit ends in "..." instead of being cut
+ * without a sign. */
 static void bench__add(char *line, const char *fmt, ...) TL_TOOL_PRINTF(2, 3);
 static void bench__add(char *line, const char *fmt, ...)
 {
     size_t n = strlen(line);
-    if (n + 1 >= BENCH__LINE) return;
+    if (n + 4 >= BENCH__LINE) return;
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(line + n, BENCH__LINE - n, fmt, ap);
+    int w = vsnprintf(line + n, BENCH__LINE - n, fmt, ap);
     va_end(ap);
+    if (w >= 0 && n + (size_t)w >= BENCH__LINE) memcpy(line + BENCH__LINE - 4, "...", 4);
 }
 
 /* The configuration the summary speaks for: thin-lpp when measured, else the first other mode;
@@ -417,6 +435,8 @@ void bench_print_table(const bench_run *run)
     bench__outputs(run, &s);
     putchar('\n');
     for (size_t i = 0; i < s.count; i++) printf("%s\n", s.lines[i]);
+    if (s.lost) printf("(%zu summary lines left out: out of memory)\n", s.lost);
+    bench__summary_free(&s);
     fflush(stdout);
 }
 
@@ -782,6 +802,8 @@ static int bench__write_doc(FILE *f, const void *ctx)
     bench__planning(run, &s);
     fputs("\n", f);
     for (size_t i = 0; i < s.count; i++) fprintf(f, "- %s\n", s.lines[i]);
+    if (s.lost) fprintf(f, "- (%zu summary lines left out: out of memory)\n", s.lost);
+    bench__summary_free(&s);
     if (d->heat_count) {
         fprintf(f, "\nHeat maps of |mode - fat| at %ux%u with %u lights: the largest RGB difference in 8-bit steps "
                    "(black: none; the legend strip runs from 0 to %u steps, ticks every step), the largest of each "

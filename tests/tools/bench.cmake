@@ -587,4 +587,24 @@ function(check_aa_quick)
   endif()
 endfunction()
 
+# Two sizes and every configuration make more summary lines than a fixed table once held (the
+# second size's lines were dropped without a word, and the longest line was cut mid-word): every
+# size gets its closing lines, and no line is cut.
+function(check_two_sizes_summary)
+  run_tool(--lights 64,256 --size 64x36,96x54 --frames 1 --warmup 0 --no-plot)
+  expect_exit(0 "two sizes")
+  foreach(size 64x36 96x54)
+    foreach(line "no NaN or Inf in any mode's HDR image" "lowest PSNR of the final image against fat"
+                 "thin-lpp/tiled speed-up over fat/tiled")
+      string(FIND "${out}" "${size}: ${line}" at)
+      if(at LESS 0)
+        message(FATAL_ERROR "the summary lacks '${size}: ${line}':\n${out}")
+      endif()
+    endforeach()
+    if(NOT out MATCHES "${size}: lowest PSNR[^\n]*lights[)]\n")
+      message(FATAL_ERROR "the ${size} lowest-PSNR line is cut:\n${out}")
+    endif()
+  endforeach()
+endfunction()
+
 cli_run_check()
