@@ -25,10 +25,10 @@ void tl__material_model_slots(const tl__plan_input *in, const char *defines, tl_
     for (uint32_t m = 0; m < TL_MATERIAL_MODEL_COUNT_; m++) {
         if (!(models & (1u << m))) continue;
         out->used[m] = 1;
-        if (m == TL_MATERIAL_MODEL_STANDARD)
-            snprintf(out->slot[m], sizeof out->slot[m], "%s", defines);
-        else
-            snprintf(out->slot[m], sizeof out->slot[m], "TL_MODEL=%u %s", (unsigned)m, defines);
+        int n = m == TL_MATERIAL_MODEL_STANDARD
+                    ? snprintf(out->slot[m], sizeof out->slot[m], "%s", defines)
+                    : snprintf(out->slot[m], sizeof out->slot[m], "TL_MODEL=%u %s", (unsigned)m, defines);
+        if (n < 0 || (size_t)n >= sizeof out->slot[m]) out->overflow = 1;
     }
 }
 

@@ -88,10 +88,12 @@ typedef struct tl__pass_decl {
     tl__pipeline state;    /* fixed state; a pass may change cull, depth test and clamp per draw */
 } tl__pass_decl;
 
-/* The defines of each of a pass's programs ("" leaves the slot out). */
+/* The defines of each of a pass's programs ("" leaves the slot out); `overflow`: a permutation's
+ * switches did not fit (the planner refuses the plan rather than build a program missing one). */
 typedef struct tl__pass_defines {
     char slot[TL__PASS_MAX_PROGRAMS][224];
     uint8_t used[TL__PASS_MAX_PROGRAMS];
+    uint8_t overflow;
 } tl__pass_defines;
 
 /* What a pass's execute step counts. */

@@ -207,8 +207,10 @@ static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *
         snprintf(upsample, sizeof upsample, " TL_MSAA_LIGHT %s%s%s%s", samples, in->rt0_define,
                  (d->reads & TL__B(LIGHT_LISTS)) ? " TL_RELIGHT_TILES" : "",
                  tl__depth_format(in->o) == GL_DEPTH_COMPONENT32F ? " TL_DEPTH_FLOAT" : "");
-    snprintf(defines, sizeof defines, "%s%s%s%s", (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS",
-             in->material_defines, tl__ssao_defines(in, d), upsample);
+    int n = snprintf(defines, sizeof defines, "%s%s%s%s",
+                     (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS", in->material_defines,
+                     tl__ssao_defines(in, d), upsample);
+    if (n < 0 || (size_t)n >= sizeof defines) out->overflow = 1;
     tl__material_model_slots(in, defines, out); /* one program per material model */
 }
 

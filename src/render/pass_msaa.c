@@ -76,8 +76,10 @@ static void tl__samples_permute(const tl__plan_input *in, const tl__pass_decl *d
         if (!light.used[k]) continue;
         int slot = tiled ? 3 : k;
         out->used[slot] = 1;
-        snprintf(out->slot[slot], sizeof out->slot[slot], "%s TL_MSAA_SAMPLE", light.slot[k]);
+        int n = snprintf(out->slot[slot], sizeof out->slot[slot], "%s TL_MSAA_SAMPLE", light.slot[k]);
+        if (n < 0 || (size_t)n >= sizeof out->slot[slot]) out->overflow = 1;
     }
+    out->overflow |= light.overflow;
 }
 
 static void tl__samples_execute(const tl__pass_ctx *ctx)

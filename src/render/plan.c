@@ -314,8 +314,9 @@ static void tl__share_memory(tl__plan *p, const tl_renderer_options *o)
 
 /* ---- programs ------------------------------------------------------------------------------- */
 
-/* TL_OUT_<TARGET>=<location> for every colour write: attachments in tl_target_id order. */
-static void tl__output_defines(const tl__plan *p, uint32_t writes, char *out, size_t size)
+/* TL_OUT_<TARGET>=<location> for every colour write: attachments in tl_target_id order; 0 when they
+ * do not fit `size`. */
+static int tl__output_defines(const tl__plan *p, uint32_t writes, char *out, size_t size)
 {
     size_t len = 0;
     int loc = 0;
@@ -323,8 +324,10 @@ static void tl__output_defines(const tl__plan *p, uint32_t writes, char *out, si
     for (int t = 0; t < TL_TARGET_COUNT; t++)
         if ((writes & TL__BIT(t)) && !p->targets[t]->depth && !p->targets[t]->buffer_bytes) {
             int n = snprintf(out + len, size - len, "%sTL_OUT_%s=%d", len ? " " : "", p->targets[t]->macro, loc++);
-            if (n > 0 && (size_t)n < size - len) len += (size_t)n;
+            if (n < 0 || (size_t)n >= size - len) return 0;
+            len += (size_t)n;
         }
+    return 1;
 }
 
 /* Each planned program with its permutation; TL_ERROR_LIMIT if its switches do not fit
@@ -339,7 +342,7 @@ static tl_result tl__programs(const tl__plan_input *in, tl__plan *p)
         memset(&defs, 0, sizeof defs);
         def->permute(in, &p->decl[i], &defs);
         char outs[160];
-        tl__output_defines(p, p->decl[i].writes, outs, sizeof outs);
+        if (defs.overflow || !tl__output_defines(p, p->decl[i].writes, outs, sizeof outs)) return TL_ERROR_LIMIT;
         for (uint32_t s = 0; s < TL__PASS_MAX_PROGRAMS && fp->program_count < TL_PLAN_MAX_PROGRAMS; s++) {
             if (!defs.used[s]) continue;
             tl_plan_program *pr = &fp->programs[fp->program_count++];
