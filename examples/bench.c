@@ -46,7 +46,9 @@ static int bench__check_outputs(bench_options *o, char **doc_text, char **effect
     if (o->doc && bench__check_doc(o->doc, BENCH_DOC_BEGIN, BENCH_DOC_END, doc_text)) return 1;
     if (o->effects_doc && bench__check_doc(o->effects_doc, BENCH_EFFECTS_DOC_BEGIN, BENCH_EFFECTS_DOC_END, effects_text))
         return 1;
-    if (o->aa_doc && bench__check_doc(o->aa_doc, BENCH_AA_DOC_BEGIN, BENCH_AA_DOC_END, aa_text)) return 1;
+    char aa_begin[128], aa_end[128];
+    bench_aa_doc_markers(o, aa_begin, aa_end, sizeof aa_begin);
+    if (o->aa_doc && bench__check_doc(o->aa_doc, aa_begin, aa_end, aa_text)) return 1;
     if (o->out && !o->no_plot && !tl_tool_have_gnuplot()) {
         fprintf(stderr, BENCH_TOOL ": warning: gnuplot not found on PATH, no plots (install gnuplot-nox)\n");
         o->no_plot = 1;

@@ -164,6 +164,8 @@ typedef struct bench_options {
     const char *effects_doc;         /* --effects-doc: the effects table between its markers */
     unsigned aa;                     /* --aa: bits (1u << bench_aa); 0: not measured */
     const char *aa_doc;              /* --aa-doc: the AA table between its markers */
+    const char *aa_section;          /* --aa-doc-section: the markers' and images' name; NULL: the default pair */
+    tl_tiled_shading tiled_shading;  /* --tiled-shading: the tiled strategy's light pass (default fragment) */
 } bench_options;
 
 /* bench_args.c: the command line into `o`: 0; -1 after --help or --list-options (printed); or 2
@@ -443,6 +445,8 @@ int bench_aa_plot(bench_run *run);
 #define BENCH_AA_PNG_MAX_BYTES (1024u * 1024u)
 #define BENCH_AA_DOC_BEGIN "<!-- bench-aa:begin -->"
 #define BENCH_AA_DOC_END "<!-- bench-aa:end -->"
+/* --aa-doc's markers: the default pair, or --aa-doc-section's (bench_aa_report.c). */
+void bench_aa_doc_markers(const bench_options *o, char *begin, char *end, size_t size);
 /* bench_plan.c: fills run->planning for every rendered mode (pure: no GL; the times stay NaN). */
 int bench_planning_compare(bench_run *run, bench_scene *scene);
 

@@ -14,7 +14,8 @@ static const char usage_head[] =
     "                       [--frames N] [--warmup N] [--json OUT.json] [--out DIR] [--quick]\n"
     "                       [--doc FILE.md] [--seed S] [--lighting M] [--fresnel F] [--no-plot]\n"
     "                       [--effects E,...] [--effects-doc FILE.md] [effect options]\n"
-    "                       [--aa M,...] [--aa-doc FILE.md]\n"
+    "                       [--aa M,...] [--aa-doc FILE.md] [--aa-doc-section NAME]\n"
+    "                       [--tiled-shading fragment|compute]\n"
     "                       [--context C] [--device N] [memory budgets]\n"
     "                       [--list-devices] [--list-options] [--help]\n"
     "\n"
@@ -40,7 +41,8 @@ static const char usage_head[] =
     "                   scale per axis, with the first strategy (default 1,0.5,0.25); a table of its own\n"
     "                   gives their error against fat and against thin-lpp at scale 1, over the frame\n"
     "                   and over the edge pixels (fat's depth steps and creases), their passes' times,\n"
-    "                   bytes and re-lit fraction\n";
+    "                   bytes and re-lit fraction\n"
+    "  --tiled-shading K the tiled strategy's light pass: fragment (default) or compute\n";
 static const char usage_outputs[] =
     "  --json FILE      write one record per (mode, strategy, lights, size)\n"
     "  --out DIR        write final images, heat maps of |mode - fat| (at the largest light count;\n"
@@ -78,7 +80,9 @@ static const char usage_middle[] =
     "                   re-lit (thin-lpp MSAA) or per-sample (msaaNe) fraction: a table, the JSON\n"
     "                   (\"aa\"), a plot and images in --out\n"
     "  --aa-doc FILE    replace the text between " BENCH_AA_DOC_BEGIN " and " BENCH_AA_DOC_END "\n"
-    "                   in FILE with the AA table, and copy the plot and crops to img/ beside it\n";
+    "                   in FILE with the AA table, and copy the plot and crops to img/ beside it\n"
+    "  --aa-doc-section NAME the section between <!-- bench-aa:NAME:begin --> and <!-- bench-aa:NAME:end -->\n"
+    "                   instead, its plot and crops named bench_aa_NAME_* (letters, digits, '-')\n";
 static const char usage_tail[] =
     "  --list-options   list every option and the values it takes, then exit\n"
     "  --help           this text\n"
@@ -98,11 +102,13 @@ static const char usage_tail[] =
 
 enum {
     B_HELP, B_LIST, B_QUICK, B_NO_PLOT, B_SCENE, B_SIZE, B_LIGHTS, B_MODES, B_STRATEGIES, B_FORMATS, B_SCALES, B_FRAMES,
-    B_WARMUP, B_SEED, B_LIGHTING, B_FRESNEL, B_JSON, B_OUT, B_DOC, B_EFFECTS, B_EFFECTS_DOC, B_AA, B_AA_DOC
+    B_WARMUP, B_SEED, B_LIGHTING, B_FRESNEL, B_JSON, B_OUT, B_DOC, B_EFFECTS, B_EFFECTS_DOC, B_AA, B_AA_DOC,
+    B_AA_SECTION, B_TILED_SHADING
 };
 
 static const char *const bench__format_names[] = {"rgba16f", "r11g11b10f", NULL};
 static const char *const bench__scale_names[] = {"1", "0.5", "0.25", NULL};
+static const char *const bench__shading_names[] = {"fragment", "compute", NULL};
 
 static const tl_opt bench__opts[] = {
     {"--help", TL_OPT_FLAG, .id = B_HELP},
@@ -129,6 +135,8 @@ static const tl_opt bench__opts[] = {
     {"--effects-doc", TL_OPT_TEXT, .id = B_EFFECTS_DOC},
     {"--aa", TL_OPT_TEXT_LIST, .id = B_AA, .items = 2 * BENCH_AAS, .choices = bench_aa_names},
     {"--aa-doc", TL_OPT_TEXT, .id = B_AA_DOC},
+    {"--aa-doc-section", TL_OPT_TEXT, .id = B_AA_SECTION},
+    {"--tiled-shading", TL_OPT_TEXT, .id = B_TILED_SHADING, .choices = bench__shading_names},
 };
 
 static const uint32_t bench__default_lights[] = {8, 16, 32, 64, 128, 256, 512, 1024};
@@ -243,6 +251,12 @@ static int bench__option(bench_options *o, bench__given *g, const tl_opt_table *
         for (size_t i = 0; i < v->count; i++) o->aa |= 1u << v->u[i];
         break;
     case B_AA_DOC: o->aa_doc = v->text; break;
+    case B_AA_SECTION:
+        if (strspn(v->text, "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789-") != strlen(v->text))
+            return tl_opt_usage(BENCH_TOOL, "--aa-doc-section wants letters, digits and '-', got '%s'", v->text);
+        o->aa_section = v->text;
+        break;
+    case B_TILED_SHADING: o->tiled_shading = v->u[0] ? TL_TILED_SHADING_COMPUTE : TL_TILED_SHADING_FRAGMENT; break;
     default: break;
     }
     return 0;

@@ -375,6 +375,7 @@ static tl_renderer_desc bench__config_desc(const bench_run *run, bench_config c,
                           .options.light_format = bench_config_light_format(c), .options.lighting = opt->lighting,
                           .options.fresnel = bench_config_fresnel(c, opt->fresnel),
                           .options.light_scale = bench_config_light_scale(c), .width = size.width,
+                          .options.tiled_shading = opt->tiled_shading,
                           .height = size.height, .options.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
                           .options.synchronous_stats = 1};
     tl_tool_budget_renderer(&opt->budgets, &d);

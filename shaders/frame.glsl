@@ -16,6 +16,7 @@ layout(std140, binding = TL_UBO_FRAME) uniform tl_frame_block {
     vec2 u_inv_size;      // 1 / target size
     uvec4 u_tiles;        // tiled: tile side in pixels, tiles across, tiles down, list entries the buffer holds
     uvec4 u_light_counts; // visible lights: directional (first in the lights block), local after them; z: end of the casting local lights (first)
+    vec4 u_sample_positions[4]; // MSAA: sample s at (x, y) in its pixel = [s / 2].xy (even s) or .zw (odd), GL window space
 };
 
 #endif

@@ -68,6 +68,7 @@ static void tl__pass_ctx_make(tl_renderer *r, const tl__compiled_pass *cp, const
     ctx->width = r->desc.width;
     ctx->height = r->desc.height;
     ctx->light_shift = tl__light_shift(&r->desc.options);
+    ctx->gbuffer_samples = tl__gbuffer_samples(&r->desc.options) > 1u ? r->graph.samples : 1u;
     ctx->fullscreen_vao = r->dev.vao_empty;
     ctx->linear_sampler = r->dev.sampler_linear;
     ctx->params = cp->def->options_size ? (const char *)&r->desc.options + cp->def->options_offset : NULL;
@@ -190,6 +191,7 @@ static tl_result tl__upload(tl_renderer *r, const tl__view *v, tl__frame_record 
     uint32_t counts[3], tiles[4];
     tl__lights_frame_block(&r->lights, needs, counts, tiles);
     tl__frame_ubo_fill(&r->desc, v, r->ambient, tiles, counts, u);
+    memcpy(u->sample_positions, r->graph.sample_positions, sizeof u->sample_positions);
     int lists = (needs & TL__LIGHTS_OBJECT_LISTS) != 0;
     if (g->object_count)
         tl__objects_fill(g, v, lists ? r->lights.fwd_first : NULL, lists ? r->lights.fwd_object_count : NULL, o);

@@ -237,6 +237,31 @@ static tl_result tl__graph_luma(tl__device *dev, tl__graph *r)
     return tl__graph_pass(dev, r, &r->luma, &r->luma_plan, &r->luma_decl);
 }
 
+/* The multisampled HDR's sample positions (GL_SAMPLE_POSITION of a framebuffer holding it). */
+static tl_result tl__graph_sample_positions(tl__device *dev, tl__graph *r)
+{
+    const tl__target *hdr = &r->targets[TL_TARGET_HDR];
+    memset(r->sample_positions, 0, sizeof r->sample_positions);
+    r->samples = r->plan.pub.msaa;
+    if (r->plan.pub.msaa <= 1 || !hdr->texture) return TL_OK;
+    const GladGLContext *gl = &dev->gl;
+    GLuint fbo = 0;
+    char msg[256];
+    tl_result res = tl__framebuffer_create(gl, "fbo.sample-positions", &hdr, 1, NULL, &fbo, msg, sizeof msg);
+    if (res != TL_OK) return tl__fail(dev, res, "renderer: %s", msg);
+    GLint bound = 0; /* compile runs outside a frame: the draw framebuffer is put back as it was */
+    gl->GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+    gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
+    GLint samples = 0;
+    gl->GetIntegerv(GL_SAMPLES, &samples);
+    if (samples > (GLint)r->samples) r->samples = samples > 8 ? 8u : (uint32_t)samples;
+    for (uint32_t s = 0; s < r->samples; s++)
+        gl->GetMultisamplefv(GL_SAMPLE_POSITION, s, &r->sample_positions[2 * s]);
+    gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, (GLuint)bound);
+    tl__framebuffer_destroy(gl, &fbo);
+    return TL_OK;
+}
+
 tl_result tl__graph_compile(tl__device *dev, tl__graph *r, int programs)
 {
     tl__storage_pool pool;
@@ -256,6 +281,7 @@ tl_result tl__graph_compile(tl__device *dev, tl__graph *r, int programs)
         r->pass_count = i + 1;
     }
     if (res == TL_OK) res = tl__graph_luma(dev, r);
+    if (res == TL_OK) res = tl__graph_sample_positions(dev, r);
     if (res == TL_OK && programs) res = tl__graph_programs(dev, r);
     return res;
 }

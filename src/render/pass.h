@@ -121,6 +121,7 @@ typedef struct tl__pass_ctx {
     const GLuint *write_fbos, *write_textures;
     uint32_t width, height;       /* the frame's size */
     uint32_t light_shift;         /* the light scale: the light buffer is the frame's size >> light_shift */
+    uint32_t gbuffer_samples;     /* MSAA per-sample edges: the samples the G-buffer has (tl__graph.samples); else 1 */
     GLuint fullscreen_vao, linear_sampler;
     const void *params;           /* its slice of the resolved options (tl__pass_def.options_offset), or NULL */
     const GLuint *queries;        /* its own samples-passed queries (query_count), NULL when not measured */

@@ -4,7 +4,9 @@
  * differ in depth, normal or (deferred modes) material in msaa.edges, the light pass (volumes or
  * the tiled fragment pass) lights every other pixel once from sample 0's surface, and
  * lights-samples runs the same light pass again with sample-rate shading on the edge pixels alone
- * (shaders/gbuffer_samples.glsl says which pixels a pass lights). thin-lpp's light buffer is
+ * (shaders/gbuffer_samples.glsl says which pixels a pass lights); the compute tiled pass does both
+ * in one dispatch, an invocation per pixel and sample (lights_tiled.comp.glsl), and has no
+ * lights-samples. thin-lpp's light buffer is
  * multisampled too, and its material pass (multisampled, depth EQUAL against the G-buffer's depth)
  * takes the light of the first sample it covers that holds its surface (light_msaa.glsl). The thin
  * G-buffer's checkerboard chroma is rebuilt per sample from the four neighbours' same sample index
@@ -57,7 +59,9 @@ const tl__pass_def tl__pass_msaa_classify = {
 
 static void tl__samples_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!tl__sample_edges(in)) return;
+    /* the compute tiled pass lights the edge pixels' samples in its own dispatch */
+    int compute = in->o->tiled_shading == TL_TILED_SHADING_COMPUTE;
+    if (!tl__sample_edges(in) || (in->strategy == TL_LIGHT_STRATEGY_TILED && compute)) return;
     if (in->strategy == TL_LIGHT_STRATEGY_TILED)
         tl__pass_lights_tiled.declare(in, d);
     else

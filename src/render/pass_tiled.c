@@ -100,7 +100,8 @@ static void tl__tiled_execute(const tl__pass_ctx *ctx)
     }
     tl__state_program(gl, ctx->state, ctx->programs[1]);
     uint32_t k = (1u << ctx->light_shift) - 1u, w = (ctx->width + k) >> ctx->light_shift, h = (ctx->height + k) >> ctx->light_shift;
-    gl->DispatchCompute((w + 7) / 8, (h + 7) / 8, 1);
+    /* MSAA per-sample edges: an invocation per sample of an edge pixel (lights_tiled.comp.glsl) */
+    gl->DispatchCompute((w + 7) / 8, (h + 7) / 8, ctx->gbuffer_samples);
     gl->MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
 

@@ -69,8 +69,6 @@ static tl_msaa_lighting tl__msaa_method(const tl_renderer_options *o)
 static const char *tl__sample_edges_refusal(const tl_renderer_options *o)
 {
     if (o->mode == TL_MODE_FORWARD) return "forward shades every sample: no per-sample-edges";
-    if (o->tiled_shading == TL_TILED_SHADING_COMPUTE && o->light_strategy != TL_LIGHT_STRATEGY_VOLUMES)
-        return "per-sample-edges has no compute tiled pass: fragment shading or volumes";
     return NULL;
 }
 

@@ -29,6 +29,7 @@ typedef struct tl__frame_ubo {
     float inv_size[2], pad[2];
     uint32_t tiles[4];        /* tile side, tiles across, tiles down, list entries the buffer holds */
     uint32_t light_counts[4]; /* visible directional lights (first), local lights after them, end of the casting ones */
+    float sample_positions[16]; /* MSAA: the samples' positions in the pixel (x, y pairs; tl__graph) */
 } tl__frame_ubo;
 
 /* Resolves a camera (scene/validate.h) with the scene's bounds: an error naming the field after

@@ -66,11 +66,12 @@ static void check_sample_edges_plan(const tl_scene_feature_set *f, uint32_t n, t
     const uint32_t gbuffer = mode == TL_MODE_FAT        ? fat
                              : mode == TL_MODE_THIN_LPP ? lpp
                                                         : TL_TARGET_BIT(TL_TARGET_RT0) | TL_TARGET_BIT(TL_TARGET_RT1);
-    for (int k = 0; k < 4; k++) {
+    for (int k = 0; k < 6; k++) { /* volumes, tiles (fragment), tiles (compute); by default and by name */
         tl_frame_plan p;
         tl_renderer_desc d = {.width = 1281, .height = 721, .options.msaa = n, .options.mode = mode};
-        d.options.light_strategy = k & 1 ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
-        int named = (k & 2) || mode == TL_MODE_THIN_LPP;
+        d.options.light_strategy = k % 3 ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
+        d.options.tiled_shading = k % 3 == 2 ? TL_TILED_SHADING_COMPUTE : TL_TILED_SHADING_FRAGMENT;
+        int named = k >= 3 || mode == TL_MODE_THIN_LPP;
         d.options.msaa_lighting = named ? TL_MSAA_LIGHTING_SAMPLE_EDGES : TL_MSAA_LIGHTING_DEFAULT;
         TL_CHECK(tl_frame_plan_build(&d, f, &p) == TL_OK);
         TL_CHECK_EQ_U(p.msaa, n);
@@ -82,8 +83,9 @@ static void check_sample_edges_plan(const tl_scene_feature_set *f, uint32_t n, t
         TL_CHECK(p.targets & TL_TARGET_BIT(TL_TARGET_MSAA_EDGES));
         TL_CHECK_EQ_U(p.target_info[TL_TARGET_MSAA_EDGES].samples, 1u);
         TL_CHECK(!(p.targets & TL_TARGET_BIT(TL_TARGET_DEPTH_MSAA)));
-        TL_CHECK(has_pass(&p, TL_PASS_MSAA_CLASSIFY) && has_pass(&p, TL_PASS_LIGHTS_SAMPLES));
-        TL_CHECK(has_pass(&p, k & 1 ? TL_PASS_LIGHTS_TILED : TL_PASS_LIGHTS));
+        /* the compute tiled pass lights the edge samples in its own dispatch */
+        TL_CHECK(has_pass(&p, TL_PASS_MSAA_CLASSIFY) && has_pass(&p, TL_PASS_LIGHTS_SAMPLES) == (k % 3 != 2));
+        TL_CHECK(has_pass(&p, k % 3 ? TL_PASS_LIGHTS_TILED : TL_PASS_LIGHTS));
         TL_CHECK(has_pass(&p, TL_PASS_MATERIAL) == (mode == TL_MODE_THIN_LPP) && !has_pass(&p, TL_PASS_DEPTH_PREPASS));
         char text[8192];
         tl_frame_plan_format(&p, text, sizeof text);
@@ -137,18 +139,16 @@ TL_TEST(msaa_plan_targets_and_refusals)
         check_sample_edges_plan(&f, n, TL_MODE_THIN_DEFERRED);
         check_sample_edges_plan(&f, n, TL_MODE_FAT);
     }
-    /* planned without, and said why: a method a mode lacks, per-sample edges with the compute tiled
-     * pass or a reduced light buffer, a reduced light buffer, effects */
-    tl_renderer_desc refused[9] = {
+    /* planned without, and said why: a method a mode lacks, per-sample edges with a reduced light
+     * buffer, a reduced light buffer, effects */
+    tl_renderer_desc refused[8] = {
         {.options.mode = TL_MODE_FAT, .options.msaa_lighting = TL_MSAA_LIGHTING_MATERIAL_PASS},
         {.options.mode = TL_MODE_THIN_DEFERRED, .options.msaa_lighting = TL_MSAA_LIGHTING_MATERIAL_PASS},
         {.options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES, .options.light_scale = 0.5f},
         {.options.mode = TL_MODE_FORWARD, .options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES},
-        {.options.mode = TL_MODE_FAT, .options.light_strategy = TL_LIGHT_STRATEGY_TILED,
-         .options.tiled_shading = TL_TILED_SHADING_COMPUTE},
         {.options.mode = TL_MODE_FAT, .options.ssao.method = TL_SSAO_DISC},
         {.options.light_scale = 0.5f}, {.options.ssao.method = TL_SSAO_DISC}, {.options.bloom.enabled = 1}};
-    for (int i = 0; i < 9; i++) {
+    for (int i = 0; i < 8; i++) {
         tl_frame_plan p, off;
         refused[i].options.msaa = 4;
         TL_CHECK(tl_frame_plan_build(&refused[i], &f, &p) == TL_OK);
@@ -302,13 +302,22 @@ typedef struct frame {
     double relit, edges; /* relit_fraction (material pass), msaa_edge_fraction (per-sample edges) */
 } frame;
 
-static int render_frame(const tl_scene *s, tl_render_mode mode, tl_light_strategy st, uint32_t msaa, tl_msaa_lighting how,
-                        frame *f)
+/* How the lights are gathered: volumes, or tiles with the fragment or the compute light pass. */
+typedef struct lit_by {
+    tl_light_strategy st;
+    tl_tiled_shading shading;
+} lit_by;
+static const lit_by by_volumes = {TL_LIGHT_STRATEGY_VOLUMES, TL_TILED_SHADING_FRAGMENT},
+                    by_tiles = {TL_LIGHT_STRATEGY_TILED, TL_TILED_SHADING_FRAGMENT},
+                    by_tiles_compute = {TL_LIGHT_STRATEGY_TILED, TL_TILED_SHADING_COMPUTE};
+
+static int render_frame(const tl_scene *s, tl_render_mode mode, lit_by by, uint32_t msaa, tl_msaa_lighting how, frame *f)
 {
     tl_renderer_desc d = {.width = W, .height = H};
     d.options.msaa_lighting = how;
     d.options.mode = mode;
-    d.options.light_strategy = st;
+    d.options.light_strategy = by.st;
+    d.options.tiled_shading = by.shading;
     d.options.msaa = msaa;
     d.options.fxaa = TL_FXAA_OFF;
     d.options.ambient[0] = d.options.ambient[1] = d.options.ambient[2] = -1.0f;
@@ -337,7 +346,7 @@ static int interior(const tri_scene *t, int i, int j)
 
 /* Edge pixels: the resolved coverage (from the tone-mapped linear output between the two surfaces'
  * interior values) against the analytic area; interior pixels: HDR against the one-sample frame. */
-static void check_triangle(tl_render_mode mode, tl_light_strategy st, uint32_t n, int light_only, tl_msaa_lighting how)
+static void check_triangle(tl_render_mode mode, lit_by by, uint32_t n, int light_only, tl_msaa_lighting how)
 {
     static tri_scene t;
     tri_scene_init(&t);
@@ -347,7 +356,7 @@ static void check_triangle(tl_render_mode mode, tl_light_strategy st, uint32_t n
         t.mat[1] = t.mat[0];
     }
     static frame one, ms;
-    if (!render_frame(&t.s, mode, st, 1, TL_MSAA_LIGHTING_DEFAULT, &one) || !render_frame(&t.s, mode, st, n, how, &ms)) {
+    if (!render_frame(&t.s, mode, by, 1, TL_MSAA_LIGHTING_DEFAULT, &one) || !render_frame(&t.s, mode, by, n, how, &ms)) {
         TL_CHECK(!"rendered");
         free(one.hdr), free(ms.hdr), one.hdr = ms.hdr = NULL;
         return;
@@ -387,10 +396,10 @@ static void check_triangle(tl_render_mode mode, tl_light_strategy st, uint32_t n
             mixed += sc > 0.0 && sc < 1.0 && got > step && got < 1.0 - step;
             edges++;
         }
-    printf("%s/%s msaa %u%s%s: %zu edge pixels (%zu with samples on both sides, %zu mixed), worst |resolved - analytic coverage| %.3f (1/samples "
+    printf("%s/%s%s msaa %u%s%s: %zu edge pixels (%zu with samples on both sides, %zu mixed), worst |resolved - analytic coverage| %.3f (1/samples "
            "%.3f), |resolved - covered sample positions| %.4f (one 8-bit step %.4f); %zu interior pixels, worst "
            "relative HDR difference %.2g; re-lit %.2f %%, per-sample edges %.2f %%\n",
-           tl_render_mode_name(mode), tl_light_strategy_name(st), n, how == TL_MSAA_LIGHTING_SAMPLE_EDGES ? " per-sample edges" : "",
+           tl_render_mode_name(mode), tl_light_strategy_name(by.st), by.shading == TL_TILED_SHADING_COMPUTE ? " (compute)" : "", n, how == TL_MSAA_LIGHTING_SAMPLE_EDGES ? " per-sample edges" : "",
            light_only ? " (light only)" : "", edges, partial, mixed,
            worst_edge, 1.0 / n, worst_sampled, step, inside, worst_interior, 100.0 * ms.relit, 100.0 * ms.edges);
     TL_CHECK(fabs(lin_in - lin_out) > (light_only ? 0.1 : 0.3) && edges > 200 && inside > (size_t)W * H / 2);
@@ -440,27 +449,38 @@ TL_TEST(msaa_triangle_edge_coverage_and_interior_pixels)
     TL_CHECK(top >= 4); /* llvmpipe: 4 */
     for (uint32_t n = 2; n <= top; n *= 2)
         for (int k = 0; k < 2; k++) {
-            tl_light_strategy st = k ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
-            check_triangle(TL_MODE_THIN_LPP, st, n, 0, TL_MSAA_LIGHTING_DEFAULT);
-            check_triangle(TL_MODE_FORWARD, st, n, 0, TL_MSAA_LIGHTING_DEFAULT);
+            lit_by by = k ? by_tiles : by_volumes;
+            check_triangle(TL_MODE_THIN_LPP, by, n, 0, TL_MSAA_LIGHTING_DEFAULT);
+            check_triangle(TL_MODE_FORWARD, by, n, 0, TL_MSAA_LIGHTING_DEFAULT);
         }
 }
 
 /* MSAA with per-sample lighting on edges (thin-lpp, thin-deferred, fat): the same coverage and interior
  * checks, and the edge pixels of two surfaces that differ only in their light resolve to the mix
- * of both lights (a pixel lit once, from one surface, would be either alone). */
-TL_TEST(msaa_sample_edges_triangle_coverage_and_per_sample_light)
+ * of both lights (a pixel lit once, from one surface, would be either alone); volumes and the
+ * fragment tiled pass here, the compute tiled pass in its own test below. */
+static void check_sample_edges(lit_by by)
 {
-    if (!ensure_context()) return;
     uint32_t top = max_samples();
     const tl_render_mode modes3[3] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT};
     for (uint32_t n = 2; n <= top; n *= 2)
-        for (int k = 0; k < 2; k++)
-            for (int m = 0; m < 3; m++) {
-                tl_light_strategy st = k ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
-                check_triangle(modes3[m], st, n, 0, TL_MSAA_LIGHTING_SAMPLE_EDGES);
-                check_triangle(modes3[m], st, n, 1, TL_MSAA_LIGHTING_SAMPLE_EDGES);
-            }
+        for (int m = 0; m < 3; m++) {
+            check_triangle(modes3[m], by, n, 0, TL_MSAA_LIGHTING_SAMPLE_EDGES);
+            check_triangle(modes3[m], by, n, 1, TL_MSAA_LIGHTING_SAMPLE_EDGES);
+        }
+}
+
+TL_TEST(msaa_sample_edges_triangle_coverage_and_per_sample_light)
+{
+    if (!ensure_context()) return;
+    check_sample_edges(by_volumes);
+    check_sample_edges(by_tiles);
+}
+
+TL_TEST(msaa_sample_edges_compute_tiled_triangle_coverage_and_per_sample_light)
+{
+    if (!ensure_context()) return;
+    check_sample_edges(by_tiles_compute);
 }
 
 /* ---- run-time switches ------------------------------------------------------------------------------ */
@@ -545,5 +565,59 @@ TL_TEST(msaa_crypt_thin_lpp_against_forward_printed)
      * (55.2 dB measured); the truth comparison is the bench's (docs/antialiasing.md) */
     TL_CHECK(p4 > 50.0);
     TL_CHECK(relit > 0.0 && relit < 0.15);
+    tl_scene_destroy(s);
+}
+
+/* ---- the compute tiled pass against the fragment one ------------------------------------------------ */
+
+/* The crypt with per-sample edges, lit by the fragment and by the compute tiled pass: the same
+ * G-buffer, lists, lights and order of summation, so a sample's float sum differs at most by the
+ * two programs' compilations, and its FP16 value by one rounding (2^-11 relative) each way; the
+ * resolved HDR by 2^-10 relative, the 8-bit output by one step. */
+TL_TEST(msaa_sample_edges_compute_tiled_matches_fragment_tiled)
+{
+    if (!ensure_context()) return;
+    tl_scene *s = NULL;
+    TL_CHECK(tl_scene_create_default(NULL, &s) == TL_OK);
+    if (!s) return;
+    enum { CW = 320, CH = 180 };
+    static uint8_t out[2][CW * CH * 4];
+    const tl_render_mode modes3[3] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT};
+    for (uint32_t n = 2; n <= 4; n *= 2)
+        for (int m = 0; m < 3; m++) {
+            float *hdr[2] = {NULL, NULL};
+            double edges[2] = {0.0, 0.0};
+            for (int k = 0; k < 2; k++) {
+                tl_renderer_desc d = {.width = CW, .height = CH};
+                d.options.mode = modes3[m];
+                d.options.msaa = n;
+                d.options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES;
+                d.options.light_strategy = TL_LIGHT_STRATEGY_TILED;
+                d.options.tiled_shading = k ? TL_TILED_SHADING_COMPUTE : TL_TILED_SHADING_FRAGMENT;
+                d.options.fxaa = TL_FXAA_OFF;
+                tl_renderer *r = tl_test_render_once(s, d);
+                size_t size = sizeof out[k];
+                TL_CHECK(r && tl_renderer_read_output(r, out[k], &size) == TL_OK);
+                hdr[k] = r ? tl_test_read_target(r, TL_TARGET_HDR, (size_t)CW * CH) : NULL;
+                tl_frame_stats st;
+                if (r && tl_renderer_render(r, NULL, &st) == TL_OK && tl_renderer_wait(r, &st) == TL_OK)
+                    edges[k] = st.msaa_edge_fraction;
+                tl_renderer_destroy(r);
+            }
+            double worst = 0.0;
+            for (size_t i = 0; hdr[0] && hdr[1] && i < (size_t)CW * CH * 4; i++)
+                if (i % 4 != 3) worst = fmax(worst, fabs(hdr[0][i] - hdr[1][i]) / fmax(fabs(hdr[0][i]), 1e-3));
+            int max8;
+            double p = psnr8(out[0], out[1], sizeof out[0], &max8);
+            printf("crypt %dx%d %s msaa %u per-sample edges: compute against fragment tiled: %.2f dB, max %d steps, "
+                   "worst relative HDR difference %.2g; edges %.2f %% and %.2f %%\n",
+                   CW, CH, tl_render_mode_name(modes3[m]), n, p, max8, worst, 100.0 * edges[0], 100.0 * edges[1]);
+            TL_CHECK(hdr[0] && hdr[1]);
+            TL_CHECK(edges[0] > 0.01 && edges[0] == edges[1]); /* the same pixels lit per sample */
+            TL_CHECK_LE(worst, 1.0 / 1024.0);
+            TL_CHECK(max8 <= 1);
+            free(hdr[0]);
+            free(hdr[1]);
+        }
     tl_scene_destroy(s);
 }
