@@ -912,9 +912,12 @@ typedef struct tl_shadow_view_info {
     uint32_t light;          /**< index of its light in the scene's lights */
     tl_light_type type;      /**< the light's type (point, spot or directional) */
     uint32_t index;          /**< cascade 0..3, cube face 0..5 (+X, -X, +Y, -Y, +Z, -Z), 0 for a spot map */
-    uint32_t x, y, size;     /**< its tile in atlas texels (x, y: bottom left) */
+    uint32_t x;              /**< its tile in atlas texels: left column */
+    uint32_t y;              /**< bottom row */
+    uint32_t size;           /**< side */
     int perspective;         /**< 1: a perspective map (spot, cube face); 0: an orthographic cascade */
-    float near_z, far_z;     /**< its depth range along the light's axis, world units */
+    float near_z;            /**< its depth range along its view's axis (world units): near ... */
+    float far_z;             /**< ... and far (tl_renderer_read_shadow_atlas linearises with them) */
     float split;             /**< cascades: the camera view depth where the cascade ends; else 0 */
     int rendered;            /**< 1: rendered in that frame; 0: kept from an earlier one */
 } tl_shadow_view_info;
