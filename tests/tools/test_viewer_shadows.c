@@ -178,3 +178,17 @@ TL_TEST(viewer_shadow_views_without_casters_show_the_placeholder)
         release(&im);
     }
 }
+
+/* The grid with --shadows: the three shadow views (the grid's last three cells) are images. */
+TL_TEST(viewer_shadow_views_in_the_grid)
+{
+    image g = shot(640, 360, "--shadows --grid", "shadow_grid.png");
+    TL_CHECK(g.px != NULL);
+    for (int v = 21; g.px && v < 24; v++) {
+        image c = cell(&g, v);
+        printf("grid cell %d: %zu colours%s\n", v, colours(&c), is_placeholder(&c) ? " (placeholder)" : "");
+        TL_CHECK(c.px && !is_placeholder(&c) && colours(&c) > 4);
+        release(&c);
+    }
+    release(&g);
+}
