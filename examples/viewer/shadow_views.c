@@ -131,7 +131,8 @@ static void vw_atlas_draw(vw_app *app, const float *atlas, uint32_t side, const 
             uint32_t tx = (uint32_t)(((uint64_t)(x - x0) * side) / s), ty = (uint32_t)(((uint64_t)(y - y0) * side) / s);
             long k = vw_atlas_view(v, n, tx, ty);
             if (k < 0) continue;
-            uint32_t ex = (uint32_t)(((uint64_t)(x - x0 + 1) * side) / s), ey = (uint32_t)(((uint64_t)(y - y0 + 1) * side) / s);
+            uint32_t ex = (uint32_t)(((uint64_t)(x - x0 + 1) * side) / s);
+            uint32_t ey = (uint32_t)(((uint64_t)(y - y0 + 1) * side) / s);
             const tl_shadow_view_info *w = &v[k];
             if (tx == w->x || ty == w->y || ex >= w->x + w->size || ey >= w->y + w->size) {
                 const float *c = edge[w->type < 4 ? w->type : 0];

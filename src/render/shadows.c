@@ -192,11 +192,12 @@ tl_result tl__shadows_read_atlas(tl__device *dev, const tl__shadows *s, float *d
     size_t need = (size_t)s->atlas_size * s->atlas_size * sizeof(float);
     size_t have = *size;
     *size = need;
-    if (!s->atlas) return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: no shadow atlas (no casting light rendered)");
+    if (!s->atlas)
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: no shadow atlas (no casting light rendered)");
     if (!depth) return TL_OK;
     if (have < need)
-        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: reading the shadow atlas needs %zu bytes, the buffer has %zu",
-                        need, have);
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT,
+                        "renderer: reading the shadow atlas needs %zu bytes, the buffer has %zu", need, have);
     tl__target t = {.texture = s->atlas, .internal_format = GL_DEPTH_COMPONENT32F, .width = s->atlas_size,
                     .height = s->atlas_size, .levels = 1, .samples = 1, .bytes = need};
     char msg[256] = "";

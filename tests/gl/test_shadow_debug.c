@@ -176,12 +176,14 @@ TL_TEST(shadow_debug_cascades_follow_splits)
             float depth = z[4 * i + 1], b = d[4 * i + 2];
             int k = 0;
             while (k < 4 && depth >= want[k]) k++;
-            float start = k ? want[k - 1] : 0.0f, blend = k < 3 ? tl__smoothstep(want[k] - 0.1f * (want[k] - start), want[k], depth) : 0.0f;
+            float start = k ? want[k - 1] : 0.0f, blend = 0.0f;
+            if (k < 3) blend = tl__smoothstep(want[k] - 0.1f * (want[k] - start), want[k], depth);
             float expect = k == 4 ? -1.0f : (float)k + blend;
             /* the stored depth's step at this depth, two of them (docs/shadows.md, e_gbuffer): the
              * shader and this test linearise it with different rounding */
             const tl_camera *cam = &c.scene->camera;
-            float dz = dfmt ? ldexpf(depth, -21) : ldexpf(depth * depth, -22) * (cam->far_z - cam->near_z) / (cam->far_z * cam->near_z);
+            float dz = dfmt ? ldexpf(depth, -21)
+                            : ldexpf(depth * depth, -22) * (cam->far_z - cam->near_z) / (cam->far_z * cam->near_z);
             if (fabsf(depth - start) < dz || (k < 4 && fabsf(depth - want[k]) < dz)) continue; /* on a split */
             per[k]++;
             wrong += fabsf(b - expect) > 0.01f + (k < 4 ? 15.0f * dz / (want[k] - start) : 0.0f);
