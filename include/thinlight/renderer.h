@@ -901,7 +901,7 @@ TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *
  * blurred colour and, in alpha, the circle of confusion's radius in pixels that the gather used
  * (docs/effects.md); SSR the reflection added to HDR and its weight; BLOOM its first level
  * (tl_plan_target.width x height, not the frame's size): the bloom image before its intensity;
- * LDR and OUTPUT their colour in [0,1]. *size is the
+ * SHADOW_DEBUG its four channels (tl_renderer_options.shadow_debug); LDR and OUTPUT their colour in [0,1]. *size is the
  * buffer's size in bytes and receives the bytes written; a NULL `rgba` asks for the size needed.
  * TL_ERROR_INVALID_ARGUMENT for a target the plan did not allocate, or one whose memory a later
  * pass of the frame reused (list it in tl_renderer_options.keep_targets to read it).
