@@ -63,6 +63,18 @@ vec3 tl_shadow_biased(tl_shadow_view sv, float w, vec3 p, vec3 n, vec3 l)
     return p + n * ((u_shadow_params.y + 1.0) * texel * sin_t + e_gbuffer) + l * e_atlas;
 }
 
+// The cascade of view depth z for a directional light's split ends (4: beyond the last) and, over
+// the last 10 % of its slice, the blend weight towards the next cascade (0 before).
+uint tl_shadow_cascade(vec4 splits, float z, out float blend)
+{
+    blend = 0.0;
+    if (z >= splits.w) return 4u;
+    uint i = z < splits.x ? 0u : z < splits.y ? 1u : z < splits.z ? 2u : 3u;
+    float end = splits[i], start = i > 0u ? splits[i - 1u] : 0.0;
+    blend = smoothstep(end - 0.1 * (end - start), end, z);
+    return i;
+}
+
 // The visibility of light slot `slot` (> 0) at view-space p with normal n, l towards the light and
 // `light` its view-space position (point lights). The view is chosen first (the cascade of the
 // view depth, the cube face of the direction's major axis in world space, or the spot map); one
@@ -76,11 +88,8 @@ float tl_shadow(float slot, vec3 p, vec3 n, vec3 l, vec3 light)
     float blend = 0.0;
     int views = 1;
     if (sl.info.z == 3u) {
-        float z = -p.z;
-        if (z >= sl.splits.w) return 1.0;
-        uint i = z < sl.splits.x ? 0u : z < sl.splits.y ? 1u : z < sl.splits.z ? 2u : 3u;
-        float end = sl.splits[i], start = i > 0u ? sl.splits[i - 1u] : 0.0;
-        blend = smoothstep(end - 0.1 * (end - start), end, z);
+        uint i = tl_shadow_cascade(sl.splits, -p.z, blend);
+        if (i > 3u) return 1.0;
         v += i;
         views = blend > 0.0 && i + 1u < count ? 2 : 1;
     } else if (sl.info.z == 1u) {

@@ -17,7 +17,9 @@ static const char vw_usage[] =
     "  --view V              final (default), normals, gloss, luma, chroma, albedo, depth, position,\n"
     "                        light-diffuse, light-specular, tile-lights, hdr, before-fxaa, diff-fat,\n"
     "                        ao-raw, ao (with --ssao), dof-coc (with --dof), ssr (with --ssr),\n"
-    "                        bloom (with --bloom)\n"
+    "                        bloom (with --bloom), msaa-edges, material-model, shadow-atlas,\n"
+    "                        shadow-cascades, shadow-only (with casting lights: --shadows)\n"
+    "  --shadows             the crypt's moonlight and braziers cast shadows (docs/shadows.md)\n"
     "  --grid                every view as thumbnails\n"
     "  --split MODE          left half in --mode, right half in MODE\n"
     "  --animate             move the lights\n"
@@ -86,7 +88,8 @@ void vw_print_usage(FILE *f)
 }
 
 enum { V_HELP, V_LIST, V_SIZE, V_RESIZE, V_LIGHTS, V_FRAMES, V_VIEW, V_SPLIT, V_SCREENSHOT, V_SCREENSHOT_WINDOW,
-       V_GRID, V_ANIMATE, V_NO_PANEL, V_PRINT_TARGETS, V_DYNAMIC, V_BUDGET, V_MOVE, V_PRINT_FRAMES };
+       V_GRID, V_ANIMATE, V_NO_PANEL, V_PRINT_TARGETS, V_DYNAMIC, V_BUDGET, V_MOVE, V_PRINT_FRAMES,
+       V_SHADOWS };
 
 static const tl_opt vw_opts[] = {
     {"--help", TL_OPT_FLAG, .id = V_HELP},
@@ -108,6 +111,7 @@ static const tl_opt vw_opts[] = {
     {"--light-budget-ms", TL_OPT_REAL, .id = V_BUDGET, .min = 0.001, .max = 1e6},
     {"--move-camera", TL_OPT_UINT_LIST, .id = V_MOVE, .lo = 0, .hi = 100000, .items = 2},
     {"--print-frames", TL_OPT_FLAG, .id = V_PRINT_FRAMES},
+    {"--shadows", TL_OPT_FLAG, .id = V_SHADOWS},
 };
 
 /* One option of vw_opts; -1 to go on, else the exit status (0 after --help or --list-options). */
@@ -141,6 +145,7 @@ static int vw_option(vw_args *a, const tl_opt_table *tables, size_t ntables, con
         a->move_first = (uint32_t)v->u[0], a->move_count = (uint32_t)v->u[1];
         break;
     case V_PRINT_FRAMES: a->print_frames = 1; break;
+    case V_SHADOWS: a->shadows = 1; break;
     default: break;
     }
     return -1;

@@ -25,6 +25,7 @@ typedef struct vw_args {
     double light_budget_ms;      /* --light-budget-ms (default 33.3) */
     uint32_t move_first, move_count; /* --move-camera FIRST,COUNT: scripted orbit (tests); count 0: none */
     int print_frames;            /* --print-frames: one line per frame on stdout */
+    int shadows;                 /* --shadows: the crypt's moonlight and braziers cast */
     tl_tool_environment env;     /* --background, --environment (tool_environment.h) */
 } vw_args;
 

@@ -280,6 +280,7 @@ static void vw_settings(vw_run *run)
     app->dyn.budget_ms = a->light_budget_ms;
     if (a->scene) app->gltf_extra_lights = a->lights;
     else if (a->lights_set) app->crypt.point_lights = a->lights ? a->lights : 1;
+    app->crypt.shadows = a->shadows;
     app->view = a->view;
     app->grid = a->grid;
     app->split_on = a->split;

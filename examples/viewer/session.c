@@ -79,6 +79,7 @@ static tl_renderer_options vw_options(const vw_app *app, tl_render_mode mode, ui
     o.mode = mode;
     o.keep_targets = keep;
     o.light_scale = vw_light_scale_used(app); /* the chosen one, or lower while the camera moves */
+    o.shadow_debug = keep && vw_shadow_debug_wanted(app); /* the main renderer, for the shadow views */
     return o;
 }
 

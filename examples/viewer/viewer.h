@@ -40,6 +40,9 @@ typedef enum vw_view {
     VW_VIEW_BLOOM,          /* bloom: the glow the tone-map pass adds to HDR (bloom target, first level) */
     VW_VIEW_MSAA_EDGES,     /* MSAA in thin-lpp: pixels with a sample re-lit from the lists (its texel another surface's) */
     VW_VIEW_MATERIAL_MODEL, /* each pixel's material model (tl_material_model), one colour per model (material_ids.c) */
+    VW_VIEW_SHADOW_ATLAS,   /* the shadow atlas's depth, per view (shadow_views.c) */
+    VW_VIEW_SHADOW_CASCADES, /* each pixel's cascade of the casting directional light, over the image */
+    VW_VIEW_SHADOW_ONLY,    /* the shadow-only term: the casting lights' visibility weighted by their diffuse light */
     VW_VIEW_COUNT
 } vw_view;
 
@@ -149,6 +152,17 @@ typedef struct vw_app {
  * or the renderer failed. */
 int vw_material_ids(vw_app *app, const tl_camera *cam, float *hdr, uint8_t *out);
 void vw_material_ids_free(vw_app *app);
+
+/* shadow_views.c: the shadow views into out (cascades: out holds the final image, whose luma
+ * shades the cascades' colours); 0, or 1 with the reason in app->view_note. Whether the current
+ * view needs the renderer's shadow-debug pass; a legend's colours; one atlas texel's colour
+ * (stored depth d of view v). */
+int vw_shadow_atlas(vw_app *app, tl_renderer *r, uint8_t *out);
+int vw_shadow_cascades(vw_app *app, tl_renderer *r, uint8_t *out);
+int vw_shadow_only(vw_app *app, tl_renderer *r, uint8_t *out);
+int vw_shadow_debug_wanted(const vw_app *app);
+void vw_cascade_legend_colour(float t, uint8_t rgb[3]);
+void vw_atlas_texel(const tl_shadow_view_info *v, float d, int reversed, uint8_t *px);
 
 /* views.c */
 const char *vw_view_name(vw_view v);

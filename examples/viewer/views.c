@@ -493,6 +493,24 @@ static int vw_view_bloom(vw_app *app, tl_renderer *r, const tl_camera *cam, uint
     return 0;
 }
 
+/* The shadow views (shadow_views.c); cascades over the final image. */
+static int vw_view_shadow_atlas(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    return vw_shadow_atlas(app, r, out);
+}
+
+static int vw_view_shadow_cascades(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    return vw_view_final(app, r, cam, out) || vw_shadow_cascades(app, r, out);
+}
+
+static int vw_view_shadow_only(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    return vw_shadow_only(app, r, out);
+}
+
 /* ---- legends -------------------------------------------------------------------------------- */
 
 static void vw_grey(float t, uint8_t rgb[3]) { rgb[0] = rgb[1] = rgb[2] = vw_u8(t); }
@@ -557,6 +575,30 @@ static void vw_legend_coc(const vw_app *app, vw_legend *l)
     snprintf(l->high, sizeof l->high, "%.1f", vw_coc_max(app));
 }
 
+static void vw_legend_shadow_atlas(const vw_app *app, vw_legend *l)
+{
+    (void)app;
+    l->title = "SHADOW ATLAS DEPTH, EACH VIEW";
+    l->colour = vw_depth_grey;
+    snprintf(l->low, sizeof l->low, "NEAR");
+    snprintf(l->high, sizeof l->high, "FAR");
+}
+
+static void vw_legend_shadow_cascades(const vw_app *app, vw_legend *l)
+{
+    (void)app;
+    l->title = "DIRECTIONAL CASCADE (STRIPES: BLEND)";
+    l->colour = vw_cascade_legend_colour;
+    snprintf(l->low, sizeof l->low, "0");
+    snprintf(l->high, sizeof l->high, "3");
+}
+
+static void vw_legend_shadow_only(const vw_app *app, vw_legend *l)
+{
+    vw_legend_unit(app, l);
+    l->title = "SHADOW ONLY (1 = LIT)";
+}
+
 static const vw_view_def vw_view_table[VW_VIEW_COUNT] = {
     [VW_VIEW_FINAL] = {"final", "the output image (after FXAA)", vw_view_final, NULL},
     [VW_VIEW_NORMALS] = {"normals", "decoded view-space normals, n * 0.5 + 0.5", vw_view_normals, NULL},
@@ -587,6 +629,15 @@ static const vw_view_def vw_view_table[VW_VIEW_COUNT] = {
                             "or where per-sample edges lit a pixel per sample; the image darkened", vw_view_msaa_edges, NULL},
     [VW_VIEW_MATERIAL_MODEL] = {"material-model", "material model: grey standard, yellow unlit, blue clearcoat, "
                                 "magenta sheen, orange wrap, green toon; shaded by the image's luma", vw_view_material_model, NULL},
+    [VW_VIEW_SHADOW_ATLAS] = {"shadow-atlas", "the shadow atlas: each view's depth, white near to dark far; tile edges yellow "
+                              "(sun), cyan (point), magenta (spot); blue: nothing drawn", vw_view_shadow_atlas,
+                              vw_legend_shadow_atlas},
+    [VW_VIEW_SHADOW_CASCADES] = {"shadow-cascades", "the casting directional light's cascade per pixel: red 0, green 1, blue 2, "
+                                 "yellow 3, stripes of the next where two blend; grey beyond; shaded by the image's luma", vw_view_shadow_cascades,
+                                 vw_legend_shadow_cascades},
+    [VW_VIEW_SHADOW_ONLY] = {"shadow-only", "shadow term alone: the casting lights' visibility weighted by their diffuse "
+                             "light, black shadowed to white lit; blue: no casting light reaches", vw_view_shadow_only,
+                             vw_legend_shadow_only},
 };
 
 const char *vw_view_name(vw_view v) { return v < VW_VIEW_COUNT ? vw_view_table[v].name : "unknown"; }

@@ -373,6 +373,15 @@ typedef struct tl_renderer_options {
     /** With `msaa` above 1: how the multisampled frame is lit (tl_msaa_lighting; zeroed: the
      *  mode's default, today's behaviour). */
     tl_msaa_lighting msaa_lighting;
+    /** 1: the frame also writes TL_TARGET_SHADOW_DEBUG (the shadow-debug pass, docs/shadows.md
+     *  "Debug views"), kept for tl_renderer_read_target: per pixel, R the shadow-only term (the
+     *  casting lights' diffuse light with their visibility over the same without it, 0..1), G that
+     *  unshadowed diffuse light's luminance (0: no casting light reaches the pixel), B the cascade of
+     *  the first casting directional light at the pixel's view depth plus the blend towards the next
+     *  (-1: none), A 1 on surfaces, 0 on the background. Planned only with casting lights, and not
+     *  with a multisampled G-buffer or depth (tl_frame_plan then has no shadow-debug pass). Default 0:
+     *  no pass, the plan as without the field. */
+    int shadow_debug;
 } tl_renderer_options;
 
 /** What tl_renderer_create() needs: the first options and what only creation decides (the
@@ -445,6 +454,7 @@ typedef enum tl_pass {
     TL_PASS_SKY,           /**< the background colour or the environment where no geometry is drawn */
     TL_PASS_MSAA_CLASSIFY, /**< MSAA per-sample edges: the pixels whose samples differ in depth or normal, into msaa.edges */
     TL_PASS_LIGHTS_SAMPLES, /**< MSAA per-sample edges: the light pass again, per sample, on edge pixels only */
+    TL_PASS_SHADOW_DEBUG,  /**< tl_renderer_options.shadow_debug: the shadow term and cascade of each pixel, into shadow.debug */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
@@ -480,6 +490,7 @@ typedef enum tl_target_id {
     TL_TARGET_OPAQUE_DEPTH,   /**< stipple: the opaque surfaces' depth (depth's format); the material pass tests against it */
     TL_TARGET_DEPTH_MSAA,     /**< thin-lpp with MSAA: the multisampled depth the material pass tests against (depth's format) */
     TL_TARGET_MSAA_EDGES,     /**< MSAA per-sample edges: R8, 1 where the pixel's samples differ in depth or normal */
+    TL_TARGET_SHADOW_DEBUG,   /**< tl_renderer_options.shadow_debug: RGBA16F, shadow-only term, its weight, cascade, surface */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -890,12 +901,45 @@ TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *
  * blurred colour and, in alpha, the circle of confusion's radius in pixels that the gather used
  * (docs/effects.md); SSR the reflection added to HDR and its weight; BLOOM its first level
  * (tl_plan_target.width x height, not the frame's size): the bloom image before its intensity;
- * LDR and OUTPUT their colour in [0,1]. *size is the
+ * SHADOW_DEBUG its four channels (tl_renderer_options.shadow_debug); LDR and OUTPUT their colour in [0,1]. *size is the
  * buffer's size in bytes and receives the bytes written; a NULL `rgba` asks for the size needed.
  * TL_ERROR_INVALID_ARGUMENT for a target the plan did not allocate, or one whose memory a later
  * pass of the frame reused (list it in tl_renderer_options.keep_targets to read it).
  */
 TL_API tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id target, float *rgba, size_t *size);
+/** One view of the shadow atlas in the last frame rendered (tl_renderer_get_shadow_views). */
+typedef struct tl_shadow_view_info {
+    uint32_t light;          /**< index of its light in the scene's lights */
+    tl_light_type type;      /**< the light's type (point, spot or directional) */
+    uint32_t index;          /**< cascade 0..3, cube face 0..5 (+X, -X, +Y, -Y, +Z, -Z), 0 for a spot map */
+    uint32_t x;              /**< its tile in atlas texels: left column */
+    uint32_t y;              /**< bottom row */
+    uint32_t size;           /**< side */
+    int perspective;         /**< 1: a perspective map (spot, cube face); 0: an orthographic cascade */
+    float near_z;            /**< its depth range along its view's axis (world units): near ... */
+    float far_z;             /**< ... and far (tl_renderer_read_shadow_atlas linearises with them) */
+    float split;             /**< cascades: the camera view depth where the cascade ends; else 0 */
+    int rendered;            /**< 1: rendered in that frame; 0: kept from an earlier one */
+} tl_shadow_view_info;
+
+/**
+ * The shadow atlas's views of the last frame rendered, in the lookup's order (a light's views
+ * together). *count is the capacity of `views` and receives the views written; a NULL `views`
+ * asks for the count. `atlas_size` (may be NULL) receives the atlas's side in texels (0: no atlas).
+ * TL_ERROR_INVALID_ARGUMENT for NULL `r` or `count`, or a capacity below the count.
+ */
+TL_API tl_result tl_renderer_get_shadow_views(tl_renderer *r, tl_shadow_view_info *views, size_t *count,
+                                              uint32_t *atlas_size);
+/**
+ * Reads the shadow atlas's stored depth, one float a texel, atlas_size x atlas_size, rows bottom to
+ * top: the window depth of the frame's convention (D24: standard, far 1; reversed D32F: reversed,
+ * far 0). A texel of a view at distance z along its light's axis holds, with n and f its near_z and
+ * far_z, perspective: f (z - n) / (z (f - n)) (reversed: n (f - z) / (z (f - n))); orthographic:
+ * (z - n) / (f - n) (reversed: (f - z) / (f - n)). *size is the buffer's size in bytes and receives
+ * the bytes written; a NULL `depth` asks for the size. TL_ERROR_INVALID_ARGUMENT without an atlas
+ * (no casting light rendered yet) or with a buffer too small.
+ */
+TL_API tl_result tl_renderer_read_shadow_atlas(tl_renderer *r, float *depth, size_t *size);
 /** The renderer's target size (0 x 0 for NULL); either pointer may be NULL. */
 TL_API void tl_renderer_get_size(const tl_renderer *r, uint32_t *width, uint32_t *height);
 

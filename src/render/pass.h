@@ -85,6 +85,7 @@ typedef struct tl__pass_decl {
     uint8_t light_data;    /* TL__LIGHTS_* it reads */
     uint8_t split_writes;  /* it renders its colour writes one at a time: a framebuffer per write too */
     uint32_t images;       /* writes bound as images (compute passes) */
+    uint32_t sinks;        /* writes read after the frame (a debug output): never culled, kept to the end */
     tl__pipeline state;    /* fixed state; a pass may change cull, depth test and clamp per draw */
 } tl__pass_decl;
 

@@ -398,7 +398,10 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
         p->pub.tiles_y = in.tiles_y;
     }
     tl__select(&in, apps, app_count, p);
-    tl__cull_passes(p, TL__BIT(TL_TARGET_OUTPUT));
+    uint32_t debug = 0; /* debug outputs: read after the frame, like the output */
+    for (size_t i = 0; i < p->pub.pass_count; i++) debug |= p->decl[i].sinks;
+    kept |= debug;
+    tl__cull_passes(p, TL__BIT(TL_TARGET_OUTPUT) | debug);
     tl__lifetimes(p, &d, kept);
     tl__share_memory(p, &d.options);
     tl_result r = tl__programs(&in, p);

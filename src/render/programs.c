@@ -9,11 +9,13 @@
 #include "device.h"
 #include "targets.h"
 
-#define TL__MAX_DEFINES 64
-
 #define TL__BINDING_STRING(name, value) "TL_" #name "=" #value,
 static const char *const tl__binding_defines[] = {TL__BINDING_LIST(TL__BINDING_STRING)};
 #define TL__BINDING_DEFINE_COUNT (sizeof tl__binding_defines / sizeof tl__binding_defines[0])
+/* The bindings, a unit per target and every word of a plan's defines (tl_plan_program.defines: at
+ * most 128 words in 256 characters), so no define is ever dropped: with a fixed 64, the target
+ * added after 28 pushed a light program's last define (TL_LIGHT_FULLSCREEN) out silently. */
+#define TL__MAX_DEFINES (TL__BINDING_DEFINE_COUNT + TL_TARGET_COUNT + 128)
 
 /* Splits the space-separated `defines` (copied into buf) after the fixed binding defines. */
 static size_t tl__define_list(const char *defines, char *buf, size_t buf_size, char units[][32], const char **out)

@@ -238,6 +238,7 @@ static void tl__view_add(tl__shadows *s, const tl__view_ctx *c, const tl__mat4 *
     tl__shadow_view_gpu *gv = &s->views_gpu[i];
     sv->world_clip = tl__mat4_mul(proj, look);
     sv->x = x, sv->y = y, sv->size = size;
+    sv->near_z = n, sv->far_z = f, sv->perspective = persp;
     tl__mat4 m = tl__mat4_mul(&sv->world_clip, &c->view_inv);
     memcpy(gv->m, m.m, sizeof gv->m);
     float a = (float)c->atlas;
@@ -437,6 +438,10 @@ tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights 
         else if (kind == TL_LIGHT_POINT) tl__point_views(s, &c, li, xy, size);
         else tl__cascade_views(s, &c, li, xy, size, rec->splits);
         rec->info[1] = (uint32_t)s->view_count - rec->info[0];
+        for (uint32_t k = rec->info[0]; k < s->view_count; k++) {
+            s->views[k].light = i, s->views[k].index = k - rec->info[0];
+            s->views[k].split = kind == TL_LIGHT_DIRECTIONAL ? rec->splits[k - rec->info[0]] : 0.0f;
+        }
         rec->info[2] = (uint32_t)kind;
         rec->fade[0] = s->fade[i];
         rec->fade[1] = (float)size;

@@ -168,3 +168,39 @@ void tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g,
     st->shadow_maps_cached = (uint32_t)(s->view_count - rendered);
     st->shadow_ms = rendered ? s->last_ms : 0.0;
 }
+
+tl_result tl__shadows_views(const tl__shadows *s, const tl_light *lights, size_t light_count, tl_shadow_view_info *out,
+                            size_t *count)
+{
+    size_t have = *count;
+    *count = s->view_count;
+    if (!out) return TL_OK;
+    if (have < s->view_count) return TL_ERROR_INVALID_ARGUMENT;
+    for (size_t i = 0; i < s->view_count; i++) {
+        const tl__shadow_view *v = &s->views[i];
+        tl_light_type t = v->light < light_count ? lights[v->light].type : TL_LIGHT_DEFAULT; /* lights set since */
+        out[i] = (tl_shadow_view_info){.light = v->light, .type = t == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : t,
+                                       .index = v->index, .x = v->x, .y = v->y, .size = v->size,
+                                       .perspective = v->perspective, .near_z = v->near_z, .far_z = v->far_z,
+                                       .split = v->split, .rendered = v->render};
+    }
+    return TL_OK;
+}
+
+tl_result tl__shadows_read_atlas(tl__device *dev, const tl__shadows *s, float *depth, size_t *size)
+{
+    size_t need = (size_t)s->atlas_size * s->atlas_size * sizeof(float);
+    size_t have = *size;
+    *size = need;
+    if (!s->atlas)
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: no shadow atlas (no casting light rendered)");
+    if (!depth) return TL_OK;
+    if (have < need)
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT,
+                        "renderer: reading the shadow atlas needs %zu bytes, the buffer has %zu", need, have);
+    tl__target t = {.texture = s->atlas, .internal_format = GL_DEPTH_COMPONENT32F, .width = s->atlas_size,
+                    .height = s->atlas_size, .levels = 1, .samples = 1, .bytes = need};
+    char msg[256] = "";
+    tl_result res = tl__target_read(&dev->gl, &t, GL_DEPTH_COMPONENT, GL_FLOAT, depth, need, msg, sizeof msg);
+    return res == TL_OK ? TL_OK : tl__fail(dev, res, "renderer: reading the shadow atlas: %s", msg);
+}

@@ -38,6 +38,11 @@ typedef struct tl__shadow_view {
     uint32_t x, y, size;       /* its tile in texels */
     uint64_t signature;        /* matrix, tile and the casters in it: equal to the kept one, not rendered */
     int render;                /* rendered this frame */
+    /* what tl_renderer_get_shadow_views reports */
+    uint32_t light, index;     /* scene light; cascade, cube face or 0 */
+    float near_z, far_z;       /* depth range along the light */
+    float split;               /* cascades: the view depth where it ends */
+    int perspective;
 } tl__shadow_view;
 
 typedef struct tl__shadows {
@@ -82,5 +87,10 @@ uint64_t tl__shadow_casters(const tl__scene_gpu *g, const tl__mat4 *world_clip,
  * rendered into it, the lookup block uploaded and bound with the atlas for the lighting passes. */
 void tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g, uint64_t frame, tl_frame_stats *st);
 void tl__shadows_release(tl__device *dev, tl__shadows *s);
+/* The debug reads (tl_renderer_get_shadow_views, tl_renderer_read_shadow_atlas): the last frame's
+ * views, and the atlas's depth as floats (rows bottom to top). */
+tl_result tl__shadows_views(const tl__shadows *s, const tl_light *lights, size_t light_count, tl_shadow_view_info *out,
+                            size_t *count);
+tl_result tl__shadows_read_atlas(tl__device *dev, const tl__shadows *s, float *depth, size_t *size);
 
 #endif

@@ -12,25 +12,26 @@ enum { VW_W = 320, VW_H = 180, GRID_W = 640, GRID_H = 360 };
 
 static const char *const modes[4] = {"thin-lpp", "thin-deferred", "fat", "forward"};
 /* The views in the viewer's order (--view names; the grid puts them row by row, 5 across). */
-enum { NV = 21, NV_NO_EFFECTS = 14 }; /* views; those that need no effect come first */
+enum { NV = 24, NV_NO_EFFECTS = 14 }; /* views; those that need no effect come first */
 static const char *const views[NV] = {"final", "normals", "gloss", "luma", "chroma", "albedo", "depth",
                                       "position", "light-diffuse", "light-specular", "tile-lights", "hdr",
                                       "before-fxaa", "diff-fat", "ao-raw", "ao", "dof-coc", "ssr", "bloom",
-                                      "msaa-edges", "material-model"};
+                                      "msaa-edges", "material-model", "shadow-atlas", "shadow-cascades",
+                                      "shadow-only"};
 /* Which views each mode has (the G-buffer it writes) with every effect off: 1 = available
- * (the effects' views: test_viewer_effects.c). */
+ * (the effects' views: test_viewer_effects.c; the shadow views need --shadows: test_viewer_shadows.c). */
 static const int has_view[4][NV] = {
     /* thin-lpp: RT0, light buffer; no RT1 */
-    {1, 1, 1, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1},
+    {1, 1, 1, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
     /* thin-deferred: RT0, RT1; no light buffer */
-    {1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1},
+    {1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
     /* fat: its normal, albedo and position targets */
-    {1, 1, 1, 0, 0, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1},
+    {1, 1, 1, 0, 0, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
     /* forward: depth only (Forward+ has the tile lists) */
-    {1, 0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1},
+    {1, 0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
 };
 /* Views that draw a scale legend into their pixels (bottom left; not in the grid's thumbnails). */
-static const int has_legend[NV] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0};
+static const int has_legend[NV] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 1, 1, 1};
 
 /* An unmoved camera: the scene's, exactly as thinlight-render draws it, in every mode. */
 TL_TEST(viewer_final_view_equals_thinlight_render_each_mode)
