@@ -175,45 +175,6 @@ static int bench__shadow_config(bench_run *run, tl_context *ctx, const tl_scene 
 
 /* ---- the shadow term against the truth ------------------------------------------------------- */
 
-static float *bench__hdr_sum(tl_renderer *r, size_t n)
-{
-    size_t size = n * 4 * sizeof(float);
-    float *p = malloc(size);
-    if (!p || tl_renderer_read_target(r, TL_TARGET_HDR, p, &size) != TL_OK) {
-        free(p);
-        return NULL;
-    }
-    for (size_t i = 0; i < n; i++) p[i] = p[4 * i] + p[4 * i + 1] + p[4 * i + 2];
-    return p;
-}
-
-/* The light alone casting over the light alone not casting, per pixel; -1 where it adds less than
- * 2^-12 (the FP16 targets hold 11 bits) or 10^-6 of its peak. */
-static float *bench__shadow_term(tl_renderer *r, const tl_light *light, size_t n)
-{
-    tl_light l = *light;
-    float *on = NULL, *off = NULL;
-    l.shadow = 1;
-    if (tl_renderer_set_lights(r, &l, 1) == TL_OK && tl_renderer_render(r, NULL, NULL) == TL_OK &&
-        tl_renderer_wait(r, NULL) == TL_OK)
-        on = bench__hdr_sum(r, n);
-    l.shadow = 0;
-    if (on && tl_renderer_set_lights(r, &l, 1) == TL_OK && tl_renderer_render(r, NULL, NULL) == TL_OK &&
-        tl_renderer_wait(r, NULL) == TL_OK)
-        off = bench__hdr_sum(r, n);
-    if (!on || !off) {
-        free(on);
-        free(off);
-        return NULL;
-    }
-    float peak = 0.0f;
-    for (size_t i = 0; i < n; i++) peak = fmaxf(peak, off[i]);
-    float floor = fmaxf(1e-6f * peak, 2.44e-4f);
-    for (size_t i = 0; i < n; i++) on[i] = off[i] > floor ? fminf(on[i] / off[i], 1.0f) : -1.0f;
-    free(off);
-    return on;
-}
-
 /* What the truth's measurement holds: the scene without emission, its renderer, the truth of the
  * light measured, and fat's terms of that light per strategy and depth (fat comes first in each
  * strategy's records). */
@@ -274,7 +235,7 @@ static int bench__truth_record(bench_run *run, bench__shadow_truth_state *t, con
         o.ambient[0] = o.ambient[1] = o.ambient[2] = -1.0f;
         o.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR);
         float *term = NULL;
-        if (tl_renderer_set_options(t->r, &o) == TL_OK) term = bench__shadow_term(t->r, light, n);
+        if (tl_renderer_set_options(t->r, &o) == TL_OK) term = bench_shadow_term(t->r, light, n);
         if (!term) {
             tl_tool_fail(BENCH_TOOL, "shadows, %s: the shadow term: %s", bench_config_name(rec->config),
                          tl_renderer_last_error(t->r));

@@ -55,6 +55,13 @@ void bench_shadow_truth_compare(const bench_shadow_truth *t, const float *term, 
                                 bench_shadow_error *out);
 #define BENCH_SHADOW_TRUTH_LIGHTS 16 /* the casting point lights measured, one at a time, at most */
 
+/* bench_shadows_term.c: the shadow term of `light` alone in r (whose scene and options the caller
+ * set: ambient off, no emission, the HDR target kept), n pixels: the HDR sum of RGB with the light
+ * casting over it not casting, 1 at most, -1 where the light adds less than 2^-12 (the FP16
+ * targets hold 11 bits) or 10^-6 of its peak; malloc'd, rows bottom up; NULL when a call failed
+ * (tl_renderer_last_error says why). Leaves r with `light` not casting. */
+float *bench_shadow_term(tl_renderer *r, const tl_light *light, size_t n);
+
 /* bench_shadows_report.c */
 void bench_shadows_print_table(const bench_run *run);
 void bench_shadows_json(tl_tool_json *j, const bench_run *run);
