@@ -1,6 +1,7 @@
-/* The shadows' plot (--shadows with --out, gnuplot): per configuration, the shadow term's
- * wrong-state fraction against the truth (reversed D32F, and D24 hollow) against the frame time with
- * shadows, cached (filled) and without the cache; the frame without shadows is a vertical mark. */
+/* The shadows' plot (--shadows with --out, gnuplot): per configuration (a colour each), the shadow
+ * terms' wrong-state fraction against the truth (reversed D32F filled, D24 hollow) against the
+ * frame time with shadows and the cache, the same without the cache (squares), and the frame
+ * without shadows (a cross at 0). */
 #include <math.h>
 #include <stdio.h>
 
@@ -10,16 +11,23 @@
 static int bench__data(FILE *f, const void *ctx)
 {
     const bench_run *run = ((const tl_tool_plot *)ctx)->user;
-    fputs("# one row per configuration: frame_ms frame_ms_no_cache frame_ms_off wrong_d24_% wrong_d32f_% \"mode\"\n", f);
+    fputs("# one block per configuration: frame_ms frame_ms_no_cache frame_ms_off wrong_d24_% wrong_d32f_%\n", f);
     for (size_t i = 0; i < run->shadow_count; i++) {
         const bench_shadow_record *r = &run->shadows[i];
         /* without a truth the points sit at 0 (the title says so) */
         double w24 = isfinite(r->truth[0].wrong) ? 100.0 * r->truth[0].wrong : 0.0;
         double w32 = isfinite(r->truth[1].wrong) ? 100.0 * r->truth[1].wrong : 0.0;
-        fprintf(f, "%.6g %.6g %.6g %.6g %.6g \"%s\"\n", r->frame_ms, r->frame_ms_nocache, r->frame_ms_off, w24, w32,
-                bench_config_name(r->config));
+        fprintf(f, "%s%.6g %.6g %.6g %.6g %.6g\n", i ? "\n\n" : "", r->frame_ms, r->frame_ms_nocache, r->frame_ms_off,
+                w24, w32);
     }
     return 0;
+}
+
+static const char *bench__colour(size_t i)
+{
+    static const char *const colours[] = {"#d7191c", "#1a9850", "#2166ac", "#7b3294",
+                                          "#fdae61", "#66bd63", "#67a9cf", "#c2a5cf"};
+    return colours[i % (sizeof colours / sizeof colours[0])];
 }
 
 static int bench__script(FILE *f, const void *ctx)
@@ -34,20 +42,24 @@ static int bench__script(FILE *f, const void *ctx)
             "} else {\n"
             "  set terminal png size 900,560 noenhanced\n"
             "}\n%s\nset grid\n"
-            "set title \"thinlight-bench: shadows, wrong-state pixels against the ray-traced truth vs frame time "
-            "(%s, %ux%u, %u lights)%s\"\n"
-            "set logscale x\nset xlabel 'ms per frame, median (shadows on)'\n"
+            "set title \"--shadows: wrong-state pixels against the ray-traced truth vs frame time (%s, %ux%u, "
+            "%u lights)%s\\nfilled: cached, reversed D32F; hollow: cached, D24; square: no cache, reversed D32F; "
+            "cross: no shadows (at 0)\"\n"
+            "set logscale x\nset xlabel 'ms per frame, median'\n"
             "set ylabel 'wrong lit/shadowed state, %% of counted pixels'\n"
-            "set key top left box opaque font ',9'\nset offsets graph 0.05, graph 0.2, graph 0.1, graph 0.05\n"
-            "set yrange [0:*]\n"
-            "plot '%s.dat' using 1:5 with points pt 7 ps 1.4 lc rgb '#1a9850' title 'cached, reversed D32F', \\\n"
-            "     '' using 1:5:6 with labels offset 0.8,0.8 font ',8' notitle, \\\n"
-            "     '' using 1:4 with points pt 6 ps 1.4 lc rgb '#1a9850' title 'cached, D24', \\\n"
-            "     '' using 2:5 with points pt 5 ps 1.2 lc rgb '#d7191c' title 'no cache, reversed D32F', \\\n"
-            "     '' using 3:(0) with points pt 2 ps 1.2 lc rgb '#4d4d4d' title 'no shadows (at 0)'\n"
-            "set output\n",
+            "set key outside right top box opaque font ',9'\nset offsets graph 0.05, graph 0.05, graph 0.1, graph 0.05\n"
+            "set yrange [0:*]\nplot ",
             p->set_output, run->scene_name, r0->width, r0->height, r0->lights,
-            run->shadow_truth_why[0] ? " - no truth in this run, errors at 0" : "", p->name);
+            run->shadow_truth_why[0] ? " - no truth in this run, errors at 0" : "");
+    for (size_t i = 0; i < run->shadow_count; i++) {
+        const char *c = bench__colour(i);
+        fprintf(f, "%s'%s.dat' index %zu using 1:5 with points pt 7 ps 1.4 lc rgb '%s' title '%s', \\\n"
+                   "     '' index %zu using 1:4 with points pt 6 ps 1.4 lc rgb '%s' notitle, \\\n"
+                   "     '' index %zu using 2:5 with points pt 5 ps 1.2 lc rgb '%s' notitle, \\\n"
+                   "     '' index %zu using 3:(0) with points pt 2 ps 1.2 lc rgb '%s' notitle",
+                i ? ", \\\n     " : "", p->name, i, c, bench_config_name(run->shadows[i].config), i, c, i, c, i, c);
+    }
+    fputs("\nset output\n", f);
     return 0;
 }
 
