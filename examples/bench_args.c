@@ -84,8 +84,9 @@ static const char usage_middle[] =
     "                   every configuration with the crypt's lights without shadows, with its moonlight\n"
     "                   and braziers casting (cached) and casting without the cache, frames taking\n"
     "                   turns; the shadow maps' and the lookup's time, atlas bytes, maps rendered and\n"
-    "                   kept, and the shadow term of the nearest brazier against the ray-traced truth\n"
-    "                   (D24 and reversed D32F; a bench built with Embree 3, else no truth): a table,\n"
+    "                   kept, and the shadow terms of the casting braziers (one at a time) against the\n"
+    "                   ray-traced truth (D24 and reversed D32F; a bench built with Embree 3, else no\n"
+    "                   truth): a table,\n"
     "                   the JSON (\"shadows\") and a plot. The built-in crypt only\n"
     "  --shadows-doc FILE replace the text between " BENCH_SHADOWS_DOC_BEGIN " and\n"
     "                   " BENCH_SHADOWS_DOC_END " in FILE with the shadows' table, copy the plot to img/\n";
