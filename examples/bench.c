@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "bench.h"
+#include "bench_shadows.h"
 #include "tool_util.h"
 
 /* Everything that can fail for bad input is checked before the sweep; nothing is created unless
@@ -26,7 +27,8 @@ static int bench__check_doc(const char *path, const char *begin, const char *end
     return tl_tool_doc_split(BENCH_TOOL, path, *text, begin, end, &head, &tail);
 }
 
-static int bench__check_outputs(bench_options *o, char **doc_text, char **effects_text, char **aa_text)
+static int bench__check_outputs(bench_options *o, char **doc_text, char **effects_text, char **aa_text,
+                                char **shadows_text)
 {
     int e;
     if (o->out && !tl_tool_have_io()) {
@@ -49,6 +51,9 @@ static int bench__check_outputs(bench_options *o, char **doc_text, char **effect
     char aa_begin[128], aa_end[128];
     bench_aa_doc_markers(o, aa_begin, aa_end, sizeof aa_begin);
     if (o->aa_doc && bench__check_doc(o->aa_doc, aa_begin, aa_end, aa_text)) return 1;
+    if (o->shadows_doc &&
+        bench__check_doc(o->shadows_doc, BENCH_SHADOWS_DOC_BEGIN, BENCH_SHADOWS_DOC_END, shadows_text))
+        return 1;
     if (o->out && !o->no_plot && !tl_tool_have_gnuplot()) {
         fprintf(stderr, BENCH_TOOL ": warning: gnuplot not found on PATH, no plots (install gnuplot-nox)\n");
         o->no_plot = 1;
@@ -103,25 +108,27 @@ int main(int argc, char **argv)
         return rc < 0 ? 0 : rc;
     }
     bench_options *opt = &run->opt;
-    char *doc_text = NULL, *effects_text = NULL, *aa_text = NULL;
+    char *doc_text = NULL, *effects_text = NULL, *aa_text = NULL, *shadows_text = NULL;
     bench_scene *scene = NULL;
     rc = BENCH_EXIT_BAD_INPUT;
     if (tl_tool_environment_read(BENCH_TOOL, &opt->env) || bench_scene_open(opt, &scene, run) ||
-        bench__check_outputs(opt, &doc_text, &effects_text, &aa_text) ||
+        bench__check_outputs(opt, &doc_text, &effects_text, &aa_text, &shadows_text) ||
         bench_aa_check_budget(run, scene))
         goto done;
     bench__fresnel_variant(opt, scene);
     tl_tool_machine(run->cpu, sizeof run->cpu, &run->cores);
     /* the plans first: the sweep times each planned mode against its no_planning renderer */
     if (bench_planning_compare(run, scene) || bench_sweep(run, scene)) goto done;
-    int plot_failed = opt->out && !opt->no_plot && (bench_plots(run) || bench_aa_plot(run));
+    int plot_failed = opt->out && !opt->no_plot && (bench_plots(run) || bench_aa_plot(run) || bench_shadows_plot(run));
     bench_print_table(run);
     bench_effects_print_table(run);
     bench_aa_print_table(run);
+    bench_shadows_print_table(run);
     if (opt->json && bench_write_json(run, opt->json)) goto done;
     if (opt->doc && bench_update_doc(run, doc_text)) goto done;
     if (opt->effects_doc && bench_effects_update_doc(run, effects_text)) goto done;
     if (opt->aa_doc && bench_aa_update_doc(run, aa_text)) goto done;
+    if (opt->shadows_doc && bench_shadows_update_doc(run, shadows_text)) goto done;
     rc = plot_failed ? BENCH_EXIT_BAD_INPUT : 0;
 done:
     tl_tool_environment_free(&opt->env);
@@ -129,6 +136,8 @@ done:
     free(doc_text);
     free(effects_text);
     free(aa_text);
+    free(shadows_text);
+    free(run->shadows);
     free(run->effects);
     bench_aa_free(run);
     for (size_t i = 0; i < run->record_count; i++) free(run->records[i].frame_ms);

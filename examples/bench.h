@@ -166,6 +166,8 @@ typedef struct bench_options {
     const char *aa_doc;              /* --aa-doc: the AA table between its markers */
     const char *aa_section;          /* --aa-doc-section: the markers' and images' name; NULL: the default pair */
     tl_tiled_shading tiled_shading;  /* --tiled-shading: the tiled strategy's light pass (default fragment) */
+    int shadows;                     /* --shadows: 1 when "on" was given (measured against "off") */
+    const char *shadows_doc;         /* --shadows-doc: the shadows' table between its markers */
 } bench_options;
 
 /* bench_args.c: the command line into `o`: 0; -1 after --help or --list-options (printed); or 2
@@ -330,6 +332,11 @@ typedef struct bench_run {
     bench_aa_image *aa_images;     /* the images of the AA doc (--out) */
     size_t aa_image_count;
     int aa_plot_made;
+    struct bench_shadow_record *shadows; /* --shadows: per configuration (bench_shadows.h) */
+    size_t shadow_count;
+    char shadow_truth_why[160];    /* why the shadows have no truth ("": they have) */
+    char shadow_truth_light[64];   /* which light the truth is of */
+    int shadow_plot_made;
     /* renderers made once and given each configuration's options and size in turn (bench_renderer) */
     tl_renderer *renderers[BENCH_CONFIGS + 1];
 } bench_run;
@@ -346,6 +353,9 @@ int bench_scene_open(const bench_options *opt, bench_scene **out, bench_run *run
 const tl_scene *bench_scene_get(const bench_scene *s);
 /* The lights of a frame with `n` local lights; the array is owned by the scene until the next call. */
 int bench_scene_lights(bench_scene *s, uint32_t n, const tl_light **lights, size_t *count);
+/* The same with the crypt's moonlight and braziers casting when `shadows` (a glTF file's lights
+ * never cast: --shadows is refused for a file). */
+int bench_scene_casting_lights(bench_scene *s, uint32_t n, int shadows, const tl_light **lights, size_t *count);
 void bench_scene_close(bench_scene *s);
 /* What one renderer's copy of the scene takes, estimated: its textures with their mip chains, its
  * vertices and indices. */

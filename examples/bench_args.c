@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "bench.h"
+#include "bench_shadows.h"
 #include "tool_budget.h"
 #include "tool_effects.h"
 
@@ -15,7 +16,7 @@ static const char usage_head[] =
     "                       [--doc FILE.md] [--seed S] [--lighting M] [--fresnel F] [--no-plot]\n"
     "                       [--effects E,...] [--effects-doc FILE.md] [effect options]\n"
     "                       [--aa M,...] [--aa-doc FILE.md] [--aa-doc-section NAME]\n"
-    "                       [--tiled-shading fragment|compute]\n"
+    "                       [--tiled-shading fragment|compute] [--shadows off,on] [--shadows-doc FILE.md]\n"
     "                       [--context C] [--device N] [memory budgets]\n"
     "                       [--list-devices] [--list-options] [--help]\n"
     "\n"
@@ -82,7 +83,17 @@ static const char usage_middle[] =
     "  --aa-doc FILE    replace the text between " BENCH_AA_DOC_BEGIN " and " BENCH_AA_DOC_END "\n"
     "                   in FILE with the AA table, and copy the plot and crops to img/ beside it\n"
     "  --aa-doc-section NAME the section between <!-- bench-aa:NAME:begin --> and <!-- bench-aa:NAME:end -->\n"
-    "                   instead, its plot and crops named bench_aa_NAME_* (letters, digits, '-')\n";
+    "                   instead, its plot and crops named bench_aa_NAME_* (letters, digits, '-')\n"
+    "  --shadows LIST   off, on (default: not measured): with on, at the first size and light count,\n"
+    "                   every configuration with the crypt's lights without shadows, with its moonlight\n"
+    "                   and braziers casting (cached) and casting without the cache, frames taking\n"
+    "                   turns; the shadow maps' and the lookup's time, atlas bytes, maps rendered and\n"
+    "                   kept, and the shadow terms of the casting braziers (one at a time) against the\n"
+    "                   ray-traced truth (D24 and reversed D32F; a bench built with Embree 3, else no\n"
+    "                   truth): a table,\n"
+    "                   the JSON (\"shadows\") and a plot. The built-in crypt only\n"
+    "  --shadows-doc FILE replace the text between " BENCH_SHADOWS_DOC_BEGIN " and\n"
+    "                   " BENCH_SHADOWS_DOC_END " in FILE with the shadows' table, copy the plot to img/\n";
 static const char usage_tail[] =
     "  --list-options   list every option and the values it takes, then exit\n"
     "  --help           this text\n"
@@ -103,12 +114,13 @@ static const char usage_tail[] =
 enum {
     B_HELP, B_LIST, B_QUICK, B_NO_PLOT, B_SCENE, B_SIZE, B_LIGHTS, B_MODES, B_STRATEGIES, B_FORMATS, B_SCALES, B_FRAMES,
     B_WARMUP, B_SEED, B_LIGHTING, B_FRESNEL, B_JSON, B_OUT, B_DOC, B_EFFECTS, B_EFFECTS_DOC, B_AA, B_AA_DOC,
-    B_AA_SECTION, B_TILED_SHADING
+    B_AA_SECTION, B_TILED_SHADING, B_SHADOWS, B_SHADOWS_DOC
 };
 
 static const char *const bench__format_names[] = {"rgba16f", "r11g11b10f", NULL};
 static const char *const bench__scale_names[] = {"1", "0.5", "0.25", NULL};
 static const char *const bench__shading_names[] = {"fragment", "compute", NULL};
+static const char *const bench__shadow_names[] = {"off", "on", NULL};
 
 static const tl_opt bench__opts[] = {
     {"--help", TL_OPT_FLAG, .id = B_HELP},
@@ -137,6 +149,8 @@ static const tl_opt bench__opts[] = {
     {"--aa-doc", TL_OPT_TEXT, .id = B_AA_DOC},
     {"--aa-doc-section", TL_OPT_TEXT, .id = B_AA_SECTION},
     {"--tiled-shading", TL_OPT_TEXT, .id = B_TILED_SHADING, .choices = bench__shading_names},
+    {"--shadows", TL_OPT_TEXT_LIST, .id = B_SHADOWS, .items = 2, .choices = bench__shadow_names},
+    {"--shadows-doc", TL_OPT_TEXT, .id = B_SHADOWS_DOC},
 };
 
 static const uint32_t bench__default_lights[] = {8, 16, 32, 64, 128, 256, 512, 1024};
@@ -257,6 +271,11 @@ static int bench__option(bench_options *o, bench__given *g, const tl_opt_table *
         o->aa_section = v->text;
         break;
     case B_TILED_SHADING: o->tiled_shading = v->u[0] ? TL_TILED_SHADING_COMPUTE : TL_TILED_SHADING_FRAGMENT; break;
+    case B_SHADOWS:
+        o->shadows = 0;
+        for (size_t i = 0; i < v->count; i++) o->shadows |= v->u[i] == 1;
+        break;
+    case B_SHADOWS_DOC: o->shadows_doc = v->text; break;
     default: break;
     }
     return 0;
@@ -318,6 +337,9 @@ int bench_parse_args(int argc, char **argv, bench_options *o)
     }
     if (rc || o->context_args.list_devices) return rc;
     bench__defaults(o, &given);
+    if (o->shadows && strcmp(o->scene, "default") != 0)
+        return tl_opt_usage(BENCH_TOOL, "--shadows measures the built-in crypt's casting lights: not with --scene %s",
+                            o->scene);
     if (o->doc && !o->out && !o->no_plot)
         return tl_opt_usage(BENCH_TOOL, "--doc %s needs --out DIR for the plots (or --no-plot)", o->doc);
     return tl_tool_context_parse(BENCH_TOOL, &o->context_args, &o->context);

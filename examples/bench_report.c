@@ -8,6 +8,7 @@
 #include <string.h>
 
 #include "bench.h"
+#include "bench_shadows.h"
 #include "thinlight/version.h"
 #include "tool_util.h"
 
@@ -647,6 +648,7 @@ static int bench__write_json(FILE *f, const void *ctx)
     tl_tool_json_close(&j, ']');
     bench_effects_json(&j, run);
     bench_aa_json(&j, run);
+    if (run->shadow_count) bench_shadows_json(&j, run);
     tl_tool_json_array(&j, "images", 0);
     for (size_t i = 0; i < run->image_count; i++) {
         const bench_image_file *im = &run->images[i];

@@ -106,15 +106,16 @@ int bench_scene_open(const bench_options *opt, bench_scene **out, bench_run *run
 
 const tl_scene *bench_scene_get(const bench_scene *s) { return s->scene; }
 
-/* The crypt generator's own lights for n: n/8 spots, the rest points, one directional. */
-static int bench__crypt_lights(bench_scene *s, uint32_t n)
+/* The crypt generator's own lights for n: n/8 spots, the rest points, one directional; with
+ * `shadows` the moonlight and the braziers cast (the layout is the same). */
+static int bench__crypt_lights(bench_scene *s, uint32_t n, int shadows)
 {
     uint32_t spots = n / 8, points = n - spots;
     tl_scene *lit = NULL;
     /* Lights do not depend on the tessellation level (default_scene.c), so the cheapest one does. */
     tl_result res = tl_scene_create_default(&(tl_default_scene_desc){.point_lights = points ? points : 1,
                                                                      .spot_lights = spots, .seed = s->seed,
-                                                                     .detail = 1}, &lit);
+                                                                     .detail = 1, .shadows = shadows}, &lit);
     if (res != TL_OK) {
         tl_tool_fail(BENCH_TOOL, "building %u lights: %s", n, tl_result_string(res));
         return 1;
@@ -160,7 +161,12 @@ static int bench__file_lights(bench_scene *s, uint32_t n)
 
 int bench_scene_lights(bench_scene *s, uint32_t n, const tl_light **lights, size_t *count)
 {
-    int err = s->builtin ? bench__crypt_lights(s, n) : bench__file_lights(s, n);
+    return bench_scene_casting_lights(s, n, 0, lights, count);
+}
+
+int bench_scene_casting_lights(bench_scene *s, uint32_t n, int shadows, const tl_light **lights, size_t *count)
+{
+    int err = s->builtin ? bench__crypt_lights(s, n, shadows) : bench__file_lights(s, n);
     *lights = s->lights;
     *count = s->light_count;
     return err;

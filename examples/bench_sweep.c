@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include "bench.h"
+#include "bench_shadows.h"
 #include "thinlight/context.h"
 #include "tool_log.h"
 #include "tool_util.h"
@@ -730,7 +731,7 @@ int bench_sweep(bench_run *run, bench_scene *scene)
     uint64_t total = (uint64_t)opt->size_count * opt->light_count * bench_render_modes(opt, modes) *
                      (opt->warmup + opt->frames) +
                      (uint64_t)run->planning_count * 2 * (opt->warmup + opt->frames) + bench_effects_frames(opt) +
-                     bench_aa_frames(run, scene);
+                     bench_aa_frames(run, scene) + bench_shadows_frames(opt);
     tl_tool_progress progress;
     tl_tool_progress_begin(&progress, total);
     run->timers_ok = 1;
@@ -743,6 +744,7 @@ int bench_sweep(bench_run *run, bench_scene *scene)
     if (!err) err = bench__planning_times(run, ctx, scene, &progress, &done);
     if (!err) err = bench_effects_measure(run, ctx, scene, &progress, &done);
     if (!err) err = bench_aa_measure(run, ctx, scene, &progress, &done);
+    if (!err) err = bench_shadows_measure(run, ctx, scene, &progress, &done);
     run->seconds = (tl_tool_now_ms() - t0) * 1e-3;
     run->load_end = tl_tool_load_average();
     tl_tool_progress_end(&progress);

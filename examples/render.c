@@ -175,7 +175,7 @@ static void print_stats(tl_renderer *r, const tl_frame_stats *st, const tl_scene
                (unsigned long long)st->relit_pixels, 100.0 * st->relit_fraction);
     if (st->shadow_atlas_bytes)
         printf("  shadows: %u lights with a map (%u fading), %u maps rendered, %u kept, atlas %.1f MiB, "
-               "shadow maps %.2f ms GPU (not in the frame's sum)\n", st->shadow_lights, st->shadow_lights_fading,
+               "shadow maps %.2f ms GPU (part of the frame's)\n", st->shadow_lights, st->shadow_lights_fading,
                st->shadow_maps_rendered, st->shadow_maps_cached, (double)st->shadow_atlas_bytes / 1048576.0,
                st->shadow_ms);
 }

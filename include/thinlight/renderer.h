@@ -620,7 +620,7 @@ typedef struct tl_frame_stats {
     uint64_t pass_fragments[TL_PASS_COUNT]; /**< fragments that passed the depth test (samples-passed query) */
     double pass_bytes[TL_PASS_COUNT];   /**< estimate of bytes moved per pass (docs/bandwidth.md) */
     double bytes_moved;                 /**< sum of pass_bytes */
-    double gpu_ms;                      /**< sum of pass_ms */
+    double gpu_ms;                      /**< sum of pass_ms, plus shadow_ms when shadow maps were rendered */
     double cpu_ms;                      /**< CPU time of the calling thread in the render call, issuing commands
                                              (thread CPU clock, before any wait for statistics; on llvmpipe it
                                              includes Mesa's vertex processing and binning, which run there) */
@@ -650,7 +650,8 @@ typedef struct tl_frame_stats {
     uint32_t shadow_maps_rendered;      /**< atlas views (cascades, cube faces, spot maps) rendered this frame */
     uint32_t shadow_maps_cached;        /**< atlas views kept from an earlier frame (nothing in range changed) */
     size_t shadow_atlas_bytes;          /**< the shadow atlas's memory (0 without casting lights) */
-    double shadow_ms;                   /**< GPU time of the shadow-map rendering (timer query); -1: unavailable */
+    double shadow_ms;                   /**< GPU time of this frame's shadow-map rendering (timestamp queries of
+                                             the frame; part of gpu_ms); 0 when no map was rendered; -1: unavailable */
     uint64_t msaa_edge_pixels;          /**< MSAA per-sample edges: pixels lit per sample (msaa-classify's count) */
     double msaa_edge_fraction;          /**< msaa_edge_pixels over the frame's pixels */
 } tl_frame_stats;

@@ -227,7 +227,13 @@ static tl_result tl__issue(tl_renderer *r, const tl__view *v, const tl_render_ou
     if (res == TL_OK) res = tl__upload(r, v, rec);
     if (res != TL_OK) return res;
     tl__state_enter(gl, &dev->state, TL__TEXTURE_UNITS_USED);
-    if (r->graph.plan.pub.shadow_lights) tl__shadows_render(dev, &r->shadows, &r->scene, r->frame_index, &rec->st);
+    if (r->graph.plan.pub.shadow_lights) {
+        int timed = slot && r->queries.timestamps;
+        if (timed) gl->QueryCounter(slot->shadow_time[0], GL_TIMESTAMP);
+        tl__shadows_render(dev, &r->shadows, &r->scene, r->frame_index, &rec->st);
+        if (timed) gl->QueryCounter(slot->shadow_time[1], GL_TIMESTAMP);
+        if (slot) slot->shadow_timed = timed;
+    }
     tl__environment_bind(gl, &r->env, &r->desc.options.environment);
     for (size_t i = 0; i < r->graph.pass_count; i++) tl__run(r, &r->graph.passes[i], rec, i, out, v, slot);
     tl__state_reset(gl, &dev->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED, TL__IMAGE_UNITS_USED);

@@ -40,8 +40,10 @@ void tl__queries_create(tl__device *dev, tl__queries *r, tl__tiles *tiles, tl__f
     for (int s = 0; s < TL__QUERY_RING; s++) {
         tl__query_slot *q = &r->ring[s];
         if (r->timestamps) gl->CreateQueries(GL_TIMESTAMP, 2 * TL_PLAN_MAX_PASSES, &q->time[0][0]);
+        if (r->timestamps) gl->CreateQueries(GL_TIMESTAMP, 2, q->shadow_time);
         gl->CreateQueries(GL_SAMPLES_PASSED, TL__PASS_MAX_QUERIES * TL_PLAN_MAX_PASSES, &q->samples[0][0]);
         if (r->timestamps) tl__label_queries(gl, &q->time[0][0], 2 * TL_PLAN_MAX_PASSES, "query.pass_time");
+        if (r->timestamps) tl__label_queries(gl, q->shadow_time, 2, "query.shadow_time");
         tl__label_queries(gl, &q->samples[0][0], TL__PASS_MAX_QUERIES * TL_PLAN_MAX_PASSES, "query.pass_samples");
     }
 }
@@ -52,6 +54,7 @@ void tl__queries_destroy(tl__device *dev, tl__queries *r)
     for (int s = 0; s < TL__QUERY_RING; s++) {
         tl__query_slot *q = &r->ring[s];
         if (q->time[0][0]) gl->DeleteQueries(2 * TL_PLAN_MAX_PASSES, &q->time[0][0]);
+        if (q->shadow_time[0]) gl->DeleteQueries(2, q->shadow_time);
         if (q->samples[0][0]) gl->DeleteQueries(TL__PASS_MAX_QUERIES * TL_PLAN_MAX_PASSES, &q->samples[0][0]);
     }
     memset(r->ring, 0, sizeof r->ring);
@@ -118,14 +121,28 @@ static uint64_t tl__pass_queries(const tl__device *dev, const tl__query_slot *q,
     return sum;
 }
 
-static double tl__pass_ms(const tl__device *dev, const tl__queries *r, const tl__query_slot *q, size_t i)
+/* Milliseconds between two timestamp queries. */
+static double tl__span_ms(const tl__device *dev, const tl__queries *r, const GLuint q[2])
 {
-    if (!r->timestamps) return -1.0;
     GLuint64 begin = 0, end = 0;
-    dev->gl.GetQueryObjectui64v(q->time[i][0], GL_QUERY_RESULT, &begin);
-    dev->gl.GetQueryObjectui64v(q->time[i][1], GL_QUERY_RESULT, &end);
+    dev->gl.GetQueryObjectui64v(q[0], GL_QUERY_RESULT, &begin);
+    dev->gl.GetQueryObjectui64v(q[1], GL_QUERY_RESULT, &end);
     GLuint64 mask = r->timestamp_bits >= 64 ? ~(GLuint64)0 : (((GLuint64)1 << r->timestamp_bits) - 1);
     return (double)((end - begin) & mask) * 1e-6;
+}
+
+static double tl__pass_ms(const tl__device *dev, const tl__queries *r, const tl__query_slot *q, size_t i)
+{
+    return r->timestamps ? tl__span_ms(dev, r, q->time[i]) : -1.0;
+}
+
+/* The shadow maps run before the graph: their time is this frame's (from the slot's timestamps,
+ * else the shadow pass's own newest query) and part of gpu_ms, so that a frame with shadows costs
+ * what it costs. */
+static void tl__shadow_read(const tl__device *dev, const tl__queries *r, const tl__query_slot *q, tl_frame_stats *st)
+{
+    if (q->shadow_timed) st->shadow_ms = st->shadow_maps_rendered ? tl__span_ms(dev, r, q->shadow_time) : 0.0;
+    if (st->shadow_ms > 0.0) st->gpu_ms += st->shadow_ms;
 }
 
 /* Reads a pending slot's results into its record (blocking when they are not ready). */
@@ -150,6 +167,7 @@ static void tl__slot_read(tl__device *dev, tl__queries *r, tl__query_slot *q)
         if (ms > 0.0) st->gpu_ms += ms;
         st->bytes_moved += bytes;
     }
+    tl__shadow_read(dev, r, q, st);
     if (p->light_lists) tl__tiles_collect(dev, r->tiles, st);
     if (p->light_fixup) tl__fixup_collect(dev, r->fixup, p->width * p->height, st);
     /* MSAA per-sample edges: msaa-classify writes the edge pixels alone (pass_msaa.c) */
@@ -184,6 +202,7 @@ tl__query_slot *tl__queries_slot(tl__device *dev, tl__queries *r, const tl__grap
     tl__query_slot *q = &r->ring[frame % TL__QUERY_RING];
     if (q->pending) tl__slot_read(dev, r, q); /* a whole ring behind: the oldest frame must be read now */
     tl__slot_take_plan(q, g);
+    q->shadow_timed = 0;
     return q;
 }
 

@@ -30,6 +30,8 @@ typedef struct tl__slot_plan {
 typedef struct tl__query_slot {
     GLuint time[TL_PLAN_MAX_PASSES][2];
     GLuint samples[TL_PLAN_MAX_PASSES][TL__PASS_MAX_QUERIES];
+    GLuint shadow_time[2]; /* timestamps around the shadow maps (before the graph) */
+    int shadow_timed;      /* this frame's shadow maps were bracketed by shadow_time */
     int pending;
     tl__frame_record rec;
     tl__slot_plan plan;

@@ -19,7 +19,8 @@ int tl_shadow_stiff_case(tl_shadow_case *c);
 int tl_shadow_crypt_case(tl_shadow_case *c, uint32_t detail);
 void tl_shadow_case_free(tl_shadow_case *c);
 
-/* The shadow term of `light` (the only light) as the renderer draws it with `o`: the HDR image
+/* shadow_term.c (the tests' context): the shadow term of `light` (the only light) as the renderer
+ * draws it with `o`: the HDR image
  * with the light casting over the image without, per pixel (-1 where the light adds nothing);
  * malloc'd, rows bottom-up, or NULL after a line on stderr. */
 float *tl_shadow_term(const tl_shadow_case *c, const tl_light *light, tl_renderer_options o, uint32_t w, uint32_t h,

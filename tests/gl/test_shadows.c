@@ -2,6 +2,7 @@
  * the fraction of pixels whose lit or shadowed state differs from the truth outside the penumbra
  * (acne and leaks apart), per mode, strategy and depth format, on the stiff scene and the crypt;
  * and what the planner and the cache promise. Figures go to stdout. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -280,6 +281,34 @@ TL_TEST(shadows_cache_keeps_unchanged_maps)
     }
     tl_renderer_destroy(r);
     tl_renderer_destroy(u);
+    tl_shadow_case_free(&c);
+}
+
+/* The shadow maps' GPU time is the frame's: gpu_ms is the passes' sum plus shadow_ms when maps were
+ * rendered (every frame without the cache), and the passes' sum alone when every map was kept. */
+TL_TEST(shadows_gpu_ms_includes_shadow_maps)
+{
+    tl_shadow_case c;
+    TL_CHECK(tl_shadow_stiff_case(&c));
+    tl_renderer *u = tl__stiff_renderer(&c, c.lights, 2, (tl_renderer_options){.shadows = {.no_cache = 1}});
+    tl_renderer *k = tl__stiff_renderer(&c, c.lights, 2, (tl_renderer_options){0});
+    TL_CHECK(u && k);
+    for (int cached = 0; u && k && cached < 2; cached++) {
+        tl_frame_stats st;
+        TL_CHECK(tl_renderer_render(cached ? k : u, NULL, &st) == TL_OK);
+        double passes = 0.0;
+        for (int p = 0; p < TL_PASS_COUNT; p++)
+            if (st.pass_ms[p] > 0.0) passes += st.pass_ms[p];
+        TL_CHECK_EQ_U(st.shadow_maps_rendered, cached ? 0u : 4u + 6u);
+        if (cached) TL_CHECK(st.shadow_ms == 0.0);
+        else TL_CHECK(st.shadow_ms > 0.0);
+        TL_CHECK(st.gpu_valid && passes > 0.0);
+        TL_CHECK_LE(fabs(st.gpu_ms - (passes + (cached ? 0.0 : st.shadow_ms))), 1e-9 * st.gpu_ms);
+        printf("shadow-gpu-ms %s gpu=%.3f passes=%.3f shadow=%.3f\n", cached ? "cached" : "no-cache", st.gpu_ms, passes,
+               st.shadow_ms);
+    }
+    tl_renderer_destroy(u);
+    tl_renderer_destroy(k);
     tl_shadow_case_free(&c);
 }
 

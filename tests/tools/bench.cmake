@@ -498,6 +498,81 @@ function(check_effects_quick)
   endif()
 endfunction()
 
+# --shadows (docs/shadows.md, "Bench"): a tiny run with 64 lights (braziers in view) measures
+# thin-lpp and fat with the crypt's lights off, casting with the cache and without it: the JSON has a
+# record per configuration whose times are finite numbers, whose maps are rendered without the cache
+# and kept with it, whose frame time includes the maps' (no-cache frame >= its maps' time), and,
+# where the bench has Embree (-DEMBREE=1), the truth's counted pixels and wrong-state fractions
+# (else null with a reason); the table and --shadows-doc carry them. Bad values: one line, exit 2,
+# no output; a doc without markers: exit 1, the doc unchanged.
+function(check_shadows_dimension)
+  file(WRITE "${WORK}/shadows.md" "# s\n<!-- bench-shadows:begin -->\nold\n<!-- bench-shadows:end -->\nend\n")
+  run_tool(--shadows off,on --size 128x72 --lights 64 --modes thin-lpp,fat --strategies tiled --light-formats rgba16f
+           --light-scales 1 --frames 1 --warmup 1 --no-plot --json "${WORK}/s.json" --shadows-doc "${WORK}/shadows.md")
+  expect_exit(0 "tiny shadows run")
+  foreach(word "shadows at 128x72, 64 lights" "D32F wrong" "thin-lpp/tiled")
+    string(FIND "${out}" "${word}" at)
+    if(at LESS 0)
+      message(FATAL_ERROR "the output lacks '${word}':\n${out}")
+    endif()
+  endforeach()
+  file(READ "${WORK}/s.json" json)
+  string(JSON n LENGTH "${json}" shadows records)
+  if(NOT n EQUAL 2)
+    message(FATAL_ERROR "${n} shadow records, expected 2 (fat/tiled, thin-lpp/tiled)")
+  endif()
+  foreach(i RANGE 1)
+    foreach(key frame_ms frame_ms_off frame_ms_no_cache frame_ratio shadow_ms shadow_ms_no_cache light_ms light_ms_off
+                lookup_ms atlas_bytes shadow_lights maps_rendered maps_cached maps_rendered_no_cache casting_lights)
+      json_get(NUMBER "shadow record ${i}" shadows records ${i} ${key})
+      set(${key} "${value}")
+    endforeach()
+    if(NOT atlas_bytes GREATER 0 OR NOT casting_lights GREATER 1 OR NOT maps_rendered_no_cache GREATER 0
+       OR NOT maps_cached GREATER 0 OR NOT maps_rendered EQUAL 0 OR NOT shadow_ms_no_cache GREATER 0
+       OR frame_ms_no_cache LESS shadow_ms_no_cache)
+      message(FATAL_ERROR "shadow record ${i}: atlas ${atlas_bytes} B, ${casting_lights} casting, maps "
+                          "${maps_rendered}/${maps_cached} (no cache ${maps_rendered_no_cache}), maps "
+                          "${shadow_ms_no_cache} ms in a ${frame_ms_no_cache} ms frame")
+    endif()
+    foreach(depth D24 D32F-rev)
+      if(EMBREE)
+        json_get(NUMBER "truth ${i} ${depth}" shadows records ${i} truth ${depth} counted)
+        if(NOT value GREATER 0)
+          message(FATAL_ERROR "truth ${i} ${depth}: ${value} pixels counted")
+        endif()
+        json_get(NUMBER "truth ${i} ${depth}" shadows records ${i} truth ${depth} wrong)
+        json_get(NUMBER "truth ${i} ${depth}" shadows records ${i} truth ${depth} acne)
+        json_get(NUMBER "truth ${i} ${depth}" shadows records ${i} truth ${depth} leaks)
+      else()
+        json_get(NULL "truth ${i} ${depth}" shadows records ${i} truth ${depth} wrong)
+        json_get(STRING "no truth" shadows no_truth_reason)
+      endif()
+    endforeach()
+  endforeach()
+  if(EMBREE)
+    json_get(NUMBER "thin-lpp vs fat" shadows records 1 truth D32F-rev vs_fat)
+  endif()
+  file(READ "${WORK}/shadows.md" doc)
+  if(NOT doc MATCHES "\\| thin-lpp/tiled \\|" OR doc MATCHES "old" OR NOT doc MATCHES "end\n$")
+    message(FATAL_ERROR "--shadows-doc did not replace the section:\n${doc}")
+  endif()
+  file(REMOVE "${WORK}/s.json")
+  foreach(bad "maybe" "on,,off" "")
+    run_tool(--shadows "${bad}" --size 64x36 --lights 8 --json "${WORK}/bad.json")
+    expect_exit(2 "--shadows '${bad}'")
+  endforeach()
+  run_tool(--shadows on --scene "${WORK}/none.gltf" --json "${WORK}/bad.json")
+  expect_exit(2 "--shadows with a glTF scene")
+  file(WRITE "${WORK}/plain.md" "# no markers\n")
+  run_tool(--shadows on --size 64x36 --lights 8 --no-plot --shadows-doc "${WORK}/plain.md" --json "${WORK}/bad.json")
+  expect_exit(1 "--shadows-doc without markers")
+  file(READ "${WORK}/plain.md" plain)
+  if(NOT plain STREQUAL "# no markers\n")
+    message(FATAL_ERROR "--shadows-doc without markers changed the file")
+  endif()
+  expect_only("bad --shadows runs" shadows.md plain.md)
+endfunction()
+
 # --aa (docs/antialiasing.md): a tiny run measures none, FXAA and 4x MSAA in thin-lpp and forward
 # (msaa4: the material pass, forward's own) and thin-lpp and fat (msaa4e: per-sample lighting on edges) against
 # the supersampled truth; the JSON has a record per (mode, method) with its figures, MSAA takes more
