@@ -9,11 +9,12 @@
 #include "device.h"
 #include "targets.h"
 
-#define TL__MAX_DEFINES 64
-
 #define TL__BINDING_STRING(name, value) "TL_" #name "=" #value,
 static const char *const tl__binding_defines[] = {TL__BINDING_LIST(TL__BINDING_STRING)};
 #define TL__BINDING_DEFINE_COUNT (sizeof tl__binding_defines / sizeof tl__binding_defines[0])
+/* The fixed binding defines, a unit per target, then room for a program's own switches (with 64
+ * in all, two more targets left a material program 6 of its 9 switches, silently) */
+#define TL__MAX_DEFINES (TL__BINDING_DEFINE_COUNT + TL_TARGET_COUNT + 64)
 
 /* Splits the space-separated `defines` (copied into buf) after the fixed binding defines. */
 static size_t tl__define_list(const char *defines, char *buf, size_t buf_size, char units[][32], const char **out)
