@@ -11,6 +11,9 @@ layout(TL_LIGHT_IMAGE_FORMAT, binding = TL_IMAGE_LIGHT_SPECULAR) uniform writeon
 #ifdef TL_FRESNEL_SUMS
 layout(TL_LIGHT_IMAGE_FORMAT, binding = TL_IMAGE_LIGHT_FRESNEL) uniform writeonly image2D u_light_fresnel_image;
 #endif
+#ifdef TL_COAT_SUMS
+layout(TL_LIGHT_IMAGE_FORMAT, binding = TL_IMAGE_LIGHT_COAT) uniform writeonly image2D u_light_coat_image;
+#endif
 #else
 layout(rgba16f, binding = TL_IMAGE_HDR) uniform image2D u_hdr_image;
 #endif
@@ -35,6 +38,9 @@ void main()
     imageStore(u_light_diffuse_image, px, vec4(r.diffuse, min(tl_luminance(r.specular), 65504.0)));
 #else
     imageStore(u_light_diffuse_image, px, vec4(r.diffuse, 0.0));
+#endif
+#ifdef TL_COAT_SUMS
+    imageStore(u_light_coat_image, px, vec4(tl_tiled_coat(px), 0.0));
 #endif
 #else
     if (!r.surface) return;

@@ -98,6 +98,18 @@ typedef enum tl_msaa_lighting {
     TL_MSAA_LIGHTING_COUNT_            /**< number of values */
 } tl_msaa_lighting;
 
+/** thin-lpp: how a clearcoat material's coat is lit from the light buffer (docs/lighting.md,
+ *  "Material models"). */
+typedef enum tl_clearcoat_lighting {
+    TL_CLEARCOAT_DEFAULT = 0,     /**< = TL_CLEARCOAT_APPROXIMATE */
+    TL_CLEARCOAT_APPROXIMATE,     /**< RT0 holds the coat's gloss: the base's specular takes the coat's lobe
+                                       (no extra bytes) */
+    TL_CLEARCOAT_SUMS,            /**< when a clearcoat is drawn: the coat's gloss in a G-buffer byte and its
+                                       own specular sum in one more light target (9 B/px with RGBA16F); both
+                                       lobes exact. Planned at light scale 1, without MSAA or the stipple */
+    TL_CLEARCOAT_COUNT_           /**< number of values */
+} tl_clearcoat_lighting;
+
 /** Storage of the light buffer's targets (thin-lpp). */
 typedef enum tl_light_format {
     TL_LIGHT_FORMAT_DEFAULT = 0, /**< = TL_LIGHT_FORMAT_RGBA16F */
@@ -373,6 +385,9 @@ typedef struct tl_renderer_options {
     /** With `msaa` above 1: how the multisampled frame is lit (tl_msaa_lighting; zeroed: the
      *  mode's default, today's behaviour). */
     tl_msaa_lighting msaa_lighting;
+    /** thin-lpp with a clearcoat material drawn: its coat's light (tl_clearcoat_lighting; zeroed:
+     *  the approximation, today's plan and pixels). */
+    tl_clearcoat_lighting clearcoat;
 } tl_renderer_options;
 
 /** What tl_renderer_create() needs: the first options and what only creation decides (the
@@ -480,6 +495,8 @@ typedef enum tl_target_id {
     TL_TARGET_OPAQUE_DEPTH,   /**< stipple: the opaque surfaces' depth (depth's format); the material pass tests against it */
     TL_TARGET_DEPTH_MSAA,     /**< thin-lpp with MSAA: the multisampled depth the material pass tests against (depth's format) */
     TL_TARGET_MSAA_EDGES,     /**< MSAA per-sample edges: R8, 1 where the pixel's samples differ in depth or normal */
+    TL_TARGET_COAT_GLOSS,     /**< thin-lpp, TL_CLEARCOAT_SUMS: R8, a clearcoat's coat gloss (1 + 254 gloss; 0: no coat) */
+    TL_TARGET_LIGHT_COAT,     /**< thin-lpp, TL_CLEARCOAT_SUMS: the coat's specular sum S1 + S2 at its roughness */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
