@@ -770,6 +770,35 @@ typedef struct tl_environment_desc {
  */
 TL_API tl_result tl_renderer_set_environment(tl_renderer *r, const tl_environment_desc *desc);
 
+/** One face of a cube environment: square, linear RGB radiance. */
+typedef struct tl_environment_face {
+    const float *rgb;    /**< the face's first row; rows are GL's t = 0 first (the top of a side face) */
+    uint32_t width;      /**< pixels; equal to height, and the same for all six faces */
+    uint32_t height;     /**< pixels; at least 1 */
+    uint32_t row_floats; /**< floats from one row to the next; 0 = width * 3 (6 x 1 strip: 6 * width * 3) */
+} tl_environment_face;
+
+/** A cube environment (docs/renderer.md, "Background and environment"): six faces in GL's order
+ *  +X, -X, +Y, -Y, +Z, -Z (GL_TEXTURE_CUBE_MAP_POSITIVE_X + i), each oriented as GL samples a cube
+ *  map (world space, +Y up): for a direction d with major axis m, face +X spans s = -z, t = -y;
+ *  -X s = z, t = -y; +Y s = x, t = z; -Y s = x, t = -z; +Z s = x, t = -y; -Z s = -x, t = -y
+ *  (each over [-|m|, |m|]). */
+typedef struct tl_environment_cube_desc {
+    tl_environment_face faces[6];
+} tl_environment_cube_desc;
+
+/**
+ * Sets a cube environment: resampled (bilinearly, each face clamped at its edges) into the
+ * equirectangular image of 4 * size x 2 * size that tl_renderer_set_environment takes, then as that.
+ * TL_ERROR_INVALID_ARGUMENT, naming the face, for NULL pixels, a face that is not square, faces of
+ * different sizes, or a NaN pixel; TL_ERROR_LIMIT past 4096 pixels a side. NULL removes the
+ * environment. The previous environment stays on failure.
+ */
+TL_API tl_result tl_renderer_set_environment_cube(tl_renderer *r, const tl_environment_cube_desc *desc);
+/** The conversion tl_renderer_set_environment_cube makes, for a caller: `rgb` holds
+ *  (4 * size) x (2 * size) x 3 floats (size: the faces'). No check: give a checked cube. */
+TL_API void tl_environment_cube_to_equirect(const tl_environment_cube_desc *desc, float *rgb);
+
 /**
  * Changes the options from the next frame on (and for tl_renderer_apply_fxaa): mode, depth format,
  * light strategy, lighting model, effects, FXAA, ... Every zeroed field means its default, as in
