@@ -784,7 +784,7 @@ typedef struct tl_environment_face {
  *  -X s = z, t = -y; +Y s = x, t = z; -Y s = x, t = -z; +Z s = x, t = -y; -Z s = -x, t = -y
  *  (each over [-|m|, |m|]). */
 typedef struct tl_environment_cube_desc {
-    tl_environment_face faces[6];
+    tl_environment_face faces[6]; /**< +X, -X, +Y, -Y, +Z, -Z */
 } tl_environment_cube_desc;
 
 /**
