@@ -20,6 +20,7 @@ typedef struct args {
     uint32_t width, height, frames, runs;
     uint32_t lights[8];
     size_t light_count;
+    int clearcoat; /* tl_clearcoat_lighting, or -1: both, compared (clearcoat_table) */
 } args;
 
 static int usage(FILE *f, int rc)
@@ -29,7 +30,9 @@ static int usage(FILE *f, int rc)
                "  --lights L    point-light counts of the showcase (default 8,64,256)\n"
                "  --frames N    frames per measured image; the material pass timed by the fastest after\n"
                "                the first (default 4)\n"
-               "  --runs N      interleaved pairs for the all-models / one-model ratio (default 15)\n");
+               "  --runs N      interleaved pairs for the all-models / one-model ratio (default 15)\n"
+               "  --clearcoat C thin-lpp's clearcoat: approx (default) or sums; both: only the table\n"
+               "                comparing the two on the clearcoat row\n");
     return rc;
 }
 
@@ -46,6 +49,10 @@ static int parse(int argc, char **argv, args *a)
             continue;
         if (!strcmp(o, "--frames") && sscanf(v, "%u", &a->frames) == 1 && a->frames && a->frames <= 1000) continue;
         if (!strcmp(o, "--runs") && sscanf(v, "%u", &a->runs) == 1 && a->runs && a->runs <= 1000) continue;
+        if (!strcmp(o, "--clearcoat") && (!strcmp(v, "approx") || !strcmp(v, "sums") || !strcmp(v, "both"))) {
+            a->clearcoat = !strcmp(v, "approx") ? TL_CLEARCOAT_APPROXIMATE : !strcmp(v, "sums") ? TL_CLEARCOAT_SUMS : -1;
+            continue;
+        }
         if (!strcmp(o, "--lights")) {
             a->light_count = 0;
             for (const char *p = v; *p && a->light_count < 8;) {
@@ -130,6 +137,48 @@ static int error_table(const args *a, tl_renderer_desc d, uint32_t lights)
     return bad;
 }
 
+/* The light pass's time, whichever strategy the plan took. */
+static double light_ms(const tl_frame_stats *st)
+{
+    return st->pass_ms[TL_PASS_LIGHTS] + st->pass_ms[TL_PASS_LIGHTS_TILED];
+}
+
+/* thin-lpp's two clearcoat choices at `lights`, on the clearcoat row against forward: errors, the
+ * bytes per pixel the sums add (against the approximation's frame), and with every sphere a
+ * clearcoat the material pass's and the light pass's times. */
+static int clearcoat_table(const args *a, tl_renderer_desc d, uint32_t lights)
+{
+    tl_scene *s = NULL;
+    if (tl_scene_create_showcase(&(tl_showcase_scene_desc){.point_lights = lights}, &s) != TL_OK) return 1;
+    size_t n = (size_t)a->width * a->height;
+    float *img[3] = {malloc(n * 16), malloc(n * 16), malloc(n * 16)};
+    uint8_t *rows = malloc(n);
+    tl_scene *coats = one_model(s, TL_MATERIAL_MODEL_CLEARCOAT);
+    int bad = !img[0] || !img[1] || !img[2] || !rows || !coats || tl_mm_rows(s, d, rows);
+    tl_frame_stats st[3], one[2];
+    const tl_clearcoat_lighting choice[2] = {TL_CLEARCOAT_APPROXIMATE, TL_CLEARCOAT_SUMS};
+    d.options.mode = TL_MODE_FORWARD;
+    bad = bad || tl_mm_render(s, d, a->frames, img[2], &st[2]);
+    d.options.mode = TL_MODE_THIN_LPP;
+    for (int k = 0; k < 2 && !bad; k++) {
+        d.options.clearcoat = choice[k];
+        bad = tl_mm_render(s, d, a->frames, img[k], &st[k]) || tl_mm_render(coats, d, a->frames, NULL, &one[k]);
+    }
+    tl_mm_error e[2][TL_MATERIAL_MODEL_COUNT_];
+    for (int k = 0; k < 2 && !bad; k++) tl_mm_compare(img[k], img[2], rows, n, e[k]);
+    const uint32_t cc = TL_MATERIAL_MODEL_CLEARCOAT, sd = TL_MATERIAL_MODEL_STANDARD;
+    if (!bad)
+        printf("| %u | %.1f | %.3g | %.1f | %.3g | %.1f | %+.2f | %.2f | %.2f | %.2f | %.2f |\n", lights, e[0][cc].psnr_db,
+               e[0][cc].max_abs, e[1][cc].psnr_db, e[1][cc].max_abs, e[1][sd].psnr_db,
+               ((double)st[1].total_target_bytes - (double)st[0].total_target_bytes) / (double)n,
+               one[0].pass_ms[TL_PASS_MATERIAL], one[1].pass_ms[TL_PASS_MATERIAL], light_ms(&one[0]), light_ms(&one[1]));
+    for (int k = 0; k < 3; k++) free(img[k]);
+    free(rows);
+    tl_mm_free(coats);
+    tl_scene_destroy(s);
+    return bad;
+}
+
 /* The frame with every model against the standard-only one: thin-lpp, interleaved pairs, the
  * median of each and of the pairs' ratios. */
 static int cost_ratio(const args *a, tl_renderer_desc d, uint32_t lights)
@@ -191,6 +240,20 @@ int main(int argc, char **argv)
     if (tl_tool_context_open(TOOL, &co, a.width, a.height, &ctx)) return 1;
     tl_renderer_desc d = {.width = a.width, .height = a.height, .get_proc_address = tl_context_proc_loader,
                           .get_proc_address_user = ctx};
+    if (a.clearcoat < 0) { /* --clearcoat both */
+        printf("| lights | approx PSNR vs forward (dB) | approx max abs | sums PSNR vs forward (dB) | sums max abs | "
+               "standard row, sums frame (dB) | sums extra B/px | material pass, all clearcoat, approx (ms) | "
+               "material pass, sums (ms) | light pass, approx (ms) | light pass, sums (ms) |\n"
+               "|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        for (size_t i = 0; i < a.light_count && !rc; i++) {
+            fprintf(stderr, TOOL ": clearcoat at %u lights\n", a.lights[i]);
+            rc = clearcoat_table(&a, d, a.lights[i]);
+        }
+        tl_context_destroy(ctx);
+        if (rc) fprintf(stderr, TOOL ": failed\n");
+        return rc ? 1 : 0;
+    }
+    d.options.clearcoat = (tl_clearcoat_lighting)a.clearcoat;
     printf("| lights | model | pixels | PSNR vs forward (dB) | max abs vs forward | max rel vs forward | PSNR vs fat "
            "(dB) | max abs vs fat | fat vs forward (dB) | fat max abs vs forward | thin-deferred vs forward (dB) | "
            "thin-deferred max abs vs forward | extra B/px | material pass, all spheres this model (ms) | material "

@@ -39,6 +39,10 @@ layout(location = TL_OUT_FAT_MATERIAL) out vec4 o_material;
 #ifdef TL_OUT_HDR
 layout(location = TL_OUT_HDR) out vec4 o_hdr;
 #endif
+#ifdef TL_OUT_COAT_GLOSS
+layout(location = TL_OUT_COAT_GLOSS) out vec4 o_coat_gloss;
+#include "coat_sums.glsl" // the coat's own sums: its gloss here, RT0 keeps the base's
+#endif
 
 // The deferred modes' light pass shades by the material model where the G-buffer stores it
 // (fat_models.glsl): fat in fat.position.w, thin-deferred in RT1.a (unless SSAO stores occlusion
@@ -108,7 +112,7 @@ void main()
 #ifdef TL_OUT_RT0
 // thin-lpp (and thin-deferred without the model's byte): a clearcoat's light sums are its coat's
 // lobe (material_models.glsl)
-#if defined(TL_MATERIAL_MODELS) && !defined(TL_DEFERRED_MODELS)
+#if defined(TL_MATERIAL_MODELS) && !defined(TL_DEFERRED_MODELS) && !defined(TL_COAT_SUMS)
     if (u_material_model == 2) s.gloss = 1.0 - u_clearcoat_roughness;
 #endif
 #ifdef TL_RT0_RGB10A2
@@ -161,5 +165,8 @@ void main()
     c = tl_deferred_model_hdr(s, n, c); // unlit: albedo and emissive alone (no ambient, no environment)
 #endif
     o_hdr = vec4(min(c, vec3(65504.0)), 1.0);
+#endif
+#ifdef TL_OUT_COAT_GLOSS
+    o_coat_gloss = vec4(tl_coat_gloss_byte(), 0.0, 0.0, 0.0);
 #endif
 }

@@ -25,6 +25,23 @@ layout(location = TL_OUT_LIGHT_SPECULAR) out vec4 o_specular;
 #ifdef TL_FRESNEL_SUMS
 layout(location = TL_OUT_LIGHT_FRESNEL) out vec4 o_fresnel;
 #endif
+#ifdef TL_COAT_SUMS
+#include "coat_sums.glsl"
+layout(location = TL_OUT_LIGHT_COAT) out vec4 o_coat;
+
+// The light's coat weight S1 + S2 at the coat's gloss where a coat is (zero elsewhere).
+vec3 tl_light_coat(ivec2 px, vec3 p, vec3 n, vec3 v)
+{
+    float g;
+    if (!tl_coat_gloss(px, g)) return vec3(0.0);
+    vec3 t = tl_light_weights(TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(g), f_position_radius, f_direction_cos_outer.xyz,
+                              f_cos_inner, f_direction_cos_outer.w, f_source_radius);
+#ifdef TL_SHADOWS
+    if (f_shadow > 0.0 && t != vec3(0.0)) t *= tl_light_shadow(f_shadow, TL_LIGHT_TYPE, p, n, f_position_radius.xyz, f_direction_cos_outer.xyz);
+#endif
+    return min(f_color * (t.y + t.z), vec3(65504.0));
+}
+#endif
 #else
 layout(location = TL_OUT_HDR) out vec4 o_color;
 #endif
@@ -100,6 +117,9 @@ void main()
     o_diffuse = vec4(diffuse, min(tl_luminance(specular), 65504.0));
 #else
     o_diffuse = vec4(diffuse, 0.0);
+#endif
+#ifdef TL_COAT_SUMS
+    o_coat = vec4(tl_light_coat(px, p, n, v), 0.0);
 #endif
 #else
 #ifdef TL_LIGHT_SHADE_THIN

@@ -29,6 +29,9 @@ layout(TL_LIGHT_IMAGE_FORMAT, binding = TL_IMAGE_LIGHT_SPECULAR) uniform writeon
 #ifdef TL_FRESNEL_SUMS
 layout(TL_LIGHT_IMAGE_FORMAT, binding = TL_IMAGE_LIGHT_FRESNEL) uniform writeonly TL_IMAGE2D u_light_fresnel_image;
 #endif
+#ifdef TL_COAT_SUMS
+layout(TL_LIGHT_IMAGE_FORMAT, binding = TL_IMAGE_LIGHT_COAT) uniform writeonly image2D u_light_coat_image;
+#endif
 #define TL_TILED_IMAGE u_light_diffuse_image
 #else
 layout(rgba16f, binding = TL_IMAGE_HDR) uniform TL_IMAGE2D u_hdr_image;
@@ -49,6 +52,9 @@ void tl_tiled_store(ivec2 px, int s, tl_tiled_result r)
     tl_image_store(u_light_diffuse_image, px, s, vec4(r.diffuse, min(tl_luminance(r.specular), 65504.0)));
 #else
     tl_image_store(u_light_diffuse_image, px, s, vec4(r.diffuse, 0.0));
+#endif
+#ifdef TL_COAT_SUMS // planned without MSAA only: s is 0
+    imageStore(u_light_coat_image, px, vec4(tl_tiled_coat(px), 0.0));
 #endif
 #else
     if (!r.surface) return;

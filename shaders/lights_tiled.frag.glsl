@@ -11,6 +11,9 @@ layout(location = TL_OUT_LIGHT_SPECULAR) out vec4 o_specular;
 #ifdef TL_FRESNEL_SUMS
 layout(location = TL_OUT_LIGHT_FRESNEL) out vec4 o_fresnel;
 #endif
+#ifdef TL_COAT_SUMS
+layout(location = TL_OUT_LIGHT_COAT) out vec4 o_coat;
+#endif
 #else
 layout(location = TL_OUT_HDR) out vec4 o_color;
 #endif
@@ -33,6 +36,9 @@ void main()
     o_diffuse = vec4(r.diffuse, min(tl_luminance(r.specular), 65504.0));
 #else
     o_diffuse = vec4(r.diffuse, 0.0);
+#endif
+#ifdef TL_COAT_SUMS
+    o_coat = vec4(tl_tiled_coat(ivec2(gl_FragCoord.xy)), 0.0);
 #endif
 #else
     if (!r.surface) discard;

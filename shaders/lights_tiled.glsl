@@ -110,3 +110,18 @@ tl_tiled_result tl_tiled_shade(ivec2 px)
 #endif
     return res;
 }
+
+#ifdef TL_COAT_SUMS
+#include "coat_sums.glsl"
+// The coat's specular sum S1 + S2 at the coat's gloss where a coat is (zero elsewhere): the
+// pixel's lights again, with the coat's lobe.
+vec3 tl_tiled_coat(ivec2 px)
+{
+    vec3 p, n, d = vec3(0.0), s = vec3(0.0), f = vec3(0.0);
+    float g, base_gloss;
+    if (!tl_coat_gloss(px, g) || !tl_gbuffer_position(px, p)) return vec3(0.0);
+    tl_gbuffer_normal_gloss(px, n, base_gloss);
+    tl_tile_lights_add(tl_tile_index(px), p, n, normalize(-p), tl_lobe_shape(g), d, s, f);
+    return min(s + f, vec3(65504.0));
+}
+#endif

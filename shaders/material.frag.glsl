@@ -13,6 +13,9 @@
 layout(binding = TL_UNIT_LIGHT_DIFFUSE) uniform sampler2D u_light_diffuse;
 layout(binding = TL_UNIT_LIGHT_SPECULAR) uniform sampler2D u_light_specular;
 layout(binding = TL_UNIT_LIGHT_FRESNEL) uniform sampler2D u_light_fresnel;
+#if defined(TL_COAT_SUMS) && defined(TL_MODEL) && TL_MODEL == 2
+layout(binding = TL_UNIT_LIGHT_COAT) uniform sampler2D u_light_coat; // the coat's own sum (coat_sums.glsl)
+#endif
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
 #ifdef TL_SSAO_AMBIENT
@@ -59,7 +62,7 @@ void main()
     if (tl_material_masked(s)) discard;
     vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
     float alpha = 1.0;
-#if defined(TL_MODEL) && TL_MODEL == 2
+#if defined(TL_MODEL) && TL_MODEL == 2 && !defined(TL_COAT_SUMS)
     float relight_gloss = 1.0 - u_clearcoat_roughness; // a clearcoat's sums are its coat's (gbuffer.frag.glsl)
 #else
     float relight_gloss = s.gloss;
@@ -114,8 +117,11 @@ void main()
     vec3 c = s.albedo * (diffuse + ambient) + f0 * specular + fresnel + s.emissive;
 #ifdef TL_MODEL
     float nv_m = clamp(dot(tl_material_normal(), normalize(-v_view_position)), 0.0, 1.0);
-    c = tl_model_shade(TL_MODEL, s, nv_m, diffuse, ambient, f0 * specular + fresnel,
-                       tl_model_sums_from_buffer(diffuse, specular + fresnel, nv_m));
+    tl_model_sums ms = tl_model_sums_from_buffer(diffuse, specular + fresnel, nv_m);
+#if defined(TL_COAT_SUMS) && TL_MODEL == 2 && !defined(TL_NO_LIGHTS)
+    ms.coat = tl_finite(texelFetch(u_light_coat, ivec2(gl_FragCoord.xy), 0).rgb); // RT0 kept the base's gloss
+#endif
+    c = tl_model_shade(TL_MODEL, s, nv_m, diffuse, ambient, f0 * specular + fresnel, ms);
 #endif
 #if defined(TL_IBL) && (!defined(TL_MODEL) || TL_MODEL != 1) // an unlit material takes no light, the environment's neither
     c += tl_ibl(s.albedo, s.specular, s.gloss, s.occlusion, tl_material_normal(), normalize(-v_view_position));

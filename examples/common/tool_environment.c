@@ -19,7 +19,8 @@ static void tl__env_image_free(tl_float_image *img)
 const char tl_tool_environment_help[] =
     "  --background R,G,B    linear background radiance where nothing is drawn (default 0,0,0: black)\n"
     "  --environment FILE    equirectangular HDR image (.hdr, .exr; twice as wide as high) drawn as the sky\n"
-    "                        and lighting every material (diffuse from SH, specular split sum)\n"
+    "                        and lighting every material (diffuse from SH, specular split sum); or a cube:\n"
+    "                        its six faces in a row, +X -X +Y -Y +Z -Z (six times as wide as high)\n"
     "  --environment-intensity K  scales the environment (default 1)\n";
 
 enum { E_BACKGROUND = 1, E_FILE, E_INTENSITY };
@@ -76,9 +77,12 @@ int tl_tool_environment_read(const char *tool, tl_tool_environment *e)
     if (!e->path) return 0;
     tl_float_image img;
     if (tl__env_read(tool, e->path, &img)) return 1;
-    if (img.height < 2 || img.width != 2 * img.height) {
-        fprintf(stderr, "%s: --environment %s: %ux%u is not equirectangular (twice as wide as high)\n", tool, e->path,
-                (unsigned)img.width, (unsigned)img.height);
+    /* 2:1 equirectangular, or 6:1 a cube's faces side by side in GL's order (+X -X +Y -Y +Z -Z) */
+    if (img.height < 1 || (img.width != 6 * img.height && (img.height < 2 || img.width != 2 * img.height))) {
+        fprintf(stderr,
+                "%s: --environment %s: %ux%u is neither equirectangular (twice as wide as high) nor a cube's six "
+                "faces in a row (six times as wide as high)\n",
+                tool, e->path, (unsigned)img.width, (unsigned)img.height);
         tl__env_image_free(&img);
         return 1;
     }
@@ -100,7 +104,15 @@ int tl_tool_environment_set(const char *tool, const tl_tool_environment *e, tl_r
 {
     if (!e->rgb) return 0;
     tl_environment_desc d = {.rgb = e->rgb, .width = e->width, .height = e->height};
-    if (tl_renderer_set_environment(r, &d) == TL_OK) return 0;
+    if (e->width == 6 * e->height) { /* a cube's faces in a row (tl_environment_cube_desc) */
+        tl_environment_cube_desc c;
+        for (uint32_t f = 0; f < 6; f++)
+            c.faces[f] = (tl_environment_face){.rgb = e->rgb + (size_t)f * e->height * 3u, .width = e->height,
+                                               .height = e->height, .row_floats = e->width * 3u};
+        if (tl_renderer_set_environment_cube(r, &c) == TL_OK) return 0;
+    } else if (tl_renderer_set_environment(r, &d) == TL_OK) {
+        return 0;
+    }
     fprintf(stderr, "%s: --environment %s: %s\n", tool, e->path, tl_renderer_last_error(r));
     return 1;
 }

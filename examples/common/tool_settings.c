@@ -29,7 +29,7 @@ const char tl_tool_settings_help[] =
 
 enum { S_MODE, S_NO_PREPASS, S_STRATEGY, S_DEPTH, S_RT0, S_LIGHT_BUFFER, S_LIGHT_FORMAT, S_LIGHTING, S_FRESNEL,
        S_AMBIENT, S_TILE_SIZE, S_TILED_SHADING, S_FXAA, S_EXPOSURE, S_LIGHT_SCALE, S_TRANSPARENCY, S_MSAA,
-       S_MSAA_LIGHTING };
+       S_MSAA_LIGHTING, S_CLEARCOAT };
 
 static const char *const depth_names[] = {"d24", "d32f-reversed", NULL};
 static const int depth_values[] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
@@ -52,6 +52,8 @@ static const int msaa_values[] = {1, 2, 4, 8};
 static const char *const msaa_lighting_names[] = {"default", "material-pass", "per-sample-edges", NULL};
 static const int msaa_lighting_values[] = {TL_MSAA_LIGHTING_DEFAULT, TL_MSAA_LIGHTING_MATERIAL_PASS,
                                            TL_MSAA_LIGHTING_SAMPLE_EDGES};
+static const char *const clearcoat_names[] = {"approx", "sums", NULL};
+static const int clearcoat_values[] = {TL_CLEARCOAT_APPROXIMATE, TL_CLEARCOAT_SUMS};
 static const char *const fxaa_names[] = {"off", "12", "29", "39", NULL};
 static const int fxaa_values[] = {TL_FXAA_OFF, TL_FXAA_12, TL_FXAA_29, TL_FXAA_39};
 
@@ -75,6 +77,7 @@ static const tl_opt settings_opts[] = {
     {"--fxaa", TL_OPT_TEXT, .id = S_FXAA, CHOICE(fxaa)},
     {"--msaa", TL_OPT_TEXT, .id = S_MSAA, CHOICE(msaa)},
     {"--msaa-lighting", TL_OPT_TEXT, .id = S_MSAA_LIGHTING, CHOICE(msaa_lighting)},
+    {"--clearcoat", TL_OPT_TEXT, .id = S_CLEARCOAT, CHOICE(clearcoat)},
     {"--exposure", TL_OPT_REAL, .id = S_EXPOSURE, .min = 0.0, .max = 1e6, .flags = TL_OPT_MIN_OPEN},
 };
 
@@ -115,6 +118,7 @@ int tl_tool_settings_apply(const char *tool, tl_renderer_desc *d, const tl_opt *
     case S_TRANSPARENCY: d->options.transparency = (tl_transparency)u; break;
     case S_MSAA: d->options.msaa = (uint32_t)u; break;
     case S_MSAA_LIGHTING: d->options.msaa_lighting = (tl_msaa_lighting)u; break;
+    case S_CLEARCOAT: d->options.clearcoat = (tl_clearcoat_lighting)u; break;
     default: return tl__settings_named(tool, d, o->id, v->text);
     }
     return 1;

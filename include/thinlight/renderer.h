@@ -98,6 +98,18 @@ typedef enum tl_msaa_lighting {
     TL_MSAA_LIGHTING_COUNT_            /**< number of values */
 } tl_msaa_lighting;
 
+/** thin-lpp: how a clearcoat material's coat is lit from the light buffer (docs/lighting.md,
+ *  "Material models"). */
+typedef enum tl_clearcoat_lighting {
+    TL_CLEARCOAT_DEFAULT = 0,     /**< = TL_CLEARCOAT_APPROXIMATE */
+    TL_CLEARCOAT_APPROXIMATE,     /**< RT0 holds the coat's gloss: the base's specular takes the coat's lobe
+                                       (no extra bytes) */
+    TL_CLEARCOAT_SUMS,            /**< when a clearcoat is drawn: the coat's gloss in a G-buffer byte and its
+                                       own specular sum in one more light target (9 B/px with RGBA16F); both
+                                       lobes exact. Planned at light scale 1, without MSAA or the stipple */
+    TL_CLEARCOAT_COUNT_           /**< number of values */
+} tl_clearcoat_lighting;
+
 /** Storage of the light buffer's targets (thin-lpp). */
 typedef enum tl_light_format {
     TL_LIGHT_FORMAT_DEFAULT = 0, /**< = TL_LIGHT_FORMAT_RGBA16F */
@@ -382,6 +394,9 @@ typedef struct tl_renderer_options {
      *  with a multisampled G-buffer or depth (tl_frame_plan then has no shadow-debug pass). Default 0:
      *  no pass, the plan as without the field. */
     int shadow_debug;
+    /** thin-lpp with a clearcoat material drawn: its coat's light (tl_clearcoat_lighting; zeroed:
+     *  the approximation, today's plan and pixels). */
+    tl_clearcoat_lighting clearcoat;
 } tl_renderer_options;
 
 /** What tl_renderer_create() needs: the first options and what only creation decides (the
@@ -491,6 +506,8 @@ typedef enum tl_target_id {
     TL_TARGET_DEPTH_MSAA,     /**< thin-lpp with MSAA: the multisampled depth the material pass tests against (depth's format) */
     TL_TARGET_MSAA_EDGES,     /**< MSAA per-sample edges: R8, 1 where the pixel's samples differ in depth or normal */
     TL_TARGET_SHADOW_DEBUG,   /**< tl_renderer_options.shadow_debug: RGBA16F, shadow-only term, its weight, cascade, surface */
+    TL_TARGET_COAT_GLOSS,     /**< thin-lpp, TL_CLEARCOAT_SUMS: R8, a clearcoat's coat gloss (1 + 254 gloss; 0: no coat) */
+    TL_TARGET_LIGHT_COAT,     /**< thin-lpp, TL_CLEARCOAT_SUMS: the coat's specular sum S1 + S2 at its roughness */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -764,6 +781,35 @@ typedef struct tl_environment_desc {
  * environment stays then. Re-plans when an environment appears or goes.
  */
 TL_API tl_result tl_renderer_set_environment(tl_renderer *r, const tl_environment_desc *desc);
+
+/** One face of a cube environment: square, linear RGB radiance. */
+typedef struct tl_environment_face {
+    const float *rgb;    /**< the face's first row; rows are GL's t = 0 first (the top of a side face) */
+    uint32_t width;      /**< pixels; equal to height, and the same for all six faces */
+    uint32_t height;     /**< pixels; at least 1 */
+    uint32_t row_floats; /**< floats from one row to the next; 0 = width * 3 (6 x 1 strip: 6 * width * 3) */
+} tl_environment_face;
+
+/** A cube environment (docs/renderer.md, "Background and environment"): six faces in GL's order
+ *  +X, -X, +Y, -Y, +Z, -Z (GL_TEXTURE_CUBE_MAP_POSITIVE_X + i), each oriented as GL samples a cube
+ *  map (world space, +Y up): for a direction d with major axis m, face +X spans s = -z, t = -y;
+ *  -X s = z, t = -y; +Y s = x, t = z; -Y s = x, t = -z; +Z s = x, t = -y; -Z s = -x, t = -y
+ *  (each over [-|m|, |m|]). */
+typedef struct tl_environment_cube_desc {
+    tl_environment_face faces[6]; /**< +X, -X, +Y, -Y, +Z, -Z */
+} tl_environment_cube_desc;
+
+/**
+ * Sets a cube environment: resampled (bilinearly, each face clamped at its edges) into the
+ * equirectangular image of 4 * size x 2 * size that tl_renderer_set_environment takes, then as that.
+ * TL_ERROR_INVALID_ARGUMENT, naming the face, for NULL pixels, a face that is not square, faces of
+ * different sizes, or a NaN pixel; TL_ERROR_LIMIT past 4096 pixels a side. NULL removes the
+ * environment. The previous environment stays on failure.
+ */
+TL_API tl_result tl_renderer_set_environment_cube(tl_renderer *r, const tl_environment_cube_desc *desc);
+/** The conversion tl_renderer_set_environment_cube makes, for a caller: `rgb` holds
+ *  (4 * size) x (2 * size) x 3 floats (size: the faces'). No check: give a checked cube. */
+TL_API void tl_environment_cube_to_equirect(const tl_environment_cube_desc *desc, float *rgb);
 
 /**
  * Changes the options from the next frame on (and for tl_renderer_apply_fxaa): mode, depth format,

@@ -22,6 +22,7 @@
     X(IMAGE_LIGHT_SPECULAR, 1)                                                                    \
     X(IMAGE_HDR, 2)                                                                               \
     X(IMAGE_LIGHT_FRESNEL, 3)                                                                     \
+    X(IMAGE_LIGHT_COAT, 4)       /* the coat's sum (TL_CLEARCOAT_SUMS) */                           \
     X(UNIT_ALBEDO_TEXTURE, 32)   /* material textures (units below 32 are the targets') */        \
     X(UNIT_NORMAL_TEXTURE, 33)                                                                    \
     X(UNIT_MR_TEXTURE, 34)                                                                        \
@@ -42,7 +43,7 @@ enum {
     TL__MATERIAL_TEXTURES = 5,
     TL__TEXTURE_UNITS_USED = 41, /* units the renderer may bind: 0 .. 40 */
     TL__BUFFER_BINDINGS_USED = 6, /* uniform and storage binding points it may bind: 0 .. 5 */
-    TL__IMAGE_UNITS_USED = 4     /* image units it may bind: 0 .. 3 */
+    TL__IMAGE_UNITS_USED = 5     /* image units it may bind: 0 .. 4 */
 };
 
 #endif

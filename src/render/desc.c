@@ -46,6 +46,7 @@ static int tl__general_resolve(tl_renderer_options *o, const char **bad)
         {!tl__shadow_desc_valid(&o->shadows), "shadows (atlas_size a power of two in 1024..16384, max_lights 1..64, pcf_radius 0..3)"},
         {o->msaa != 1 && o->msaa != 2 && o->msaa != 4 && o->msaa != 8, "msaa (0, 1, 2, 4 or 8 samples)"},
         {(unsigned)o->msaa_lighting >= TL_MSAA_LIGHTING_COUNT_, "msaa_lighting"},
+        {(unsigned)o->clearcoat >= TL_CLEARCOAT_COUNT_, "clearcoat"},
         /* R11G11B10F has no alpha for the compact layout's specular luminance */
         {o->light_format == TL_LIGHT_FORMAT_R11G11B10F && o->light_buffer != TL_LIGHT_BUFFER_EXACT,
          "light_format (R11G11B10F needs the exact light buffer)"},

@@ -118,7 +118,8 @@ static void tl__graph_images(tl__graph *r, tl__compiled_pass *cp, const tl__pass
     static const struct { tl_target_id t; uint8_t unit; } map[] = {{TL_TARGET_LIGHT_DIFFUSE, TL__IMAGE_LIGHT_DIFFUSE},
                                                                    {TL_TARGET_LIGHT_SPECULAR, TL__IMAGE_LIGHT_SPECULAR},
                                                                    {TL_TARGET_HDR, TL__IMAGE_HDR},
-                                                                   {TL_TARGET_LIGHT_FRESNEL, TL__IMAGE_LIGHT_FRESNEL}};
+                                                                   {TL_TARGET_LIGHT_FRESNEL, TL__IMAGE_LIGHT_FRESNEL},
+                                                                   {TL_TARGET_LIGHT_COAT, TL__IMAGE_LIGHT_COAT}};
     for (size_t k = 0; k < sizeof map / sizeof map[0]; k++)
         if (d->images & TL_TARGET_BIT(map[k].t)) {
             cp->image_units[cp->image_count] = map[k].unit;

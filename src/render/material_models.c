@@ -19,6 +19,17 @@ const char *tl__models_define(const tl_scene_feature_set *f)
     return (tl__plan_models(f) & ~(1u << TL_MATERIAL_MODEL_STANDARD)) ? " TL_MATERIAL_MODELS" : "";
 }
 
+/* TL_CLEARCOAT_SUMS (docs/lighting.md, "Material models"): the coat's own sums, planned only in
+ * thin-lpp with a clearcoat drawn and lights, with the light buffer at the frame's one sample per
+ * pixel (no light scale, MSAA or stipple, whose re-lit pixels would need the coat's lights too);
+ * otherwise the approximation, and a scene without a clearcoat plans exactly as before. */
+int tl__plan_coat_sums(const tl__plan_input *in)
+{
+    return in->o->clearcoat == TL_CLEARCOAT_SUMS && in->mode->material_pass && in->lights &&
+           (tl__plan_models(&in->f) & (1u << TL_MATERIAL_MODEL_CLEARCOAT)) && !in->light_shift && in->msaa <= 1u &&
+           !in->stipple;
+}
+
 void tl__material_model_slots(const tl__plan_input *in, const char *defines, tl__pass_defines *out)
 {
     uint32_t models = tl__plan_models(&in->f);

@@ -60,6 +60,7 @@ typedef struct tl__plan_input {
     int stipple;                /* the blended materials go through the G-buffer's 2x2 stipple (pass_stipple.c) */
     char transparency_reason[96];
     uint32_t shadows;           /* casting lights looked up (TL_SHADOWS in spec_define); 0: none */
+    int coat_sums;              /* thin-lpp, TL_CLEARCOAT_SUMS, a clearcoat drawn: the coat's own sums (material_models.c) */
 } tl__plan_input;
 
 /* What a pass needs of the lights module each frame (tl__pass_decl.light_data). */
@@ -202,6 +203,8 @@ void tl__draw_transparent(const tl__pass_ctx *ctx);
 uint32_t tl__plan_models(const tl_scene_feature_set *f);
 const char *tl__models_define(const tl_scene_feature_set *f);
 void tl__material_model_slots(const tl__plan_input *in, const char *defines, tl__pass_defines *out);
+/* Whether the clearcoat's own sums are planned (tl__plan_input.coat_sums). */
+int tl__plan_coat_sums(const tl__plan_input *in);
 void tl__material_models_draw(const tl__pass_ctx *ctx);
 void tl__draw_points_lines(const tl__pass_ctx *ctx);
 

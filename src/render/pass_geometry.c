@@ -50,6 +50,10 @@ static const tl__target_def tl__target_fat_albedo = {TL__TARGET(FAT_ALBEDO, "fat
                                                      .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_fat_material = {TL__TARGET(FAT_MATERIAL, "fat.material"), .format = GL_RGBA16F,
                                                        .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
+/* TL_CLEARCOAT_SUMS: the coat's gloss beside RT0's (coat_sums.glsl); declared with the material
+ * pass, which is there only in thin-lpp (the G-buffer pass's table of targets is full). */
+static const tl__target_def tl__target_coat_gloss = {TL__TARGET(COAT_GLOSS, "coat.gloss"), .format = GL_R8,
+                                                     .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_hdr = {TL__TARGET(HDR, "hdr"), .format = GL_RGBA16F, .samples_of = tl__msaa_samples};
 
 /* Every geometry pass that decides visibility tests LEQUAL (GEQUAL reversed): of fragments at the
@@ -116,6 +120,11 @@ static void tl__gbuffer_declare(const tl__plan_input *in, tl__pass_decl *d)
     if (in->mode->forward) return;
     d->writes = d->clears = TL__B(DEPTH) | in->mode->gbuffer_writes;
     d->optional = in->mode->gbuffer_writes & ~TL__B(HDR); /* kept when the light pass reads them */
+    if (in->coat_sums) { /* the coat's gloss for the light pass (coat_sums.glsl) */
+        d->writes |= TL__B(COAT_GLOSS);
+        d->clears |= TL__B(COAT_GLOSS);
+        d->optional |= TL__B(COAT_GLOSS);
+    }
     d->attach_depth = 1;
     d->state = tl__geometry_state(in, TL__DEPTH_LEQUAL, 1, TL__BLEND_OFF);
 }
@@ -159,7 +168,7 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
     if (!in->mode->material_pass) return;
     d->writes = d->clears = TL__B(HDR);
     d->samples = TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | TL__B(LIGHT_FRESNEL) | /* those the light pass writes */
-                 (tl__ssao_pass(in) ? TL__B(AO) : 0u);
+                 (tl__ssao_pass(in) ? TL__B(AO) : 0u) | (in->coat_sums ? TL__B(LIGHT_COAT) : 0u);
     if (in->light_shift && in->lights) {
         /* the light scale's upsample: the reduced depth and RT0 against the pixel's own RT0. The
          * pixels it finds no credible match for are counted (light.fixup) and re-lit: tiled, they
@@ -237,6 +246,7 @@ const tl__pass_def tl__pass_material = {
                  {"material.sheen", "gbuffer.vert.glsl", "material.frag.glsl"},
                  {"material.wrap", "gbuffer.vert.glsl", "material.frag.glsl"},
                  {"material.toon", "gbuffer.vert.glsl", "material.frag.glsl"}},
+    .targets = {&tl__target_coat_gloss},
     .declare = tl__material_declare,
     .permute = tl__material_permute,
     .execute = tl__material_execute,

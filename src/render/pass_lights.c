@@ -31,6 +31,9 @@ static const tl__target_def tl__target_light_fresnel = {TL__TARGET(LIGHT_FRESNEL
                                                         .format_of = tl__light_format, .shift_of = tl__light_shift,
                                                         .samples_of = tl__gbuffer_samples,
                                                         .store = TL__STORE_LIGHT};
+/* TL_CLEARCOAT_SUMS: the coat's specular sum (coat_sums.glsl), in the light buffer's format. */
+static const tl__target_def tl__target_light_coat = {TL__TARGET(LIGHT_COAT, "light.coat"),
+                                                     .format_of = tl__light_format, .store = TL__STORE_LIGHT};
 
 /* What the light pass reads and writes in this mode, whatever the strategy (the tiled pass too). */
 void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
@@ -44,6 +47,11 @@ void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
     d->samples = m->light_samples & d->reads;
     d->neighbourhood = d->samples & TL__B(RT1); /* chroma from the four neighbours */
     if (d->writes & TL__B(HDR)) d->reads |= TL__B(HDR); /* shading adds to it */
+    if (in->coat_sums && (d->writes & TL__B(LIGHT_DIFFUSE))) { /* the coat's own sum (coat_sums.glsl) */
+        d->writes |= TL__B(LIGHT_COAT);
+        d->reads |= TL__B(COAT_GLOSS);
+        d->samples |= TL__B(COAT_GLOSS);
+    }
     if (tl__msaa_sample_edges(in->o)) { /* which pixels each of the two light passes lights (pass_msaa.c) */
         d->reads |= TL__B(MSAA_EDGES);
         d->samples |= TL__B(MSAA_EDGES);
@@ -69,7 +77,8 @@ void tl__light_pass_defines(const tl__plan_input *in, const tl__pass_decl *d, ch
      * model (fat_models.glsl) */
     int model_stored = (d->reads & TL__B(FAT_POSITION)) || ((d->reads & TL__B(RT1)) && tl__ssao_pass(in) != 2);
     const char *models = model_stored ? tl__models_define(&in->f) : "";
-    snprintf(out, size, "%s%s%s%s%s", rt0 ? " " : "", rt0 ? in->rt0_define : "", shift, samples, models);
+    const char *coat = (d->reads & TL__B(COAT_GLOSS)) ? " TL_COAT_SUMS" : "";
+    snprintf(out, size, "%s%s%s%s%s%s", rt0 ? " " : "", rt0 ? in->rt0_define : "", shift, samples, models, coat);
 }
 
 static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
@@ -162,7 +171,7 @@ const tl__pass_def tl__pass_lights = {
     .programs = {{"lights.point", "light.vert.glsl", "light.frag.glsl"},
                  {"lights.spot", "light.vert.glsl", "light.frag.glsl"},
                  {"lights.directional", "light.vert.glsl", "light.frag.glsl"}},
-    .targets = {&tl__target_light_diffuse, &tl__target_light_specular, &tl__target_light_fresnel},
+    .targets = {&tl__target_light_diffuse, &tl__target_light_specular, &tl__target_light_fresnel, &tl__target_light_coat},
     .declare = tl__lights_declare,
     .permute = tl__lights_permute,
     .execute = tl__lights_execute,

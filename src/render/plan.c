@@ -137,6 +137,8 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     tl__plan_transparency(in);
     in->rt0_define = d->options.rt0 == TL_RT0_RGB10A2 ? "TL_RT0_RGB10A2" : "TL_RT0_RGBA8";
     tl__material_defines(f, in->material_defines, sizeof in->material_defines);
+    in->coat_sums = tl__plan_coat_sums(in);
+    if (in->coat_sums) strcat(in->material_defines, " TL_COAT_SUMS"); /* coat_sums.glsl */
     if (f->has_environment) strcat(in->material_defines, " TL_IBL"); /* image-based light (ibl.glsl) */
 }
 

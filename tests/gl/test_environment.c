@@ -537,6 +537,142 @@ TL_TEST(environment_bad_input_refused)
     free(g);
 }
 
+/* ---- cube environments (tl_renderer_set_environment_cube) --------------------------------------- */
+
+#define CUBE_N (ENV_H / 2) /* the faces' size whose equirectangular image is ENV_W x ENV_H */
+
+/* The direction through texel (x, y) of face f, GL's cube-map convention (renderer.h). */
+static void cube_direction(int f, uint32_t x, uint32_t y, double d[3])
+{
+    double sc = 2.0 * ((double)x + 0.5) / CUBE_N - 1.0, tc = 2.0 * ((double)y + 0.5) / CUBE_N - 1.0;
+    const double dirs[6][3] = {{1, -tc, -sc}, {-1, -tc, sc}, {sc, 1, tc}, {sc, -1, -tc}, {sc, -tc, 1}, {-sc, -tc, -1}};
+    double l = sqrt(dirs[f][0] * dirs[f][0] + dirs[f][1] * dirs[f][1] + dirs[f][2] * dirs[f][2]);
+    for (int k = 0; k < 3; k++) d[k] = dirs[f][k] / l;
+}
+
+/* A cube made by sampling the equirectangular `env` (bilinear, as GL samples it) at each face texel. */
+static float *cube_from_equirect(const float *env, tl_environment_cube_desc *c)
+{
+    float *faces = malloc((size_t)6 * CUBE_N * CUBE_N * 3 * sizeof *faces);
+    ibl_ref_env e = {env, ENV_W, ENV_H};
+    for (int f = 0; faces && f < 6; f++) {
+        c->faces[f] = (tl_environment_face){.rgb = faces + (size_t)f * CUBE_N * CUBE_N * 3, .width = CUBE_N, .height = CUBE_N};
+        for (uint32_t y = 0; y < CUBE_N; y++)
+            for (uint32_t x = 0; x < CUBE_N; x++) {
+                double d[3], rgb[3];
+                cube_direction(f, x, y, d);
+                ibl_ref_radiance(&e, d, rgb);
+                for (int k = 0; k < 3; k++) faces[((size_t)f * CUBE_N * CUBE_N + y * CUBE_N + x) * 3 + k] = (float)rgb[k];
+            }
+    }
+    return faces;
+}
+
+/* The 9-term irradiance kernel's L1 norm over the sphere, ∫ |sum_l A_l (2l+1) / (4 pi) P_l(t)| / pi:
+ * how much a radiance difference bounded by 1 can move the diffuse term E / pi (midpoint rule). */
+static double sh_kernel_l1(void)
+{
+    double sum = 0.0;
+    const int n = 100000;
+    for (int i = 0; i < n; i++) {
+        double t = -1.0 + 2.0 * (i + 0.5) / n;
+        double k = (0.25 + 0.5 * t + (5.0 / 32.0) * (3.0 * t * t - 1.0)) / 3.14159265358979323846;
+        sum += fabs(k) * 2.0 / n;
+    }
+    return 2.0 * 3.14159265358979323846 * sum;
+}
+
+/* A cube sampled from the test sky renders as that sky given as equirectangular, within what the
+ * resampling moves: the cube goes back to an equirectangular image E' (tl_environment_cube_to_equirect)
+ * that differs from E by at most dmax per texel. The sky pass interpolates texels (a convex
+ * combination): |sky' - sky| <= dmax. The bake is linear in the image: the prefiltered chain is made
+ * of convex combinations (<= dmax) times F0 A + B <= 1; the diffuse E / pi moves by at most dmax
+ * times the SH kernel's L1 norm K, times the albedo (0.5 at most here). Each HDR value is FP16 in
+ * both frames: 2 x 2^-11 of the value more. */
+TL_TEST(environment_cube_matches_equirect)
+{
+    sphere_row *g = malloc(sizeof *g);
+    float *env = environment_image(), *back = malloc((size_t)ENV_W * ENV_H * 3 * sizeof(float)), *pos = NULL, *ref = NULL;
+    tl_environment_cube_desc c;
+    float *faces = env ? cube_from_equirect(env, &c) : NULL;
+    TL_CHECK(g && env && back && faces);
+    if (!g || !env || !back || !faces) return;
+    sphere_row_build(g);
+    tl_environment_cube_to_equirect(&c, back);
+    double dmax = 0.0, k_sh = sh_kernel_l1();
+    for (size_t i = 0; i < (size_t)ENV_W * ENV_H * 3; i++) dmax = fmax(dmax, fabs((double)back[i] - env[i]));
+    render_rows(g, (tl_renderer_options){.mode = TL_MODE_FAT}, env, &ref, &pos, NULL);
+    tl_renderer *r = make((tl_renderer_options){.mode = TL_MODE_FAT});
+    float *hdr = NULL;
+    int ok = r && tl_renderer_set_scene(r, &g->s) == TL_OK && tl_renderer_set_environment_cube(r, &c) == TL_OK &&
+             tl_renderer_render(r, NULL, NULL) == TL_OK && tl_renderer_wait(r, NULL) == TL_OK &&
+             (hdr = tl_test_read_target(r, TL_TARGET_HDR, (size_t)W * H)) != NULL;
+    TL_CHECK(ok && ref && pos);
+    size_t sky = 0, lit = 0, over = 0;
+    double sky_max = 0.0, sphere_max = 0.0, sphere_sum = 0.0;
+    for (size_t y = 0; ok && ref && pos && y < H; y++)
+        for (size_t x = 0; x < W; x++) {
+            size_t i = y * W + x;
+            double n[3];
+            int background = background_inside(pos, x, y), sphere = pos[i * 4 + 3] != 0.0f && sphere_of(g, pos + i * 4, n) >= 0;
+            if (!background && !sphere) continue;
+            double bound = background ? dmax : dmax * (1.0 + 0.5 * k_sh);
+            for (int k = 0; k < 3; k++) {
+                double d = fabs((double)hdr[i * 4 + k] - ref[i * 4 + k]), b = bound + 2.0 * ldexp(fabs(ref[i * 4 + k]), -11);
+                over += d > b;
+                if (background) sky_max = fmax(sky_max, d);
+                else sphere_max = fmax(sphere_max, d), sphere_sum += d;
+            }
+            sky += background, lit += sphere;
+        }
+    printf("  cube %ux%u: round trip max |E' - E| %.4g (K %.4f); sky %zu px, max diff %.4g; spheres %zu px, max diff "
+           "%.4g, mean %.4g; %zu values over the bound\n",
+           CUBE_N, CUBE_N, dmax, k_sh, sky, sky_max, lit, sphere_max, lit ? sphere_sum / (3.0 * lit) : 0.0, over);
+    TL_CHECK_LE(W * H / 4, sky);
+    TL_CHECK_LE(W * H / 20, lit);
+    TL_CHECK_EQ_U(over, 0);
+    tl_renderer_destroy(r);
+    free(hdr);
+    free(ref);
+    free(pos);
+    free(faces);
+    free(back);
+    free(env);
+    free(g);
+}
+
+/* A bad cube is refused with TL_ERROR_INVALID_ARGUMENT and one line naming the face and the problem. */
+TL_TEST(environment_cube_bad_input_refused)
+{
+    float *env = environment_image();
+    tl_environment_cube_desc good;
+    float *faces = env ? cube_from_equirect(env, &good) : NULL;
+    tl_renderer *r = make((tl_renderer_options){0});
+    TL_CHECK(r && faces && tl_renderer_set_environment_cube(r, &good) == TL_OK);
+    if (!r || !faces) return;
+    float *nan_face = malloc((size_t)CUBE_N * CUBE_N * 3 * sizeof(float));
+    memcpy(nan_face, good.faces[3].rgb, (size_t)CUBE_N * CUBE_N * 3 * sizeof(float));
+    nan_face[(5 * CUBE_N + 7) * 3 + 1] = NAN;
+    const char *want[5] = {"face -X is 64x32, not square", "face +Y is 32x32, face +X 64x64", "face -Y has a NaN at pixel (7, 5)",
+                           "face +Z has no pixels", "face +X is 0x0, not square"};
+    for (int k = 0; k < 5; k++) {
+        tl_environment_cube_desc bad = good;
+        if (k == 0) bad.faces[1].height = CUBE_N / 2;
+        if (k == 1) bad.faces[2].width = bad.faces[2].height = CUBE_N / 2;
+        if (k == 2) bad.faces[3].rgb = nan_face;
+        if (k == 3) bad.faces[4].rgb = NULL;
+        if (k == 4) bad.faces[0].width = bad.faces[0].height = 0;
+        TL_CHECK(tl_renderer_set_environment_cube(r, &bad) == TL_ERROR_INVALID_ARGUMENT);
+        printf("  %s\n", tl_renderer_last_error(r));
+        TL_CHECK(strstr(tl_renderer_last_error(r), want[k]) != NULL);
+    }
+    TL_CHECK(tl_renderer_set_environment_cube(NULL, &good) == TL_ERROR_INVALID_ARGUMENT);
+    tl_renderer_destroy(r);
+    free(nan_face);
+    free(faces);
+    free(env);
+}
+
 #if TL_TEST_WITH_IO
 /* An environment written as OpenEXR (full float) reads back as the same floats; a missing file is
  * TL_ERROR_IO and a file that is no image TL_ERROR_PARSE, never a crash. */

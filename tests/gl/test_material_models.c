@@ -156,6 +156,134 @@ TL_TEST(material_models_exact_ones_match_forward)
     tl_scene_destroy(s);
 }
 
+/* A plan of `f` at 64x64 with the clearcoat choice `cc` (and a light scale). */
+static void coat_plan(const tl_scene_feature_set *f, tl_clearcoat_lighting cc, float scale, tl_frame_plan *p)
+{
+    tl_renderer_desc d = {.width = 64, .height = 64, .options = {.clearcoat = cc, .light_scale = scale}};
+    TL_CHECK(tl_frame_plan_build(&d, f, p) == TL_OK);
+}
+
+/* Two plans the same: passes, targets, bytes and every program's switches. */
+static int plans_equal(const tl_frame_plan *a, const tl_frame_plan *b)
+{
+    int same = a->pass_count == b->pass_count && a->targets == b->targets && a->program_count == b->program_count &&
+               a->allocated_bytes_per_pixel == b->allocated_bytes_per_pixel && a->bytes_per_pixel == b->bytes_per_pixel;
+    for (size_t i = 0; same && i < a->pass_count; i++)
+        same = a->passes[i].reads == b->passes[i].reads && a->passes[i].writes == b->passes[i].writes;
+    for (size_t i = 0; same && i < a->program_count; i++)
+        same = !strcmp(a->programs[i].name, b->programs[i].name) && !strcmp(a->programs[i].defines, b->programs[i].defines);
+    return same;
+}
+
+/* TL_CLEARCOAT_SUMS: without a clearcoat drawn, the plan of every other model mix is the default's;
+ * with one, volumes and tiles (fragment and compute) write the coat's sum, the G-buffer its gloss:
+ * 1 + 8 B/px with RGBA16F; at a light scale below 1 it falls back to the approximation. */
+TL_TEST(material_models_clearcoat_sums_plan)
+{
+    static tl_frame_plan a, b;
+    uint32_t all = (1u << TL_MATERIAL_MODEL_COUNT_) - 1u, cc = 1u << TL_MATERIAL_MODEL_CLEARCOAT;
+    const uint32_t mixes[3] = {0u, 1u, all & ~cc};
+    for (int k = 0; k < 3; k++) {
+        tl_scene_feature_set f = {.point_lights = 4, .has_specular = 1, .has_microfacet = 1, .material_models = mixes[k]};
+        coat_plan(&f, TL_CLEARCOAT_DEFAULT, 1.0f, &a);
+        coat_plan(&f, TL_CLEARCOAT_SUMS, 1.0f, &b);
+        TL_CHECK(plans_equal(&a, &b));
+    }
+    const size_t lights[2] = {4, 64}; /* volumes, tiles */
+    for (int k = 0; k < 2; k++) {
+        tl_scene_feature_set f = {.point_lights = lights[k], .has_specular = 1, .has_microfacet = 1, .material_models = all};
+        coat_plan(&f, TL_CLEARCOAT_APPROXIMATE, 1.0f, &a);
+        coat_plan(&f, TL_CLEARCOAT_SUMS, 1.0f, &b);
+        uint32_t coat = TL_TARGET_BIT(TL_TARGET_COAT_GLOSS) | TL_TARGET_BIT(TL_TARGET_LIGHT_COAT);
+        TL_CHECK_EQ_U(a.targets & coat, 0);
+        TL_CHECK_EQ_U(b.targets & coat, coat);
+        TL_CHECK_EQ_U(b.target_bytes_per_pixel[TL_TARGET_COAT_GLOSS], 1);
+        TL_CHECK_EQ_U(b.target_bytes_per_pixel[TL_TARGET_LIGHT_COAT], 8);
+        TL_CHECK_EQ_U(b.bytes_per_pixel - a.bytes_per_pixel, 9);
+        size_t coat_programs = 0;
+        for (size_t i = 0; i < b.program_count; i++) coat_programs += strstr(b.programs[i].defines, "TL_COAT_SUMS") != NULL;
+        TL_CHECK_LE(3, coat_programs); /* the G-buffer's, a light pass's, the material pass's */
+        coat_plan(&f, TL_CLEARCOAT_SUMS, 0.5f, &b);
+        TL_CHECK_EQ_U(b.targets & coat, 0);
+    }
+}
+
+/* The showcase's spheres as standard ones (`coat`: each clearcoat sphere made a pure specular
+ * reflector of F0 1 at its coat's gloss, so its colour is the coat's sum S1 + S2 alone). */
+static tl_scene *standard_spheres(const tl_scene *s, int coat)
+{
+    tl_scene *c = tl_mm_standard_only(s);
+    for (size_t i = 0; c && coat && i + 1 < c->material_count; i++) {
+        if (s->materials[i].model != TL_MATERIAL_MODEL_CLEARCOAT) continue;
+        tl_material *m = &c->materials[i];
+        m->flags &= ~(uint32_t)TL_MATERIAL_METALLIC_ROUGHNESS;
+        m->albedo[0] = m->albedo[1] = m->albedo[2] = -1.0f;
+        m->specular[0] = m->specular[1] = m->specular[2] = 1.0f;
+        m->emissive[0] = m->emissive[1] = m->emissive[2] = 0.0f;
+        m->gloss = 1.0f - s->materials[i].clearcoat_roughness;
+    }
+    return c;
+}
+
+/* Errors of thin-lpp (clearcoat choice cc) against forward of `s`, per row of `layout`. */
+static int row_errors_cc(const tl_scene *layout, const tl_scene *s, tl_clearcoat_lighting cc, tl_mm_error *e)
+{
+    size_t n = (size_t)W * H;
+    float *a = malloc(n * 16), *f = malloc(n * 16);
+    uint8_t *rows = malloc(n);
+    tl_renderer_desc d = desc(TL_MODE_THIN_LPP);
+    d.options.clearcoat = cc;
+    int bad = !a || !f || !rows || tl_mm_rows(layout, desc(TL_MODE_FORWARD), rows) || tl_mm_render(s, d, 1, a, NULL) ||
+              tl_mm_render(s, desc(TL_MODE_FORWARD), 1, f, NULL);
+    if (!bad) tl_mm_compare(a, f, rows, n, e);
+    free(a);
+    free(f);
+    free(rows);
+    return bad;
+}
+
+/* The coat's own sums: the clearcoat is (1 - Fc) c_base + Fc coat, both terms formed from sums as
+ * exact as the standard model's, so per pixel its error is (1 - Fc) e_base + Fc e_coat, 0 <= Fc
+ * <= 1; over the row (Minkowski) its RMS is at most RMS(e_base) + RMS(e_coat), each measured here
+ * on standard spheres (the base; a pure specular of F0 1 at the coat's gloss). The bound in dB is
+ * -20 log10 of that sum (PSNR's peak is 1); the margin is the coat byte's gloss step (1/254 against
+ * RT0's 1/255) on a roughness-0.1 lobe, taken as the standard row's own spread between its two
+ * light strategies (volumes at 8 lights, tiles at 64). The approximation must be worse. */
+TL_TEST(material_models_clearcoat_sums_match_forward)
+{
+    if (!ensure_context()) return;
+    const uint32_t counts[2] = {8, 64};
+    double std_db[2] = {0.0, 0.0}, sums_db[2] = {0.0, 0.0}, bound_db[2] = {0.0, 0.0};
+    for (int k = 0; k < 2; k++) {
+        tl_scene *s = showcase(counts[k]), *base = s ? standard_spheres(s, 0) : NULL, *coat = s ? standard_spheres(s, 1) : NULL;
+        TL_CHECK(base && coat);
+        if (!base || !coat) return;
+        tl_mm_error sums[TL_MATERIAL_MODEL_COUNT_], approx[TL_MATERIAL_MODEL_COUNT_], eb[TL_MATERIAL_MODEL_COUNT_],
+            ec[TL_MATERIAL_MODEL_COUNT_];
+        TL_CHECK(row_errors_cc(s, s, TL_CLEARCOAT_SUMS, sums) == 0 && row_errors_cc(s, s, TL_CLEARCOAT_APPROXIMATE, approx) == 0 &&
+                 row_errors_cc(s, base, TL_CLEARCOAT_SUMS, eb) == 0 && row_errors_cc(s, coat, TL_CLEARCOAT_SUMS, ec) == 0);
+        const int cc = TL_MATERIAL_MODEL_CLEARCOAT;
+        double rms = pow(10.0, -eb[cc].psnr_db / 20.0) + pow(10.0, -ec[cc].psnr_db / 20.0);
+        double bound = -20.0 * log10(rms);
+        std_db[k] = sums[TL_MATERIAL_MODEL_STANDARD].psnr_db;
+        printf("  %u lights: clearcoat sums %.1f dB (max abs %.3g), approx %.1f dB (max abs %.3g); base %.1f dB, coat "
+               "%.1f dB: bound %.1f dB; standard row %.1f dB\n",
+               counts[k], sums[cc].psnr_db, sums[cc].max_abs, approx[cc].psnr_db, approx[cc].max_abs, eb[cc].psnr_db,
+               ec[cc].psnr_db, bound, std_db[k]);
+        TL_CHECK_EQ_U(sums[cc].nan_pixels, 0);
+        TL_CHECK_LE(W * H / 200, sums[cc].pixels);
+        sums_db[k] = sums[cc].psnr_db;
+        bound_db[k] = bound;
+        TL_CHECK_LE(approx[cc].psnr_db + 10.0, sums[cc].psnr_db);
+        tl_mm_free(base);
+        tl_mm_free(coat);
+        tl_scene_destroy(s);
+    }
+    double margin = fabs(std_db[1] - std_db[0]);
+    printf("  margin %.2f dB\n", margin);
+    for (int k = 0; k < 2; k++) TL_CHECK_LE(bound_db[k] - margin, sums_db[k]);
+}
+
 /* The deferred modes shade each light under the model the G-buffer stores (fat_models.glsl): unlit
  * is exact (no light at all), wrap, clearcoat (and fat's sheen) are forward's per-light terms with
  * their parameters quantized (fat: 8 bits, the sheen's colour 4; thin-deferred: 5 bits, the coat's
