@@ -59,6 +59,15 @@ vec2 tl_shadow_slope(tl_shadow_view sv, vec3 q, vec3 n, vec4 a, float step)
     return vec2(d1.z * d2.y - d2.z * d1.y, d2.z * d1.x - d1.z * d2.x) / det;
 }
 
+// The reference for a tap at uv: the normal offset (for the PCF radius) covers the taps within that
+// radius of a.xy; beyond it the reference follows the receiver's plane for the excess distance.
+float tl_shadow_plane(vec4 a, vec2 slope, vec2 uv)
+{
+    vec2 o = uv - a.xy;
+    float len = length(o), inner = u_shadow_params.y * u_shadow_params.x;
+    return len > inner ? a.z + dot(slope, o) * (1.0 - inner / len) : a.z;
+}
+
 // The mean light distance of the texels in front of the receiver's plane within `radius` texels of
 // uv (4 x 4 gathers, 64 texels); -1 when there is none.
 float tl_shadow_blockers(tl_shadow_view sv, vec4 a, vec2 slope, float radius, vec2 lo, vec2 hi)
@@ -67,7 +76,7 @@ float tl_shadow_blockers(tl_shadow_view sv, vec4 a, vec2 slope, float radius, ve
     for (int y = 0; y < 4; y++)
         for (int x = 0; x < 4; x++) {
             vec2 uv = clamp(a.xy + (vec2(x, y) - 1.5) * step, lo, hi);
-            float ref = a.z + dot(slope, uv - a.xy);
+            float ref = tl_shadow_plane(a, slope, uv);
             vec4 d = textureGather(u_shadow_depth, uv);
             vec4 b = u_shadow_flags.x != 0u ? vec4(greaterThan(d, vec4(ref))) : vec4(lessThan(d, vec4(ref)));
             for (int k = 0; k < 4; k++) sum += b[k] * tl_shadow_distance(sv, d[k]);
@@ -87,7 +96,7 @@ float tl_shadow_disc(vec4 a, vec2 slope, float r, vec2 lo, vec2 hi)
             vec2 o = (vec2(x, y) - centre) * step;
             if (dot(o, o) > r * r) continue;
             vec2 uv = clamp(a.xy + o * u_shadow_params.x, lo, hi);
-            sum += tl_shadow_tap(uv, a.z + dot(slope, uv - a.xy));
+            sum += tl_shadow_tap(uv, tl_shadow_plane(a, slope, uv));
             count += 1.0;
         }
     return sum / max(count, 1.0);

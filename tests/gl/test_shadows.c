@@ -293,8 +293,8 @@ static tl__soft_error tl__soft_measure(const tl_shadow_case *c, size_t light, co
     return e;
 }
 
-/* PCF and PCSS in one configuration: PCSS is nearer the area truth in the penumbra and over the
- * whole image, and outside the penumbra it has no more acne than PCF and stays within 0.5 %. */
+/* PCF and PCSS in one configuration: PCSS is nearer the area truth in the penumbra (at most half
+ * PCF's error) and over the whole image, and outside the penumbra it has no more acne than PCF and stays within 0.5 %. */
 static void tl__pcss_against_pcf(const tl_shadow_case *c, size_t light, const tl__area_truth *t, tl_renderer_options o,
                                  const char *what, uint32_t w, uint32_t h)
 {
@@ -304,8 +304,8 @@ static void tl__pcss_against_pcf(const tl_shadow_case *c, size_t light, const tl
     o.shadows.filter = TL_SHADOW_FILTER_PCSS;
     tl__soft_error pcss = tl__soft_measure(c, light, t, o, what, w, h, &out_pcss);
     TL_CHECK(pcf.penumbra_pixels >= 200);
-    TL_CHECK_LE(pcss.penumbra, 0.8 * pcf.penumbra);
-    TL_CHECK_LE(pcss.all, pcf.all);
+    TL_CHECK_LE(pcss.penumbra, 0.5 * pcf.penumbra);
+    TL_CHECK(pcss.all < pcf.all);
     TL_CHECK_LE(out_pcss.acne, out_pcf.acne);
     TL_CHECK_LE(out_pcss.wrong, 0.005);
 }
@@ -330,6 +330,39 @@ TL_TEST(shadows_pcss_penumbra_against_area_truth)
             for (size_t k = 0; k < configs; k++)
                 tl__pcss_against_pcf(&c, l, &t, tl__options(&tl__configs[k], depth), tl__configs[k].name, w, h);
         }
+        tl__area_free(&t);
+    }
+    tl_shadow_case_free(&c);
+}
+
+/* The crypt's casting lights (the braziers' spheres 0.15 m, the lantern's 0.1 m, the moonlight's
+ * disc 0.27 degrees in radius) at 320x180, thin-lpp light volumes and reversed D32F: PCSS against
+ * the area truth, figures printed. Asserted: where the penumbra covers at least 200 pixels (the
+ * braziers) PCSS is nearer the truth than PCF there and over the image; for every light, outside
+ * the penumbra, no more acne than PCF and at most 0.5 % wrong. TL_SHADOW_SIZE=WxH measures at
+ * another size. */
+TL_TEST(shadows_pcss_crypt_against_area_truth)
+{
+    tl_shadow_case c;
+    TL_CHECK(tl_shadow_crypt_case(&c, 0));
+    uint32_t w = 320, h = 180;
+    const char *size = getenv("TL_SHADOW_SIZE");
+    if (size && sscanf(size, "%ux%u", &w, &h) != 2) w = 320, h = 180;
+    tl_renderer_options o = tl__options(&tl__configs[0], TL_DEPTH_FORMAT_D32F_REVERSED);
+    for (size_t l = 0; l < c.light_count; l++) {
+        tl__area_truth t;
+        TL_CHECK(tl__area_make(&c, &c.lights[l], 0.00465f, w, h, &t));
+        tl_shadow_error out_pcf, out_pcss;
+        o.shadows.filter = TL_SHADOW_FILTER_PCF;
+        tl__soft_error pcf = tl__soft_measure(&c, l, &t, o, "crypt mode=thin-lpp", w, h, &out_pcf);
+        o.shadows.filter = TL_SHADOW_FILTER_PCSS;
+        tl__soft_error pcss = tl__soft_measure(&c, l, &t, o, "crypt mode=thin-lpp", w, h, &out_pcss);
+        if (pcf.penumbra_pixels >= 200) { /* the braziers; the lantern's penumbra is 88 pixels, the moon's none */
+            TL_CHECK(pcss.penumbra < pcf.penumbra);
+            TL_CHECK(pcss.all < pcf.all);
+        }
+        TL_CHECK_LE(out_pcss.acne, out_pcf.acne);
+        TL_CHECK_LE(out_pcss.wrong, 0.005);
         tl__area_free(&t);
     }
     tl_shadow_case_free(&c);
