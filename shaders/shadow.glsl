@@ -5,7 +5,8 @@
 // kernel's reach and the two depth formats' quantisation (never a tuned constant):
 //   along n: (r + 1) w sin(theta) + e_gbuffer(z),   along l: e_atlas(w)
 // where w is the texel's world size at the point, r the kernel radius, theta the angle between n
-// and l, e_gbuffer the rebuilt position's error and e_atlas the atlas depth's quantum.
+// and l, e_gbuffer the rebuilt position's error and e_atlas the atlas depth's quantum. With TL_PCSS
+// the view is filtered by shadow_pcss.glsl instead of the fixed PCF kernel.
 #ifndef TL_SHADOW_GLSL
 #define TL_SHADOW_GLSL
 

@@ -1,7 +1,8 @@
 /* Shadows (docs/shadows.md) against ray-traced truth (Embree, tests/common/reference/shadow_rt.c):
  * the fraction of pixels whose lit or shadowed state differs from the truth outside the penumbra
  * (acne and leaks apart), per mode, strategy and depth format, on the stiff scene and the crypt;
- * and what the planner and the cache promise. Figures go to stdout. */
+ * and what the planner and the cache promise; PCSS against the truth of lights with a size (area
+ * sampling), in the penumbra and outside it. Figures go to stdout. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
