@@ -24,7 +24,8 @@ static const char usage_head[] =
     "  --shadow-pcf R        PCF kernel radius in texels (default 1; 0: one bilinear tap; 0..3)\n"
     "  --shadow-filter F     pcf (default) or pcss: soft shadows whose penumbra widens away from the\n"
     "                        contact, from tl_light.source_radius (point, spot) and --shadow-sun-angle\n"
-    "  --shadow-sun-angle D  PCSS: directional lights' angular radius in degrees (default 0.266; 0..11.4)\n"
+    "  --shadow-sun-angle D  PCSS: directional lights' angular radius in degrees (default 0.266;\n"
+    "                        above 0, up to 11.4)\n"
     "  --shadow-move         every frame after the first, the first casting local light moves 1 cm\n"
     "                        (measures the shadow cache with one light moving)\n"
     "  --shadow-move-object  every frame after the first, the object nearest that light moves 1 cm\n"
@@ -102,7 +103,9 @@ static int render_option(render_args *a, const tl_opt_table *tables, size_t ntab
     case R_SHADOW_MOVE: a->shadow_move = 1; break;
     case R_SHADOW_MOVE_OBJECT: a->shadow_move = 2; break;
     case R_SHADOW_FILTER: a->rd.options.shadows.filter = (tl_shadow_filter)v->u[0]; break;
-    case R_SHADOW_SUN_ANGLE: a->rd.options.shadows.directional_angle = (float)(v->f[0] * 3.14159265358979323846 / 180.0); break;
+    case R_SHADOW_SUN_ANGLE:
+        a->rd.options.shadows.directional_angle = (float)(v->f[0] * 3.14159265358979323846 / 180.0);
+        break;
     case R_SHADOW_PCF:
         a->rd.options.shadows.pcf_radius = (uint32_t)v->u[0];
         a->rd.options.shadows.no_pcf = v->u[0] == 0;
