@@ -434,8 +434,8 @@ tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights 
     if (res == TL_OK && !s->program) res = tl__program_get(dev, "shadow.depth", &src, "", &s->program);
     if (res != TL_OK) return res;
     int reversed = o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
-    int pcss = o->shadows.filter == TL_SHADOW_FILTER_PCSS;
-    uint32_t reach = pcss && TL__SHADOW_PCSS_RADIUS > o->shadows.pcf_radius ? TL__SHADOW_PCSS_RADIUS : o->shadows.pcf_radius;
+    /* the views hold the largest kernel: the PCF radius, or PCSS's largest */
+    uint32_t reach = o->shadows.filter == TL_SHADOW_FILTER_PCSS ? TL__SHADOW_PCSS_RADIUS : o->shadows.pcf_radius;
     tl__view_ctx c = {v, tl__rigid_inverse(&v->view), o->shadows.atlas_size, reach, reversed, 0.0f, g};
     size_t casting = tl__shadow_order(s, l, v);
     size_t selected = tl__shadow_fades(s, casting, o->shadows.max_lights);
