@@ -22,6 +22,10 @@ static const char usage_head[] =
     "  --shadow-no-cache     render every shadow map every frame (default: unchanged maps are kept)\n"
     "  --shadow-max N        casting lights given a map per frame (default 8; 1..64)\n"
     "  --shadow-pcf R        PCF kernel radius in texels (default 1; 0: one bilinear tap; 0..3)\n"
+    "  --shadow-filter F     pcf (default) or pcss: soft shadows whose penumbra widens away from the\n"
+    "                        contact, from tl_light.source_radius (point, spot) and --shadow-sun-angle\n"
+    "  --shadow-sun-angle D  PCSS: directional lights' angular radius in degrees (default 0.266;\n"
+    "                        above 0, up to 11.4)\n"
     "  --shadow-move         every frame after the first, the first casting local light moves 1 cm\n"
     "                        (measures the shadow cache with one light moving)\n"
     "  --shadow-move-object  every frame after the first, the object nearest that light moves 1 cm\n"
@@ -40,7 +44,11 @@ static const char usage_tail[] =
     "Exit status: 0 success, 1 bad input (an unreadable scene, an unwritable output, a frame over\n"
     "the target-memory budget), 2 bad usage (an unknown option, a malformed or out-of-range value).\n";
 
-enum { R_HELP, R_LIST, R_OUT, R_DUMP, R_SIZE, R_LIGHTS, R_SPOTS, R_NO_DIRECTIONAL, R_SEED, R_FRAMES, R_STATS, R_PLAN, R_GLASS, R_SHADOWS, R_SHADOW_NO_CACHE, R_SHADOW_MAX, R_SHADOW_PCF, R_SHADOW_MOVE, R_SHADOW_MOVE_OBJECT };
+enum { R_HELP, R_LIST, R_OUT, R_DUMP, R_SIZE, R_LIGHTS, R_SPOTS, R_NO_DIRECTIONAL, R_SEED, R_FRAMES, R_STATS, R_PLAN, R_GLASS, R_SHADOWS, R_SHADOW_NO_CACHE, R_SHADOW_MAX, R_SHADOW_PCF, R_SHADOW_MOVE, R_SHADOW_MOVE_OBJECT,
+       R_SHADOW_FILTER, R_SHADOW_SUN_ANGLE };
+
+static const char *const shadow_filter_names[] = {"pcf", "pcss", NULL};
+static const int shadow_filter_values[] = {TL_SHADOW_FILTER_PCF, TL_SHADOW_FILTER_PCSS};
 
 static const tl_opt render_opts[] = {
     {"--help", TL_OPT_FLAG, .id = R_HELP},
@@ -61,6 +69,9 @@ static const tl_opt render_opts[] = {
     {"--shadow-no-cache", TL_OPT_FLAG, .id = R_SHADOW_NO_CACHE},
     {"--shadow-max", TL_OPT_UINT, .id = R_SHADOW_MAX, .lo = 1, .hi = 64},
     {"--shadow-pcf", TL_OPT_UINT, .id = R_SHADOW_PCF, .lo = 0, .hi = 3},
+    {"--shadow-filter", TL_OPT_TEXT, .id = R_SHADOW_FILTER, .choices = shadow_filter_names,
+     .values = shadow_filter_values},
+    {"--shadow-sun-angle", TL_OPT_REAL, .id = R_SHADOW_SUN_ANGLE, .min = 0.0, .max = 11.4, .flags = TL_OPT_MIN_OPEN},
     {"--shadow-move", TL_OPT_FLAG, .id = R_SHADOW_MOVE},
     {"--shadow-move-object", TL_OPT_FLAG, .id = R_SHADOW_MOVE_OBJECT},
 };
@@ -91,6 +102,10 @@ static int render_option(render_args *a, const tl_opt_table *tables, size_t ntab
     case R_SHADOW_MAX: a->rd.options.shadows.max_lights = (uint32_t)v->u[0]; break;
     case R_SHADOW_MOVE: a->shadow_move = 1; break;
     case R_SHADOW_MOVE_OBJECT: a->shadow_move = 2; break;
+    case R_SHADOW_FILTER: a->rd.options.shadows.filter = (tl_shadow_filter)v->u[0]; break;
+    case R_SHADOW_SUN_ANGLE:
+        a->rd.options.shadows.directional_angle = (float)(v->f[0] * 3.14159265358979323846 / 180.0);
+        break;
     case R_SHADOW_PCF:
         a->rd.options.shadows.pcf_radius = (uint32_t)v->u[0];
         a->rd.options.shadows.no_pcf = v->u[0] == 0;

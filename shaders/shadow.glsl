@@ -5,7 +5,8 @@
 // kernel's reach and the two depth formats' quantisation (never a tuned constant):
 //   along n: (r + 1) w sin(theta) + e_gbuffer(z),   along l: e_atlas(w)
 // where w is the texel's world size at the point, r the kernel radius, theta the angle between n
-// and l, e_gbuffer the rebuilt position's error and e_atlas the atlas depth's quantum.
+// and l, e_gbuffer the rebuilt position's error and e_atlas the atlas depth's quantum. With TL_PCSS
+// the view is filtered by shadow_pcss.glsl instead of the fixed PCF kernel.
 #ifndef TL_SHADOW_GLSL
 #define TL_SHADOW_GLSL
 
@@ -15,6 +16,7 @@ struct tl_shadow_view {
     mat4 m;      // view space to the view's clip space
     vec4 rect;   // atlas uv offset (xy) and scale (zw) of the view's tile
     vec4 texel;  // x: texel world size per clip w; y, z, w: atlas depth quantum c0 + c1 w + c2 w^2 (world)
+    vec4 depth;  // PCSS: stored depth d to light distance z (w = 1: 1/z = x d + y; else z = x d + y), z: light size in texels
 };
 struct tl_shadow_light {
     uvec4 info;  // first view, view count, kind (1 point, 2 spot, 3 directional), 0
@@ -22,14 +24,19 @@ struct tl_shadow_light {
     vec4 splits; // cascades: the view depth where each ends
 };
 // A uniform block, not a storage buffer: on llvmpipe the lookup's per-lane storage loads were most
-// of the shadows' cost (docs/shadows.md, Cost); 32 + 64 x 48 + 384 x 96 bytes = 39 KiB.
+// of the shadows' cost (docs/shadows.md, Cost); 32 + 64 x 48 + 384 x 112 bytes = 45 KiB.
 layout(std140, binding = TL_UBO_SHADOWS) uniform tl_shadow_block {
     vec4 u_shadow_params;   // 1 / atlas side, PCF radius, G-buffer error: a z + b z^2 (a, b)
-    uvec4 u_shadow_flags;   // x: reversed depth (atlas compare GEQUAL)
+    uvec4 u_shadow_flags;   // x: reversed depth (atlas compare GEQUAL), y: PCSS's largest radius in texels
     tl_shadow_light tl_shadow_lights[TL_SHADOW_LIGHTS];
     tl_shadow_view tl_shadow_views[TL_SHADOW_VIEWS];
 };
+#ifdef TL_PCSS
+// PCSS reads the atlas's depth values (a sampler without compare, shadows.c) and compares itself
+layout(binding = TL_UNIT_SHADOW_ATLAS) uniform sampler2D u_shadow_depth;
+#else
 layout(binding = TL_UNIT_SHADOW_ATLAS) uniform sampler2DShadow u_shadow_atlas;
+
 
 // The view's PCF result at view-space point q (already biased); 1 outside the tile. One tap site
 // for every radius: (2 r)^2 bilinear compare taps half a texel off the grid cover the (2 r + 1)^2
@@ -50,9 +57,11 @@ float tl_shadow_sample(tl_shadow_view sv, vec3 q)
             sum += texture(u_shadow_atlas, vec3(clamp(uv + (vec2(x, y) - centre) * t, lo, hi), ref));
     return sum / float(taps * taps);
 }
+#endif
 
-// p biased for view sv whose clip w at p is w: n and l unit, view space (l towards the light).
-vec3 tl_shadow_biased(tl_shadow_view sv, float w, vec3 p, vec3 n, vec3 l)
+// p biased for view sv whose clip w at p is w for a kernel of radius r texels: n and l unit, view
+// space (l towards the light).
+vec3 tl_shadow_biased(tl_shadow_view sv, float w, vec3 p, vec3 n, vec3 l, float r)
 {
     w = max(w, 0.0);
     float texel = sv.texel.x * w;
@@ -60,8 +69,11 @@ vec3 tl_shadow_biased(tl_shadow_view sv, float w, vec3 p, vec3 n, vec3 l)
     float z = -p.z;
     float e_gbuffer = u_shadow_params.z * z + u_shadow_params.w * z * z;
     float e_atlas = sv.texel.y + sv.texel.z * w + sv.texel.w * w * w;
-    return p + n * ((u_shadow_params.y + 1.0) * texel * sin_t + e_gbuffer) + l * e_atlas;
+    return p + n * ((r + 1.0) * texel * sin_t + e_gbuffer) + l * e_atlas;
 }
+#ifdef TL_PCSS
+#include "shadow_pcss.glsl"
+#endif
 
 // The cascade of view depth z for a directional light's split ends (4: beyond the last) and, over
 // the last 10 % of its slice, the blend weight towards the next cascade (0 before).
@@ -97,14 +109,18 @@ float tl_shadow(float slot, vec3 p, vec3 n, vec3 l, vec3 light)
         v += a.x >= a.y && a.x >= a.z ? (d.x >= 0.0 ? 0u : 1u) : a.y >= a.z ? (d.y >= 0.0 ? 2u : 3u) : (d.z >= 0.0 ? 4u : 5u);
     }
     // kernel and offset stay inside the next cascade's tile; a spot or face view must hold p
-    float margin = 1.0 - 2.0 * (u_shadow_params.y + 2.0) / sl.fade.y, s = 1.0;
+    float margin = 1.0 - 2.0 * (max(u_shadow_params.y, float(u_shadow_flags.y)) + 2.0) / sl.fade.y, s = 1.0;
     for (int k = 0; k < views; k++) {
         tl_shadow_view sv = tl_shadow_views[v + uint(k)];
         vec4 c = sv.m * vec4(p, 1.0);
         float extent = c.w > 0.0 ? max(abs(c.x), abs(c.y)) / c.w : 2.0;
         if (k == 0 && sl.info.z != 3u && extent > 1.0) return 1.0;
         if (k == 1 && extent > margin) break;
-        float sk = tl_shadow_sample(sv, tl_shadow_biased(sv, c.w, p, n, l));
+#ifdef TL_PCSS
+        float sk = tl_shadow_pcss(sv, c.w, p, n, l);
+#else
+        float sk = tl_shadow_sample(sv, tl_shadow_biased(sv, c.w, p, n, l, u_shadow_params.y));
+#endif
         s = k == 0 ? sk : mix(s, sk, blend);
     }
     return mix(1.0, s, sl.fade.x);

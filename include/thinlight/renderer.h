@@ -279,10 +279,20 @@ typedef struct tl_vignette_desc {
     float softness; /**< the fall-off's width (same unit); default 0.5 */
 } tl_vignette_desc;
 
+/** How the shadow atlas is filtered (tl_shadow_desc.filter; docs/shadows.md). */
+typedef enum tl_shadow_filter {
+    TL_SHADOW_FILTER_DEFAULT = 0, /**< PCF */
+    TL_SHADOW_FILTER_PCF,         /**< percentage-closer filtering with a fixed kernel (pcf_radius) */
+    /** Percentage-closer soft shadows: a blocker search in the view's tile, then a PCF whose radius
+     *  follows the penumbra of the light's size (tl_light.source_radius for point and spot lights,
+     *  tl_shadow_desc.directional_angle for directional ones), at least pcf_radius. */
+    TL_SHADOW_FILTER_PCSS
+} tl_shadow_filter;
+
 /** Shadows of the lights with tl_light.shadow (docs/shadows.md): one depth atlas holding a
  *  perspective map per spot light, six cube faces per point light and four stable cascades per
- *  directional light; looked up with PCF and a bias derived from the texel size and the depth
- *  formats. Zeroed: the defaults below (shadows on for lights that ask for them). */
+ *  directional light; looked up with PCF (or PCSS) and a bias derived from the texel size and the
+ *  depth formats. Zeroed: the defaults below (shadows on for lights that ask for them). */
 typedef struct tl_shadow_desc {
     int disabled;         /**< 1: no light casts, whatever tl_light.shadow says */
     uint32_t atlas_size;  /**< the atlas's side in texels, 1024..16384, a power of two; default 4096 */
@@ -290,6 +300,10 @@ typedef struct tl_shadow_desc {
     uint32_t pcf_radius;  /**< PCF kernel: (2 r + 1)^2 bilinear compare taps, r in 0..3; 0 means the default 1 */
     int no_pcf;           /**< 1: a single bilinear compare tap (the kernel r = 0) */
     int no_cache;         /**< 1: every map is rendered every frame (default: unchanged maps are kept) */
+    tl_shadow_filter filter; /**< default PCF; PCSS for penumbrae that widen away from the contact */
+    /** PCSS: the angular radius of directional lights' discs, radians, 0..0.2; 0 means the default
+     *  0.00465 (the sun's and the full moon's). */
+    float directional_angle;
 } tl_shadow_desc;
 /** What is seen where no geometry is drawn, and how bright the environment is (docs/renderer.md,
  *  "Background and environment"). Zeroed: black, and an environment (if one is set) as it is. */

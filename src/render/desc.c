@@ -43,7 +43,7 @@ static int tl__general_resolve(tl_renderer_options *o, const char **bad)
         {!isfinite(o->ambient[0]) || !isfinite(o->ambient[1]) || !isfinite(o->ambient[2]), "ambient"},
         {o->tile_size != 8 && o->tile_size != 16 && o->tile_size != 32, "tile_size (8, 16 or 32)"},
         {o->light_scale != 1.0f && o->light_scale != 0.5f && o->light_scale != 0.25f, "light_scale (1, 0.5 or 0.25)"},
-        {!tl__shadow_desc_valid(&o->shadows), "shadows (atlas_size a power of two in 1024..16384, max_lights 1..64, pcf_radius 0..3)"},
+        {!tl__shadow_desc_valid(&o->shadows), "shadows (atlas_size a power of two in 1024..16384, max_lights 1..64, pcf_radius 0..3, filter PCF or PCSS, directional_angle 0..0.2)"},
         {o->msaa != 1 && o->msaa != 2 && o->msaa != 4 && o->msaa != 8, "msaa (0, 1, 2, 4 or 8 samples)"},
         {(unsigned)o->msaa_lighting >= TL_MSAA_LIGHTING_COUNT_, "msaa_lighting"},
         {(unsigned)o->clearcoat >= TL_CLEARCOAT_COUNT_, "clearcoat"},

@@ -53,7 +53,7 @@ typedef struct tl__plan_input {
     char lighting_reason[96];
     /* every lighting program's model switches: TL_SPECULAR_EXACT, TL_SPECULAR_COMPACT or
      * TL_SPECULAR_NONE, then TL_GGX with GGX, then TL_FRESNEL_SUMS or TL_FRESNEL_NV in thin-lpp */
-    char spec_define[52];
+    char spec_define[64];
     const char *rt0_define;     /* TL_RT0_RGBA8 or TL_RT0_RGB10A2 */
     char material_defines[128]; /* the geometry passes' material switches (leading space each) */
     uint32_t msaa;              /* samples of the multisampled targets (tl__msaa_samples), 1: no MSAA */
@@ -93,7 +93,7 @@ typedef struct tl__pass_decl {
 /* The defines of each of a pass's programs ("" leaves the slot out); `overflow`: a permutation's
  * switches did not fit (the planner refuses the plan rather than build a program missing one). */
 typedef struct tl__pass_defines {
-    char slot[TL__PASS_MAX_PROGRAMS][224];
+    char slot[TL__PASS_MAX_PROGRAMS][256];
     uint8_t used[TL__PASS_MAX_PROGRAMS];
     uint8_t overflow;
 } tl__pass_defines;

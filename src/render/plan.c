@@ -69,13 +69,15 @@ static void tl__plan_lighting(tl__plan_input *in)
 }
 
 /* Shadows (docs/shadows.md): only with a casting light that some lighting pass evaluates; every
- * lighting program then has TL_SHADOWS. Without one the plan is exactly the plan without shadows. */
+ * lighting program then has TL_SHADOWS (and TL_PCSS with that filter). Without one the plan is
+ * exactly the plan without shadows. */
 static void tl__plan_shadows(tl__plan_input *in)
 {
     if (!in->lights || !in->f.shadow_lights || in->o->shadows.disabled) return;
     in->shadows = (uint32_t)in->f.shadow_lights;
     size_t n = strlen(in->spec_define);
-    snprintf(in->spec_define + n, sizeof in->spec_define - n, " TL_SHADOWS");
+    snprintf(in->spec_define + n, sizeof in->spec_define - n, " TL_SHADOWS%s",
+             in->o->shadows.filter == TL_SHADOW_FILTER_PCSS ? " TL_PCSS" : "");
 }
 
 /* Stipple or forward for the alpha-blended materials (docs/frame.md, "2d. Transparency through the

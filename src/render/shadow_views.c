@@ -17,13 +17,16 @@ void tl__shadow_desc_resolve(tl_shadow_desc *s)
     if (!s->max_lights) s->max_lights = 8;
     if (!s->pcf_radius) s->pcf_radius = 1;
     if (s->no_pcf) s->pcf_radius = 0;
+    if (s->filter == TL_SHADOW_FILTER_DEFAULT) s->filter = TL_SHADOW_FILTER_PCF;
+    if (s->directional_angle == 0.0f) s->directional_angle = 0.00465f;
 }
 
 int tl__shadow_desc_valid(const tl_shadow_desc *s)
 {
     uint32_t a = s->atlas_size;
     return a >= 1024 && a <= 16384 && (a & (a - 1)) == 0 && s->max_lights >= 1 &&
-           s->max_lights <= TL__SHADOW_MAX_LIGHTS && s->pcf_radius <= 3;
+           s->max_lights <= TL__SHADOW_MAX_LIGHTS && s->pcf_radius <= 3 && s->filter >= TL_SHADOW_FILTER_PCF &&
+           s->filter <= TL_SHADOW_FILTER_PCSS && s->directional_angle > 0.0f && s->directional_angle <= 0.2f;
 }
 
 /* ---- matrices ----------------------------------------------------------------------------------- */
@@ -183,8 +186,9 @@ typedef struct tl__view_ctx {
     const tl__view *v;
     tl__mat4 view_inv;   /* camera view to world */
     uint32_t atlas;      /* side in texels */
-    uint32_t pcf;        /* kernel radius */
+    uint32_t pcf;        /* kernel radius (PCSS: its largest) */
     int reversed;
+    float light_size;    /* PCSS: the light's radius (world) or its disc's angular radius's tangent */
     const tl__scene_gpu *g;
 } tl__view_ctx;
 
@@ -228,6 +232,19 @@ uint64_t tl__shadow_casters(const tl__scene_gpu *g, const tl__mat4 *world_clip,
     return h;
 }
 
+/* PCSS: the stored depth d to the light-space distance z (perspective: 1/z = x d + y, from clip
+ * z = P22 z_view + P23 and w = -z_view; orthographic: z = x d + y) and the light's size in texels
+ * (a radius R at the light: R / texel per w; a disc of angular radius a: tan a / texel). */
+static void tl__view_depth(tl__shadow_view_gpu *gv, const tl__mat4 *proj, float texel_per_w, float size, int persp,
+                           int reversed)
+{
+    float a = proj->m[10], b = proj->m[14], k = reversed ? 1.0f : 2.0f, o = reversed ? 0.0f : 1.0f;
+    gv->depth[0] = persp ? k / b : -k / a;
+    gv->depth[1] = persp ? (a - o) / b : (b + o) / a;
+    gv->depth[2] = size / texel_per_w;
+    gv->depth[3] = (float)persp;
+}
+
 /* One view: its matrices for rendering and lookup, its tile, the bias coefficients. `persp`: the
  * projection's near and far for the atlas depth's quantum (0, 0: orthographic over `depth`). */
 static void tl__view_add(tl__shadows *s, const tl__view_ctx *c, const tl__mat4 *proj, const tl__mat4 *look,
@@ -251,6 +268,7 @@ static void tl__view_add(tl__shadows *s, const tl__view_ctx *c, const tl__mat4 *
     gv->texel[1] = persp ? 0.0f : 2.0f * ldexpf(1.0f, -24) * (f - n);
     gv->texel[2] = persp && c->reversed ? 2.0f * ldexpf(1.0f, -23) : 0.0f;
     gv->texel[3] = persp && !c->reversed ? 2.0f * ldexpf(1.0f, -24) * (f - n) / (f * n) : 0.0f;
+    tl__view_depth(gv, proj, texel_per_w, c->light_size, persp, c->reversed);
     uint64_t h = tl__fnv(14695981039346656037ull, sv->world_clip.m, sizeof sv->world_clip.m);
     uint32_t tile[3] = {x, y, size};
     h = tl__fnv(h, tile, sizeof tile);
@@ -406,6 +424,7 @@ static void tl__shadow_block_params(tl__shadows *s, const tl__view *v, const tl_
     s->block.params[2] = reversed ? ldexpf(1.0f, -22) : 0.0f;
     s->block.params[3] = reversed ? 0.0f : ldexpf(1.0f, -23) * (f > 0.0f ? (f - n) / (f * n) : 1.0f / n);
     s->block.flags[0] = (uint32_t)reversed;
+    s->block.flags[1] = o->shadows.filter == TL_SHADOW_FILTER_PCSS ? TL__SHADOW_PCSS_RADIUS : 0u;
 }
 
 tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights *l, const tl__scene_gpu *g,
@@ -416,7 +435,9 @@ tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights 
     if (res == TL_OK && !s->program) res = tl__program_get(dev, "shadow.depth", &src, "", &s->program);
     if (res != TL_OK) return res;
     int reversed = o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
-    tl__view_ctx c = {v, tl__rigid_inverse(&v->view), o->shadows.atlas_size, o->shadows.pcf_radius, reversed, g};
+    /* the views hold the largest kernel: the PCF radius, or PCSS's largest */
+    uint32_t reach = o->shadows.filter == TL_SHADOW_FILTER_PCSS ? TL__SHADOW_PCSS_RADIUS : o->shadows.pcf_radius;
+    tl__view_ctx c = {v, tl__rigid_inverse(&v->view), o->shadows.atlas_size, reach, reversed, 0.0f, g};
     size_t casting = tl__shadow_order(s, l, v);
     size_t selected = tl__shadow_fades(s, casting, o->shadows.max_lights);
     tl__atlas_grid grid;
@@ -433,6 +454,7 @@ tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights 
         uint32_t size = tl__light_tiles(&grid, kind, c.atlas, xy);
         if (!size) continue;
         tl__shadow_light_gpu *rec = &s->block.lights[s->light_count];
+        c.light_size = kind == TL_LIGHT_DIRECTIONAL ? tanf(o->shadows.directional_angle) : li->source_radius;
         rec->info[0] = (uint32_t)s->view_count;
         if (kind == TL_LIGHT_SPOT) tl__spot_views(s, &c, li, xy, size);
         else if (kind == TL_LIGHT_POINT) tl__point_views(s, &c, li, xy, size);

@@ -57,6 +57,13 @@ static void tl__shadow_buffers(tl__device *dev, tl__shadows *s)
     gl->NamedBufferStorage(s->ubo, (GLsizeiptr)(s->ubo_stride * TL__SHADOW_MAX_VIEWS), NULL, GL_DYNAMIC_STORAGE_BIT);
     tl__gl_label(gl, GL_BUFFER, s->ubo, "shadow.views");
     gl->GenQueries(TL__QUERY_RING, s->queries);
+    gl->CreateSamplers(1, &s->depth_sampler);
+    gl->SamplerParameteri(s->depth_sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl->SamplerParameteri(s->depth_sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl->SamplerParameteri(s->depth_sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl->SamplerParameteri(s->depth_sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl->SamplerParameteri(s->depth_sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
+    tl__gl_label(gl, GL_SAMPLER, s->depth_sampler, "shadow.depth");
     s->last_ms = -1.0;
 }
 
@@ -68,6 +75,7 @@ void tl__shadows_release(tl__device *dev, tl__shadows *s)
         gl->DeleteBuffers(1, &s->lookup);
         gl->DeleteBuffers(1, &s->ubo);
         gl->DeleteQueries(TL__QUERY_RING, s->queries);
+        gl->DeleteSamplers(1, &s->depth_sampler);
     }
     void *a[] = {s->slots, s->fade, s->score, s->order};
     for (int i = 0; i < 4; i++) tl__free(&dev->alloc, a[i]);
@@ -164,6 +172,8 @@ void tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g,
     s->kept_count = s->view_count;
     gl->BindBufferBase(GL_UNIFORM_BUFFER, TL__UBO_SHADOWS, s->lookup);
     gl->BindTextureUnit(TL__UNIT_SHADOW_ATLAS, s->atlas);
+    /* PCSS reads depth values (blocker search) and compares itself (textureGather) */
+    gl->BindSampler(TL__UNIT_SHADOW_ATLAS, s->block.flags[1] ? s->depth_sampler : 0);
     st->shadow_maps_rendered = rendered;
     st->shadow_maps_cached = (uint32_t)(s->view_count - rendered);
     st->shadow_ms = rendered ? s->last_ms : 0.0;

@@ -12,7 +12,8 @@ enum {
     TL__SHADOW_MAX_LIGHTS = TL__SHADOW_LIGHTS, /* light records of the lookup block (shadow.glsl) */
     TL__SHADOW_CASCADES = 4,
     TL__SHADOW_MAX_VIEWS = TL__SHADOW_VIEWS,
-    TL__SHADOW_FADE_FRAMES = 8  /* frames a light takes to gain or lose its shadow */
+    TL__SHADOW_FADE_FRAMES = 8, /* frames a light takes to gain or lose its shadow */
+    TL__SHADOW_PCSS_RADIUS = 16 /* PCSS: the largest blocker search and kernel radius, texels */
 };
 
 /* std140 records of shadow.glsl's uniform block (every member a multiple of 16 bytes). */
@@ -20,6 +21,7 @@ typedef struct tl__shadow_view_gpu {
     float m[16];    /* view space to the view's clip space */
     float rect[4];  /* atlas uv offset, scale */
     float texel[4]; /* texel world size per clip w; atlas depth quantum c0 + c1 w + c2 w^2 */
+    float depth[4]; /* PCSS: stored depth d to light distance z (1/z or z = x d + y), light size in texels, perspective */
 } tl__shadow_view_gpu;
 typedef struct tl__shadow_light_gpu {
     uint32_t info[4]; /* first view, view count, kind, 0 */
@@ -28,7 +30,7 @@ typedef struct tl__shadow_light_gpu {
 } tl__shadow_light_gpu;
 typedef struct tl__shadow_block {
     float params[4];   /* 1 / atlas side, PCF radius, G-buffer position error a z + b z^2 */
-    uint32_t flags[4]; /* reversed depth */
+    uint32_t flags[4]; /* reversed depth, PCSS's largest radius (0: PCF) */
     tl__shadow_light_gpu lights[TL__SHADOW_MAX_LIGHTS];
 } tl__shadow_block;
 
@@ -61,6 +63,7 @@ typedef struct tl__shadows {
     size_t kept_count;
     /* GL */
     GLuint atlas, fbo, lookup, ubo;
+    GLuint depth_sampler;      /* PCSS: the atlas read as depth values (no compare) */
     GLuint program;            /* the shadow pass's (the device's program cache owns it) */
     uint32_t atlas_size;
     int reversed;

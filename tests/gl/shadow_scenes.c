@@ -76,6 +76,39 @@ int tl_shadow_stiff_case(tl_shadow_case *c)
     return tl_scene_compute_bounds(s) == TL_OK;
 }
 
+int tl_shadow_penumbra_case(tl_shadow_case *c)
+{
+    memset(c, 0, sizeof *c);
+    tl_scene *s = calloc(1, sizeof *s);
+    tl__builder b = {calloc(112, sizeof(tl_vertex)), calloc(168, sizeof(uint32_t)), 0, 0};
+    tl_object *objects = calloc(4, sizeof *objects);
+    if (!s || !b.v || !b.ix || !objects) return 0;
+    tl__quad(&b, (float[3]){-8, 0, 8}, (float[3]){16, 0, 0}, (float[3]){0, 0, -16}); /* the floor */
+    objects[0] = (tl_object){.first_index = 0, .index_count = 6};
+    tl__box(&b, (float[3]){-1.6f, 0, -0.6f}, (float[3]){-0.6f, 1.0f, 0.4f}); /* a box resting on it */
+    objects[1] = (tl_object){.first_index = 6, .index_count = 36};
+    tl__box(&b, (float[3]){0.8f, 0, -0.1f}, (float[3]){1.0f, 1.8f, 0.1f}); /* a pole 20 cm thick, 1.8 m tall */
+    objects[2] = (tl_object){.first_index = 42, .index_count = 36};
+    tl__box(&b, (float[3]){-0.5f, 1.3f, 1.0f}, (float[3]){0.3f, 1.4f, 1.8f}); /* a plate floating 1.3 m up */
+    objects[3] = (tl_object){.first_index = 78, .index_count = 36};
+    s->vertices = b.v, s->vertex_count = b.nv, s->indices = b.ix, s->index_count = b.ni;
+    s->objects = objects, s->object_count = 4;
+    s->camera = (tl_camera){.position = {0.3f, 3.6f, 5.2f}, .target = {0.0f, 0.2f, 0.6f}, .fov_y = 0.9f,
+                            .near_z = 0.05f, .far_z = 100.0f};
+    c->scene = s;
+    c->built = 1;
+    /* a spot light 4 m up looking down and a point light, each a sphere 0.25 m in radius */
+    c->lights[0] = (tl_light){.type = TL_LIGHT_SPOT, .position = {0.2f, 4.0f, 0.8f}, .direction = {0, -1, 0},
+                              .color = {20, 20, 20}, .radius = 14.0f, .cos_inner = 0.707f, .cos_outer = 0.574f,
+                              .source_radius = 0.25f, .shadow = 1};
+    c->lights[1] = (tl_light){.type = TL_LIGHT_POINT, .position = {1.2f, 3.2f, 2.0f}, .color = {20, 20, 20},
+                              .radius = 14.0f, .source_radius = 0.25f, .shadow = 1};
+    c->light_names[0] = "spot 0.25 m";
+    c->light_names[1] = "point 0.25 m";
+    c->light_count = 2;
+    return tl_scene_compute_bounds(s) == TL_OK;
+}
+
 int tl_shadow_crypt_case(tl_shadow_case *c, uint32_t detail)
 {
     memset(c, 0, sizeof *c);

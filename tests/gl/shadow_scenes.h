@@ -16,6 +16,9 @@ typedef struct tl_shadow_case {
 } tl_shadow_case;
 
 int tl_shadow_stiff_case(tl_shadow_case *c);
+/* A box resting on a floor, a pole and a floating plate under a spot and a point light with a
+ * 0.25 m source radius: penumbrae that widen away from the contact (PCSS against area truth). */
+int tl_shadow_penumbra_case(tl_shadow_case *c);
 int tl_shadow_crypt_case(tl_shadow_case *c, uint32_t detail);
 void tl_shadow_case_free(tl_shadow_case *c);
 

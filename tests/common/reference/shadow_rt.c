@@ -131,40 +131,153 @@ static uint8_t tl__light_state(const tl_shadow_rt *rt, const float p[3], const f
     return ray.tfar == -INFINITY ? TL_RT_SHADOWED : TL_RT_LIT;
 }
 
+/* The primary ray through pixel (x, y): the surface point p and its geometric normal ng (facing the
+ * eye); the object hit + 1, 0 without a hit. */
+static uint32_t tl__primary(const tl_shadow_rt *rt, const tl_camera *c, const float basis[9], float tx, float ty,
+                            float sx, float sy, float p[3], float ng[3])
+{
+    float d[3];
+    for (int k = 0; k < 3; k++) d[k] = basis[k] * sx * tx + basis[3 + k] * sy * ty - basis[6 + k];
+    tl__norm(d);
+    struct RTCIntersectContext ctx;
+    rtcInitIntersectContext(&ctx);
+    struct RTCRayHit rh;
+    memset(&rh, 0, sizeof rh);
+    rh.ray.org_x = c->position[0], rh.ray.org_y = c->position[1], rh.ray.org_z = c->position[2];
+    rh.ray.dir_x = d[0], rh.ray.dir_y = d[1], rh.ray.dir_z = d[2];
+    rh.ray.tnear = c->near_z > 0.0f ? c->near_z : 0.0f;
+    rh.ray.tfar = c->far_z > 0.0f ? c->far_z : INFINITY;
+    rh.ray.mask = 0xFFFFFFFFu;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(rt->scene, &ctx, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return 0;
+    ng[0] = rh.hit.Ng_x, ng[1] = rh.hit.Ng_y, ng[2] = rh.hit.Ng_z;
+    tl__norm(ng);
+    if (ng[0] * d[0] + ng[1] * d[1] + ng[2] * d[2] > 0.0f) ng[0] = -ng[0], ng[1] = -ng[1], ng[2] = -ng[2];
+    for (int k = 0; k < 3; k++) p[k] = c->position[k] + d[k] * rh.ray.tfar;
+    return rt->prim_object[rh.hit.primID];
+}
+
+/* Calls `shade` for every pixel with its primary hit (object 0: none). */
+static void tl__pixels(const tl_shadow_rt *rt, const tl_camera *c, uint32_t w, uint32_t h,
+                       void (*shade)(void *user, size_t i, uint32_t object, const float p[3], const float ng[3]),
+                       void *user)
+{
+    float basis[9];
+    tl__camera_basis(c, basis, basis + 3, basis + 6);
+    float ty = tanf(0.5f * (c->fov_y > 0.0f ? c->fov_y : 1.04719755f)), tx = ty * (float)w / (float)h;
+    for (uint32_t y = 0; y < h; y++)
+        for (uint32_t x = 0; x < w; x++) {
+            float sx = 2.0f * ((float)x + 0.5f) / (float)w - 1.0f, sy = 2.0f * ((float)y + 0.5f) / (float)h - 1.0f;
+            float p[3] = {0, 0, 0}, ng[3] = {0, 0, 0};
+            uint32_t object = tl__primary(rt, c, basis, tx, ty, sx, sy, p, ng);
+            shade(user, (size_t)y * w + x, object, p, ng);
+        }
+}
+
+typedef struct tl__hard {
+    const tl_shadow_rt *rt;
+    const tl_light *light;
+    uint8_t *state;
+    uint32_t *object;
+} tl__hard;
+
+static void tl__hard_pixel(void *user, size_t i, uint32_t object, const float p[3], const float ng[3])
+{
+    tl__hard *t = (tl__hard *)user;
+    t->object[i] = object;
+    t->state[i] = object ? tl__light_state(t->rt, p, ng, t->light) : TL_RT_NONE;
+}
+
 void tl_shadow_rt_truth(const tl_shadow_rt *rt, const tl_camera *c, uint32_t w, uint32_t h, const tl_light *light,
                         uint8_t *state, uint32_t *object)
 {
-    float r[3], u[3], b[3];
-    tl__camera_basis(c, r, u, b);
-    float ty = tanf(0.5f * (c->fov_y > 0.0f ? c->fov_y : 1.04719755f)), tx = ty * (float)w / (float)h;
+    tl__hard t = {rt, light, state, object};
+    tl__pixels(rt, c, w, h, tl__hard_pixel, &t);
+}
+
+/* An orthonormal pair perpendicular to unit a. */
+static void tl__perpendicular(const float a[3], float e1[3], float e2[3])
+{
+    float t[3] = {0, 0, 0};
+    t[fabsf(a[0]) < 0.6f ? 0 : fabsf(a[1]) < 0.6f ? 1 : 2] = 1.0f;
+    e1[0] = a[1] * t[2] - a[2] * t[1], e1[1] = a[2] * t[0] - a[0] * t[2], e1[2] = a[0] * t[1] - a[1] * t[0];
+    tl__norm(e1);
+    e2[0] = a[1] * e1[2] - a[2] * e1[1], e2[1] = a[2] * e1[0] - a[0] * e1[2], e2[2] = a[0] * e1[1] - a[1] * e1[0];
+}
+
+typedef struct tl__area {
+    const tl_shadow_rt *rt;
+    const tl_light *light;
+    float tan_angle;
+    uint32_t strata;
+    float *visibility;
+    uint32_t *object;
+} tl__area;
+
+/* Whether the ray from o along unit d reaches tfar unoccluded. */
+static int tl__unoccluded(const tl_shadow_rt *rt, const float o[3], const float d[3], float tfar)
+{
     struct RTCIntersectContext ctx;
     rtcInitIntersectContext(&ctx);
-    for (uint32_t y = 0; y < h; y++)
-        for (uint32_t x = 0; x < w; x++) {
-            size_t i = (size_t)y * w + x;
-            float sx = (2.0f * ((float)x + 0.5f) / (float)w - 1.0f) * tx, sy = (2.0f * ((float)y + 0.5f) / (float)h - 1.0f) * ty;
-            float d[3];
-            for (int k = 0; k < 3; k++) d[k] = r[k] * sx + u[k] * sy - b[k];
+    struct RTCRay ray = {0};
+    ray.org_x = o[0], ray.org_y = o[1], ray.org_z = o[2];
+    ray.dir_x = d[0], ray.dir_y = d[1], ray.dir_z = d[2];
+    ray.tfar = tfar;
+    ray.mask = 0xFFFFFFFFu;
+    rtcOccluded1(rt->scene, &ctx, &ray);
+    return ray.tfar != -INFINITY;
+}
+
+/* The fraction of the emitter seen from p: strata^2 shadow rays, one per equal-area cell (radius
+ * sqrt(u), angle 2 pi v) of the disc facing p, the angles turned per pixel (a hash of its index) so
+ * that the strata's pattern does not repeat from pixel to pixel. */
+static void tl__area_pixel(void *user, size_t i, uint32_t object, const float p[3], const float ng[3])
+{
+    tl__area *t = (tl__area *)user;
+    const tl_light *l = t->light;
+    t->object[i] = object;
+    t->visibility[i] = -1.0f;
+    if (!object) return;
+    int sun = l->type == TL_LIGHT_DIRECTIONAL;
+    float a[3], e1[3], e2[3];
+    for (int k = 0; k < 3; k++) a[k] = sun ? -l->direction[k] : l->position[k] - p[k];
+    tl__norm(a);
+    if (a[0] * ng[0] + a[1] * ng[1] + a[2] * ng[2] <= 0.0f) return; /* facing away: not measured */
+    tl__perpendicular(a, e1, e2);
+    float eps = 1e-5f * fmaxf(1.0f, t->rt->extent), o[3];
+    for (int k = 0; k < 3; k++) o[k] = p[k] + ng[k] * eps;
+    uint32_t hash = (uint32_t)i * 2654435761u, seen = 0, n = t->strata;
+    float turn = (float)(hash >> 8) / 16777216.0f;
+    for (uint32_t u = 0; u < n; u++)
+        for (uint32_t v = 0; v < n; v++) {
+            float r = sqrtf(((float)u + 0.5f) / (float)n), phi = 6.28318531f * (((float)v + 0.5f) / (float)n + turn);
+            float x = r * cosf(phi), y = r * sinf(phi), d[3], tfar = INFINITY;
+            for (int k = 0; k < 3; k++) {
+                if (sun) d[k] = a[k] + t->tan_angle * (x * e1[k] + y * e2[k]);
+                else d[k] = l->position[k] + l->source_radius * (x * e1[k] + y * e2[k]) - o[k];
+            }
+            if (!sun) tfar = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
             tl__norm(d);
-            struct RTCRayHit rh;
-            memset(&rh, 0, sizeof rh);
-            rh.ray.org_x = c->position[0], rh.ray.org_y = c->position[1], rh.ray.org_z = c->position[2];
-            rh.ray.dir_x = d[0], rh.ray.dir_y = d[1], rh.ray.dir_z = d[2];
-            rh.ray.tnear = c->near_z > 0.0f ? c->near_z : 0.0f;
-            rh.ray.tfar = c->far_z > 0.0f ? c->far_z : INFINITY;
-            rh.ray.mask = 0xFFFFFFFFu;
-            rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-            rtcIntersect1(rt->scene, &ctx, &rh);
-            state[i] = TL_RT_NONE;
-            object[i] = 0;
-            if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) continue;
-            float p[3], ng[3] = {rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z};
-            tl__norm(ng);
-            if (ng[0] * d[0] + ng[1] * d[1] + ng[2] * d[2] > 0.0f) ng[0] = -ng[0], ng[1] = -ng[1], ng[2] = -ng[2];
-            for (int k = 0; k < 3; k++) p[k] = c->position[k] + d[k] * rh.ray.tfar;
-            object[i] = rt->prim_object[rh.hit.primID];
-            state[i] = tl__light_state(rt, p, ng, light);
+            seen += (uint32_t)tl__unoccluded(t->rt, o, d, sun ? INFINITY : tfar);
         }
+    t->visibility[i] = (float)seen / (float)(n * n);
+}
+
+void tl_shadow_rt_area(const tl_shadow_rt *rt, const tl_camera *c, uint32_t w, uint32_t h, const tl_light *light,
+                       float angle, uint32_t strata, float *visibility, uint32_t *object)
+{
+    tl__area t = {rt, light, tanf(angle), strata ? strata : 1u, visibility, object};
+    tl__pixels(rt, c, w, h, tl__area_pixel, &t);
+}
+
+void tl_shadow_rt_area_state(const float *visibility, uint8_t *state, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        state[i] = visibility[i] < 0.0f   ? TL_RT_AWAY
+                   : visibility[i] >= 1.0f ? TL_RT_LIT
+                   : visibility[i] <= 0.0f ? TL_RT_SHADOWED
+                                           : TL_RT_NONE;
 }
 
 /* Left out: no hit, or within `band` pixels of another state or of another object. */

@@ -23,6 +23,18 @@ void tl_shadow_rt_destroy(tl_shadow_rt *rt);
 void tl_shadow_rt_truth(const tl_shadow_rt *rt, const tl_camera *camera, uint32_t w, uint32_t h, const tl_light *light,
                         uint8_t *state, uint32_t *object);
 
+/* A light with a size: per pixel the fraction of its emitter seen from the surface point, from
+ * strata^2 stratified shadow rays over the disc that faces the point (point and spot lights: the
+ * sphere of source_radius around position; directional lights: the cone of angular radius `angle`
+ * radians around the direction); -1 without a hit or where the surface faces away from the
+ * light's centre. object[w * h] as tl_shadow_rt_truth. */
+void tl_shadow_rt_area(const tl_shadow_rt *rt, const tl_camera *camera, uint32_t w, uint32_t h, const tl_light *light,
+                       float angle, uint32_t strata, float *visibility, uint32_t *object);
+/* States from area visibility: lit where the whole emitter is seen, shadowed where none of it is,
+ * TL_RT_NONE in the penumbra (so tl_shadow_rt_compare leaves it and `band` pixels around it out),
+ * TL_RT_AWAY where not measured. */
+void tl_shadow_rt_area_state(const float *visibility, uint8_t *state, size_t n);
+
 /* The comparison of a render's shadow term (term[i] in 0..1, < 0 where the light adds nothing in
  * the unshadowed render) with the truth, outside the penumbra: pixels within `band` pixels of a
  * change of the truth's state or of the object hit (a silhouette) are left out. */
