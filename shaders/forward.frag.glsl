@@ -119,7 +119,10 @@ void main()
                        tl_model_acc);
 #endif
 #ifdef TL_IBL
-    c += tl_ibl(s.albedo, s.specular, s.gloss, s.occlusion, n, v);
+#if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD) && !defined(TL_STIPPLE)
+    if (u_material_model != TL_MODEL_UNLIT) // an unlit material takes no light, the environment's neither
+#endif
+        c += tl_ibl(s.albedo, s.specular, s.gloss, s.occlusion, n, v);
 #endif
 #ifdef TL_TRANSPARENT
     o_color = vec4(min(c, vec3(65504.0)), clamp(s.alpha, 0.0, 1.0));

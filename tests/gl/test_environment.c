@@ -369,6 +369,40 @@ TL_TEST(environment_finite_every_mode)
     free(g);
 }
 
+/* An unlit material takes no light, so none from the environment either: in every mode its pixels
+ * are the same float (its albedo) with and without the environment. Forward once added the
+ * environment's light to them. */
+TL_TEST(environment_leaves_unlit_materials_alone_every_mode)
+{
+    sphere_row *g = malloc(sizeof *g);
+    float *env = environment_image();
+    sphere_row_build(g);
+    for (int k = 0; k < SPHERES; k++) {
+        g->mat[k].model = TL_MATERIAL_MODEL_UNLIT;
+        for (int c = 0; c < 3; c++) g->mat[k].albedo[c] = 0.5f;
+    }
+    for (int m = 0; m < 4; m++) {
+        float *with = NULL, *without = NULL;
+        render_rows(g, (tl_renderer_options){.mode = all_modes[m]}, env, &with, NULL, NULL);
+        render_rows(g, (tl_renderer_options){.mode = all_modes[m]}, NULL, &without, NULL, NULL);
+        TL_CHECK(with && without);
+        size_t surface = 0, differ = 0;
+        for (size_t i = 0; with && without && i < (size_t)W * H; i++) {
+            if (!(without[i * 4] > 0.0f)) continue; /* the background: black without the environment */
+            surface++;
+            for (int c = 0; c < 3; c++) differ += with[i * 4 + c] != without[i * 4 + c];
+        }
+        printf("%s: %zu unlit pixels, %zu channels changed by the environment\n", tl_render_mode_name(all_modes[m]),
+               surface, differ);
+        TL_CHECK(surface > (size_t)W * H / 10);
+        TL_CHECK_EQ_U(differ, 0);
+        free(with);
+        free(without);
+    }
+    free(env);
+    free(g);
+}
+
 /* ---- image-based light against the Monte Carlo reference ---------------------------------------- */
 
 typedef struct ibl_stats {
