@@ -14,10 +14,8 @@
 #ifndef TL_RELIGHT_TILES
 layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
 #endif
-// light.fixup (fixup.c): (compute groups of 64 listed pixels, 1, 1, re-lit pixels), then the list
-// of the pixels left to the light-fixup pass (tiled light scale), two uvec4 each: pixel, albedo and
-// specular colour as halves; the colour the material pass wrote without the light, as halves
-layout(std430, binding = TL_SSBO_FIXUP) buffer tl_fixup_buffer { uvec4 tl_fixup_counters; uvec4 tl_fixup_entries[]; };
+// light.fixup (fixup.c): counters; the fourth counts the re-lit pixels (or samples)
+layout(std430, binding = TL_SSBO_FIXUP) buffer tl_fixup_buffer { uvec4 tl_fixup_counters; };
 layout(early_fragment_tests) in; // the counts and the list: only the pixels the depth test keeps
 
 #ifdef TL_LIGHT_SAMPLES // MSAA per-sample edges: the G-buffer is multisampled (light_msaa.glsl)

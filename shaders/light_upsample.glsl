@@ -15,8 +15,9 @@
 // irradiance, smooth along a surface; albedo and specular colour stay at full resolution.
 // A pixel whose credible weight sums to less than TL_UPSAMPLE_CREDIBLE (no texel of its surface
 // near it: thin features, silhouettes, creases) is re-lit here, exactly as the light pass would
-// at full resolution, by looping over its object's lights (the forward path's per-object lists):
-// no extra pass, no mask, and the cost falls on the few pixels that need it.
+// at full resolution, by looping over its tile's lights (tiled) or its object's (volumes: the
+// forward path's per-object lists): no extra pass, no mask, and the cost falls on the few pixels
+// that need it (and on the SIMD groups they share with their neighbours).
 #ifndef TL_LIGHT_UPSAMPLE_GLSL
 #define TL_LIGHT_UPSAMPLE_GLSL
 
@@ -98,12 +99,11 @@ bool tl_upsample_interior(vec4 rt0, out vec4 ld, out vec3 ls, out vec3 lf)
 }
 
 // The light at this pixel: upsampled, or re-lit where no reduced texel is credible (true). A
-// re-lit pixel is counted; with tile lists it is listed for the light-fixup pass while the list has
-// room (entry: its index; its light is left at 0 here and added to HDR by that pass), else re-lit here.
-bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out vec3 specular, out vec3 fresnel,
-                       out int entry)
+// re-lit pixel is counted (light.fixup) and re-lit here from its tile's lists or its object's: the
+// same code for every re-lit pixel, so the frame's bytes never depend on which pixel's fragment ran
+// first (a list of re-lit pixels shared by the frame did: its order was the order of atomic adds).
+bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out vec3 specular, out vec3 fresnel)
 {
-    entry = -1;
     vec4 rt0 = texelFetch(u_rt0, ivec2(gl_FragCoord.xy), 0), ng = vec4(0.0);
     vec4 ld;
     vec3 ls, lf;
@@ -117,14 +117,7 @@ bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out ve
     }
     bool relit = total < TL_UPSAMPLE_CREDIBLE;
     if (relit) {
-        uint index = atomicAdd(tl_fixup_counters.w, 1u);
-#ifdef TL_RELIGHT_TILES
-        if (index < uint(tl_fixup_entries.length()) / 2u) {
-            entry = int(index);
-            diffuse = specular = fresnel = vec3(0.0);
-            return true;
-        }
-#endif
+        atomicAdd(tl_fixup_counters.w, 1u); // the count only: nothing of the image depends on it
         tl_relight(ng.xyz, ng.w, z_f, ld, ls, lf);
     } else {
         float inv = 1.0 / total;
@@ -134,18 +127,6 @@ bool tl_upsample_light(float z_f, vec2 dz, bool glossy, out vec3 diffuse, out ve
     }
     tl_relight_finish(ld, ls, lf, relit, diffuse, specular, fresnel);
     return relit;
-}
-
-// A listed pixel's entry: what the light-fixup pass multiplies its light sums by, and the colour
-// without them it writes the result over (not adds to: two coplanar surfaces drawn at one pixel
-// both list it, and each entry then writes a whole colour of its own surface).
-void tl_upsample_list(int entry, vec3 albedo, vec3 f0, vec3 base)
-{
-    uvec2 px = uvec2(gl_FragCoord.xy);
-    tl_fixup_entries[2 * entry] = uvec4(px.x | (px.y << 16), packHalf2x16(albedo.rg), packHalf2x16(vec2(albedo.b, f0.r)),
-                                        packHalf2x16(f0.gb));
-    tl_fixup_entries[2 * entry + 1] = uvec4(packHalf2x16(base.rg), packHalf2x16(vec2(base.b, 0.0)), 0u, 0u);
-    if ((entry & 63) == 0) atomicAdd(tl_fixup_counters.x, 1u); // one compute group per 64 entries
 }
 
 #endif

@@ -69,9 +69,8 @@ void main()
 #endif
 #if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
     // HDR's alpha (read by no pass) marks the pixels the fix-up re-lit: 0.5 (tests, the figures)
-    int entry = -1;
-#if !defined(TL_MODEL) || TL_MODEL != 1 // unlit takes no light: never listed for the fix-up's standard light
-    if (tl_upsample_light(z_f, dz, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular, fresnel, entry)) alpha = 0.5;
+#if !defined(TL_MODEL) || TL_MODEL != 1 // unlit takes no light: never re-lit
+    if (tl_upsample_light(z_f, dz, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular, fresnel)) alpha = 0.5;
 #endif
 #elif defined(TL_MSAA_LIGHT) && !defined(TL_NO_LIGHTS)
     if (tl_msaa_light(dzw, tl_material_normal(), relight_gloss, diffuse, specular, fresnel))
@@ -104,14 +103,11 @@ void main()
 #ifdef TL_SSAO_AMBIENT
     // SSAO (docs/effects.md): the ambient term, and with TL_SSAO_DIFFUSE the diffuse light
     float ao = texelFetch(u_ao, ivec2(gl_FragCoord.xy), 0).r;
-    vec3 lit_albedo = s.albedo; // what the diffuse light is multiplied by
 #ifdef TL_SSAO_DIFFUSE
     diffuse *= ao;
-    lit_albedo *= ao;
 #endif
     vec3 ambient = u_ambient * (s.occlusion * ao);
 #else
-    vec3 lit_albedo = s.albedo;
     vec3 ambient = u_ambient * s.occlusion;
 #endif
     vec3 c = s.albedo * (diffuse + ambient) + f0 * specular + fresnel + s.emissive;
@@ -125,10 +121,6 @@ void main()
 #endif
 #if defined(TL_IBL) && (!defined(TL_MODEL) || TL_MODEL != 1) // an unlit material takes no light, the environment's neither
     c += tl_ibl(s.albedo, s.specular, s.gloss, s.occlusion, tl_material_normal(), normalize(-v_view_position));
-#endif
-#if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
-    // a pixel left to the light-fixup pass: c holds no light yet (its sums are 0 here)
-    if (entry >= 0) tl_upsample_list(entry, lit_albedo, f0, min(c, vec3(65504.0)));
 #endif
     o_color = vec4(min(c, vec3(65504.0)), alpha);
 }

@@ -474,8 +474,6 @@ typedef enum tl_pass {
     TL_PASS_FXAA,          /**< FXAA, when it is on */
     TL_PASS_VIGNETTE,      /**< vignette: its mask, then HDR darkened by it (runs before the tone map) */
     TL_PASS_LIGHT_REDUCE,  /**< light_scale below 1: depth and RT0 reduced to the light buffer's size */
-    TL_PASS_LIGHT_FIXUP,   /**< light_scale below 1, tiled: the pixels the upsample found no credible light
-                                for, re-lit at full resolution (a compute pass over their list) and added to HDR */
     TL_PASS_STIPPLE_DEPTH, /**< stipple: the opaque depth copied before the transparent layers overwrite it */
     TL_PASS_STIPPLE,       /**< stipple: transparent layers into depth and RT0, one pixel of each 2x2 quad each */
     TL_PASS_STIPPLE_RESOLVE, /**< "stipple-blend": transparent layers blended onto HDR with the light of their own pixels */
@@ -514,8 +512,8 @@ typedef enum tl_target_id {
     TL_TARGET_LIGHT_DEPTH,    /**< light_scale below 1: the nearest depth of each block, depth's format, the light buffer's size */
     TL_TARGET_LIGHT_RT0,      /**< light_scale below 1: RT0 of that nearest sample, the light buffer's size */
     TL_TARGET_LIGHT_OFFSET,   /**< light_scale below 1: R8, that sample's pixel within its block (x + 4 y; 16: its centre) */
-    TL_TARGET_LIGHT_FIXUP,    /**< light_scale below 1: a storage buffer, the count of re-lit pixels and (tiled)
-                                   the list the fix-up pass re-lights: up to an eighth of the frame's pixels */
+    TL_TARGET_LIGHT_FIXUP,    /**< light_scale below 1 or MSAA: a storage buffer (16 bytes), the count of the
+                                   pixels (samples) the material pass re-lit */
     TL_TARGET_OPAQUE_DEPTH,   /**< stipple: the opaque surfaces' depth (depth's format); the material pass tests against it */
     TL_TARGET_DEPTH_MSAA,     /**< thin-lpp with MSAA: the multisampled depth the material pass tests against (depth's format) */
     TL_TARGET_MSAA_EDGES,     /**< MSAA per-sample edges: R8, 1 where the pixel's samples differ in depth or normal */

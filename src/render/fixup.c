@@ -1,9 +1,7 @@
-/* The light scale's edge fix-up (docs/frame.md, "Light at reduced resolution"): the buffer the
- * material pass counts its re-lit pixels in and, with tiled lists, appends the pixels it leaves to
- * the fix-up pass (one compute invocation per listed pixel: no SIMD lane waits on a neighbour that
- * needs no re-lighting); the pass's indirect dispatch; the read-back of the count, a few frames
- * later, as the tiles' counters. A list that fills up is no loss: the material pass re-lights the
- * pixels past its end itself. */
+/* The light scale's and MSAA's edge fix-up count (docs/frame.md, "Light at reduced resolution"):
+ * the buffer the material pass counts the pixels (or samples) it re-lit in, and the read-back of
+ * the count a few frames later, as the tiles' counters. The count is all it holds: every re-lit
+ * pixel is lit where it is found, so nothing of the image depends on the order of the adds. */
 #include <string.h>
 
 #include "lights.h"
@@ -19,17 +17,13 @@ void tl__fixup_release(tl__device *dev, tl__fixup *f)
     memset(f, 0, sizeof *f);
 }
 
-tl_result tl__fixup_configure(tl__device *dev, tl__fixup *f, size_t capacity)
+tl_result tl__fixup_configure(tl__device *dev, tl__fixup *f)
 {
-    if (f->buffer && f->capacity == capacity) return TL_OK;
+    if (f->buffer) return TL_OK;
     const GladGLContext *gl = &dev->gl;
-    tl__fixup_release(dev, f);
-    size_t bytes = 16u + 32u * capacity; /* counters, then two uvec4 per entry */
-    if (bytes > dev->lim.storage_max) capacity = (dev->lim.storage_max - 16u) / 32u, bytes = 16u + 32u * capacity;
     gl->CreateBuffers(1, &f->buffer);
-    gl->NamedBufferStorage(f->buffer, (GLsizeiptr)bytes, NULL, 0);
+    gl->NamedBufferStorage(f->buffer, 16, NULL, 0);
     tl__gl_label(gl, GL_BUFFER, f->buffer, "buffer.fixup");
-    f->capacity = capacity;
     const GLbitfield flags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
     gl->CreateBuffers(1, &f->readback);
     gl->NamedBufferStorage(f->readback, TL__QUERY_RING * 16, NULL, flags);
@@ -44,10 +38,10 @@ void tl__fixup_bind(tl__device *dev, tl__fixup *f)
     if (f->buffer) dev->gl.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TL__SSBO_FIXUP, f->buffer);
 }
 
-/* Counters to (0 groups, 1, 1, 0 pixels). */
+/* Counters to 0. */
 void tl__fixup_begin(const GladGLContext *gl, tl__fixup *f)
 {
-    static const GLuint start[4] = {0u, 1u, 1u, 0u};
+    static const GLuint start[4] = {0u, 0u, 0u, 0u};
     if (!f->buffer) return;
     gl->ClearNamedBufferSubData(f->buffer, GL_RGBA32UI, 0, 16, GL_RGBA_INTEGER, GL_UNSIGNED_INT, start);
     gl->MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -56,23 +50,12 @@ void tl__fixup_begin(const GladGLContext *gl, tl__fixup *f)
 void tl__fixup_end(const GladGLContext *gl, tl__fixup *f, uint64_t frame)
 {
     if (!f->buffer) return;
-    gl->MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+    gl->MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     unsigned s = (unsigned)(frame % TL__QUERY_RING);
     gl->CopyNamedBufferSubData(f->buffer, f->readback, 0, (GLintptr)(16 * s), 16);
     if (f->fences[s]) gl->DeleteSync(f->fences[s]);
     f->fences[s] = gl->FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
     f->fence_frame[s] = frame;
-}
-
-void tl__fixup_dispatch(const tl__pass_ctx *ctx)
-{
-    const GladGLContext *gl = ctx->gl;
-    tl__fixup *f = &ctx->lights->fixup;
-    tl__state_program(gl, ctx->state, ctx->programs[0]);
-    gl->BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, f->buffer);
-    gl->DispatchComputeIndirect(0);
-    gl->BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-    gl->MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
 
 void tl__fixup_collect(tl__device *dev, tl__fixup *f, uint32_t pixels, tl_frame_stats *st)

@@ -44,13 +44,10 @@ typedef struct tl__tiles {
     uint64_t fence_frame[TL__QUERY_RING];
 } tl__tiles;
 
-/* The light scale's fix-up (fixup.c): one storage buffer, four counters (compute groups of 64
- * listed pixels, 1, 1: the fix-up pass's indirect dispatch; then every re-lit pixel) and the list
- * of the pixels the material pass left to the fix-up pass (pixel, albedo and specular colour as
- * halves); a ring of read-back copies of the counters, as the tiles'. */
+/* The light scale's fix-up count (fixup.c): one storage buffer of four counters (the fourth: every
+ * pixel or sample the material pass re-lit) and a ring of read-back copies, as the tiles'. */
 typedef struct tl__fixup {
     GLuint buffer;
-    size_t capacity;            /* list entries the buffer holds (0: only the count) */
     GLuint readback;
     const uint32_t *readback_map;  /* TL__QUERY_RING x 4 counters */
     GLsync fences[TL__QUERY_RING];
@@ -132,17 +129,13 @@ void tl__tiles_cull(const tl__pass_ctx *ctx);
 /* The counters of `frame` (waiting for its fence) into the statistics. */
 void tl__tiles_collect(tl__device *dev, tl__tiles *t, tl_frame_stats *st);
 
-/* fixup.c: the fix-up buffer for `capacity` list entries (made again only when that changes);
- * before the material pass its counters are cleared, after it they are copied for the read-back;
- * the fix-up pass's indirect dispatch. */
-tl_result tl__fixup_configure(tl__device *dev, tl__fixup *f, size_t capacity);
+/* fixup.c: the counters' buffer (made once); before the material pass they are cleared, after it
+ * they are copied for the read-back. */
+tl_result tl__fixup_configure(tl__device *dev, tl__fixup *f);
 void tl__fixup_release(tl__device *dev, tl__fixup *f);
 void tl__fixup_bind(tl__device *dev, tl__fixup *f);
 void tl__fixup_begin(const GladGLContext *gl, tl__fixup *f);
 void tl__fixup_end(const GladGLContext *gl, tl__fixup *f, uint64_t frame);
-void tl__fixup_dispatch(const tl__pass_ctx *ctx);
-/* pass_light_reduce.c: the list entries a plan's fix-up buffer holds. */
-size_t tl__light_fixup_capacity(const tl_frame_plan *p);
 /* The re-lit count of `frame` (waiting for its fence) into the statistics. */
 void tl__fixup_collect(tl__device *dev, tl__fixup *f, uint32_t pixels, tl_frame_stats *st);
 

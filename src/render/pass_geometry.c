@@ -152,6 +152,17 @@ const tl__pass_def tl__pass_gbuffer = {
 
 /* ---- material: the light pre-pass's second geometry pass ------------------------------------- */
 
+/* The count of the pixels (MSAA: samples) the material pass re-lit (fixup.c); the pixels themselves
+ * are lit where they are found, from their tile's lists or their object's. */
+static size_t tl__fixup_bytes(const tl_frame_plan *p)
+{
+    (void)p;
+    return 16u;
+}
+
+static const tl__target_def tl__target_light_fixup = {TL__TARGET(LIGHT_FIXUP, "light.fixup"),
+                                                      .buffer_bytes = tl__fixup_bytes, .store = TL__STORE_LISTS};
+
 /* The lists a material pass re-lights a pixel from: its tile's (tiled) or its object's (volumes). */
 static void tl__material_relight_lists(const tl__plan_input *in, tl__pass_decl *d)
 {
@@ -171,9 +182,8 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
                  (tl__ssao_pass(in) ? TL__B(AO) : 0u) | (in->coat_sums ? TL__B(LIGHT_COAT) : 0u);
     if (in->light_shift && in->lights) {
         /* the light scale's upsample: the reduced depth and RT0 against the pixel's own RT0. The
-         * pixels it finds no credible match for are counted (light.fixup) and re-lit: tiled, they
-         * are listed for the light-fixup pass (past the list's end, they loop over their tile's
-         * lists here); volumes, they loop over their object's light list here */
+         * pixels it finds no credible match for are counted (light.fixup) and re-lit here over
+         * their tile's lists (tiled) or their object's light list (volumes) */
         d->samples |= TL__B(LIGHT_DEPTH) | TL__B(LIGHT_RT0) | TL__B(LIGHT_OFFSET) | TL__B(RT0);
         d->writes |= TL__B(LIGHT_FIXUP);
         tl__material_relight_lists(in, d);
@@ -246,7 +256,7 @@ const tl__pass_def tl__pass_material = {
                  {"material.sheen", "gbuffer.vert.glsl", "material.frag.glsl"},
                  {"material.wrap", "gbuffer.vert.glsl", "material.frag.glsl"},
                  {"material.toon", "gbuffer.vert.glsl", "material.frag.glsl"}},
-    .targets = {&tl__target_coat_gloss},
+    .targets = {&tl__target_coat_gloss, &tl__target_light_fixup},
     .declare = tl__material_declare,
     .permute = tl__material_permute,
     .execute = tl__material_execute,

@@ -57,7 +57,7 @@ static tl_result tl__replan(tl_renderer *r)
         else if (res == TL_OK) /* no tiles in this plan: nothing kept for them */
             tl__tiles_release(&r->dev, &r->lights.tiles);
         if (res == TL_OK && (p->targets & TL_TARGET_BIT(TL_TARGET_LIGHT_FIXUP)))
-            res = tl__fixup_configure(&r->dev, &r->lights.fixup, tl__light_fixup_capacity(p));
+            res = tl__fixup_configure(&r->dev, &r->lights.fixup);
         else if (res == TL_OK)
             tl__fixup_release(&r->dev, &r->lights.fixup);
     } else if (r->scene.loaded && !g->programs_ready) {

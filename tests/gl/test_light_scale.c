@@ -93,7 +93,7 @@ static tl_renderer *render_at(const tl_scene *s, float k, uint32_t w, uint32_t h
 }
 
 /* The light strategy of the tests below: each runs with volumes and with tiles (the fix-up differs:
- * the material pass re-lights through the object's list, or lists the pixels for light-fixup). */
+ * the material pass re-lights over the object's list, or over its tile's). */
 static tl_light_strategy g_strategy = TL_LIGHT_STRATEGY_VOLUMES;
 static const char *strategy_name(void) { return g_strategy == TL_LIGHT_STRATEGY_TILED ? "tiled" : "volumes"; }
 
@@ -172,19 +172,15 @@ TL_TEST(light_scale_plan_reduced_targets_and_refusals)
         d.options.light_strategy = tiled ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
         TL_CHECK(tl_frame_plan_build(&d, &f, &half) == TL_OK);
         TL_CHECK(half.light_strategy == d.options.light_strategy);
-        /* the fix-up's buffer: the re-lit count, and with tiles a list of an eighth of the pixels
-         * (32 bytes each); tiles are counted in the frame's pixels: twice the option's side (16 texels
-         * of the light buffer at 1/2, 8 at 1/4) */
+        /* the fix-up's buffer: the re-lit count only (the material pass re-lights the pixels
+         * itself, with either strategy); tiles are counted in the frame's pixels: twice the
+         * option's side (16 texels of the light buffer at 1/2, 8 at 1/4) */
         TL_CHECK(half.targets & TL_TARGET_BIT(TL_TARGET_LIGHT_FIXUP));
-        TL_CHECK_EQ_U(half.target_info[TL_TARGET_LIGHT_FIXUP].bytes,
-                      16u + (tiled ? 32u * ((1281u * 721u + 7u) / 8u) : 0u));
+        TL_CHECK_EQ_U(half.target_info[TL_TARGET_LIGHT_FIXUP].bytes, 16u);
         if (tiled) {
             TL_CHECK_EQ_U(half.tile_size, 32u);
             TL_CHECK_EQ_U(half.tiles_x, (1281u + 31u) / 32u);
         }
-        int fixup = 0;
-        for (size_t i = 0; i < half.pass_count; i++) fixup += half.passes[i].pass == TL_PASS_LIGHT_FIXUP;
-        TL_CHECK(fixup == tiled);
         TL_CHECK(half.light_scale == scales[k]);
         uint32_t rw = (1281u + (1u << k) - 1u) >> k, rh = (721u + (1u << k) - 1u) >> k;
         const tl_target_id reduced[4] = {TL_TARGET_LIGHT_DEPTH, TL_TARGET_LIGHT_RT0, TL_TARGET_LIGHT_DIFFUSE,
@@ -384,16 +380,14 @@ TL_TEST(light_scale_thin_pole_is_lit)
     free(b);
 }
 
-/* ---- the re-lit count and a full fix-up list ------------------------------------------------------
+/* ---- the re-lit count over half the frame -------------------------------------------------------
  * A comb: 40 slats two pixels wide, two pixels apart, in front of a wall, both lit by one point
  * light. At 1/4 every 4x4 block holds slat and wall; the reduction keeps the slats (nearest), so
- * every wall pixel between them is re-lit: about half the frame, more than the fix-up list holds
- * (an eighth of the pixels), so with tiles the material pass re-lights the pixels past its end
- * itself. For both strategies and both scales: tl_frame_stats.relit_pixels equals the pixels the
- * material pass marked (HDR alpha 0.5), relit_fraction is that over the pixels, and a re-lit pixel
- * matches scale 1 within 4 FP16 roundings (2^-9 relative: scale 1 rounds the light sum and HDR; the
- * fix-up rounds albedo, the colour without light and HDR), whichever path re-lit it. */
-TL_TEST(light_scale_relit_count_and_full_fixup_list)
+ * every wall pixel between them is re-lit: about half the frame. For both strategies and both
+ * scales: tl_frame_stats.relit_pixels equals the pixels the material pass marked (HDR alpha 0.5),
+ * relit_fraction is that over the pixels, and a re-lit pixel matches scale 1 within 4 FP16
+ * roundings (2^-9 relative: scale 1 rounds the light sum and HDR, the re-lit pixel HDR). */
+TL_TEST(light_scale_relit_count_half_the_frame)
 {
     if (!ensure_context()) return;
     boxes *b = calloc(1, sizeof *b);
@@ -426,14 +420,14 @@ TL_TEST(light_scale_relit_count_and_full_fixup_list)
                 double e = rel_err(got, ref, i);
                 if (e > worst) worst = e;
             }
-            printf("comb, %s, scale %g: %zu pixels re-lit (stats: %llu, %.4f of the frame; the list holds %d), "
+            printf("comb, %s, scale %g: %zu pixels re-lit (stats: %llu, %.4f of the frame), "
                    "largest relative error of a re-lit pixel %.3g\n",
                    strategy_name(), (double)scales[k], marked, (unsigned long long)stats.relit_pixels,
-                   stats.relit_fraction, W * H / 8, worst);
+                   stats.relit_fraction, worst);
             TL_CHECK_EQ_U(stats.relit_pixels, marked);
             TL_CHECK(fabs(stats.relit_fraction - (double)marked / (W * H)) < 1e-12);
             if (k == 0) TL_CHECK_EQ_U(marked, 0);
-            if (k == 2) TL_CHECK(marked > (size_t)W * H / 8); /* past the list's end */
+            if (k == 2) TL_CHECK(marked > (size_t)W * H / 4); /* far more than an edge's pixels */
             TL_CHECK_LE(worst, ldexp(1.0, -9));
             free(got);
         }
@@ -445,8 +439,7 @@ TL_TEST(light_scale_relit_count_and_full_fixup_list)
 /* ---- the tiled pass as a compute pass ------------------------------------------------------------
  * At a reduced scale the compute variant of the tiled light pass dispatches over the light buffer's
  * texels and reads the tile of their block: the same light buffer as the fragment variant, so the
- * same HDR, bit for bit, at an odd size too (boxes, two point lights and a spot: no coplanar
- * surfaces, whose re-lit pixels the fix-up may resolve either way). */
+ * same HDR, bit for bit, at an odd size too (boxes, two point lights and a spot). */
 TL_TEST(light_scale_tiled_compute_matches_fragment)
 {
     if (!ensure_context()) return;
@@ -581,7 +574,7 @@ static int crypt_frame(const tl_scene *s, tl_render_mode mode, float k, figures 
     f->relit = (double)relit / ((double)FW * FH);
     f->gpu_ms = st.gpu_ms;
     f->light_ms = st.pass_ms[TL_PASS_LIGHT_REDUCE] + st.pass_ms[TL_PASS_LIGHTS] + st.pass_ms[TL_PASS_LIGHTS_TILED] +
-                  st.pass_ms[TL_PASS_LIGHT_CULL] + st.pass_ms[TL_PASS_LIGHT_FIXUP];
+                  st.pass_ms[TL_PASS_LIGHT_CULL];
     /* the library counts re-lit fragments: a pixel two coplanar surfaces both draw at its depth
      * (depth EQUAL passes both) counts twice; the marks are per pixel. So the count is at least the
      * marked pixels and at most that plus the material pass's fragments beyond the covered pixels */
