@@ -7,6 +7,7 @@
 #include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 
+#include <climits>
 #include <cstring>
 
 namespace tl_io {
@@ -68,6 +69,11 @@ decode_status read_pixels(OIIO::ImageInput &in, const OIIO::ImageSpec &spec, siz
 {
     if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels <= 0 || spec.nchannels > 4) {
         *why = "unsupported image layout";
+        return decode_status::corrupt;
+    }
+    // rows are read at spec.y + y: an origin (PNG's oFFs) whose last row is past INT_MAX cannot be read
+    if (spec.y > INT_MAX - spec.height || spec.y < INT_MIN + spec.height) {
+        *why = "image origin " + std::to_string(spec.y) + " puts its rows out of range";
         return decode_status::corrupt;
     }
     size_t w = (size_t)spec.width, h = (size_t)spec.height;
