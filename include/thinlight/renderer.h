@@ -347,7 +347,9 @@ typedef struct tl_renderer_options {
      *  default, 1). Below 1 the light is computed on a reduced depth and RT0, upsampled in the
      *  material pass with depth and normal aware weights, and pixels with no credible reduced
      *  neighbour are re-lit at full resolution (docs/frame.md, "Light at reduced resolution").
-     *  Other modes plan as with 1; a reduced light buffer uses the volumes strategy. */
+     *  Other modes plan as with 1. Both light strategies run at the reduced size, chosen as at
+     *  scale 1 (light_strategy, or auto: tiles from 32 local lights on), the tiles counted in the
+     *  frame's pixels at twice tile_size (tl_frame_plan.light_strategy and tile_size say which). */
     float light_scale;
     /** Alpha-blended materials: auto (default), forward or stipple (tl_transparency). */
     tl_transparency transparency;
