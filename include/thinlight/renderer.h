@@ -707,7 +707,9 @@ TL_API tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **
  *  otherwise it frees nothing and logs why; call it again where the context is current); NULL is
  *  ignored. Destroy the renderer before its context. */
 TL_API void tl_renderer_destroy(tl_renderer *r);
-/** The last failure's message on this renderer ("" when none). */
+/** The last failure's message on this renderer ("" when none): about this renderer's calls only
+ *  (a failed tl_image_write leaves it as it was). The line of whichever call failed last, in any
+ *  layer, is in the tl_last_error of a tl_last_error_logger given to every descriptor (base.h). */
 TL_API const char *tl_renderer_last_error(const tl_renderer *r);
 
 /** Uploads a scene (geometry, materials, textures, lights), plans the frame from its features,
