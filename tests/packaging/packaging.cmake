@@ -31,6 +31,11 @@
 #                                           hidden, added and removed objects, dirty GL state, a resize;
 #                                           no program built after the first round; a PNG
 #   docs_engine_loop_matches_source         docs/getting-started.md shows docs/engine_loop.c verbatim
+#   gltf_and_own_objects_both_show          docs/gltf_and_own_objects.c: a glTF written at run time, set
+#                                           whole, then the program's own texture, material, box and
+#                                           light added; its box (red and blue texels) and the file's
+#                                           objects each change pixels when hidden; a PNG
+#   docs_gltf_and_own_objects_matches_source  docs/getting-started.md shows it verbatim
 #   docs_api_reference                      the thinlight_docs target (doxygen, warnings fail)
 #
 # Included by tests/CMakeLists.txt it adds the tests; run with `cmake -P` it is the checker, with
@@ -442,6 +447,19 @@ if(CMAKE_SCRIPT_MODE_FILE)
   elseif(CHECK STREQUAL "engine_loop_doc")
     expect_doc_program(engine_loop.c)
 
+  elseif(CHECK STREQUAL "gltf_and_own_objects")
+    # A glTF written now (make_gltf_scenes: a floor and a box under the file's lights), then the
+    # program adds its own texture, material, box and light; it fails unless both show.
+    run("make_gltf_scenes" "${MAKE_SCENES}" "${WORK}")
+    set(png "${WORK}/gltf_and_own_objects.png")
+    run("gltf_and_own_objects" ${CMAKE_COMMAND} -E env "LSAN_OPTIONS=suppressions=${LSAN_SUPP}:print_suppressions=0"
+      "${PROGRAM}" "${WORK}/lights.gltf" "${png}")
+    message(STATUS "${out}")
+    expect_png("${png}")
+
+  elseif(CHECK STREQUAL "gltf_and_own_objects_doc")
+    expect_doc_program(gltf_and_own_objects.c)
+
   elseif(CHECK STREQUAL "getting_started_doc")
     file(STRINGS "${SOURCE_DIR}/docs/getting_started.c" lines)
     list(LENGTH lines n)
@@ -547,6 +565,15 @@ if(TARGET thinlight_io AND THINLIGHT_WITH_OSMESA)
     ARGS -DPROGRAM=$<TARGET_FILE:tl_engine_loop>)
 endif()
 tl_add_packaging_test(docs_engine_loop_matches_source engine_loop_doc LABELS "packaging;docs")
+# docs/gltf_and_own_objects.c: a loaded glTF and the application's own texture, material, box and
+# light in one renderer; both show in the frame, and the program is on the page.
+if(TARGET thinlight_io AND THINLIGHT_WITH_OSMESA AND TARGET make_gltf_scenes)
+  add_executable(tl_gltf_and_own_objects ${PROJECT_SOURCE_DIR}/docs/gltf_and_own_objects.c)
+  target_link_libraries(tl_gltf_and_own_objects PRIVATE thinlight::thinlight thinlight_warnings m)
+  tl_add_packaging_test(gltf_and_own_objects_both_show gltf_and_own_objects LABELS "packaging;docs;gl;gltf"
+    ARGS -DPROGRAM=$<TARGET_FILE:tl_gltf_and_own_objects> -DMAKE_SCENES=$<TARGET_FILE:make_gltf_scenes>)
+endif()
+tl_add_packaging_test(docs_gltf_and_own_objects_matches_source gltf_and_own_objects_doc LABELS "packaging;docs")
 
 if(TARGET thinlight_docs)
   add_test(NAME docs_api_reference
