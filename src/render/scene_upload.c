@@ -363,8 +363,8 @@ void tl__scene_take_frame(tl__device *dev, tl__scene_gpu *g, const tl__scene_fra
 }
 
 /* Checks `m` as material `what` and writes it into record `index` (the buffer holds it): its textures
- * as the renderer keeps them, its std140 record, its flags, model and features. Nothing changes on
- * failure. */
+ * as the renderer keeps them, its std140 record, its flags, model and features. On failure nothing
+ * that a frame draws changes (a linear copy of a kept texture may stay made, for a later use). */
 static tl_result tl__material_write(tl__device *dev, tl__scene_gpu *g, uint32_t index, const tl_material *m,
                                     const char *call, const char *what)
 {
