@@ -6,7 +6,7 @@
 #   lib/libthinlight.so.<version>, .so.<major>, .so, libthinlight.a       (THINLIGHT_WITH_RENDERER)
 #   lib/cmake/thinlight/thinlightConfig.cmake, thinlightConfigVersion.cmake,
 #       thinlightTargets*.cmake, thinlightStaticTargets*.cmake
-#   lib/pkgconfig/thinlight-codec.pc, thinlight.pc
+#   lib/pkgconfig/thinlight-codec.pc, thinlight.pc, thinlight-codec-static.pc, thinlight-static.pc
 #
 # Components: Runtime (shared libraries), Development (the rest).
 
@@ -96,9 +96,16 @@ if("glfw3" IN_LIST THINLIGHT_CMAKE_PACKAGES)
   set(THINLIGHT_PC_EXTRA_LIBS_PRIVATE " -lglfw") # GLFW found by its CMake package, no .pc
 endif()
 
-set(_tl_pc_files thinlight-codec)
+# The -static files name the archive by its path: -lthinlight would pick the shared library that
+# lies beside it, so `pkg-config --libs thinlight-static` links libthinlight.a and what it needs.
+set(THINLIGHT_PC_STATIC_CODEC "${CMAKE_STATIC_LIBRARY_PREFIX}thinlight-codec${CMAKE_STATIC_LIBRARY_SUFFIX}")
+set(THINLIGHT_PC_STATIC_THINLIGHT "${CMAKE_STATIC_LIBRARY_PREFIX}thinlight${CMAKE_STATIC_LIBRARY_SUFFIX}")
+set(_tl_pc_files thinlight-codec thinlight-codec-static)
 if(TARGET thinlight)
   list(APPEND _tl_pc_files thinlight)
+endif()
+if(TARGET thinlight_static)
+  list(APPEND _tl_pc_files thinlight-static)
 endif()
 if(IS_ABSOLUTE "${THINLIGHT_INSTALL_PKGCONFIGDIR}")
   set(_tl_pc_destination "${THINLIGHT_INSTALL_PKGCONFIGDIR}")

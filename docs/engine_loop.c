@@ -23,11 +23,6 @@ static gl_range_fn gl_depth_range;
 static gl_rect_fn gl_scissor;
 static gl_color_fn gl_clear_color;
 
-static void keep_error(void *user, tl_log_level level, const char *message)
-{
-    if (level == TL_LOG_ERROR) snprintf((char *)user, 256, "%s", message);
-}
-
 /* An application pass: a marker drawn into HDR before the tone map, with the engine's GL. */
 static void marker(void *user, const tl_app_pass_context *ctx)
 {
@@ -70,14 +65,14 @@ static void place(float m[16], float x, float y, float z, float angle, float sca
 int main(int argc, char **argv)
 {
     const char *path = argc > 1 ? argv[1] : "engine_loop.png";
-    char error[256] = "";
+    tl_last_error error = {0}; /* every call's failure line, whichever call it was */
+    const tl_logger log = tl_last_error_logger(&error);
     uint32_t width = 320, height = 180;
     tl_context *ctx = NULL;
     tl_renderer *r = NULL;
     static uint8_t rgba[400 * 225 * 4];
-    tl_result res = tl_context_create(&(tl_context_desc){.width = 400, .height = 225, .logger = {keep_error, error}},
-                                      &ctx);
-    if (res != TL_OK) return fprintf(stderr, "engine_loop: %s\n", error), 1;
+    tl_result res = tl_context_create(&(tl_context_desc){.width = 400, .height = 225, .logger = log}, &ctx);
+    if (res != TL_OK) return fprintf(stderr, "engine_loop: %s\n", error.message), 1;
     gl_enable = (gl_enum_fn)tl_context_get_proc_address(ctx, "glEnable");
     gl_disable = (gl_enum_fn)tl_context_get_proc_address(ctx, "glDisable");
     gl_front_face = (gl_enum_fn)tl_context_get_proc_address(ctx, "glFrontFace");
@@ -105,7 +100,7 @@ int main(int argc, char **argv)
                       .object_count = 1 + BOXES, .materials = materials, .material_count = 4, .lights = lights,
                       .ambient = {0.03f, 0.03f, 0.04f}, .camera = {.position = {0, 6, 11}, .target = {0, 0.5f, 0}}};
     tl_renderer_desc desc = {.width = width, .height = height, .get_proc_address = tl_context_proc_loader,
-                             .get_proc_address_user = ctx, .logger = {keep_error, error}};
+                             .get_proc_address_user = ctx, .logger = log};
     tl_app_pass_desc pass = {.name = "marker", .before = "tonemap", .writes = TL_TARGET_BIT(TL_TARGET_HDR),
                              .execute = marker};
     res = tl_renderer_create(&desc, &r);
@@ -161,12 +156,11 @@ int main(int argc, char **argv)
     if (res == TL_OK) res = tl_renderer_read_output(r, rgba, &size);
     if (res == TL_OK)
         res = tl_image_write(path, &(tl_image_desc){.width = width, .height = height, .channels = 4, .bottom_up = 1,
-                                                    .logger = {keep_error, error}}, rgba);
-    if (res != TL_OK && r && !error[0]) snprintf(error, sizeof error, "%s", tl_renderer_last_error(r));
+                                                    .logger = log}, rgba);
     if (res == TL_OK)
         printf("wrote %s (%ux%u) after %d frames (object %u added); programs built after the first round of options: "
                "%u\n", path, width, height, FRAMES, added, rebuilt);
-    else fprintf(stderr, "engine_loop: %s: %s\n", tl_result_string(res), error);
+    else fprintf(stderr, "engine_loop: %s: %s\n", tl_result_string(res), error.message);
     tl_renderer_destroy(r);
     tl_context_destroy(ctx);
     return res == TL_OK && rebuilt == 0 ? 0 : 1;

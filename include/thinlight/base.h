@@ -86,6 +86,26 @@ typedef struct tl_logger {
  *  value that is not a tl_result). */
 TL_API const char *tl_result_string(tl_result result);
 
+/** Bytes of tl_last_error.message: a logged line is at most TL_LOG_LINE_MAX - 1 bytes. */
+#define TL_LOG_LINE_MAX 1024
+
+/**
+ * The one place to read why any call failed: a caller-owned record that the logger made by
+ * tl_last_error_logger() fills. Give that logger to every descriptor (tl_renderer_desc,
+ * tl_context_desc, tl_gltf_options, tl_image_desc, tl_file_write_desc, ...): after any call fails,
+ * `message` is that call's line, whichever layer it came from (docs/getting-started.md, "Errors,
+ * logging and memory"). Zero it before use; it is written on the thread of the call that logs.
+ */
+typedef struct tl_last_error {
+    char message[TL_LOG_LINE_MAX]; /**< the last TL_LOG_ERROR line received; "" before the first */
+    uint64_t count;                /**< TL_LOG_ERROR lines received: a program tells a new failure from an old one */
+    tl_logger next;                /**< every line (errors, warnings, information) is passed on to it; zeroed: none */
+} tl_last_error;
+
+/** A tl_logger that keeps each error line in `last` (and passes every line on to last->next).
+ *  NULL gives a silent logger. */
+TL_API tl_logger tl_last_error_logger(tl_last_error *last);
+
 #ifdef __cplusplus
 }
 #endif

@@ -347,7 +347,9 @@ typedef struct tl_renderer_options {
      *  default, 1). Below 1 the light is computed on a reduced depth and RT0, upsampled in the
      *  material pass with depth and normal aware weights, and pixels with no credible reduced
      *  neighbour are re-lit at full resolution (docs/frame.md, "Light at reduced resolution").
-     *  Other modes plan as with 1; a reduced light buffer uses the volumes strategy. */
+     *  Other modes plan as with 1. Both light strategies run at the reduced size, chosen as at
+     *  scale 1 (light_strategy, or auto: tiles from 32 local lights on), the tiles counted in the
+     *  frame's pixels at twice tile_size (tl_frame_plan.light_strategy and tile_size say which). */
     float light_scale;
     /** Alpha-blended materials: auto (default), forward or stipple (tl_transparency). */
     tl_transparency transparency;
@@ -703,7 +705,9 @@ TL_API tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **
  *  otherwise it frees nothing and logs why; call it again where the context is current); NULL is
  *  ignored. Destroy the renderer before its context. */
 TL_API void tl_renderer_destroy(tl_renderer *r);
-/** The last failure's message on this renderer ("" when none). */
+/** The last failure's message on this renderer ("" when none): about this renderer's calls only
+ *  (a failed tl_image_write leaves it as it was). The line of whichever call failed last, in any
+ *  layer, is in the tl_last_error of a tl_last_error_logger given to every descriptor (base.h). */
 TL_API const char *tl_renderer_last_error(const tl_renderer *r);
 
 /** Uploads a scene (geometry, materials, textures, lights), plans the frame from its features,
@@ -769,9 +773,24 @@ TL_API tl_result tl_renderer_remove_object(tl_renderer *r, uint32_t object);
 TL_API tl_result tl_renderer_add_geometry(tl_renderer *r, const tl_vertex *vertices, size_t vertex_count,
                                           const uint32_t *indices, size_t index_count, uint32_t *first_index);
 /** Replaces material `index` of the scene (one std140 record written). Its maps may name the
- *  textures that some material of the scene named at set_scene (the renderer keeps only those);
- *  another is TL_ERROR_INVALID_ARGUMENT naming the field. Re-plans when the features change. */
+ *  textures that some material of the scene named at set_scene (the renderer keeps only those) or
+ *  that tl_renderer_add_texture added; another is TL_ERROR_INVALID_ARGUMENT naming the field.
+ *  Re-plans when the features change. */
 TL_API tl_result tl_renderer_set_material(tl_renderer *r, uint32_t index, const tl_material *material);
+/** Adds a texture after set_scene and writes its index in the scene's textures, for
+ *  TL_TEXTURE_MAP(index) in the maps of tl_renderer_add_material or set_material: an application's
+ *  own textures beside a loaded glTF's. Checked as set_scene checks tl_scene.textures (refused
+ *  naming the field, "texture.width = 0: outside 1..16384"). The pixels are uploaded now (kept as
+ *  sRGB; a material that reads the texture as data gets a linear copy made on the GPU) and are the
+ *  caller's again when the call returns. */
+TL_API tl_result tl_renderer_add_texture(tl_renderer *r, const tl_texture *texture, uint32_t *index);
+/** Adds a material after set_scene and writes its index, for tl_object.material in
+ *  tl_renderer_add_object or set_object. Checked as set_scene checks tl_scene.materials; its maps
+ *  may name textures added with tl_renderer_add_texture or named by a material at set_scene. In a
+ *  scene without materials, the zeroed material its objects draw becomes material 0 and the first
+ *  material added is 1. Re-plans only when an object draws it with something the scene lacked
+ *  (docs/getting-started.md, "A loaded scene and your own objects"). */
+TL_API tl_result tl_renderer_add_material(tl_renderer *r, const tl_material *material, uint32_t *index);
 /** An object as the renderer draws it (transform and bounds resolved) and whether it is visible;
  *  TL_ERROR_INVALID_ARGUMENT for an id that does not exist or was removed. */
 TL_API tl_result tl_renderer_get_object(tl_renderer *r, uint32_t object, tl_object *desc, int *visible);

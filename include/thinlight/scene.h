@@ -319,12 +319,14 @@ typedef struct tl_default_scene_desc {
     /** 1: the moonlight and the braziers (the point lights above the braziers, one in eight of
      *  them at most) cast shadows (tl_light.shadow); default 0: no light casts. */
     int shadows;
+    tl_logger logger;        /**< a failure's one line, naming the field and its value; zeroed: silent */
 } tl_default_scene_desc;
 
 /** Builds the built-in crypt scene (a vaulted hall crypt, metres, Y up; exposure 1 with an ACES or
  * Reinhard tone map). NULL desc means all defaults. TL_ERROR_INVALID_ARGUMENT for a NULL out,
  * detail > 8, glass_panes > 8 or an allocator with only one of alloc/free; TL_ERROR_LIMIT for more than 65536
- * point or spot lights; TL_ERROR_OUT_OF_MEMORY (nothing leaked). *out is NULL on failure. */
+ * point or spot lights; TL_ERROR_OUT_OF_MEMORY (nothing leaked). *out is NULL on failure, and one
+ * line naming the field and its value goes to desc->logger. */
 TL_API tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **out);
 /** Frees a scene from any tl_scene_* constructor; NULL is ignored. */
 TL_API void tl_scene_destroy(tl_scene *scene);
@@ -334,6 +336,7 @@ typedef struct tl_showcase_scene_desc {
     uint32_t point_lights;  /**< default 8; at most 65536; their total light is the same at any count */
     uint64_t seed;          /**< default 1; moves only the lights */
     tl_allocator allocator; /**< zeroed: malloc/free */
+    tl_logger logger;       /**< a failure's one line, naming the field and its value; zeroed: silent */
 } tl_showcase_scene_desc;
 
 /** Builds the material-model showcase (docs/lighting.md, "Material models"): a row of five spheres

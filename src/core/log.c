@@ -71,3 +71,24 @@ void tl__logger_message(const tl_logger *logger, tl_log_level level, const char 
     va_end(ap);
     logger->fn(logger->user, level, line);
 }
+
+/* tl_last_error_logger's function: the error line kept in the caller's record, every line passed on. */
+static void tl__keep_last_error(void *user, tl_log_level level, const char *message)
+{
+    tl_last_error *last = (tl_last_error *)user;
+    if (level == TL_LOG_ERROR) {
+        snprintf(last->message, sizeof last->message, "%s", message);
+        last->count++;
+    }
+    if (last->next.fn) last->next.fn(last->next.user, level, message);
+}
+
+tl_logger tl_last_error_logger(tl_last_error *last)
+{
+    tl_logger logger = {0};
+    if (last) {
+        logger.fn = tl__keep_last_error;
+        logger.user = last;
+    }
+    return logger;
+}

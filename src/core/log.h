@@ -22,7 +22,7 @@ extern "C" {
 #  define TL__PRINTF_LIKE(f, a)
 #endif
 
-#define TL__LOG_MESSAGE_SIZE 1024
+#define TL__LOG_MESSAGE_SIZE TL_LOG_LINE_MAX /* the public bound (base.h) */
 
 typedef struct tl__log {
     tl_logger logger;                    /* zeroed: silent */

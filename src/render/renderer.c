@@ -291,6 +291,27 @@ tl_result tl_renderer_set_material(tl_renderer *r, uint32_t index, const tl_mate
     return tl__updated(r, res, replan);
 }
 
+tl_result tl_renderer_add_material(tl_renderer *r, const tl_material *material, uint32_t *index)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    int replan = 0;
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_add_material");
+    if (res == TL_OK) res = tl__scene_add_material(&r->dev, &r->scene, material, index, &replan);
+    return tl__updated(r, res, replan);
+}
+
+tl_result tl_renderer_add_texture(tl_renderer *r, const tl_texture *texture, uint32_t *index)
+{
+    if (!r) return TL_ERROR_INVALID_ARGUMENT;
+    tl_result res = tl__need_context(&r->dev, "tl_renderer_add_texture");
+    if (res != TL_OK) return res;
+    tl__pixel_store saved; /* uploaded with GL's unpack defaults; the application's come back */
+    tl__pixel_store_enter(&r->dev.gl, 1, &saved);
+    res = tl__scene_add_texture(&r->dev, &r->scene, texture, index);
+    tl__pixel_store_leave(&r->dev.gl, &saved);
+    return res;
+}
+
 tl_result tl_renderer_get_object(tl_renderer *r, uint32_t object, tl_object *desc, int *visible)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;

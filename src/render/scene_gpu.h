@@ -67,8 +67,10 @@ struct tl__scene_gpu {
     tl_scene_feature_set *material_features; /* per material: what it alone needs (tl_scene_features) */
     tl__gpu_material *materials;
     size_t material_count;
+    size_t material_capacity; /* records the per-material arrays and ubo_materials hold (add_material) */
     GLuint *tex_srgb, *tex_linear; /* per scene texture, created on first use by a material */
     size_t texture_count;
+    size_t texture_capacity;  /* entries tex_srgb and tex_linear hold (add_texture) */
     /* per frame: opaque triangles in scene order, then transparent ones far to near, then points and
      * lines in scene order */
     uint32_t *visible;
@@ -118,6 +120,10 @@ tl_result tl__scene_remove_object(tl__device *dev, tl__scene_gpu *g, uint32_t id
 tl_result tl__scene_add_geometry(tl__device *dev, tl__scene_gpu *g, const tl_vertex *vertices, size_t vertex_count,
                                  const uint32_t *indices, size_t index_count, uint32_t *first_index);
 tl_result tl__scene_set_material(tl__device *dev, tl__scene_gpu *g, uint32_t index, const tl_material *m, int *replan);
+/* A texture uploaded now (sRGB; a linear copy is made on the GPU when a material reads it as data)
+ * and a material appended; each writes the new index. The caller sets the pixel store. */
+tl_result tl__scene_add_texture(tl__device *dev, tl__scene_gpu *g, const tl_texture *t, uint32_t *index);
+tl_result tl__scene_add_material(tl__device *dev, tl__scene_gpu *g, const tl_material *m, uint32_t *index, int *replan);
 /* Whether the features changed with the materials' uses or records (sets tl__scene_gpu.features). */
 int tl__scene_features_refresh(tl__scene_gpu *g);
 /* The union of the objects' bounds again, after objects moved (before a view is resolved). */

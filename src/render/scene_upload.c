@@ -280,6 +280,7 @@ static tl_result tl__upload_materials(tl__device *dev, tl__scene_gpu *g, const t
     tl__gl_label(gl, GL_BUFFER, g->ubo_materials, "buffer.materials");
     tl__free(&dev->alloc, records);
     g->material_count = s->material_count;
+    g->material_capacity = n;
     return TL_OK;
 }
 
@@ -326,6 +327,7 @@ tl_result tl__scene_upload(tl__device *dev, tl__scene_gpu *g, const tl_scene *s)
     g->object_count = s->object_count;
     g->object_capacity = no;
     g->texture_count = s->texture_count;
+    g->texture_capacity = nt;
     tl_result res = tl__upload_materials(dev, g, s);
     if (res != TL_OK) {
         tl__free(a, ids);
@@ -360,16 +362,13 @@ void tl__scene_take_frame(tl__device *dev, tl__scene_gpu *g, const tl__scene_fra
     if (f->warning[0]) tl__log_message(&dev->log, TL_LOG_WARNING, "renderer: %s", f->warning);
 }
 
-tl_result tl__scene_set_material(tl__device *dev, tl__scene_gpu *g, uint32_t index, const tl_material *m, int *replan)
+/* Checks `m` as material `what` and writes it into record `index` (the buffer holds it): its textures
+ * as the renderer keeps them, its std140 record, its flags, model and features. On failure nothing
+ * that a frame draws changes (a linear copy of a kept texture may stay made, for a later use). */
+static tl_result tl__material_write(tl__device *dev, tl__scene_gpu *g, uint32_t index, const tl_material *m,
+                                    const char *call, const char *what)
 {
-    const char *call = "set_material";
-    if (!g->loaded) return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: no scene (set_scene first)", call);
-    if (!m) return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: no material", call);
-    if (index >= g->material_count)
-        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: material %u: past the scene's %zu materials",
-                        call, index, g->material_count);
-    char what[48], msg[TL__CHECK_MESSAGE_SIZE];
-    snprintf(what, sizeof what, "materials[%u]", index);
+    char msg[TL__CHECK_MESSAGE_SIZE];
     tl_result res = tl__material_check(m, what, g->texture_count, msg, sizeof msg);
     if (res != TL_OK) return tl__fail(dev, res, "renderer: %s: %s", call, msg);
     tl_material resolved;
@@ -383,7 +382,8 @@ tl_result tl__scene_set_material(tl__device *dev, tl__scene_gpu *g, uint32_t ind
         if (!textures[k])
             return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT,
                             "renderer: %s: %s.%s names texture %u, which no material used at set_scene: the renderer "
-                            "kept no copy of it (name it in some material of the scene to keep it)",
+                            "kept no copy of it (name it in some material of the scene to keep it, or give it again "
+                            "with tl_renderer_add_texture)",
                             call, what, tl__material_texture_slots[k].name, t);
         mask |= 1 << k;
     }
@@ -396,6 +396,119 @@ tl_result tl__scene_set_material(tl__device *dev, tl__scene_gpu *g, uint32_t ind
     memcpy(g->materials[index].textures, textures, sizeof textures);
     g->material_features[index] = (tl_scene_feature_set){0};
     tl__material_features(m, g->texture_count, &g->material_features[index]);
+    return TL_OK;
+}
+
+tl_result tl__scene_set_material(tl__device *dev, tl__scene_gpu *g, uint32_t index, const tl_material *m, int *replan)
+{
+    const char *call = "set_material";
+    if (!g->loaded) return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: no scene (set_scene first)", call);
+    if (!m) return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: no material", call);
+    if (index >= g->material_count)
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: material %u: past the scene's %zu materials",
+                        call, index, g->material_count);
+    char what[48];
+    snprintf(what, sizeof what, "materials[%u]", index);
+    tl_result res = tl__material_write(dev, g, index, m, call, what);
+    if (res != TL_OK) return res;
     *replan = tl__scene_features_refresh(g);
+    return TL_OK;
+}
+
+/* Room for `need` materials: the per-material arrays and the uniform buffer of their records, whose
+ * contents are copied on the GPU; doubled. */
+static tl_result tl__materials_grow(tl__device *dev, tl__scene_gpu *g, size_t need)
+{
+    if (need <= g->material_capacity) return TL_OK;
+    size_t cap = g->material_capacity * 2 > need ? g->material_capacity * 2 : need, old = g->material_capacity;
+    tl_allocator *a = &dev->alloc;
+    tl__gpu_material *materials = (tl__gpu_material *)tl__calloc(a, cap, sizeof *materials);
+    uint32_t *uses = (uint32_t *)tl__calloc(a, cap, sizeof *uses);
+    tl_scene_feature_set *features = (tl_scene_feature_set *)tl__calloc(a, cap, sizeof *features);
+    if (!materials || !uses || !features) {
+        tl__free(a, materials);
+        tl__free(a, uses);
+        tl__free(a, features);
+        return tl__fail(dev, TL_ERROR_OUT_OF_MEMORY, "renderer: add_material: out of memory for %zu materials", cap);
+    }
+    memcpy(materials, g->materials, old * sizeof *materials);
+    memcpy(uses, g->material_uses, old * sizeof *uses);
+    memcpy(features, g->material_features, old * sizeof *features);
+    tl__free(a, g->materials);
+    tl__free(a, g->material_uses);
+    tl__free(a, g->material_features);
+    g->materials = materials;
+    g->material_uses = uses;
+    g->material_features = features;
+    const GladGLContext *gl = &dev->gl;
+    GLuint b = 0;
+    gl->CreateBuffers(1, &b);
+    gl->NamedBufferStorage(b, (GLsizeiptr)(cap * g->material_stride), NULL, GL_DYNAMIC_STORAGE_BIT);
+    gl->CopyNamedBufferSubData(g->ubo_materials, b, 0, 0, (GLsizeiptr)(old * g->material_stride));
+    tl__gl_label(gl, GL_BUFFER, b, "buffer.materials");
+    gl->DeleteBuffers(1, &g->ubo_materials);
+    g->ubo_materials = b;
+    g->material_capacity = cap;
+    return TL_OK;
+}
+
+tl_result tl__scene_add_material(tl__device *dev, tl__scene_gpu *g, const tl_material *m, uint32_t *index, int *replan)
+{
+    const char *call = "add_material";
+    if (!g->loaded) return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: no scene (set_scene first)", call);
+    if (!m || !index)
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: %s", call,
+                        !m ? "no material" : "no place for the index");
+    /* a scene without materials draws the zeroed material as material 0: it becomes one, the first
+     * added is 1, and the objects drawing material 0 still draw the grey one */
+    size_t at = g->material_count ? g->material_count : 1;
+    if (at >= UINT32_MAX)
+        return tl__fail(dev, TL_ERROR_LIMIT, "renderer: %s: %zu materials: the limit (tl_object.material is 32-bit)",
+                        call, at);
+    tl_result res = tl__materials_grow(dev, g, at + 1);
+    if (res == TL_OK) res = tl__material_write(dev, g, (uint32_t)at, m, call, "material");
+    if (res != TL_OK) return res;
+    if (!g->material_count) tl__material_features(&(tl_material){0}, g->texture_count, &g->material_features[0]);
+    g->material_count = at + 1;
+    *index = (uint32_t)at;
+    *replan = tl__scene_features_refresh(g);
+    return TL_OK;
+}
+
+tl_result tl__scene_add_texture(tl__device *dev, tl__scene_gpu *g, const tl_texture *t, uint32_t *index)
+{
+    const char *call = "add_texture";
+    if (!g->loaded) return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: no scene (set_scene first)", call);
+    if (!t || !index)
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: %s", call,
+                        !t ? "no texture" : "no place for the index");
+    if (g->texture_count >= UINT32_MAX) /* a map is the index + 1, a uint32_t */
+        return tl__fail(dev, TL_ERROR_LIMIT, "renderer: %s: %zu textures: the limit (maps are index + 1, 32-bit)",
+                        call, g->texture_count);
+    char msg[TL__CHECK_MESSAGE_SIZE];
+    tl_result res = tl__texture_check(t, "texture", (uint32_t)dev->lim.max_texture_size, msg, sizeof msg);
+    if (res != TL_OK) return tl__fail(dev, res, "renderer: %s: %s", call, msg);
+    if (g->texture_count >= g->texture_capacity) {
+        size_t cap = g->texture_capacity * 2 > g->texture_count + 1 ? g->texture_capacity * 2 : g->texture_count + 1;
+        GLuint *srgb = (GLuint *)tl__calloc(&dev->alloc, cap, sizeof *srgb);
+        GLuint *linear = (GLuint *)tl__calloc(&dev->alloc, cap, sizeof *linear);
+        if (!srgb || !linear) {
+            tl__free(&dev->alloc, srgb);
+            tl__free(&dev->alloc, linear);
+            return tl__fail(dev, TL_ERROR_OUT_OF_MEMORY, "renderer: %s: out of memory for %zu textures", call, cap);
+        }
+        memcpy(srgb, g->tex_srgb, g->texture_count * sizeof *srgb);
+        memcpy(linear, g->tex_linear, g->texture_count * sizeof *linear);
+        tl__free(&dev->alloc, g->tex_srgb);
+        tl__free(&dev->alloc, g->tex_linear);
+        g->tex_srgb = srgb;
+        g->tex_linear = linear;
+        g->texture_capacity = cap;
+    }
+    /* the pixels are the caller's only during the call: kept as sRGB (colour maps are the common
+     * use), the linear twin copied from it on the GPU by tl__kept_texture when a material needs it */
+    g->tex_srgb[g->texture_count] = tl__upload_texture(dev, t, 1);
+    g->tex_linear[g->texture_count] = 0;
+    *index = (uint32_t)g->texture_count++;
     return TL_OK;
 }

@@ -10,6 +10,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "core/log.h"
 #include "scene_internal.h"
 
 #define TL__PI 3.14159265358979323846
@@ -688,12 +689,22 @@ static void tl__crypt_view(tl_scene *scene)
 
 tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **out)
 {
-    if (!out) return TL_ERROR_INVALID_ARGUMENT;
-    *out = NULL;
     tl_default_scene_desc d = desc ? *desc : (tl_default_scene_desc){0};
-    if ((d.allocator.alloc == NULL) != (d.allocator.free == NULL)) return TL_ERROR_INVALID_ARGUMENT;
-    if (d.detail > TL__MAX_DETAIL || d.glass_panes > TL__MAX_GLASS) return TL_ERROR_INVALID_ARGUMENT;
-    if (d.point_lights > TL__MAX_LIGHTS || d.spot_lights > TL__MAX_LIGHTS) return TL_ERROR_LIMIT;
+    const tl_logger *log = &d.logger;
+    if (!out) return tl__logger_fail(log, TL_ERROR_INVALID_ARGUMENT, "default scene: no place for the scene (out is NULL)");
+    *out = NULL;
+    if ((d.allocator.alloc == NULL) != (d.allocator.free == NULL))
+        return tl__logger_fail(log, TL_ERROR_INVALID_ARGUMENT, "default scene: the allocator needs both alloc and free");
+    if (d.detail > TL__MAX_DETAIL)
+        return tl__logger_fail(log, TL_ERROR_INVALID_ARGUMENT, "default scene: detail = %u: outside 1..%u (0: 4)",
+                               d.detail, TL__MAX_DETAIL);
+    if (d.glass_panes > TL__MAX_GLASS)
+        return tl__logger_fail(log, TL_ERROR_INVALID_ARGUMENT, "default scene: glass_panes = %u: outside 0..%u",
+                               d.glass_panes, TL__MAX_GLASS);
+    if (d.point_lights > TL__MAX_LIGHTS || d.spot_lights > TL__MAX_LIGHTS)
+        return tl__logger_fail(log, TL_ERROR_LIMIT, "default scene: %s = %u: over the limit of %u",
+                               d.point_lights > TL__MAX_LIGHTS ? "point_lights" : "spot_lights",
+                               d.point_lights > TL__MAX_LIGHTS ? d.point_lights : d.spot_lights, TL__MAX_LIGHTS);
     if (d.point_lights == 0) d.point_lights = 64;
     if (d.spot_lights == 0) d.spot_lights = d.point_lights / 8;
     if (d.seed == 0) d.seed = 1;
@@ -703,10 +714,12 @@ tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **
     tl__builder counter = {.counting = 1};
     tl__crypt layout = {.b = &counter, .detail = d.detail, .glass_panes = d.glass_panes};
     tl__crypt_build(&layout);
-    if (counter.vertex_count > UINT32_MAX || counter.index_count > UINT32_MAX) return TL_ERROR_LIMIT;
+    if (counter.vertex_count > UINT32_MAX || counter.index_count > UINT32_MAX)
+        return tl__logger_fail(log, TL_ERROR_LIMIT, "default scene: %zu vertices, %zu indices: past 32-bit indices",
+                               counter.vertex_count, counter.index_count);
     size_t light_count = (size_t)d.point_lights + d.spot_lights + (d.no_directional ? 0 : 1);
     tl_scene *scene = tl__crypt_alloc(&d.allocator, &counter, light_count);
-    if (!scene) return TL_ERROR_OUT_OF_MEMORY;
+    if (!scene) return tl__logger_fail(log, TL_ERROR_OUT_OF_MEMORY, "default scene: out of memory");
 
     /* pass 2: write */
     tl__builder writer = {
@@ -722,7 +735,7 @@ tl_result tl_scene_create_default(const tl_default_scene_desc *desc, tl_scene **
     if (writer.overflow || writer.vertex_count != counter.vertex_count ||
         writer.index_count != counter.index_count || writer.object_count != counter.object_count) {
         tl_scene_destroy(scene); /* the two passes disagreed: a bug, never a partial scene */
-        return TL_ERROR_LIMIT;
+        return tl__logger_fail(log, TL_ERROR_LIMIT, "default scene: the counting and the writing pass disagree");
     }
     scene->vertex_count = writer.vertex_count;
     scene->index_count = writer.index_count;

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "core/alloc.h"
+#include "core/log.h"
 #include "scene_internal.h"
 
 #define TL__SC_PI 3.14159265358979323846
@@ -97,17 +98,21 @@ static void tl__sc_objects(tl_scene *s, uint32_t sphere_indices)
 
 tl_result tl_scene_create_showcase(const tl_showcase_scene_desc *desc, tl_scene **out)
 {
-    if (!out) return TL_ERROR_INVALID_ARGUMENT;
-    *out = NULL;
     tl_showcase_scene_desc d = desc ? *desc : (tl_showcase_scene_desc){0};
-    if ((d.allocator.alloc == NULL) != (d.allocator.free == NULL)) return TL_ERROR_INVALID_ARGUMENT;
-    if (d.point_lights > TL__SC_MAX_LIGHTS) return TL_ERROR_LIMIT;
+    const tl_logger *log = &d.logger;
+    if (!out) return tl__logger_fail(log, TL_ERROR_INVALID_ARGUMENT, "showcase scene: no place for the scene (out is NULL)");
+    *out = NULL;
+    if ((d.allocator.alloc == NULL) != (d.allocator.free == NULL))
+        return tl__logger_fail(log, TL_ERROR_INVALID_ARGUMENT, "showcase scene: the allocator needs both alloc and free");
+    if (d.point_lights > TL__SC_MAX_LIGHTS)
+        return tl__logger_fail(log, TL_ERROR_LIMIT, "showcase scene: point_lights = %u: over the limit of %u",
+                               d.point_lights, TL__SC_MAX_LIGHTS);
     uint32_t lights = d.point_lights ? d.point_lights : 8u;
     size_t sv = (TL__SC_STACKS + 1) * (TL__SC_SLICES + 1), si = (size_t)TL__SC_STACKS * TL__SC_SLICES * 6;
     size_t objects = TL__SC_ROWS * TL__SC_COLUMNS + 1;
     const tl_allocator *a = &d.allocator;
     tl_scene *s = tl__alloc_array(a, 1, sizeof *s);
-    if (!s) return TL_ERROR_OUT_OF_MEMORY;
+    if (!s) return tl__logger_fail(log, TL_ERROR_OUT_OF_MEMORY, "showcase scene: out of memory");
     memset(s, 0, sizeof *s);
     s->allocator = *a;
     s->vertices = tl__alloc_array(a, sv + 4, sizeof(tl_vertex));
@@ -117,7 +122,7 @@ tl_result tl_scene_create_showcase(const tl_showcase_scene_desc *desc, tl_scene 
     s->lights = tl__alloc_array(a, lights, sizeof(tl_light));
     if (!s->vertices || !s->indices || !s->objects || !s->materials || !s->lights) {
         tl_scene_destroy(s);
-        return TL_ERROR_OUT_OF_MEMORY;
+        return tl__logger_fail(log, TL_ERROR_OUT_OF_MEMORY, "showcase scene: out of memory");
     }
     tl__sc_sphere(s->vertices, s->indices);
     tl__sc_floor(s->vertices + sv, s->indices + si, (uint32_t)sv);
@@ -131,7 +136,10 @@ tl_result tl_scene_create_showcase(const tl_showcase_scene_desc *desc, tl_scene 
     s->camera = (tl_camera){.position = {0.0f, 3.4f, 5.0f}, .target = {0.0f, 0.1f, 0.3f}, .up = {0.0f, 1.0f, 0.0f},
                             .fov_y = (float)(TL__SC_PI / 3.0), .near_z = 0.1f, .far_z = 50.0f};
     tl_result res = tl_scene_compute_bounds(s);
-    if (res != TL_OK) tl_scene_destroy(s);
-    else *out = s;
-    return res;
+    if (res != TL_OK) {
+        tl_scene_destroy(s);
+        return tl__logger_fail(log, res, "showcase scene: its bounds could not be computed");
+    }
+    *out = s;
+    return TL_OK;
 }

@@ -228,6 +228,30 @@ TL_TEST(light_scale_plan_reduced_targets_and_refusals)
     tl_renderer_destroy(r);
 }
 
+/* The header once said a reduced light buffer uses the volumes strategy; the planner keeps the
+ * strategy of scale 1: auto's choice by the local lights' count, or the one asked for. */
+TL_TEST(light_scale_auto_strategy_as_at_scale_one)
+{
+    const size_t locals[4] = {1, 31, 32, 200}; /* either side of auto's crossover (32 local lights) */
+    for (int k = 1; k < 3; k++)
+        for (int i = 0; i < 4; i++) {
+            tl_scene_feature_set f = {.point_lights = locals[i] - locals[i] / 4, .spot_lights = locals[i] / 4,
+                                      .directional_lights = 1, .has_specular = 1};
+            tl_frame_plan one, reduced;
+            tl_renderer_desc d = {.width = 320, .height = 180};
+            TL_CHECK(tl_frame_plan_build(&d, &f, &one) == TL_OK);
+            d.options.light_scale = scales[k];
+            TL_CHECK(tl_frame_plan_build(&d, &f, &reduced) == TL_OK);
+            tl_light_strategy want = locals[i] >= 32 ? TL_LIGHT_STRATEGY_TILED : TL_LIGHT_STRATEGY_VOLUMES;
+            TL_CHECK(one.light_strategy == want && reduced.light_strategy == want);
+            TL_CHECK(strcmp(one.strategy_reason, reduced.strategy_reason) == 0);
+            TL_CHECK(!(reduced.targets & TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS)) == (want == TL_LIGHT_STRATEGY_VOLUMES));
+            if (want == TL_LIGHT_STRATEGY_TILED) TL_CHECK_EQ_U(reduced.tile_size, 2u * one.tile_size);
+            printf("scale %.2f, %zu local lights: %s (%s)\n", (double)scales[k], locals[i],
+                   tl_light_strategy_name(reduced.light_strategy), reduced.strategy_reason);
+        }
+}
+
 /* ---- a flat lit plane ----------------------------------------------------------------------------
  * A directional light on a Lambertian plane: the light is the same at every pixel, so the upsample
  * must return it unchanged. Both frames round the light sum to FP16 (a relative half-ulp, 2^-11) and

@@ -519,6 +519,239 @@ TL_TEST(updates_unkept_texture_refused_naming_the_field)
     tl_renderer_destroy(r);
 }
 
+/* ---- textures and materials added after set_scene ------------------------------------------------ */
+
+/* A 16x16 RGBA texture: red and blue quarters with a gradient, so that a wrong texel, colour space
+ * or orientation changes the image. */
+static void added_pixels(uint8_t px[16 * 16 * 4])
+{
+    for (int y = 0; y < 16; y++)
+        for (int x = 0; x < 16; x++) {
+            uint8_t *p = px + 4 * (y * 16 + x);
+            int red = (x < 8) != (y < 8);
+            p[0] = red ? (uint8_t)(150 + 6 * x) : 20;
+            p[1] = (uint8_t)(10 * y);
+            p[2] = red ? 30 : (uint8_t)(140 + 7 * y);
+            p[3] = 255;
+        }
+}
+
+/* A box 2.5 units in front of the scene's camera, 0.3 half-size. */
+static void box_before_camera(const tl_scene *s, tl_vertex v[24], uint32_t idx[36])
+{
+    float d[3], len = 0.0f, c[3];
+    for (int k = 0; k < 3; k++) d[k] = s->camera.target[k] - s->camera.position[k], len += d[k] * d[k];
+    len = sqrtf(len);
+    for (int k = 0; k < 3; k++) c[k] = s->camera.position[k] + 2.5f * d[k] / len;
+    box_mesh(c, 0.3f, v, idx);
+}
+
+/* The scene `s` with one texture, one material, a box's geometry and one object more: what a caller
+ * gives set_scene to draw what add_texture, add_material, add_geometry and add_object added. */
+typedef struct grown_scene {
+    tl_scene s;
+    tl_texture *textures;
+    tl_material *materials;
+    tl_vertex *vertices;
+    uint32_t *indices;
+    tl_object *objects;
+} grown_scene;
+
+static void grow_scene(const tl_scene *s, const tl_texture *t, const tl_material *m, const tl_vertex v[24],
+                       const uint32_t idx[36], const tl_object *o, grown_scene *g)
+{
+    g->s = *s;
+    g->textures = calloc(s->texture_count + 1, sizeof *g->textures);
+    g->materials = calloc(s->material_count + 2, sizeof *g->materials);
+    g->vertices = calloc(s->vertex_count + 24, sizeof *g->vertices);
+    g->indices = calloc(s->index_count + 36, sizeof *g->indices);
+    g->objects = calloc(s->object_count + 1, sizeof *g->objects);
+    if (!g->textures || !g->materials || !g->vertices || !g->indices || !g->objects) return;
+    if (s->texture_count) memcpy(g->textures, s->textures, s->texture_count * sizeof *g->textures);
+    if (s->material_count) memcpy(g->materials, s->materials, s->material_count * sizeof *g->materials);
+    memcpy(g->vertices, s->vertices, s->vertex_count * sizeof *g->vertices);
+    memcpy(g->indices, s->indices, s->index_count * sizeof *g->indices);
+    memcpy(g->objects, s->objects, s->object_count * sizeof *g->objects);
+    size_t nm = s->material_count ? s->material_count : 1; /* no materials: the zeroed one is material 0 */
+    g->textures[s->texture_count] = *t;
+    g->materials[nm] = *m;
+    memcpy(g->vertices + s->vertex_count, v, 24 * sizeof *v);
+    for (int i = 0; i < 36; i++) g->indices[s->index_count + i] = idx[i] + (uint32_t)s->vertex_count;
+    g->objects[s->object_count] = *o;
+    g->s.textures = g->textures;
+    g->s.texture_count = s->texture_count + 1;
+    g->s.materials = g->materials;
+    g->s.material_count = nm + 1;
+    g->s.vertices = g->vertices;
+    g->s.vertex_count = s->vertex_count + 24;
+    g->s.indices = g->indices;
+    g->s.index_count = s->index_count + 36;
+    g->s.objects = g->objects;
+    g->s.object_count = s->object_count + 1;
+}
+
+static void free_grown(grown_scene *g)
+{
+    free(g->textures);
+    free(g->materials);
+    free(g->vertices);
+    free(g->indices);
+    free(g->objects);
+}
+
+/* Adds the texture, a material mapping it as albedo and occlusion (sRGB and the linear copy), the
+ * box and an object drawing it; checks the new indices and that the object shows. Returns 0 on
+ * failure. `o` receives the object as the renderer resolved it. */
+static int add_textured_box(tl_renderer *r, const tl_scene *s, const tl_texture *t, const tl_material *m,
+                            const tl_vertex v[24], const uint32_t idx[36], tl_object *o)
+{
+    uint32_t tex = UINT32_MAX, mat = UINT32_MAX, first = 0, id = UINT32_MAX;
+    uint32_t want_mat = (uint32_t)(s->material_count ? s->material_count : 1);
+    TL_CHECK(tl_renderer_add_texture(r, t, &tex) == TL_OK);
+    TL_CHECK_EQ_U(tex, s->texture_count);
+    tl_material mine = *m;
+    mine.albedo_map = mine.occlusion_map = TL_TEXTURE_MAP(tex);
+    TL_CHECK(tl_renderer_add_material(r, &mine, &mat) == TL_OK);
+    TL_CHECK_EQ_U(mat, want_mat);
+    TL_CHECK(tl_renderer_add_geometry(r, v, 24, idx, 36, &first) == TL_OK);
+    TL_CHECK(tl_renderer_add_object(r, &(tl_object){.first_index = first, .index_count = 36, .material = mat}, &id) ==
+             TL_OK);
+    TL_CHECK_EQ_U(id, s->object_count);
+    if (tl_renderer_get_object(r, id, o, NULL) != TL_OK) return 0;
+    /* the box is in the frame: hiding it changes pixels */
+    uint8_t *shown = malloc(PIXELS), *hidden = malloc(PIXELS);
+    size_t diff = 0;
+    if (shown && hidden && frame(r, shown) && tl_renderer_set_object_visible(r, id, 0) == TL_OK && frame(r, hidden))
+        for (size_t i = 0; i < PIXELS; i += 4) diff += memcmp(shown + i, hidden + i, 4) != 0;
+    TL_CHECK(tl_renderer_set_object_visible(r, id, 1) == TL_OK);
+    printf("the added box covers %zu of %zu pixels\n", diff, PIXELS / 4);
+    TL_CHECK(diff > 200);
+    free(shown);
+    free(hidden);
+    return diff > 0;
+}
+
+/* What add_texture, add_material, add_geometry and add_object add draws the bytes of set_scene with
+ * a scene that holds the same texture, material, geometry and object, in every mode. */
+TL_TEST(updates_add_texture_and_material_same_bytes_as_set_scene)
+{
+    if (!ensure_context()) return;
+    tl_scene *s = crypt();
+    if (!s) return;
+    TL_CHECK(!s->colors && !s->uv1); /* appended vertices would need theirs */
+    static uint8_t px[16 * 16 * 4];
+    added_pixels(px);
+    tl_texture t = {.width = 16, .height = 16, .rgba = px, .name = "added"};
+    tl_material m = {.albedo = {1, 1, 1}, .specular = {0.3f, 0.3f, 0.3f}, .gloss = 0.6f, .name = "added"};
+    tl_vertex v[24];
+    uint32_t idx[36];
+    box_before_camera(s, v, idx);
+    for (size_t k = 0; k < OPTIONS; k++) {
+        const tl_renderer_options *o = &k_options[k];
+        tl_renderer *r = renderer(o, s);
+        if (!r) continue;
+        tl_object added;
+        if (add_textured_box(r, s, &t, &m, v, idx, &added)) {
+            grown_scene g;
+            tl_material mine = m;
+            mine.albedo_map = mine.occlusion_map = TL_TEXTURE_MAP(s->texture_count);
+            grow_scene(s, &t, &mine, v, idx, &added, &g);
+            if (g.objects) TL_CHECK_EQ_U(differ(r, o, &g.s, "texture and material added"), 0);
+            free_grown(&g);
+        }
+        tl_renderer_destroy(r);
+    }
+    tl_scene_destroy(s);
+}
+
+/* A scene with no materials draws the zeroed material as material 0: an added material is 1, and
+ * the scene's objects still draw plain grey. */
+TL_TEST(updates_add_material_to_scene_without_materials)
+{
+    if (!ensure_context()) return;
+    tl_vertex fv[4] = {{.position = {-5, 0, -5}, .normal = {0, 1, 0}}, {.position = {-5, 0, 5}, .normal = {0, 1, 0}},
+                       {.position = {5, 0, 5}, .normal = {0, 1, 0}}, {.position = {5, 0, -5}, .normal = {0, 1, 0}}};
+    uint32_t fi[6] = {0, 1, 2, 0, 2, 3};
+    tl_object floor_object = {.index_count = 6};
+    tl_light sun = {.type = TL_LIGHT_DIRECTIONAL, .direction = {-0.3f, -1, -0.2f}, .color = {2, 2, 2}};
+    tl_scene s = {.vertices = fv, .vertex_count = 4, .indices = fi, .index_count = 6, .objects = &floor_object,
+                  .object_count = 1, .lights = &sun, .light_count = 1,
+                  .camera = {.position = {0, 3, 6}, .target = {0, 0, 0}}};
+    static uint8_t px[16 * 16 * 4];
+    added_pixels(px);
+    tl_texture t = {.width = 16, .height = 16, .rgba = px};
+    tl_material m = {.albedo = {1, 1, 1}};
+    tl_vertex v[24];
+    uint32_t idx[36];
+    box_before_camera(&s, v, idx);
+    for (size_t k = 0; k < OPTIONS; k += 3) {
+        tl_renderer *r = renderer(&k_options[k], &s);
+        if (!r) continue;
+        tl_object added;
+        if (add_textured_box(r, &s, &t, &m, v, idx, &added)) {
+            grown_scene g;
+            tl_material mine = m;
+            mine.albedo_map = mine.occlusion_map = TL_TEXTURE_MAP(0);
+            grow_scene(&s, &t, &mine, v, idx, &added, &g);
+            if (g.objects) TL_CHECK_EQ_U(differ(r, &k_options[k], &g.s, "material added to none"), 0);
+            free_grown(&g);
+        }
+        tl_renderer_destroy(r);
+    }
+}
+
+/* Refusals name the field and change nothing; an added texture can be named by set_material. */
+TL_TEST(updates_add_texture_and_material_refused_naming_the_field)
+{
+    if (!ensure_context()) return;
+    static uint8_t px[16 * 16 * 4];
+    added_pixels(px);
+    tl_texture t = {.width = 16, .height = 16, .rgba = px};
+    uint32_t index = 7;
+    tl_renderer *none = renderer(&k_options[0], NULL);
+    if (none) {
+        TL_CHECK(error_says(none, tl_renderer_add_texture(none, &t, &index), "add_texture: no scene"));
+        TL_CHECK(error_says(none, tl_renderer_add_material(none, &(tl_material){0}, &index), "add_material: no scene"));
+        tl_renderer_destroy(none);
+    }
+    tl_scene *s = crypt();
+    tl_renderer *r = s ? renderer(&k_options[0], s) : NULL;
+    uint8_t *before = malloc(PIXELS), *after = malloc(PIXELS);
+    if (r && before && after && frame(r, before)) {
+        tl_texture bad = t;
+        bad.width = 0;
+        TL_CHECK(error_says(r, tl_renderer_add_texture(r, &bad, &index), "texture.width = 0"));
+        bad = t;
+        bad.rgba = NULL;
+        TL_CHECK(error_says(r, tl_renderer_add_texture(r, &bad, &index), "texture.rgba"));
+        TL_CHECK(error_says(r, tl_renderer_add_texture(r, NULL, &index), "no texture"));
+        TL_CHECK(error_says(r, tl_renderer_add_texture(r, &t, NULL), "no place for the index"));
+        tl_material m = {.normal_map = TL_TEXTURE_MAP(s->texture_count)};
+        TL_CHECK(error_says(r, tl_renderer_add_material(r, &m, &index), "material.normal_map"));
+        m = (tl_material){.model = TL_MATERIAL_MODEL_TOON, .toon_steps = 65};
+        TL_CHECK(error_says(r, tl_renderer_add_material(r, &m, &index), "material.toon_steps = 65"));
+        m = (tl_material){.clearcoat = NAN};
+        TL_CHECK(error_says(r, tl_renderer_add_material(r, &m, &index), "material.clearcoat"));
+        TL_CHECK(index == 7); /* nothing written on a refusal */
+        /* the added texture is the next map, for set_material too */
+        TL_CHECK(tl_renderer_add_texture(r, &t, &index) == TL_OK);
+        TL_CHECK_EQ_U(index, s->texture_count);
+        m = (tl_material){.albedo_map = TL_TEXTURE_MAP(index)};
+        TL_CHECK(error_says(r, tl_renderer_set_material(r, (uint32_t)s->material_count, &m), "past the scene's"));
+        TL_CHECK(frame(r, after));
+        size_t diff = 0;
+        for (size_t i = 0; i < PIXELS; i++) diff += before[i] != after[i];
+        TL_CHECK_EQ_U(diff, 0); /* an unused texture draws nothing */
+        tl_material plain = s->materials[0];
+        plain.albedo_map = TL_TEXTURE_MAP(index);
+        TL_CHECK(tl_renderer_set_material(r, 0, &plain) == TL_OK);
+    }
+    free(before);
+    free(after);
+    tl_renderer_destroy(r);
+    tl_scene_destroy(s);
+}
+
 /* ---- what updates upload, and what they cost ---------------------------------------------------- */
 
 static double now_ms(void)

@@ -11,7 +11,8 @@
 #   packaging_consumer_cmake_static         the same with thinlight::thinlight_static / codec_static
 #   packaging_consumer_pkgconfig_shared     the same programs built with a plain compiler command
 #                                           line from `pkg-config --cflags --libs thinlight`
-#   packaging_consumer_pkgconfig_static     ... and from `pkg-config --static` against libthinlight.a
+#   packaging_consumer_pkgconfig_static     ... and from `pkg-config --cflags --libs thinlight-static`
+#                                           (thinlight-codec-static): libthinlight.a, no libthinlight*.so NEEDED
 #   packaging_codec_consumer_pulls_no_gl    thinlight::codec / thinlight-codec alone: no libGL,
 #                                           OSMesa, GLFW, OIIO or C++ runtime NEEDED, no gl*/OSMesa*
 #                                           symbol referenced (executables and libthinlight-codec.so)
@@ -30,6 +31,11 @@
 #                                           hidden, added and removed objects, dirty GL state, a resize;
 #                                           no program built after the first round; a PNG
 #   docs_engine_loop_matches_source         docs/getting-started.md shows docs/engine_loop.c verbatim
+#   gltf_and_own_objects_both_show          docs/gltf_and_own_objects.c: a glTF written at run time, set
+#                                           whole, then the program's own texture, material, box and
+#                                           light added; its box (red and blue texels) and the file's
+#                                           objects each change pixels when hidden; a PNG
+#   docs_gltf_and_own_objects_matches_source  docs/getting-started.md shows it verbatim
 #   docs_api_reference                      the thinlight_docs target (doxygen, warnings fail)
 #
 # Included by tests/CMakeLists.txt it adds the tests; run with `cmake -P` it is the checker, with
@@ -229,9 +235,9 @@ if(CMAKE_SCRIPT_MODE_FILE)
     endforeach()
     # pkg-config: the install prefix, the version, libraries that exist.
     if(PKG_CONFIG)
-      set(pcs thinlight-codec)
+      set(pcs thinlight-codec thinlight-codec-static)
       if(WITH_RENDERER)
-        list(APPEND pcs thinlight)
+        list(APPEND pcs thinlight thinlight-static)
       endif()
       foreach(pc IN LISTS pcs)
         pkg(prefix --variable=prefix ${pc})
@@ -240,7 +246,14 @@ if(CMAKE_SCRIPT_MODE_FILE)
         if(NOT prefix STREQUAL PREFIX OR NOT version STREQUAL VERSION)
           message(FATAL_ERROR "${pc}.pc: prefix '${prefix}', version '${version}'; expected '${PREFIX}', '${VERSION}'")
         endif()
-        if(NOT libs MATCHES "-L${libdir}( |$)")
+        # the shared libraries by -L and -l; the archives by their path (an -l would find the .so)
+        string(REGEX REPLACE "-static$" "" base "${pc}")
+        if(pc MATCHES "-static$")
+          set(expect "(^| )${libdir}/lib${base}\\.a( |$)")
+        else()
+          set(expect "-L${libdir}( |$)")
+        endif()
+        if(NOT libs MATCHES "${expect}" OR (pc MATCHES "-static$" AND libs MATCHES "-l${base}( |$)"))
           message(FATAL_ERROR "${pc}.pc: --libs gives '${libs}'")
         endif()
         message(STATUS "${pc}.pc ${version}: ${libs}")
@@ -315,44 +328,42 @@ if(CMAKE_SCRIPT_MODE_FILE)
     endforeach()
 
   elseif(CHECK STREQUAL "pkgconfig_shared" OR CHECK STREQUAL "pkgconfig_static")
-    set(static_args)
+    # The command lines of docs/getting-started.md, "Link with pkg-config", as they are written:
+    # `thinlight` and `thinlight-codec` for the shared libraries, `thinlight-static` and
+    # `thinlight-codec-static` for the archives (nothing rewritten here).
+    set(suffix)
     if(CHECK STREQUAL "pkgconfig_static")
-      set(static_args --static)
+      set(suffix -static)
     endif()
-    pkg(codec_cflags --cflags thinlight-codec)
-    pkg(codec_libs ${static_args} --libs thinlight-codec)
+    pkg(codec_cflags --cflags thinlight-codec${suffix})
+    pkg(codec_libs --libs thinlight-codec${suffix})
     separate_arguments(codec_cflags UNIX_COMMAND "${codec_cflags}")
     separate_arguments(codec_libs UNIX_COMMAND "${codec_libs}")
-    if(static_args)
-      # -lthinlight-codec would pick the .so beside the .a.
-      list(TRANSFORM codec_libs REPLACE "^-lthinlight-codec$" "-l:libthinlight-codec.a")
-    endif()
     cc("${WORK}/codec_only" ${codec_cflags} "-DEXPECTED_VERSION=\"${VERSION}\""
       "${SOURCE_DIR}/tests/packaging/consumer/codec_only.c" ${codec_libs})
     if(WITH_RENDERER AND WITH_OSMESA)
-      pkg(cflags --cflags thinlight)
-      pkg(libs ${static_args} --libs thinlight)
-      message(STATUS "pkg-config ${static_args} --cflags --libs thinlight: ${cflags} ${libs}")
+      pkg(cflags --cflags thinlight${suffix})
+      pkg(libs --libs thinlight${suffix})
+      message(STATUS "pkg-config --cflags --libs thinlight${suffix}: ${cflags} ${libs}")
       separate_arguments(cflags UNIX_COMMAND "${cflags}")
       separate_arguments(libs UNIX_COMMAND "${libs}")
-      if(static_args)
-        list(TRANSFORM libs REPLACE "^-lthinlight$" "-l:libthinlight.a")
-      endif()
       cc("${WORK}/render_frame" ${cflags} "${SOURCE_DIR}/tests/packaging/consumer/render_frame.c" ${libs})
       if(WITH_IO)
         cc("${WORK}/getting_started" ${cflags} "${SOURCE_DIR}/docs/getting_started.c" ${libs})
       endif()
     endif()
     run_consumer_programs("${WORK}")
-    if(static_args)
-      file(GLOB exes "${WORK}/codec_only" "${WORK}/render_frame" "${WORK}/getting_started")
-      foreach(exe IN LISTS exes)
-        elf_needed("${exe}" needed)
-        if(needed MATCHES "libthinlight")
-          message(FATAL_ERROR "${exe} is linked statically but needs ${needed}")
-        endif()
-      endforeach()
-    endif()
+    file(GLOB exes "${WORK}/codec_only" "${WORK}/render_frame" "${WORK}/getting_started")
+    foreach(exe IN LISTS exes)
+      elf_needed("${exe}" needed)
+      if(suffix AND needed MATCHES "libthinlight")
+        message(FATAL_ERROR "${exe} is linked statically but needs ${needed}")
+      elseif(NOT suffix AND NOT needed MATCHES "libthinlight")
+        message(FATAL_ERROR "${exe} is linked with the shared libraries but needs none of them: ${needed}")
+      endif()
+      get_filename_component(name "${exe}" NAME)
+      message(STATUS "${name}: NEEDED ${needed}")
+    endforeach()
 
   elseif(CHECK STREQUAL "codec_no_gl")
     expect_no_graphics("${libdir}/libthinlight-codec.so")
@@ -435,6 +446,19 @@ if(CMAKE_SCRIPT_MODE_FILE)
 
   elseif(CHECK STREQUAL "engine_loop_doc")
     expect_doc_program(engine_loop.c)
+
+  elseif(CHECK STREQUAL "gltf_and_own_objects")
+    # A glTF written now (make_gltf_scenes: a floor and a box under the file's lights), then the
+    # program adds its own texture, material, box and light; it fails unless both show.
+    run("make_gltf_scenes" "${MAKE_SCENES}" "${WORK}")
+    set(png "${WORK}/gltf_and_own_objects.png")
+    run("gltf_and_own_objects" ${CMAKE_COMMAND} -E env "LSAN_OPTIONS=suppressions=${LSAN_SUPP}:print_suppressions=0"
+      "${PROGRAM}" "${WORK}/lights.gltf" "${png}")
+    message(STATUS "${out}")
+    expect_png("${png}")
+
+  elseif(CHECK STREQUAL "gltf_and_own_objects_doc")
+    expect_doc_program(gltf_and_own_objects.c)
 
   elseif(CHECK STREQUAL "getting_started_doc")
     file(STRINGS "${SOURCE_DIR}/docs/getting_started.c" lines)
@@ -541,6 +565,15 @@ if(TARGET thinlight_io AND THINLIGHT_WITH_OSMESA)
     ARGS -DPROGRAM=$<TARGET_FILE:tl_engine_loop>)
 endif()
 tl_add_packaging_test(docs_engine_loop_matches_source engine_loop_doc LABELS "packaging;docs")
+# docs/gltf_and_own_objects.c: a loaded glTF and the application's own texture, material, box and
+# light in one renderer; both show in the frame, and the program is on the page.
+if(TARGET thinlight_io AND THINLIGHT_WITH_OSMESA AND TARGET make_gltf_scenes)
+  add_executable(tl_gltf_and_own_objects ${PROJECT_SOURCE_DIR}/docs/gltf_and_own_objects.c)
+  target_link_libraries(tl_gltf_and_own_objects PRIVATE thinlight::thinlight thinlight_warnings m)
+  tl_add_packaging_test(gltf_and_own_objects_both_show gltf_and_own_objects LABELS "packaging;docs;gl;gltf"
+    ARGS -DPROGRAM=$<TARGET_FILE:tl_gltf_and_own_objects> -DMAKE_SCENES=$<TARGET_FILE:make_gltf_scenes>)
+endif()
+tl_add_packaging_test(docs_gltf_and_own_objects_matches_source gltf_and_own_objects_doc LABELS "packaging;docs")
 
 if(TARGET thinlight_docs)
   add_test(NAME docs_api_reference
