@@ -1,5 +1,6 @@
 /* Test harness runner (the executable's main): `exe` runs every case, `exe NAME...` runs the
- * named ones, `exe --list` prints the names, one a line (tl_add_test registers them with ctest). */
+ * named ones, `exe --list` prints the names, one a line, followed by " full" for the cases of the
+ * full tier (tl_add_test registers them with ctest and labels those `full`). */
 #include "tl_test.h"
 
 int tl_test_failures;
@@ -73,7 +74,7 @@ int main(int argc, char **argv)
     qsort(registry, registry_count, sizeof registry[0], by_source_position);
     if (!names_unique()) return 2;
     if (argc == 2 && strcmp(argv[1], "--list") == 0) {
-        for (size_t i = 0; i < registry_count; i++) printf("%s\n", registry[i]->name);
+        for (size_t i = 0; i < registry_count; i++) printf("%s%s\n", registry[i]->name, registry[i]->full ? " full" : "");
         return 0;
     }
     return run_selected(argc, argv);

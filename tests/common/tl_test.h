@@ -14,18 +14,23 @@ typedef struct tl_test_case {
     void (*fn)(void);
     const char *file; /* where it is defined: cases run and list in source order */
     int line;
+    int full; /* 1: in the `full` tier (TL_TEST_FULL), 0: the default tier */
 } tl_test_case;
 
 void tl_test_register(const tl_test_case *c);
 
 /* Defines the test case `name` (its ctest name too) and registers it before main runs:
  *     TL_TEST(oct12_fold_edge_negative_zero) { TL_CHECK(...); }
- * A case registered conditionally sits inside an #if. */
-#define TL_TEST(name)                                                                            \
+ * A case registered conditionally sits inside an #if. TL_TEST_FULL puts the case in the `full`
+ * tier (ctest label `full`: exhaustive products, full-size renders, long truths; tests/README.md),
+ * which the README's test command leaves out. */
+#define TL_TEST(name) TL__TEST_IN_TIER(name, 0)
+#define TL_TEST_FULL(name) TL__TEST_IN_TIER(name, 1)
+#define TL__TEST_IN_TIER(name, tier)                                                             \
     static void name(void);                                                                      \
     __attribute__((constructor)) static void tl__register_##name(void)                           \
     {                                                                                            \
-        static const tl_test_case tl__case = {#name, name, __FILE__, __LINE__};                  \
+        static const tl_test_case tl__case = {#name, name, __FILE__, __LINE__, tier};           \
         tl_test_register(&tl__case);                                                             \
     }                                                                                            \
     static void name(void)

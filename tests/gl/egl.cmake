@@ -33,8 +33,12 @@ if(THINLIGHT_WITH_OSMESA)
     modes_transparent_materials
     render_to_caller_framebuffer)
   foreach(c IN LISTS _tl_egl_modes_cases)
+    set(_tl_labels "gl;render;egl")
+    if(c STREQUAL "modes_match_fat_many_lights") # 1,024 lights: the full tier (tests/README.md)
+      list(APPEND _tl_labels full)
+    endif()
     add_test(NAME egl_${c} COMMAND test_modes ${c})
-    set_tests_properties(egl_${c} PROPERTIES LABELS "gl;render;egl" TIMEOUT 900 ENVIRONMENT
+    set_tests_properties(egl_${c} PROPERTIES LABELS "${_tl_labels}" TIMEOUT 900 ENVIRONMENT
       "${_tl_egl_env};THINLIGHT_TEST_CONTEXT=egl")
   endforeach()
 endif()

@@ -405,7 +405,7 @@ static size_t non_finite(const float *p, size_t n)
 
 /* HDR at the FP16 maximum everywhere, on a 1x1, a 7x3 and a 64x36 target, threshold 0, intensity
  * 1: bloom values finite and at most the maximum, and the output saturated white, not black. */
-TL_TEST(bloom_finite_at_fp16_max_and_on_tiny_targets)
+TL_TEST_FULL(bloom_finite_at_fp16_max_and_on_tiny_targets)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
     tl_scene *s = small_scene();

@@ -217,7 +217,7 @@ TL_TEST(ssao_inner_corner_darkens_bounded)
 /* tl_frame_stats counts by what a target is: G-buffer bytes are depth, RT0, RT1 and the fat targets,
  * light-buffer bytes the light targets; the effects' targets (AO, DOF, bloom, SSR) and the light
  * lists are neither, in every mode, with every effect on. */
-TL_TEST(effects_stats_count_effect_targets_apart)
+TL_TEST_FULL(effects_stats_count_effect_targets_apart)
 {
     quads q;
     corner_scene(&q);
@@ -253,7 +253,7 @@ TL_TEST(effects_stats_count_effect_targets_apart)
     }
 }
 
-TL_TEST(effects_finite_tiny_targets_and_extreme_depth)
+TL_TEST_FULL(effects_finite_tiny_targets_and_extreme_depth)
 {
     quads q;
     corner_scene(&q);

@@ -287,7 +287,7 @@ static void compare_frames(const char *what, const frame_pixels *osmesa, const f
 #ifdef TL_TEST_OSMESA
 /* The built-in crypt through EGL (surfaceless, and Mesa's software device when listed) and
  * through OSMesa, on the same llvmpipe: 0 bytes of difference in every mode. */
-TL_TEST(egl_same_pixels_as_osmesa_every_mode)
+TL_TEST_FULL(egl_same_pixels_as_osmesa_every_mode)
 {
     static frame_pixels osmesa[PX_MODES], egl[PX_MODES];
     tl_scene *scene = NULL;

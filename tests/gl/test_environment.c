@@ -197,7 +197,7 @@ TL_TEST(environment_plan_only_when_asked)
 
 /* An environment set and removed leaves no trace: the frame's output bytes equal those of a
  * renderer that never had one, in every mode. */
-TL_TEST(environment_removed_renders_todays_bytes)
+TL_TEST_FULL(environment_removed_renders_todays_bytes)
 {
     sphere_row *g = malloc(sizeof *g);
     float *env = environment_image();
@@ -295,7 +295,7 @@ static void pixel_ray(size_t x, size_t y, int seam, double d[3])
 /* HDR's background pixels hold the environment's bilinear radiance in their view ray times the
  * intensity, in every mode, looking at the image's middle and at its wrap (no seam): within 1 %
  * (FP16 storage and llvmpipe's 8-bit filter weights). */
-TL_TEST(environment_sky_is_the_image_every_mode)
+TL_TEST_FULL(environment_sky_is_the_image_every_mode)
 {
     sphere_row *g = malloc(sizeof *g);
     float *env = environment_image(), *pos = NULL;
@@ -336,7 +336,7 @@ TL_TEST(environment_sky_is_the_image_every_mode)
 
 /* No NaN, Inf or negative value reaches HDR with an environment, in every mode (and MSAA, a light
  * scale of 1/2); with TL_TEST_IMAGE_DIR set, the thin-lpp output is written there to look at. */
-TL_TEST(environment_finite_every_mode)
+TL_TEST_FULL(environment_finite_every_mode)
 {
     sphere_row *g = malloc(sizeof *g);
     float *env = environment_image();
@@ -372,7 +372,7 @@ TL_TEST(environment_finite_every_mode)
 /* An unlit material takes no light, so none from the environment either: in every mode its pixels
  * are the same float (its albedo) with and without the environment. Forward once added the
  * environment's light to them. */
-TL_TEST(environment_leaves_unlit_materials_alone_every_mode)
+TL_TEST_FULL(environment_leaves_unlit_materials_alone_every_mode)
 {
     sphere_row *g = malloc(sizeof *g);
     float *env = environment_image();
@@ -497,7 +497,7 @@ static const double mc_mean_bound[2] = {0.04, 0.08}, mc_max_bound[2] = {0.35, 0.
  * largest relative error; all pixels but the silhouette: mean). The error is the split sum's
  * (docs/lighting.md): the lobe prefiltered with n = v = r around its dominant direction, the
  * prefiltered levels' roughness interpolated, the irradiance's 9 SH terms. */
-TL_TEST(environment_spheres_against_monte_carlo)
+TL_TEST_FULL(environment_spheres_against_monte_carlo)
 {
     sphere_row *g = malloc(sizeof *g);
     float *env = environment_image(), *pos = NULL, *fat = NULL, *thin = NULL;
@@ -741,7 +741,7 @@ TL_TEST(environment_file_read_and_bad_files)
 /* What setting an environment costs on the CPU (SH projection, the prefiltered chain, the BRDF
  * table, the upload), printed for docs/renderer.md; checks that each size is accepted and that
  * setting the same size again keeps the plan (no re-plan, no new programs). */
-TL_TEST(environment_set_cost_printed)
+TL_TEST_FULL(environment_set_cost_printed)
 {
     sphere_row *g = malloc(sizeof *g);
     sphere_row_build(g);

@@ -504,7 +504,7 @@ TL_TEST(light_scale_tiled_compute_matches_fragment)
 
 /* ---- odd sizes, resizing ---------------------------------------------------------------------- */
 
-TL_TEST(light_scale_odd_sizes_render_without_gl_errors)
+TL_TEST_FULL(light_scale_odd_sizes_render_without_gl_errors)
 {
     if (!ensure_context()) return;
     tl_scene *s = NULL;
@@ -625,7 +625,7 @@ static double psnr8(const uint8_t *a, const uint8_t *b, size_t n, int *max_err)
     return mse > 0.0 ? 10.0 * log10(255.0 * 255.0 / mse) : INFINITY;
 }
 
-TL_TEST(light_scale_crypt_figures_printed)
+TL_TEST_FULL(light_scale_crypt_figures_printed)
 {
     if (!ensure_context()) return;
     tl_scene *s = NULL;

@@ -574,7 +574,7 @@ TL_TEST(msaa_crypt_thin_lpp_against_forward_printed)
  * G-buffer, lists, lights and order of summation, so a sample's float sum differs at most by the
  * two programs' compilations, and its FP16 value by one rounding (2^-11 relative) each way; the
  * resolved HDR by 2^-10 relative, the 8-bit output by one step. */
-TL_TEST(msaa_sample_edges_compute_tiled_matches_fragment_tiled)
+TL_TEST_FULL(msaa_sample_edges_compute_tiled_matches_fragment_tiled)
 {
     if (!ensure_context()) return;
     tl_scene *s = NULL;

@@ -300,7 +300,7 @@ static const cost_case k_costs[] = {
 /* For each kind of option: re-creating the renderer (create, set_scene, add_pass, one frame), the
  * first change to B (its programs built) with its frame, and later changes between A and B with
  * their frames less a steady frame's CPU time: medians of the calling thread's CPU clock. */
-TL_TEST(options_change_cost_printed)
+TL_TEST_FULL(options_change_cost_printed)
 {
     if (!ensure_context() || !load_gl()) { tl_test_failures++; return; }
     enum { W = 640, H = 360, ROUNDS = 3 };

@@ -121,9 +121,10 @@ static tl_renderer_options tl__options(const tl__config *k, tl_depth_format dept
                                  .depth_format = depth};
 }
 
-/* The stiff scene: every mode and strategy, both depth formats, both lights. No acne anywhere
- * (the grazing plane included) and at most 0.5 % of the pixels in the wrong state. */
-static void tl__stiff_against_truth(tl_shadow_filter filter)
+/* The stiff scene: the configurations [first, first + count) of tl__configs, both depth formats,
+ * both lights. No acne anywhere (the grazing plane included) and at most 0.5 % of the pixels in
+ * the wrong state. */
+static void tl__stiff_against_truth(tl_shadow_filter filter, size_t first, size_t count)
 {
     tl_shadow_case c;
     TL_CHECK(tl_shadow_stiff_case(&c));
@@ -132,7 +133,7 @@ static void tl__stiff_against_truth(tl_shadow_filter filter)
         tl__truth t;
         TL_CHECK(tl__truth_make(&c, &c.lights[l], w, h, &t));
         for (int d = 0; d < 2; d++)
-            for (size_t k = 0; k < sizeof tl__configs / sizeof tl__configs[0]; k++) {
+            for (size_t k = first; k < first + count && k < sizeof tl__configs / sizeof tl__configs[0]; k++) {
                 tl_depth_format depth = d ? TL_DEPTH_FORMAT_D32F_REVERSED : TL_DEPTH_FORMAT_D24;
                 tl_renderer_options o = tl__options(&tl__configs[k], depth);
                 o.shadows.filter = filter;
@@ -146,18 +147,28 @@ static void tl__stiff_against_truth(tl_shadow_filter filter)
     tl_shadow_case_free(&c);
 }
 
-TL_TEST(shadows_stiff_scene_against_truth) { tl__stiff_against_truth(TL_SHADOW_FILTER_DEFAULT); }
+#define TL__CONFIGS (sizeof tl__configs / sizeof tl__configs[0])
+
+/* The default tier: thin-lpp with tiles (the second configuration), PCF and PCSS; the full tier:
+ * every configuration. */
+TL_TEST(shadows_stiff_scene_against_truth_thin_lpp_tiled)
+{
+    tl__stiff_against_truth(TL_SHADOW_FILTER_DEFAULT, 1, 1);
+    tl__stiff_against_truth(TL_SHADOW_FILTER_PCSS, 1, 1);
+}
+
+TL_TEST_FULL(shadows_stiff_scene_against_truth) { tl__stiff_against_truth(TL_SHADOW_FILTER_DEFAULT, 0, TL__CONFIGS); }
 
 /* The same with PCSS (the point light punctual, the sun 0.27 degrees in radius): its blocker search
  * and its receiver-plane comparisons add no acne at grazing angles, the horizon included. */
-TL_TEST(shadows_pcss_stiff_scene_against_truth) { tl__stiff_against_truth(TL_SHADOW_FILTER_PCSS); }
+TL_TEST_FULL(shadows_pcss_stiff_scene_against_truth) { tl__stiff_against_truth(TL_SHADOW_FILTER_PCSS, 0, TL__CONFIGS); }
 
 /* The crypt (its moonlight and two braziers, one at a time): thin-lpp and fat with D24 and reversed
  * D32F. Targets: at most 0.5 % of the pixels in the wrong state with reversed D32F; thin-lpp and fat
  * differ from each other by less than either differs from the truth (the rebuilt position is not
  * what limits the shadows). TL_SHADOW_SIZE=WxH measures at another size (the figures of
  * docs/shadows.md are at 1280x720). */
-TL_TEST(shadows_crypt_against_truth)
+TL_TEST_FULL(shadows_crypt_against_truth)
 {
     tl_shadow_case c;
     TL_CHECK(tl_shadow_crypt_case(&c, 0));
@@ -315,7 +326,7 @@ static void tl__pcss_against_pcf(const tl_shadow_case *c, size_t light, const tl
  * emitter): the spot light in every mode and strategy with reversed D32F, and both lights in
  * thin-lpp with both depth formats. TL_SHADOW_SIZE=WxH measures at another size (docs/shadows.md
  * quotes 480x270, the default). */
-TL_TEST(shadows_pcss_penumbra_against_area_truth)
+TL_TEST_FULL(shadows_pcss_penumbra_against_area_truth)
 {
     tl_shadow_case c;
     TL_CHECK(tl_shadow_penumbra_case(&c));
@@ -342,7 +353,7 @@ TL_TEST(shadows_pcss_penumbra_against_area_truth)
  * braziers) PCSS is nearer the truth than PCF there and over the image; for every light, outside
  * the penumbra, no more acne than PCF and at most 0.5 % wrong. TL_SHADOW_SIZE=WxH measures at
  * another size. */
-TL_TEST(shadows_pcss_crypt_against_area_truth)
+TL_TEST_FULL(shadows_pcss_crypt_against_area_truth)
 {
     tl_shadow_case c;
     TL_CHECK(tl_shadow_crypt_case(&c, 0));

@@ -384,7 +384,7 @@ static void record(method_run *m, const tl_frame_stats *st, int round)
     m->ms[4][round] = p[TL_PASS_STIPPLE_RESOLVE];
 }
 
-TL_TEST(transparency_stipple_figures_printed)
+TL_TEST_FULL(transparency_stipple_figures_printed)
 {
     if (!ensure_context()) return;
     uint32_t w = 640, h = 360, counts[4] = {16, 64, 256, 1024}, ncounts = 4;

@@ -257,7 +257,7 @@ static void lights_per_pixel(const tl_scene *s, const float *depth, uint32_t w, 
     }
 }
 
-TL_TEST(tiled_matches_volumes_every_mode)
+TL_TEST_FULL(tiled_matches_volumes_every_mode)
 {
     const uint32_t w = 192, h = 108;
     const size_t n = (size_t)w * h;
@@ -321,7 +321,7 @@ TL_TEST(tiled_matches_volumes_every_mode)
 /* 65536 lights: the first frame's lists do not fit (they hold 32 entries a tile to start), its
  * overflowing tiles loop over every light; later frames have grown lists and no overflow. Lists
  * keep the lights' order, so both give the same bits. */
-TL_TEST(tiled_65536_lights_overflow_then_growth)
+TL_TEST_FULL(tiled_65536_lights_overflow_then_growth)
 {
     const uint32_t w = 96, h = 54;
     const size_t n = (size_t)w * h;

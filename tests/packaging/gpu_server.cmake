@@ -128,5 +128,5 @@ if(THINLIGHT_WITH_RENDERER AND NOT THINLIGHT_SANITIZE)
       -DWORK=${CMAKE_CURRENT_BINARY_DIR}/gpu_server_build -DCC=${CMAKE_C_COMPILER}
       -DGENERATOR=${CMAKE_GENERATOR} -P ${CMAKE_CURRENT_LIST_FILE})
   set_tests_properties(gpu_server_build_needs_only_libc_libm_libegl PROPERTIES
-    LABELS "packaging;egl;tools" TIMEOUT 900)
+    LABELS "packaging;egl;tools;full" TIMEOUT 900)
 endif()

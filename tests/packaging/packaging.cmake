@@ -490,9 +490,12 @@ list(JOIN THINLIGHT_SANITIZE_FLAGS " " _tl_sanitize_flags)
 
 # tl_add_packaging_test(<name> <check> [LABELS l...] [FIXTURE] [TIMEOUT s] [ARGS -D...])
 function(tl_add_packaging_test name check)
-  cmake_parse_arguments(P "FIXTURE" "TIMEOUT" "LABELS;ARGS" ${ARGN})
+  cmake_parse_arguments(P "FIXTURE;FULL" "TIMEOUT" "LABELS;ARGS" ${ARGN})
   if(NOT P_LABELS)
     set(P_LABELS packaging)
+  endif()
+  if(P_FULL)
+    list(APPEND P_LABELS full)
   endif()
   if(NOT P_TIMEOUT)
     set(P_TIMEOUT 300)
@@ -538,7 +541,7 @@ endif()
 # with every optional dependency off.
 tl_add_packaging_test(packaging_codec_only_c_compiler codec_only_c_compiler TIMEOUT 300)
 if(THINLIGHT_WITH_RENDERER)
-  tl_add_packaging_test(packaging_renderer_without_optional_deps no_optional_deps TIMEOUT 900)
+  tl_add_packaging_test(packaging_renderer_without_optional_deps no_optional_deps FULL TIMEOUT 900)
 endif()
 
 # The version: header macros, tl_version(), tl_version_string() and project(VERSION) agree.

@@ -256,7 +256,7 @@ static double now_ms(void)
 
 /* 20 kills spread over the part of the run that writes (from the first new output to the end,
  * as an uninterrupted run times it): every output old or whole, nothing left beside them. */
-TL_TEST(outputs_killed_20_times_leave_nothing_beside_them)
+TL_TEST_FULL(outputs_killed_20_times_leave_nothing_beside_them)
 {
     char ref[512], dir[512];
     snprintf(ref, sizeof ref, "%s/reference_small", TL_OUTPUTS_TEST_DIR);

@@ -34,25 +34,31 @@ static const int has_view[4][NV] = {
 static const int has_legend[NV] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 1, 1, 1};
 
 /* An unmoved camera: the scene's, exactly as thinlight-render draws it, in every mode. */
-TL_TEST(viewer_final_view_equals_thinlight_render_each_mode)
+static void final_view_equals_render(int m)
 {
-    for (int m = 0; m < 4; m++) {
-        char args[128], png[64], ref[64], cmd[2048];
-        snprintf(args, sizeof args, "--size %ux%u --mode %s", VW_W, VW_H, modes[m]);
-        snprintf(png, sizeof png, "final_%s.png", modes[m]);
-        snprintf(ref, sizeof ref, "render_%s.png", modes[m]);
-        TL_CHECK(viewer(args, png) == 0);
-        snprintf(cmd, sizeof cmd, "'%s' default --size %ux%u --mode %s --light-strategy tiled -o '%s/%s' 2>/dev/null",
-                 TL_RENDER, VW_W, VW_H, modes[m], TL_WORK, ref);
-        TL_CHECK(run(cmd) == 0);
-        image a = load(png), b = load(ref);
-        tl_image_error e = compare(&a, &b);
-        printf("%s: viewer vs thinlight-render max %.0f mean %.5f levels\n", modes[m], e.max_abs, e.mean_abs);
-        TL_CHECK(a.px && a.w == VW_W && a.h == VW_H && colours(&a) > 32);
-        TL_CHECK(e.max_abs == 0.0);
-        release(&a);
-        release(&b);
-    }
+    char args[128], png[64], ref[64], cmd[2048];
+    snprintf(args, sizeof args, "--size %ux%u --mode %s", VW_W, VW_H, modes[m]);
+    snprintf(png, sizeof png, "final_%s.png", modes[m]);
+    snprintf(ref, sizeof ref, "render_%s.png", modes[m]);
+    TL_CHECK(viewer(args, png) == 0);
+    snprintf(cmd, sizeof cmd, "'%s' default --size %ux%u --mode %s --light-strategy tiled -o '%s/%s' 2>/dev/null",
+             TL_RENDER, VW_W, VW_H, modes[m], TL_WORK, ref);
+    TL_CHECK(run(cmd) == 0);
+    image a = load(png), b = load(ref);
+    tl_image_error e = compare(&a, &b);
+    printf("%s: viewer vs thinlight-render max %.0f mean %.5f levels\n", modes[m], e.max_abs, e.mean_abs);
+    TL_CHECK(a.px && a.w == VW_W && a.h == VW_H && colours(&a) > 32);
+    TL_CHECK(e.max_abs == 0.0);
+    release(&a);
+    release(&b);
+}
+
+/* The default mode (the default tier), then every other mode (the full tier). */
+TL_TEST(viewer_final_view_equals_thinlight_render) { final_view_equals_render(0); }
+
+TL_TEST_FULL(viewer_final_view_equals_thinlight_render_each_mode)
+{
+    for (int m = 1; m < 4; m++) final_view_equals_render(m);
 }
 
 /* The grid in each mode: views the mode has are non-blank, views it lacks are the placeholder,
@@ -88,9 +94,9 @@ static void check_grid(int m)
 }
 
 TL_TEST(viewer_grid_views_thin_lpp) { check_grid(0); }
-TL_TEST(viewer_grid_views_thin_deferred) { check_grid(1); }
-TL_TEST(viewer_grid_views_fat) { check_grid(2); }
-TL_TEST(viewer_grid_views_forward) { check_grid(3); }
+TL_TEST_FULL(viewer_grid_views_thin_deferred) { check_grid(1); }
+TL_TEST_FULL(viewer_grid_views_fat) { check_grid(2); }
+TL_TEST_FULL(viewer_grid_views_forward) { check_grid(3); }
 
 /* Thumbnail pixel (x, y) of a cell (GL rows: from the bottom) is the full view's pixel
  * (x W / cw, y H / ch); PNG rows run from the top. The full view's legend is left out: the
@@ -113,7 +119,7 @@ static double thumbnail_error(const image *full, const image *grid, int v)
 
 /* Every view on its own at full size (in thin-deferred, or thin-lpp for the light buffer): not
  * blank, and the same pixels as its thumbnail in that mode's grid. */
-TL_TEST(viewer_each_view_full_size_matches_its_thumbnail)
+TL_TEST_FULL(viewer_each_view_full_size_matches_its_thumbnail)
 {
     image grids[2];
     for (int m = 0; m < 2; m++) {
@@ -288,7 +294,7 @@ TL_TEST(viewer_dynamic_light_scale_quarter_over_budget)
 }
 
 /* Without the flag the scale stays; with a chosen 1/4 the dynamic rule never raises it. */
-TL_TEST(viewer_light_scale_fixed_without_dynamic_never_above_chosen)
+TL_TEST_FULL(viewer_light_scale_fixed_without_dynamic_never_above_chosen)
 {
     check_dynamic("--light-scale 0.5", 0.5f, 0.5f);
     check_dynamic("--light-scale 0.25 --dynamic-light-scale --light-budget-ms 1e6", 0.25f, 0.25f);

@@ -17,7 +17,7 @@ enum { V_AO_RAW = 14, V_AO = 15, V_DOF_COC = 16, V_SSR = 17, V_BLOOM = 18, V_DEP
 
 /* Final view = thinlight-render with the same effect flags, bit for bit; and not the image
  * without the effect. */
-TL_TEST(viewer_final_view_with_each_effect_equals_thinlight_render)
+TL_TEST_FULL(viewer_final_view_with_each_effect_equals_thinlight_render)
 {
     static const char *const effects[6] = {"", "--ssao", "--fog --fog-color 0.3,0.3,0.35 --fog-density 0.08",
                                            "--dof --dof-aperture 0.02", "--ssr", "--bloom"};
@@ -47,7 +47,7 @@ TL_TEST(viewer_final_view_with_each_effect_equals_thinlight_render)
 /* In every mode with every effect on: the effects' thumbnails show an image (not the placeholder,
  * not one colour; forward plans no reflections: their placeholder); ao-raw differs from ao (the
  * blur), ao from the final view, the CoC from the depth view, the reflections from the final view. */
-TL_TEST(viewer_effect_views_each_mode)
+TL_TEST_FULL(viewer_effect_views_each_mode)
 {
     for (int m = 0; m < 4; m++) {
         char args[256], png[64];
