@@ -219,4 +219,4 @@ TL_TEST(frames_same_bytes_light_scales_and_tiles)
 }
 
 /* Every combination: every value of every option. */
-TL_TEST(frames_same_bytes_every_option_value) { run_combos(0); }
+TL_TEST_FULL(frames_same_bytes_every_option_value) { run_combos(0); }
