@@ -13,6 +13,7 @@
 
 #include "models_measure.h"
 #include "tool_gl.h"
+#include "tool_log.h"
 
 #define TOOL "thinlight-models-report"
 
@@ -31,8 +32,9 @@ static int usage(FILE *f, int rc)
                "  --frames N    frames per measured image; the material pass timed by the fastest after\n"
                "                the first (default 4)\n"
                "  --runs N      interleaved pairs for the all-models / one-model ratio (default 15)\n"
-               "  --clearcoat C thin-lpp's clearcoat: approx (default) or sums; both: only the table\n"
-               "                comparing the two on the clearcoat row\n");
+               "  --clearcoat C thin-lpp's clearcoat: auto (default: the library's, the coat's own sums),\n"
+               "                approx or sums; both: only the table comparing approx and sums on the\n"
+               "                clearcoat row\n");
     return rc;
 }
 
@@ -49,8 +51,12 @@ static int parse(int argc, char **argv, args *a)
             continue;
         if (!strcmp(o, "--frames") && sscanf(v, "%u", &a->frames) == 1 && a->frames && a->frames <= 1000) continue;
         if (!strcmp(o, "--runs") && sscanf(v, "%u", &a->runs) == 1 && a->runs && a->runs <= 1000) continue;
-        if (!strcmp(o, "--clearcoat") && (!strcmp(v, "approx") || !strcmp(v, "sums") || !strcmp(v, "both"))) {
-            a->clearcoat = !strcmp(v, "approx") ? TL_CLEARCOAT_APPROXIMATE : !strcmp(v, "sums") ? TL_CLEARCOAT_SUMS : -1;
+        if (!strcmp(o, "--clearcoat") &&
+            (!strcmp(v, "auto") || !strcmp(v, "approx") || !strcmp(v, "sums") || !strcmp(v, "both"))) {
+            a->clearcoat = !strcmp(v, "auto")     ? TL_CLEARCOAT_DEFAULT
+                           : !strcmp(v, "approx") ? TL_CLEARCOAT_APPROXIMATE
+                           : !strcmp(v, "sums")   ? TL_CLEARCOAT_SUMS
+                                                  : -1;
             continue;
         }
         if (!strcmp(o, "--lights")) {
@@ -238,8 +244,9 @@ int main(int argc, char **argv)
     tl_tool_context_options co = {0};
     tl_context *ctx = NULL;
     if (tl_tool_context_open(TOOL, &co, a.width, a.height, &ctx)) return 1;
+    static tl_tool_log log = {.tool = TOOL}; /* the renderers' warnings (downgrades), each line once */
     tl_renderer_desc d = {.width = a.width, .height = a.height, .get_proc_address = tl_context_proc_loader,
-                          .get_proc_address_user = ctx};
+                          .get_proc_address_user = ctx, .logger = tl_tool_log_logger(&log)};
     if (a.clearcoat < 0) { /* --clearcoat both */
         printf("| lights | approx PSNR vs forward (dB) | approx max abs | sums PSNR vs forward (dB) | sums max abs | "
                "standard row, sums frame (dB) | sums extra B/px | material pass, all clearcoat, approx (ms) | "

@@ -15,6 +15,9 @@ layout(binding = TL_UNIT_LIGHT_SPECULAR) uniform sampler2D u_light_specular;
 layout(binding = TL_UNIT_LIGHT_FRESNEL) uniform sampler2D u_light_fresnel;
 #if defined(TL_COAT_SUMS) && defined(TL_MODEL) && TL_MODEL == 2
 layout(binding = TL_UNIT_LIGHT_COAT) uniform sampler2D u_light_coat; // the coat's own sum (coat_sums.glsl)
+#ifdef TL_STIPPLE
+#define TL_STIPPLE_COAT // gathered as the other sums are where layers took pixels (stipple_gather.glsl)
+#endif
 #endif
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
@@ -115,7 +118,11 @@ void main()
     float nv_m = clamp(dot(tl_material_normal(), normalize(-v_view_position)), 0.0, 1.0);
     tl_model_sums ms = tl_model_sums_from_buffer(diffuse, specular + fresnel, nv_m);
 #if defined(TL_COAT_SUMS) && TL_MODEL == 2 && !defined(TL_NO_LIGHTS)
+#ifdef TL_STIPPLE_COAT
+    ms.coat = tl_stipple_coat;
+#else
     ms.coat = tl_finite(texelFetch(u_light_coat, ivec2(gl_FragCoord.xy), 0).rgb); // RT0 kept the base's gloss
+#endif
 #endif
     c = tl_model_shade(TL_MODEL, s, nv_m, diffuse, ambient, f0 * specular + fresnel, ms);
 #endif

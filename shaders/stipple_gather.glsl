@@ -10,6 +10,8 @@
 //   - tl_stipple_layer_light: a transparent fragment takes the 4 nearest pixels of its own layer.
 // Both are bilinear on a lattice of every other pixel.
 // Below TL_STIPPLE_CREDIBLE the caller lights the fragment itself from its object's lights.
+// TL_STIPPLE_COAT (the clearcoat's material program with the coat's own sums, coat_sums.glsl): each
+// gather also sums the coat's light with its weights into tl_stipple_coat.
 #ifndef TL_STIPPLE_GATHER_GLSL
 #define TL_STIPPLE_GATHER_GLSL
 
@@ -23,6 +25,10 @@ layout(binding = TL_UNIT_RT0) uniform sampler2D u_stipple_rt0;
 layout(binding = TL_UNIT_LIGHT_DIFFUSE) uniform sampler2D u_stipple_diffuse;
 layout(binding = TL_UNIT_LIGHT_SPECULAR) uniform sampler2D u_stipple_specular;
 layout(binding = TL_UNIT_LIGHT_FRESNEL) uniform sampler2D u_stipple_fresnel;
+#ifdef TL_STIPPLE_COAT
+layout(binding = TL_UNIT_LIGHT_COAT) uniform sampler2D u_stipple_light_coat;
+vec3 tl_stipple_coat; // the last gather's weighted sum of the coat's light (not normalised)
+#endif
 
 const float TL_STIPPLE_CREDIBLE = 0.5;
 const float TL_STIPPLE_DEPTH_RELATIVE = 0.005;
@@ -73,6 +79,9 @@ void tl_stipple_add(ivec2 q, float w, inout vec4 ld, inout vec3 ls, inout vec3 l
     lf += w * texelFetch(u_stipple_fresnel, q, 0).rgb;
 #endif
 #endif
+#ifdef TL_STIPPLE_COAT
+    tl_stipple_coat += w * texelFetch(u_stipple_light_coat, q, 0).rgb;
+#endif
 }
 
 bool tl_stipple_inside(ivec2 q, ivec2 size) { return all(greaterThanEqual(q, ivec2(0))) && all(lessThan(q, size)); }
@@ -87,6 +96,9 @@ float tl_stipple_lattice(ivec2 slot, int taps, float z_f, vec2 dz, vec3 n_f, flo
 {
     ld = vec4(0.0);
     ls = lf = vec3(0.0);
+#ifdef TL_STIPPLE_COAT
+    tl_stipple_coat = vec3(0.0);
+#endif
     ivec2 size = textureSize(u_stipple_depth, 0);
     vec2 r = (floor(gl_FragCoord.xy) - vec2(slot)) * 0.5; // pixel slot + 2 i sits at lattice point i
     vec2 base = floor(r), f = r - base;

@@ -25,6 +25,8 @@ const char tl_tool_settings_help[] =
     "  --msaa-lighting L     with --msaa: default (thin-lpp: material-pass; thin-deferred, fat:\n"
     "                        per-sample-edges), material-pass or per-sample-edges (thin-lpp too: a\n"
     "                        multisampled G-buffer, edge pixels lit per sample)\n"
+    "  --clearcoat C         thin-lpp's clearcoat: auto (default: the coat's own sums where they apply),\n"
+    "                        approx (the base's specular takes the coat's lobe) or sums\n"
     "  --exposure E          exposure before tone mapping (default 1; above 0, at most 1e6)\n";
 
 enum { S_MODE, S_NO_PREPASS, S_STRATEGY, S_DEPTH, S_RT0, S_LIGHT_BUFFER, S_LIGHT_FORMAT, S_LIGHTING, S_FRESNEL,
@@ -52,8 +54,8 @@ static const int msaa_values[] = {1, 2, 4, 8};
 static const char *const msaa_lighting_names[] = {"default", "material-pass", "per-sample-edges", NULL};
 static const int msaa_lighting_values[] = {TL_MSAA_LIGHTING_DEFAULT, TL_MSAA_LIGHTING_MATERIAL_PASS,
                                            TL_MSAA_LIGHTING_SAMPLE_EDGES};
-static const char *const clearcoat_names[] = {"approx", "sums", NULL};
-static const int clearcoat_values[] = {TL_CLEARCOAT_APPROXIMATE, TL_CLEARCOAT_SUMS};
+static const char *const clearcoat_names[] = {"auto", "approx", "sums", NULL};
+static const int clearcoat_values[] = {TL_CLEARCOAT_DEFAULT, TL_CLEARCOAT_APPROXIMATE, TL_CLEARCOAT_SUMS};
 static const char *const fxaa_names[] = {"off", "12", "29", "39", NULL};
 static const int fxaa_values[] = {TL_FXAA_OFF, TL_FXAA_12, TL_FXAA_29, TL_FXAA_39};
 

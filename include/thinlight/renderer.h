@@ -101,12 +101,15 @@ typedef enum tl_msaa_lighting {
 /** thin-lpp: how a clearcoat material's coat is lit from the light buffer (docs/lighting.md,
  *  "Material models"). */
 typedef enum tl_clearcoat_lighting {
-    TL_CLEARCOAT_DEFAULT = 0,     /**< = TL_CLEARCOAT_APPROXIMATE */
-    TL_CLEARCOAT_APPROXIMATE,     /**< RT0 holds the coat's gloss: the base's specular takes the coat's lobe
-                                       (no extra bytes) */
-    TL_CLEARCOAT_SUMS,            /**< when a clearcoat is drawn: the coat's gloss in a G-buffer byte and its
-                                       own specular sum in one more light target (9 B/px with RGBA16F); both
-                                       lobes exact. Planned at light scale 1, without MSAA or the stipple */
+    TL_CLEARCOAT_DEFAULT = 0,     /**< "auto": TL_CLEARCOAT_SUMS where they can be planned (a clearcoat drawn, light
+                                       scale 1, no MSAA), else TL_CLEARCOAT_APPROXIMATE; tl_frame_plan.clearcoat
+                                       says which, and why */
+    TL_CLEARCOAT_APPROXIMATE,     /**< "approx": RT0 holds the coat's gloss: the base's specular takes the coat's
+                                       lobe (no extra bytes) */
+    TL_CLEARCOAT_SUMS,            /**< "sums": when a clearcoat is drawn: the coat's gloss in a G-buffer byte and
+                                       its own specular sum in one more light target (9 B/px with RGBA16F); both
+                                       lobes exact, with the stipple too. Planned at light scale 1 without MSAA
+                                       (elsewhere a downgrade to the approximation, tl_frame_plan.downgrades) */
     TL_CLEARCOAT_COUNT_           /**< number of values */
 } tl_clearcoat_lighting;
 
@@ -359,8 +362,9 @@ typedef struct tl_renderer_options {
      *  of the light-buffer texel that matches its surface (or re-lit where none does); forward
      *  renders multisampled; msaa_lighting picks per-sample lighting on edges instead (thin-lpp) or
      *  as the default (thin-deferred, fat). The resolve tone-maps every sample before averaging.
-     *  Planned without (tl_frame_plan.msaa_reason says why) at a light scale below 1, with the
-     *  screen-space effects, which read a one-sample HDR or depth, and where msaa_lighting names a
+     *  Planned without (a downgrade: tl_frame_plan.downgrades and the logger say why) at a light
+     *  scale below 1, with the screen-space effects the mode runs, which read a one-sample HDR or
+     *  depth (forward runs no reflections: ssr costs it nothing), and where msaa_lighting names a
      *  method the mode lacks. */
     uint32_t msaa;
     tl_fxaa_preset fxaa;               /**< default 29 */
@@ -411,7 +415,7 @@ typedef struct tl_renderer_options {
      *  no pass, the plan as without the field. */
     int shadow_debug;
     /** thin-lpp with a clearcoat material drawn: its coat's light (tl_clearcoat_lighting; zeroed:
-     *  the approximation, today's plan and pixels). */
+     *  auto, the coat's own sums wherever they can be planned). */
     tl_clearcoat_lighting clearcoat;
 } tl_renderer_options;
 
@@ -584,6 +588,21 @@ typedef struct tl_plan_program {
     char defines[256]; /**< space-separated NAME or NAME=VALUE switches */
 } tl_plan_program;
 
+/** Capacity of tl_frame_plan.downgrades (more than one plan can make at once). */
+#define TL_PLAN_MAX_DOWNGRADES 12
+
+/** An option the plan does not honour as asked (docs/frame.md, "Downgrades"): an option the
+ *  caller set to a value whose pass, method or saving the plan leaves out or replaces. The renderer
+ *  logs each one once (TL_LOG_WARNING, when it first appears in a plan) and the tools print it;
+ *  tl_plan_downgrade_format writes it as one line. */
+typedef struct tl_plan_downgrade {
+    char option[32];  /**< the tl_renderer_options field as the API spells it ("msaa", "light_scale",
+                           "transparency", "clearcoat", "fresnel", "ssr.enabled", ...) */
+    char asked[24];   /**< the value asked ("4", "0.5", "stipple", "sums", "1") */
+    char planned[24]; /**< what the plan does instead ("1", "forward", "approx", "off") */
+    char reason[96];  /**< why */
+} tl_plan_downgrade;
+
 /** What a frame allocates, runs and compiles (DESIGN.md section 4): the frame graph. */
 typedef struct tl_frame_plan {
     tl_render_mode mode;                         /**< the mode planned for */
@@ -624,6 +643,11 @@ typedef struct tl_frame_plan {
     tl_plan_program programs[TL_PLAN_MAX_PROGRAMS]; /**< every permutation the frame compiles */
     uint32_t shadow_lights;                      /**< casting lights the plan looks up shadows for; 0: no
                                                       shadow pass and no shadow branch in any shader */
+    tl_clearcoat_lighting clearcoat;             /**< thin-lpp with a clearcoat drawn and lights: SUMS or
+                                                      APPROXIMATE; TL_CLEARCOAT_DEFAULT where it does not apply */
+    char clearcoat_reason[96];                   /**< why, where it applies */
+    size_t downgrade_count;                      /**< entries used in downgrades; 0: every option as asked */
+    tl_plan_downgrade downgrades[TL_PLAN_MAX_DOWNGRADES]; /**< the options the plan does not honour */
 } tl_frame_plan;
 
 /**
@@ -635,9 +659,13 @@ typedef struct tl_frame_plan {
 TL_API tl_result tl_frame_plan_build(const tl_renderer_desc *desc, const tl_scene_feature_set *features,
                                      tl_frame_plan *plan);
 /** Writes the plan as text (passes with inputs, outputs and clears, targets with bytes per pixel,
- *  lifetimes and memory, attributes, programs). Returns the length it needs without the NUL,
- *  like snprintf; a NULL buffer asks for it. */
+ *  lifetimes and memory, attributes, the downgrades, programs). Returns the length it needs
+ *  without the NUL, like snprintf; a NULL buffer asks for it. */
 TL_API size_t tl_frame_plan_format(const tl_frame_plan *plan, char *buffer, size_t size);
+/** Writes one downgrade as the line the renderer logs, e.g. "options.msaa = 4 is planned as 1: the
+ *  reduced light buffer's upsample runs at one sample" (no newline). Returns the length it needs
+ *  without the NUL, like snprintf; a NULL buffer asks for it; NULL `downgrade` writes "". */
+TL_API size_t tl_plan_downgrade_format(const tl_plan_downgrade *downgrade, char *buffer, size_t size);
 
 /** What one frame cost and allocated (tl_renderer_render, tl_renderer_wait). */
 typedef struct tl_frame_stats {

@@ -19,15 +19,21 @@ const char *tl__models_define(const tl_scene_feature_set *f)
     return (tl__plan_models(f) & ~(1u << TL_MATERIAL_MODEL_STANDARD)) ? " TL_MATERIAL_MODELS" : "";
 }
 
-/* TL_CLEARCOAT_SUMS (docs/lighting.md, "Material models"): the coat's own sums, planned only in
- * thin-lpp with a clearcoat drawn and lights, with the light buffer at the frame's one sample per
- * pixel (no light scale, MSAA or stipple, whose re-lit pixels would need the coat's lights too);
- * otherwise the approximation, and a scene without a clearcoat plans exactly as before. */
-int tl__plan_coat_sums(const tl__plan_input *in)
+/* The clearcoat's lighting in thin-lpp (docs/lighting.md, "Material models"): the coat's own sums
+ * (TL_COAT_SUMS) with a clearcoat drawn and lights, asked or by default, wherever the light buffer
+ * has the frame's one sample per pixel: not at a light scale below 1 nor with MSAA, whose re-lit
+ * pixels would need the coat's lights too (the stipple gathers and re-lights the coat's sum as the
+ * others). Otherwise the approximation (*why says why where the sums were asked or are the
+ * default), and a scene without a clearcoat plans exactly as before. */
+int tl__plan_coat_sums(const tl__plan_input *in, const char **why)
 {
-    return in->o->clearcoat == TL_CLEARCOAT_SUMS && in->mode->material_pass && in->lights &&
-           (tl__plan_models(&in->f) & (1u << TL_MATERIAL_MODEL_CLEARCOAT)) && !in->light_shift && in->msaa <= 1u &&
-           !in->stipple;
+    *why = NULL;
+    if (in->o->clearcoat == TL_CLEARCOAT_APPROXIMATE || !in->mode->material_pass || !in->lights ||
+        !(tl__plan_models(&in->f) & (1u << TL_MATERIAL_MODEL_CLEARCOAT)))
+        return 0;
+    if (in->light_shift) *why = "the reduced light buffer's re-lit pixels take one lobe";
+    else if (in->msaa > 1u) *why = "MSAA's re-lit samples take one lobe";
+    return *why == NULL;
 }
 
 void tl__material_model_slots(const tl__plan_input *in, const char *defines, tl__pass_defines *out)

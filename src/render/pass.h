@@ -39,6 +39,7 @@ extern const tl__mode_def tl__modes[TL_MODE_COUNT_];
  * no_planning), with facts several passes share. */
 typedef struct tl__plan_input {
     tl_renderer_desc d;         /* resolved: size and options */
+    tl_renderer_options asked;  /* the options as the caller gave them, zeroes unresolved (the downgrades) */
     const tl_renderer_options *o; /* &d.options: what the passes read */
     tl_scene_feature_set f;
     const tl__mode_def *mode;
@@ -59,8 +60,10 @@ typedef struct tl__plan_input {
     uint32_t msaa;              /* samples of the multisampled targets (tl__msaa_samples), 1: no MSAA */
     int stipple;                /* the blended materials go through the G-buffer's 2x2 stipple (pass_stipple.c) */
     char transparency_reason[96];
+    const char *transparency_why; /* blended materials drawn forward: why not the stipple (NULL otherwise) */
     uint32_t shadows;           /* casting lights looked up (TL_SHADOWS in spec_define); 0: none */
-    int coat_sums;              /* thin-lpp, TL_CLEARCOAT_SUMS, a clearcoat drawn: the coat's own sums (material_models.c) */
+    int coat_sums;              /* thin-lpp, a clearcoat drawn, sums asked or auto: the coat's own sums (material_models.c) */
+    const char *coat_why;       /* a clearcoat drawn, sums asked or auto, but the approximation planned: why */
 } tl__plan_input;
 
 /* What a pass needs of the lights module each frame (tl__pass_decl.light_data). */
@@ -187,6 +190,8 @@ void tl__permute_one_program(const tl__plan_input *in, const tl__pass_decl *d, t
  * from HDR by the ssao-apply pass (thin-deferred, fat); and the defines of a shading pass that
  * samples it (" TL_SSAO_AMBIENT", " TL_SSAO_DIFFUSE", "" when it does not). */
 int tl__ssao_pass(const tl__plan_input *in);
+/* Whether the shadow-debug pass is in the plan (pass_shadow_debug.c). */
+int tl__shadow_debug_planned(const tl__plan_input *in);
 const char *tl__ssao_defines(const tl__plan_input *in, const tl__pass_decl *d);
 
 /* Execute steps several passes share (draw.c): a full-screen triangle with the first program;
@@ -203,8 +208,9 @@ void tl__draw_transparent(const tl__pass_ctx *ctx);
 uint32_t tl__plan_models(const tl_scene_feature_set *f);
 const char *tl__models_define(const tl_scene_feature_set *f);
 void tl__material_model_slots(const tl__plan_input *in, const char *defines, tl__pass_defines *out);
-/* Whether the clearcoat's own sums are planned (tl__plan_input.coat_sums). */
-int tl__plan_coat_sums(const tl__plan_input *in);
+/* Whether the clearcoat's own sums are planned (tl__plan_input.coat_sums); *why: why not, where a
+ * clearcoat is drawn and the sums were asked or are the default (NULL otherwise). */
+int tl__plan_coat_sums(const tl__plan_input *in, const char **why);
 void tl__material_models_draw(const tl__pass_ctx *ctx);
 void tl__draw_points_lines(const tl__pass_ctx *ctx);
 

@@ -19,11 +19,15 @@ static int tl__shadow_debug_resolve(void *options)
     return *on == 0 || *on == 1;
 }
 
-static void tl__shadow_debug_declare(const tl__plan_input *in, tl__pass_decl *d)
+int tl__shadow_debug_planned(const tl__plan_input *in)
 {
     /* a multisampled G-buffer or forward depth would need a sample chosen: not built */
-    if (!in->o->shadow_debug || !in->shadows || tl__gbuffer_samples(in->o) > 1 || (in->mode->forward && in->msaa > 1))
-        return;
+    return in->o->shadow_debug && in->shadows && tl__gbuffer_samples(in->o) <= 1 && !(in->mode->forward && in->msaa > 1);
+}
+
+static void tl__shadow_debug_declare(const tl__plan_input *in, tl__pass_decl *d)
+{
+    if (!tl__shadow_debug_planned(in)) return;
     int fat = in->o->mode == TL_MODE_FAT;
     d->writes = d->clears = d->sinks = TL__B(SHADOW_DEBUG);
     d->reads = d->samples = fat ? TL__B(FAT_POSITION) | TL__B(FAT_NORMAL)

@@ -103,8 +103,10 @@ static void tl__plan_transparency(tl__plan_input *in)
                                                                         : "auto: ";
         snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s%s", lead, why);
     } else if (n == 0) { /* a feature set made by hand: the count is unknown */
-        snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s: blended objects not counted", how);
+        why = "blended objects not counted";
+        snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s: %s", how, why);
     } else if (n > TL_STIPPLE_LAYERS) {
+        why = "more blended objects than stipple layers";
         snprintf(in->transparency_reason, sizeof in->transparency_reason, "%s: %zu blended objects > %d stipple layers",
                  how, n, TL_STIPPLE_LAYERS);
     } else {
@@ -112,6 +114,20 @@ static void tl__plan_transparency(tl__plan_input *in)
         snprintf(in->transparency_reason, sizeof in->transparency_reason,
                  "%s: %zu blended object%s, one 2x2 stipple layer each", how, n, n == 1 ? "" : "s");
     }
+    in->transparency_why = why;
+}
+
+/* The clearcoat's lighting and why, where a clearcoat is drawn in thin-lpp with lights. */
+static void tl__plan_clearcoat(const tl__plan_input *in, tl_frame_plan *p)
+{
+    if (!in->mode->material_pass || !in->lights || !(tl__plan_models(&in->f) & (1u << TL_MATERIAL_MODEL_CLEARCOAT)))
+        return;
+    tl_clearcoat_lighting asked = in->o->clearcoat;
+    p->clearcoat = in->coat_sums ? TL_CLEARCOAT_SUMS : TL_CLEARCOAT_APPROXIMATE;
+    const char *lead = asked == TL_CLEARCOAT_DEFAULT ? "auto" : "asked";
+    if (asked == TL_CLEARCOAT_APPROXIMATE) snprintf(p->clearcoat_reason, sizeof p->clearcoat_reason, "asked");
+    else if (in->coat_sums) snprintf(p->clearcoat_reason, sizeof p->clearcoat_reason, "%s: the coat's own sums", lead);
+    else snprintf(p->clearcoat_reason, sizeof p->clearcoat_reason, "%s, but %s", lead, in->coat_why);
 }
 
 static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_feature_set *features, tl__plan_input *in)
@@ -139,7 +155,7 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     tl__plan_transparency(in);
     in->rt0_define = d->options.rt0 == TL_RT0_RGB10A2 ? "TL_RT0_RGB10A2" : "TL_RT0_RGBA8";
     tl__material_defines(f, in->material_defines, sizeof in->material_defines);
-    in->coat_sums = tl__plan_coat_sums(in);
+    in->coat_sums = tl__plan_coat_sums(in, &in->coat_why);
     if (in->coat_sums) strcat(in->material_defines, " TL_COAT_SUMS"); /* coat_sums.glsl */
     if (f->has_environment) strcat(in->material_defines, " TL_IBL"); /* image-based light (ibl.glsl) */
 }
@@ -361,6 +377,37 @@ static tl_result tl__programs(const tl__plan_input *in, tl__plan *p)
     return TL_OK;
 }
 
+/* The plan's choices with their reasons, and the downgrades among them. */
+static void tl__plan_choices(const tl__plan_input *in, tl_frame_plan *p)
+{
+    const tl_renderer_options *o = in->o;
+    p->light_strategy = in->strategy;
+    p->lighting = in->lighting;
+    p->fresnel = in->fresnel;
+    snprintf(p->lighting_reason, sizeof p->lighting_reason, "%s", in->lighting_reason);
+    snprintf(p->strategy_reason, sizeof p->strategy_reason, "%s", in->strategy_reason);
+    p->light_scale = 1.0f / (float)(1u << in->light_shift);
+    if (o->light_scale != 1.0f)
+        snprintf(p->light_scale_reason, sizeof p->light_scale_reason, "%s",
+                 in->light_shift ? "asked; lights on the reduced depth, upsampled, edges re-lit"
+                                 : "asked, but only thin-lpp has a light buffer to reduce");
+    p->msaa = in->msaa;
+    p->shadow_lights = in->shadows;
+    if (o->msaa > 1) {
+        const char *why = tl__msaa_refusal(o);
+        snprintf(p->msaa_reason, sizeof p->msaa_reason, "%s%s", why ? "asked, but " : "", why ? why : tl__msaa_how(o));
+    }
+    p->transparency = in->stipple ? TL_TRANSPARENCY_STIPPLE : TL_TRANSPARENCY_FORWARD;
+    snprintf(p->transparency_reason, sizeof p->transparency_reason, "%s", in->transparency_reason);
+    tl__plan_clearcoat(in, p);
+    tl__plan_downgrades(in, p);
+    if (in->strategy == TL_LIGHT_STRATEGY_TILED) {
+        p->tile_size = in->tile_size;
+        p->tiles_x = in->tiles_x;
+        p->tiles_y = in->tiles_y;
+    }
+}
+
 tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_set *features, const tl__app_pass *apps,
                          size_t app_count, tl__plan *p)
 {
@@ -370,6 +417,7 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     if (res != TL_OK) return res;
     tl__plan_input in;
     tl__plan_input_init(&d, features, &in);
+    in.asked = desc->options;
     memset(p, 0, sizeof *p);
     tl__target_defs(p->targets);
     p->pub.mode = d.options.mode;
@@ -377,30 +425,7 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     p->pub.height = d.height;
     /* the output is read after the frame; kept targets too, when the plan has them at all */
     uint32_t kept = TL__BIT(TL_TARGET_OUTPUT) | (d.options.keep_targets & (TL__BIT(TL_TARGET_COUNT) - 1u));
-    p->pub.light_strategy = in.strategy;
-    p->pub.lighting = in.lighting;
-    p->pub.fresnel = in.fresnel;
-    snprintf(p->pub.lighting_reason, sizeof p->pub.lighting_reason, "%s", in.lighting_reason);
-    snprintf(p->pub.strategy_reason, sizeof p->pub.strategy_reason, "%s", in.strategy_reason);
-    p->pub.light_scale = 1.0f / (float)(1u << in.light_shift);
-    if (d.options.light_scale != 1.0f)
-        snprintf(p->pub.light_scale_reason, sizeof p->pub.light_scale_reason, "%s",
-                 in.light_shift ? "asked; lights on the reduced depth, upsampled, edges re-lit"
-                                : "asked, but only thin-lpp has a light buffer to reduce");
-    p->pub.msaa = in.msaa;
-    p->pub.shadow_lights = in.shadows;
-    if (d.options.msaa > 1) {
-        const char *why = tl__msaa_refusal(&d.options);
-        snprintf(p->pub.msaa_reason, sizeof p->pub.msaa_reason, "%s%s", why ? "asked, but " : "",
-                 why ? why : tl__msaa_how(&d.options));
-    }
-    p->pub.transparency = in.stipple ? TL_TRANSPARENCY_STIPPLE : TL_TRANSPARENCY_FORWARD;
-    snprintf(p->pub.transparency_reason, sizeof p->pub.transparency_reason, "%s", in.transparency_reason);
-    if (in.strategy == TL_LIGHT_STRATEGY_TILED) {
-        p->pub.tile_size = in.tile_size;
-        p->pub.tiles_x = in.tiles_x;
-        p->pub.tiles_y = in.tiles_y;
-    }
+    tl__plan_choices(&in, &p->pub);
     tl__select(&in, apps, app_count, p);
     uint32_t debug = 0; /* debug outputs: read after the frame, like the output */
     for (size_t i = 0; i < p->pub.pass_count; i++) debug |= p->decl[i].sinks;

@@ -1,5 +1,6 @@
 /* The plan as text (--print-plan): the compiled pass table with each pass's reads, writes and
- * clears, every target's lifetime and memory, the shared blocks, attributes and programs. */
+ * clears, every target's lifetime and memory, the shared blocks, attributes, the choices with
+ * their reasons and the downgrades, and programs. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
@@ -102,6 +103,13 @@ size_t tl_frame_plan_format(const tl_frame_plan *p, char *buffer, size_t size)
     if (p->msaa_reason[0]) tl__printf(&o, "msaa: %u sample%s (%s)\n", p->msaa, p->msaa > 1 ? "s" : "", p->msaa_reason);
     if (p->transparency_reason[0])
         tl__printf(&o, "transparency: %s (%s)\n", tl_transparency_name(p->transparency), p->transparency_reason);
+    if (p->clearcoat_reason[0])
+        tl__printf(&o, "clearcoat: %s (%s)\n", p->clearcoat == TL_CLEARCOAT_SUMS ? "sums" : "approx", p->clearcoat_reason);
+    for (size_t i = 0; i < p->downgrade_count && i < TL_PLAN_MAX_DOWNGRADES; i++) {
+        char line[256];
+        tl_plan_downgrade_format(&p->downgrades[i], line, sizeof line);
+        tl__printf(&o, "downgrade: %s\n", line);
+    }
     tl__printf(&o, "lighting: %s (%s)", tl_lighting_model_name(p->lighting), p->lighting_reason);
     if (p->fresnel != TL_FRESNEL_DEFAULT)
         tl__printf(&o, "; Fresnel in the light buffer: %s", p->fresnel == TL_FRESNEL_TWO_SUMS

@@ -20,4 +20,7 @@ tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc
 tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_set *features,
                          const tl__app_pass *apps, size_t app_count, tl__plan *plan);
 
+/* The options the plan does not honour as asked, into plan->downgrades (plan_downgrades.c). */
+void tl__plan_downgrades(const tl__plan_input *in, tl_frame_plan *plan);
+
 #endif

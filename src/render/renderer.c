@@ -35,6 +35,21 @@ static tl_result tl__plan_budget(tl_renderer *r, const tl__plan *plan)
                     r->desc.max_target_bytes);
 }
 
+/* Logs each downgrade of the new plan `p` that the plan it replaces (`old`) did not make: once
+ * when it appears, not per frame or per re-plan (docs/frame.md, "Downgrades"). */
+static void tl__log_downgrades(tl__device *dev, const tl_frame_plan *p, const tl_frame_plan *old)
+{
+    for (size_t i = 0; i < p->downgrade_count; i++) {
+        int known = 0;
+        for (size_t k = 0; k < old->downgrade_count && !known; k++)
+            known = memcmp(&p->downgrades[i], &old->downgrades[k], sizeof p->downgrades[i]) == 0;
+        if (known) continue;
+        char line[256];
+        tl_plan_downgrade_format(&p->downgrades[i], line, sizeof line);
+        tl__log_message(&dev->log, TL_LOG_WARNING, "renderer: %s", line);
+    }
+}
+
 /* Re-plans from the options, the scene's features and the application passes; compiles the new
  * plan's GL objects when it differs (never per frame). Planning and the budget fail before
  * anything changes. */
@@ -44,11 +59,14 @@ static tl_result tl__replan(tl_renderer *r)
     tl__graph *g = &r->graph;
     tl_scene_feature_set f = r->scene.features;
     f.has_environment = r->env.loaded; /* the renderer's, not the scene's */
-    tl_result res = tl__plan_build(&r->desc, &f, g->apps, g->app_count, &plan);
+    tl_renderer_desc d = r->desc;
+    d.options = r->given; /* as the caller gave them: the plan tells an option asked from its default */
+    tl_result res = tl__plan_build(&d, &f, g->apps, g->app_count, &plan);
     if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: planning the frame failed");
     if ((res = tl__plan_budget(r, &plan)) != TL_OK) return res;
     int same = g->pass_count && memcmp(&plan, &g->plan, sizeof plan) == 0;
     if (!same) {
+        tl__log_downgrades(&r->dev, &plan.pub, &g->plan.pub);
         g->plan = plan;
         res = tl__graph_compile(&r->dev, g, r->scene.loaded);
         const tl_frame_plan *p = &g->plan.pub;
@@ -367,13 +385,15 @@ tl_result tl_renderer_set_options(tl_renderer *r, const tl_renderer_options *opt
     const char *bad = "";
     if ((res = tl__options_resolve(options, &d.options, &bad)) != TL_OK)
         return tl__fail(&r->dev, res, "renderer: set_options: options.%s is out of range", bad);
+    tl_renderer_options given = r->given;
     tl__options_take(r, &d);
+    r->given = *options;
     if ((res = tl__replan(r)) != TL_OK) { /* the old options, with the plan they had */
         tl__options_take(r, &old);
+        r->given = given;
         tl__replan(r);
         return res;
     }
-    r->given = *options;
     return TL_OK;
 }
 

@@ -80,7 +80,9 @@ const char *tl__msaa_refusal(const tl_renderer_options *o)
     if (m == TL_MSAA_LIGHTING_MATERIAL_PASS && o->mode != TL_MODE_THIN_LPP && o->mode != TL_MODE_FORWARD)
         return "thin-deferred and fat have no material pass (msaa-lighting per-sample-edges)";
     if (tl__light_shift(o)) return "the reduced light buffer's upsample runs at one sample";
-    if (o->ssao.method != TL_SSAO_OFF || o->fog.mode != TL_FOG_OFF || o->dof.enabled || o->bloom.enabled || o->ssr.enabled ||
+    /* forward runs no reflections (pass_ssr.c): they cost it nothing */
+    int ssr = o->ssr.enabled && o->mode != TL_MODE_FORWARD;
+    if (o->ssao.method != TL_SSAO_OFF || o->fog.mode != TL_FOG_OFF || o->dof.enabled || o->bloom.enabled || ssr ||
         o->vignette.enabled)
         return "screen-space effects read a one-sample HDR and depth";
     return NULL;

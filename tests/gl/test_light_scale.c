@@ -207,6 +207,9 @@ TL_TEST(light_scale_plan_reduced_targets_and_refusals)
         TL_CHECK(tl_frame_plan_build(&fd, &f, &fatk) == TL_OK);
         TL_CHECK(strstr(fatk.light_scale_reason, "thin-lpp") != NULL);
         memset(fatk.light_scale_reason, 0, sizeof fatk.light_scale_reason);
+        TL_CHECK(fatk.downgrade_count == 1 && !strcmp(fatk.downgrades[0].option, "light_scale")); /* a downgrade */
+        memset(fatk.downgrades, 0, sizeof fatk.downgrades);
+        fatk.downgrade_count = 0;
         TL_CHECK(memcmp(&fat1, &fatk, sizeof fat1) == 0);
     }
     const float bad[4] = {0.3f, 2.0f, -0.5f, NAN};

@@ -154,9 +154,15 @@ TL_TEST(msaa_plan_targets_and_refusals)
         TL_CHECK(tl_frame_plan_build(&refused[i], &f, &p) == TL_OK);
         TL_CHECK_EQ_U(p.msaa, 1u);
         TL_CHECK(strstr(p.msaa_reason, "asked, but") != NULL);
+        /* a downgrade: listed with what was asked and why (logged and printed from the list) */
+        TL_CHECK_EQ_U(p.downgrade_count, 1);
+        TL_CHECK(!strcmp(p.downgrades[0].option, "msaa") && !strcmp(p.downgrades[0].asked, "4") &&
+                 !strcmp(p.downgrades[0].planned, "1") && strstr(p.msaa_reason, p.downgrades[0].reason));
         refused[i].options.msaa = 0;
         TL_CHECK(tl_frame_plan_build(&refused[i], &f, &off) == TL_OK);
         memset(p.msaa_reason, 0, sizeof p.msaa_reason);
+        memset(p.downgrades, 0, sizeof p.downgrades);
+        p.downgrade_count = 0;
         TL_CHECK(memcmp(&p, &off, sizeof p) == 0);
     }
     tl_frame_plan p;

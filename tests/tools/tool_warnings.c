@@ -156,3 +156,60 @@ TL_TEST(viewer_prints_each_loader_warning_once)
     printf("no thinlight-viewer in this build\n");
 #endif
 }
+
+/* ---- downgrades ---------------------------------------------------------------------------------
+ * An option the plan does not honour (MSAA at a light scale below 1: the upsample runs at one
+ * sample) is printed once as a warning by each renderer tool: the renderer logs it when it first
+ * appears in a plan, the tool prints its logger's lines once. Before, it was said only in the
+ * plan's msaa_reason (--print-plan). */
+#define DOWNGRADE_LINE "warning: renderer: options.msaa = 4 is planned as 1: the reduced light buffer's upsample runs at one sample"
+
+static void check_downgrade(const char *tool, const char *err)
+{
+    char want[512];
+    snprintf(want, sizeof want, "%s: %s", tool, DOWNGRADE_LINE);
+    printf("%s stderr:\n%s", tool, err);
+    int times = count_lines(err, want);
+    if (times != 1) printf("printed %d times: %s\n", times, want);
+    TL_CHECK(times == 1);
+}
+
+TL_TEST(render_prints_each_downgrade_once)
+{
+    char cmd[4096];
+    tlh_rmtree(TL_WARNINGS_DIR "/downgrade");
+    TL_CHECK(tlh_mkdirs(TL_WARNINGS_DIR "/downgrade") == 0);
+    snprintf(cmd, sizeof cmd, "'%s' default --size 32x18 --lights 4 --msaa 4 --light-scale 0.5 -o '%s/downgrade/out.png'",
+             TL_RENDER_TOOL, TL_WARNINGS_DIR);
+    char *err = stderr_of(cmd);
+    TL_CHECK(err != NULL);
+    if (err) check_downgrade("thinlight-render", err);
+    free(err);
+}
+
+/* The viewer renders only with a display: under Xvfb (xvfb-run when DISPLAY is unset), several
+ * frames. */
+TL_TEST(viewer_prints_each_downgrade_once)
+{
+#ifdef TL_VIEWER_TOOL
+    const char *display = getenv("DISPLAY");
+    int xvfb = !(display && display[0]);
+    if (xvfb && system("command -v xvfb-run >/dev/null 2>&1") != 0) {
+        printf("no display and no xvfb-run: not run\n");
+        return;
+    }
+    char cmd[4096];
+    tlh_rmtree(TL_WARNINGS_DIR "/downgrade_viewer");
+    TL_CHECK(tlh_mkdirs(TL_WARNINGS_DIR "/downgrade_viewer") == 0);
+    snprintf(cmd, sizeof cmd, "%s%s'%s' --size 64x36 --frames 3 --no-panel --msaa 4 --light-scale 0.5 "
+             "--screenshot '%s/downgrade_viewer/v.png'",
+             xvfb ? "xvfb-run -a -s '-screen 0 1280x1024x24 -noreset' " : "", TL_VIEWER_ENV, TL_VIEWER_TOOL,
+             TL_WARNINGS_DIR);
+    char *err = stderr_of(cmd);
+    TL_CHECK(err != NULL);
+    if (err) check_downgrade("thinlight-viewer", err);
+    free(err);
+#else
+    printf("no thinlight-viewer in this build\n");
+#endif
+}
