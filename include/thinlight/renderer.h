@@ -953,7 +953,9 @@ TL_API tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uin
 
 /** Reads the final LDR image as RGBA8 (opaque: alpha 255, with or without FXAA), rows bottom to
  *  top (GL order). *size is the buffer's size
- *  in bytes and receives the bytes written; a NULL `rgba` asks for the size needed. */
+ *  in bytes and receives the bytes written; a NULL `rgba` asks for the size needed. Reading before
+ *  tl_renderer_render has drawn a frame at the renderer's size (none yet, only render_to, or a
+ *  resize since) is TL_ERROR_INVALID_ARGUMENT, saying so. */
 TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *size);
 /**
  * Reads a target as floats, 4 per pixel, rows bottom to top: DEPTH gives (window depth, linear

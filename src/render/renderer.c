@@ -113,13 +113,15 @@ tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out)
     r->dev.get_proc_address = d.get_proc_address;
     r->dev.get_proc_address_user = d.get_proc_address_user;
     tl__context_check_init(&r->dev, d.is_current);
-    if (r->dev.is_current && !tl__context_current(&r->dev)) { /* without a callback GL loading tells */
+    if ((r->dev.is_current || r->dev.own_context) && !tl__context_current(&r->dev)) { /* else GL loading tells */
         tl__logger_fail(&d.logger, TL_ERROR_GL, "renderer: tl_renderer_create: no GL context is current on this thread "
                                                 "(the renderer is created in the current context)");
+        tl__context_check_release(&r->dev);
         tl__free(&a, r);
         return TL_ERROR_GL;
     }
     if ((res = tl__device_load(&r->dev)) != TL_OK) {
+        tl__context_check_release(&r->dev);
         tl__free(&a, r); /* no GL: nothing to free in it (the message went to the logger) */
         return res;
     }
@@ -134,8 +136,9 @@ tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out)
 void tl_renderer_destroy(tl_renderer *r)
 {
     if (!r) return;
+    if (tl__context_gone(&r->dev)) tl__device_lose(&r->dev); /* its GL objects went with it: memory only */
     /* GL names mean other objects in another context: leave everything for a call that can */
-    if (tl__need_context(&r->dev, "tl_renderer_destroy") != TL_OK) return;
+    else if (tl__need_context(&r->dev, "tl_renderer_destroy") != TL_OK) return;
     tl__scene_release(&r->dev, &r->scene);
     tl__lights_release(&r->dev, &r->lights);
     tl__shadows_release(&r->dev, &r->shadows);
@@ -143,6 +146,7 @@ void tl_renderer_destroy(tl_renderer *r)
     tl__graph_release(&r->dev, &r->graph);
     tl__queries_destroy(&r->dev, &r->queries);
     tl__device_release(&r->dev);
+    tl__context_check_release(&r->dev);
     tl_allocator a = r->dev.alloc;
     tl__free(&a, r);
 }
@@ -314,6 +318,8 @@ tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height)
                         max_size < (GLint)TL__MAX_SIZE ? max_size : (int)TL__MAX_SIZE);
     if (width == r->desc.width && height == r->desc.height) return TL_OK;
     uint32_t old_w = r->desc.width, old_h = r->desc.height;
+    int drawn = r->output_drawn;
+    r->output_drawn = 0; /* the output target is re-made at the new size: nothing drawn in it */
     r->desc.width = width;
     r->desc.height = height;
     tl_result res = tl__replan(r);
@@ -322,6 +328,7 @@ tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height)
     if (res != TL_OK && p->width == old_w && p->height == old_h) {
         r->desc.width = old_w;
         r->desc.height = old_h;
+        r->output_drawn = drawn;
     }
     return res;
 }
@@ -446,7 +453,9 @@ tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_frame_s
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
     tl_result res = tl__need_context(&r->dev, "tl_renderer_render");
     if (res == TL_OK) res = tl__need_scene(r);
-    return res == TL_OK ? tl__frame(r, camera, NULL, stats) : res;
+    if (res == TL_OK) res = tl__frame(r, camera, NULL, stats);
+    if (res == TL_OK) r->output_drawn = 1;
+    return res;
 }
 
 tl_result tl_renderer_render_to(tl_renderer *r, const tl_camera *camera, const tl_render_output *output,
