@@ -351,8 +351,10 @@ typedef struct tl_renderer_options {
     float light_scale;
     /** Alpha-blended materials: auto (default), forward or stipple (tl_transparency). */
     tl_transparency transparency;
-    /** Multisample antialiasing (docs/antialiasing.md): samples per pixel, 2, 4 or 8 (at most the
-     *  context's GL_MAX_SAMPLES); 0 or 1, the default: off. thin-lpp keeps its G-buffer and light
+    /** Multisample antialiasing (docs/antialiasing.md): samples per pixel, 2, 4 or 8; 0 or 1, the
+     *  default: off. A count the context's multisampled targets lack is planned as the next one
+     *  they have, with a warning (llvmpipe: 2 runs with 4; tl_frame_plan.msaa says), one past them
+     *  is TL_ERROR_UNSUPPORTED naming options.msaa. thin-lpp keeps its G-buffer and light
      *  buffer at one sample and runs the material pass multisampled, each sample taking the light
      *  of the light-buffer texel that matches its surface (or re-lit where none does); forward
      *  renders multisampled; msaa_lighting picks per-sample lighting on edges instead (thin-lpp) or

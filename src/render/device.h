@@ -26,6 +26,10 @@ typedef struct tl__limits {
     size_t storage_max;     /* bytes one storage block binding may hold (GL's, or the descriptor's lower one) */
     size_t max_lights;      /* TL_RENDERER_MAX_LIGHTS, or fewer when storage_max holds fewer */
     GLint max_texture_size; /* GL_MAX_TEXTURE_SIZE */
+    /* the sample counts a multisampled target of every format the renderer multisamples can have
+     * (bit n: n samples; GL_SAMPLES of glGetInternalformativ): a target asked for n samples gets
+     * the smallest of these >= n, so the renderer asks for exactly that (tl__device_samples) */
+    uint32_t sample_counts;
 } tl__limits;
 
 typedef struct tl__program_entry {
@@ -68,6 +72,9 @@ typedef struct tl__device {
  * the shared objects; the device's GL objects freed. */
 tl_result tl__device_load(tl__device *dev);
 tl_result tl__device_init(tl__device *dev, const tl_renderer_desc *desc);
+/* The samples a multisampled target asked for `asked` gets in this context (the smallest count of
+ * lim.sample_counts >= asked), 1 for asked <= 1, 0 when the context has none that many. */
+uint32_t tl__device_samples(const tl__device *dev, uint32_t asked);
 void tl__device_release(tl__device *dev);
 
 /* programs.c: permutations built on demand, cached by (vertex, fragment, compute, defines). */

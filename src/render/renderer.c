@@ -70,9 +70,38 @@ static tl_result tl__replan(tl_renderer *r)
 
 /* ---- create / destroy ----------------------------------------------------------------------- */
 
+/* options.msaa against the context: refused past its sample counts, and a count its targets cannot
+ * have exactly made the one they get (llvmpipe has only 4: 2 gives 4), said once (`say`), so that
+ * the plan, every shader's sample loop and every target count the samples the targets have. */
+static tl_result tl__msaa_for_context(tl_renderer *r, tl_renderer_options *o, const char *call, int say)
+{
+    uint32_t asked = o->msaa, real = tl__device_samples(&r->dev, asked);
+    if (real == asked) return TL_OK;
+    if (!real) {
+        char counts[96] = "0", *at = counts + 1;
+        uint32_t last = 1;
+        for (uint32_t n = 2; n < 32u; n++) /* "0, 1, 2 or 4" */
+            if (r->dev.lim.sample_counts & (1u << n)) {
+                at += snprintf(at, (size_t)(counts + sizeof counts - at), ", %u", last);
+                last = n;
+            }
+        snprintf(at, (size_t)(counts + sizeof counts - at), " or %u", last);
+        return tl__fail(&r->dev, TL_ERROR_UNSUPPORTED,
+                        "renderer: %soptions.msaa = %u is out of range for this context (%s: the sample counts its "
+                        "multisampled target formats have)", call, asked, counts);
+    }
+    if (say)
+        tl__log_message(&r->dev.log, TL_LOG_WARNING,
+                        "renderer: %soptions.msaa = %u: this context's multisampled targets have no %u-sample form; "
+                        "the frame uses %u samples, the next count it has (tl_frame_plan.msaa)", call, asked, asked, real);
+    o->msaa = real;
+    return TL_OK;
+}
+
 static tl_result tl__create_objects(tl_renderer *r, const tl_renderer_desc *desc)
 {
     tl_result res = tl__device_init(&r->dev, desc);
+    if (res == TL_OK) res = tl__msaa_for_context(r, &r->desc.options, "", 1);
     if (res != TL_OK) return res;
     r->dev.state.reversed = r->desc.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
     tl__light_volumes_create(&r->dev, &r->lights);
@@ -97,12 +126,9 @@ tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out)
         return tl__logger_fail(&desc->logger, TL_ERROR_INVALID_ARGUMENT,
                                "renderer: the allocator needs both alloc and free");
     tl_renderer_desc d;
-    const char *bad = "";
-    tl_result res = tl__renderer_desc_resolve(desc, &d, &bad);
-    if (res == TL_ERROR_LIMIT)
-        return tl__logger_fail(&desc->logger, res, "renderer: size %ux%u is over %u per side", d.width, d.height,
-                               TL__MAX_SIZE);
-    if (res != TL_OK) return tl__logger_fail(&desc->logger, res, "renderer: options.%s is out of range", bad);
+    tl__why why = {""};
+    tl_result res = tl__renderer_desc_resolve(desc, &d, &why);
+    if (res != TL_OK) return tl__logger_fail(&desc->logger, res, "renderer: %s", why.text);
     tl_renderer *r = (tl_renderer *)tl__calloc(&a, 1, sizeof *r);
     if (!r) return tl__logger_fail(&desc->logger, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory");
     r->desc = d;
@@ -350,9 +376,10 @@ tl_result tl_renderer_set_options(tl_renderer *r, const tl_renderer_options *opt
     if (res != TL_OK) return res;
     if (!options) return tl__fail(&r->dev, TL_ERROR_INVALID_ARGUMENT, "renderer: set_options needs options");
     tl_renderer_desc d = r->desc, old = r->desc;
-    const char *bad = "";
-    if ((res = tl__options_resolve(options, &d.options, &bad)) != TL_OK)
-        return tl__fail(&r->dev, res, "renderer: set_options: options.%s is out of range", bad);
+    tl__why why = {""};
+    if ((res = tl__options_resolve(options, &d.options, &why)) != TL_OK)
+        return tl__fail(&r->dev, res, "renderer: set_options: %s", why.text);
+    if ((res = tl__msaa_for_context(r, &d.options, "set_options: ", options->msaa != r->given.msaa)) != TL_OK) return res;
     tl__options_take(r, &d);
     if ((res = tl__replan(r)) != TL_OK) { /* the old options, with the plan they had */
         tl__options_take(r, &old);
