@@ -24,12 +24,12 @@ static void tl__storage_limits(tl__device *dev, size_t desc_max)
     dev->lim.max_lights = lights < TL_RENDERER_MAX_LIGHTS ? lights : TL_RENDERER_MAX_LIGHTS;
 }
 
-/* The sample counts every multisampled target format has (HDR, depth, the G-buffer and light
- * targets of per-sample lighting, the visibility ids): a bit per count. */
+/* The sample counts every format a target may be multisampled in has (HDR, depth, the G-buffer
+ * and light targets of per-sample lighting, the coat's gloss): a bit per count. */
 static void tl__sample_counts(tl__device *dev)
 {
     static const GLenum formats[] = {GL_RGBA16F, GL_RGBA32F, GL_RGBA8, GL_RGB10_A2, GL_R11F_G11F_B10F, GL_R8,
-                                     GL_R32UI, GL_DEPTH24_STENCIL8, GL_DEPTH32F_STENCIL8};
+                                     GL_DEPTH24_STENCIL8, GL_DEPTH_COMPONENT32F};
     const GladGLContext *gl = &dev->gl;
     uint32_t all = ~0u;
     for (size_t f = 0; f < sizeof formats / sizeof formats[0]; f++) {
