@@ -33,14 +33,22 @@ void main()
 #elif TL_LIGHT_TYPE == 2
     // Cone: apex at the light, axis +Z of the mesh along the direction; mesh z in [0,1] is scaled
     // by the radius, xy by radius * tan(outer angle) (the mesh already contains the true cone).
+    // Past 60 degrees that base grows without bound (at 90, the widest cone a light may have, it
+    // is infinite): a 45-degree cone whose apex sits 1.1 radii behind the light contains the whole
+    // half ball in front of it instead, so every cone up to 90 degrees is drawn whole
+    // (light_volumes.c bounds it alike).
     vec3 w = normalize(i_direction_cos_outer.xyz);
     vec3 a = abs(w.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0);
     vec3 u = normalize(cross(a, w));
     vec3 v = cross(w, u);
-    float c = clamp(i_direction_cos_outer.w, 0.05, 1.0);
-    float base = i_position_radius.w * sqrt(1.0 - c * c) / c;
-    vec3 world = i_position_radius.xyz + u * (a_position.x * base) + v * (a_position.y * base) +
-                 w * (a_position.z * i_position_radius.w);
+    float c = clamp(i_direction_cos_outer.w, 0.0, 1.0), r = i_position_radius.w;
+    vec3 apex = i_position_radius.xyz;
+    float len = r, base = r * sqrt(1.0 - c * c) / max(c, 0.5);
+    if (c < 0.5) {
+        apex -= w * (1.1 * r);
+        len = base = 2.1 * r;
+    }
+    vec3 world = apex + u * (a_position.x * base) + v * (a_position.y * base) + w * (a_position.z * len);
     gl_Position = u_view_proj * vec4(world, 1.0);
 #else
     gl_Position = u_view_proj * vec4(i_position_radius.xyz + a_position * i_position_radius.w, 1.0);

@@ -356,8 +356,10 @@ typedef struct tl_renderer_options {
     float light_scale;
     /** Alpha-blended materials: auto (default), forward or stipple (tl_transparency). */
     tl_transparency transparency;
-    /** Multisample antialiasing (docs/antialiasing.md): samples per pixel, 2, 4 or 8 (at most the
-     *  context's GL_MAX_SAMPLES); 0 or 1, the default: off. thin-lpp keeps its G-buffer and light
+    /** Multisample antialiasing (docs/antialiasing.md): samples per pixel, 2, 4 or 8; 0 or 1, the
+     *  default: off. A count the context's multisampled targets lack is planned as the next one
+     *  they have, with a warning (llvmpipe: 2 runs with 4; tl_frame_plan.msaa says), one past them
+     *  is TL_ERROR_UNSUPPORTED naming options.msaa. thin-lpp keeps its G-buffer and light
      *  buffer at one sample and runs the material pass multisampled, each sample taking the light
      *  of the light-buffer texel that matches its surface (or re-lit where none does); forward
      *  renders multisampled; msaa_lighting picks per-sample lighting on edges instead (thin-lpp) or
@@ -998,7 +1000,9 @@ TL_API tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uin
 
 /** Reads the final LDR image as RGBA8 (opaque: alpha 255, with or without FXAA), rows bottom to
  *  top (GL order). *size is the buffer's size
- *  in bytes and receives the bytes written; a NULL `rgba` asks for the size needed. */
+ *  in bytes and receives the bytes written; a NULL `rgba` asks for the size needed. Reading before
+ *  tl_renderer_render has drawn a frame at the renderer's size (none yet, only render_to, or a
+ *  resize since) is TL_ERROR_INVALID_ARGUMENT, saying so. */
 TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *size);
 /**
  * Reads a target as floats, 4 per pixel, rows bottom to top: DEPTH gives (window depth, linear

@@ -182,8 +182,13 @@ typedef struct tl_light {
     float color[3];      /**< linear colour times intensity; the renderer takes a negative component as 0 and
                               saturates what a pixel receives at 65504 (FP16), docs/renderer-limits.md */
     float radius;        /**< range; > 0 for point and spot (0 is refused: it would reach nothing) */
-    float cos_inner;     /**< spot: full intensity inside this cone */
-    float cos_outer;     /**< spot: zero outside this cone; cos_outer < cos_inner (else refused) */
+    /** Spot: the cosine of the half angle inside which the light is at full intensity, -1..1 and
+     *  above cos_outer (cosines, not angles: `cosf(0.3f)`; else refused, naming the field). */
+    float cos_inner;
+    /** Spot: the cosine of the half angle outside which it is zero (a smoothstep between the two):
+     *  0..1, below cos_inner. 0 is a 90-degree cone, the widest (glTF's outerConeAngle <= pi/2;
+     *  cosf of pi/2's float, -4.4e-8, counts as 0); a wider one is refused. */
+    float cos_outer;
     /** Point and spot lights: the radius of the emitting sphere (GGX lighting only: the sphere's
      *  irradiance for diffuse, Karis' representative point for specular; docs/lighting.md).
      *  0 (the default): a punctual light; >= 0. The window and the cone are measured from the

@@ -4,6 +4,7 @@
 // lights) becomes colour * I / pi: the radiance glTF's own Lambert term albedo / pi * I / d^2
 // gives. The numbers are documented in docs/gltf.md.
 #include <cmath>
+#include <cstdio>
 
 #include "gltf_internal.h"
 #include "gltf_math.h"
@@ -45,6 +46,31 @@ bool renderable(const context &c, const std::string &name, const tl_light &l)
     if (tl__light_check(&l, name.c_str(), msg, sizeof msg) == TL_OK) return true;
     warn(c, std::string(msg) + "; skipped");
     return false;
+}
+
+// glTF: 0 <= inner < outer <= pi/2. An angle outside is clamped into it (docs/gltf.md, "Spot
+// cones"), with a warning naming the field and both values: outer to [0.001, pi/2] (not finite:
+// pi/4, glTF's default), then inner to [0, 0.999 outer] (not finite: 0). The renderer's
+// cos_outer < cos_inner stays true.
+void spot_cone(const context &c, const std::string &name, double inner, double outer, tl_light *l)
+{
+    char msg[160];
+    if (!(outer > 0.0 && outer <= pi / 2)) {
+        double to = std::isfinite(outer) ? std::fmin(std::fmax(outer, 1e-3), pi / 2) : pi / 4;
+        std::snprintf(msg, sizeof msg, ".spot.outerConeAngle = %g: outside (0, pi/2]; clamped to %g", outer, to);
+        warn(c, name + msg);
+        outer = to;
+    }
+    if (!(inner >= 0.0 && inner < outer)) {
+        double to = std::isfinite(inner) ? std::fmin(std::fmax(inner, 0.0), outer * 0.999) : 0.0;
+        std::snprintf(msg, sizeof msg, ".spot.innerConeAngle = %g: outside [0, outerConeAngle = %g); clamped to %g",
+                      inner, outer, to);
+        warn(c, name + msg);
+        inner = to;
+    }
+    l->cos_inner = (float)std::cos(inner);
+    l->cos_outer = (float)std::cos(outer);
+    if (!(l->cos_outer < l->cos_inner)) l->cos_outer = std::nextafter(l->cos_inner, -1.0f);
 }
 
 } // namespace
@@ -103,18 +129,7 @@ void convert_lights(const context &c, const tinygltf::Model &m, const scene_grap
                 l.radius = auto_radius(l.color);
             }
         }
-        if (l.type == TL_LIGHT_SPOT) {
-            // glTF: 0 <= inner < outer <= pi/2; keep the renderer's cos_outer < cos_inner true.
-            double outer = L.spot.outerConeAngle, inner = L.spot.innerConeAngle;
-            if (!(outer > 0.0 && outer <= pi / 2 && inner >= 0.0 && inner < outer)) {
-                warn(c, name + ": cone angles outside 0 <= inner < outer <= pi/2; clamped");
-                outer = std::isfinite(outer) ? std::fmin(std::fmax(outer, 1e-3), pi / 2) : pi / 4;
-                inner = std::isfinite(inner) ? std::fmin(std::fmax(inner, 0.0), outer * 0.999) : 0.0;
-            }
-            l.cos_inner = (float)std::cos(inner);
-            l.cos_outer = (float)std::cos(outer);
-            if (!(l.cos_outer < l.cos_inner)) l.cos_outer = std::nextafter(l.cos_inner, -1.0f);
-        }
+        if (l.type == TL_LIGHT_SPOT) spot_cone(c, name, L.spot.innerConeAngle, L.spot.outerConeAngle, &l);
         if (renderable(c, name, l)) out->push_back(l);
     }
 }

@@ -227,9 +227,29 @@ tl_result tl_context_swap(tl_context *ctx)
     return ctx->ops->swap ? ctx->ops->swap(ctx) : TL_OK;
 }
 
+void tl__context_link_add(tl_context *ctx, tl__context_link *link)
+{
+    link->context = ctx;
+    link->prev = NULL;
+    link->next = ctx->dependants;
+    if (ctx->dependants) ctx->dependants->prev = link;
+    ctx->dependants = link;
+}
+
+void tl__context_link_remove(tl__context_link *link)
+{
+    if (!link->context) return;
+    if (link->prev) link->prev->next = link->next;
+    else link->context->dependants = link->next;
+    if (link->next) link->next->prev = link->prev;
+    link->context = NULL;
+    link->prev = link->next = NULL;
+}
+
 void tl_context_destroy(tl_context *ctx)
 {
     if (!ctx) return;
+    while (ctx->dependants) tl__context_link_remove(ctx->dependants); /* each learns it is gone */
     ctx->ops->destroy(ctx);
     tl_allocator allocator = ctx->allocator;
     tl__free(&allocator, ctx);

@@ -10,6 +10,7 @@
 
 #include "core/alloc.h"
 #include "core/log.h"
+#include "platform/context_link.h"
 #include "thinlight/context.h"
 
 typedef struct tl__context_ops tl__context_ops;
@@ -27,6 +28,7 @@ struct tl_context {
     /* tl_context_last_error and the desc's logger. Silent while tl_context_create runs the back
      * ends (AUTO tries several; the create sends one line for all of them when it fails). */
     tl__log log;
+    tl__context_link *dependants; /* cleared by tl_context_destroy (context_link.h) */
 };
 
 /* Descriptor with defaults resolved (tl__context_desc_defaults). */

@@ -4,16 +4,21 @@
 
 #include "device.h"
 
-static int tl__own_context_current(void *user) { return tl_context_is_current((const tl_context *)user); }
-
 void tl__context_check_init(tl__device *r, tl_is_current_fn is_current)
 {
     r->is_current = is_current;
-    /* thinlight's own contexts can always tell */
-    if (!r->is_current && r->get_proc_address == tl_context_proc_loader) r->is_current = tl__own_context_current;
+    /* thinlight's own contexts can always tell, and say when they are destroyed */
+    if (!r->is_current && r->get_proc_address == tl_context_proc_loader && r->get_proc_address_user) {
+        r->own_context = 1;
+        tl__context_link_add((tl_context *)r->get_proc_address_user, &r->context_link);
+    }
     r->thread = thrd_current();
     r->thread_known = 1;
 }
+
+void tl__context_check_release(tl__device *r) { tl__context_link_remove(&r->context_link); }
+
+int tl__context_gone(const tl__device *r) { return r->own_context && !r->context_link.context; }
 
 /* Without a callback: the thread that last had the context may use it. On any other thread one GL
  * query (a vertex array of the renderer's exists only in its context; with no context current it
@@ -30,6 +35,7 @@ static int tl__thread_has_context(tl__device *r)
 
 int tl__context_current(tl__device *r)
 {
+    if (r->own_context) return r->context_link.context && tl_context_is_current(r->context_link.context);
     if (r->is_current) return r->is_current(r->get_proc_address_user) != 0;
     return tl__thread_has_context(r);
 }
@@ -37,6 +43,11 @@ int tl__context_current(tl__device *r)
 tl_result tl__need_context(tl__device *r, const char *call)
 {
     if (tl__context_current(r)) return TL_OK;
+    if (tl__context_gone(r))
+        return tl__fail(r, TL_ERROR_GL,
+                        "renderer: %s: the renderer's context was destroyed (tl_context_destroy) before the renderer; "
+                        "only tl_renderer_destroy is left to call",
+                        call);
     return tl__fail(r, TL_ERROR_GL,
                     "renderer: %s: the renderer's GL context is not current on this thread (make it current first, "
                     "e.g. tl_context_make_current); nothing was changed",

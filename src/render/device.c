@@ -24,6 +24,34 @@ static void tl__storage_limits(tl__device *dev, size_t desc_max)
     dev->lim.max_lights = lights < TL_RENDERER_MAX_LIGHTS ? lights : TL_RENDERER_MAX_LIGHTS;
 }
 
+/* The sample counts every format a target may be multisampled in has (HDR, depth, the G-buffer
+ * and light targets of per-sample lighting, the coat's gloss): a bit per count. */
+static void tl__sample_counts(tl__device *dev)
+{
+    static const GLenum formats[] = {GL_RGBA16F, GL_RGBA32F, GL_RGBA8, GL_RGB10_A2, GL_R11F_G11F_B10F, GL_R8,
+                                     GL_DEPTH24_STENCIL8, GL_DEPTH_COMPONENT32F};
+    const GladGLContext *gl = &dev->gl;
+    uint32_t all = ~0u;
+    for (size_t f = 0; f < sizeof formats / sizeof formats[0]; f++) {
+        GLint n = 0, counts[16] = {0};
+        gl->GetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, formats[f], GL_NUM_SAMPLE_COUNTS, 1, &n);
+        gl->GetInternalformativ(GL_TEXTURE_2D_MULTISAMPLE, formats[f], GL_SAMPLES, 16, counts);
+        uint32_t bits = 0;
+        for (GLint i = 0; i < n && i < 16; i++)
+            if (counts[i] > 1 && counts[i] < 32) bits |= 1u << counts[i];
+        all &= bits;
+    }
+    dev->lim.sample_counts = all;
+}
+
+uint32_t tl__device_samples(const tl__device *dev, uint32_t asked)
+{
+    if (asked <= 1u) return 1u;
+    for (uint32_t n = asked; n < 32u; n++)
+        if (dev->lim.sample_counts & (1u << n)) return n;
+    return 0u;
+}
+
 tl_result tl__device_load(tl__device *dev)
 {
     char msg[512];
@@ -46,6 +74,7 @@ tl_result tl__device_init(tl__device *dev, const tl_renderer_desc *desc)
     dev->lim.ubo_align = ubo_align > 16 ? (size_t)ubo_align : 16;
     dev->lim.ssbo_align = ssbo_align > 16 ? (size_t)ssbo_align : 16;
     tl__storage_limits(dev, desc->max_storage_block_bytes);
+    tl__sample_counts(dev);
     gl->CreateVertexArrays(1, &dev->vao_empty);
     tl__gl_label(gl, GL_VERTEX_ARRAY, dev->vao_empty, "vao.fullscreen");
     gl->CreateSamplers(1, &dev->sampler_linear);

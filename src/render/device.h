@@ -14,6 +14,7 @@
 #include "gl/gl.h"
 #include "gl/state.h"
 #include "gl/stream.h"
+#include "platform/context_link.h"
 #include "thinlight/renderer.h"
 
 #define TL__OUTPUTS_KNOWN 4 /* framebuffers render_to checked and does not ask about again */
@@ -25,6 +26,10 @@ typedef struct tl__limits {
     size_t storage_max;     /* bytes one storage block binding may hold (GL's, or the descriptor's lower one) */
     size_t max_lights;      /* TL_RENDERER_MAX_LIGHTS, or fewer when storage_max holds fewer */
     GLint max_texture_size; /* GL_MAX_TEXTURE_SIZE */
+    /* the sample counts a multisampled target of every format the renderer multisamples can have
+     * (bit n: n samples; GL_SAMPLES of glGetInternalformativ): a target asked for n samples gets
+     * the smallest of these >= n, so the renderer asks for exactly that (tl__device_samples) */
+    uint32_t sample_counts;
 } tl__limits;
 
 typedef struct tl__program_entry {
@@ -48,7 +53,11 @@ typedef struct tl__device {
     /* the context check (context_check.c) */
     tl_get_proc_address_fn get_proc_address;
     void *get_proc_address_user;
-    int (*is_current)(void *user); /* the descriptor's, thinlight's own, or NULL: the thread check */
+    int (*is_current)(void *user); /* the descriptor's, or NULL: thinlight's own context, or the thread check */
+    /* thinlight's own context (tl_context_proc_loader without is_current): linked to it, so that
+     * its destruction before the renderer's is seen without reading the freed context */
+    int own_context;
+    tl__context_link context_link;
     thrd_t thread;                 /* the thread that last had the context (without is_current) */
     int thread_known;
     GLuint outputs_known[TL__OUTPUTS_KNOWN]; /* framebuffers render_to found complete */
@@ -63,6 +72,9 @@ typedef struct tl__device {
  * the shared objects; the device's GL objects freed. */
 tl_result tl__device_load(tl__device *dev);
 tl_result tl__device_init(tl__device *dev, const tl_renderer_desc *desc);
+/* The samples a multisampled target asked for `asked` gets in this context (the smallest count of
+ * lim.sample_counts >= asked), 1 for asked <= 1, 0 when the context has none that many. */
+uint32_t tl__device_samples(const tl__device *dev, uint32_t asked);
 void tl__device_release(tl__device *dev);
 
 /* programs.c: permutations built on demand, cached by (vertex, fragment, compute, defines). */
@@ -78,6 +90,13 @@ void tl__program_cache_destroy(tl__device *dev);
 /* context_check.c: the device's context is current (the descriptor's is_current, thinlight's own
  * contexts, or one GL query when the calling thread changes); render_to's framebuffer. */
 void tl__context_check_init(tl__device *dev, tl_is_current_fn is_current);
+/* Takes the device off its own context's dependants (destroy); nothing for other contexts. */
+void tl__context_check_release(tl__device *dev);
+/* 1 when the device's own tl_context was destroyed before it: its GL objects are gone with it. */
+int tl__context_gone(const tl__device *dev);
+/* context_lost.c: the device's GL table made one whose deletions do nothing (the context is gone),
+ * for the release steps of tl_renderer_destroy. */
+void tl__device_lose(tl__device *dev);
 int tl__context_current(tl__device *dev);
 /* TL_ERROR_GL naming `call` when the context is not current. */
 tl_result tl__need_context(tl__device *dev, const char *call);

@@ -255,11 +255,16 @@ static tl_result tl__graph_sample_positions(tl__device *dev, tl__graph *r)
     gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
     GLint samples = 0;
     gl->GetIntegerv(GL_SAMPLES, &samples);
-    if (samples > (GLint)r->samples) r->samples = samples > 8 ? 8u : (uint32_t)samples;
-    for (uint32_t s = 0; s < r->samples; s++)
+    for (uint32_t s = 0; s < r->samples && s < 8u; s++)
         gl->GetMultisamplefv(GL_SAMPLE_POSITION, s, &r->sample_positions[2 * s]);
     gl->BindFramebuffer(GL_DRAW_FRAMEBUFFER, (GLuint)bound);
     tl__framebuffer_destroy(gl, &fbo);
+    /* the plan asked for a count the context has (tl__device_samples): every shader loops over
+     * exactly that many, so targets with another count would leave samples out */
+    if ((uint32_t)samples != r->samples)
+        return tl__fail(dev, TL_ERROR_UNSUPPORTED,
+                        "renderer: the multisampled targets have %d samples where the plan asked for %u (the context "
+                        "listed %u as a sample count of its formats)", (int)samples, r->samples, r->samples);
     return TL_OK;
 }
 

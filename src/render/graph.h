@@ -57,9 +57,9 @@ typedef struct tl__graph {
     tl_plan_pass luma_plan;
     tl__app_pass apps[TL_MAX_APP_PASSES];
     size_t app_count;
-    /* MSAA: the samples HDR has (the context may give more than asked: llvmpipe makes 4 of 2) and
-     * their positions in the pixel (x, y pairs, GL window space, the first 8), read once at compile
-     * for the compute tiled pass (which has no gl_SamplePosition) */
+    /* MSAA: the samples HDR has (the plan's count, which the renderer made one the context has:
+     * compile checks GL_SAMPLES against it) and their positions in the pixel (x, y pairs, GL window
+     * space, the first 8), read once at compile for the compute tiled pass (no gl_SamplePosition) */
     uint32_t samples;
     float sample_positions[16];
 } tl__graph;

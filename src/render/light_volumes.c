@@ -132,9 +132,12 @@ static int tl__light_side(const tl__lights *r, const tl__view *v, const tl_light
 {
     if (type == TL_LIGHT_DIRECTIONAL) return 0;
     if (l->radius <= 0.0f || !tl__sphere_visible((float(*)[4])v->planes, l->position, l->radius * 1.2f)) return -1;
-    /* bounding sphere of the volume mesh (sphere: < 1.2 r; cone: apex to base rim) */
-    float co = l->cos_outer > 0.05f ? l->cos_outer : 0.05f;
-    float bound = type == TL_LIGHT_SPOT ? l->radius * 1.2f / co : l->radius * 1.2f;
+    /* bounding sphere of the volume mesh around the light (sphere: < 1.2 r; cone: apex to base rim,
+     * < 1.2 r / cos_outer; past 60 degrees the cone of light.vert.glsl whose apex lies 1.1 r behind
+     * the light: its base rim, sqrt(1.002^2 + 2.176^2) r < 2.5 r) */
+    float bound = type != TL_LIGHT_SPOT ? l->radius * 1.2f
+                  : l->cos_outer >= 0.5f ? l->radius * 1.2f / l->cos_outer
+                                         : l->radius * 2.5f;
     float d2 = 0.0f;
     for (int a = 0; a < 3; a++) d2 += (l->position[a] - v->eye[a]) * (l->position[a] - v->eye[a]);
     float margin = bound + 4.0f * v->near_z;

@@ -11,6 +11,7 @@
 #include <stddef.h>
 
 #include "device.h"
+#include "option_check.h"
 #include "targets.h"
 
 #define TL__PASS_MAX_PROGRAMS 6 /* programs of one pass (lights: one per light type; material: one per model) */
@@ -151,11 +152,12 @@ typedef struct tl__pass_def {
     tl__program_src programs[TL__PASS_MAX_PROGRAMS + 1];
     const tl__target_def *targets[TL__PASS_MAX_TARGETS]; /* the targets it owns (declares) */
     /* its options (TL__OPTIONS): resolve gives zeroed fields their defaults and returns 0 for a
-     * value out of range (an effect that is off is zeroed whole, so its other fields cannot change
-     * a plan) */
+     * value out of range, naming the field (under `prefix`, "options.ssr"), its value and range in
+     * `why` (option_check.h; an effect that is off is zeroed whole, so its other fields cannot
+     * change a plan) */
     const char *options_name;
     size_t options_offset, options_size;
-    int (*resolve)(void *options);
+    int (*resolve)(void *options, const char *prefix, tl__why *why);
     /* its std140 parameter block, bound at TL_UBO_PASS while it runs (frame.glsl has the frame's):
      * params writes it from the resolved options and the view (NULL outside a frame) */
     uint32_t params_size;

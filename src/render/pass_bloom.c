@@ -23,7 +23,7 @@ static const tl__target_def tl__target_bloom = {TL__TARGET(BLOOM, "bloom"), .for
                                                 .levels_of = tl__bloom_levels, .shift = 1, .linear = 1};
 
 /* tl_bloom_desc's defaults (docs/effects.md); 0 for values out of range. */
-static int tl__bloom_resolve(void *options)
+static int tl__bloom_resolve(void *options, const char *prefix, tl__why *why)
 {
     tl_bloom_desc *b = (tl_bloom_desc *)options;
     if (!b->enabled) {
@@ -38,8 +38,16 @@ static int tl__bloom_resolve(void *options)
     if (!(b->intensity > 0.0f)) b->intensity = 0.5f;
     if (!(b->scatter > 0.0f)) b->scatter = 0.7f;
     if (!b->levels) b->levels = 6;
-    return b->levels <= TL__MAX_LEVELS && b->knee <= 1.0f && b->scatter <= 1.0f && isfinite(b->threshold) &&
-           isfinite(b->knee) && isfinite(b->intensity) && isfinite(b->scatter);
+    char levels[32];
+    snprintf(levels, sizeof levels, "1..%u; 0: 6", TL__MAX_LEVELS);
+    const tl__option_range rows[] = {
+        TL__RANGE_INT(b->levels > TL__MAX_LEVELS, "levels", b->levels, levels),
+        TL__RANGE_FLOAT(!isfinite(b->threshold), "threshold", b->threshold, "finite; 0: 1, < 0: 0"),
+        TL__RANGE_FLOAT(!(b->knee <= 1.0f), "knee", b->knee, "0..1; 0: 0.5, < 0: 0"),
+        TL__RANGE_FLOAT(!isfinite(b->intensity), "intensity", b->intensity, "finite; <= 0: 0.5"),
+        TL__RANGE_FLOAT(!(b->scatter <= 1.0f), "scatter", b->scatter, "(0, 1]; <= 0: 0.7"),
+    };
+    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
 }
 
 /* std140 block tl_bloom_block of shaders/bloom.frag.glsl: threshold, knee (absolute), intensity, scatter. */

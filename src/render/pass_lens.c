@@ -13,10 +13,11 @@
 /* ---- fog: HDR = HDR T + colour (1 - T) ------------------------------------------------------- */
 
 /* tl_fog_desc's defaults (docs/effects.md); 0 for values out of range. */
-static int tl__fog_resolve(void *options)
+static int tl__fog_resolve(void *options, const char *prefix, tl__why *why)
 {
     tl_fog_desc *f = (tl_fog_desc *)options;
-    if ((unsigned)f->mode >= TL_FOG_COUNT_) return 0;
+    const tl__option_range mode = TL__RANGE_ENUM("mode", f->mode, TL_FOG_COUNT_, "tl_fog_mode");
+    if (!tl__option_ranges(&mode, 1, prefix, why)) return 0;
     if (f->mode == TL_FOG_OFF) {
         memset(f, 0, sizeof *f);
         return 1;
@@ -26,10 +27,18 @@ static int tl__fog_resolve(void *options)
     if (!(f->noise > 0.0f)) f->noise = 0.0f;
     if (!(f->noise_scale > 0.0f)) f->noise_scale = 0.5f;
     if (f->noise_speed == 0.0f) f->noise_speed = 0.3f;
-    for (int k = 0; k < 3; k++)
-        if (!(f->color[k] >= 0.0f) || !isfinite(f->color[k])) return 0;
-    return f->noise <= 1.0f && isfinite(f->density) && isfinite(f->height) && isfinite(f->height_falloff) &&
-           isfinite(f->noise_scale) && isfinite(f->noise_speed);
+    const tl__option_range rows[] = {
+        TL__RANGE_FLOAT(!(f->color[0] >= 0.0f && isfinite(f->color[0])), "color[0]", f->color[0], "finite, >= 0"),
+        TL__RANGE_FLOAT(!(f->color[1] >= 0.0f && isfinite(f->color[1])), "color[1]", f->color[1], "finite, >= 0"),
+        TL__RANGE_FLOAT(!(f->color[2] >= 0.0f && isfinite(f->color[2])), "color[2]", f->color[2], "finite, >= 0"),
+        TL__RANGE_FLOAT(!isfinite(f->density), "density", f->density, "finite; <= 0: 0.05"),
+        TL__RANGE_FLOAT(!isfinite(f->height), "height", f->height, "finite"),
+        TL__RANGE_FLOAT(!isfinite(f->height_falloff), "height_falloff", f->height_falloff, "finite; <= 0: 0.5"),
+        TL__RANGE_FLOAT(!(f->noise <= 1.0f), "noise", f->noise, "0..1"),
+        TL__RANGE_FLOAT(!isfinite(f->noise_scale), "noise_scale", f->noise_scale, "finite; <= 0: 0.5"),
+        TL__RANGE_FLOAT(!isfinite(f->noise_speed), "noise_speed", f->noise_speed, "finite; 0: 0.3"),
+    };
+    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
 }
 
 /* std140 block tl_fog_block of shaders/fog.frag.glsl. */
@@ -90,7 +99,7 @@ const tl__pass_def tl__pass_fog = {
 static const tl__target_def tl__target_dof = {TL__TARGET(DOF, "dof"), .format = GL_RGBA16F};
 
 /* tl_dof_desc's defaults (docs/effects.md); 0 for values out of range. */
-static int tl__dof_resolve(void *options)
+static int tl__dof_resolve(void *options, const char *prefix, tl__why *why)
 {
     tl_dof_desc *f = (tl_dof_desc *)options;
     if (!f->enabled) {
@@ -102,8 +111,13 @@ static int tl__dof_resolve(void *options)
     if (!(f->aperture > 0.0f)) f->aperture = 0.01f;
     if (!(f->max_radius > 0.0f)) f->max_radius = 2.0f * f->aperture;
     if (!f->samples) f->samples = 48;
-    return f->samples >= 8 && f->samples <= 128 && isfinite(f->focus_distance) && f->aperture <= 1.0f &&
-           f->max_radius <= 1.0f;
+    const tl__option_range rows[] = {
+        TL__RANGE_INT(f->samples < 8 || f->samples > 128, "samples", f->samples, "8..128; 0: 48"),
+        TL__RANGE_FLOAT(!isfinite(f->focus_distance), "focus_distance", f->focus_distance, "finite; <= 0: the target's"),
+        TL__RANGE_FLOAT(!(f->aperture <= 1.0f), "aperture", f->aperture, "(0, 1]; <= 0: 0.01"),
+        TL__RANGE_FLOAT(!(f->max_radius <= 1.0f), "max_radius", f->max_radius, "(0, 1]; <= 0: 2 aperture"),
+    };
+    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
 }
 
 /* std140 block tl_dof_block of shaders/dof.frag.glsl: focus distance, aperture, largest CoC, 0. */

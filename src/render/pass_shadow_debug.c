@@ -13,10 +13,11 @@
 
 static const tl__target_def tl__target_shadow_debug = {TL__TARGET(SHADOW_DEBUG, "shadow.debug"), .format = GL_RGBA16F};
 
-static int tl__shadow_debug_resolve(void *options)
+static int tl__shadow_debug_resolve(void *options, const char *prefix, tl__why *why)
 {
     int *on = (int *)options;
-    return *on == 0 || *on == 1;
+    const tl__option_range row = TL__RANGE_INT(*on != 0 && *on != 1, NULL, *on, "0 or 1");
+    return tl__option_ranges(&row, 1, prefix, why);
 }
 
 int tl__shadow_debug_planned(const tl__plan_input *in)

@@ -12,13 +12,19 @@
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
 /* tl_environment_options's defaults; 0 for values out of range. */
-static int tl__sky_resolve(void *options)
+static int tl__sky_resolve(void *options, const char *prefix, tl__why *why)
 {
     tl_environment_options *e = (tl_environment_options *)options;
     if (e->intensity == 0.0f) e->intensity = 1.0f;
-    for (int k = 0; k < 3; k++)
-        if (!(e->background[k] >= 0.0f && e->background[k] <= 65504.0f)) return 0;
-    return e->intensity > 0.0f && e->intensity <= 65504.0f;
+    const float *bg = e->background;
+    const tl__option_range rows[] = {
+        TL__RANGE_FLOAT(!(bg[0] >= 0.0f && bg[0] <= 65504.0f), "background[0]", bg[0], "0..65504"),
+        TL__RANGE_FLOAT(!(bg[1] >= 0.0f && bg[1] <= 65504.0f), "background[1]", bg[1], "0..65504"),
+        TL__RANGE_FLOAT(!(bg[2] >= 0.0f && bg[2] <= 65504.0f), "background[2]", bg[2], "0..65504"),
+        TL__RANGE_FLOAT(!(e->intensity > 0.0f && e->intensity <= 65504.0f), "intensity", e->intensity,
+                        "(0, 65504]; 0: 1"),
+    };
+    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
 }
 
 /* std140 block tl_sky_block of shaders/sky.frag.glsl: the background, the intensity. */

@@ -17,10 +17,11 @@ static const tl__target_def tl__target_ao_raw = {TL__TARGET(AO_RAW, "ao.raw"), .
 static const tl__target_def tl__target_ao = {TL__TARGET(AO, "ao"), .format = GL_R16F};
 
 /* tl_ssao_desc's defaults (docs/effects.md); 0 for values out of range. */
-static int tl__ssao_resolve(void *options)
+static int tl__ssao_resolve(void *options, const char *prefix, tl__why *why)
 {
     tl_ssao_desc *s = (tl_ssao_desc *)options;
-    if ((unsigned)s->method >= TL_SSAO_COUNT_) return 0;
+    const tl__option_range method = TL__RANGE_ENUM("method", s->method, TL_SSAO_COUNT_, "tl_ssao_method");
+    if (!tl__option_ranges(&method, 1, prefix, why)) return 0;
     if (s->method == TL_SSAO_OFF) {
         memset(s, 0, sizeof *s);
         return 1;
@@ -32,8 +33,15 @@ static int tl__ssao_resolve(void *options)
     if (!(s->bias > 0.0f)) s->bias = 0.0f;
     if (!s->blur_radius) s->blur_radius = 2;
     s->diffuse = s->diffuse != 0;
-    return s->samples <= 64 && s->blur_radius <= 8 && isfinite(s->radius) && isfinite(s->falloff) &&
-           isfinite(s->exponent) && isfinite(s->bias);
+    const tl__option_range rows[] = {
+        TL__RANGE_INT(s->samples > 64, "samples", s->samples, "1..64; 0: 16"),
+        TL__RANGE_INT(s->blur_radius > 8, "blur_radius", s->blur_radius, "1..8; 0: 2"),
+        TL__RANGE_FLOAT(!isfinite(s->radius), "radius", s->radius, "finite; <= 0: 1"),
+        TL__RANGE_FLOAT(!isfinite(s->falloff), "falloff", s->falloff, "finite; <= 0: 2 radius"),
+        TL__RANGE_FLOAT(!isfinite(s->exponent), "exponent", s->exponent, "finite; <= 0: 3"),
+        TL__RANGE_FLOAT(!isfinite(s->bias), "bias", s->bias, "finite; <= 0: 0"),
+    };
+    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
 }
 
 /* std140 block tl_ssao_block of shaders/ssao.frag.glsl: radius, k_b, k_d, exponent. */

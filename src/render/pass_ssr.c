@@ -14,7 +14,7 @@
 static const tl__target_def tl__target_ssr = {TL__TARGET(SSR, "ssr"), .format = GL_RGBA16F};
 
 /* tl_ssr_desc's defaults (docs/effects.md); 0 for values out of range. */
-static int tl__ssr_resolve(void *options)
+static int tl__ssr_resolve(void *options, const char *prefix, tl__why *why)
 {
     tl_ssr_desc *s = (tl_ssr_desc *)options;
     if (!s->enabled) {
@@ -29,8 +29,16 @@ static int tl__ssr_resolve(void *options)
     if (!(s->min_gloss > 0.0f)) s->min_gloss = s->min_gloss == 0.0f ? 0.4f : 0.0f;
     if (!(s->edge_fade > 0.0f)) s->edge_fade = 0.1f;
     if (!(s->intensity > 0.0f)) s->intensity = 1.0f;
-    return s->steps >= 4 && s->steps <= 256 && s->refine <= 8 && s->min_gloss < 1.0f && s->edge_fade <= 0.5f &&
-           isfinite(s->max_distance) && isfinite(s->thickness) && isfinite(s->intensity) && isfinite(s->min_gloss);
+    const tl__option_range rows[] = {
+        TL__RANGE_INT(s->steps < 4 || s->steps > 256, "steps", s->steps, "4..256; 0: 48"),
+        TL__RANGE_INT(s->refine > 8, "refine", s->refine, "1..8; 0: 4"),
+        TL__RANGE_FLOAT(!isfinite(s->max_distance), "max_distance", s->max_distance, "finite; <= 0: 16"),
+        TL__RANGE_FLOAT(!isfinite(s->thickness), "thickness", s->thickness, "finite; <= 0: 0.4"),
+        TL__RANGE_FLOAT(!(s->min_gloss < 1.0f), "min_gloss", s->min_gloss, "[0, 1); 0: 0.4, < 0: 0"),
+        TL__RANGE_FLOAT(!(s->edge_fade <= 0.5f), "edge_fade", s->edge_fade, "(0, 0.5]; <= 0: 0.1"),
+        TL__RANGE_FLOAT(!isfinite(s->intensity), "intensity", s->intensity, "finite; <= 0: 1"),
+    };
+    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
 }
 
 /* std140 block tl_ssr_block of shaders/ssr.frag.glsl. */

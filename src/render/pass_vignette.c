@@ -14,7 +14,7 @@
 static const tl__target_def tl__target_vignette = {TL__TARGET(VIGNETTE, "vignette"), .format = GL_R16F};
 
 /* tl_vignette_desc's defaults; 0 for values out of range. */
-static int tl__vignette_resolve(void *options)
+static int tl__vignette_resolve(void *options, const char *prefix, tl__why *why)
 {
     tl_vignette_desc *v = (tl_vignette_desc *)options;
     if (!v->enabled) {
@@ -25,7 +25,12 @@ static int tl__vignette_resolve(void *options)
     if (!(v->strength > 0.0f)) v->strength = 0.5f;
     if (!(v->radius > 0.0f)) v->radius = 0.5f;
     if (!(v->softness > 0.0f)) v->softness = 0.5f;
-    return v->strength <= 1.0f && isfinite(v->radius) && isfinite(v->softness);
+    const tl__option_range rows[] = {
+        TL__RANGE_FLOAT(!(v->strength <= 1.0f), "strength", v->strength, "(0, 1]; <= 0: 0.5"),
+        TL__RANGE_FLOAT(!isfinite(v->radius), "radius", v->radius, "finite; <= 0: 0.5"),
+        TL__RANGE_FLOAT(!isfinite(v->softness), "softness", v->softness, "finite; <= 0: 0.5"),
+    };
+    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
 }
 
 /* std140 block tl_vignette_block of shaders/vignette.frag.glsl: strength, radius, softness, 0. */

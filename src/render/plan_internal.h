@@ -11,10 +11,11 @@
 #define TL__TILED_CROSSOVER 32u
 
 /* Resolves zeroed options to their defaults (desc.c; each pass resolves its own slice):
- * TL_ERROR_INVALID_ARGUMENT for a value out of range, naming the option (or group) in *bad. */
-tl_result tl__options_resolve(const tl_renderer_options *in, tl_renderer_options *out, const char **bad);
-/* The same for a descriptor, with its size: TL_ERROR_LIMIT over TL__MAX_SIZE (*bad "size"). */
-tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc *out, const char **bad);
+ * TL_ERROR_INVALID_ARGUMENT for a value out of range, naming the field, its value and its range in
+ * `why` (may be NULL). */
+tl_result tl__options_resolve(const tl_renderer_options *in, tl_renderer_options *out, tl__why *why);
+/* The same for a descriptor, with its size: TL_ERROR_LIMIT over TL__MAX_SIZE. */
+tl_result tl__renderer_desc_resolve(const tl_renderer_desc *in, tl_renderer_desc *out, tl__why *why);
 
 /* The whole plan, with the application passes (plan.c). Pure: no GL, no allocation. */
 tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_set *features,

@@ -40,17 +40,29 @@ static tl_result tl__readable(tl_renderer *r, tl_target_id id)
     return TL_OK;
 }
 
+/* The output target as it is (apply_fxaa has just written it outside a frame). */
+static tl_result tl__read_output(tl_renderer *r, uint8_t *rgba, size_t size)
+{
+    char msg[256];
+    tl_result res = tl__target_read(&r->dev.gl, &r->graph.targets[TL_TARGET_OUTPUT], GL_RGBA, GL_UNSIGNED_BYTE, rgba,
+                                    size, msg, sizeof msg);
+    if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: reading the output: %s", msg);
+    return TL_OK;
+}
+
 tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *size)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
     tl_result res;
     if (!tl__size_check(r, rgba, size, (size_t)r->desc.width * r->desc.height * 4, "the output", &res)) return res;
     if ((res = tl__need_context(&r->dev, "tl_renderer_read_output")) != TL_OK) return res;
-    char msg[256];
-    res = tl__target_read(&r->dev.gl, &r->graph.targets[TL_TARGET_OUTPUT], GL_RGBA, GL_UNSIGNED_BYTE, rgba, *size, msg,
-                          sizeof msg);
-    if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: reading the output: %s", msg);
-    return TL_OK;
+    /* the target's memory before a frame is whatever GL gave it: not an image */
+    if (!r->output_drawn)
+        return tl__fail(&r->dev, TL_ERROR_INVALID_ARGUMENT,
+                        "renderer: tl_renderer_read_output: no frame was rendered into the output at %ux%u (call "
+                        "tl_renderer_render first; render_to draws into the caller's framebuffer instead)",
+                        r->desc.width, r->desc.height);
+    return tl__read_output(r, rgba, *size);
 }
 
 /* Depth into the upper quarter of the buffer, then spread out as (window depth, distance, 0, 1). */
@@ -176,7 +188,7 @@ tl_result tl_renderer_apply_fxaa(tl_renderer *r, const uint8_t *rgba, uint8_t *o
     tl__run_pass(r, fxaa, &rec, fxaa_index);
     tl__state_reset(gl, &dev->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED, TL__IMAGE_UNITS_USED);
     tl__stream_end(gl, &dev->stream);
-    res = tl_renderer_read_output(r, out, size);
+    res = tl__read_output(r, out, *size);
     GLenum e = gl->GetError();
     if (res == TL_OK && e != GL_NO_ERROR)
         return tl__fail(dev, TL_ERROR_GL, "renderer: %s in FXAA", tl__gl_error_string(e));

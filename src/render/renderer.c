@@ -88,9 +88,38 @@ static tl_result tl__replan(tl_renderer *r)
 
 /* ---- create / destroy ----------------------------------------------------------------------- */
 
+/* options.msaa against the context: refused past its sample counts, and a count its targets cannot
+ * have exactly made the one they get (llvmpipe has only 4: 2 gives 4), said once (`say`), so that
+ * the plan, every shader's sample loop and every target count the samples the targets have. */
+static tl_result tl__msaa_for_context(tl_renderer *r, tl_renderer_options *o, const char *call, int say)
+{
+    uint32_t asked = o->msaa, real = tl__device_samples(&r->dev, asked);
+    if (real == asked) return TL_OK;
+    if (!real) {
+        char counts[96] = "0", *at = counts + 1;
+        uint32_t last = 1;
+        for (uint32_t n = 2; n < 32u; n++) /* "0, 1, 2 or 4" */
+            if (r->dev.lim.sample_counts & (1u << n)) {
+                at += snprintf(at, (size_t)(counts + sizeof counts - at), ", %u", last);
+                last = n;
+            }
+        snprintf(at, (size_t)(counts + sizeof counts - at), " or %u", last);
+        return tl__fail(&r->dev, TL_ERROR_UNSUPPORTED,
+                        "renderer: %soptions.msaa = %u is out of range for this context (%s: the sample counts its "
+                        "multisampled target formats have)", call, asked, counts);
+    }
+    if (say)
+        tl__log_message(&r->dev.log, TL_LOG_WARNING,
+                        "renderer: %soptions.msaa = %u: this context's multisampled targets have no %u-sample form; "
+                        "the frame uses %u samples, the next count it has (tl_frame_plan.msaa)", call, asked, asked, real);
+    o->msaa = real;
+    return TL_OK;
+}
+
 static tl_result tl__create_objects(tl_renderer *r, const tl_renderer_desc *desc)
 {
     tl_result res = tl__device_init(&r->dev, desc);
+    if (res == TL_OK) res = tl__msaa_for_context(r, &r->desc.options, "", 1);
     if (res != TL_OK) return res;
     r->dev.state.reversed = r->desc.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
     tl__light_volumes_create(&r->dev, &r->lights);
@@ -115,12 +144,9 @@ tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out)
         return tl__logger_fail(&desc->logger, TL_ERROR_INVALID_ARGUMENT,
                                "renderer: the allocator needs both alloc and free");
     tl_renderer_desc d;
-    const char *bad = "";
-    tl_result res = tl__renderer_desc_resolve(desc, &d, &bad);
-    if (res == TL_ERROR_LIMIT)
-        return tl__logger_fail(&desc->logger, res, "renderer: size %ux%u is over %u per side", d.width, d.height,
-                               TL__MAX_SIZE);
-    if (res != TL_OK) return tl__logger_fail(&desc->logger, res, "renderer: options.%s is out of range", bad);
+    tl__why why = {""};
+    tl_result res = tl__renderer_desc_resolve(desc, &d, &why);
+    if (res != TL_OK) return tl__logger_fail(&desc->logger, res, "renderer: %s", why.text);
     tl_renderer *r = (tl_renderer *)tl__calloc(&a, 1, sizeof *r);
     if (!r) return tl__logger_fail(&desc->logger, TL_ERROR_OUT_OF_MEMORY, "renderer: out of memory");
     r->desc = d;
@@ -131,13 +157,15 @@ tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out)
     r->dev.get_proc_address = d.get_proc_address;
     r->dev.get_proc_address_user = d.get_proc_address_user;
     tl__context_check_init(&r->dev, d.is_current);
-    if (r->dev.is_current && !tl__context_current(&r->dev)) { /* without a callback GL loading tells */
+    if ((r->dev.is_current || r->dev.own_context) && !tl__context_current(&r->dev)) { /* else GL loading tells */
         tl__logger_fail(&d.logger, TL_ERROR_GL, "renderer: tl_renderer_create: no GL context is current on this thread "
                                                 "(the renderer is created in the current context)");
+        tl__context_check_release(&r->dev);
         tl__free(&a, r);
         return TL_ERROR_GL;
     }
     if ((res = tl__device_load(&r->dev)) != TL_OK) {
+        tl__context_check_release(&r->dev);
         tl__free(&a, r); /* no GL: nothing to free in it (the message went to the logger) */
         return res;
     }
@@ -152,8 +180,9 @@ tl_result tl_renderer_create(const tl_renderer_desc *desc, tl_renderer **out)
 void tl_renderer_destroy(tl_renderer *r)
 {
     if (!r) return;
+    if (tl__context_gone(&r->dev)) tl__device_lose(&r->dev); /* its GL objects went with it: memory only */
     /* GL names mean other objects in another context: leave everything for a call that can */
-    if (tl__need_context(&r->dev, "tl_renderer_destroy") != TL_OK) return;
+    else if (tl__need_context(&r->dev, "tl_renderer_destroy") != TL_OK) return;
     tl__scene_release(&r->dev, &r->scene);
     tl__lights_release(&r->dev, &r->lights);
     tl__shadows_release(&r->dev, &r->shadows);
@@ -161,6 +190,7 @@ void tl_renderer_destroy(tl_renderer *r)
     tl__graph_release(&r->dev, &r->graph);
     tl__queries_destroy(&r->dev, &r->queries);
     tl__device_release(&r->dev);
+    tl__context_check_release(&r->dev);
     tl_allocator a = r->dev.alloc;
     tl__free(&a, r);
 }
@@ -353,6 +383,8 @@ tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height)
                         max_size < (GLint)TL__MAX_SIZE ? max_size : (int)TL__MAX_SIZE);
     if (width == r->desc.width && height == r->desc.height) return TL_OK;
     uint32_t old_w = r->desc.width, old_h = r->desc.height;
+    int drawn = r->output_drawn;
+    r->output_drawn = 0; /* the output target is re-made at the new size: nothing drawn in it */
     r->desc.width = width;
     r->desc.height = height;
     tl_result res = tl__replan(r);
@@ -361,6 +393,7 @@ tl_result tl_renderer_resize(tl_renderer *r, uint32_t width, uint32_t height)
     if (res != TL_OK && p->width == old_w && p->height == old_h) {
         r->desc.width = old_w;
         r->desc.height = old_h;
+        r->output_drawn = drawn;
     }
     return res;
 }
@@ -382,9 +415,10 @@ tl_result tl_renderer_set_options(tl_renderer *r, const tl_renderer_options *opt
     if (res != TL_OK) return res;
     if (!options) return tl__fail(&r->dev, TL_ERROR_INVALID_ARGUMENT, "renderer: set_options needs options");
     tl_renderer_desc d = r->desc, old = r->desc;
-    const char *bad = "";
-    if ((res = tl__options_resolve(options, &d.options, &bad)) != TL_OK)
-        return tl__fail(&r->dev, res, "renderer: set_options: options.%s is out of range", bad);
+    tl__why why = {""};
+    if ((res = tl__options_resolve(options, &d.options, &why)) != TL_OK)
+        return tl__fail(&r->dev, res, "renderer: set_options: %s", why.text);
+    if ((res = tl__msaa_for_context(r, &d.options, "set_options: ", options->msaa != r->given.msaa)) != TL_OK) return res;
     tl_renderer_options given = r->given;
     tl__options_take(r, &d);
     r->given = *options;
@@ -487,7 +521,9 @@ tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_frame_s
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
     tl_result res = tl__need_context(&r->dev, "tl_renderer_render");
     if (res == TL_OK) res = tl__need_scene(r);
-    return res == TL_OK ? tl__frame(r, camera, NULL, stats) : res;
+    if (res == TL_OK) res = tl__frame(r, camera, NULL, stats);
+    if (res == TL_OK) r->output_drawn = 1;
+    return res;
 }
 
 tl_result tl_renderer_render_to(tl_renderer *r, const tl_camera *camera, const tl_render_output *output,

@@ -25,6 +25,7 @@ struct tl_renderer {
     tl__queries queries;
     float ambient[3];              /* resolved: the options' or the scene's */
     uint64_t frame_index;
+    int output_drawn;              /* a render wrote the output target at this size (read_output reads it) */
     double frame_start_ms;
     tl__frame_record last;         /* the last frame's CPU figures (frames without statistics) */
     int last_measured;             /* the last frame issued queries (into queries.ring[last_slot]) */

@@ -207,11 +207,14 @@ static tl_result tl__object_resolve(tl__device *dev, const tl__scene_gpu *g, con
     char msg[TL__CHECK_MESSAGE_SIZE];
     tl_result res = tl__object_check(in, "object", msg, sizeof msg);
     if (res != TL_OK) return tl__fail(dev, res, "renderer: %s: %s", call, msg);
-    if ((uint64_t)in->first_index + in->index_count > g->index_count || in->index_count % tl__primitive_indices(in->primitive))
+    uint64_t end = (uint64_t)in->first_index + in->index_count;
+    if (end > g->index_count)
         return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT,
-                        "renderer: %s: object.first_index %u + index_count %u: outside the scene's %zu indices or "
-                        "not whole %s", call, in->first_index, in->index_count, g->index_count,
-                        tl__primitive_name(in->primitive));
+                        "renderer: %s: object.first_index + index_count = %u + %u = %llu: past the scene's %zu indices",
+                        call, in->first_index, in->index_count, (unsigned long long)end, g->index_count);
+    if (in->index_count % tl__primitive_indices(in->primitive))
+        return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: object.index_count = %u: not whole %s (a multiple of %u)",
+                        call, in->index_count, tl__primitive_name(in->primitive), tl__primitive_indices(in->primitive));
     if (in->material >= g->material_count && !(g->material_count == 0 && in->material == 0))
         return tl__fail(dev, TL_ERROR_INVALID_ARGUMENT, "renderer: %s: object.material = %u: past the scene's %zu "
                         "materials", call, in->material, g->material_count);

@@ -129,42 +129,55 @@ tl_result tl__scene_camera(tl__device *r, const tl_scene *s, tl_depth_format dep
     return TL_OK;
 }
 
+/* Object i: its index range, its material, its own fields, whole primitives; each refusal names
+ * the one field that fails. */
+static tl_result tl__scene_object_check(tl__device *r, const tl_scene *s, size_t i)
+{
+    const tl_object *o = &s->objects[i];
+    uint64_t end = (uint64_t)o->first_index + o->index_count;
+    if (end > s->index_count)
+        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
+                        "renderer: objects[%zu].first_index + index_count = %u + %u = %llu: past the scene's %zu indices",
+                        i, o->first_index, o->index_count, (unsigned long long)end, s->index_count);
+    if (o->material >= s->material_count && !(s->material_count == 0 && o->material == 0))
+        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: objects[%zu].material = %u: past the scene's %zu materials",
+                        i, o->material, s->material_count);
+    char what[32], msg[TL__CHECK_MESSAGE_SIZE];
+    snprintf(what, sizeof what, "objects[%zu]", i);
+    tl_result res = tl__object_check(o, what, msg, sizeof msg);
+    if (res != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
+    uint32_t per = tl__primitive_indices(o->primitive);
+    if (o->index_count % per)
+        return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: objects[%zu].index_count = %u: not whole %s (a multiple of %u)",
+                        i, o->index_count, tl__primitive_name(o->primitive), per);
+    return TL_OK;
+}
+
 tl_result tl__scene_validate(tl__device *r, const tl_scene *s)
 {
     tl_result res = tl__scene_counts(r, s);
     if (res != TL_OK) return res;
     if ((res = tl__lights_count_check(r, s->light_count)) != TL_OK) return res;
-    for (size_t i = 0; i < s->object_count; i++) {
-        const tl_object *o = &s->objects[i];
-        int no_material = o->material >= s->material_count && !(s->material_count == 0 && o->material == 0);
-        if ((uint64_t)o->first_index + o->index_count > s->index_count || no_material)
-            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
-                            "renderer: object %zu draws indices %u..%llu or material %u, outside the scene's %zu "
-                            "indices and %zu materials", i, o->first_index,
-                            (unsigned long long)o->first_index + o->index_count, o->material, s->index_count,
-                            s->material_count);
-        char what[32], msg[TL__CHECK_MESSAGE_SIZE];
-        snprintf(what, sizeof what, "objects[%zu]", i);
-        if ((res = tl__object_check(o, what, msg, sizeof msg)) != TL_OK) return tl__fail(r, res, "renderer: %s", msg);
-        if (o->index_count % tl__primitive_indices(o->primitive))
-            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: object %zu draws %u indices, not whole %s", i,
-                            o->index_count, tl__primitive_name(o->primitive));
-    }
+    for (size_t i = 0; i < s->object_count; i++)
+        if ((res = tl__scene_object_check(r, s, i)) != TL_OK) return res;
     for (size_t i = 0; i < s->index_count; i++)
         if (s->indices[i] >= s->vertex_count)
-            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: index %zu (%u) is out of range (%zu vertices)", i,
-                            s->indices[i], s->vertex_count);
-    for (size_t i = 0; i < s->vertex_count; i++)
-        for (int k = 0; k < 3; k++)
-            if (!isfinite(s->vertices[i].position[k]))
-                return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: vertex %zu has a non-finite position", i);
+            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT,
+                            "renderer: indices[%zu] = %u: past the scene's %zu vertices (0..%zu)", i, s->indices[i],
+                            s->vertex_count, s->vertex_count ? s->vertex_count - 1 : 0);
+    for (size_t i = 0; i < s->vertex_count; i++) {
+        const float *p = s->vertices[i].position;
+        if (!isfinite(p[0]) || !isfinite(p[1]) || !isfinite(p[2]))
+            return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: vertices[%zu].position = (%g, %g, %g): not finite",
+                            i, (double)p[0], (double)p[1], (double)p[2]);
+    }
     /* NaN in a vertex colour or the second UV set would reach every target it shades */
     const struct { const float *v; size_t n; const char *what; } extra[2] = {{s->colors, 4, "colors"}, {s->uv1, 2, "uv1"}};
     for (int a = 0; a < 2; a++)
         for (size_t i = 0; extra[a].v && i < s->vertex_count * extra[a].n; i++)
             if (!isfinite(extra[a].v[i]))
-                return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: %s of vertex %zu is not finite", extra[a].what,
-                                i / extra[a].n);
+                return tl__fail(r, TL_ERROR_INVALID_ARGUMENT, "renderer: %s[%zu] = %g: not finite (vertex %zu)",
+                                extra[a].what, i, (double)extra[a].v[i], i / extra[a].n);
     return tl__scene_parts(r, s);
 }
 

@@ -6,6 +6,7 @@
  * lookup derives from the texel size and the depth formats. */
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -21,12 +22,22 @@ void tl__shadow_desc_resolve(tl_shadow_desc *s)
     if (s->directional_angle == 0.0f) s->directional_angle = 0.00465f;
 }
 
-int tl__shadow_desc_valid(const tl_shadow_desc *s)
+int tl__shadow_desc_check(const tl_shadow_desc *s, const char *prefix, tl__why *why)
 {
     uint32_t a = s->atlas_size;
-    return a >= 1024 && a <= 16384 && (a & (a - 1)) == 0 && s->max_lights >= 1 &&
-           s->max_lights <= TL__SHADOW_MAX_LIGHTS && s->pcf_radius <= 3 && s->filter >= TL_SHADOW_FILTER_PCF &&
-           s->filter <= TL_SHADOW_FILTER_PCSS && s->directional_angle > 0.0f && s->directional_angle <= 0.2f;
+    char lights[32];
+    snprintf(lights, sizeof lights, "1..%u; 0: 8", (unsigned)TL__SHADOW_MAX_LIGHTS);
+    const tl__option_range rows[] = {
+        TL__RANGE_INT(a < 1024 || a > 16384 || (a & (a - 1)) != 0, "atlas_size", a,
+                      "a power of two, 1024..16384; 0: 4096"),
+        TL__RANGE_INT(s->max_lights > TL__SHADOW_MAX_LIGHTS, "max_lights", s->max_lights, lights),
+        TL__RANGE_INT(s->pcf_radius > 3, "pcf_radius", s->pcf_radius, "0..3; 0: 1"),
+        TL__RANGE_INT(s->filter < TL_SHADOW_FILTER_PCF || s->filter > TL_SHADOW_FILTER_PCSS, "filter", (int)s->filter,
+                      "1 PCF or 2 PCSS; 0: PCF"),
+        TL__RANGE_FLOAT(!(s->directional_angle > 0.0f && s->directional_angle <= 0.2f), "directional_angle",
+                        s->directional_angle, "(0, 0.2] radians; 0: 0.00465"),
+    };
+    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
 }
 
 /* ---- matrices ----------------------------------------------------------------------------------- */

@@ -6,6 +6,7 @@
 #define TL_RENDER_SHADOWS_H
 
 #include "lights.h"
+#include "option_check.h"
 #include "scene_gpu.h"
 
 enum {
@@ -75,7 +76,8 @@ typedef struct tl__shadows {
 
 /* desc.c: the defaults of tl_shadow_desc, and whether it is in range. */
 void tl__shadow_desc_resolve(tl_shadow_desc *s);
-int tl__shadow_desc_valid(const tl_shadow_desc *s);
+/* 1 when the resolved options are in range, else 0 naming the field in `why` (option_check.h). */
+int tl__shadow_desc_check(const tl_shadow_desc *s, const char *prefix, tl__why *why);
 
 /* shadow_views.c: selects the casting lights (budget, fading), places their views in the atlas and
  * computes every matrix; decides which views must be rendered again (signatures); fills the slots,

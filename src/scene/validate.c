@@ -371,6 +371,26 @@ void tl__material_defaults(const tl_material *in, tl_material *out)
 
 static const char *const tl__light_type_names[TL_LIGHT_TYPE_COUNT_] = {"point", "point", "spot", "directional"};
 
+/* The cone: cosines of half angles up to 90 degrees (glTF's outerConeAngle <= pi/2; a wider cone
+ * has no volume that the light-volume pass could draw alike), the inner cone inside the outer. */
+static tl_result tl__spot_check(const tl_light *l, const char *what, char *message, size_t size)
+{
+    const struct { float v; const char *name; } cosines[2] = {{l->cos_inner, "cos_inner"}, {l->cos_outer, "cos_outer"}};
+    for (int i = 0; i < 2; i++)
+        if (!(cosines[i].v >= -1.0f && cosines[i].v <= 1.0f))
+            return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size,
+                           "%s.%s = %g: not a cosine (-1..1; the cone's half angles enter as their cosines, "
+                           "cos_inner = cos(inner angle))", what, cosines[i].name, (double)cosines[i].v);
+    if (l->cos_outer < -TL__SPOT_COS_SLACK)
+        return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size,
+                       "%s.cos_outer = %g: a cone wider than 90 degrees (cos_outer >= 0, as glTF's outerConeAngle <= "
+                       "pi/2)", what, (double)l->cos_outer);
+    if (!(l->cos_outer < l->cos_inner))
+        return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size, "%s.cos_outer = %g: not below cos_inner = %g", what,
+                       (double)l->cos_outer, (double)l->cos_inner);
+    return TL_OK;
+}
+
 tl_result tl__light_check(const tl_light *l, const char *what, char *message, size_t size)
 {
     if ((unsigned)l->type >= TL_LIGHT_TYPE_COUNT_)
@@ -395,8 +415,6 @@ tl_result tl__light_check(const tl_light *l, const char *what, char *message, si
             return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size, "%s.direction = (0, 0, 0): a %s light needs a direction",
                            what, type);
     }
-    if (l->type == TL_LIGHT_SPOT && !(l->cos_outer < l->cos_inner))
-        return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size, "%s.cos_outer = %g: not below cos_inner = %g", what,
-                       (double)l->cos_outer, (double)l->cos_inner);
+    if (l->type == TL_LIGHT_SPOT) return tl__spot_check(l, what, message, size);
     return TL_OK;
 }

@@ -121,9 +121,14 @@ tl_result tl__material_model_check(const tl_material *m, const char *what, char 
  * for a material some object draws; `texture_count` is the scene's. Counts are left alone. */
 void tl__material_features(const tl_material *material, size_t texture_count, tl_scene_feature_set *out);
 
+/* How far below 0 a spot's cos_outer may lie and still be 90 degrees: cosf of the float nearest
+ * pi/2 is -4.4e-8. */
+#define TL__SPOT_COS_SLACK 1e-6f
+
 /* A light's type and values: finite position, direction and colour (a negative colour is allowed:
  * the renderer takes it as 0); point and spot: a finite radius > 0 and source_radius >= 0; spot and
- * directional: a direction that is not zero; spot: cos_outer < cos_inner. */
+ * directional: a direction that is not zero; spot: cosines in -1..1, cos_outer >= 0 (at most 90
+ * degrees, within TL__SPOT_COS_SLACK) and cos_outer < cos_inner. */
 tl_result tl__light_check(const tl_light *l, const char *what, char *message, size_t size);
 
 #ifdef __cplusplus

@@ -306,6 +306,7 @@ typedef struct frame {
     uint8_t out[W * H * 4];
     float *hdr;
     double relit, edges; /* relit_fraction (material pass), msaa_edge_fraction (per-sample edges) */
+    uint32_t samples;    /* tl_frame_plan.msaa: the samples the targets have (a count the context has) */
 } frame;
 
 /* How the lights are gathered: volumes, or tiles with the fragment or the compute light pass. */
@@ -329,7 +330,9 @@ static int render_frame(const tl_scene *s, tl_render_mode mode, lit_by by, uint3
     d.options.ambient[0] = d.options.ambient[1] = d.options.ambient[2] = -1.0f;
     tl_renderer *r = tl_test_render_once(s, d);
     size_t size = sizeof f->out;
-    int ok = r && tl_renderer_read_output(r, f->out, &size) == TL_OK;
+    tl_frame_plan plan;
+    int ok = r && tl_renderer_read_output(r, f->out, &size) == TL_OK && tl_renderer_get_plan(r, &plan) == TL_OK;
+    f->samples = ok ? plan.msaa : 0;
     f->hdr = ok ? tl_test_read_target(r, TL_TARGET_HDR, (size_t)W * H) : NULL;
     tl_frame_stats st_out; /* the count of a frame waited for */
     int waited = ok && tl_renderer_render(r, NULL, &st_out) == TL_OK && tl_renderer_wait(r, &st_out) == TL_OK;
@@ -367,6 +370,9 @@ static void check_triangle(tl_render_mode mode, lit_by by, uint32_t n, int light
         free(one.hdr), free(ms.hdr), one.hdr = ms.hdr = NULL;
         return;
     }
+    /* the samples the frame has: n, or the next count the context has (llvmpipe: 2 gives 4) */
+    TL_CHECK(ms.samples >= n);
+    n = ms.samples;
     float pos[8][2];
     TL_CHECK(sample_positions(n, pos));
     double lin_in = -1.0, lin_out = -1.0, worst_edge = 0.0, worst_sampled = 0.0, worst_interior = 0.0;
@@ -487,6 +493,138 @@ TL_TEST(msaa_sample_edges_compute_tiled_triangle_coverage_and_per_sample_light)
 {
     if (!ensure_context()) return;
     check_sample_edges(by_tiles_compute);
+}
+
+/* ---- the tile lists' depth bounds ------------------------------------------------------------------ */
+
+/* The samples a target asked for `n` really has in this context (GL_SAMPLES of a framebuffer). */
+static uint32_t context_samples(uint32_t n)
+{
+    GladGLContext gl;
+    char msg[256];
+    if (tl__gl_load(&gl, load_proc, g_ctx, msg, sizeof msg) != TL_OK) return 0;
+    tl__target t;
+    GLuint fbo = 0;
+    if (tl__target_create(&gl, &(tl__target_desc){"test.samples", GL_RGBA16F, 4, 4, n}, &t, msg, sizeof msg) != TL_OK)
+        return 0;
+    const tl__target *c = &t;
+    GLint samples = 0, bound = 0;
+    if (tl__framebuffer_create(&gl, "test.samples", &c, 1, NULL, &fbo, msg, sizeof msg) == TL_OK) {
+        gl.GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &bound);
+        gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, fbo);
+        gl.GetIntegerv(GL_SAMPLES, &samples);
+        gl.BindFramebuffer(GL_DRAW_FRAMEBUFFER, (GLuint)bound);
+    }
+    tl__framebuffer_destroy(&gl, &fbo);
+    tl__target_destroy(&gl, &t);
+    return (uint32_t)samples;
+}
+
+enum { STRIPS = 5 };
+
+typedef struct strip_scene {
+    tl_vertex v[4 + 4 * STRIPS];
+    uint32_t idx[6 + 6 * STRIPS];
+    tl_object obj[2];
+    tl_material mat[1];
+    tl_light light;
+    tl_scene s;
+    int rows[STRIPS]; /* the pixel row each strip crosses */
+} strip_scene;
+
+/* A far wall (z = -30) and, near the camera (z = -2), one thin strip across the width in each tile
+ * row, so thin that of each pixel's samples it covers only sample `s` (a band of rows j + y_s +- d
+ * with no other sample's y inside); a point light in front of the strips reaches them and not the
+ * wall. Where the tile culling's depth bounds leave sample s out, a tile's depth range is the
+ * wall's alone and the light is culled from it: the strips' samples go dark. */
+static int strip_scene_init(strip_scene *t, float pos[8][2], uint32_t n, uint32_t s)
+{
+    memset(t, 0, sizeof *t);
+    double half = 1.0;
+    for (uint32_t k = 0; k < n; k++)
+        if (k != s) half = fmin(half, fabs((double)pos[k][1] - pos[s][1]) / 2.0);
+    if (!(half > 1e-3)) return 0; /* another sample at the same height: not a band of sample s alone */
+    half *= 0.8;
+    static const double bx[4] = {-2, W + 2, W + 2, -2}, by[4] = {-2, -2, H + 2, H + 2};
+    for (int i = 0; i < 4; i++) {
+        unproject(bx[i], by[i], -30.0, t->v[i].position);
+        t->v[i].normal[2] = 1.0f;
+    }
+    static const uint32_t quad[6] = {0, 1, 2, 0, 2, 3};
+    for (int q = 0; q <= STRIPS; q++) {
+        for (int i = 0; i < 6; i++) t->idx[6 * q + i] = (uint32_t)(4 * q) + quad[i];
+        if (q == 0) continue;
+        int row = 8 + 16 * (q - 1);
+        t->rows[q - 1] = row;
+        const double y0 = row + pos[s][1] - half, y1 = row + pos[s][1] + half, sy[4] = {y0, y0, y1, y1};
+        for (int i = 0; i < 4; i++) {
+            unproject(bx[i], sy[i], -2.0, t->v[4 * q + i].position);
+            t->v[4 * q + i].normal[2] = 1.0f;
+        }
+    }
+    t->obj[0] = (tl_object){.first_index = 0, .index_count = 6};
+    t->obj[1] = (tl_object){.first_index = 6, .index_count = 6 * STRIPS};
+    t->mat[0] = (tl_material){.albedo = {0.8f, 0.8f, 0.8f}};
+    t->light = (tl_light){.type = TL_LIGHT_POINT, .position = {0, 0, -1.5f}, .color = {4, 4, 4}, .radius = 3};
+    t->s = (tl_scene){.vertices = t->v, .vertex_count = 4 + 4 * STRIPS, .indices = t->idx, .index_count = 6 + 6 * STRIPS,
+                      .objects = t->obj, .object_count = 2, .materials = t->mat, .material_count = 1,
+                      .lights = &t->light, .light_count = 1};
+    t->s.camera = (tl_camera){.target = {0, 0, -1}, .fov_y = (float)FOV, .near_z = 0.5f, .far_z = 50.0f};
+    return 1;
+}
+
+/* With MSAA the tile lists bound every sample's depth, for every count asked: a count the context
+ * lacks (llvmpipe: 2) plans the count its targets really have (4), so the culling, the resolve and
+ * every sample loop count the same samples. Forward+ and thin-lpp's tiles against the same frame
+ * lit by volumes (forward: per-object lists), HDR resolved over every sample: the strips, seen by
+ * the last sample alone, lit alike. Before: asked 2, the targets had 4 samples and the culling read
+ * 2, so the strips' light was culled (Forward+ darker on every strip row). */
+TL_TEST(msaa_tile_depth_bounds_cover_every_sample)
+{
+    if (!ensure_context()) return;
+    uint32_t top = max_samples();
+    static strip_scene t;
+    const tl_render_mode modes2[2] = {TL_MODE_FORWARD, TL_MODE_THIN_LPP};
+    for (uint32_t asked = 2; asked <= top; asked *= 2) {
+        uint32_t real = context_samples(asked);
+        float pos[8][2];
+        TL_CHECK(real >= asked && real <= 8 && sample_positions(real, pos));
+        if (!(real >= asked && real <= 8) || !strip_scene_init(&t, pos, real, real - 1)) {
+            TL_CHECK(!"a band of the last sample alone");
+            continue;
+        }
+        for (int m = 0; m < 2; m++) {
+            static frame tiled, volumes;
+            int ok = render_frame(&t.s, modes2[m], by_tiles, asked, TL_MSAA_LIGHTING_DEFAULT, &tiled) &&
+                     render_frame(&t.s, modes2[m], by_volumes, asked, TL_MSAA_LIGHTING_DEFAULT, &volumes);
+            TL_CHECK(ok);
+            if (!ok) {
+                free(tiled.hdr), free(volumes.hdr), tiled.hdr = volumes.hdr = NULL;
+                continue;
+            }
+            /* on the strip rows: how much light the volumes give, and how much of it the tiles lose */
+            double lit = 0.0, worst = 0.0;
+            size_t dark = 0, pixels = 0;
+            for (int q = 0; q < STRIPS; q++)
+                for (int i = 0; i < W; i++) {
+                    size_t k = (size_t)t.rows[q] * W + (size_t)i;
+                    double a = tiled.hdr[4 * k + 1], b = volumes.hdr[4 * k + 1];
+                    lit = fmax(lit, b);
+                    worst = fmax(worst, fabs(a - b) / fmax(b, 1e-3));
+                    dark += a < 0.5 * b;
+                    pixels++;
+                }
+            printf("%s msaa %u asked, %u planned (the targets have %u): strip rows lit up to %.3f by volumes; tiles: "
+                   "%zu of %zu pixels below half of it, worst relative difference %.2g\n",
+                   tl_render_mode_name(modes2[m]), asked, tiled.samples, real, lit, dark, pixels, worst);
+            TL_CHECK_EQ_U(tiled.samples, real);
+            TL_CHECK_EQ_U(volumes.samples, real);
+            TL_CHECK(lit > 0.05); /* the strips' sample carries light the culling can lose */
+            TL_CHECK_EQ_U(dark, 0);
+            TL_CHECK_LE(worst, 1.0 / 256.0);
+            free(tiled.hdr), free(volumes.hdr), tiled.hdr = volumes.hdr = NULL;
+        }
+    }
 }
 
 /* ---- run-time switches ------------------------------------------------------------------------------ */

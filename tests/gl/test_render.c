@@ -108,6 +108,30 @@ TL_TEST(light_volume_spot_camera_inside)
     compare_volumes(&t, NULL, TL_DEPTH_FORMAT_D24, "spot, camera inside (D24)");
 }
 
+/* Spot cones up to 90 degrees, the widest a light may have (glTF's outerConeAngle <= pi/2), drawn
+ * by their volume exactly as over the full screen: a spot pointing along the floor lights it up to
+ * the plane through the light, the band near 90 degrees in view; a large one holding the camera
+ * (back faces) and a small one the camera is outside of (front faces). Past 60 degrees the volume
+ * is light.vert.glsl's 45-degree cone behind the light (before: the cone of acos(0.05), 87 degrees,
+ * whose bounding sphere, 24 radii, held the camera in any room). */
+TL_TEST(light_volume_spot_up_to_90_degrees_matches_full_screen)
+{
+    const float outer[4] = {0.0f, cosf(1.5707964f) /* -4.4e-8: cosf of pi/2's float */, 0.26f, 0.5f};
+    for (int i = 0; i < 8; i++) {
+        test_scene t;
+        build_room(&t);
+        const tl_light large = {TL_LIGHT_SPOT, {0, 1.5f, 2}, {0, 0, -1}, {9, 8, 7}, 14.0f, outer[i % 4] + 0.25f, outer[i % 4], 0, 0},
+                       small = {TL_LIGHT_SPOT, {2, 1, 3}, {1, 0, 0}, {9, 8, 7}, 2.0f, outer[i % 4] + 0.25f, outer[i % 4], 0, 0};
+        t.lights[0] = i < 4 ? large : small;
+        t.s.light_count = 1;
+        char label[64];
+        snprintf(label, sizeof label, "%s spot, cos_outer %g (%.1f degrees)", i < 4 ? "large" : "small",
+                 (double)outer[i % 4], acos((double)outer[i % 4]) * 180.0 / 3.14159265358979);
+        compare_volumes(&t, NULL, TL_DEPTH_FORMAT_D24, label);
+        compare_volumes(&t, NULL, TL_DEPTH_FORMAT_D32F_REVERSED, label);
+    }
+}
+
 TL_TEST(light_volume_mixed_types_draw_calls)
 {
     test_scene t;

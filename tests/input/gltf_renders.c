@@ -257,3 +257,74 @@ TL_TEST(gltf_texture_over_16384_is_the_flat_colour_with_a_warning)
     free(flat.p);
     free(rgba);
 }
+
+/* ---- spot cones ----------------------------------------------------------------------------------- */
+
+/* The quad lit by one KHR_lights_punctual spot at (0, 0, 2) looking down -Z onto it; `spot` is the
+ * JSON inside its "spot" object. */
+static void spot_gltf(tlh_text *t, const char *spot)
+{
+    quad_gltf(t, NULL, NULL, 0);
+    const char *tail = ",\"nodes\":[{\"mesh\":0}],\"scenes\":[{\"nodes\":[0]}]}";
+    size_t n = strlen(tail);
+    if (!t->p || t->n < n || strcmp(t->p + t->n - n, tail) != 0) {
+        free(t->p);
+        t->p = NULL;
+        return;
+    }
+    t->n -= n;
+    t->p[t->n] = '\0';
+    tlh_printf(t, ",\"extensionsUsed\":[\"KHR_lights_punctual\"],\"extensions\":{\"KHR_lights_punctual\":{\"lights\":"
+                  "[{\"type\":\"spot\",\"intensity\":40,\"range\":10,\"spot\":{%s}}]}},\"nodes\":[{\"mesh\":0},"
+                  "{\"extensions\":{\"KHR_lights_punctual\":{\"light\":0}},\"translation\":[0,0,2]}],"
+                  "\"scenes\":[{\"nodes\":[0,1]}]}", spot);
+}
+
+/* Cone angles outside glTF's 0 <= inner < outer <= pi/2 are clamped as docs/gltf.md says, each with
+ * one warning naming the field, its value and the clamp, and the scene then renders without a word
+ * from the renderer; pi/2 itself (90 degrees, the widest cone) loads as it is. Before: "cone angles
+ * outside 0 <= inner < outer <= pi/2; clamped", naming neither the angle nor the value. */
+TL_TEST(gltf_spot_cone_angles_clamped_naming_the_field)
+{
+    if (!ensure_context()) { tl_test_failures++; return; }
+    const double half_pi = 1.5707963267948966;
+    static const struct {
+        const char *spot, *warning;
+        double inner, outer; /* the angles the light gets */
+    } cases[] = {
+        {"\"innerConeAngle\":0.3,\"outerConeAngle\":2",
+         "KHR_lights_punctual.lights[0].spot.outerConeAngle = 2: outside (0, pi/2]; clamped to 1.5708", 0.3, 1.5707963267948966},
+        {"\"innerConeAngle\":0.7,\"outerConeAngle\":0.5",
+         "KHR_lights_punctual.lights[0].spot.innerConeAngle = 0.7: outside [0, outerConeAngle = 0.5); clamped to 0.4995",
+         0.4995, 0.5},
+        {"\"outerConeAngle\":-1", "KHR_lights_punctual.lights[0].spot.outerConeAngle = -1: outside (0, pi/2]; clamped to 0.001",
+         0.0, 0.001},
+        {"\"innerConeAngle\":0,\"outerConeAngle\":1.5707963267948966", NULL, 0.0, 1.5707963267948966},
+    };
+    size_t named = 0;
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        tlh_text t = {0};
+        spot_gltf(&t, cases[i].spot);
+        loaded_scene l;
+        TL_CHECK(t.p && parse(&t, &l) == TL_OK);
+        const tl_light *s = l.s && l.s->light_count == 1 ? &l.s->lights[0] : NULL;
+        TL_CHECK(s && s->type == TL_LIGHT_SPOT);
+        int warned = cases[i].warning ? l.log.warnings == 1 && strstr(l.log.warnings_text, cases[i].warning) != NULL
+                                      : l.log.warnings == 0;
+        if (!warned) fprintf(stderr, "  %s: %d warning(s) \"%s\"\n", cases[i].spot, l.log.warnings, l.log.warnings_text);
+        named += (size_t)warned;
+        if (s) {
+            printf("  %s: cos_inner %.7g, cos_outer %.7g; \"%s\"\n", cases[i].spot, (double)s->cos_inner,
+                   (double)s->cos_outer, l.log.warnings_text);
+            TL_CHECK(s->cos_inner == (float)cos(cases[i].inner) && s->cos_outer == (float)cos(cases[i].outer));
+            TL_CHECK(s->cos_outer >= 0.0f && s->cos_outer < s->cos_inner);
+            uint8_t *px = render_quietly(l.s);
+            TL_CHECK(lit_pixels(px) > 0 || cases[i].outer < 0.01);
+            if (cases[i].outer == half_pi) TL_CHECK(lit_pixels(px) > W * H / 20); /* the quad lit whole */
+            free(px);
+        }
+        tl_scene_destroy(l.s);
+        free(t.p);
+    }
+    TL_CHECK_EQ_U(named, sizeof cases / sizeof cases[0]);
+}

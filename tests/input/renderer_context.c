@@ -344,3 +344,77 @@ TL_TEST(renderer_render_to_missing_or_incomplete_framebuffer_refused)
     del_tex(1, &tex);
     tl_renderer_destroy(r);
 }
+
+/* ---- the context destroyed before the renderer -------------------------------------------------- */
+
+typedef struct lines {
+    int errors;
+    char last[512];
+} lines;
+
+static void keep_line(void *user, tl_log_level level, const char *message)
+{
+    lines *l = (lines *)user;
+    if (level != TL_LOG_ERROR) return;
+    l->errors++;
+    snprintf(l->last, sizeof l->last, "%s", message);
+}
+
+/* A renderer on its own tl_context with every module holding memory (scene, tiles, the light
+ * fix-up, shadows, an environment, statistics), whose context is destroyed first: every call that
+ * needs GL is refused with one line saying the context was destroyed, and destroy frees the memory
+ * without a GL call (the objects went with the context; ASan and LSan see neither a freed read nor
+ * a leak). Before, the context check read the freed tl_context: render and destroy crashed. */
+TL_TEST(renderer_context_destroyed_first_calls_refused_destroy_frees)
+{
+    tl_context *ctx = NULL;
+    tl_context_desc cd = {.backend = TL_CONTEXT_BACKEND_OSMESA, .width = W, .height = H, .logger = tl_test_logger};
+    TL_CHECK(tl_context_create(&cd, &ctx) == TL_OK);
+    if (!ctx) return;
+    lines log = {0};
+    tl_renderer_desc d = {.width = W, .height = H, .get_proc_address = tl_context_proc_loader,
+                          .get_proc_address_user = ctx, .logger = {keep_line, &log}};
+    d.options.light_strategy = TL_LIGHT_STRATEGY_TILED;
+    d.options.light_scale = 0.5f;
+    tl_renderer *r = NULL;
+    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
+    static test_scene t;
+    room_with_light(&t);
+    t.lights[0].shadow = 1;
+    static float sky[8 * 4 * 3];
+    for (size_t i = 0; i < sizeof sky / sizeof sky[0]; i++) sky[i] = 0.2f;
+    tl_frame_stats st;
+    int ok = r && tl_renderer_set_scene(r, &t.s) == TL_OK &&
+             tl_renderer_set_environment(r, &(tl_environment_desc){sky, 8, 4}) == TL_OK &&
+             tl_renderer_render(r, NULL, &st) == TL_OK && tl_renderer_wait(r, NULL) == TL_OK;
+    TL_CHECK(ok);
+    tl_frame_plan plan;
+    TL_CHECK(r && tl_renderer_get_plan(r, &plan) == TL_OK && plan.shadow_lights == 1 &&
+             (plan.targets & TL_TARGET_BIT(TL_TARGET_LIGHT_FIXUP)));
+    tl_context_destroy(ctx);
+    if (!r) return;
+    uint8_t px[W * H * 4];
+    size_t size = sizeof px, refused = 0, calls = 0;
+#define GONE(name, expr)                                                                                \
+    do {                                                                                                \
+        int before_ = log.errors;                                                                       \
+        tl_result res_ = (expr);                                                                        \
+        int ok_ = res_ == TL_ERROR_GL && log.errors == before_ + 1 &&                                  \
+                  strstr(log.last, name ": the renderer's context was destroyed (tl_context_destroy) before " \
+                                   "the renderer") != NULL;                                             \
+        if (!ok_) fprintf(stderr, "  %s: %s \"%s\"\n", name, tl_result_string(res_), log.last);          \
+        refused += (size_t)ok_;                                                                         \
+        calls++;                                                                                        \
+    } while (0)
+    GONE("tl_renderer_render", tl_renderer_render(r, NULL, NULL));
+    GONE("tl_renderer_read_output", tl_renderer_read_output(r, px, &size));
+    GONE("tl_renderer_set_options", tl_renderer_set_options(r, &(tl_renderer_options){.mode = TL_MODE_FAT}));
+    GONE("tl_renderer_resize", tl_renderer_resize(r, 32, 32));
+    GONE("tl_renderer_wait", tl_renderer_wait(r, NULL));
+#undef GONE
+    printf("  %zu of %zu calls refused after the context went, one line each: \"%s\"\n", refused, calls, log.last);
+    TL_CHECK(calls > 0 && refused == calls);
+    tl_renderer_destroy(r); /* frees; no GL call, no freed read */
+    printf("  destroyed without its context\n");
+    if (g_ctx) TL_CHECK(tl_context_make_current(g_ctx) == TL_OK);
+}

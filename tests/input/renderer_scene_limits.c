@@ -123,7 +123,7 @@ TL_TEST(renderer_scene_counts_past_32_bits_refused_before_reading)
     refused(r, &c, &s, TL_ERROR_INVALID_ARGUMENT, "2 objects but no array");
     s = t.s;
     s.index_count = t.s.index_count - 1; /* objects are checked against it (whole elements: per object) */
-    refused(r, &c, &s, TL_ERROR_INVALID_ARGUMENT, "object 1 draws indices");
+    refused(r, &c, &s, TL_ERROR_INVALID_ARGUMENT, "objects[1].first_index + index_count = ");
     tl_renderer_destroy(r);
 }
 
@@ -141,27 +141,30 @@ TL_TEST(renderer_scene_indices_and_draw_ranges_outside_the_arrays_refused)
     /* an index value equal to the vertex count, and the largest one */
     uint32_t keep = t.idx[5];
     t.idx[5] = (uint32_t)t.s.vertex_count;
-    snprintf(want, sizeof want, "index 5 (%zu) is out of range (%zu vertices)", t.s.vertex_count, t.s.vertex_count);
+    snprintf(want, sizeof want, "indices[5] = %zu: past the scene's %zu vertices (0..%zu)", t.s.vertex_count,
+             t.s.vertex_count, t.s.vertex_count - 1);
     refused(r, &c, &t.s, TL_ERROR_INVALID_ARGUMENT, want);
     t.idx[5] = UINT32_MAX;
-    refused(r, &c, &t.s, TL_ERROR_INVALID_ARGUMENT, "index 5 (4294967295) is out of range");
+    refused(r, &c, &t.s, TL_ERROR_INVALID_ARGUMENT, "indices[5] = 4294967295: past the scene's");
     t.idx[5] = keep;
     TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_OK);
     /* draw ranges: past the end, one whose end wraps 32 bits, a material past the array */
     tl_object o = t.obj[1];
     t.obj[1].first_index = (uint32_t)t.s.index_count - 3;
     t.obj[1].index_count = 6;
-    snprintf(want, sizeof want, "object 1 draws indices %zu..%zu", t.s.index_count - 3, t.s.index_count + 3);
+    snprintf(want, sizeof want, "objects[1].first_index + index_count = %zu + 6 = %zu: past the scene's %zu indices",
+             t.s.index_count - 3, t.s.index_count + 3, t.s.index_count);
     refused(r, &c, &t.s, TL_ERROR_INVALID_ARGUMENT, want);
     t.obj[1].first_index = UINT32_MAX - 2;
     t.obj[1].index_count = 6; /* first + count wraps to 3 in 32 bits */
-    refused(r, &c, &t.s, TL_ERROR_INVALID_ARGUMENT, "object 1 draws indices 4294967293..4294967299");
+    refused(r, &c, &t.s, TL_ERROR_INVALID_ARGUMENT, "objects[1].first_index + index_count = 4294967293 + 6 = 4294967299: past");
     t.obj[1] = o;
     t.obj[1].material = 2;
-    refused(r, &c, &t.s, TL_ERROR_INVALID_ARGUMENT, "material 2, outside the scene's");
+    refused(r, &c, &t.s, TL_ERROR_INVALID_ARGUMENT, "objects[1].material = 2: past the scene's 2 materials");
     t.obj[1] = o;
     t.obj[1].index_count -= 1;
-    refused(r, &c, &t.s, TL_ERROR_INVALID_ARGUMENT, "not whole triangles");
+    snprintf(want, sizeof want, "objects[1].index_count = %u: not whole triangles (a multiple of 3)", t.obj[1].index_count);
+    refused(r, &c, &t.s, TL_ERROR_INVALID_ARGUMENT, want);
     t.obj[1] = o;
     TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_OK && tl_renderer_render(r, NULL, NULL) == TL_OK);
     tl_renderer_destroy(r);

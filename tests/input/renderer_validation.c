@@ -371,7 +371,8 @@ TL_TEST(renderer_lights_refused_naming_the_field)
     const tl_light point = {TL_LIGHT_POINT, {0, 5, 0}, {0, 0, 0}, {5, 5, 5}, 10, 0, 0, 0, 0};
     const tl_light spot = {TL_LIGHT_SPOT, {0, 5, 0}, {0, -1, 0}, {5, 5, 5}, 10, 0.9f, 0.8f, 0, 0};
     const tl_light dir = {TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {0, -1, 0}, {1, 1, 1}, 0, 0, 0, 0, 0};
-    struct { tl_light l; const char *message; } cases[14];
+    const tl_light degrees = {TL_LIGHT_SPOT, {0, 5, 0}, {0, -1, 0}, {5, 5, 5}, 10, 30, 20, 0, 0}; /* angles, not cosines */
+    struct { tl_light l; const char *message; } cases[20];
     size_t n = 0;
 #define CASE(base, field, value, text)                                                                  \
     do {                                                                                                \
@@ -388,6 +389,15 @@ TL_TEST(renderer_lights_refused_naming_the_field)
     CASE(spot, cos_outer, 0.9f, "lights[1].cos_outer = 0.9: not below cos_inner = 0.9");
     CASE(spot, cos_outer, 0.95f, "lights[1].cos_outer = 0.95: not below cos_inner = 0.9");
     CASE(spot, direction[1], 0.0f, "lights[1].direction = (0, 0, 0): a spot light needs a direction");
+    /* cones: cosines of half angles up to 90 degrees (degrees given as cosines, cones over 90
+     * degrees and NaN were taken: 30 and 20 lit the whole floor) */
+    CASE(degrees, cos_inner, 30.0f, "lights[1].cos_inner = 30: not a cosine (-1..1; the cone's half angles enter as their "
+                                 "cosines, cos_inner = cos(inner angle))");
+    CASE(spot, cos_outer, -0.5f, "lights[1].cos_outer = -0.5: a cone wider than 90 degrees (cos_outer >= 0, as glTF's "
+                                 "outerConeAngle <= pi/2)");
+    CASE(spot, cos_outer, -1.5f, "lights[1].cos_outer = -1.5: not a cosine (-1..1;");
+    CASE(spot, cos_outer, NAN, "lights[1].cos_outer = nan: not a cosine (-1..1;");
+    CASE(spot, cos_inner, NAN, "lights[1].cos_inner = nan: not a cosine (-1..1;");
     CASE(dir, direction[1], 0.0f, "lights[1].direction = (0, 0, 0): a directional light needs a direction");
     CASE(point, color[1], NAN, "lights[1].color = (5, nan, 5): not finite");
     CASE(point, position[2], INFINITY, "lights[1].position = (0, 5, inf): not finite");
