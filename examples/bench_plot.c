@@ -309,15 +309,15 @@ static int bench__error_script(FILE *f, const void *ctx)
 
 /* ---- bytes per pixel ------------------------------------------------------------------------ */
 
-static uint32_t bench__used_targets(const bench_run *run, const bench_config *modes, size_t mode_count,
-                                    uint32_t *passes)
+static tl_target_set bench__used_targets(const bench_run *run, const bench_config *modes, size_t mode_count,
+                                         uint32_t *passes)
 {
-    uint32_t used = 0;
+    tl_target_set used = 0;
     *passes = 0;
     for (size_t m = 0; m < mode_count; m++) {
         const bench_record *r = bench_find(run, modes[m], run->opt.lights[run->opt.light_count - 1], run->opt.sizes[0]);
         for (int t = 0; r && t < TL_TARGET_COUNT; t++)
-            if (r->target_bpp[t]) used |= 1u << t;
+            if (r->target_bpp[t]) used |= TL_TARGET_BIT(t);
         if (r) *passes |= r->passes;
     }
     return used;
@@ -328,19 +328,20 @@ static int bench__bytes_data(FILE *f, const void *ctx)
     const bench_run *run = ((const tl_tool_plot *)ctx)->user;
     bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(&run->opt, modes);
-    uint32_t passes, used = bench__used_targets(run, modes, mode_count, &passes);
+    uint32_t passes;
+    tl_target_set used = bench__used_targets(run, modes, mode_count, &passes);
     bench_size size = run->opt.sizes[0];
     double pixels = (double)size.width * size.height;
     fputs("# block 0: mode, then bytes per pixel of each target; block 1: mode, then bytes moved per pixel by each pass\nmode", f);
     for (int t = 0; t < TL_TARGET_COUNT; t++)
-        if (used & (1u << t)) fprintf(f, " %s", tl_target_name((tl_target_id)t));
+        if (used & TL_TARGET_BIT(t)) fprintf(f, " %s", tl_target_name((tl_target_id)t));
     fputc('\n', f);
     for (size_t m = 0; m < mode_count; m++) {
         const bench_record *r = bench_find(run, modes[m], run->opt.lights[run->opt.light_count - 1], size);
         if (!r) continue;
         fprintf(f, "%s", bench_config_name(modes[m]));
         for (int t = 0; t < TL_TARGET_COUNT; t++)
-            if (used & (1u << t)) fprintf(f, " %u", r->target_bpp[t]);
+            if (used & TL_TARGET_BIT(t)) fprintf(f, " %u", r->target_bpp[t]);
         fputc('\n', f);
     }
     fputs("\n\nmode", f);
@@ -379,7 +380,8 @@ static int bench__bytes_script(FILE *f, const void *ctx)
     const bench_run *run = p->user;
     bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(&run->opt, modes);
-    uint32_t passes, used = bench__used_targets(run, modes, mode_count, &passes);
+    uint32_t passes;
+    tl_target_set used = bench__used_targets(run, modes, mode_count, &passes);
     bench__terminal(f, p, 1300, 600);
     fprintf(f,
             "set multiplot layout 1,2 title \"thinlight-bench: what each mode stores and moves (%ux%u, %u lights)\"\n"
@@ -394,7 +396,7 @@ static int bench__bytes_script(FILE *f, const void *ctx)
     fputs("set title 'targets the plan allocates'\nset ylabel 'bytes per pixel'\nplot ", f);
     int col = 2, any = 0;
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
-        if (!(used & (1u << t))) continue;
+        if (!(used & TL_TARGET_BIT(t))) continue;
         fprintf(f, "%s'%s.dat' index 0 using %d%s title columnheader(%d) lc rgb '%s'", any ? ", " : "", p->name, col,
                 any ? "" : ":xtic(1)", col, target_colours[t] ? target_colours[t] : "#999999");
         col++;

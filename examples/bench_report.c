@@ -726,24 +726,24 @@ static void bench__md_targets(FILE *f, const bench_run *run)
     bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(opt, modes);
     fputs("\nTargets each mode's plan allocates, bytes per pixel:\n\n| mode |", f);
-    uint32_t used = 0;
+    tl_target_set used = 0;
     for (size_t m = 0; m < mode_count; m++) {
         const bench_record *r = bench_find(run, modes[m], opt->lights[opt->light_count - 1], opt->sizes[0]);
         for (int t = 0; r && t < TL_TARGET_COUNT; t++)
-            if (r->target_bpp[t]) used |= 1u << t;
+            if (r->target_bpp[t]) used |= TL_TARGET_BIT(t);
     }
     for (int t = 0; t < TL_TARGET_COUNT; t++)
-        if (used & (1u << t)) fprintf(f, " %s |", tl_target_name((tl_target_id)t));
+        if (used & TL_TARGET_BIT(t)) fprintf(f, " %s |", tl_target_name((tl_target_id)t));
     fputs(" sum | allocated | depth + G-buffer + light buffer |\n|---|", f);
     for (int t = 0; t < TL_TARGET_COUNT; t++)
-        if (used & (1u << t)) fputs("---:|", f);
+        if (used & TL_TARGET_BIT(t)) fputs("---:|", f);
     fputs("---:|---:|---:|\n", f);
     for (size_t m = 0; m < mode_count; m++) {
         const bench_record *r = bench_find(run, modes[m], opt->lights[opt->light_count - 1], opt->sizes[0]);
         if (!r) continue;
         fprintf(f, "| `%s` |", bench_config_name(r->config));
         for (int t = 0; t < TL_TARGET_COUNT; t++)
-            if (used & (1u << t)) r->target_bpp[t] ? fprintf(f, " %u |", r->target_bpp[t]) : fputs(" |", f);
+            if (used & TL_TARGET_BIT(t)) r->target_bpp[t] ? fprintf(f, " %u |", r->target_bpp[t]) : fputs(" |", f);
         fprintf(f, " %u | %u | %u |\n", r->bytes_per_pixel_sum, r->bytes_per_pixel, r->gbuffer_bytes_per_pixel);
     }
 }

@@ -73,7 +73,7 @@ void vw_destroy_renderers(vw_app *app)
 }
 
 /* The panel's options for a renderer in a role: its mode, what it must keep for the views. */
-static tl_renderer_options vw_options(const vw_app *app, tl_render_mode mode, uint32_t keep)
+static tl_renderer_options vw_options(const vw_app *app, tl_render_mode mode, tl_target_set keep)
 {
     tl_renderer_options o = app->desc.options;
     o.mode = mode;
@@ -83,7 +83,7 @@ static tl_renderer_options vw_options(const vw_app *app, tl_render_mode mode, ui
     return o;
 }
 
-static tl_renderer *vw_make(vw_app *app, tl_render_mode mode, uint32_t keep)
+static tl_renderer *vw_make(vw_app *app, tl_render_mode mode, tl_target_set keep)
 {
     tl_renderer_desc d = app->desc;
     d.options = vw_options(app, mode, keep);
@@ -102,7 +102,7 @@ static tl_renderer *vw_make(vw_app *app, tl_render_mode mode, uint32_t keep)
 
 /* The renderer of a role: made when it is wanted and missing, destroyed when it is not wanted, and
  * otherwise given the options (the scene, its lights and the tile pass stay). */
-static int vw_role(vw_app *app, tl_renderer **r, int wanted, tl_render_mode mode, uint32_t keep)
+static int vw_role(vw_app *app, tl_renderer **r, int wanted, tl_render_mode mode, tl_target_set keep)
 {
     if (!wanted) {
         tl_renderer_destroy(*r);

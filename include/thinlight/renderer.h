@@ -328,10 +328,13 @@ typedef tl_gl_function (*tl_get_proc_address_fn)(void *user, const char *name);
  *  wrapper of `glfwGetCurrentContext() == window`; called with get_proc_address_user. */
 typedef int (*tl_is_current_fn)(void *user);
 
-/** Bits of tl_target_id, for tl_renderer_options.keep_targets and the plan's read/write sets. */
-#define TL_TARGET_BIT(target) (1u << (target))
+/** A set of targets: bit tl_target_id of a 64-bit word (tl_renderer_options.keep_targets, the
+ *  plan's read, write and clear sets, an application pass's reads and writes). */
+typedef uint64_t tl_target_set;
+/** The set holding one tl_target_id. */
+#define TL_TARGET_BIT(target) ((tl_target_set)1 << (target))
 /** Every target (tl_renderer_options.keep_targets): each gets memory of its own. */
-#define TL_TARGETS_ALL 0xFFFFFFFFu
+#define TL_TARGETS_ALL UINT64_MAX
 
 /** How the renderer draws a frame: every field may change between frames (tl_renderer_set_options)
  *  and every zeroed field means its default. tl_renderer_desc.options holds the first ones. */
@@ -391,7 +394,7 @@ typedef struct tl_renderer_options {
      *  make the plan produce a target nothing needs). Other targets whose lifetimes in the frame
      *  do not overlap share memory, so reading one that a later pass overwrote fails with
      *  TL_ERROR_INVALID_ARGUMENT. The output is always kept. Default 0. */
-    uint32_t keep_targets;
+    tl_target_set keep_targets;
     /** 1: every tl_renderer_render waits for the GPU (glFinish) and reads its queries at once, so
      *  its statistics describe that frame, as tl_renderer_wait does. Default 0: statistics come
      *  from a small ring of queries read a few frames later, and a frame never waits. */
@@ -555,9 +558,9 @@ typedef enum tl_target_id {
 typedef struct tl_plan_pass {
     tl_pass pass;     /**< which pass; TL_PASS_COUNT for an application pass */
     char name[32];    /**< tl_pass_name, or the application pass's name */
-    uint32_t reads;   /**< targets sampled, depth-tested against or blended onto */
-    uint32_t writes;  /**< targets rendered to */
-    uint32_t clears;  /**< targets cleared when the pass starts (colour 0, depth to the far value) */
+    tl_target_set reads;  /**< targets sampled, depth-tested against or blended onto */
+    tl_target_set writes; /**< targets rendered to */
+    tl_target_set clears; /**< targets cleared when the pass starts (colour 0, depth to the far value) */
 } tl_plan_pass;
 
 /** Where a target lives in the frame and which memory it uses. */
@@ -579,7 +582,7 @@ typedef struct tl_plan_target {
  *  (texture views of one immutable texture). */
 typedef struct tl_plan_block {
     uint32_t bytes_per_pixel; /**< size of the allocation per pixel */
-    uint32_t targets;         /**< the targets it backs (TL_TARGET_BIT bits) */
+    tl_target_set targets;    /**< the targets it backs (TL_TARGET_BIT bits) */
 } tl_plan_block;
 
 /** A shader permutation the plan needs: the program's name and its preprocessor defines. */
@@ -612,7 +615,7 @@ typedef struct tl_frame_plan {
     uint32_t height;                             /**< target height in pixels */
     size_t pass_count;                           /**< entries used in passes */
     tl_plan_pass passes[TL_PLAN_MAX_PASSES];     /**< in execution order; passes nobody reads are culled */
-    uint32_t targets;                            /**< allocated targets (TL_TARGET_BIT bits) */
+    tl_target_set targets;                       /**< allocated targets (TL_TARGET_BIT bits) */
     uint32_t target_bytes_per_pixel[TL_TARGET_COUNT]; /**< 0 = not allocated */
     tl_plan_target target_info[TL_TARGET_COUNT]; /**< lifetime and memory of each allocated target */
     size_t block_count;                          /**< entries used in blocks */
@@ -977,8 +980,8 @@ typedef struct tl_app_pass_desc {
     const char *after;  /**< run right after this built-in pass ("lights", ...); or */
     const char *before; /**< right before this one ("tonemap", ...); exactly one of the two. A pass
                              that the plan leaves out still marks the place */
-    uint32_t reads;     /**< targets it samples (TL_TARGET_BIT bits); they live until the pass */
-    uint32_t writes;    /**< TL_TARGET_BIT(TL_TARGET_HDR) and/or TL_TARGET_BIT(TL_TARGET_OUTPUT) */
+    tl_target_set reads;  /**< targets it samples (TL_TARGET_BIT bits); they live until the pass */
+    tl_target_set writes; /**< TL_TARGET_BIT(TL_TARGET_HDR) and/or TL_TARGET_BIT(TL_TARGET_OUTPUT) */
     tl_app_pass_fn execute; /**< required */
     void *user;         /**< passed to execute */
 } tl_app_pass_desc;

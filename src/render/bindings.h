@@ -1,8 +1,11 @@
 /* Fixed binding points of every program (GLSL `layout(binding = N)`), and the constants C and GLSL
  * share (TL_CULL_CHUNK): set once in the shaders, so
  * no frame looks up or sets a uniform location or a sampler unit. The same list becomes #defines
- * in front of every shader (programs.c), so C and GLSL cannot disagree. A target sampled by a
- * pass is bound to texture unit TL_UNIT_<TARGET> = its tl_target_id (targets.c). */
+ * in front of every shader (programs.c), so C and GLSL cannot disagree. The targets a pass samples
+ * take texture units 0, 1, ... in tl_target_id order and the ones it writes as images image units
+ * 0, 1, ...: each of its programs gets TL_UNIT_<TARGET> and TL_IMAGE_<TARGET> for them, and
+ * TL_UNIT_NONE / TL_IMAGE_NONE for every other target (graph.c, programs.c), so a target id is no
+ * texture unit and the ids are not bounded by the units a context has. */
 #ifndef TL_RENDER_BINDINGS_H
 #define TL_RENDER_BINDINGS_H
 
@@ -17,21 +20,18 @@
     X(SSBO_FORWARD_INDICES, 2)   /* forward: per-object light index lists */                      \
     X(SSBO_TILE_HEADERS, 3)      /* tiled: counters and per-tile (offset, count) */               \
     X(SSBO_TILE_ENTRIES, 4)      /* tiled: the lists' light indices */                            \
-    X(SSBO_FIXUP, 5)             /* the light scale's fix-up: counters, list of pixels (fixup.c) */ \
-    X(IMAGE_LIGHT_DIFFUSE, 0)    /* image units of the compute shading pass's writes */           \
-    X(IMAGE_LIGHT_SPECULAR, 1)                                                                    \
-    X(IMAGE_HDR, 2)                                                                               \
-    X(IMAGE_LIGHT_FRESNEL, 3)                                                                     \
-    X(IMAGE_LIGHT_COAT, 4)       /* the coat's sum (TL_CLEARCOAT_SUMS) */                           \
-    X(UNIT_ALBEDO_TEXTURE, 32)   /* material textures (units below 32 are the targets') */        \
-    X(UNIT_NORMAL_TEXTURE, 33)                                                                    \
-    X(UNIT_MR_TEXTURE, 34)                                                                        \
-    X(UNIT_EMISSIVE_TEXTURE, 35)                                                                  \
-    X(UNIT_OCCLUSION_TEXTURE, 36)                                                                 \
-    X(UNIT_SHADOW_ATLAS, 37)     /* the shadow atlas, a depth-compare sampler (shadows.c) */       \
-    X(UNIT_ENV_SKY, 38)          /* the environment image (the sky pass) */                        \
-    X(UNIT_ENV_SPECULAR, 39)     /* its GGX-prefiltered mip chain (image-based light) */           \
-    X(UNIT_ENV_BRDF, 40)         /* the split-sum BRDF table */                                    \
+    X(SSBO_FIXUP, 5)             /* the light scale's and MSAA's re-lit count (fixup.c) */         \
+    X(UNIT_ALBEDO_TEXTURE, 16)   /* material textures (units 0 .. 15 are the pass's targets') */   \
+    X(UNIT_NORMAL_TEXTURE, 17)                                                                    \
+    X(UNIT_MR_TEXTURE, 18)                                                                        \
+    X(UNIT_EMISSIVE_TEXTURE, 19)                                                                  \
+    X(UNIT_OCCLUSION_TEXTURE, 20)                                                                 \
+    X(UNIT_SHADOW_ATLAS, 21)     /* the shadow atlas, a depth-compare sampler (shadows.c) */       \
+    X(UNIT_ENV_SKY, 22)          /* the environment image (the sky pass) */                        \
+    X(UNIT_ENV_SPECULAR, 23)     /* its GGX-prefiltered mip chain (image-based light) */           \
+    X(UNIT_ENV_BRDF, 24)         /* the split-sum BRDF table */                                    \
+    X(UNIT_NONE, 25)             /* a target the pass does not sample: a unit nothing is bound to */ \
+    X(IMAGE_NONE, 7)             /* a target the pass does not write as an image */                 \
     X(SHADOW_LIGHTS, 64)         /* light records of the shadow lookup block (shadow.glsl) */      \
     X(SHADOW_VIEWS, 384)         /* its views: 6 per light (a point light's faces) */            \
     X(CULL_CHUNK, 16384)         /* local lights one light-cull invocation tests (tiles.glsl) */
@@ -41,9 +41,10 @@ enum {
     TL__BINDING_LIST(TL__BINDING_ENUM)
 #undef TL__BINDING_ENUM
     TL__MATERIAL_TEXTURES = 5,
-    TL__TEXTURE_UNITS_USED = 41, /* units the renderer may bind: 0 .. 40 */
+    TL__TARGET_UNITS = 16,       /* targets one pass may sample: units 0 .. 15 */
+    TL__TEXTURE_UNITS_USED = 26, /* units the renderer may bind: 0 .. 24, and 25 left empty */
     TL__BUFFER_BINDINGS_USED = 6, /* uniform and storage binding points it may bind: 0 .. 5 */
-    TL__IMAGE_UNITS_USED = 5     /* image units it may bind: 0 .. 4 */
+    TL__IMAGE_UNITS_USED = 7     /* image units a pass may bind: 0 .. 6 (7: TL_IMAGE_NONE) */
 };
 
 #endif

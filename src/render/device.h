@@ -83,8 +83,14 @@ typedef struct tl__program_src {
     const char *vs, *fs;
     const char *cs;   /* a compute program instead */
 } tl__program_src;
+/* The targets a program's pass samples and writes as images: their units are 0, 1, ... in
+ * tl_target_id order (TL_UNIT_<TARGET>, TL_IMAGE_<TARGET>); every other target's is TL_UNIT_NONE /
+ * TL_IMAGE_NONE. NULL: no target (programs outside the frame graph). */
+typedef struct tl__program_units {
+    tl_target_set samples, images;
+} tl__program_units;
 tl_result tl__program_get(tl__device *dev, const char *label, const tl__program_src *src, const char *defines,
-                          GLuint *out);
+                          const tl__program_units *units, GLuint *out);
 void tl__program_cache_destroy(tl__device *dev);
 
 /* context_check.c: the device's context is current (the descriptor's is_current, thinlight's own

@@ -71,6 +71,7 @@ static void tl__pass_ctx_make(tl_renderer *r, const tl__compiled_pass *cp, const
     ctx->gbuffer_samples = tl__gbuffer_samples(&r->desc.options) > 1u ? r->graph.samples : 1u;
     ctx->fullscreen_vao = r->dev.vao_empty;
     ctx->linear_sampler = r->dev.sampler_linear;
+    ctx->unit_of = cp->unit_of;
     ctx->params = cp->def->options_size ? (const char *)&r->desc.options + cp->def->options_offset : NULL;
     ctx->queries = queries;
     ctx->to_caller = to_caller;
@@ -112,10 +113,9 @@ static void tl__pass_body(tl_renderer *r, const tl__compiled_pass *cp, const GLu
     if (cp->app < 0) tl__pass_ctx_make(r, cp, queries, to_caller, po, &ctx);
     if (cp->app < 0 && cp->def->params_size) tl__pass_params(r, cp->def, v);
     if (cp->decl->compute) { /* no framebuffer, clears or raster state */
-        for (uint8_t k = 0; k < cp->bind_count; k++) gl->BindTextureUnit(cp->units[k], cp->textures[k]);
+        for (uint8_t k = 0; k < cp->bind_count; k++) gl->BindTextureUnit(k, cp->textures[k]);
         for (uint8_t k = 0; k < cp->image_count; k++)
-            gl->BindImageTexture(cp->image_units[k], cp->image_textures[k], 0, GL_FALSE, 0, GL_READ_WRITE,
-                                 cp->image_formats[k]);
+            gl->BindImageTexture(k, cp->image_textures[k], 0, GL_FALSE, 0, GL_READ_WRITE, cp->image_formats[k]);
         cp->def->execute(&ctx);
         return;
     }
@@ -130,7 +130,7 @@ static void tl__pass_body(tl_renderer *r, const tl__compiled_pass *cp, const GLu
         tl__clear(r, cp);
     }
     tl__state_apply(gl, &dev->state, &cp->decl->state);
-    for (uint8_t k = 0; k < cp->bind_count; k++) gl->BindTextureUnit(cp->units[k], cp->textures[k]);
+    for (uint8_t k = 0; k < cp->bind_count; k++) gl->BindTextureUnit(k, cp->textures[k]);
     if (cp->app >= 0) tl__run_app(r, cp, v ? &v->info : NULL);
     else cp->def->execute(&ctx);
 }

@@ -3,8 +3,9 @@
  * texture views of their own formats), keeping the textures of the previous plan whose format,
  * size, levels and filtering a block of the new one asks for; makes one framebuffer per pass from
  * its declared writes (colour attachments in tl_target_id order, the order of the shaders' TL_OUT_*
- * locations), and records each pass's clears and the texture units of the targets it samples
- * (unit = target id, as bindings.h promises the shaders). */
+ * locations), and records each pass's clears and the texture and image units of the targets it
+ * samples and writes as images (0, 1, ... in tl_target_id order, as its programs are told:
+ * programs.c, bindings.h). */
 #include <stdio.h>
 #include <string.h>
 
@@ -112,20 +113,29 @@ static tl_result tl__graph_block(tl__device *dev, tl__graph *r, tl__storage_pool
     return res;
 }
 
-/* Image units of a compute pass's writes (bindings.h). */
-static void tl__graph_images(tl__graph *r, tl__compiled_pass *cp, const tl__pass_decl *d)
+/* The units of the targets a pass samples and writes as images: 0, 1, ... in tl_target_id order
+ * (its programs get the same numbers: tl__program_units); a pass past the units a frame binds is
+ * refused naming it. */
+static tl_result tl__graph_units(tl__device *dev, tl__graph *r, tl__compiled_pass *cp, const tl__pass_decl *d)
 {
-    static const struct { tl_target_id t; uint8_t unit; } map[] = {{TL_TARGET_LIGHT_DIFFUSE, TL__IMAGE_LIGHT_DIFFUSE},
-                                                                   {TL_TARGET_LIGHT_SPECULAR, TL__IMAGE_LIGHT_SPECULAR},
-                                                                   {TL_TARGET_HDR, TL__IMAGE_HDR},
-                                                                   {TL_TARGET_LIGHT_FRESNEL, TL__IMAGE_LIGHT_FRESNEL},
-                                                                   {TL_TARGET_LIGHT_COAT, TL__IMAGE_LIGHT_COAT}};
-    for (size_t k = 0; k < sizeof map / sizeof map[0]; k++)
-        if (d->images & TL_TARGET_BIT(map[k].t)) {
-            cp->image_units[cp->image_count] = map[k].unit;
-            cp->image_textures[cp->image_count] = r->targets[map[k].t].texture;
-            cp->image_formats[cp->image_count++] = r->targets[map[k].t].internal_format;
+    memset(cp->unit_of, TL__UNIT_NONE, sizeof cp->unit_of);
+    for (int t = 0; t < TL_TARGET_COUNT; t++) {
+        if (d->samples & TL_TARGET_BIT(t)) {
+            if (cp->bind_count == TL__TARGET_UNITS)
+                return tl__fail(dev, TL_ERROR_LIMIT, "renderer: pass %s samples more than %d targets", cp->plan->name,
+                                (int)TL__TARGET_UNITS);
+            cp->unit_of[t] = cp->bind_count;
+            cp->textures[cp->bind_count++] = r->targets[t].texture;
         }
+        if (d->images & TL_TARGET_BIT(t)) {
+            if (cp->image_count == TL__IMAGE_UNITS_USED)
+                return tl__fail(dev, TL_ERROR_LIMIT, "renderer: pass %s writes more than %d images", cp->plan->name,
+                                (int)TL__IMAGE_UNITS_USED);
+            cp->image_textures[cp->image_count] = r->targets[t].texture;
+            cp->image_formats[cp->image_count++] = r->targets[t].internal_format;
+        }
+    }
+    return TL_OK;
 }
 
 /* A pass whose one colour write has mip levels renders each level through a framebuffer of its own
@@ -182,22 +192,15 @@ static tl_result tl__graph_pass(tl__device *dev, tl__graph *r, tl__compiled_pass
     }
     cp->clear_depth = (d->clears & TL_TARGET_BIT(d->depth_target)) != 0;
     cp->writes_output = (d->writes & TL_TARGET_BIT(TL_TARGET_OUTPUT)) != 0;
-    for (int t = 0; t < TL_TARGET_COUNT; t++)
-        if (d->samples & TL_TARGET_BIT(t)) {
-            cp->units[cp->bind_count] = (uint8_t)t;
-            cp->textures[cp->bind_count++] = r->targets[t].texture;
-        }
-    if (d->compute) {
-        tl__graph_images(r, cp, d);
-        return TL_OK;
-    }
+    tl_result res = tl__graph_units(dev, r, cp, d);
+    if (res != TL_OK || d->compute) return res;
     char label[64], msg[256];
     snprintf(label, sizeof label, "fbo.%s", pp->name);
     const tl__target *depth = d->attach_depth ? &r->targets[d->depth_target] : NULL;
     /* the viewport is the framebuffer's size: reduced targets (the light scale) have their own */
     cp->fb_width = n ? colors[0]->width : depth ? depth->width : 0;
     cp->fb_height = n ? colors[0]->height : depth ? depth->height : 0;
-    tl_result res = tl__framebuffer_create(&dev->gl, label, colors, n, depth, &cp->fbo, msg, sizeof msg);
+    res = tl__framebuffer_create(&dev->gl, label, colors, n, depth, &cp->fbo, msg, sizeof msg);
     if (res != TL_OK) return tl__fail(dev, res, "renderer: %s", msg);
     if (res == TL_OK && d->split_writes) res = tl__graph_split(dev, cp, colors, n);
     return res == TL_OK ? tl__graph_levels(dev, r, cp, colors, n) : res;
@@ -212,7 +215,8 @@ tl_result tl__graph_programs(tl__device *dev, tl__graph *r)
             tl__compiled_pass *cp = &r->passes[i];
             if (!cp->def || cp->def->id != pr->pass) continue;
             const tl__program_src *src = &cp->def->programs[pr->slot];
-            tl_result res = tl__program_get(dev, pr->name, src, pr->defines, &cp->programs[pr->slot]);
+            tl__program_units units = {cp->decl->samples, cp->decl->images};
+            tl_result res = tl__program_get(dev, pr->name, src, pr->defines, &units, &cp->programs[pr->slot]);
             if (res != TL_OK) return res;
         }
     }

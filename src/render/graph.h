@@ -20,11 +20,10 @@ typedef struct tl__compiled_pass {
     uint8_t clear_locations[TL__FRAMEBUFFER_MAX_COLORS];
     uint8_t clear_count;
     uint8_t clear_depth;
-    uint8_t bind_count;
-    uint8_t units[TL_TARGET_COUNT];
-    GLuint textures[TL_TARGET_COUNT];
-    uint8_t image_count; /* compute passes: targets written as images */
-    uint8_t image_units[TL__IMAGE_UNITS_USED];
+    uint8_t bind_count;  /* the targets it samples, on units 0 .. bind_count - 1 in tl_target_id order */
+    GLuint textures[TL__TARGET_UNITS];
+    uint8_t unit_of[TL_TARGET_COUNT]; /* each target's unit in this pass, TL__UNIT_NONE where it is not sampled */
+    uint8_t image_count; /* compute passes: targets written as images, on image units 0 .. image_count - 1 */
     GLuint image_textures[TL__IMAGE_UNITS_USED];
     GLenum image_formats[TL__IMAGE_UNITS_USED];
     uint8_t writes_output;
@@ -46,7 +45,7 @@ typedef struct tl__graph {
     tl__target targets[TL_TARGET_COUNT]; /* each target's texture: its block's storage, or a view of it */
     tl__target blocks[TL_TARGET_COUNT];  /* the storage of each memory block of the plan */
     uint8_t block_linear[TL_TARGET_COUNT]; /* the storage filters bilinearly */
-    uint32_t views;                      /* targets whose texture is a view of their block's (TL_TARGET_BIT) */
+    tl_target_set views;                 /* targets whose texture is a view of their block's (TL_TARGET_BIT) */
     tl__target levels[TL_TARGET_COUNT][TL__MAX_LEVELS]; /* one-level views of targets with mip levels */
     tl__compiled_pass passes[TL_PLAN_MAX_PASSES];
     size_t pass_count;

@@ -25,10 +25,10 @@ typedef struct tl__view tl__view;           /* view.h */
 /* How a mode lays out the frame: one row per mode (modes.c), read by the passes' declare steps. */
 typedef struct tl__mode_def {
     const char *name;
-    uint32_t gbuffer_writes; /* colour targets the G-buffer pass writes (dropped when nobody reads them) */
-    uint32_t light_reads;    /* targets the light pass reads (depth is also depth-tested) */
-    uint32_t light_samples;  /* of those, the ones it samples */
-    uint32_t light_writes;   /* light buffer, or HDR (blended onto) */
+    tl_target_set gbuffer_writes; /* colour targets the G-buffer pass writes (dropped when nobody reads them) */
+    tl_target_set light_reads; /* targets the light pass reads (depth is also depth-tested) */
+    tl_target_set light_samples; /* of those, the ones it samples */
+    tl_target_set light_writes; /* light buffer, or HDR (blended onto) */
     const char *light_define; /* what the light shader does: TL_LIGHT_ACCUM, TL_LIGHT_SHADE_* */
     uint8_t material_pass;   /* a second geometry pass applies materials to the light buffer */
     uint8_t forward;         /* no G-buffer: objects are shaded with their light lists */
@@ -78,19 +78,19 @@ enum {
 
 /* One pass as declared for a plan (target sets are TL_TARGET_BIT bits). */
 typedef struct tl__pass_decl {
-    uint32_t writes;       /* 0: the pass is not in this frame */
-    uint32_t optional;     /* writes dropped when no later pass reads them */
-    uint32_t reads;        /* sampled, depth-tested or blended onto (lifetimes, culling) */
-    uint32_t samples;      /* the reads bound to texture units */
-    uint32_t clears;       /* cleared when the pass starts */
-    uint32_t neighbourhood; /* samples read as a 5-texel cross per fragment (bytes estimate) */
+    tl_target_set writes;  /* 0: the pass is not in this frame */
+    tl_target_set optional; /* writes dropped when no later pass reads them */
+    tl_target_set reads;   /* sampled, depth-tested or blended onto (lifetimes, culling) */
+    tl_target_set samples; /* the reads bound to texture units */
+    tl_target_set clears;  /* cleared when the pass starts */
+    tl_target_set neighbourhood; /* samples read as a 5-texel cross per fragment (bytes estimate) */
     uint8_t attach_depth;  /* the depth target is attached (tested or written) */
     uint8_t depth_target;  /* which: a tl_target_id, 0 (TL_TARGET_DEPTH) or TL_TARGET_LIGHT_DEPTH */
     uint8_t compute;       /* a compute pass: no framebuffer, no clears, no raster state */
     uint8_t light_data;    /* TL__LIGHTS_* it reads */
     uint8_t split_writes;  /* it renders its colour writes one at a time: a framebuffer per write too */
-    uint32_t images;       /* writes bound as images (compute passes) */
-    uint32_t sinks;        /* writes read after the frame (a debug output): never culled, kept to the end */
+    tl_target_set images;  /* writes bound as images (compute passes) */
+    tl_target_set sinks;   /* writes read after the frame (a debug output): never culled, kept to the end */
     tl__pipeline state;    /* fixed state; a pass may change cull, depth test and clamp per draw */
 } tl__pass_decl;
 
@@ -129,6 +129,7 @@ typedef struct tl__pass_ctx {
     uint32_t light_shift;         /* the light scale: the light buffer is the frame's size >> light_shift */
     uint32_t gbuffer_samples;     /* MSAA per-sample edges: the samples the G-buffer has (tl__graph.samples); else 1 */
     GLuint fullscreen_vao, linear_sampler;
+    const uint8_t *unit_of;       /* the texture unit of each target it samples (TL__UNIT_NONE otherwise) */
     const void *params;           /* its slice of the resolved options (tl__pass_def.options_offset), or NULL */
     const GLuint *queries;        /* its own samples-passed queries (query_count), NULL when not measured */
     int to_caller;                /* it writes the output into the caller's framebuffer */
@@ -238,7 +239,7 @@ typedef struct tl__plan {
     tl__pass_decl decl[TL_PLAN_MAX_PASSES];
     const tl__pass_def *def[TL_PLAN_MAX_PASSES]; /* NULL for application passes */
     int8_t app[TL_PLAN_MAX_PASSES];              /* application pass index, -1 for built-in ones */
-    uint32_t shared;                             /* targets whose memory a later target reuses */
+    tl_target_set shared;                        /* targets whose memory a later target reuses */
 } tl__plan;
 
 #endif

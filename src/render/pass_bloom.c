@@ -88,7 +88,7 @@ static void tl__bloom_draw(const tl__pass_ctx *ctx, GLuint program, uint32_t lev
     uint32_t w = ctx->level_width >> level, h = ctx->level_height >> level;
     tl__state_framebuffer(gl, ctx->state, level ? ctx->level_fbos[level] : ctx->fbo);
     tl__state_viewport(gl, ctx->state, 0, 0, (GLsizei)(w ? w : 1u), (GLsizei)(h ? h : 1u));
-    if (source) gl->BindTextureUnit(TL_TARGET_BLOOM, source);
+    if (source) gl->BindTextureUnit(ctx->unit_of[TL_TARGET_BLOOM], source);
     tl__state_program(gl, ctx->state, program);
     gl->DrawArrays(GL_TRIANGLES, 0, 3);
     ctx->out->draw_calls++;
@@ -100,9 +100,9 @@ static void tl__bloom_execute(const tl__pass_ctx *ctx)
     const GLuint *lv = ctx->level_textures;
     uint32_t n = ctx->level_count ? ctx->level_count : 1u;
     tl__state_vertex_array(gl, ctx->state, ctx->fullscreen_vao);
-    gl->BindSampler(TL_TARGET_HDR, ctx->linear_sampler); /* the 13 taps fall between texels */
+    gl->BindSampler(ctx->unit_of[TL_TARGET_HDR], ctx->linear_sampler); /* the 13 taps fall between texels */
     tl__bloom_draw(ctx, ctx->programs[0], 0, 0);
-    gl->BindSampler(TL_TARGET_HDR, 0);
+    gl->BindSampler(ctx->unit_of[TL_TARGET_HDR], 0);
     for (uint32_t k = 1; k < n; k++) tl__bloom_draw(ctx, ctx->programs[1], k, lv[k - 1]);
     tl__pipeline blend = *ctx->pipeline;
     blend.blend = TL__BLEND_ALPHA; /* finer = scatter * tent(coarser) + (1 - scatter) * finer */

@@ -238,7 +238,8 @@ static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *
 static void tl__material_execute(const tl__pass_ctx *ctx)
 {
     const GladGLContext *gl = ctx->gl;
-    const GLuint units[3] = {TL_TARGET_LIGHT_DIFFUSE, TL_TARGET_LIGHT_SPECULAR, TL_TARGET_LIGHT_FRESNEL};
+    const GLuint units[3] = {ctx->unit_of[TL_TARGET_LIGHT_DIFFUSE], ctx->unit_of[TL_TARGET_LIGHT_SPECULAR],
+                             ctx->unit_of[TL_TARGET_LIGHT_FRESNEL]};
     tl__fixup *f = ctx->lights ? &ctx->lights->fixup : NULL;
     for (int k = 0; k < 3; k++) gl->BindSampler(units[k], ctx->linear_sampler);
     if (f) tl__fixup_begin(gl, f);

@@ -39,7 +39,7 @@ static const tl__target_def tl__target_light_coat = {TL__TARGET(LIGHT_COAT, "lig
 void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
 {
     const tl__mode_def *m = in->mode;
-    uint32_t spec_targets = TL__B(LIGHT_SPECULAR) | TL__B(FAT_MATERIAL);
+    tl_target_set spec_targets = TL__B(LIGHT_SPECULAR) | TL__B(FAT_MATERIAL);
     int exact_spec = in->spec && in->o->light_buffer == TL_LIGHT_BUFFER_EXACT;
     d->writes = m->light_writes & (exact_spec ? ~0u : ~TL__B(LIGHT_SPECULAR));
     if (in->fresnel != TL_FRESNEL_TWO_SUMS) d->writes &= ~TL__B(LIGHT_FRESNEL); /* S2: GGX's two sums only */
@@ -57,7 +57,7 @@ void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
         d->samples |= TL__B(MSAA_EDGES);
     }
     if (in->light_shift) { /* the light scale: the reduced depth and RT0 (pass_light_reduce.c) */
-        uint32_t full = TL__B(DEPTH) | TL__B(RT0), reduced = TL__B(LIGHT_DEPTH) | TL__B(LIGHT_RT0) | TL__B(LIGHT_OFFSET);
+        tl_target_set full = TL__B(DEPTH) | TL__B(RT0), reduced = TL__B(LIGHT_DEPTH) | TL__B(LIGHT_RT0) | TL__B(LIGHT_OFFSET);
         d->reads = (d->reads & ~full) | reduced;
         d->samples = (d->samples & ~full) | reduced;
         d->depth_target = TL_TARGET_LIGHT_DEPTH;

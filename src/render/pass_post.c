@@ -55,9 +55,9 @@ static void tl__tonemap_permute(const tl__plan_input *in, const tl__pass_decl *d
 /* Into a caller's framebuffer of another size the image is resampled: linear filtering then. */
 static void tl__tonemap_execute(const tl__pass_ctx *ctx)
 {
-    if (ctx->to_caller) ctx->gl->BindSampler(TL_TARGET_HDR, ctx->linear_sampler); /* a multisampled HDR ignores it */
+    if (ctx->to_caller) ctx->gl->BindSampler(ctx->unit_of[TL_TARGET_HDR], ctx->linear_sampler); /* a multisampled HDR ignores it */
     tl__draw_fullscreen(ctx);
-    if (ctx->to_caller) ctx->gl->BindSampler(TL_TARGET_HDR, 0);
+    if (ctx->to_caller) ctx->gl->BindSampler(ctx->unit_of[TL_TARGET_HDR], 0);
 }
 
 const tl__pass_def tl__pass_tonemap = {
@@ -93,9 +93,9 @@ static void tl__fxaa_permute(const tl__plan_input *in, const tl__pass_decl *d, t
 /* FXAA samples between texels: linear filtering always. */
 static void tl__fxaa_execute(const tl__pass_ctx *ctx)
 {
-    ctx->gl->BindSampler(TL_TARGET_LDR, ctx->linear_sampler);
+    ctx->gl->BindSampler(ctx->unit_of[TL_TARGET_LDR], ctx->linear_sampler);
     tl__draw_fullscreen(ctx);
-    ctx->gl->BindSampler(TL_TARGET_LDR, 0);
+    ctx->gl->BindSampler(ctx->unit_of[TL_TARGET_LDR], 0);
 }
 
 const tl__pass_def tl__pass_fxaa = {

@@ -73,7 +73,7 @@ static void tl__vignette_execute(const tl__pass_ctx *ctx)
     blend.blend = TL__BLEND_ALPHA; /* HDR (1 - a) with a = 1 - factor */
     tl__state_apply(gl, ctx->state, &blend);
     tl__state_framebuffer(gl, ctx->state, ctx->write_fbos[0]);
-    gl->BindTextureUnit(TL_TARGET_VIGNETTE, ctx->write_textures[1]);
+    gl->BindTextureUnit(ctx->unit_of[TL_TARGET_VIGNETTE], ctx->write_textures[1]);
     tl__state_program(gl, ctx->state, ctx->programs[1]);
     gl->DrawArrays(GL_TRIANGLES, 0, 3);
     ctx->out->draw_calls += 2;

@@ -219,9 +219,9 @@ static void tl__remove_pass(tl__plan *p, size_t i)
 /* Backwards: a pass none of whose writes a later pass (or the caller) reads is culled; writes it
  * declared optional are dropped when unread. Then forwards: reads of targets nobody wrote are
  * dropped (a light buffer the light pass does not write, say). */
-static void tl__cull_passes(tl__plan *p, uint32_t sinks)
+static void tl__cull_passes(tl__plan *p, tl_target_set sinks)
 {
-    uint32_t needed = sinks;
+    tl_target_set needed = sinks;
     for (size_t i = p->pub.pass_count; i-- > 0;) {
         tl__pass_decl *d = &p->decl[i];
         if (!(d->writes & needed) && p->app[i] < 0) {
@@ -232,7 +232,7 @@ static void tl__cull_passes(tl__plan *p, uint32_t sinks)
         d->clears &= d->writes;
         needed |= d->reads;
     }
-    uint32_t written = 0;
+    tl_target_set written = 0;
     for (size_t i = 0; i < p->pub.pass_count; i++) {
         tl__pass_decl *d = &p->decl[i];
         d->reads &= written | d->writes;
@@ -267,7 +267,7 @@ static void tl__target_memory(const tl_renderer_desc *d, const tl__target_def *d
     ti->bytes_per_pixel = (uint32_t)((ti->bytes + px - 1) / px);
 }
 
-static void tl__lifetimes(tl__plan *p, const tl_renderer_desc *d, uint32_t sinks)
+static void tl__lifetimes(tl__plan *p, const tl_renderer_desc *d, tl_target_set sinks)
 {
     tl_frame_plan *fp = &p->pub;
     for (size_t i = 0; i < fp->pass_count; i++) fp->targets |= fp->passes[i].reads | fp->passes[i].writes;
@@ -336,7 +336,7 @@ static void tl__share_memory(tl__plan *p, const tl_renderer_options *o)
 
 /* TL_OUT_<TARGET>=<location> for every colour write: attachments in tl_target_id order; 0 when they
  * do not fit `size`. */
-static int tl__output_defines(const tl__plan *p, uint32_t writes, char *out, size_t size)
+static int tl__output_defines(const tl__plan *p, tl_target_set writes, char *out, size_t size)
 {
     size_t len = 0;
     int loc = 0;
@@ -424,10 +424,10 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     p->pub.width = d.width;
     p->pub.height = d.height;
     /* the output is read after the frame; kept targets too, when the plan has them at all */
-    uint32_t kept = TL__BIT(TL_TARGET_OUTPUT) | (d.options.keep_targets & (TL__BIT(TL_TARGET_COUNT) - 1u));
+    tl_target_set kept = TL__BIT(TL_TARGET_OUTPUT) | (d.options.keep_targets & (TL__BIT(TL_TARGET_COUNT) - 1u));
     tl__plan_choices(&in, &p->pub);
     tl__select(&in, apps, app_count, p);
-    uint32_t debug = 0; /* debug outputs: read after the frame, like the output */
+    tl_target_set debug = 0; /* debug outputs: read after the frame, like the output */
     for (size_t i = 0; i < p->pub.pass_count; i++) debug |= p->decl[i].sinks;
     kept |= debug;
     tl__cull_passes(p, TL__BIT(TL_TARGET_OUTPUT) | debug);

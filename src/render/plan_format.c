@@ -23,7 +23,7 @@ static void tl__printf(tl__out *o, const char *fmt, ...)
     if (n > 0) o->len += (size_t)n;
 }
 
-static void tl__print_targets(tl__out *o, uint32_t bits)
+static void tl__print_targets(tl__out *o, tl_target_set bits)
 {
     if (!bits) {
         tl__printf(o, "-");

@@ -1,8 +1,9 @@
 /* Shader permutations: compiled on first use and cached for the renderer's life, keyed by the
- * shader files and the plan's #defines, so re-planning for another scene compiles only what is new.
- * Every program gets the binding points of bindings.h and the targets' texture units as #defines,
- * so the shaders declare `layout(binding = TL_UNIT_RT0)` and no frame sets a sampler or looks up
- * a uniform. */
+ * shader files, the plan's #defines and the targets its pass binds, so re-planning for another scene
+ * compiles only what is new. Every program gets the binding points of bindings.h and its pass's
+ * texture and image units as #defines (TL_UNIT_<TARGET>, TL_IMAGE_<TARGET>: bindings.h), so the
+ * shaders declare `layout(binding = TL_UNIT_RT0)` and no frame sets a sampler or looks up a
+ * uniform. */
 #include <stdio.h>
 #include <string.h>
 
@@ -15,20 +16,34 @@ static const char *const tl__binding_defines[] = {TL__BINDING_LIST(TL__BINDING_S
 /* The bindings, a unit per target and every word of a plan's defines (tl_plan_program.defines: at
  * most 128 words in 256 characters), so no define is ever dropped: with a fixed 64, the target
  * added after 28 pushed a light program's last define (TL_LIGHT_FULLSCREEN) out silently. */
-#define TL__MAX_DEFINES (TL__BINDING_DEFINE_COUNT + TL_TARGET_COUNT + 128)
+#define TL__MAX_DEFINES (TL__BINDING_DEFINE_COUNT + 2 * TL_TARGET_COUNT + 128)
 
-/* Splits the space-separated `defines` (copied into buf) after the fixed binding defines. */
-static size_t tl__define_list(const char *defines, char *buf, size_t buf_size, char units[][32], const char **out)
+/* Every target's texture and image unit for a pass binding `u` (see tl__program_units). */
+static size_t tl__unit_defines(const tl__program_units *u, char (*units)[48], const char **out)
 {
     size_t n = 0;
+    uint32_t unit = 0, image = 0;
     const tl__target_def *defs[TL_TARGET_COUNT];
     tl__target_defs(defs);
-    for (size_t i = 0; i < TL__BINDING_DEFINE_COUNT; i++) out[n++] = tl__binding_defines[i];
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         if (!defs[t]) continue;
-        snprintf(units[t], 32, "TL_UNIT_%s=%d", defs[t]->macro, t);
-        out[n++] = units[t];
+        int sampled = u && (u->samples & TL_TARGET_BIT(t)), imaged = u && (u->images & TL_TARGET_BIT(t));
+        snprintf(units[2 * t], 48, "TL_UNIT_%s=%u", defs[t]->macro, sampled ? unit++ : (unsigned)TL__UNIT_NONE);
+        snprintf(units[2 * t + 1], 48, "TL_IMAGE_%s=%u", defs[t]->macro, imaged ? image++ : (unsigned)TL__IMAGE_NONE);
+        out[n++] = units[2 * t];
+        out[n++] = units[2 * t + 1];
     }
+    return n;
+}
+
+/* Splits the space-separated `defines` (copied into buf) after the fixed binding defines and the
+ * units. */
+static size_t tl__define_list(const char *defines, const tl__program_units *u, char *buf, size_t buf_size,
+                              char (*units)[48], const char **out)
+{
+    size_t n = 0;
+    for (size_t i = 0; i < TL__BINDING_DEFINE_COUNT; i++) out[n++] = tl__binding_defines[i];
+    n += tl__unit_defines(u, units, out + n);
     snprintf(buf, buf_size, "%s", defines);
     for (char *c = buf; *c && n < TL__MAX_DEFINES;) { /* strtok keeps hidden state: split by hand */
         while (*c == ' ') *c++ = '\0';
@@ -53,11 +68,12 @@ static tl_result tl__cache_grow(tl__device *r)
 }
 
 tl_result tl__program_get(tl__device *r, const char *label, const tl__program_src *src, const char *defines,
-                          GLuint *out)
+                          const tl__program_units *units, GLuint *out)
 {
     char key[512];
-    snprintf(key, sizeof key, "%s|%s|%s|%s", src->vs ? src->vs : "", src->fs ? src->fs : "", src->cs ? src->cs : "",
-             defines);
+    snprintf(key, sizeof key, "%s|%s|%s|%llx|%llx|%s", src->vs ? src->vs : "", src->fs ? src->fs : "",
+             src->cs ? src->cs : "", units ? (unsigned long long)units->samples : 0ull,
+             units ? (unsigned long long)units->images : 0ull, defines);
     for (size_t i = 0; i < r->cache_count; i++)
         if (strcmp(r->cache[i].key, key) == 0) {
             *out = r->cache[i].program;
@@ -65,7 +81,7 @@ tl_result tl__program_get(tl__device *r, const char *label, const tl__program_sr
         }
     tl_result res = tl__cache_grow(r);
     if (res != TL_OK) return res;
-    char buf[512], units[TL_TARGET_COUNT][32];
+    char buf[512], unit_text[2 * TL_TARGET_COUNT][48];
     const char *defs[TL__MAX_DEFINES];
     tl__program_desc pd = {0};
     pd.label = label;
@@ -76,7 +92,7 @@ tl_result tl__program_get(tl__device *r, const char *label, const tl__program_sr
         pd.stages[1] = (tl__shader_stage){GL_FRAGMENT_SHADER, src->fs, NULL};
     }
     pd.defines = defs;
-    pd.define_count = tl__define_list(defines, buf, sizeof buf, units, defs);
+    pd.define_count = tl__define_list(defines, units, buf, sizeof buf, unit_text, defs);
     char log[2048];
     GLuint p = 0;
     res = tl__program_build(&r->gl, &pd, &p, log, sizeof log);

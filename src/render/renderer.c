@@ -443,8 +443,8 @@ void tl_renderer_get_options(const tl_renderer *r, tl_renderer_options *options)
 
 static tl_result tl__app_check(tl_renderer *r, const tl_app_pass_desc *d, int *anchor)
 {
-    const uint32_t writable = TL_TARGET_BIT(TL_TARGET_HDR) | TL_TARGET_BIT(TL_TARGET_OUTPUT);
-    const uint32_t all = TL_TARGET_BIT(TL_TARGET_COUNT) - 1u;
+    const tl_target_set writable = TL_TARGET_BIT(TL_TARGET_HDR) | TL_TARGET_BIT(TL_TARGET_OUTPUT);
+    const tl_target_set all = TL_TARGET_BIT(TL_TARGET_COUNT) - 1u;
     tl__device *dev = &r->dev;
     const tl__graph *g = &r->graph;
     if (!d->name || !d->name[0] || strlen(d->name) > 31 || !d->execute)

@@ -62,7 +62,7 @@ void tl__queries_destroy(tl__device *dev, tl__queries *r)
 
 /* ---- bytes moved ----------------------------------------------------------------------------- */
 
-static double tl__bpp(const tl__slot_plan *p, uint32_t bits)
+static double tl__bpp(const tl__slot_plan *p, tl_target_set bits)
 {
     double b = 0.0;
     for (int t = 0; t < TL_TARGET_COUNT; t++)
@@ -84,7 +84,7 @@ static uint32_t tl__attribute_bytes(uint32_t attrs)
 static double tl__pass_bytes(const tl__slot_plan *p, const tl__pass_decl *d, double frags, size_t indices,
                              size_t instances)
 {
-    const uint32_t depth_bit = TL_TARGET_BIT(TL_TARGET_DEPTH);
+    const tl_target_set depth_bit = TL_TARGET_BIT(TL_TARGET_DEPTH);
     double pixels = (double)p->width * p->height, depth = p->target_bytes_per_pixel[TL_TARGET_DEPTH];
     double per_frag = tl__bpp(p, d->samples) + 4.0 * tl__bpp(p, d->neighbourhood);
     if (d->state.depth_test && !(d->samples & depth_bit)) per_frag += depth;

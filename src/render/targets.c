@@ -6,9 +6,8 @@
 #include "pass.h"
 
 /* A target samples on texture unit = its id: the material textures' units come after them. */
-_Static_assert((int)TL_TARGET_COUNT <= (int)TL__UNIT_ALBEDO_TEXTURE, "target texture units overlap the material textures'");
 /* TL_TARGET_BIT sets are 32 bits */
-_Static_assert((int)TL_TARGET_COUNT <= 32, "more targets than TL_TARGET_BIT sets hold");
+_Static_assert((int)TL_TARGET_COUNT <= 64, "more targets than a tl_target_set holds");
 
 void tl__target_defs(const tl__target_def *out[TL_TARGET_COUNT])
 {

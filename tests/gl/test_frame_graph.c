@@ -633,7 +633,7 @@ static void check_plan_memory(const tl_frame_plan *p, int keep_all, size_t *bad)
     *bad += keep_all && p->allocated_bytes_per_pixel != p->bytes_per_pixel;
     /* every pass writes something a later pass reads, or the output */
     for (size_t i = 0; i < p->pass_count; i++) {
-        uint32_t later = BIT(TL_TARGET_OUTPUT);
+        tl_target_set later = BIT(TL_TARGET_OUTPUT);
         for (size_t j = i + 1; j < p->pass_count; j++) later |= p->passes[j].reads;
         *bad += !(p->passes[i].writes & later);
         *bad += (p->passes[i].clears & ~p->passes[i].writes) != 0;

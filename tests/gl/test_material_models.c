@@ -195,7 +195,7 @@ TL_TEST(material_models_clearcoat_sums_plan)
         tl_scene_feature_set f = {.point_lights = lights[k], .has_specular = 1, .has_microfacet = 1, .material_models = all};
         coat_plan(&f, TL_CLEARCOAT_APPROXIMATE, 1.0f, &a);
         coat_plan(&f, TL_CLEARCOAT_SUMS, 1.0f, &b);
-        uint32_t coat = TL_TARGET_BIT(TL_TARGET_COAT_GLOSS) | TL_TARGET_BIT(TL_TARGET_LIGHT_COAT);
+        tl_target_set coat = TL_TARGET_BIT(TL_TARGET_COAT_GLOSS) | TL_TARGET_BIT(TL_TARGET_LIGHT_COAT);
         TL_CHECK_EQ_U(a.targets & coat, 0);
         TL_CHECK_EQ_U(b.targets & coat, coat);
         TL_CHECK_EQ_U(b.target_bytes_per_pixel[TL_TARGET_COAT_GLOSS], 1);

@@ -9,7 +9,7 @@
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
 
-#define BIT(t) (1u << (t))
+#define BIT(t) TL_TARGET_BIT(t)
 
 #include "modes_reference.h"
 #include "render_fixture.h"
@@ -72,9 +72,9 @@ TL_TEST(plan_rules_exhaustive)
             TL_CHECK(has_pass(&p, TL_PASS_FORWARD) == (mode == TL_MODE_FORWARD));
             /* every target read is allocated and written by an earlier pass; every target
              * allocated is read by some pass or is the output */
-            uint32_t written = 0, read = 0;
+            tl_target_set written = 0, read = 0;
             for (size_t i = 0; i < p.pass_count; i++) {
-                uint32_t reads = p.passes[i].reads & ~BIT(TL_TARGET_DEPTH);
+                tl_target_set reads = p.passes[i].reads & ~BIT(TL_TARGET_DEPTH);
                 TL_CHECK((reads & ~written) == 0);
                 TL_CHECK((p.passes[i].writes & ~p.targets) == 0);
                 written |= p.passes[i].writes;

@@ -481,7 +481,7 @@ TL_TEST(zero_renderer_desc_only_the_loader)
     static tl_frame_plan p;
     TL_CHECK(tl_renderer_get_plan(r, &p) == TL_OK);
     TL_CHECK(p.mode == TL_MODE_THIN_LPP && p.width == 1280 && p.height == 720);
-    uint32_t effects = TL_TARGET_BIT(TL_TARGET_AO_RAW) | TL_TARGET_BIT(TL_TARGET_AO) | TL_TARGET_BIT(TL_TARGET_DOF) |
+    tl_target_set effects = TL_TARGET_BIT(TL_TARGET_AO_RAW) | TL_TARGET_BIT(TL_TARGET_AO) | TL_TARGET_BIT(TL_TARGET_DOF) |
                        TL_TARGET_BIT(TL_TARGET_BLOOM) | TL_TARGET_BIT(TL_TARGET_SSR);
     TL_CHECK_EQ_U(p.targets & effects, 0);
     int fxaa = 0;
