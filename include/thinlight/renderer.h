@@ -493,6 +493,7 @@ typedef enum tl_pass {
     TL_PASS_MSAA_CLASSIFY, /**< MSAA per-sample edges: the pixels whose samples differ in depth or normal, into msaa.edges */
     TL_PASS_LIGHTS_SAMPLES, /**< MSAA per-sample edges: the light pass again, per sample, on edge pixels only */
     TL_PASS_SHADOW_DEBUG,  /**< tl_renderer_options.shadow_debug: the shadow term and cascade of each pixel, into shadow.debug */
+    TL_PASS_SHADOWS,       /**< the casting lights' changed views rendered into the shadow atlas (first in the frame) */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
@@ -531,6 +532,9 @@ typedef enum tl_target_id {
     TL_TARGET_SHADOW_DEBUG,   /**< tl_renderer_options.shadow_debug: RGBA16F, shadow-only term, its weight, cascade, surface */
     TL_TARGET_COAT_GLOSS,     /**< thin-lpp, TL_CLEARCOAT_SUMS: R8, a clearcoat's coat gloss (1 + 254 gloss; 0: no coat) */
     TL_TARGET_LIGHT_COAT,     /**< thin-lpp, TL_CLEARCOAT_SUMS: the coat's specular sum S1 + S2 at its roughness */
+    TL_TARGET_SHADOW_ATLAS,   /**< with casting lights: the shadow atlas (reversed D32F, tl_shadow_desc.atlas_size
+                                   square; it keeps unchanged maps from frame to frame; read it with
+                                   tl_renderer_read_shadow_atlas) */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -684,7 +688,7 @@ typedef struct tl_frame_stats {
     uint64_t pass_fragments[TL_PASS_COUNT]; /**< fragments that passed the depth test (samples-passed query) */
     double pass_bytes[TL_PASS_COUNT];   /**< estimate of bytes moved per pass (docs/bandwidth.md) */
     double bytes_moved;                 /**< sum of pass_bytes */
-    double gpu_ms;                      /**< sum of pass_ms, plus shadow_ms when shadow maps were rendered */
+    double gpu_ms;                      /**< sum of pass_ms and app_pass_ms (the shadows pass included) */
     double cpu_ms;                      /**< CPU time of the calling thread in the render call, issuing commands
                                              (thread CPU clock, before any wait for statistics; on llvmpipe it
                                              includes Mesa's vertex processing and binning, which run there) */
@@ -714,8 +718,8 @@ typedef struct tl_frame_stats {
     uint32_t shadow_maps_rendered;      /**< atlas views (cascades, cube faces, spot maps) rendered this frame */
     uint32_t shadow_maps_cached;        /**< atlas views kept from an earlier frame (nothing in range changed) */
     size_t shadow_atlas_bytes;          /**< the shadow atlas's memory (0 without casting lights) */
-    double shadow_ms;                   /**< GPU time of this frame's shadow-map rendering (timestamp queries of
-                                             the frame; part of gpu_ms); 0 when no map was rendered; -1: unavailable */
+    double shadow_ms;                   /**< GPU time of this frame's shadow-map rendering: pass_ms[TL_PASS_SHADOWS]
+                                             when a map was rendered, 0 when every map was cached; -1: unavailable */
     uint64_t msaa_edge_pixels;          /**< MSAA per-sample edges: pixels lit per sample (msaa-classify's count) */
     double msaa_edge_fraction;          /**< msaa_edge_pixels over the frame's pixels */
 } tl_frame_stats;

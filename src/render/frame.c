@@ -37,7 +37,7 @@ static void tl__run_app(tl_renderer *r, const tl__compiled_pass *cp, const tl_vi
     for (int t = 0; t < TL_TARGET_COUNT; t++) /* storage buffers: the tile headers (renderer.h) */
         if (cp->plan->reads & TL_TARGET_BIT(t))
             ctx.textures[t] = !g->plan.targets[t]->buffer_bytes ? g->targets[t].texture
-                              : t == TL_TARGET_LIGHT_FIXUP ? r->lights.fixup.buffer : r->lights.tiles.headers;
+                                                                 : tl__lights_buffer(&r->lights, (tl_target_id)t);
     const tl__app_pass *a = &g->apps[cp->app];
     tl__state_program(&dev->gl, &dev->state, 0);
     tl__state_vertex_array(&dev->gl, &dev->state, 0);
@@ -49,7 +49,7 @@ static void tl__run_app(tl_renderer *r, const tl__compiled_pass *cp, const tl_vi
 /* What a built-in pass's execute step gets: what its declaration resolved to, and the services its
  * definition asked for. */
 static void tl__pass_ctx_make(tl_renderer *r, const tl__compiled_pass *cp, const GLuint *queries, int to_caller,
-                              tl__pass_out *out, tl__pass_ctx *ctx)
+                              tl__pass_out *out, tl_frame_stats *st, tl__pass_ctx *ctx)
 {
     memset(ctx, 0, sizeof *ctx);
     ctx->gl = &r->dev.gl;
@@ -79,6 +79,11 @@ static void tl__pass_ctx_make(tl_renderer *r, const tl__compiled_pass *cp, const
     ctx->out = out;
     if (cp->def->services & TL__PASS_SCENE) ctx->scene = &r->scene;
     if (cp->def->services & TL__PASS_LIGHTS) ctx->lights = &r->lights;
+    if (cp->def->services & TL__PASS_SHADOWS) {
+        ctx->shadows = &r->shadows;
+        ctx->device = &r->dev;
+        ctx->stats = st;
+    }
 }
 
 /* A pass's parameter block into the frame's stream, bound at TL_UBO_PASS while it runs. */
@@ -103,14 +108,14 @@ size_t tl__params_bytes(const tl_renderer *r, const tl__compiled_pass *cp, size_
 
 /* One pass: everything but its queries. `v` is NULL outside a frame (apply_fxaa). */
 static void tl__pass_body(tl_renderer *r, const tl__compiled_pass *cp, const GLuint *queries,
-                          const tl_render_output *out, const tl__view *v, tl__pass_out *po)
+                          const tl_render_output *out, const tl__view *v, tl__pass_out *po, tl_frame_stats *st)
 {
     tl__device *dev = &r->dev;
     const GladGLContext *gl = &dev->gl;
     GLsizei w = (GLsizei)r->desc.width, h = (GLsizei)r->desc.height;
     int to_caller = out && cp->writes_output;
     tl__pass_ctx ctx;
-    if (cp->app < 0) tl__pass_ctx_make(r, cp, queries, to_caller, po, &ctx);
+    if (cp->app < 0) tl__pass_ctx_make(r, cp, queries, to_caller, po, st, &ctx);
     if (cp->app < 0 && cp->def->params_size) tl__pass_params(r, cp->def, v);
     if (cp->decl->compute) { /* no framebuffer, clears or raster state */
         for (uint8_t k = 0; k < cp->bind_count; k++) gl->BindTextureUnit(k, cp->textures[k]);
@@ -145,7 +150,7 @@ static void tl__run(tl_renderer *r, const tl__compiled_pass *cp, tl__frame_recor
     tl__gl_debug_push(gl, cp->plan->name);
     if (slot && r->queries.timestamps) gl->QueryCounter(slot->time[index][0], GL_TIMESTAMP);
     if (slot && !own) gl->BeginQuery(GL_SAMPLES_PASSED, slot->samples[index][0]);
-    tl__pass_body(r, cp, slot && own ? slot->samples[index] : NULL, out, v, &po);
+    tl__pass_body(r, cp, slot && own ? slot->samples[index] : NULL, out, v, &po, &rec->st);
     if (slot && !own) gl->EndQuery(GL_SAMPLES_PASSED);
     if (slot && r->queries.timestamps) gl->QueryCounter(slot->time[index][1], GL_TIMESTAMP);
     tl__gl_debug_pop(gl);
@@ -161,14 +166,19 @@ void tl__run_pass(tl_renderer *r, const tl__compiled_pass *cp, tl__frame_record 
 
 /* ---- per-frame data ---------------------------------------------------------------------------- */
 
+/* The passes' CPU steps (tl__pass_def.prepare), then the lights' data they may add to. */
 static tl_result tl__prepare(tl_renderer *r, const tl__view *v, tl__frame_record *rec)
 {
     rec->st.objects_drawn = (uint32_t)tl__visibility(&r->scene, v);
     r->lights.shadow_slots = NULL;
-    if (r->graph.plan.pub.shadow_lights) { /* the lights' shadow slots before their data is made */
-        tl_result res = tl__shadows_prepare(&r->dev, &r->shadows, &r->lights, &r->scene, v, &r->desc.options, &rec->st);
+    for (size_t i = 0; i < r->graph.pass_count; i++) {
+        const tl__compiled_pass *cp = &r->graph.passes[i];
+        if (cp->app >= 0 || !cp->def->prepare) continue;
+        tl__pass_out po = {0};
+        tl__pass_ctx ctx;
+        tl__pass_ctx_make(r, cp, NULL, 0, &po, &rec->st, &ctx);
+        tl_result res = cp->def->prepare(&ctx, v, &r->desc.options);
         if (res != TL_OK) return res;
-        r->lights.shadow_slots = r->shadows.slots;
     }
     return tl__lights_prepare(&r->dev, &r->lights, &r->scene, v, r->graph.light_data, r->desc.options.fullscreen_lights,
                               r->frame_index, &rec->st, &rec->stream_bytes);
@@ -227,13 +237,6 @@ static tl_result tl__issue(tl_renderer *r, const tl__view *v, const tl_render_ou
     if (res == TL_OK) res = tl__upload(r, v, rec);
     if (res != TL_OK) return res;
     tl__state_enter(gl, &dev->state, TL__TEXTURE_UNITS_USED);
-    if (r->graph.plan.pub.shadow_lights) {
-        int timed = slot && r->queries.timestamps;
-        if (timed) gl->QueryCounter(slot->shadow_time[0], GL_TIMESTAMP);
-        tl__shadows_render(dev, &r->shadows, &r->scene, r->frame_index, &rec->st);
-        if (timed) gl->QueryCounter(slot->shadow_time[1], GL_TIMESTAMP);
-        if (slot) slot->shadow_timed = timed;
-    }
     tl__environment_bind(gl, &r->env, &r->desc.options.environment);
     for (size_t i = 0; i < r->graph.pass_count; i++) tl__run(r, &r->graph.passes[i], rec, i, out, v, slot);
     tl__state_reset(gl, &dev->state, TL__TEXTURE_UNITS_USED, TL__BUFFER_BINDINGS_USED, TL__IMAGE_UNITS_USED);

@@ -191,7 +191,7 @@ static tl_result tl__graph_pass(tl__device *dev, tl__graph *r, tl__compiled_pass
         colors[n++] = &r->targets[t];
     }
     cp->clear_depth = (d->clears & TL_TARGET_BIT(d->depth_target)) != 0;
-    cp->writes_output = (d->writes & TL_TARGET_BIT(TL_TARGET_OUTPUT)) != 0;
+    cp->writes_output = (d->writes & TL_TARGET_BIT(tl__target_frame_output())) != 0;
     tl_result res = tl__graph_units(dev, r, cp, d);
     if (res != TL_OK || d->compute) return res;
     char label[64], msg[256];
@@ -224,14 +224,16 @@ tl_result tl__graph_programs(tl__device *dev, tl__graph *r)
     return TL_OK;
 }
 
-/* apply_fxaa's luma pass: the caller's image (in OUTPUT) into LDR. */
+/* apply_fxaa's luma pass (the caller's image, in the frame's output, into what FXAA reads), when
+ * the plan has the targets it declares. */
 static tl_result tl__graph_luma(tl__device *dev, tl__graph *r)
 {
-    if (!r->targets[TL_TARGET_LDR].texture) return TL_OK;
     tl__plan_input in;
     memset(&in, 0, sizeof in);
     memset(&r->luma_decl, 0, sizeof r->luma_decl);
     tl__pass_luma.declare(&in, &r->luma_decl);
+    for (int t = 0; t < TL_TARGET_COUNT; t++)
+        if (((r->luma_decl.writes | r->luma_decl.samples) & TL_TARGET_BIT(t)) && !r->targets[t].texture) return TL_OK;
     memset(&r->luma_plan, 0, sizeof r->luma_plan);
     r->luma_plan.pass = TL_PASS_COUNT;
     snprintf(r->luma_plan.name, sizeof r->luma_plan.name, "%s", tl__pass_luma.name);
@@ -242,13 +244,16 @@ static tl_result tl__graph_luma(tl__device *dev, tl__graph *r)
     return tl__graph_pass(dev, r, &r->luma, &r->luma_plan, &r->luma_decl);
 }
 
-/* The multisampled HDR's sample positions (GL_SAMPLE_POSITION of a framebuffer holding it). */
+/* The sample positions of the plan's multisampled colour targets (GL_SAMPLE_POSITION of a
+ * framebuffer holding the first of them). */
 static tl_result tl__graph_sample_positions(tl__device *dev, tl__graph *r)
 {
-    const tl__target *hdr = &r->targets[TL_TARGET_HDR];
+    const tl__target *hdr = NULL;
+    for (int t = 0; t < TL_TARGET_COUNT && !hdr; t++)
+        if (r->targets[t].texture && r->targets[t].samples > 1 && !r->plan.targets[t]->depth) hdr = &r->targets[t];
     memset(r->sample_positions, 0, sizeof r->sample_positions);
     r->samples = r->plan.pub.msaa;
-    if (r->plan.pub.msaa <= 1 || !hdr->texture) return TL_OK;
+    if (r->plan.pub.msaa <= 1 || !hdr) return TL_OK;
     const GladGLContext *gl = &dev->gl;
     GLuint fbo = 0;
     char msg[256];

@@ -165,3 +165,15 @@ void tl__lights_frame_block(const tl__lights *l, unsigned needs, uint32_t counts
     tiles[2] = l->tiles.y;
     tiles[3] = (uint32_t)l->tiles.capacity;
 }
+
+GLuint tl__lights_buffer(const tl__lights *l, tl_target_id t)
+{
+    return t == TL_TARGET_LIGHT_LISTS ? l->tiles.headers : t == TL_TARGET_LIGHT_FIXUP ? l->fixup.buffer : 0u;
+}
+
+void tl__lights_read_counters(tl__device *dev, tl__lights *l, tl_target_set targets, uint32_t pixels,
+                              tl_frame_stats *st)
+{
+    if (targets & TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS)) tl__tiles_collect(dev, &l->tiles, st);
+    if (targets & TL_TARGET_BIT(TL_TARGET_LIGHT_FIXUP)) tl__fixup_collect(dev, &l->fixup, pixels, st);
+}

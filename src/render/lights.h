@@ -139,4 +139,11 @@ void tl__fixup_end(const GladGLContext *gl, tl__fixup *f, uint64_t frame);
 /* The re-lit count of `frame` (waiting for its fence) into the statistics. */
 void tl__fixup_collect(tl__device *dev, tl__fixup *f, uint32_t pixels, tl_frame_stats *st);
 
+/* lights.c: the storage targets the lights module owns (the tile lists, the re-lit count): the GL
+ * buffer an application pass is given for one (0 for other targets), and the counters of the
+ * frame in the statistics for those a plan has (`targets`). */
+GLuint tl__lights_buffer(const tl__lights *l, tl_target_id t);
+void tl__lights_read_counters(tl__device *dev, tl__lights *l, tl_target_set targets, uint32_t pixels,
+                              tl_frame_stats *st);
+
 #endif

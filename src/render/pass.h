@@ -20,6 +20,7 @@
 
 typedef struct tl__scene_gpu tl__scene_gpu; /* scene_gpu.h */
 typedef struct tl__lights tl__lights;       /* lights.h */
+typedef struct tl__shadows tl__shadows;     /* shadows.h */
 typedef struct tl__view tl__view;           /* view.h */
 
 /* How a mode lays out the frame: one row per mode (modes.c), read by the passes' declare steps. */
@@ -86,7 +87,8 @@ typedef struct tl__pass_decl {
     tl_target_set neighbourhood; /* samples read as a 5-texel cross per fragment (bytes estimate) */
     uint8_t attach_depth;  /* the depth target is attached (tested or written) */
     uint8_t depth_target;  /* which: a tl_target_id, 0 (TL_TARGET_DEPTH) or TL_TARGET_LIGHT_DEPTH */
-    uint8_t compute;       /* a compute pass: no framebuffer, no clears, no raster state */
+    uint8_t compute;       /* a compute pass, or one that draws into its module's own framebuffer: no
+                              framebuffer, clears or raster state of the graph's */
     uint8_t light_data;    /* TL__LIGHTS_* it reads */
     uint8_t split_writes;  /* it renders its colour writes one at a time: a framebuffer per write too */
     tl_target_set images;  /* writes bound as images (compute passes) */
@@ -137,10 +139,22 @@ typedef struct tl__pass_ctx {
     tl__pass_out *out;
     const tl__scene_gpu *scene;   /* TL__PASS_SCENE: the visible objects, to draw */
     tl__lights *lights;           /* TL__PASS_LIGHTS: the frame's light data */
+    tl__shadows *shadows;         /* TL__PASS_SHADOWS: the shadow module, */
+    tl__device *device;           /* the device it creates its GL objects on, */
+    tl_frame_stats *stats;        /* and the frame's statistics it fills */
 } tl__pass_ctx;
 
-/* Services a pass's definition asks for (tl__pass_def.services). */
-enum { TL__PASS_SCENE = 1u, TL__PASS_LIGHTS = 2u };
+/* What a pass that the options turn on (tl__pass_def.wanted) makes the frame give up
+ * (tl__pass_def.refuses): the planner derives its refusals from these, naming no pass. */
+enum {
+    TL__REFUSES_MSAA = 1u,   /* it reads a one-sample HDR and depth: no multisampled frame */
+    TL__REFUSES_STIPPLE = 2u /* it reads depth after the stipple's transparent layers wrote theirs */
+};
+
+/* Services a pass's definition asks for (tl__pass_def.services): the scene on the GPU, the frame's
+ * light data, the shadow module with the device (its atlas and buffers) and the frame's statistics
+ * (what the pass did beyond its draws). */
+enum { TL__PASS_SCENE = 1u, TL__PASS_LIGHTS = 2u, TL__PASS_SHADOWS = 4u };
 
 /* A pass's slice of tl_renderer_options, e.g. `TL__OPTIONS(ssao)` in its definition. */
 #define TL__OPTIONS(field)                                                                        \
@@ -166,11 +180,27 @@ typedef struct tl__pass_def {
     void (*declare)(const tl__plan_input *in, tl__pass_decl *d);
     void (*permute)(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out);
     void (*execute)(const tl__pass_ctx *ctx);
-    /* optional: files its own queries' results (query_count of them) into the stats */
-    void (*collect)(const uint64_t *results, tl_frame_stats *st);
+    /* optional: files its own queries' results (query_count of them; else its samples-passed count,
+     * `fragments`, against the frame's `pixels`) and its GPU time `ms` into the stats */
+    void (*collect)(const uint64_t *results, uint64_t fragments, uint64_t pixels, double ms, tl_frame_stats *st);
     uint8_t query_count;
     uint8_t services; /* TL__PASS_* its execute step reads */
+    /* optional: whether the (resolved) options turn the pass on, and what the frame then gives up
+     * (TL__REFUSES_*) */
+    int (*wanted)(const tl_renderer_options *o);
+    uint8_t refuses;
+    /* optional: its CPU work before the frame's data is uploaded (the shadows pass chooses the
+     * casting lights' views), with the services it asked for, the frame's view and options */
+    tl_result (*prepare)(const tl__pass_ctx *ctx, const tl__view *v, const tl_renderer_options *o);
+    const char *refuses_why[2]; /* why, per TL__REFUSES_* bit in order: MSAA's, the stipple's */
 } tl__pass_def;
+
+/* pass_shadows.c: the plan's casting lights and the lighting programs' shadow switches. */
+void tl__shadows_plan(tl__plan_input *in);
+
+/* pass_table.c: why the first pass the options turn on refuses `what` (one TL__REFUSES_* bit), or
+ * NULL when none does. */
+const char *tl__passes_refuse(const tl_renderer_options *o, unsigned what);
 
 /* What the light pass reads and writes in a mode, whichever strategy gathers the lights
  * (pass_lights.c; the tiled pass uses it too). */

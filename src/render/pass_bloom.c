@@ -110,6 +110,8 @@ static void tl__bloom_execute(const tl__pass_ctx *ctx)
     for (uint32_t k = n - 1; k-- > 0;) tl__bloom_draw(ctx, ctx->programs[2], k, lv[k + 1]);
 }
 
+static int tl__bloom_wanted(const tl_renderer_options *o) { return o->bloom.enabled; }
+
 const tl__pass_def tl__pass_bloom = {
     .id = TL_PASS_BLOOM,
     .name = "bloom",
@@ -124,4 +126,7 @@ const tl__pass_def tl__pass_bloom = {
     .declare = tl__bloom_declare,
     .permute = tl__bloom_permute,
     .execute = tl__bloom_execute,
+    .wanted = tl__bloom_wanted,
+    .refuses = TL__REFUSES_MSAA,
+    .refuses_why = {"bloom reads a one-sample HDR", NULL},
 };

@@ -39,7 +39,8 @@ static const tl__target_def tl__target_depth_msaa = {TL__TARGET(DEPTH_MSAA, "dep
                                                      .samples_of = tl__msaa_samples, .store = TL__STORE_GBUFFER,
                                                      .depth = 1};
 static const tl__target_def tl__target_rt0 = {TL__TARGET(RT0, "rt0"), .format_of = tl__rt0_format,
-                                              .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
+                                              .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER,
+                                              .read_rt0 = 1};
 static const tl__target_def tl__target_rt1 = {TL__TARGET(RT1, "rt1"), .format = GL_RGBA8,
                                               .samples_of = tl__gbuffer_samples, .store = TL__STORE_GBUFFER};
 static const tl__target_def tl__target_fat_position = {TL__TARGET(FAT_POSITION, "fat.position"), .format = GL_RGBA32F,
@@ -154,9 +155,10 @@ const tl__pass_def tl__pass_gbuffer = {
 
 /* The count of the pixels (MSAA: samples) the material pass re-lit (fixup.c); the pixels themselves
  * are lit where they are found, from their tile's lists or their object's. */
-static size_t tl__fixup_bytes(const tl_frame_plan *p)
+static size_t tl__fixup_bytes(const tl_frame_plan *p, const tl_renderer_options *o)
 {
     (void)p;
+    (void)o;
     return 16u;
 }
 

@@ -81,6 +81,8 @@ static void tl__fog_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
              in->o->fog.noise > 0.0f ? " TL_FOG_NOISE" : "");
 }
 
+static int tl__fog_wanted(const tl_renderer_options *o) { return o->fog.mode != TL_FOG_OFF; }
+
 const tl__pass_def tl__pass_fog = {
     .id = TL_PASS_FOG,
     .name = "fog",
@@ -92,6 +94,9 @@ const tl__pass_def tl__pass_fog = {
     .declare = tl__fog_declare,
     .permute = tl__fog_permute,
     .execute = tl__draw_fullscreen,
+    .wanted = tl__fog_wanted,
+    .refuses = TL__REFUSES_MSAA | TL__REFUSES_STIPPLE,
+    .refuses_why = {"fog reads a one-sample depth and HDR", "fog reads depth after the layers"},
 };
 
 /* ---- depth of field -------------------------------------------------------------------------- */
@@ -146,6 +151,8 @@ static void tl__dof_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
     snprintf(out->slot[0], sizeof out->slot[0], "TL_DOF_SAMPLES=%u", in->o->dof.samples);
 }
 
+static int tl__dof_wanted(const tl_renderer_options *o) { return o->dof.enabled; }
+
 const tl__pass_def tl__pass_dof = {
     .id = TL_PASS_DOF,
     .name = "dof",
@@ -158,6 +165,9 @@ const tl__pass_def tl__pass_dof = {
     .declare = tl__dof_declare,
     .permute = tl__dof_permute,
     .execute = tl__draw_fullscreen,
+    .wanted = tl__dof_wanted,
+    .refuses = TL__REFUSES_MSAA | TL__REFUSES_STIPPLE,
+    .refuses_why = {"depth of field reads a one-sample depth and HDR", "depth of field reads depth after the layers"},
 };
 
 static void tl__dof_apply_declare(const tl__plan_input *in, tl__pass_decl *d)

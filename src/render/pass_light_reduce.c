@@ -14,7 +14,8 @@ static const tl__target_def tl__target_light_depth = {TL__TARGET(LIGHT_DEPTH, "l
                                                       .format_of = tl__depth_format, .shift_of = tl__light_shift,
                                                       .store = TL__STORE_GBUFFER, .depth = 1};
 static const tl__target_def tl__target_light_rt0 = {TL__TARGET(LIGHT_RT0, "light.rt0"), .format_of = tl__rt0_format,
-                                                    .shift_of = tl__light_shift, .store = TL__STORE_GBUFFER};
+                                                    .shift_of = tl__light_shift, .store = TL__STORE_GBUFFER,
+                                                    .read_rt0 = 1};
 
 /* Where in its block the kept sample is: the light pass lights that very pixel's position. */
 static const tl__target_def tl__target_light_offset = {TL__TARGET(LIGHT_OFFSET, "light.offset"), .format = GL_R8,

@@ -157,8 +157,12 @@ static void tl__lights_execute(const tl__pass_ctx *ctx)
     }
 }
 
-static void tl__lights_collect(const uint64_t *results, tl_frame_stats *st)
+static void tl__lights_collect(const uint64_t *results, uint64_t fragments, uint64_t pixels, double ms,
+                               tl_frame_stats *st)
 {
+    (void)fragments;
+    (void)pixels;
+    (void)ms;
     for (int k = 0; k < TL__LIGHT_KINDS; k++) {
         st->light_fragments[k + 1] = results[k];
         st->light_pairs += results[k];

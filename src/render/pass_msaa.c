@@ -45,6 +45,16 @@ static void tl__classify_permute(const tl__plan_input *in, const tl__pass_decl *
     snprintf(out->slot[0], sizeof out->slot[0], "TL_GBUFFER_SAMPLES=%u %s%s", (unsigned)in->msaa, in->rt0_define, material);
 }
 
+/* It writes the edge pixels alone: its samples-passed count is theirs. */
+static void tl__classify_collect(const uint64_t *results, uint64_t fragments, uint64_t pixels, double ms,
+                               tl_frame_stats *st)
+{
+    (void)results;
+    (void)ms;
+    st->msaa_edge_pixels = fragments;
+    st->msaa_edge_fraction = pixels ? (double)fragments / (double)pixels : 0.0;
+}
+
 const tl__pass_def tl__pass_msaa_classify = {
     .id = TL_PASS_MSAA_CLASSIFY,
     .name = "msaa-classify",
@@ -53,6 +63,7 @@ const tl__pass_def tl__pass_msaa_classify = {
     .declare = tl__classify_declare,
     .permute = tl__classify_permute,
     .execute = tl__draw_fullscreen,
+    .collect = tl__classify_collect,
 };
 
 /* ---- lights-samples: the light pass again, per sample, on the edge pixels ---------------------- */

@@ -8,7 +8,7 @@
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
 static const tl__target_def tl__target_ldr = {TL__TARGET(LDR, "ldr"), .format = GL_RGBA8};
-static const tl__target_def tl__target_output = {TL__TARGET(OUTPUT, "output"), .format = GL_RGBA8};
+static const tl__target_def tl__target_output = {TL__TARGET(OUTPUT, "output"), .format = GL_RGBA8, .frame_output = 1};
 
 /* std140 block tl_tonemap_block of shaders/tonemap.frag.glsl. */
 typedef struct tl__tonemap_block {

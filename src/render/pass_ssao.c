@@ -80,6 +80,8 @@ static void tl__ssao_permute(const tl__plan_input *in, const tl__pass_decl *d, t
              in->o->ssao.method == TL_SSAO_HEMISPHERE ? "TL_SSAO_HEMISPHERE" : "TL_SSAO_DISC", in->o->ssao.samples, source);
 }
 
+static int tl__ssao_wanted(const tl_renderer_options *o) { return o->ssao.method != TL_SSAO_OFF; }
+
 const tl__pass_def tl__pass_ssao = {
     .id = TL_PASS_SSAO,
     .name = "ssao",
@@ -92,6 +94,9 @@ const tl__pass_def tl__pass_ssao = {
     .declare = tl__ssao_declare,
     .permute = tl__ssao_permute,
     .execute = tl__draw_fullscreen,
+    .wanted = tl__ssao_wanted,
+    .refuses = TL__REFUSES_MSAA,
+    .refuses_why = {"SSAO reads a one-sample depth and HDR", NULL},
 };
 
 /* ---- depth-aware blur ------------------------------------------------------------------------ */

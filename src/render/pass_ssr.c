@@ -75,6 +75,9 @@ static void tl__ssr_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
              in->o->ssr.refine, tl__ssr_fat(in) ? "TL_SSAO_FAT" : in->rt0_define);
 }
 
+/* Forward runs no reflections: they cost it nothing (no MSAA given up). */
+static int tl__ssr_wanted(const tl_renderer_options *o) { return o->ssr.enabled && o->mode != TL_MODE_FORWARD; }
+
 const tl__pass_def tl__pass_ssr = {
     .id = TL_PASS_SSR,
     .name = "ssr",
@@ -87,6 +90,9 @@ const tl__pass_def tl__pass_ssr = {
     .declare = tl__ssr_declare,
     .permute = tl__ssr_permute,
     .execute = tl__draw_fullscreen,
+    .wanted = tl__ssr_wanted,
+    .refuses = TL__REFUSES_MSAA | TL__REFUSES_STIPPLE,
+    .refuses_why = {"reflections read a one-sample depth and HDR", "reflections read depth after the layers"},
 };
 
 static void tl__ssr_apply_declare(const tl__plan_input *in, tl__pass_decl *d)

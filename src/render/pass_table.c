@@ -14,9 +14,10 @@ extern const tl__pass_def tl__pass_points_lines;
 extern const tl__pass_def tl__pass_sky;
 extern const tl__pass_def tl__pass_msaa_classify, tl__pass_lights_samples;
 extern const tl__pass_def tl__pass_shadow_debug;
+extern const tl__pass_def tl__pass_shadows;
 
 const tl__pass_def *const tl__pass_table[TL_PASS_COUNT] = {
-    &tl__pass_depth_prepass, &tl__pass_gbuffer,   &tl__pass_ssao,      &tl__pass_ssao_blur,   &tl__pass_ssao_apply,
+    &tl__pass_shadows,       &tl__pass_depth_prepass, &tl__pass_gbuffer,   &tl__pass_ssao,      &tl__pass_ssao_blur,   &tl__pass_ssao_apply,
     &tl__pass_stipple_depth, &tl__pass_stipple,
     &tl__pass_msaa_classify, &tl__pass_light_reduce,  &tl__pass_light_cull,    &tl__pass_lights,    &tl__pass_lights_tiled,
     &tl__pass_lights_samples, &tl__pass_material, &tl__pass_forward, &tl__pass_shadow_debug, &tl__pass_sky,
@@ -38,6 +39,15 @@ tl_result tl_pass_from_name(const char *name, tl_pass *pass)
     if (i < 0 || !pass) return TL_ERROR_INVALID_ARGUMENT;
     *pass = tl__pass_table[i]->id;
     return TL_OK;
+}
+
+const char *tl__passes_refuse(const tl_renderer_options *o, unsigned what)
+{
+    for (int i = 0; i < TL_PASS_COUNT; i++) {
+        const tl__pass_def *d = tl__pass_table[i];
+        if ((d->refuses & what) && d->wanted && d->wanted(o)) return d->refuses_why[what == TL__REFUSES_STIPPLE];
+    }
+    return NULL;
 }
 
 int tl__pass_table_find(const char *name)

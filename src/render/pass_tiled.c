@@ -11,8 +11,9 @@
 static int tl__tiled(const tl__plan_input *in) { return in->lights && in->strategy == TL_LIGHT_STRATEGY_TILED; }
 
 /* The light lists' bytes for a number of tiles: 4 counters, (offset, count) per tile, entries. */
-static size_t tl__light_lists_bytes(const tl_frame_plan *p)
+static size_t tl__light_lists_bytes(const tl_frame_plan *p, const tl_renderer_options *o)
 {
+    (void)o;
     size_t tiles = (size_t)p->tiles_x * p->tiles_y;
     return 16u + 8u * tiles + 4u * TL__TILE_START_ENTRIES * tiles;
 }

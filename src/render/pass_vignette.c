@@ -79,6 +79,8 @@ static void tl__vignette_execute(const tl__pass_ctx *ctx)
     ctx->out->draw_calls += 2;
 }
 
+static int tl__vignette_wanted(const tl_renderer_options *o) { return o->vignette.enabled; }
+
 const tl__pass_def tl__pass_vignette = {
     .id = TL_PASS_VIGNETTE,
     .name = "vignette",
@@ -92,4 +94,7 @@ const tl__pass_def tl__pass_vignette = {
     .declare = tl__vignette_declare,
     .permute = tl__vignette_permute,
     .execute = tl__vignette_execute,
+    .wanted = tl__vignette_wanted,
+    .refuses = TL__REFUSES_MSAA,
+    .refuses_why = {"the vignette blends over a one-sample HDR", NULL},
 };

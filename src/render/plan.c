@@ -68,18 +68,6 @@ static void tl__plan_lighting(tl__plan_input *in)
              in->fresnel == TL_FRESNEL_TWO_SUMS ? " TL_FRESNEL_SUMS" : in->fresnel == TL_FRESNEL_NV ? " TL_FRESNEL_NV" : "");
 }
 
-/* Shadows (docs/shadows.md): only with a casting light that some lighting pass evaluates; every
- * lighting program then has TL_SHADOWS (and TL_PCSS with that filter). Without one the plan is
- * exactly the plan without shadows. */
-static void tl__plan_shadows(tl__plan_input *in)
-{
-    if (!in->lights || !in->f.shadow_lights || in->o->shadows.disabled) return;
-    in->shadows = (uint32_t)in->f.shadow_lights;
-    size_t n = strlen(in->spec_define);
-    snprintf(in->spec_define + n, sizeof in->spec_define - n, " TL_SHADOWS%s",
-             in->o->shadows.filter == TL_SHADOW_FILTER_PCSS ? " TL_PCSS" : "");
-}
-
 /* Stipple or forward for the alpha-blended materials (docs/frame.md, "2d. Transparency through the
  * light buffer"). The stipple has TL_STIPPLE_LAYERS layers and the frame gives each visible blended
  * object its own, far to near (draw.c), so it fits in every view when the scene draws at most that
@@ -95,8 +83,8 @@ static void tl__plan_transparency(tl__plan_input *in)
     else if (in->light_shift) why = "the reduced light buffer would collapse the 2x2 stipple";
     else if (in->msaa > 1) why = "MSAA: the material pass's samples would split the 2x2 stipple";
     else if (!in->lights) why = "no lights: nothing to gather";
-    else if (o->fog.mode != TL_FOG_OFF || o->dof.enabled || o->ssr.enabled)
-        why = "fog, depth of field or reflections read depth after the layers";
+    else if (tl__passes_refuse(o, TL__REFUSES_STIPPLE))
+        why = tl__passes_refuse(o, TL__REFUSES_STIPPLE);
     if (why) {
         const char *lead = o->transparency == TL_TRANSPARENCY_FORWARD   ? ""
                            : o->transparency == TL_TRANSPARENCY_STIPPLE ? "stipple asked, but "
@@ -151,7 +139,7 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     tl__plan_strategy(in);
     in->spec = f->has_specular != 0;
     tl__plan_lighting(in);
-    tl__plan_shadows(in);
+    tl__shadows_plan(in);
     tl__plan_transparency(in);
     in->rt0_define = d->options.rt0 == TL_RT0_RGB10A2 ? "TL_RT0_RGB10A2" : "TL_RT0_RGBA8";
     tl__material_defines(f, in->material_defines, sizeof in->material_defines);
@@ -173,12 +161,17 @@ static void tl__add_pass(tl__plan *p, const tl__pass_def *def, int app, const tl
     snprintf(pp->name, sizeof pp->name, "%s", name);
 }
 
-static void tl__app_decl(const tl__app_pass *a, tl__pass_decl *d)
+/* An application pass: its reads sampled, the first depth target it reads attached (read-only). */
+static void tl__app_decl(const tl__plan *p, const tl__app_pass *a, tl__pass_decl *d)
 {
     memset(d, 0, sizeof *d);
     d->writes = a->desc.writes;
     d->reads = d->samples = a->desc.reads;
-    d->attach_depth = (a->desc.reads & TL__BIT(TL_TARGET_DEPTH)) != 0;
+    for (int t = 0; t < TL_TARGET_COUNT && !d->attach_depth; t++)
+        if (p->targets[t] && p->targets[t]->depth && (a->desc.reads & TL__BIT(t))) {
+            d->attach_depth = 1;
+            d->depth_target = (uint8_t)t;
+        }
     d->state.color_write = 1;
 }
 
@@ -187,7 +180,7 @@ static void tl__add_apps(tl__plan *p, const tl__app_pass *apps, size_t n, int an
     for (size_t k = 0; k < n; k++) {
         if (apps[k].anchor != anchor || apps[k].after != after) continue;
         tl__pass_decl d;
-        tl__app_decl(&apps[k], &d);
+        tl__app_decl(p, &apps[k], &d);
         tl__add_pass(p, NULL, (int)k, &d, apps[k].name);
     }
 }
@@ -263,7 +256,7 @@ static void tl__target_memory(const tl_renderer_desc *d, const tl__target_def *d
         size_t w = ti->width >> k, h = ti->height >> k;
         ti->bytes += (w ? w : 1u) * (h ? h : 1u) * bpp * ti->samples;
     }
-    if (def->buffer_bytes) ti->bytes = def->buffer_bytes(fp);
+    if (def->buffer_bytes) ti->bytes = def->buffer_bytes(fp, &d->options);
     ti->bytes_per_pixel = (uint32_t)((ti->bytes + px - 1) / px);
 }
 
@@ -424,13 +417,14 @@ tl_result tl__plan_build(const tl_renderer_desc *desc, const tl_scene_feature_se
     p->pub.width = d.width;
     p->pub.height = d.height;
     /* the output is read after the frame; kept targets too, when the plan has them at all */
-    tl_target_set kept = TL__BIT(TL_TARGET_OUTPUT) | (d.options.keep_targets & (TL__BIT(TL_TARGET_COUNT) - 1u));
+    const tl_target_id output = tl__target_frame_output();
+    tl_target_set kept = TL__BIT(output) | (d.options.keep_targets & TL__TARGETS_EVERY);
     tl__plan_choices(&in, &p->pub);
     tl__select(&in, apps, app_count, p);
     tl_target_set debug = 0; /* debug outputs: read after the frame, like the output */
     for (size_t i = 0; i < p->pub.pass_count; i++) debug |= p->decl[i].sinks;
     kept |= debug;
-    tl__cull_passes(p, TL__BIT(TL_TARGET_OUTPUT) | debug);
+    tl__cull_passes(p, TL__BIT(output) | debug);
     tl__lifetimes(p, &d, kept);
     tl__share_memory(p, &d.options);
     tl_result r = tl__programs(&in, p);

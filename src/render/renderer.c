@@ -124,7 +124,7 @@ static tl_result tl__create_objects(tl_renderer *r, const tl_renderer_desc *desc
     if (res != TL_OK) return res;
     r->dev.state.reversed = r->desc.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
     tl__light_volumes_create(&r->dev, &r->lights);
-    tl__queries_create(&r->dev, &r->queries, &r->lights.tiles, &r->lights.fixup);
+    tl__queries_create(&r->dev, &r->queries, &r->lights);
     /* until a scene arrives: the plan of an empty scene (tone map and FXAA targets) */
     res = tl__replan(r);
     GLenum e = r->dev.gl.GetError();
@@ -444,7 +444,7 @@ void tl_renderer_get_options(const tl_renderer *r, tl_renderer_options *options)
 static tl_result tl__app_check(tl_renderer *r, const tl_app_pass_desc *d, int *anchor)
 {
     const tl_target_set writable = TL_TARGET_BIT(TL_TARGET_HDR) | TL_TARGET_BIT(TL_TARGET_OUTPUT);
-    const tl_target_set all = TL_TARGET_BIT(TL_TARGET_COUNT) - 1u;
+    const tl_target_set all = TL__TARGETS_EVERY;
     tl__device *dev = &r->dev;
     const tl__graph *g = &r->graph;
     if (!d->name || !d->name[0] || strlen(d->name) > 31 || !d->execute)

@@ -41,5 +41,9 @@ tl_result tl__frame_wait(tl_renderer *r, tl_frame_stats *stats);
 size_t tl__params_bytes(const tl_renderer *r, const tl__compiled_pass *cp, size_t count);
 /* One compiled pass outside a frame (apply_fxaa). */
 void tl__run_pass(tl_renderer *r, const tl__compiled_pass *cp, tl__frame_record *rec, size_t index);
+/* readback.c: the size protocol of every readback (a NULL buffer asks; 1: go on and read), and the
+ * output target as it is. */
+int tl__size_check(tl_renderer *r, const void *dst, size_t *size, size_t need, const char *what, tl_result *res);
+tl_result tl__read_output(tl_renderer *r, uint8_t *rgba, size_t size);
 
 #endif

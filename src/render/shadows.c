@@ -2,8 +2,8 @@
  * sampler state, its framebuffer, the lookup block (shadow.glsl) and a buffer of the views'
  * matrices for the shadow pass. Each frame the views shadow_views.c marked are rendered (their
  * tile scissored, cleared and drawn with the casters in their frustum); the others keep what an
- * earlier frame drew. The pass's GPU time is measured with a ring of timer queries read once
- * their results are available (never waited for). */
+ * earlier frame drew. The rendering is the shadows pass of the frame (pass_shadows.c), timed like
+ * every pass. */
 #include <string.h>
 
 #include "shadows.h"
@@ -56,7 +56,6 @@ static void tl__shadow_buffers(tl__device *dev, tl__shadows *s)
     gl->CreateBuffers(1, &s->ubo);
     gl->NamedBufferStorage(s->ubo, (GLsizeiptr)(s->ubo_stride * TL__SHADOW_MAX_VIEWS), NULL, GL_DYNAMIC_STORAGE_BIT);
     tl__gl_label(gl, GL_BUFFER, s->ubo, "shadow.views");
-    gl->GenQueries(TL__QUERY_RING, s->queries);
     gl->CreateSamplers(1, &s->depth_sampler);
     gl->SamplerParameteri(s->depth_sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl->SamplerParameteri(s->depth_sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
@@ -64,7 +63,6 @@ static void tl__shadow_buffers(tl__device *dev, tl__shadows *s)
     gl->SamplerParameteri(s->depth_sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     gl->SamplerParameteri(s->depth_sampler, GL_TEXTURE_COMPARE_MODE, GL_NONE);
     tl__gl_label(gl, GL_SAMPLER, s->depth_sampler, "shadow.depth");
-    s->last_ms = -1.0;
 }
 
 void tl__shadows_release(tl__device *dev, tl__shadows *s)
@@ -74,7 +72,6 @@ void tl__shadows_release(tl__device *dev, tl__shadows *s)
     if (s->lookup) {
         gl->DeleteBuffers(1, &s->lookup);
         gl->DeleteBuffers(1, &s->ubo);
-        gl->DeleteQueries(TL__QUERY_RING, s->queries);
         gl->DeleteSamplers(1, &s->depth_sampler);
     }
     void *a[] = {s->slots, s->fade, s->score, s->order};
@@ -124,25 +121,7 @@ static uint32_t tl__shadow_draw(tl__device *dev, tl__shadows *s, const tl__scene
     return d.draws;
 }
 
-/* The newest finished timer query (never waits). */
-static void tl__shadow_time(const GladGLContext *gl, tl__shadows *s, uint64_t frame, int issued)
-{
-    for (uint64_t k = 1; k < TL__QUERY_RING; k++) {
-        unsigned slot = (unsigned)((frame + TL__QUERY_RING - k) % TL__QUERY_RING);
-        if (!s->query_pending[slot]) continue;
-        GLuint ready = 0;
-        gl->GetQueryObjectuiv(s->queries[slot], GL_QUERY_RESULT_AVAILABLE, &ready);
-        if (!ready) continue;
-        GLuint64 ns = 0;
-        gl->GetQueryObjectui64v(s->queries[slot], GL_QUERY_RESULT, &ns);
-        s->query_pending[slot] = 0;
-        s->last_ms = (double)ns * 1e-6;
-        break;
-    }
-    (void)issued;
-}
-
-void tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g, uint64_t frame, tl_frame_stats *st)
+uint32_t tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g, tl_frame_stats *st)
 {
     const GladGLContext *gl = &dev->gl;
     tl__shadow_buffers(dev, s);
@@ -159,15 +138,7 @@ void tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g,
     if (s->view_count)
         gl->NamedBufferSubData(s->lookup, sizeof s->block, (GLsizeiptr)(s->view_count * sizeof(tl__shadow_view_gpu)),
                                s->views_gpu);
-    unsigned slot = (unsigned)(frame % TL__QUERY_RING);
-    int timed = rendered && !s->query_pending[slot];
-    if (timed) gl->BeginQuery(GL_TIME_ELAPSED, s->queries[slot]);
-    if (rendered) st->draw_calls += tl__shadow_draw(dev, s, g, s->program);
-    if (timed) {
-        gl->EndQuery(GL_TIME_ELAPSED);
-        s->query_pending[slot] = 1;
-    }
-    tl__shadow_time(gl, s, frame, timed);
+    uint32_t draws = rendered ? tl__shadow_draw(dev, s, g, s->program) : 0u;
     for (size_t i = 0; i < s->view_count; i++) s->kept[i] = s->views[i].signature;
     s->kept_count = s->view_count;
     gl->BindBufferBase(GL_UNIFORM_BUFFER, TL__UBO_SHADOWS, s->lookup);
@@ -176,7 +147,7 @@ void tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g,
     gl->BindSampler(TL__UNIT_SHADOW_ATLAS, s->block.flags[1] ? s->depth_sampler : 0);
     st->shadow_maps_rendered = rendered;
     st->shadow_maps_cached = (uint32_t)(s->view_count - rendered);
-    st->shadow_ms = rendered ? s->last_ms : 0.0;
+    return draws;
 }
 
 tl_result tl__shadows_views(const tl__shadows *s, const tl_light *lights, size_t light_count, tl_shadow_view_info *out,

@@ -69,9 +69,6 @@ typedef struct tl__shadows {
     uint32_t atlas_size;
     int reversed;
     size_t ubo_stride;
-    GLuint queries[TL__QUERY_RING];
-    uint8_t query_pending[TL__QUERY_RING];
-    double last_ms;
 } tl__shadows;
 
 /* desc.c: the defaults of tl_shadow_desc, and whether it is in range. */
@@ -89,8 +86,9 @@ uint64_t tl__shadow_casters(const tl__scene_gpu *g, const tl__mat4 *world_clip,
                             void (*draw)(void *user, uint32_t object), void *user);
 
 /* shadows.c: the atlas (made again when its size or depth convention changes), the changed views
- * rendered into it, the lookup block uploaded and bound with the atlas for the lighting passes. */
-void tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g, uint64_t frame, tl_frame_stats *st);
+ * rendered into it, the lookup block uploaded and bound with the atlas for the lighting passes
+ * (the shadows pass, pass_shadows.c); returns its draw calls. */
+uint32_t tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu *g, tl_frame_stats *st);
 void tl__shadows_release(tl__device *dev, tl__shadows *s);
 /* The debug reads (tl_renderer_get_shadow_views, tl_renderer_read_shadow_atlas): the last frame's
  * views, and the atlas's depth as floats (rows bottom to top). */

@@ -28,22 +28,19 @@ static void tl__label_queries(const GladGLContext *gl, const GLuint *q, size_t n
     for (size_t i = 0; i < n; i++) tl__gl_label(gl, GL_QUERY, q[i], label);
 }
 
-void tl__queries_create(tl__device *dev, tl__queries *r, tl__tiles *tiles, tl__fixup *fixup)
+void tl__queries_create(tl__device *dev, tl__queries *r, tl__lights *lights)
 {
     const GladGLContext *gl = &dev->gl;
     GLint bits = 0;
     gl->GetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &bits);
     r->timestamps = bits > 0;
     r->timestamp_bits = bits;
-    r->tiles = tiles;
-    r->fixup = fixup;
+    r->lights = lights;
     for (int s = 0; s < TL__QUERY_RING; s++) {
         tl__query_slot *q = &r->ring[s];
         if (r->timestamps) gl->CreateQueries(GL_TIMESTAMP, 2 * TL_PLAN_MAX_PASSES, &q->time[0][0]);
-        if (r->timestamps) gl->CreateQueries(GL_TIMESTAMP, 2, q->shadow_time);
         gl->CreateQueries(GL_SAMPLES_PASSED, TL__PASS_MAX_QUERIES * TL_PLAN_MAX_PASSES, &q->samples[0][0]);
         if (r->timestamps) tl__label_queries(gl, &q->time[0][0], 2 * TL_PLAN_MAX_PASSES, "query.pass_time");
-        if (r->timestamps) tl__label_queries(gl, q->shadow_time, 2, "query.shadow_time");
         tl__label_queries(gl, &q->samples[0][0], TL__PASS_MAX_QUERIES * TL_PLAN_MAX_PASSES, "query.pass_samples");
     }
 }
@@ -54,7 +51,6 @@ void tl__queries_destroy(tl__device *dev, tl__queries *r)
     for (int s = 0; s < TL__QUERY_RING; s++) {
         tl__query_slot *q = &r->ring[s];
         if (q->time[0][0]) gl->DeleteQueries(2 * TL_PLAN_MAX_PASSES, &q->time[0][0]);
-        if (q->shadow_time[0]) gl->DeleteQueries(2, q->shadow_time);
         if (q->samples[0][0]) gl->DeleteQueries(TL__PASS_MAX_QUERIES * TL_PLAN_MAX_PASSES, &q->samples[0][0]);
     }
     memset(r->ring, 0, sizeof r->ring);
@@ -84,8 +80,8 @@ static uint32_t tl__attribute_bytes(uint32_t attrs)
 static double tl__pass_bytes(const tl__slot_plan *p, const tl__pass_decl *d, double frags, size_t indices,
                              size_t instances)
 {
-    const tl_target_set depth_bit = TL_TARGET_BIT(TL_TARGET_DEPTH);
-    double pixels = (double)p->width * p->height, depth = p->target_bytes_per_pixel[TL_TARGET_DEPTH];
+    const tl_target_set depth_bit = TL_TARGET_BIT(d->depth_target);
+    double pixels = (double)p->width * p->height, depth = p->target_bytes_per_pixel[d->depth_target];
     double per_frag = tl__bpp(p, d->samples) + 4.0 * tl__bpp(p, d->neighbourhood);
     if (d->state.depth_test && !(d->samples & depth_bit)) per_frag += depth;
     if (d->state.depth_write && (d->writes & depth_bit)) per_frag += depth;
@@ -136,15 +132,6 @@ static double tl__pass_ms(const tl__device *dev, const tl__queries *r, const tl_
     return r->timestamps ? tl__span_ms(dev, r, q->time[i]) : -1.0;
 }
 
-/* The shadow maps run before the graph: their time is this frame's (from the slot's timestamps,
- * else the shadow pass's own newest query) and part of gpu_ms, so that a frame with shadows costs
- * what it costs. */
-static void tl__shadow_read(const tl__device *dev, const tl__queries *r, const tl__query_slot *q, tl_frame_stats *st)
-{
-    if (q->shadow_timed) st->shadow_ms = st->shadow_maps_rendered ? tl__span_ms(dev, r, q->shadow_time) : 0.0;
-    if (st->shadow_ms > 0.0) st->gpu_ms += st->shadow_ms;
-}
-
 /* Reads a pending slot's results into its record (blocking when they are not ready). */
 static void tl__slot_read(tl__device *dev, tl__queries *r, tl__query_slot *q)
 {
@@ -154,9 +141,9 @@ static void tl__slot_read(tl__device *dev, tl__queries *r, tl__query_slot *q)
         const tl__pass_def *def = p->def[i];
         uint64_t results[TL__PASS_MAX_QUERIES] = {0};
         uint64_t frags = tl__pass_queries(dev, q, i, results);
-        if (def && def->collect) def->collect(results, st);
         double ms = tl__pass_ms(dev, r, q, i),
                bytes = tl__pass_bytes(p, &p->decl[i], (double)frags, q->rec.indices[i], q->rec.instances[i]);
+        if (def && def->collect) def->collect(results, frags, (uint64_t)p->width * p->height, ms, st);
         if (p->app[i] >= 0) {
             st->app_pass_ms[p->app[i]] = ms;
         } else {
@@ -167,12 +154,7 @@ static void tl__slot_read(tl__device *dev, tl__queries *r, tl__query_slot *q)
         if (ms > 0.0) st->gpu_ms += ms;
         st->bytes_moved += bytes;
     }
-    tl__shadow_read(dev, r, q, st);
-    if (p->light_lists) tl__tiles_collect(dev, r->tiles, st);
-    if (p->light_fixup) tl__fixup_collect(dev, r->fixup, p->width * p->height, st);
-    /* MSAA per-sample edges: msaa-classify writes the edge pixels alone (pass_msaa.c) */
-    st->msaa_edge_pixels = st->pass_fragments[TL_PASS_MSAA_CLASSIFY];
-    st->msaa_edge_fraction = p->width && p->height ? (double)st->msaa_edge_pixels / ((double)p->width * p->height) : 0.0;
+    tl__lights_read_counters(dev, r->lights, p->targets, p->width * p->height, st);
     st->gpu_valid = 1;
     q->pending = 0;
 }
@@ -193,8 +175,7 @@ static void tl__slot_take_plan(tl__query_slot *q, const tl__graph *g)
     p->width = fp->width;
     p->height = fp->height;
     p->vertex_attributes = fp->vertex_attributes;
-    p->light_lists = (fp->targets & TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS)) != 0;
-    p->light_fixup = (fp->targets & TL_TARGET_BIT(TL_TARGET_LIGHT_FIXUP)) != 0;
+    p->targets = fp->targets;
 }
 
 tl__query_slot *tl__queries_slot(tl__device *dev, tl__queries *r, const tl__graph *g, uint64_t frame)
@@ -202,7 +183,6 @@ tl__query_slot *tl__queries_slot(tl__device *dev, tl__queries *r, const tl__grap
     tl__query_slot *q = &r->ring[frame % TL__QUERY_RING];
     if (q->pending) tl__slot_read(dev, r, q); /* a whole ring behind: the oldest frame must be read now */
     tl__slot_take_plan(q, g);
-    q->shadow_timed = 0;
     return q;
 }
 

@@ -23,15 +23,12 @@ typedef struct tl__slot_plan {
     tl__pass_decl decl[TL_PLAN_MAX_PASSES];
     uint32_t target_bytes_per_pixel[TL_TARGET_COUNT];
     uint32_t width, height, vertex_attributes;
-    int light_lists; /* the tile counters are read too */
-    int light_fixup; /* the light scale's re-lit count is read too */
+    tl_target_set targets; /* the plan's targets: its storage targets' counters are read too */
 } tl__slot_plan;
 
 typedef struct tl__query_slot {
     GLuint time[TL_PLAN_MAX_PASSES][2];
     GLuint samples[TL_PLAN_MAX_PASSES][TL__PASS_MAX_QUERIES];
-    GLuint shadow_time[2]; /* timestamps around the shadow maps (before the graph) */
-    int shadow_timed;      /* this frame's shadow maps were bracketed by shadow_time */
     int pending;
     tl__frame_record rec;
     tl__slot_plan plan;
@@ -41,11 +38,10 @@ typedef struct tl__queries {
     tl__query_slot ring[TL__QUERY_RING];
     int timestamps;        /* GL_TIMESTAMP queries work in this context */
     GLint timestamp_bits;
-    tl__tiles *tiles;      /* whose counters complete a tiled frame's figures */
-    tl__fixup *fixup;      /* whose count completes a reduced light buffer's */
+    tl__lights *lights;    /* whose storage targets' counters complete a frame's figures */
 } tl__queries;
 
-void tl__queries_create(tl__device *dev, tl__queries *q, tl__tiles *tiles, tl__fixup *fixup);
+void tl__queries_create(tl__device *dev, tl__queries *q, tl__lights *lights);
 void tl__queries_destroy(tl__device *dev, tl__queries *q);
 /* The ring slot for `frame`, read first (blocking) if it still holds an unread frame; it takes the
  * graph's plan for the frame about to be issued. */

@@ -5,8 +5,6 @@
 #include "bindings.h"
 #include "pass.h"
 
-/* A target samples on texture unit = its id: the material textures' units come after them. */
-/* TL_TARGET_BIT sets are 32 bits */
 _Static_assert((int)TL_TARGET_COUNT <= 64, "more targets than a tl_target_set holds");
 
 void tl__target_defs(const tl__target_def *out[TL_TARGET_COUNT])
@@ -17,6 +15,15 @@ void tl__target_defs(const tl__target_def *out[TL_TARGET_COUNT])
             const tl__target_def *d = tl__pass_table[i]->targets[k];
             if ((unsigned)d->id < TL_TARGET_COUNT) out[d->id] = d;
         }
+}
+
+tl_target_id tl__target_frame_output(void)
+{
+    const tl__target_def *defs[TL_TARGET_COUNT];
+    tl__target_defs(defs);
+    for (int t = 0; t < TL_TARGET_COUNT; t++)
+        if (defs[t] && defs[t]->frame_output) return (tl_target_id)t;
+    return TL_TARGET_COUNT;
 }
 
 const char *tl_target_name(tl_target_id t)
@@ -79,11 +86,8 @@ const char *tl__msaa_refusal(const tl_renderer_options *o)
     if (m == TL_MSAA_LIGHTING_MATERIAL_PASS && o->mode != TL_MODE_THIN_LPP && o->mode != TL_MODE_FORWARD)
         return "thin-deferred and fat have no material pass (msaa-lighting per-sample-edges)";
     if (tl__light_shift(o)) return "the reduced light buffer's upsample runs at one sample";
-    /* forward runs no reflections (pass_ssr.c): they cost it nothing */
-    int ssr = o->ssr.enabled && o->mode != TL_MODE_FORWARD;
-    if (o->ssao.method != TL_SSAO_OFF || o->fog.mode != TL_FOG_OFF || o->dof.enabled || o->bloom.enabled || ssr ||
-        o->vignette.enabled)
-        return "screen-space effects read a one-sample HDR and depth";
+    const char *effect = tl__passes_refuse(o, TL__REFUSES_MSAA);
+    if (effect) return effect;
     return NULL;
 }
 

@@ -25,13 +25,17 @@ typedef struct tl__target_def {
     uint32_t format;    /* GL internal format, unless format_of decides */
     uint32_t (*format_of)(const tl_renderer_options *o); /* the format in a configuration (NULL: format) */
     uint32_t (*levels_of)(const tl_renderer_options *o); /* mip levels wanted (NULL: 1) */
-    size_t (*buffer_bytes)(const tl_frame_plan *p); /* a storage buffer, not a texture: its bytes in a plan */
+    /* storage its module owns (a buffer, the shadow atlas), not a texture of the graph's: its bytes
+     * in a plan */
+    size_t (*buffer_bytes)(const tl_frame_plan *p, const tl_renderer_options *o);
     uint8_t store;      /* tl__store: what the technique stores, and as which part */
     uint8_t shift;      /* its first level is the frame's size divided by 2^shift, rounded up */
     uint32_t (*shift_of)(const tl_renderer_options *o); /* the shift in a configuration (NULL: shift) */
     uint32_t (*samples_of)(const tl_renderer_options *o); /* samples per pixel (NULL: 1): MSAA's targets */
     uint8_t linear;     /* sampled with bilinear filtering (of its first level) */
     uint8_t depth;      /* a depth target: a pass's depth attachment (depth_target), never a colour write */
+    uint8_t frame_output; /* the frame's final image: what read_output reads, where render_to draws */
+    uint8_t read_rt0;   /* read_target decodes it as RT0 (octahedral normal, gloss), not as floats */
 } tl__target_def;
 
 /* The first fields of a definition: `{TL__TARGET(HDR, "hdr"), .format = GL_RGBA16F}`. */
@@ -42,6 +46,12 @@ typedef struct tl__target_def {
 
 /* Every target's definition, found in the pass table by id (NULL for an id no pass declares). */
 void tl__target_defs(const tl__target_def *out[TL_TARGET_COUNT]);
+
+/* Every tl_target_id, as a set. */
+#define TL__TARGETS_EVERY ((tl_target_set)-1 >> (64 - TL_TARGET_COUNT))
+
+/* The target that is the frame's final image (tl__target_def.frame_output). */
+tl_target_id tl__target_frame_output(void);
 
 /* The GL internal format of a target in a resolved configuration (0 for buffers). */
 uint32_t tl__target_format(const tl__target_def *def, const tl_renderer_options *o);
