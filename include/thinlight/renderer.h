@@ -589,12 +589,16 @@ typedef struct tl_plan_block {
     tl_target_set targets;    /**< the targets it backs (TL_TARGET_BIT bits) */
 } tl_plan_block;
 
+/** Capacity of tl_plan_program.defines. */
+#define TL_PLAN_DEFINES_SIZE 2048
+
 /** A shader permutation the plan needs: the program's name and its preprocessor defines. */
 typedef struct tl_plan_program {
     tl_pass pass;      /**< the pass that runs it */
     uint32_t slot;     /**< which of the pass's programs (lights: 0 point, 1 spot, 2 directional) */
     char name[32];     /**< e.g. "gbuffer", "lights.point" */
-    char defines[256]; /**< space-separated NAME or NAME=VALUE switches */
+    char defines[TL_PLAN_DEFINES_SIZE]; /**< space-separated NAME or NAME=VALUE switches (never cut: the
+                                             size holds every switch the renderer has) */
 } tl_plan_program;
 
 /** Capacity of tl_frame_plan.downgrades (more than one plan can make at once). */

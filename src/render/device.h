@@ -14,6 +14,7 @@
 #include "gl/gl.h"
 #include "gl/state.h"
 #include "gl/stream.h"
+#include "permutation.h"
 #include "platform/context_link.h"
 #include "thinlight/renderer.h"
 
@@ -32,9 +33,25 @@ typedef struct tl__limits {
     uint32_t sample_counts;
 } tl__limits;
 
+/* programs.c: permutations built on demand, cached by (sources, key, the pass's targets). */
+typedef struct tl__program_src {
+    const char *name; /* NULL ends the list */
+    const char *vs, *fs;
+    const char *cs;   /* a compute program instead */
+} tl__program_src;
+/* The targets a program's pass samples, writes as images and writes as colours: their units are 0,
+ * 1, ... in tl_target_id order (TL_UNIT_<TARGET>, TL_IMAGE_<TARGET>), every other target's
+ * TL_UNIT_NONE / TL_IMAGE_NONE; colour writes get TL_OUT_<TARGET> locations 0, 1, ... NULL: no
+ * target (programs outside the frame graph). */
+typedef struct tl__program_units {
+    tl_target_set samples, images, writes;
+} tl__program_units;
 typedef struct tl__program_entry {
-    char key[512];
     GLuint program;
+    /* what it was built for (compared whole, padding zeroed) */
+    const tl__program_src *src;
+    tl__perm key;
+    tl__program_units units;
 } tl__program_entry;
 
 typedef struct tl__device {
@@ -77,19 +94,7 @@ tl_result tl__device_init(tl__device *dev, const tl_renderer_desc *desc);
 uint32_t tl__device_samples(const tl__device *dev, uint32_t asked);
 void tl__device_release(tl__device *dev);
 
-/* programs.c: permutations built on demand, cached by (vertex, fragment, compute, defines). */
-typedef struct tl__program_src {
-    const char *name; /* NULL ends the list */
-    const char *vs, *fs;
-    const char *cs;   /* a compute program instead */
-} tl__program_src;
-/* The targets a program's pass samples and writes as images: their units are 0, 1, ... in
- * tl_target_id order (TL_UNIT_<TARGET>, TL_IMAGE_<TARGET>); every other target's is TL_UNIT_NONE /
- * TL_IMAGE_NONE. NULL: no target (programs outside the frame graph). */
-typedef struct tl__program_units {
-    tl_target_set samples, images;
-} tl__program_units;
-tl_result tl__program_get(tl__device *dev, const char *label, const tl__program_src *src, const char *defines,
+tl_result tl__program_get(tl__device *dev, const char *label, const tl__program_src *src, const tl__perm *key,
                           const tl__program_units *units, GLuint *out);
 void tl__program_cache_destroy(tl__device *dev);
 

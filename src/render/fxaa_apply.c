@@ -22,8 +22,9 @@ static tl_result tl__fxaa_input(tl_renderer *r, const uint8_t *rgba)
     tl_result res = TL_OK;
     if (!g->programs_ready && (res = tl__graph_programs(dev, g)) != TL_OK) return res;
     if (!g->luma.programs[0] &&
-        (res = tl__program_get(dev, "luma", &tl__pass_luma.programs[0], "TL_OUT_LDR=0",
-                                    &(tl__program_units){g->luma_decl.samples, g->luma_decl.images}, &g->luma.programs[0])) != TL_OK)
+        (res = tl__program_get(dev, "luma", &tl__pass_luma.programs[0], NULL,
+                               &(tl__program_units){g->luma_decl.samples, g->luma_decl.images, g->luma_decl.writes},
+                               &g->luma.programs[0])) != TL_OK)
         return res;
     tl__pixel_store saved;
     tl__pixel_store_enter(&dev->gl, 1, &saved);

@@ -215,8 +215,8 @@ tl_result tl__graph_programs(tl__device *dev, tl__graph *r)
             tl__compiled_pass *cp = &r->passes[i];
             if (!cp->def || cp->def->id != pr->pass) continue;
             const tl__program_src *src = &cp->def->programs[pr->slot];
-            tl__program_units units = {cp->decl->samples, cp->decl->images};
-            tl_result res = tl__program_get(dev, pr->name, src, pr->defines, &units, &cp->programs[pr->slot]);
+            tl__program_units units = {cp->decl->samples, cp->decl->images, cp->decl->writes};
+            tl_result res = tl__program_get(dev, pr->name, src, &r->plan.perms[k], &units, &cp->programs[pr->slot]);
             if (res != TL_OK) return res;
         }
     }

@@ -14,9 +14,9 @@ uint32_t tl__plan_models(const tl_scene_feature_set *f)
     return m ? m : 1u << TL_MATERIAL_MODEL_STANDARD;
 }
 
-const char *tl__models_define(const tl_scene_feature_set *f)
+int tl__plan_has_models(const tl_scene_feature_set *f)
 {
-    return (tl__plan_models(f) & ~(1u << TL_MATERIAL_MODEL_STANDARD)) ? " TL_MATERIAL_MODELS" : "";
+    return (tl__plan_models(f) & ~(1u << TL_MATERIAL_MODEL_STANDARD)) != 0;
 }
 
 /* The clearcoat's lighting in thin-lpp (docs/lighting.md, "Material models"): the coat's own sums
@@ -36,16 +36,14 @@ int tl__plan_coat_sums(const tl__plan_input *in, const char **why)
     return *why == NULL;
 }
 
-void tl__material_model_slots(const tl__plan_input *in, const char *defines, tl__pass_defines *out)
+void tl__material_model_slots(const tl__plan_input *in, const tl__perm *base, tl__pass_defines *out)
 {
     uint32_t models = tl__plan_models(&in->f);
     for (uint32_t m = 0; m < TL_MATERIAL_MODEL_COUNT_; m++) {
         if (!(models & (1u << m))) continue;
         out->used[m] = 1;
-        int n = m == TL_MATERIAL_MODEL_STANDARD
-                    ? snprintf(out->slot[m], sizeof out->slot[m], "%s", defines)
-                    : snprintf(out->slot[m], sizeof out->slot[m], "TL_MODEL=%u %s", (unsigned)m, defines);
-        if (n < 0 || (size_t)n >= sizeof out->slot[m]) out->overflow = 1;
+        out->slot[m] = *base;
+        if (m != TL_MATERIAL_MODEL_STANDARD) tl__perm_value(&out->slot[m], TL__V_MODEL, m);
     }
 }
 

@@ -9,15 +9,15 @@
 
 const tl__mode_def tl__modes[TL_MODE_COUNT_] = {
     [TL_MODE_DEFAULT] = {"thin-lpp", TL__B(RT0), TL__B(DEPTH) | TL__B(RT0), TL__B(DEPTH) | TL__B(RT0),
-                         TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | TL__B(LIGHT_FRESNEL), "TL_LIGHT_ACCUM", 1, 0},
+                         TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | TL__B(LIGHT_FRESNEL), TL__F_LIGHT_ACCUM, 1, 0},
     [TL_MODE_THIN_LPP] = {"thin-lpp", TL__B(RT0), TL__B(DEPTH) | TL__B(RT0), TL__B(DEPTH) | TL__B(RT0),
-                          TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | TL__B(LIGHT_FRESNEL), "TL_LIGHT_ACCUM", 1, 0},
+                          TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | TL__B(LIGHT_FRESNEL), TL__F_LIGHT_ACCUM, 1, 0},
     /* emissive and ambient go straight to HDR in the G-buffer pass; lights add to it */
     [TL_MODE_THIN_DEFERRED] = {"thin-deferred", TL__B(RT0) | TL__B(RT1) | TL__B(HDR),
                                TL__B(DEPTH) | TL__B(RT0) | TL__B(RT1), TL__B(DEPTH) | TL__B(RT0) | TL__B(RT1),
-                               TL__B(HDR), "TL_LIGHT_SHADE_THIN", 0, 0},
-    [TL_MODE_FAT] = {"fat", TL__FAT | TL__B(HDR), TL__B(DEPTH) | TL__FAT, TL__FAT, TL__B(HDR), "TL_LIGHT_SHADE_FAT", 0, 0},
-    [TL_MODE_FORWARD] = {"forward", 0, 0, 0, 0, "", 0, 1},
+                               TL__B(HDR), TL__F_LIGHT_SHADE_THIN, 0, 0},
+    [TL_MODE_FAT] = {"fat", TL__FAT | TL__B(HDR), TL__B(DEPTH) | TL__FAT, TL__FAT, TL__B(HDR), TL__F_LIGHT_SHADE_FAT, 0, 0},
+    [TL_MODE_FORWARD] = {"forward", 0, 0, 0, 0, TL__F_NONE, 0, 1},
 };
 
 const char *tl_render_mode_name(tl_render_mode mode)
@@ -129,8 +129,9 @@ int tl__ssao_pass(const tl__plan_input *in)
     return in->mode->material_pass ? 1 : 2;
 }
 
-const char *tl__ssao_defines(const tl__plan_input *in, const tl__pass_decl *d)
+void tl__ssao_perm(const tl__plan_input *in, const tl__pass_decl *d, tl__perm *k)
 {
-    if (!(d->samples & TL__B(AO))) return "";
-    return in->o->ssao.diffuse ? " TL_SSAO_AMBIENT TL_SSAO_DIFFUSE" : " TL_SSAO_AMBIENT";
+    if (!(d->samples & TL__B(AO))) return;
+    tl__perm_flag(k, TL__F_SSAO_AMBIENT);
+    if (in->o->ssao.diffuse) tl__perm_flag(k, TL__F_SSAO_DIFFUSE);
 }

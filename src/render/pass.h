@@ -12,6 +12,7 @@
 
 #include "device.h"
 #include "option_check.h"
+#include "permutation.h"
 #include "targets.h"
 
 #define TL__PASS_MAX_PROGRAMS 6 /* programs of one pass (lights: one per light type; material: one per model) */
@@ -30,7 +31,7 @@ typedef struct tl__mode_def {
     tl_target_set light_reads; /* targets the light pass reads (depth is also depth-tested) */
     tl_target_set light_samples; /* of those, the ones it samples */
     tl_target_set light_writes; /* light buffer, or HDR (blended onto) */
-    const char *light_define; /* what the light shader does: TL_LIGHT_ACCUM, TL_LIGHT_SHADE_* */
+    uint8_t light_flag;      /* what the light shader does: TL__F_LIGHT_ACCUM, TL__F_LIGHT_SHADE_* */
     uint8_t material_pass;   /* a second geometry pass applies materials to the light buffer */
     uint8_t forward;         /* no G-buffer: objects are shaded with their light lists */
 } tl__mode_def;
@@ -55,15 +56,16 @@ typedef struct tl__plan_input {
     tl_fresnel_layout fresnel;  /* thin-lpp, GGX, specular: the light buffer's Fresnel layout; else DEFAULT */
     char lighting_reason[96];
     /* every lighting program's model switches: TL_SPECULAR_EXACT, TL_SPECULAR_COMPACT or
-     * TL_SPECULAR_NONE, then TL_GGX with GGX, then TL_FRESNEL_SUMS or TL_FRESNEL_NV in thin-lpp */
-    char spec_define[64];
-    const char *rt0_define;     /* TL_RT0_RGBA8 or TL_RT0_RGB10A2 */
-    char material_defines[128]; /* the geometry passes' material switches (leading space each) */
+     * TL_SPECULAR_NONE, then TL_GGX with GGX, then TL_FRESNEL_SUMS or TL_FRESNEL_NV in thin-lpp,
+     * TL_SHADOWS (and TL_PCSS) with casting lights */
+    tl__perm spec_perm;
+    unsigned rt0_flag;          /* TL__F_RT0_RGBA8 or TL__F_RT0_RGB10A2 */
+    tl__perm material;          /* the geometry passes' material switches */
     uint32_t msaa;              /* samples of the multisampled targets (tl__msaa_samples), 1: no MSAA */
     int stipple;                /* the blended materials go through the G-buffer's 2x2 stipple (pass_stipple.c) */
     char transparency_reason[96];
     const char *transparency_why; /* blended materials drawn forward: why not the stipple (NULL otherwise) */
-    uint32_t shadows;           /* casting lights looked up (TL_SHADOWS in spec_define); 0: none */
+    uint32_t shadows;           /* casting lights looked up (TL_SHADOWS in spec); 0: none */
     int coat_sums;              /* thin-lpp, a clearcoat drawn, sums asked or auto: the coat's own sums (material_models.c) */
     const char *coat_why;       /* a clearcoat drawn, sums asked or auto, but the approximation planned: why */
 } tl__plan_input;
@@ -96,12 +98,10 @@ typedef struct tl__pass_decl {
     tl__pipeline state;    /* fixed state; a pass may change cull, depth test and clamp per draw */
 } tl__pass_decl;
 
-/* The defines of each of a pass's programs ("" leaves the slot out); `overflow`: a permutation's
- * switches did not fit (the planner refuses the plan rather than build a program missing one). */
+/* The switches of each of a pass's programs (permutation.h); a slot not used leaves the program out. */
 typedef struct tl__pass_defines {
-    char slot[TL__PASS_MAX_PROGRAMS][256];
+    tl__perm slot[TL__PASS_MAX_PROGRAMS];
     uint8_t used[TL__PASS_MAX_PROGRAMS];
-    uint8_t overflow;
 } tl__pass_defines;
 
 /* What a pass's execute step counts. */
@@ -205,7 +205,7 @@ const char *tl__passes_refuse(const tl_renderer_options *o, unsigned what);
 /* What the light pass reads and writes in a mode, whichever strategy gathers the lights
  * (pass_lights.c; the tiled pass uses it too). */
 void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d);
-void tl__light_pass_defines(const tl__plan_input *in, const tl__pass_decl *d, char *out, size_t size);
+void tl__light_pass_defines(const tl__plan_input *in, const tl__pass_decl *d, tl__perm *k);
 /* Forward shading reads tile lists (Forward+) in this plan; it has a depth pre-pass (modes.c). */
 int tl__forward_plus(const tl__plan_input *in);
 int tl__forward_prepass(const tl__plan_input *in);
@@ -225,7 +225,7 @@ void tl__permute_one_program(const tl__plan_input *in, const tl__pass_decl *d, t
 int tl__ssao_pass(const tl__plan_input *in);
 /* Whether the shadow-debug pass is in the plan (pass_shadow_debug.c). */
 int tl__shadow_debug_planned(const tl__plan_input *in);
-const char *tl__ssao_defines(const tl__plan_input *in, const tl__pass_decl *d);
+void tl__ssao_perm(const tl__plan_input *in, const tl__pass_decl *d, tl__perm *k);
 
 /* Execute steps several passes share (draw.c): a full-screen triangle with the first program;
  * the scene's visible opaque or transparent triangles, or its points and lines, with the first
@@ -236,11 +236,11 @@ void tl__draw_opaque(const tl__pass_ctx *ctx);
 void tl__draw_opaque_model(const tl__pass_ctx *ctx, uint32_t model);
 void tl__draw_transparent(const tl__pass_ctx *ctx);
 /* material_models.c: the models the plan shades (1u << tl_material_model; the standard one when
- * the features name none), " TL_MATERIAL_MODELS" when some model is not the standard one, the
- * material pass's program per model (`defines` after each one's TL_MODEL) and its draws. */
+ * the features name none), whether some model is not the standard one (TL_MATERIAL_MODELS), the
+ * material pass's program per model (`base` with each one's TL_MODEL) and its draws. */
 uint32_t tl__plan_models(const tl_scene_feature_set *f);
-const char *tl__models_define(const tl_scene_feature_set *f);
-void tl__material_model_slots(const tl__plan_input *in, const char *defines, tl__pass_defines *out);
+int tl__plan_has_models(const tl_scene_feature_set *f);
+void tl__material_model_slots(const tl__plan_input *in, const tl__perm *base, tl__pass_defines *out);
 /* Whether the clearcoat's own sums are planned (tl__plan_input.coat_sums); *why: why not, where a
  * clearcoat is drawn and the sums were asked or are the default (NULL otherwise). */
 int tl__plan_coat_sums(const tl__plan_input *in, const char **why);
@@ -270,6 +270,8 @@ typedef struct tl__plan {
     const tl__pass_def *def[TL_PLAN_MAX_PASSES]; /* NULL for application passes */
     int8_t app[TL_PLAN_MAX_PASSES];              /* application pass index, -1 for built-in ones */
     tl_target_set shared;                        /* targets whose memory a later target reuses */
+    tl__perm perms[TL_PLAN_MAX_PROGRAMS];        /* each program's key (pub.programs' order) */
+    char refused[64];                            /* a switch whose value a key cannot hold: "TL_NAME=value" */
 } tl__plan;
 
 #endif

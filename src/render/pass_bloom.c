@@ -74,10 +74,10 @@ static void tl__bloom_permute(const tl__plan_input *in, const tl__pass_decl *d, 
 {
     (void)in;
     (void)d;
-    static const char *const steps[3] = {"TL_BLOOM_PREFILTER", "TL_BLOOM_DOWN", "TL_BLOOM_UP"};
+    static const unsigned steps[3] = {TL__F_BLOOM_PREFILTER, TL__F_BLOOM_DOWN, TL__F_BLOOM_UP};
     for (int k = 0; k < 3; k++) {
         out->used[k] = 1;
-        snprintf(out->slot[k], sizeof out->slot[k], "%s", steps[k]);
+        tl__perm_flag(&out->slot[k], steps[k]);
     }
 }
 

@@ -100,7 +100,8 @@ static void tl__prepass_permute(const tl__plan_input *in, const tl__pass_decl *d
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_DEPTH_ONLY%s", in->f.has_alpha_mask ? in->material_defines : "");
+    tl__perm_flag(&out->slot[0], TL__F_DEPTH_ONLY);
+    if (in->f.has_alpha_mask) tl__perm_merge(&out->slot[0], &in->material);
 }
 
 const tl__pass_def tl__pass_depth_prepass = {
@@ -132,11 +133,13 @@ static void tl__gbuffer_declare(const tl__plan_input *in, tl__pass_decl *d)
 
 static void tl__gbuffer_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
+    tl__perm *k = &out->slot[0];
     out->used[0] = 1;
     int colour = (d->writes & ~TL__B(DEPTH)) != 0;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s%s%s", !colour ? "TL_DEPTH_ONLY"
-                                                          : (d->writes & TL__B(RT0)) ? in->rt0_define : "",
-             in->material_defines, colour && tl__ssao_pass(in) == 2 ? " TL_AO_STORE" : "");
+    if (!colour) tl__perm_flag(k, TL__F_DEPTH_ONLY);
+    else if (d->writes & TL__B(RT0)) tl__perm_flag(k, in->rt0_flag);
+    tl__perm_merge(k, &in->material);
+    if (colour && tl__ssao_pass(in) == 2) tl__perm_flag(k, TL__F_AO_STORE);
 }
 
 const tl__pass_def tl__pass_gbuffer = {
@@ -215,24 +218,28 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
 
 static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
-    char upsample[96] = "", defines[sizeof out->slot[0]];
-    if ((d->samples & TL__B(LIGHT_DIFFUSE)) && (d->samples & TL__B(LIGHT_RT0)))
-        snprintf(upsample, sizeof upsample, " TL_UPSAMPLE=%u%s%s", (unsigned)in->light_shift,
-                 in->o->rt0 == TL_RT0_RGB10A2 ? " TL_RT0_RGB10A2" : "",
-                 (d->reads & TL__B(LIGHT_LISTS)) ? " TL_RELIGHT_TILES" : "");
-    if (in->stipple && (d->samples & TL__B(LIGHT_DIFFUSE)))
-        snprintf(upsample, sizeof upsample, " TL_STIPPLE %s", in->rt0_define);
-    char samples[32] = ""; /* per-sample edges: the G-buffer and light buffer multisampled (pass_msaa.c) */
-    if (tl__msaa_sample_edges(in->o)) snprintf(samples, sizeof samples, "TL_LIGHT_SAMPLES=%u ", (unsigned)in->msaa);
-    if ((d->depth_target == TL_TARGET_DEPTH_MSAA || samples[0]) && (d->samples & TL__B(LIGHT_DIFFUSE)))
-        snprintf(upsample, sizeof upsample, " TL_MSAA_LIGHT %s%s%s%s", samples, in->rt0_define,
-                 (d->reads & TL__B(LIGHT_LISTS)) ? " TL_RELIGHT_TILES" : "",
-                 tl__depth_format(in->o) == GL_DEPTH_COMPONENT32F ? " TL_DEPTH_FLOAT" : "");
-    int n = snprintf(defines, sizeof defines, "%s%s%s%s",
-                     (d->samples & TL__B(LIGHT_DIFFUSE)) ? in->spec_define : "TL_NO_LIGHTS", in->material_defines,
-                     tl__ssao_defines(in, d), upsample);
-    if (n < 0 || (size_t)n >= sizeof defines) out->overflow = 1;
-    tl__material_model_slots(in, defines, out); /* one program per material model */
+    tl__perm k = {0};
+    int lit = (d->samples & TL__B(LIGHT_DIFFUSE)) != 0, tiles = (d->reads & TL__B(LIGHT_LISTS)) != 0;
+    if (lit) tl__perm_merge(&k, &in->spec_perm);
+    else tl__perm_flag(&k, TL__F_NO_LIGHTS);
+    tl__perm_merge(&k, &in->material);
+    tl__ssao_perm(in, d, &k);
+    int sample_edges = tl__msaa_sample_edges(in->o);
+    if (lit && ((d->depth_target == TL_TARGET_DEPTH_MSAA) || sample_edges)) { /* MSAA (pass_msaa.c) */
+        tl__perm_flag(&k, TL__F_MSAA_LIGHT);
+        if (sample_edges) tl__perm_value(&k, TL__V_LIGHT_SAMPLES, in->msaa);
+        tl__perm_flag(&k, in->rt0_flag);
+        if (tiles) tl__perm_flag(&k, TL__F_RELIGHT_TILES);
+        if (tl__depth_format(in->o) == GL_DEPTH_COMPONENT32F) tl__perm_flag(&k, TL__F_DEPTH_FLOAT);
+    } else if (in->stipple && lit) {
+        tl__perm_flag(&k, TL__F_STIPPLE);
+        tl__perm_flag(&k, in->rt0_flag);
+    } else if (lit && (d->samples & TL__B(LIGHT_RT0))) { /* the light scale's upsample */
+        tl__perm_value(&k, TL__V_UPSAMPLE, in->light_shift);
+        if (in->o->rt0 == TL_RT0_RGB10A2) tl__perm_flag(&k, TL__F_RT0_RGB10A2);
+        if (tiles) tl__perm_flag(&k, TL__F_RELIGHT_TILES);
+    }
+    tl__material_model_slots(in, &k, out); /* one program per material model */
 }
 
 /* The light scale's upsample reads the light buffer bilinearly inside surfaces: a linear sampler on
@@ -283,9 +290,13 @@ static void tl__forward_declare(const tl__plan_input *in, tl__pass_decl *d)
 
 static void tl__forward_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
+    tl__perm *k = &out->slot[0];
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_FORWARD%s %s%s%s", (d->reads & TL__B(LIGHT_LISTS)) ? " TL_FORWARD_TILED" : "",
-             in->spec_define, in->material_defines, tl__ssao_defines(in, d));
+    tl__perm_flag(k, TL__F_FORWARD);
+    if (d->reads & TL__B(LIGHT_LISTS)) tl__perm_flag(k, TL__F_FORWARD_TILED);
+    tl__perm_merge(k, &in->spec_perm);
+    tl__perm_merge(k, &in->material);
+    tl__ssao_perm(in, d, k);
 }
 
 const tl__pass_def tl__pass_forward = {
@@ -313,8 +324,12 @@ static void tl__transparent_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__transparent_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     (void)d;
+    tl__perm *k = &out->slot[0];
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_FORWARD TL_TRANSPARENT %s%s", in->spec_define, in->material_defines);
+    tl__perm_flag(k, TL__F_FORWARD);
+    tl__perm_flag(k, TL__F_TRANSPARENT);
+    tl__perm_merge(k, &in->spec_perm);
+    tl__perm_merge(k, &in->material);
 }
 
 const tl__pass_def tl__pass_transparent = {

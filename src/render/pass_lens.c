@@ -77,8 +77,8 @@ static void tl__fog_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", in->o->fog.mode == TL_FOG_HEIGHT ? "TL_FOG_HEIGHT" : "TL_FOG_DISTANCE",
-             in->o->fog.noise > 0.0f ? " TL_FOG_NOISE" : "");
+    tl__perm_flag(&out->slot[0], in->o->fog.mode == TL_FOG_HEIGHT ? TL__F_FOG_HEIGHT : TL__F_FOG_DISTANCE);
+    if (in->o->fog.noise > 0.0f) tl__perm_flag(&out->slot[0], TL__F_FOG_NOISE);
 }
 
 static int tl__fog_wanted(const tl_renderer_options *o) { return o->fog.mode != TL_FOG_OFF; }
@@ -148,7 +148,7 @@ static void tl__dof_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_DOF_SAMPLES=%u", in->o->dof.samples);
+    tl__perm_value(&out->slot[0], TL__V_DOF_SAMPLES, in->o->dof.samples);
 }
 
 static int tl__dof_wanted(const tl_renderer_options *o) { return o->dof.enabled; }

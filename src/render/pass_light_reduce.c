@@ -37,7 +37,8 @@ static void tl__reduce_permute(const tl__plan_input *in, const tl__pass_decl *d,
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_LIGHT_SHIFT=%u %s", (unsigned)in->light_shift, in->rt0_define);
+    tl__perm_value(&out->slot[0], TL__V_LIGHT_SHIFT, in->light_shift);
+    tl__perm_flag(&out->slot[0], in->rt0_flag);
 }
 
 const tl__pass_def tl__pass_light_reduce = {

@@ -66,19 +66,17 @@ void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
 
 /* The shader switches of the light pass's reads, whatever the strategy: the RT0 encoding and the
  * light scale's shift. */
-void tl__light_pass_defines(const tl__plan_input *in, const tl__pass_decl *d, char *out, size_t size)
+void tl__light_pass_defines(const tl__plan_input *in, const tl__pass_decl *d, tl__perm *k)
 {
-    int rt0 = (d->reads & (TL__B(RT0) | TL__B(LIGHT_RT0))) != 0;
-    char shift[32] = "";
-    if (in->light_shift) snprintf(shift, sizeof shift, " TL_LIGHT_SHIFT=%u", (unsigned)in->light_shift);
-    char samples[32] = ""; /* MSAA per-sample edges: a multisampled G-buffer (pass_msaa.c) */
-    if (tl__msaa_sample_edges(in->o)) snprintf(samples, sizeof samples, " TL_GBUFFER_SAMPLES=%u", (unsigned)in->msaa);
+    if (d->reads & (TL__B(RT0) | TL__B(LIGHT_RT0))) tl__perm_flag(k, in->rt0_flag);
+    if (in->light_shift) tl__perm_value(k, TL__V_LIGHT_SHIFT, in->light_shift);
+    /* MSAA per-sample edges: a multisampled G-buffer (pass_msaa.c) */
+    if (tl__msaa_sample_edges(in->o)) tl__perm_value(k, TL__V_GBUFFER_SAMPLES, in->msaa);
     /* fat, and thin-deferred where RT1.a is not SSAO's, shade each light under the pixel's material
      * model (fat_models.glsl) */
     int model_stored = (d->reads & TL__B(FAT_POSITION)) || ((d->reads & TL__B(RT1)) && tl__ssao_pass(in) != 2);
-    const char *models = model_stored ? tl__models_define(&in->f) : "";
-    const char *coat = (d->reads & TL__B(COAT_GLOSS)) ? " TL_COAT_SUMS" : "";
-    snprintf(out, size, "%s%s%s%s%s%s", rt0 ? " " : "", rt0 ? in->rt0_define : "", shift, samples, models, coat);
+    if (model_stored && tl__plan_has_models(&in->f)) tl__perm_flag(k, TL__F_MATERIAL_MODELS);
+    if (d->reads & TL__B(COAT_GLOSS)) tl__perm_flag(k, TL__F_COAT_SUMS);
 }
 
 static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
@@ -95,14 +93,15 @@ static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__lights_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     const size_t counts[3] = {in->f.point_lights, in->f.spot_lights, in->f.directional_lights};
-    const char *fullscreen = in->o->fullscreen_lights ? " TL_LIGHT_FULLSCREEN" : "";
     for (int k = 0; k < 3; k++) {
         if (!counts[k]) continue;
+        tl__perm *p = &out->slot[k];
         out->used[k] = 1;
-        char reads[96];
-        tl__light_pass_defines(in, d, reads, sizeof reads);
-        snprintf(out->slot[k], sizeof out->slot[k], "TL_LIGHT_TYPE=%d %s%s %s%s", k + 1, in->mode->light_define, reads,
-                 in->spec_define, k < 2 ? fullscreen : "");
+        tl__perm_value(p, TL__V_LIGHT_TYPE, (uint32_t)(k + 1));
+        tl__perm_flag(p, in->mode->light_flag);
+        tl__light_pass_defines(in, d, p);
+        tl__perm_merge(p, &in->spec_perm);
+        if (k < 2 && in->o->fullscreen_lights) tl__perm_flag(p, TL__F_LIGHT_FULLSCREEN);
     }
 }
 

@@ -40,9 +40,12 @@ static void tl__classify_declare(const tl__plan_input *in, tl__pass_decl *d)
 
 static void tl__classify_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
+    tl__perm *k = &out->slot[0];
     out->used[0] = 1;
-    const char *material = in->o->mode == TL_MODE_FAT ? " TL_CLASSIFY_FAT" : (d->samples & TL__B(RT1)) ? " TL_CLASSIFY_RT1" : "";
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_GBUFFER_SAMPLES=%u %s%s", (unsigned)in->msaa, in->rt0_define, material);
+    tl__perm_value(k, TL__V_GBUFFER_SAMPLES, in->msaa);
+    tl__perm_flag(k, in->rt0_flag);
+    if (in->o->mode == TL_MODE_FAT) tl__perm_flag(k, TL__F_CLASSIFY_FAT);
+    else if (d->samples & TL__B(RT1)) tl__perm_flag(k, TL__F_CLASSIFY_RT1);
 }
 
 /* It writes the edge pixels alone: its samples-passed count is theirs. */
@@ -84,17 +87,17 @@ static void tl__samples_declare(const tl__plan_input *in, tl__pass_decl *d)
  * the tiled fragment pass in slot 3. */
 static void tl__samples_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
-    tl__pass_defines light = {0};
+    tl__pass_defines light;
+    memset(&light, 0, sizeof light);
     int tiled = in->strategy == TL_LIGHT_STRATEGY_TILED;
     (tiled ? &tl__pass_lights_tiled : &tl__pass_lights)->permute(in, d, &light);
     for (int k = 0; k < 3; k++) {
         if (!light.used[k]) continue;
         int slot = tiled ? 3 : k;
         out->used[slot] = 1;
-        int n = snprintf(out->slot[slot], sizeof out->slot[slot], "%s TL_MSAA_SAMPLE", light.slot[k]);
-        if (n < 0 || (size_t)n >= sizeof out->slot[slot]) out->overflow = 1;
+        out->slot[slot] = light.slot[k];
+        tl__perm_flag(&out->slot[slot], TL__F_MSAA_SAMPLE);
     }
-    out->overflow |= light.overflow;
 }
 
 static void tl__samples_execute(const tl__pass_ctx *ctx)

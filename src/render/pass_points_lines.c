@@ -27,7 +27,9 @@ static void tl__points_lines_permute(const tl__plan_input *in, const tl__pass_de
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_FORWARD %s%s", in->spec_define, in->material_defines);
+    tl__perm_flag(&out->slot[0], TL__F_FORWARD);
+    tl__perm_merge(&out->slot[0], &in->spec_perm);
+    tl__perm_merge(&out->slot[0], &in->material);
 }
 
 const tl__pass_def tl__pass_points_lines = {

@@ -46,10 +46,8 @@ static void tl__tonemap_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__tonemap_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     out->used[0] = 1;
-    if (in->msaa > 1) /* HDR is multisampled (pass_geometry.c) */
-        snprintf(out->slot[0], sizeof out->slot[0], "TL_MSAA_SAMPLES=%u", (unsigned)in->msaa);
-    else
-        snprintf(out->slot[0], sizeof out->slot[0], "%s", (d->samples & TL__B(BLOOM)) ? "TL_BLOOM" : "");
+    if (in->msaa > 1) tl__perm_value(&out->slot[0], TL__V_MSAA_SAMPLES, in->msaa); /* HDR is multisampled (pass_geometry.c) */
+    else if (d->samples & TL__B(BLOOM)) tl__perm_flag(&out->slot[0], TL__F_BLOOM);
 }
 
 /* Into a caller's framebuffer of another size the image is resampled: linear filtering then. */
@@ -86,8 +84,8 @@ static void tl__fxaa_permute(const tl__plan_input *in, const tl__pass_decl *d, t
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s%s", in->o->fxaa == TL_FXAA_12 ? "TL_FXAA_STEPS=5" : "TL_FXAA_STEPS=12",
-             in->o->fxaa == TL_FXAA_39 ? " TL_FXAA_FINE" : "");
+    tl__perm_value(&out->slot[0], TL__V_FXAA_STEPS, in->o->fxaa == TL_FXAA_12 ? 5u : 12u);
+    if (in->o->fxaa == TL_FXAA_39) tl__perm_flag(&out->slot[0], TL__F_FXAA_FINE);
 }
 
 /* FXAA samples between texels: linear filtering always. */

@@ -40,11 +40,13 @@ static void tl__shadow_debug_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__shadow_debug_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     (void)d;
-    const char *surface = in->o->mode == TL_MODE_FAT ? " TL_SHADOW_DEBUG_FAT"
-                          : in->mode->forward        ? " TL_SHADOW_DEBUG_DEPTH_NORMALS"
-                                                     : "";
+    tl__perm *k = &out->slot[0];
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_SHADOW_DEBUG%s %s %s", surface, in->spec_define, in->rt0_define);
+    tl__perm_flag(k, TL__F_SHADOW_DEBUG);
+    if (in->o->mode == TL_MODE_FAT) tl__perm_flag(k, TL__F_SHADOW_DEBUG_FAT);
+    else if (in->mode->forward) tl__perm_flag(k, TL__F_SHADOW_DEBUG_DEPTH_NORMALS);
+    tl__perm_merge(k, &in->spec_perm);
+    tl__perm_flag(k, in->rt0_flag);
 }
 
 const tl__pass_def tl__pass_shadow_debug = {

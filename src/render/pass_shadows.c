@@ -27,9 +27,8 @@ void tl__shadows_plan(tl__plan_input *in)
 {
     if (!in->lights || !in->f.shadow_lights || in->o->shadows.disabled) return;
     in->shadows = (uint32_t)in->f.shadow_lights;
-    size_t n = strlen(in->spec_define);
-    snprintf(in->spec_define + n, sizeof in->spec_define - n, " TL_SHADOWS%s",
-             in->o->shadows.filter == TL_SHADOW_FILTER_PCSS ? " TL_PCSS" : "");
+    tl__perm_flag(&in->spec_perm, TL__F_SHADOWS);
+    if (in->o->shadows.filter == TL_SHADOW_FILTER_PCSS) tl__perm_flag(&in->spec_perm, TL__F_PCSS);
 }
 
 static void tl__shadows_declare(const tl__plan_input *in, tl__pass_decl *d)

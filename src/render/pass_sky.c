@@ -54,8 +54,8 @@ static void tl__sky_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
     (void)d;
     out->used[0] = 1;
     int reversed = in->o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_FULLSCREEN_DEPTH=%s%s", reversed ? "0.0" : "1.0",
-             in->f.has_environment ? " TL_SKY_ENV" : "");
+    tl__perm_value(&out->slot[0], TL__V_FULLSCREEN_DEPTH, reversed ? TL__DEPTH_FAR_ZERO : TL__DEPTH_FAR_ONE);
+    if (in->f.has_environment) tl__perm_flag(&out->slot[0], TL__F_SKY_ENV);
 }
 
 const tl__pass_def tl__pass_sky = {

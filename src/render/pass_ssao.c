@@ -74,10 +74,11 @@ static void tl__ssao_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__ssao_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     (void)d;
-    const char *source = tl__ssao_fat(in) ? "TL_SSAO_FAT" : in->mode->forward ? "TL_SSAO_DEPTH_NORMALS" : in->rt0_define;
+    tl__perm *k = &out->slot[0];
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s TL_SSAO_SAMPLES=%u %s",
-             in->o->ssao.method == TL_SSAO_HEMISPHERE ? "TL_SSAO_HEMISPHERE" : "TL_SSAO_DISC", in->o->ssao.samples, source);
+    tl__perm_flag(k, in->o->ssao.method == TL_SSAO_HEMISPHERE ? TL__F_SSAO_HEMISPHERE : TL__F_SSAO_DISC);
+    tl__perm_value(k, TL__V_SSAO_SAMPLES, in->o->ssao.samples);
+    tl__perm_flag(k, tl__ssao_fat(in) ? TL__F_SSAO_FAT : in->mode->forward ? TL__F_SSAO_DEPTH_NORMALS : in->rt0_flag);
 }
 
 static int tl__ssao_wanted(const tl_renderer_options *o) { return o->ssao.method != TL_SSAO_OFF; }
@@ -113,7 +114,7 @@ static void tl__ssao_blur_permute(const tl__plan_input *in, const tl__pass_decl 
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_SSAO_BLUR_RADIUS=%u", in->o->ssao.blur_radius);
+    tl__perm_value(&out->slot[0], TL__V_SSAO_BLUR_RADIUS, in->o->ssao.blur_radius);
 }
 
 const tl__pass_def tl__pass_ssao_blur = {
@@ -141,7 +142,7 @@ static void tl__ssao_apply_permute(const tl__plan_input *in, const tl__pass_decl
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s", tl__ssao_fat(in) ? "TL_SSAO_FAT" : "");
+    if (tl__ssao_fat(in)) tl__perm_flag(&out->slot[0], TL__F_SSAO_FAT);
 }
 
 const tl__pass_def tl__pass_ssao_apply = {

@@ -70,9 +70,11 @@ static void tl__ssr_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__ssr_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     (void)d;
+    tl__perm *k = &out->slot[0];
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_SSR_STEPS=%u TL_SSR_REFINE=%u %s", in->o->ssr.steps,
-             in->o->ssr.refine, tl__ssr_fat(in) ? "TL_SSAO_FAT" : in->rt0_define);
+    tl__perm_value(k, TL__V_SSR_STEPS, in->o->ssr.steps);
+    tl__perm_value(k, TL__V_SSR_REFINE, in->o->ssr.refine);
+    tl__perm_flag(k, tl__ssr_fat(in) ? TL__F_SSAO_FAT : in->rt0_flag);
 }
 
 /* Forward runs no reflections: they cost it nothing (no MSAA given up). */

@@ -45,7 +45,7 @@ static void tl__stipple_depth_permute(const tl__plan_input *in, const tl__pass_d
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "%s", tl__depth_format(in->o) == GL_DEPTH24_STENCIL8 ? "TL_DEPTH_UNORM24" : "");
+    if (tl__depth_format(in->o) == GL_DEPTH24_STENCIL8) tl__perm_flag(&out->slot[0], TL__F_DEPTH_UNORM24);
 }
 
 const tl__pass_def tl__pass_stipple_depth = {
@@ -73,7 +73,9 @@ static void tl__stipple_permute(const tl__plan_input *in, const tl__pass_decl *d
 {
     (void)d;
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_STIPPLE %s%s", in->rt0_define, in->material_defines);
+    tl__perm_flag(&out->slot[0], TL__F_STIPPLE);
+    tl__perm_flag(&out->slot[0], in->rt0_flag);
+    tl__perm_merge(&out->slot[0], &in->material);
 }
 
 const tl__pass_def tl__pass_stipple = {
@@ -104,9 +106,14 @@ static void tl__resolve_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__resolve_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     (void)d;
+    tl__perm *k = &out->slot[0];
     out->used[0] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_FORWARD TL_TRANSPARENT TL_STIPPLE %s %s%s", in->spec_define,
-             in->rt0_define, in->material_defines);
+    tl__perm_flag(k, TL__F_FORWARD);
+    tl__perm_flag(k, TL__F_TRANSPARENT);
+    tl__perm_flag(k, TL__F_STIPPLE);
+    tl__perm_merge(k, &in->spec_perm);
+    tl__perm_flag(k, in->rt0_flag);
+    tl__perm_merge(k, &in->material);
 }
 
 const tl__pass_def tl__pass_stipple_resolve = {

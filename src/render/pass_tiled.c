@@ -38,12 +38,14 @@ static void tl__cull_permute(const tl__plan_input *in, const tl__pass_decl *d, t
 {
     out->used[0] = 1;
     /* the light scale: tiles are in the frame's pixels (their depth bounds cover every pixel the
-     * edge fix-up may re-light); the pairs counted are the light buffer's texels */
-    if (in->light_shift) snprintf(out->slot[0], sizeof out->slot[0], "TL_LIGHT_SHIFT=%u", (unsigned)in->light_shift);
-    /* forward's depth is multisampled with MSAA, and thin-lpp's cull reads its material pass's (pass_geometry.c) */
-    if (in->msaa > 1)
-        snprintf(out->slot[0], sizeof out->slot[0], "TL_DEPTH_SAMPLES=%u%s", (unsigned)in->msaa,
-                 (d->samples & TL__B(DEPTH_MSAA)) ? " TL_CULL_DEPTH_MSAA" : "");
+     * edge fix-up may re-light); the pairs counted are the light buffer's texels. Forward's depth is
+     * multisampled with MSAA, and thin-lpp's cull reads its material pass's (pass_geometry.c) */
+    if (in->msaa > 1) {
+        tl__perm_value(&out->slot[0], TL__V_DEPTH_SAMPLES, in->msaa);
+        if (d->samples & TL__B(DEPTH_MSAA)) tl__perm_flag(&out->slot[0], TL__F_CULL_DEPTH_MSAA);
+    } else if (in->light_shift) {
+        tl__perm_value(&out->slot[0], TL__V_LIGHT_SHIFT, in->light_shift);
+    }
 }
 
 const tl__pass_def tl__pass_light_cull = {
@@ -81,12 +83,14 @@ static void tl__tiled_declare(const tl__plan_input *in, tl__pass_decl *d)
 static void tl__tiled_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     int slot = tl__compute_shading(in);
-    const char *image_format = in->o->light_format == TL_LIGHT_FORMAT_R11G11B10F ? "r11f_g11f_b10f" : "rgba16f";
+    tl__perm *k = &out->slot[slot];
     out->used[slot] = 1;
-    char reads[96];
-    tl__light_pass_defines(in, d, reads, sizeof reads);
-    snprintf(out->slot[slot], sizeof out->slot[slot], "%s%s %s%s%s", in->mode->light_define, reads, in->spec_define,
-             slot ? " TL_LIGHT_IMAGE_FORMAT=" : "", slot ? image_format : "");
+    tl__perm_flag(k, in->mode->light_flag);
+    tl__light_pass_defines(in, d, k);
+    tl__perm_merge(k, &in->spec_perm);
+    if (slot)
+        tl__perm_value(k, TL__V_LIGHT_IMAGE_FORMAT, in->o->light_format == TL_LIGHT_FORMAT_R11G11B10F
+                                                        ? TL__IMAGE_FORMAT_R11G11B10F : TL__IMAGE_FORMAT_RGBA16F);
 }
 
 static void tl__tiled_execute(const tl__pass_ctx *ctx)

@@ -58,7 +58,7 @@ static void tl__vignette_permute(const tl__plan_input *in, const tl__pass_decl *
     (void)in;
     (void)d;
     out->used[0] = out->used[1] = 1;
-    snprintf(out->slot[0], sizeof out->slot[0], "TL_VIGNETTE_FACTOR");
+    tl__perm_flag(&out->slot[0], TL__F_VIGNETTE_FACTOR);
 }
 
 /* The factor into its target, then HDR darkened by it: write_fbos[0] holds HDR, [1] the factor. */

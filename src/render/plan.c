@@ -12,14 +12,16 @@
 
 #define TL__BIT(t) TL_TARGET_BIT(t)
 
-static void tl__material_defines(const tl_scene_feature_set *f, char *out, size_t size)
+static void tl__material_perm(const tl_scene_feature_set *f, tl__perm *k)
 {
-    snprintf(out, size, "%s%s%s%s%s%s%s%s", f->has_textures ? " TL_HAS_UV" : "",
-             f->has_normal_maps ? " TL_NORMAL_MAP" : "", f->has_metallic_roughness ? " TL_MR_TEXTURE" : "",
-             f->has_emissive_texture ? " TL_EMISSIVE_TEXTURE" : "", f->has_occlusion ? " TL_OCCLUSION" : "",
-             f->has_alpha_mask ? " TL_ALPHA_MASK" : "", f->has_vertex_colors ? " TL_VCOLOR" : "",
-             f->has_uv1 && f->has_textures ? " TL_UV1" : "");
-    snprintf(out + strlen(out), size - strlen(out), "%s", tl__models_define(f)); /* material_models.c */
+    const struct { int on; unsigned flag; } m[] = {
+        {f->has_textures, TL__F_HAS_UV}, {f->has_normal_maps, TL__F_NORMAL_MAP},
+        {f->has_metallic_roughness, TL__F_MR_TEXTURE}, {f->has_emissive_texture, TL__F_EMISSIVE_TEXTURE},
+        {f->has_occlusion, TL__F_OCCLUSION}, {f->has_alpha_mask, TL__F_ALPHA_MASK},
+        {f->has_vertex_colors, TL__F_VCOLOR}, {f->has_uv1 && f->has_textures, TL__F_UV1},
+        {tl__plan_has_models(f), TL__F_MATERIAL_MODELS}}; /* material_models.c */
+    for (size_t i = 0; i < sizeof m / sizeof m[0]; i++)
+        if (m[i].on) tl__perm_flag(k, m[i].flag);
 }
 
 /* Volumes or tiles: forced by the options, else by the number of local lights (docs/frame.md
@@ -63,9 +65,10 @@ static void tl__plan_lighting(tl__plan_input *in)
     }
     int ggx = in->lighting == TL_LIGHTING_GGX, exact = d->options.light_buffer == TL_LIGHT_BUFFER_EXACT;
     if (ggx && in->spec && in->mode->material_pass) in->fresnel = exact ? d->options.fresnel : TL_FRESNEL_NV;
-    snprintf(in->spec_define, sizeof in->spec_define, "%s%s%s",
-             !in->spec ? "TL_SPECULAR_NONE" : exact ? "TL_SPECULAR_EXACT" : "TL_SPECULAR_COMPACT", ggx ? " TL_GGX" : "",
-             in->fresnel == TL_FRESNEL_TWO_SUMS ? " TL_FRESNEL_SUMS" : in->fresnel == TL_FRESNEL_NV ? " TL_FRESNEL_NV" : "");
+    tl__perm_flag(&in->spec_perm, !in->spec ? TL__F_SPECULAR_NONE : exact ? TL__F_SPECULAR_EXACT : TL__F_SPECULAR_COMPACT);
+    if (ggx) tl__perm_flag(&in->spec_perm, TL__F_GGX);
+    if (in->fresnel == TL_FRESNEL_TWO_SUMS) tl__perm_flag(&in->spec_perm, TL__F_FRESNEL_SUMS);
+    if (in->fresnel == TL_FRESNEL_NV) tl__perm_flag(&in->spec_perm, TL__F_FRESNEL_NV);
 }
 
 /* Stipple or forward for the alpha-blended materials (docs/frame.md, "2d. Transparency through the
@@ -141,11 +144,11 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     tl__plan_lighting(in);
     tl__shadows_plan(in);
     tl__plan_transparency(in);
-    in->rt0_define = d->options.rt0 == TL_RT0_RGB10A2 ? "TL_RT0_RGB10A2" : "TL_RT0_RGBA8";
-    tl__material_defines(f, in->material_defines, sizeof in->material_defines);
+    in->rt0_flag = d->options.rt0 == TL_RT0_RGB10A2 ? TL__F_RT0_RGB10A2 : TL__F_RT0_RGBA8;
+    tl__material_perm(f, &in->material);
     in->coat_sums = tl__plan_coat_sums(in, &in->coat_why);
-    if (in->coat_sums) strcat(in->material_defines, " TL_COAT_SUMS"); /* coat_sums.glsl */
-    if (f->has_environment) strcat(in->material_defines, " TL_IBL"); /* image-based light (ibl.glsl) */
+    if (in->coat_sums) tl__perm_flag(&in->material, TL__F_COAT_SUMS); /* coat_sums.glsl */
+    if (f->has_environment) tl__perm_flag(&in->material, TL__F_IBL); /* image-based light (ibl.glsl) */
 }
 
 /* ---- selection and culling ------------------------------------------------------------------ */
@@ -327,8 +330,8 @@ static void tl__share_memory(tl__plan *p, const tl_renderer_options *o)
 
 /* ---- programs ------------------------------------------------------------------------------- */
 
-/* TL_OUT_<TARGET>=<location> for every colour write: attachments in tl_target_id order; 0 when they
- * do not fit `size`. */
+/* TL_OUT_<TARGET>=<location> for every colour write: attachments in tl_target_id order (what
+ * programs.c gives the program too); 0 when they do not fit `size`. */
 static int tl__output_defines(const tl__plan *p, tl_target_set writes, char *out, size_t size)
 {
     size_t len = 0;
@@ -343,8 +346,12 @@ static int tl__output_defines(const tl__plan *p, tl_target_set writes, char *out
     return 1;
 }
 
-/* Each planned program with its permutation; TL_ERROR_LIMIT if its switches do not fit
- * tl_plan_program.defines (a missing #define would build the wrong program silently). */
+#define TL__OUTS_TEXT_MAX (TL__FRAMEBUFFER_MAX_COLORS * 48)
+_Static_assert(TL__OUTS_TEXT_MAX + 1 + TL__PERM_TEXT_MAX <= TL_PLAN_DEFINES_SIZE,
+               "tl_plan_program.defines holds every switch a key can make");
+
+/* Each planned program with its permutation key (p->perms) and its text (tl_plan_program.defines);
+ * a key with a value past its switch is refused naming it (tl__perm_check). */
 static tl_result tl__programs(const tl__plan_input *in, tl__plan *p)
 {
     tl_frame_plan *fp = &p->pub;
@@ -354,17 +361,20 @@ static tl_result tl__programs(const tl__plan_input *in, tl__plan *p)
         tl__pass_defines defs;
         memset(&defs, 0, sizeof defs);
         def->permute(in, &p->decl[i], &defs);
-        char outs[160];
-        if (defs.overflow || !tl__output_defines(p, p->decl[i].writes, outs, sizeof outs)) return TL_ERROR_LIMIT;
+        char outs[TL__OUTS_TEXT_MAX];
+        if (!tl__output_defines(p, p->decl[i].writes, outs, sizeof outs)) return TL_ERROR_LIMIT;
         for (uint32_t s = 0; s < TL__PASS_MAX_PROGRAMS && fp->program_count < TL_PLAN_MAX_PROGRAMS; s++) {
             if (!defs.used[s]) continue;
+            if (!tl__perm_check(&defs.slot[s], p->refused, sizeof p->refused)) return TL_ERROR_LIMIT;
+            p->perms[fp->program_count] = defs.slot[s];
             tl_plan_program *pr = &fp->programs[fp->program_count++];
             pr->pass = def->id;
             pr->slot = s;
             snprintf(pr->name, sizeof pr->name, "%s", def->programs[s].name);
-            int n = snprintf(pr->defines, sizeof pr->defines, "%s%s%s", outs, outs[0] && defs.slot[s][0] ? " " : "",
-                             defs.slot[s]);
-            if (n < 0 || (size_t)n >= sizeof pr->defines) return TL_ERROR_LIMIT;
+            size_t n = strlen(outs);
+            memcpy(pr->defines, outs, n + 1);
+            if (n && tl__perm_format(&defs.slot[s], NULL, 0)) pr->defines[n++] = ' ';
+            tl__perm_format(&defs.slot[s], pr->defines + n, sizeof pr->defines - n);
         }
     }
     return TL_OK;

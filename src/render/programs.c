@@ -13,44 +13,41 @@
 #define TL__BINDING_STRING(name, value) "TL_" #name "=" #value,
 static const char *const tl__binding_defines[] = {TL__BINDING_LIST(TL__BINDING_STRING)};
 #define TL__BINDING_DEFINE_COUNT (sizeof tl__binding_defines / sizeof tl__binding_defines[0])
-/* The bindings, a unit per target and every word of a plan's defines (tl_plan_program.defines: at
- * most 128 words in 256 characters), so no define is ever dropped: with a fixed 64, the target
- * added after 28 pushed a light program's last define (TL_LIGHT_FULLSCREEN) out silently. */
-#define TL__MAX_DEFINES (TL__BINDING_DEFINE_COUNT + 2 * TL_TARGET_COUNT + 128)
+/* The bindings, three per target (texture and image unit, colour location) and every switch a key
+ * has: no define is ever dropped (a fixed 64 once pushed a light program's last define out). */
+#define TL__MAX_DEFINES (TL__BINDING_DEFINE_COUNT + 3 * TL_TARGET_COUNT + TL__FLAG_COUNT + TL__VALUE_COUNT)
 
-/* Every target's texture and image unit for a pass binding `u` (see tl__program_units). */
+/* Every target's texture and image unit for a pass binding `u` (see tl__program_units), and the
+ * colour location of each of its colour writes (TL_OUT_<TARGET>, tl_target_id order). */
 static size_t tl__unit_defines(const tl__program_units *u, char (*units)[48], const char **out)
 {
     size_t n = 0;
-    uint32_t unit = 0, image = 0;
+    uint32_t unit = 0, image = 0, location = 0;
     const tl__target_def *defs[TL_TARGET_COUNT];
     tl__target_defs(defs);
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
         if (!defs[t]) continue;
         int sampled = u && (u->samples & TL_TARGET_BIT(t)), imaged = u && (u->images & TL_TARGET_BIT(t));
-        snprintf(units[2 * t], 48, "TL_UNIT_%s=%u", defs[t]->macro, sampled ? unit++ : (unsigned)TL__UNIT_NONE);
-        snprintf(units[2 * t + 1], 48, "TL_IMAGE_%s=%u", defs[t]->macro, imaged ? image++ : (unsigned)TL__IMAGE_NONE);
-        out[n++] = units[2 * t];
-        out[n++] = units[2 * t + 1];
+        snprintf(units[3 * t], 48, "TL_UNIT_%s=%u", defs[t]->macro, sampled ? unit++ : (unsigned)TL__UNIT_NONE);
+        snprintf(units[3 * t + 1], 48, "TL_IMAGE_%s=%u", defs[t]->macro, imaged ? image++ : (unsigned)TL__IMAGE_NONE);
+        out[n++] = units[3 * t];
+        out[n++] = units[3 * t + 1];
+        if (u && (u->writes & TL_TARGET_BIT(t)) && !defs[t]->depth && !defs[t]->buffer_bytes) {
+            snprintf(units[3 * t + 2], 48, "TL_OUT_%s=%u", defs[t]->macro, location++);
+            out[n++] = units[3 * t + 2];
+        }
     }
     return n;
 }
 
-/* Splits the space-separated `defines` (copied into buf) after the fixed binding defines and the
- * units. */
-static size_t tl__define_list(const char *defines, const tl__program_units *u, char *buf, size_t buf_size,
-                              char (*units)[48], const char **out)
+/* The fixed binding defines, the units and the key's switches. */
+static size_t tl__define_list(const tl__perm *key, const tl__program_units *u, char *buf, char (*units)[48],
+                              const char **out)
 {
     size_t n = 0;
     for (size_t i = 0; i < TL__BINDING_DEFINE_COUNT; i++) out[n++] = tl__binding_defines[i];
     n += tl__unit_defines(u, units, out + n);
-    snprintf(buf, buf_size, "%s", defines);
-    for (char *c = buf; *c && n < TL__MAX_DEFINES;) { /* strtok keeps hidden state: split by hand */
-        while (*c == ' ') *c++ = '\0';
-        if (!*c) break;
-        out[n++] = c;
-        while (*c && *c != ' ') c++;
-    }
+    if (key) n += tl__perm_split(key, buf, out + n);
     return n;
 }
 
@@ -67,21 +64,22 @@ static tl_result tl__cache_grow(tl__device *r)
     return TL_OK;
 }
 
-tl_result tl__program_get(tl__device *r, const char *label, const tl__program_src *src, const char *defines,
+tl_result tl__program_get(tl__device *r, const char *label, const tl__program_src *src, const tl__perm *key,
                           const tl__program_units *units, GLuint *out)
 {
-    char key[512];
-    snprintf(key, sizeof key, "%s|%s|%s|%llx|%llx|%s", src->vs ? src->vs : "", src->fs ? src->fs : "",
-             src->cs ? src->cs : "", units ? (unsigned long long)units->samples : 0ull,
-             units ? (unsigned long long)units->images : 0ull, defines);
+    tl__program_entry want;
+    memset(&want, 0, sizeof want); /* compared whole: padding too */
+    want.src = src;
+    if (key) want.key = *key;
+    if (units) want.units = *units;
     for (size_t i = 0; i < r->cache_count; i++)
-        if (strcmp(r->cache[i].key, key) == 0) {
+        if (memcmp(&r->cache[i].src, &want.src, sizeof want - offsetof(tl__program_entry, src)) == 0) {
             *out = r->cache[i].program;
             return TL_OK;
         }
     tl_result res = tl__cache_grow(r);
     if (res != TL_OK) return res;
-    char buf[512], unit_text[2 * TL_TARGET_COUNT][48];
+    char buf[TL__PERM_TEXT_MAX], unit_text[3 * TL_TARGET_COUNT][48];
     const char *defs[TL__MAX_DEFINES];
     tl__program_desc pd = {0};
     pd.label = label;
@@ -92,14 +90,17 @@ tl_result tl__program_get(tl__device *r, const char *label, const tl__program_sr
         pd.stages[1] = (tl__shader_stage){GL_FRAGMENT_SHADER, src->fs, NULL};
     }
     pd.defines = defs;
-    pd.define_count = tl__define_list(defines, units, buf, sizeof buf, unit_text, defs);
-    char log[2048];
+    pd.define_count = tl__define_list(key, units, buf, unit_text, defs);
+    char log[2048], text[256];
     GLuint p = 0;
     res = tl__program_build(&r->gl, &pd, &p, log, sizeof log);
-    if (res != TL_OK) return tl__fail(r, res, "program %.64s (%.128s): %.700s", label, defines, log);
-    tl__program_entry *e = &r->cache[r->cache_count++];
-    snprintf(e->key, sizeof e->key, "%s", key);
-    e->program = p;
+    if (res != TL_OK) {
+        if (key) tl__perm_format(key, text, sizeof text);
+        else text[0] = '\0';
+        return tl__fail(r, res, "program %.64s (%.128s): %.700s", label, text, log);
+    }
+    want.program = p;
+    r->cache[r->cache_count++] = want;
     r->programs_compiled++;
     *out = p;
     return TL_OK;

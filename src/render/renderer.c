@@ -63,6 +63,9 @@ static tl_result tl__replan(tl_renderer *r)
     d.options = r->given; /* as the caller gave them: the plan tells an option asked from its default */
     d.options.msaa = r->desc.options.msaa; /* but the samples the context's targets have (tl__msaa_for_context) */
     tl_result res = tl__plan_build(&d, &f, g->apps, g->app_count, &plan);
+    if (res != TL_OK && plan.refused[0])
+        return tl__fail(&r->dev, res, "renderer: planning the frame failed: shader switch %s is past what it holds",
+                        plan.refused);
     if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: planning the frame failed");
     if ((res = tl__plan_budget(r, &plan)) != TL_OK) return res;
     int same = g->pass_count && memcmp(&plan, &g->plan, sizeof plan) == 0;

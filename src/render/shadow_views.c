@@ -443,7 +443,7 @@ tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights 
 {
     static const tl__program_src src = {"shadow.depth", "shadow_depth.vert.glsl", "shadow_depth.frag.glsl", NULL};
     tl_result res = tl__shadow_arrays(dev, s, l->count ? l->count : 1);
-    if (res == TL_OK && !s->program) res = tl__program_get(dev, "shadow.depth", &src, "", NULL, &s->program);
+    if (res == TL_OK && !s->program) res = tl__program_get(dev, "shadow.depth", &src, NULL, NULL, &s->program);
     if (res != TL_OK) return res;
     int reversed = o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
     /* the views hold the largest kernel: the PCF radius, or PCSS's largest */

@@ -35,7 +35,7 @@ static const downgrade_case k_cases[] = {
     {"msaa with per-sample edges in forward",
      {.mode = TL_MODE_FORWARD, .msaa = 4, .msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES},
      {.mode = TL_MODE_FORWARD, .msaa = 4}, 4, "msaa", "4", "1", "every sample"},
-    {"msaa with an effect", {.msaa = 2, .bloom.enabled = 1}, {.bloom.enabled = 1}, 4, "msaa", "2", "1", "effects"},
+    {"msaa with an effect", {.msaa = 2, .bloom.enabled = 1}, {.bloom.enabled = 1}, 4, "msaa", "2", "1", "bloom reads a one-sample HDR"},
     {"light scale outside thin-lpp", {.mode = TL_MODE_FAT, .light_scale = 0.25f}, {.mode = TL_MODE_FAT}, 4,
      "light_scale", "0.25", "1", "only thin-lpp"},
     {"stipple with fog", {.transparency = TL_TRANSPARENCY_STIPPLE, .fog.mode = TL_FOG_DISTANCE},
