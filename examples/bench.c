@@ -87,9 +87,8 @@ static void bench__fresnel_variant(bench_options *o, bench_scene *scene)
     tl_scene_feature_set features;
     tl_frame_plan plan;
     tl_scene_features(bench_scene_get(scene), &features);
-    tl_renderer_desc desc = {.options.mode = TL_MODE_THIN_LPP, .options.lighting = o->lighting, .width = 64,
-                             .height = 64};
-    o->fresnel_nv_variant = o->fresnel == TL_FRESNEL_DEFAULT && tl_frame_plan_build(&desc, &features, &plan) == TL_OK &&
+    tl_renderer_desc desc = bench_config_desc(o, bench_config_make(TL_MODE_THIN_LPP, TL_LIGHT_STRATEGY_DEFAULT), 64, 64);
+    o->fresnel_nv_variant = o->base.fresnel == TL_FRESNEL_DEFAULT && tl_frame_plan_build(&desc, &features, &plan) == TL_OK &&
                             plan.lighting == TL_LIGHTING_GGX;
 }
 

@@ -74,11 +74,8 @@ static int bench__shadow_lights_make(bench_scene *scene, uint32_t n, bench__shad
 
 static tl_renderer_desc bench__shadow_desc(const bench_options *opt, bench_config c, int slot)
 {
-    tl_renderer_desc d = {.options.mode = bench_config_mode(c), .options.light_strategy = bench_config_strategy(c),
-                          .options.lighting = opt->lighting, .options.fresnel = bench_config_fresnel(c, opt->fresnel),
-                          .width = opt->sizes[0].width, .height = opt->sizes[0].height,
-                          .options.synchronous_stats = 1};
-    d.options.shadows.no_cache = slot == BENCH__NOCACHE;
+    tl_renderer_desc d = bench_config_desc(opt, c, opt->sizes[0].width, opt->sizes[0].height);
+    if (slot == BENCH__NOCACHE) d.options.shadows.cache = TL_SWITCH_OFF;
     tl_tool_budget_renderer(&opt->budgets, &d);
     return d;
 }

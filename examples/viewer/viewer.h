@@ -121,7 +121,6 @@ typedef struct vw_app {
     size_t plan_text_size;
     float depth_range[2];            /* the depth view's scale: nearest and farthest covered pixel */
     uint32_t tile_max;               /* the tile view's scale: most lights in one tile */
-    unsigned char fx_saved[5][64];   /* an effect's settings while the panel has it off (ui.cpp) */
     char status[160];                /* a line for the panel (the last screenshot, an error) */
     char view_note[96];              /* why a view is empty in this mode */
     uint8_t *image;                  /* the view, RGBA8 bottom-up, width x height */

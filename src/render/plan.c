@@ -73,7 +73,7 @@ static void tl__plan_lighting(tl__plan_input *in)
  * exactly the plan without shadows. */
 static void tl__plan_shadows(tl__plan_input *in)
 {
-    if (!in->lights || !in->f.shadow_lights || in->o->shadows.disabled) return;
+    if (!in->lights || !in->f.shadow_lights || in->o->shadows.enabled == TL_SWITCH_OFF) return;
     in->shadows = (uint32_t)in->f.shadow_lights;
     size_t n = strlen(in->spec_define);
     snprintf(in->spec_define + n, sizeof in->spec_define - n, " TL_SHADOWS%s",
@@ -95,7 +95,7 @@ static void tl__plan_transparency(tl__plan_input *in)
     else if (in->light_shift) why = "the reduced light buffer would collapse the 2x2 stipple";
     else if (in->msaa > 1) why = "MSAA: the material pass's samples would split the 2x2 stipple";
     else if (!in->lights) why = "no lights: nothing to gather";
-    else if (o->fog.mode != TL_FOG_OFF || o->dof.enabled || o->ssr.enabled)
+    else if (o->fog.enabled || o->dof.enabled || o->ssr.enabled)
         why = "fog, depth of field or reflections read depth after the layers";
     if (why) {
         const char *lead = o->transparency == TL_TRANSPARENCY_FORWARD   ? ""
@@ -137,7 +137,7 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     in->o = &in->d.options;
     in->f = *features;
     tl_scene_feature_set *f = &in->f;
-    if (d->options.no_planning) { /* plan for every feature, as a renderer without a planner would */
+    if (d->options.planning == TL_SWITCH_OFF) { /* plan for every feature, as a renderer without a planner would */
         f->point_lights += !f->point_lights;
         f->spot_lights += !f->spot_lights;
         f->directional_lights += !f->directional_lights;

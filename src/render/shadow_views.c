@@ -12,34 +12,6 @@
 
 #include "shadows.h"
 
-void tl__shadow_desc_resolve(tl_shadow_desc *s)
-{
-    if (!s->atlas_size) s->atlas_size = 4096;
-    if (!s->max_lights) s->max_lights = 8;
-    if (!s->pcf_radius) s->pcf_radius = 1;
-    if (s->no_pcf) s->pcf_radius = 0;
-    if (s->filter == TL_SHADOW_FILTER_DEFAULT) s->filter = TL_SHADOW_FILTER_PCF;
-    if (s->directional_angle == 0.0f) s->directional_angle = 0.00465f;
-}
-
-int tl__shadow_desc_check(const tl_shadow_desc *s, const char *prefix, tl__why *why)
-{
-    uint32_t a = s->atlas_size;
-    char lights[32];
-    snprintf(lights, sizeof lights, "1..%u; 0: 8", (unsigned)TL__SHADOW_MAX_LIGHTS);
-    const tl__option_range rows[] = {
-        TL__RANGE_INT(a < 1024 || a > 16384 || (a & (a - 1)) != 0, "atlas_size", a,
-                      "a power of two, 1024..16384; 0: 4096"),
-        TL__RANGE_INT(s->max_lights > TL__SHADOW_MAX_LIGHTS, "max_lights", s->max_lights, lights),
-        TL__RANGE_INT(s->pcf_radius > 3, "pcf_radius", s->pcf_radius, "0..3; 0: 1"),
-        TL__RANGE_INT(s->filter < TL_SHADOW_FILTER_PCF || s->filter > TL_SHADOW_FILTER_PCSS, "filter", (int)s->filter,
-                      "1 PCF or 2 PCSS; 0: PCF"),
-        TL__RANGE_FLOAT(!(s->directional_angle > 0.0f && s->directional_angle <= 0.2f), "directional_angle",
-                        s->directional_angle, "(0, 0.2] radians; 0: 0.00465"),
-    };
-    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
-}
-
 /* ---- matrices ----------------------------------------------------------------------------------- */
 
 static float tl__dot3(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
@@ -483,7 +455,7 @@ tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights 
     }
     tl__shadow_block_params(s, v, o, reversed);
     for (size_t i = 0; i < s->view_count; i++)
-        s->views[i].render = o->shadows.no_cache || i >= s->kept_count || s->kept[i] != s->views[i].signature;
+        s->views[i].render = o->shadows.cache == TL_SWITCH_OFF || i >= s->kept_count || s->kept[i] != s->views[i].signature;
     st->shadow_lights = (uint32_t)selected;
     st->shadow_lights_fading = fading;
     st->shadow_atlas_bytes = (size_t)o->shadows.atlas_size * o->shadows.atlas_size * 4u;

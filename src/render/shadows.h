@@ -74,11 +74,6 @@ typedef struct tl__shadows {
     double last_ms;
 } tl__shadows;
 
-/* desc.c: the defaults of tl_shadow_desc, and whether it is in range. */
-void tl__shadow_desc_resolve(tl_shadow_desc *s);
-/* 1 when the resolved options are in range, else 0 naming the field in `why` (option_check.h). */
-int tl__shadow_desc_check(const tl_shadow_desc *s, const char *prefix, tl__why *why);
-
 /* shadow_views.c: selects the casting lights (budget, fading), places their views in the atlas and
  * computes every matrix; decides which views must be rendered again (signatures); fills the slots,
  * the lookup block and the frame's statistics. */

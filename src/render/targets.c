@@ -82,7 +82,7 @@ const char *tl__msaa_refusal(const tl_renderer_options *o)
     if (tl__light_shift(o)) return "the reduced light buffer's upsample runs at one sample";
     /* forward runs no reflections (pass_ssr.c): they cost it nothing */
     int ssr = o->ssr.enabled && o->mode != TL_MODE_FORWARD;
-    if (o->ssao.method != TL_SSAO_OFF || o->fog.mode != TL_FOG_OFF || o->dof.enabled || o->bloom.enabled || ssr ||
+    if (o->ssao.enabled || o->fog.enabled || o->dof.enabled || o->bloom.enabled || ssr ||
         o->vignette.enabled)
         return "screen-space effects read a one-sample HDR and depth";
     return NULL;

@@ -565,7 +565,7 @@ TL_TEST(ssao_matches_cpu_estimator_every_mode)
                     tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m]};
                     d.options.depth_format = z ? TL_DEPTH_FORMAT_D32F_REVERSED : TL_DEPTH_FORMAT_D24;
                     d.options.ssao = params[ps];
-                    d.options.ssao.method = (tl_ssao_method)method;
+                    d.options.ssao.enabled = 1, d.options.ssao.method = (tl_ssao_method)method;
                     ssao_result res;
                     check_frame(&q, d, &res);
                     printf("  %-10s %-13s %-13s set %d: raw %.3f, blur %.3f, HDR %.3f of the slack; reference "

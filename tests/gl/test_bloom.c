@@ -451,8 +451,8 @@ TL_TEST_FULL(bloom_finite_at_fp16_max_and_on_tiny_targets)
             uint32_t w = sizes[i][0], h = sizes[i][1];
             tl_renderer *r = renderer((tl_renderer_desc){.options.mode = k_modes[m], .width = w, .height = h,
                                                          .options.keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_BLOOM),
-                                                         .options.ssao = {.method = TL_SSAO_DISC},
-                                                         .options.fog = {.mode = TL_FOG_DISTANCE},
+                                                         .options.ssao = {.enabled = 1, .method = TL_SSAO_DISC},
+                                                         .options.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE},
                                                          .options.dof = {.enabled = 1},
                                                          .options.bloom = {.enabled = 1, .threshold = -1}},
                                       s);

@@ -139,8 +139,8 @@ TL_TEST(frame_graph_steady_frame_gl_calls)
         int mode = TL_MODE_THIN_LPP + run % (TL_MODE_COUNT_ - 1), fx = run >= TL_MODE_COUNT_ - 1;
         tl_renderer_desc d = {.options.mode = (tl_render_mode)mode, .width = 160, .height = 90};
         if (fx) {
-            d.options.ssao.method = TL_SSAO_DISC;
-            d.options.fog.mode = TL_FOG_DISTANCE;
+            d.options.ssao.enabled = 1, d.options.ssao.method = TL_SSAO_DISC;
+            d.options.fog.enabled = 1, d.options.fog.mode = TL_FOG_DISTANCE;
             d.options.dof.enabled = d.options.bloom.enabled = 1;
         }
         tl_renderer *r = renderer(d, counting_loader, s);

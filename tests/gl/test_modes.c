@@ -439,7 +439,7 @@ TL_TEST(render_to_caller_framebuffer)
 }
 
 /* What planning saves: a scene without specular materials and without spot lights, planned and
- * unplanned (tl_renderer_options.no_planning): fewer bytes, fewer programs, the same image. */
+ * unplanned (tl_renderer_options.planning off): fewer bytes, fewer programs, the same image. */
 TL_TEST(plan_saving_same_image)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
@@ -459,7 +459,7 @@ TL_TEST(plan_saving_same_image)
         tl_renderer *r = NULL;
         tl_renderer_desc d = {.width = w, .height = h, .get_proc_address = tl_context_proc_loader,
                               .get_proc_address_user = g_ctx, .options.synchronous_stats = 1,
-                              .options.no_planning = unplanned};
+                              .options.planning = unplanned ? TL_SWITCH_OFF : TL_SWITCH_DEFAULT};
         TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
         if (!r) continue;
         TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);

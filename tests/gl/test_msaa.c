@@ -146,8 +146,8 @@ TL_TEST(msaa_plan_targets_and_refusals)
         {.options.mode = TL_MODE_THIN_DEFERRED, .options.msaa_lighting = TL_MSAA_LIGHTING_MATERIAL_PASS},
         {.options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES, .options.light_scale = 0.5f},
         {.options.mode = TL_MODE_FORWARD, .options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES},
-        {.options.mode = TL_MODE_FAT, .options.ssao.method = TL_SSAO_DISC},
-        {.options.light_scale = 0.5f}, {.options.ssao.method = TL_SSAO_DISC}, {.options.bloom.enabled = 1}};
+        {.options.mode = TL_MODE_FAT, .options.ssao = {.enabled = 1, .method = TL_SSAO_DISC}},
+        {.options.light_scale = 0.5f}, {.options.ssao = {.enabled = 1, .method = TL_SSAO_DISC}}, {.options.bloom.enabled = 1}};
     for (int i = 0; i < 8; i++) {
         tl_frame_plan p, off;
         refused[i].options.msaa = 4;

@@ -111,7 +111,7 @@ typedef struct option_case {
     tl_renderer_options o;
 } option_case;
 
-#define SSAO_ON {.method = TL_SSAO_DISC}
+#define SSAO_ON {.enabled = 1, .method = TL_SSAO_DISC}
 static const option_case k_cases[] = {
     {"defaults", {0}},
     {"forward", {.mode = TL_MODE_FORWARD}},
@@ -129,9 +129,9 @@ static const option_case k_cases[] = {
                                                   .light_strategy = TL_LIGHT_STRATEGY_TILED, .tile_size = 8,
                                                   .tiled_shading = TL_TILED_SHADING_COMPUTE}},
     {"ssao", {.ssao = SSAO_ON}},
-    {"ssao hemisphere, forward", {.mode = TL_MODE_FORWARD, .ssao = {.method = TL_SSAO_HEMISPHERE, .diffuse = 1}}},
-    {"fog", {.fog = {.mode = TL_FOG_DISTANCE, .color = {0.1f, 0.1f, 0.12f}}}},
-    {"height fog, fat", {.mode = TL_MODE_FAT, .fog = {.mode = TL_FOG_HEIGHT, .density = 0.2f}}},
+    {"ssao hemisphere, forward", {.mode = TL_MODE_FORWARD, .ssao = {.enabled = 1, .method = TL_SSAO_HEMISPHERE, .diffuse = 1}}},
+    {"fog", {.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE, .color = {0.1f, 0.1f, 0.12f}}}},
+    {"height fog, fat", {.mode = TL_MODE_FAT, .fog = {.enabled = 1, .mode = TL_FOG_HEIGHT, .density = 0.2f}}},
     {"depth of field", {.dof = {.enabled = 1, .aperture = 0.02f}}},
     {"bloom", {.bloom = {.enabled = 1, .threshold = 0.2f}}},
     {"bloom, 3 levels", {.bloom = {.enabled = 1, .threshold = 0.2f, .levels = 3}}},
@@ -142,13 +142,13 @@ static const option_case k_cases[] = {
     {"fxaa 12", {.fxaa = TL_FXAA_12, .fxaa_subpix = -1}},
     {"fxaa 39, exposure 2", {.fxaa = TL_FXAA_39, .exposure = 2.0f}},
     {"ambient off, full-screen lights", {.ambient = {-1, -1, -1}, .fullscreen_lights = 1}},
-    {"forward without pre-pass", {.mode = TL_MODE_FORWARD, .forward_no_depth_prepass = 1}},
-    {"every effect", {.ssao = SSAO_ON, .fog = {.mode = TL_FOG_DISTANCE}, .dof = {.enabled = 1}, .bloom = {.enabled = 1},
+    {"forward without pre-pass", {.mode = TL_MODE_FORWARD, .forward_depth_prepass = TL_SWITCH_OFF}},
+    {"every effect", {.ssao = SSAO_ON, .fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}, .dof = {.enabled = 1}, .bloom = {.enabled = 1},
                       .ssr = {.enabled = 1}, .vignette = {.enabled = 1}, .fxaa = TL_FXAA_OFF}},
     {"every effect, fat, reversed z", {.mode = TL_MODE_FAT, .depth_format = TL_DEPTH_FORMAT_D32F_REVERSED,
-                                       .ssao = SSAO_ON, .fog = {.mode = TL_FOG_DISTANCE}, .dof = {.enabled = 1},
+                                       .ssao = SSAO_ON, .fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}, .dof = {.enabled = 1},
                                        .bloom = {.enabled = 1}, .ssr = {.enabled = 1}}},
-    {"no planning", {.no_planning = 1}},
+    {"no planning", {.planning = TL_SWITCH_OFF}},
     {"defaults again", {0}},
 };
 #define CASES (sizeof k_cases / sizeof k_cases[0])
@@ -228,12 +228,12 @@ TL_TEST(options_out_of_range_keep_the_renderer)
 {
     if (!ensure_context() || !load_gl()) { tl_test_failures++; return; }
     tl_scene *s = crypt(8);
-    tl_renderer_options fog = {.fog = {.mode = TL_FOG_DISTANCE}};
+    tl_renderer_options fog = {.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}};
     tl_renderer *r = s ? renderer(&fog, 64, 36, s) : NULL;
     const size_t n = 64 * 36 * 4;
     uint8_t *a = malloc(n), *b = malloc(n);
     const tl_renderer_options bad[] = {{.mode = TL_MODE_COUNT_},      {.tile_size = 12},
-                                       {.ssao = {.method = TL_SSAO_DISC, .samples = 65}},
+                                       {.ssao = {.enabled = 1, .method = TL_SSAO_DISC, .samples = 65}},
                                        {.bloom = {.enabled = 1, .levels = 9}},
                                        {.light_buffer = TL_LIGHT_BUFFER_COMPACT, .light_format = TL_LIGHT_FORMAT_R11G11B10F}};
     if (r && a && b && render_read(r, a, n)) {
@@ -287,7 +287,7 @@ static const cost_case k_costs[] = {
     {"depth format (D24 <-> reversed D32F)", {0}, {.depth_format = TL_DEPTH_FORMAT_D32F_REVERSED}},
     {"lighting (Blinn-Phong <-> GGX)", {.lighting = TL_LIGHTING_BLINN_PHONG}, {.lighting = TL_LIGHTING_GGX}},
     {"SSAO off <-> on", {0}, {.ssao = SSAO_ON}},
-    {"fog off <-> on", {0}, {.fog = {.mode = TL_FOG_DISTANCE}}},
+    {"fog off <-> on", {0}, {.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}}},
     {"depth of field off <-> on", {0}, {.dof = {.enabled = 1}}},
     {"bloom off <-> on", {0}, {.bloom = {.enabled = 1}}},
     {"reflections off <-> on", {0}, {.ssr = {.enabled = 1}}},

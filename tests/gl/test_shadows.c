@@ -469,7 +469,7 @@ TL_TEST(shadows_cache_keeps_unchanged_maps)
     tl_shadow_case c;
     TL_CHECK(tl_shadow_stiff_case(&c));
     tl_renderer *r = tl__stiff_renderer(&c, c.lights, 2, (tl_renderer_options){0});
-    tl_renderer *u = tl__stiff_renderer(&c, c.lights, 2, (tl_renderer_options){.shadows = {.no_cache = 1}});
+    tl_renderer *u = tl__stiff_renderer(&c, c.lights, 2, (tl_renderer_options){.shadows = {.cache = TL_SWITCH_OFF}});
     TL_CHECK(r && u);
     if (r && u) {
         tl_frame_stats st, su;
@@ -500,7 +500,7 @@ TL_TEST(shadows_gpu_ms_includes_shadow_maps)
 {
     tl_shadow_case c;
     TL_CHECK(tl_shadow_stiff_case(&c));
-    tl_renderer *u = tl__stiff_renderer(&c, c.lights, 2, (tl_renderer_options){.shadows = {.no_cache = 1}});
+    tl_renderer *u = tl__stiff_renderer(&c, c.lights, 2, (tl_renderer_options){.shadows = {.cache = TL_SWITCH_OFF}});
     tl_renderer *k = tl__stiff_renderer(&c, c.lights, 2, (tl_renderer_options){0});
     TL_CHECK(u && k);
     for (int cached = 0; u && k && cached < 2; cached++) {
@@ -546,7 +546,7 @@ TL_TEST(shadows_budget_and_bad_options)
                                                         .options = {.shadows = {.atlas_size = 1000}}},
                                     &bad) == TL_ERROR_INVALID_ARGUMENT);
     tl_renderer_destroy(bad);
-    const tl_shadow_desc refused[] = {{.filter = (tl_shadow_filter)3}, {.directional_angle = -0.01f},
+    const tl_shadow_desc refused[] = {{.filter = TL_SHADOW_FILTER_COUNT_}, {.directional_angle = -0.01f},
                                       {.directional_angle = 0.3f}, {.directional_angle = NAN}};
     for (size_t i = 0; i < sizeof refused / sizeof refused[0]; i++) {
         bad = NULL;

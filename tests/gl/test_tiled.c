@@ -442,7 +442,7 @@ TL_TEST(tiled_planner_chooses_by_light_count)
     TL_CHECK(p.light_strategy == TL_LIGHT_STRATEGY_VOLUMES && strstr(p.strategy_reason, "forced"));
     d.options.light_strategy = TL_LIGHT_STRATEGY_TILED;
     d.options.mode = TL_MODE_FORWARD;
-    d.options.forward_no_depth_prepass = 1; /* Forward+ keeps its depth pre-pass: the tiles' bounds need it */
+    d.options.forward_depth_prepass = TL_SWITCH_OFF; /* Forward+ keeps its depth pre-pass: the tiles' bounds need it */
     TL_CHECK(tl_frame_plan_build(&d, &(tl_scene_feature_set){.point_lights = 2}, &p) == TL_OK);
     TL_CHECK(p.pass_count >= 3 && p.passes[0].pass == TL_PASS_DEPTH_PREPASS && p.passes[1].pass == TL_PASS_LIGHT_CULL);
     d.options.tile_size = 12;
