@@ -993,12 +993,12 @@ TL_API tl_result tl_renderer_get_shadow_views(tl_renderer *r, tl_shadow_view_inf
                                               uint32_t *atlas_size);
 /**
  * Reads the shadow atlas's stored depth, one float a texel, atlas_size x atlas_size, rows bottom to
- * top: the window depth of the frame's convention (D24: standard, far 1; reversed D32F: reversed,
- * far 0). A texel of a view at distance z along its light's axis holds, with n and f its near_z and
- * far_z, perspective: f (z - n) / (z (f - n)) (reversed: n (f - z) / (z (f - n))); orthographic:
- * (z - n) / (f - n) (reversed: (f - z) / (f - n)). *size is the buffer's size in bytes and receives
- * the bytes written; a NULL `depth` asks for the size. TL_ERROR_INVALID_ARGUMENT without an atlas
- * (no casting light rendered yet) or with a buffer too small.
+ * top: reversed window depth whatever the frame's depth format (near 1, far and empty 0). A texel
+ * of a view at distance z along its light's axis holds, with n and f its near_z and far_z,
+ * perspective: n (f - z) / (z (f - n)); orthographic: (f - z) / (f - n). *size is the buffer's
+ * size in bytes and receives the bytes written; a NULL `depth` asks for the size.
+ * TL_ERROR_INVALID_ARGUMENT without an atlas (no casting light rendered yet) or with a buffer too
+ * small.
  */
 TL_API tl_result tl_renderer_read_shadow_atlas(tl_renderer *r, float *depth, size_t *size);
 /** The renderer's target size (0 x 0 for NULL); either pointer may be NULL. */

@@ -41,11 +41,11 @@ static int worst_diff(const image *im, const uint8_t *want, size_t *compared)
 static void atlas_texel(const tl_shadow_view_info *v, float d, uint8_t *px)
 {
     float n = v->near_z, f = v->far_z;
-    if (d == 1.0f) { /* D24: the far value, nothing drawn */
+    if (d == 0.0f) { /* reversed depth: the far value, nothing drawn */
         put(px, 0.0f, 0.0f, 0.3f);
         return;
     }
-    float z = v->perspective ? n * f / (f - d * (f - n)) : n + d * (f - n), t = (z - n) / (f - n);
+    float z = v->perspective ? n * f / (n + d * (f - n)) : f - d * (f - n), t = (z - n) / (f - n);
     put(px, 1.0f - 0.85f * t, 1.0f - 0.85f * t, 1.0f - 0.85f * t);
 }
 
