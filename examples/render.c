@@ -174,8 +174,9 @@ static void print_stats(tl_renderer *r, const tl_frame_stats *st, const tl_scene
         printf("  %llu pixels re-lit at full resolution by the light scale's edge fix-up (%.2f %% of the frame)\n",
                (unsigned long long)st->relit_pixels, 100.0 * st->relit_fraction);
     if (st->shadow_atlas_bytes)
-        printf("  shadows: %u lights with a map (%u fading), %u maps rendered, %u kept, atlas %.1f MiB, "
-               "shadow maps %.2f ms GPU (part of the frame's)\n", st->shadow_lights, st->shadow_lights_fading,
+        printf("  shadows: %u lights with a map (%u fading, %u in view without one: over --shadow-max), %u maps "
+               "rendered, %u kept, atlas %.1f MiB, shadow maps %.2f ms GPU (part of the frame's)\n", st->shadow_lights,
+               st->shadow_lights_fading, st->shadow_lights_unmapped,
                st->shadow_maps_rendered, st->shadow_maps_cached, (double)st->shadow_atlas_bytes / 1048576.0,
                st->shadow_ms);
 }

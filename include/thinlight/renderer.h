@@ -676,8 +676,9 @@ typedef struct tl_frame_stats {
     uint64_t relit_pixels;              /**< light_scale below 1: pixels the edge fix-up re-lit at full resolution
                                              (fragments: a pixel two coplanar surfaces both draw counts twice) */
     double relit_fraction;              /**< relit_pixels over the frame's pixels */
-    uint32_t shadow_lights;             /**< casting lights given a map this frame (at most the budget) */
-    uint32_t shadow_lights_fading;      /**< casting lights over the budget, fading out instead of a map */
+    uint32_t shadow_lights;             /**< casting lights with a map this frame (their views in the atlas):
+                                             the budget's, plus for 8 frames those leaving it (fading out) */
+    uint32_t shadow_lights_fading;      /**< of those, the ones whose shadow is fading in or out */
     uint32_t shadow_maps_rendered;      /**< atlas views (cascades, cube faces, spot maps) rendered this frame */
     uint32_t shadow_maps_cached;        /**< atlas views kept from an earlier frame (nothing in range changed) */
     size_t shadow_atlas_bytes;          /**< the shadow atlas's memory (0 without casting lights) */
@@ -685,6 +686,9 @@ typedef struct tl_frame_stats {
                                              the frame; part of gpu_ms); 0 when no map was rendered; -1: unavailable */
     uint64_t msaa_edge_pixels;          /**< MSAA per-sample edges: pixels lit per sample (msaa-classify's count) */
     double msaa_edge_fraction;          /**< msaa_edge_pixels over the frame's pixels */
+    uint32_t shadow_lights_unmapped;    /**< casting lights that reach the view but have no map this frame:
+                                             over the budget (tl_shadow_desc.max_lights); the first time
+                                             (and whenever the count grows) the logger gets a warning */
 } tl_frame_stats;
 
 /** "gbuffer", "lights", ... ("unknown" out of range); the names of debug groups and timers. */

@@ -128,6 +128,41 @@ static int tl__atlas_alloc(tl__atlas_grid *g, uint32_t size, uint32_t *x, uint32
     return 0;
 }
 
+static uint32_t tl__kind_views(int kind)
+{
+    return kind == TL_LIGHT_POINT ? 6u : kind == TL_LIGHT_SPOT ? 1u : (uint32_t)TL__SHADOW_CASCADES;
+}
+
+/* Tile sides, in cells, of the lights that get a map (in rank order, `kinds`): each light takes the
+ * largest side its kind allows (directional 8 cells, a quarter of the atlas; spot and point 4, an
+ * eighth) whose views leave every later light room at one cell (1/32 of the atlas): the budget's
+ * 64 point lights need 384 of the 1024 cells, so every light in it gets a map. */
+static void tl__tile_sides(const int *kinds, size_t n, uint32_t *sides)
+{
+    uint32_t reserve = 0, left = TL__ATLAS_CELLS * TL__ATLAS_CELLS;
+    for (size_t j = 0; j < n; j++) reserve += tl__kind_views(kinds[j]);
+    for (size_t j = 0; j < n; j++) {
+        uint32_t views = tl__kind_views(kinds[j]), c = kinds[j] == TL_LIGHT_DIRECTIONAL ? 8u : 4u;
+        reserve -= views;
+        while (c > 1 && views * c * c > left - reserve) c /= 2;
+        sides[j] = c;
+        left -= views * c * c;
+    }
+}
+
+/* Places the tiles, largest first (then by rank): aligned power-of-two squares placed in falling
+ * size each find a free aligned square while their area fits, so none fails. xy: 2 x 6 per light. */
+static void tl__tile_place(const int *kinds, const uint32_t *sides, size_t n, uint32_t cell, uint32_t (*xy)[12])
+{
+    tl__atlas_grid grid;
+    memset(&grid, 0, sizeof grid);
+    grid.cell = cell;
+    for (uint32_t c = 8; c >= 1; c /= 2)
+        for (size_t j = 0; j < n; j++)
+            for (uint32_t v = 0; sides[j] == c && v < tl__kind_views(kinds[j]); v++)
+                tl__atlas_alloc(&grid, c * cell, &xy[j][2 * v], &xy[j][2 * v + 1]);
+}
+
 /* ---- selection ------------------------------------------------------------------------------ */
 
 static tl_result tl__shadow_arrays(tl__device *dev, tl__shadows *s, size_t count)
@@ -385,28 +420,13 @@ static void tl__cascade_views(tl__shadows *s, const tl__view_ctx *c, const tl_li
     }
 }
 
-/* Tiles for a light's views, largest first then halved while the atlas has no room (down to 1/32
- * of it); 0 when none fits. */
-static uint32_t tl__light_tiles(tl__atlas_grid *grid, int kind, uint32_t atlas, uint32_t *xy)
-{
-    uint32_t views = kind == TL_LIGHT_POINT ? 6 : kind == TL_LIGHT_SPOT ? 1 : TL__SHADOW_CASCADES;
-    for (uint32_t size = kind == TL_LIGHT_DIRECTIONAL ? atlas / 4 : atlas / 8; size >= grid->cell; size /= 2) {
-        tl__atlas_grid saved = *grid;
-        uint32_t v = 0;
-        for (; v < views && tl__atlas_alloc(grid, size, &xy[2 * v], &xy[2 * v + 1]); v++) {}
-        if (v == views) return size;
-        *grid = saved;
-    }
-    return 0;
-}
-
 /* ---- the frame ------------------------------------------------------------------------------ */
 
 /* Fades: a light in the budget gains its shadow at once when it takes a free place (nothing is
  * displaced: the first frame, fewer casting lights than the budget) and over
  * TL__SHADOW_FADE_FRAMES frames when it displaces another; a light leaving the budget keeps its map
- * while its shadow fades out. Returns the lights in the budget. */
-static size_t tl__shadow_fades(tl__shadows *s, size_t casting, uint32_t budget)
+ * while its shadow fades out. */
+static void tl__shadow_fades(tl__shadows *s, size_t casting, uint32_t budget)
 {
     size_t selected = 0;
     int displacing = s->light_count >= budget;
@@ -420,7 +440,6 @@ static size_t tl__shadow_fades(tl__shadows *s, size_t casting, uint32_t budget)
             s->fade[i] = fmaxf(0.0f, s->fade[i] - step);
         }
     }
-    return selected;
 }
 
 /* The angular error bound (radians) of the normal the lighting passes read: RT0's octahedral code
@@ -453,6 +472,51 @@ static void tl__shadow_block_params(tl__shadows *s, const tl__view *v, const tl_
     s->block.bias[0] = tl__normal_error(o);
 }
 
+/* One mapped light's record and views; its slot is the record + 1. */
+static void tl__light_record(tl__shadows *s, tl__view_ctx *c, const tl_light *li, uint32_t i, int kind,
+                             const uint32_t *xy, uint32_t size, float angle)
+{
+    tl__shadow_light_gpu *rec = &s->block.lights[s->light_count];
+    c->light_size = kind == TL_LIGHT_DIRECTIONAL ? tanf(angle) : li->source_radius;
+    rec->info[0] = (uint32_t)s->view_count;
+    if (kind == TL_LIGHT_SPOT) tl__spot_views(s, c, li, xy, size);
+    else if (kind == TL_LIGHT_POINT) tl__point_views(s, c, li, xy, size);
+    else tl__cascade_views(s, c, li, xy, size, rec->splits);
+    rec->info[1] = (uint32_t)s->view_count - rec->info[0];
+    for (uint32_t k = rec->info[0]; k < s->view_count; k++) {
+        s->views[k].light = i, s->views[k].index = k - rec->info[0];
+        s->views[k].split = kind == TL_LIGHT_DIRECTIONAL ? rec->splits[k - rec->info[0]] : 0.0f;
+    }
+    rec->info[2] = (uint32_t)kind;
+    rec->fade[0] = s->fade[i];
+    rec->fade[1] = (float)size;
+    s->slots[i] = (float)(++s->light_count);
+}
+
+/* The frame's figures, and once per new largest count a warning naming the casting lights in view
+ * left without a map and why (the budget: the lookup holds at most TL__SHADOW_MAX_LIGHTS). */
+static void tl__shadow_stats(tl__device *dev, tl__shadows *s, size_t casting, const tl_renderer_options *o,
+                             tl_frame_stats *st)
+{
+    uint32_t in_view = 0, mapped = 0, fading = 0;
+    for (size_t j = 0; j < casting; j++) {
+        uint32_t i = s->order[j];
+        in_view += s->score[i] > 0.0f;
+        mapped += s->score[i] > 0.0f && s->slots[i] > 0.0f;
+        fading += s->slots[i] > 0.0f && s->fade[i] < 1.0f;
+    }
+    st->shadow_lights = (uint32_t)s->light_count;
+    st->shadow_lights_fading = fading;
+    st->shadow_lights_unmapped = in_view - mapped;
+    st->shadow_atlas_bytes = (size_t)o->shadows.atlas_size * o->shadows.atlas_size * 4u;
+    if (in_view - mapped <= s->unmapped_logged) return;
+    s->unmapped_logged = in_view - mapped;
+    tl__log_message(&dev->log, TL_LOG_WARNING,
+                    "renderer: %u of %u casting lights in view have no shadow map: shadows.max_lights = %u "
+                    "(the most lights given a map per frame, 1..%d; the brightest and nearest first)",
+                    in_view - mapped, in_view, o->shadows.max_lights, TL__SHADOW_MAX_LIGHTS);
+}
+
 tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights *l, const tl__scene_gpu *g,
                               const tl__view *v, const tl_renderer_options *o, tl_frame_stats *st)
 {
@@ -464,42 +528,24 @@ tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights 
     uint32_t reach = o->shadows.filter == TL_SHADOW_FILTER_PCSS ? TL__SHADOW_PCSS_RADIUS : o->shadows.pcf_radius;
     tl__view_ctx c = {v, tl__rigid_inverse(&v->view), o->shadows.atlas_size, reach, 0.0f, tl__norm3(v->eye), g};
     size_t casting = tl__shadow_order(s, l, v);
-    size_t selected = tl__shadow_fades(s, casting, o->shadows.max_lights);
-    tl__atlas_grid grid;
-    memset(&grid, 0, sizeof grid);
-    grid.cell = o->shadows.atlas_size / TL__ATLAS_CELLS;
+    tl__shadow_fades(s, casting, o->shadows.max_lights);
+    /* every light with a shadow strength gets a map, in rank order, as many as the lookup holds */
+    uint32_t mapped[TL__SHADOW_MAX_LIGHTS], sides[TL__SHADOW_MAX_LIGHTS], xy[TL__SHADOW_MAX_LIGHTS][12];
+    int kinds[TL__SHADOW_MAX_LIGHTS];
+    size_t n = 0;
+    for (size_t j = 0; j < casting && n < TL__SHADOW_MAX_LIGHTS; j++)
+        if (s->fade[s->order[j]] > 0.0f) mapped[n] = s->order[j], kinds[n] = tl__light_kind(&l->lights[mapped[n]]), n++;
+    uint32_t cell = o->shadows.atlas_size / TL__ATLAS_CELLS;
+    tl__tile_sides(kinds, n, sides);
+    tl__tile_place(kinds, sides, n, cell, xy);
     s->view_count = s->light_count = 0;
     memset(s->block.lights, 0, sizeof s->block.lights);
-    uint32_t fading = 0;
-    for (size_t j = 0; j < casting && s->light_count < TL__SHADOW_MAX_LIGHTS; j++) {
-        uint32_t i = s->order[j], xy[12];
-        const tl_light *li = &l->lights[i];
-        int kind = tl__light_kind(li);
-        if (s->fade[i] <= 0.0f) continue;
-        uint32_t size = tl__light_tiles(&grid, kind, c.atlas, xy);
-        if (!size) continue;
-        tl__shadow_light_gpu *rec = &s->block.lights[s->light_count];
-        c.light_size = kind == TL_LIGHT_DIRECTIONAL ? tanf(o->shadows.directional_angle) : li->source_radius;
-        rec->info[0] = (uint32_t)s->view_count;
-        if (kind == TL_LIGHT_SPOT) tl__spot_views(s, &c, li, xy, size);
-        else if (kind == TL_LIGHT_POINT) tl__point_views(s, &c, li, xy, size);
-        else tl__cascade_views(s, &c, li, xy, size, rec->splits);
-        rec->info[1] = (uint32_t)s->view_count - rec->info[0];
-        for (uint32_t k = rec->info[0]; k < s->view_count; k++) {
-            s->views[k].light = i, s->views[k].index = k - rec->info[0];
-            s->views[k].split = kind == TL_LIGHT_DIRECTIONAL ? rec->splits[k - rec->info[0]] : 0.0f;
-        }
-        rec->info[2] = (uint32_t)kind;
-        rec->fade[0] = s->fade[i];
-        rec->fade[1] = (float)size;
-        fading += s->fade[i] < 1.0f;
-        s->slots[i] = (float)(++s->light_count);
-    }
+    for (size_t j = 0; j < n; j++)
+        tl__light_record(s, &c, &l->lights[mapped[j]], mapped[j], kinds[j], xy[j], sides[j] * cell,
+                         o->shadows.directional_angle);
     tl__shadow_block_params(s, v, o, o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED);
     for (size_t i = 0; i < s->view_count; i++)
         s->views[i].render = o->shadows.no_cache || i >= s->kept_count || s->kept[i] != s->views[i].signature;
-    st->shadow_lights = (uint32_t)selected;
-    st->shadow_lights_fading = fading;
-    st->shadow_atlas_bytes = (size_t)o->shadows.atlas_size * o->shadows.atlas_size * 4u;
+    tl__shadow_stats(dev, s, casting, o, st);
     return TL_OK;
 }

@@ -62,6 +62,7 @@ typedef struct tl__shadows {
     size_t view_count, light_count;
     uint64_t kept[TL__SHADOW_MAX_VIEWS]; /* the signature each tile holds (0: nothing) */
     size_t kept_count;
+    uint32_t unmapped_logged;  /* the most casting lights in view without a map a warning named */
     /* GL */
     GLuint atlas, fbo, lookup, ubo;
     GLuint depth_sampler;      /* PCSS: the atlas read as depth values (no compare) */

@@ -605,3 +605,82 @@ TL_TEST(shadows_budget_and_bad_options)
     }
     tl_shadow_case_free(&c);
 }
+
+/* The renderer's warnings, for the budget's line. */
+typedef struct tl__warnings {
+    unsigned count;
+    char last[512];
+} tl__warnings;
+
+static void tl__warning(void *user, tl_log_level level, const char *message)
+{
+    tl__warnings *w = (tl__warnings *)user;
+    if (level != TL_LOG_WARNING) return;
+    w->count++;
+    snprintf(w->last, sizeof w->last, "%s", message);
+}
+
+/* 101 casting point lights in view, a budget of 64 (the most the lookup holds): the 64 in the
+ * budget each get their six cube faces, their tiles halve down to 1/32 of the atlas to fit (no
+ * tile smaller, none overlapping, all inside the atlas), tl_frame_stats says 64 lights with a map
+ * and 37 in view without one, and the renderer says why once, through its logger. */
+TL_TEST(shadows_budget_every_light_in_it_gets_a_map)
+{
+    enum { LIGHTS = 101, BUDGET = 64, ATLAS = 4096 };
+    tl_shadow_case c;
+    TL_CHECK(tl_shadow_stiff_case(&c));
+    tl_light many[LIGHTS];
+    for (int i = 0; i < LIGHTS; i++) /* a grid over the plane in front of the camera */
+        many[i] = (tl_light){.type = TL_LIGHT_POINT, .color = {1.0f + 0.01f * (float)i, 1, 1}, .radius = 6.0f,
+                             .position = {-5.0f + (float)(i % 11), 0.5f, -2.0f - 1.5f * (float)(i / 11)}, .shadow = 1};
+    tl_scene s = *c.scene;
+    s.lights = many;
+    s.light_count = LIGHTS;
+    tl__warnings warned = {0};
+    tl_renderer *r = NULL;
+    TL_CHECK(ensure_context());
+    tl_renderer_desc d = {.get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
+                          .logger = {tl__warning, &warned}, .width = 160, .height = 90,
+                          .options = {.synchronous_stats = 1, .shadows = {.max_lights = BUDGET, .atlas_size = ATLAS}}};
+    TL_CHECK(g_ctx && tl_renderer_create(&d, &r) == TL_OK && tl_renderer_set_scene(r, &s) == TL_OK);
+    tl_frame_stats st;
+    for (int frame = 0; r && frame < 2; frame++) TL_CHECK(tl_renderer_render(r, NULL, &st) == TL_OK);
+    size_t n = 0;
+    uint32_t side = 0;
+    TL_CHECK(r && tl_renderer_get_shadow_views(r, NULL, &n, &side) == TL_OK && side == ATLAS);
+    tl_shadow_view_info *v = malloc((n ? n : 1) * sizeof *v);
+    static uint8_t cells[32][32];
+    memset(cells, 0, sizeof cells);
+    uint8_t faces[LIGHTS] = {0};
+    uint32_t smallest = ATLAS, lights = 0, overlaps = 0, outside = 0;
+    if (r && v && tl_renderer_get_shadow_views(r, v, &n, NULL) == TL_OK) {
+        for (size_t k = 0; k < n; k++) {
+            const uint32_t cell = ATLAS / 32;
+            smallest = v[k].size < smallest ? v[k].size : smallest;
+            outside += v[k].x + v[k].size > ATLAS || v[k].y + v[k].size > ATLAS || v[k].size % cell || v[k].x % cell ||
+                       v[k].y % cell;
+            for (uint32_t y = v[k].y / cell; y < (v[k].y + v[k].size) / cell && y < 32; y++)
+                for (uint32_t x = v[k].x / cell; x < (v[k].x + v[k].size) / cell && x < 32; x++) overlaps += cells[y][x]++ > 0;
+            if (v[k].light < LIGHTS && v[k].type == TL_LIGHT_POINT) lights += faces[v[k].light]++ == 0;
+        }
+    }
+    uint32_t full = 0;
+    for (int i = 0; i < LIGHTS; i++) full += faces[i] == 6;
+    printf("shadow-budget lights=%d budget=%d stats: with a map %u, without %u; views %zu of %u lights (%u with all six "
+           "faces), smallest tile %u (atlas/%u), overlapping cells %u, outside %u; warnings %u: %s\n", LIGHTS, BUDGET,
+           st.shadow_lights, st.shadow_lights_unmapped, n, lights, full, smallest, ATLAS / (smallest ? smallest : 1),
+           overlaps, outside, warned.count, warned.last);
+    TL_CHECK_EQ_U(lights, BUDGET);
+    TL_CHECK_EQ_U(full, BUDGET);
+    TL_CHECK_EQ_U(n, BUDGET * 6);
+    TL_CHECK(smallest >= ATLAS / 32);
+    TL_CHECK_EQ_U(overlaps, 0);
+    TL_CHECK_EQ_U(outside, 0);
+    TL_CHECK_EQ_U(st.shadow_lights, BUDGET);
+    TL_CHECK_EQ_U(st.shadow_lights_unmapped, LIGHTS - BUDGET);
+    TL_CHECK_EQ_U(warned.count, 1);
+    TL_CHECK(strstr(warned.last, "37 of 101") != NULL && strstr(warned.last, "max_lights") != NULL);
+    free(v);
+    tl_renderer_destroy(r);
+    tl_shadow_case_free(&c);
+}
