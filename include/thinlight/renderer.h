@@ -289,6 +289,10 @@ typedef enum tl_shadow_filter {
     TL_SHADOW_FILTER_PCSS
 } tl_shadow_filter;
 
+/** tl_shadow_desc.max_lights's default (what a zero means), for tools that size other things by it
+ *  (tl_gltf_options.shadow_lights). */
+#define TL_SHADOW_DEFAULT_MAX_LIGHTS 8u
+
 /** Shadows of the lights with tl_light.shadow (docs/shadows.md): one depth atlas holding a
  *  perspective map per spot light, six cube faces per point light and four stable cascades per
  *  directional light; looked up with PCF (or PCSS) and a bias derived from the texel size and the

@@ -14,7 +14,7 @@
 void tl__shadow_desc_resolve(tl_shadow_desc *s)
 {
     if (!s->atlas_size) s->atlas_size = 4096;
-    if (!s->max_lights) s->max_lights = 8;
+    if (!s->max_lights) s->max_lights = TL_SHADOW_DEFAULT_MAX_LIGHTS;
     if (!s->pcf_radius) s->pcf_radius = 1;
     if (s->no_pcf) s->pcf_radius = 0;
     if (s->filter == TL_SHADOW_FILTER_DEFAULT) s->filter = TL_SHADOW_FILTER_PCF;
