@@ -314,6 +314,7 @@ typedef struct bench_run {
     size_t cores;
     char scene_name[256];
     char light_definition[256];    /* what "N lights" means for this scene */
+    char shadow_casters[128];      /* --shadows: which of them cast */
     size_t scene_triangles, scene_objects, scene_file_lights;
     double seconds;                /* the whole sweep */
     double load_start, load_end;   /* 1-minute load average before and after it (NaN: unknown) */

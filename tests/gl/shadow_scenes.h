@@ -19,6 +19,9 @@ int tl_shadow_stiff_case(tl_shadow_case *c);
 /* A box resting on a floor, a pole and a floating plate under a spot and a point light with a
  * 0.25 m source radius: penumbrae that widen away from the contact (PCSS against area truth). */
 int tl_shadow_penumbra_case(tl_shadow_case *c);
+/* A floor under two spot lights whose axes are tilted from its normal (one low, looking 14 degrees
+ * down to the horizon; one 2 m up at 45 degrees); with `occluder`, a box standing in both pools. */
+int tl_shadow_spot_case(tl_shadow_case *c, int occluder);
 int tl_shadow_crypt_case(tl_shadow_case *c, uint32_t detail);
 void tl_shadow_case_free(tl_shadow_case *c);
 

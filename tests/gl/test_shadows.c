@@ -163,6 +163,63 @@ TL_TEST_FULL(shadows_stiff_scene_against_truth) { tl__stiff_against_truth(TL_SHA
  * and its receiver-plane comparisons add no acne at grazing angles, the horizon included. */
 TL_TEST_FULL(shadows_pcss_stiff_scene_against_truth) { tl__stiff_against_truth(TL_SHADOW_FILTER_PCSS, 0, TL__CONFIGS); }
 
+/* A spot light over a floor, its axis tilted from the floor's normal (shadow_scenes.c): without an
+ * occluder every pixel the spot lights must be lit. The term is the HDR image with the light casting
+ * over the image without; with a shadow of exactly 1 both are the same float operations, so the only
+ * slack is the FP16 target's rounding of each (2^-11 relative): 1 - 2 x 2^-11. The filter's smallest
+ * loss is far above that: one texel of PCF's (2r + 1)^2 tent wrongly shadowed takes its bilinear
+ * weight, and PCSS's kernel at least PCF's. With a box standing in both pools, the term against the
+ * ray-traced truth: no acne, at most 0.5 % of the pixels in the wrong state. Both depth formats,
+ * in thin-lpp's light volumes and tiled compute, fat and Forward+ (the one lookup, tl_shadow, in
+ * each kind of lighting pass). */
+static void tl__spot_against_truth(tl_shadow_filter filter)
+{
+    const uint32_t w = 320, h = 180;
+    const size_t configs[] = {0, 2, 4, 6}; /* light volumes, tiled compute, fat, Forward+: one lookup */
+    const float slack = (float)TL_HALF_REL_STEP; /* two roundings, half an FP16 step (2^-11) each */
+    tl_shadow_case open, boxed;
+    TL_CHECK(tl_shadow_spot_case(&open, 0) && tl_shadow_spot_case(&boxed, 1));
+    const char *scene = filter == TL_SHADOW_FILTER_PCSS ? "spot-pcss" : "spot";
+    for (size_t l = 0; l < open.light_count; l++) {
+        tl__truth t;
+        TL_CHECK(tl__truth_make(&boxed, &boxed.lights[l], w, h, &t));
+        for (int d = 0; d < 2; d++)
+            for (size_t j = 0; j < sizeof configs / sizeof configs[0]; j++) {
+                size_t k = configs[j];
+                tl_renderer_options o = tl__options(&tl__configs[k], d ? TL_DEPTH_FORMAT_D32F_REVERSED : TL_DEPTH_FORMAT_D24);
+                o.shadows.filter = filter;
+                float *term = tl_shadow_term(&open, &open.lights[l], o, w, h, NULL);
+                TL_CHECK(term != NULL);
+                size_t lit = 0, dark = 0;
+                float lowest = 1.0f;
+                for (size_t i = 0; term && i < (size_t)w * h; i++) {
+                    if (term[i] < 0.0f) continue;
+                    lit++;
+                    dark += term[i] < 1.0f - slack;
+                    lowest = fminf(lowest, term[i]);
+                }
+                printf("shadow-spot-open scene=%s light=\"%s\" %s depth=%s lit=%zu below=%zu lowest=%.6f bound=%.6f\n",
+                       scene, open.light_names[l], tl__configs[k].name, tl__depth_name(o.depth_format), lit, dark,
+                       (double)lowest, 1.0 - (double)slack);
+                TL_CHECK(lit > (size_t)w * h / 8);
+                TL_CHECK_EQ_U(dark, 0);
+                char name[96];
+                snprintf(name, sizeof name, "%s-open-%zu-%s-%zu", scene, l, tl__depth_name(o.depth_format), k);
+                if (term) tl__dump(name, term, &t, w, h); /* the box's truth beside it: its pool lit */
+                free(term);
+                tl_shadow_error e = tl__measure(scene, &boxed, l, &t, o, tl__configs[k].name, w, h, NULL);
+                TL_CHECK_LE(e.acne, 0);
+                TL_CHECK_LE(e.wrong, 0.005);
+            }
+        tl__truth_free(&t);
+    }
+    tl_shadow_case_free(&open);
+    tl_shadow_case_free(&boxed);
+}
+
+TL_TEST(shadows_spot_floor_tilted_axis_no_acne_pcf) { tl__spot_against_truth(TL_SHADOW_FILTER_PCF); }
+TL_TEST(shadows_spot_floor_tilted_axis_no_acne_pcss) { tl__spot_against_truth(TL_SHADOW_FILTER_PCSS); }
+
 /* The crypt (its moonlight and two braziers, one at a time): thin-lpp and fat with D24 and reversed
  * D32F. Targets: at most 0.5 % of the pixels in the wrong state with reversed D32F; thin-lpp and fat
  * differ from each other by less than either differs from the truth (the rebuilt position is not
@@ -557,5 +614,84 @@ TL_TEST(shadows_budget_and_bad_options)
                                         &bad) == TL_ERROR_INVALID_ARGUMENT);
         tl_renderer_destroy(bad);
     }
+    tl_shadow_case_free(&c);
+}
+
+/* The renderer's warnings, for the budget's line. */
+typedef struct tl__warnings {
+    unsigned count;
+    char last[512];
+} tl__warnings;
+
+static void tl__warning(void *user, tl_log_level level, const char *message)
+{
+    tl__warnings *w = (tl__warnings *)user;
+    if (level != TL_LOG_WARNING) return;
+    w->count++;
+    snprintf(w->last, sizeof w->last, "%s", message);
+}
+
+/* 101 casting point lights in view, a budget of 64 (the most the lookup holds): the 64 in the
+ * budget each get their six cube faces, their tiles halve down to 1/32 of the atlas to fit (no
+ * tile smaller, none overlapping, all inside the atlas), tl_frame_stats says 64 lights with a map
+ * and 37 in view without one, and the renderer says why once, through its logger. */
+TL_TEST(shadows_budget_every_light_in_it_gets_a_map)
+{
+    enum { LIGHTS = 101, BUDGET = 64, ATLAS = 4096 };
+    tl_shadow_case c;
+    TL_CHECK(tl_shadow_stiff_case(&c));
+    tl_light many[LIGHTS];
+    for (int i = 0; i < LIGHTS; i++) /* a grid over the plane in front of the camera */
+        many[i] = (tl_light){.type = TL_LIGHT_POINT, .color = {1.0f + 0.01f * (float)i, 1, 1}, .radius = 6.0f,
+                             .position = {-5.0f + (float)(i % 11), 0.5f, -2.0f - 1.5f * (float)(i / 11)}, .shadow = 1};
+    tl_scene s = *c.scene;
+    s.lights = many;
+    s.light_count = LIGHTS;
+    tl__warnings warned = {0};
+    tl_renderer *r = NULL;
+    TL_CHECK(ensure_context());
+    tl_renderer_desc d = {.get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
+                          .logger = {tl__warning, &warned}, .width = 160, .height = 90,
+                          .options = {.synchronous_stats = 1, .shadows = {.max_lights = BUDGET, .atlas_size = ATLAS}}};
+    TL_CHECK(g_ctx && tl_renderer_create(&d, &r) == TL_OK && tl_renderer_set_scene(r, &s) == TL_OK);
+    tl_frame_stats st;
+    for (int frame = 0; r && frame < 2; frame++) TL_CHECK(tl_renderer_render(r, NULL, &st) == TL_OK);
+    size_t n = 0;
+    uint32_t side = 0;
+    TL_CHECK(r && tl_renderer_get_shadow_views(r, NULL, &n, &side) == TL_OK && side == ATLAS);
+    tl_shadow_view_info *v = malloc((n ? n : 1) * sizeof *v);
+    static uint8_t cells[32][32];
+    memset(cells, 0, sizeof cells);
+    uint8_t faces[LIGHTS] = {0};
+    uint32_t smallest = ATLAS, lights = 0, overlaps = 0, outside = 0;
+    if (r && v && tl_renderer_get_shadow_views(r, v, &n, NULL) == TL_OK) {
+        for (size_t k = 0; k < n; k++) {
+            const uint32_t cell = ATLAS / 32;
+            smallest = v[k].size < smallest ? v[k].size : smallest;
+            outside += v[k].x + v[k].size > ATLAS || v[k].y + v[k].size > ATLAS || v[k].size % cell || v[k].x % cell ||
+                       v[k].y % cell;
+            for (uint32_t y = v[k].y / cell; y < (v[k].y + v[k].size) / cell && y < 32; y++)
+                for (uint32_t x = v[k].x / cell; x < (v[k].x + v[k].size) / cell && x < 32; x++) overlaps += cells[y][x]++ > 0;
+            if (v[k].light < LIGHTS && v[k].type == TL_LIGHT_POINT) lights += faces[v[k].light]++ == 0;
+        }
+    }
+    uint32_t full = 0;
+    for (int i = 0; i < LIGHTS; i++) full += faces[i] == 6;
+    printf("shadow-budget lights=%d budget=%d stats: with a map %u, without %u; views %zu of %u lights (%u with all six "
+           "faces), smallest tile %u (atlas/%u), overlapping cells %u, outside %u; warnings %u: %s\n", LIGHTS, BUDGET,
+           st.shadow_lights, st.shadow_lights_unmapped, n, lights, full, smallest, ATLAS / (smallest ? smallest : 1),
+           overlaps, outside, warned.count, warned.last);
+    TL_CHECK_EQ_U(lights, BUDGET);
+    TL_CHECK_EQ_U(full, BUDGET);
+    TL_CHECK_EQ_U(n, BUDGET * 6);
+    TL_CHECK(smallest >= ATLAS / 32);
+    TL_CHECK_EQ_U(overlaps, 0);
+    TL_CHECK_EQ_U(outside, 0);
+    TL_CHECK_EQ_U(st.shadow_lights, BUDGET);
+    TL_CHECK_EQ_U(st.shadow_lights_unmapped, LIGHTS - BUDGET);
+    TL_CHECK_EQ_U(warned.count, 1);
+    TL_CHECK(strstr(warned.last, "37 of 101") != NULL && strstr(warned.last, "max_lights") != NULL);
+    free(v);
+    tl_renderer_destroy(r);
     tl_shadow_case_free(&c);
 }
