@@ -515,10 +515,9 @@ static void tl__term_values(const tl_shadow_case *c, const char *scene, uint32_t
 
 /* The stiff scene (the grazing plane: the normal offset at work) and the penumbra case's spot light
  * (large shadows) in the configurations [first, first + count): every light measures lit pixels,
- * the spot light shadowed ones. The penumbra case's point light is left out: where its floor lies
- * along a cube face's axis near the face's edge (the -X face beside the -Y one), 32 to 35 lit pixels
- * measure 0.966 to 0.998 (the normal offset uses the angle to the light, the face stores depth
- * along its axis). */
+ * the spot and point lights of the penumbra case shadowed ones. (The point light's cube faces
+ * measured 0.966 to 0.998 on 32 to 35 lit pixels while the normal offset took its angle from the
+ * ray to the light instead of the face's axis; with the axis every pixel is 1.) */
 static void tl__term_values_scenes(size_t first, size_t count)
 {
     /* the casting and the non-casting frame differ by one FP16 step (2^-10) of the light sum and
@@ -533,7 +532,7 @@ static void tl__term_values_scenes(size_t first, size_t count)
     memset(lit, 0, sizeof lit);
     shadowed = 0;
     TL_CHECK(tl_shadow_penumbra_case(&c));
-    tl__term_values(&c, "penumbra", 320, 180, 1, first, count, tol, lit, &shadowed);
+    tl__term_values(&c, "penumbra", 320, 180, c.light_count, first, count, tol, lit, &shadowed);
     TL_CHECK_LE(100, lit[0]);
     TL_CHECK_LE(100, shadowed);
     tl_shadow_case_free(&c);
