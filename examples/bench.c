@@ -116,7 +116,7 @@ int main(int argc, char **argv)
         goto done;
     bench__fresnel_variant(opt, scene);
     tl_tool_machine(run->cpu, sizeof run->cpu, &run->cores);
-    /* the plans first: the sweep times each planned mode against its no_planning renderer */
+    /* the plans first: the sweep times each planned mode against its renderer with planning off */
     if (bench_planning_compare(run, scene) || bench_sweep(run, scene)) goto done;
     int plot_failed = opt->out && !opt->no_plot && (bench_plots(run) || bench_aa_plot(run) || bench_shadows_plot(run));
     bench_print_table(run);

@@ -305,7 +305,7 @@ typedef struct bench_aa_image {
     uint32_t lights;
 } bench_aa_image;
 
-/* What planning saves for one mode (the plan against tl_renderer_options.no_planning), for the scene
+/* What planning saves for one mode (the plan against tl_renderer_options.planning off), for the scene
  * with the largest light count. */
 typedef struct bench_planning {
     tl_render_mode mode;
@@ -313,7 +313,7 @@ typedef struct bench_planning {
     size_t programs, unplanned_programs;
     size_t passes, unplanned_passes;
     /* Median frame time (GPU timers, else wall clock) at the first size of a planned renderer and of
-     * one with no_planning, their frames interleaved; NaN until bench_sweep measures them. */
+     * one with planning off, their frames interleaved; NaN until bench_sweep measures them. */
     double planned_ms, unplanned_ms;
 } bench_planning;
 
@@ -328,6 +328,7 @@ typedef struct bench_run {
     size_t cores;
     char scene_name[256];
     char light_definition[256];    /* what "N lights" means for this scene */
+    char shadow_casters[128];      /* --shadows: which of them cast */
     size_t scene_triangles, scene_objects, scene_file_lights;
     double seconds;                /* the whole sweep */
     double load_start, load_end;   /* 1-minute load average before and after it (NaN: unknown) */

@@ -82,13 +82,15 @@ static const char usage_middle[] =
     "  --aa-doc-section NAME the section between <!-- bench-aa:NAME:begin --> and <!-- bench-aa:NAME:end -->\n"
     "                   instead, its plot and crops named bench_aa_NAME_* (letters, digits, '-')\n"
     "  --shadows LIST   off, on (default: not measured): with on, at the first size and light count,\n"
-    "                   every configuration with the crypt's lights without shadows, with its moonlight\n"
-    "                   and braziers casting (cached) and casting without the cache, frames taking\n"
-    "                   turns; the shadow maps' and the lookup's time, atlas bytes, maps rendered and\n"
-    "                   kept, and the shadow terms of the casting braziers (one at a time) against the\n"
-    "                   ray-traced truth (D24 and reversed D32F; a bench built with Embree 3, else no\n"
-    "                   truth): a table,\n"
-    "                   the JSON (\"shadows\") and a plot. The built-in crypt only\n"
+    "                   every configuration with the scene's lights without shadows, casting (cached)\n"
+    "                   and casting without the cache, frames taking turns; the shadow maps' and the\n"
+    "                   lookup's time, atlas bytes, maps rendered and kept, and the shadow terms of the\n"
+    "                   casting point lights (one at a time) against the ray-traced truth (D24 and\n"
+    "                   reversed D32F; a bench built with Embree 3, else no truth): a table, the JSON\n"
+    "                   (\"shadows\") and a plot. The crypt's moonlight and braziers cast; a glTF file\n"
+    "                   is loaded with the shadow rule (its directional lights and brightest seeded\n"
+    "                   lights, up to 8, and its lights' thinlight_shadow flags: docs/gltf.md), which\n"
+    "                   its sweeps then render too\n"
     "  --shadows-doc FILE replace the text between " BENCH_SHADOWS_DOC_BEGIN " and\n"
     "                   " BENCH_SHADOWS_DOC_END " in FILE with the shadows' table, copy the plot to img/\n";
 static const char usage_options[] =
@@ -365,9 +367,6 @@ int bench_parse_args(int argc, char **argv, bench_options *o)
     if (rc || o->context_args.list_devices) return rc;
     bench__effects_enabled(o);
     bench__defaults(o, &given);
-    if (o->shadows && strcmp(o->scene, "default") != 0)
-        return tl_opt_usage(BENCH_TOOL, "--shadows measures the built-in crypt's casting lights: not with --scene %s",
-                            o->scene);
     if (o->doc && !o->out && !o->no_plot)
         return tl_opt_usage(BENCH_TOOL, "--doc %s needs --out DIR for the plots (or --no-plot)", o->doc);
     return tl_tool_context_parse(BENCH_TOOL, &o->context_args, &o->context);

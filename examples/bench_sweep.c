@@ -3,7 +3,7 @@
  * every mode see the same share of whatever else the machine is doing. Then medians of the GPU
  * timers and the wall clock, the plan's targets, the renderer's fragment and byte counts, and the
  * error of the final and HDR images against fat's images of the same frame. Last, what planning
- * saves in time: each mode planned against tl_renderer_options.no_planning, on the same context. */
+ * saves in time: each mode planned against tl_renderer_options.planning off, on the same context. */
 #define _DEFAULT_SOURCE /* sysconf(_SC_PHYS_PAGES) */
 
 #include <math.h>
@@ -678,7 +678,7 @@ static int bench__planning_frames(bench_run *run, tl_renderer **r, const char *n
 }
 
 /* What planning saves in time: each mode of run->planning rendered at the first size with the
- * largest light count by a planned renderer and by one with tl_renderer_options.no_planning, the two
+ * largest light count by a planned renderer and by one with tl_renderer_options.planning off, the two
  * taking turns frame by frame when both fit beside each other (bench_renderers_at_once), else one
  * after the other, after the same warm-up; medians of the frame time. */
 static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *scene, tl_tool_progress *progress,

@@ -161,7 +161,7 @@ int vw_shadow_cascades(vw_app *app, tl_renderer *r, uint8_t *out);
 int vw_shadow_only(vw_app *app, tl_renderer *r, uint8_t *out);
 int vw_shadow_debug_wanted(const vw_app *app);
 void vw_cascade_legend_colour(float t, uint8_t rgb[3]);
-void vw_atlas_texel(const tl_shadow_view_info *v, float d, int reversed, uint8_t *px);
+void vw_atlas_texel(const tl_shadow_view_info *v, float d, uint8_t *px);
 
 /* views.c */
 const char *vw_view_name(vw_view v);

@@ -361,6 +361,10 @@ TL_API const char *tl_shadow_filter_name(tl_shadow_filter value);
 /** Parses a name of tl_shadow_filter_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
 TL_API tl_result tl_shadow_filter_from_name(const char *name, tl_shadow_filter *value);
 
+/** tl_shadow_desc.max_lights's default (what a zero means), for tools that size other things by it
+ *  (tl_gltf_options.shadow_lights). */
+#define TL_SHADOW_DEFAULT_MAX_LIGHTS 8u
+
 /** Shadows of the lights with tl_light.shadow (docs/shadows.md): one depth atlas holding a
  *  perspective map per spot light, six cube faces per point light and four stable cascades per
  *  directional light; looked up with PCF (or PCSS) and a bias derived from the texel size and the
@@ -775,8 +779,9 @@ typedef struct tl_frame_stats {
     uint64_t relit_pixels;              /**< light_scale below 1: pixels the edge fix-up re-lit at full resolution
                                              (fragments: a pixel two coplanar surfaces both draw counts twice) */
     double relit_fraction;              /**< relit_pixels over the frame's pixels */
-    uint32_t shadow_lights;             /**< casting lights given a map this frame (at most the budget) */
-    uint32_t shadow_lights_fading;      /**< casting lights over the budget, fading out instead of a map */
+    uint32_t shadow_lights;             /**< casting lights with a map this frame (their views in the atlas):
+                                             the budget's, plus for 8 frames those leaving it (fading out) */
+    uint32_t shadow_lights_fading;      /**< of those, the ones whose shadow is fading in or out */
     uint32_t shadow_maps_rendered;      /**< atlas views (cascades, cube faces, spot maps) rendered this frame */
     uint32_t shadow_maps_cached;        /**< atlas views kept from an earlier frame (nothing in range changed) */
     size_t shadow_atlas_bytes;          /**< the shadow atlas's memory (0 without casting lights) */
@@ -784,6 +789,9 @@ typedef struct tl_frame_stats {
                                              the frame; part of gpu_ms); 0 when no map was rendered; -1: unavailable */
     uint64_t msaa_edge_pixels;          /**< MSAA per-sample edges: pixels lit per sample (msaa-classify's count) */
     double msaa_edge_fraction;          /**< msaa_edge_pixels over the frame's pixels */
+    uint32_t shadow_lights_unmapped;    /**< casting lights that reach the view but have no map this frame:
+                                             over the budget (tl_shadow_desc.max_lights); the first time
+                                             (and whenever the count grows) the logger gets a warning */
 } tl_frame_stats;
 
 /** "gbuffer", "lights", ... ("unknown" out of range); the names of debug groups and timers. */
@@ -1111,12 +1119,12 @@ TL_API tl_result tl_renderer_get_shadow_views(tl_renderer *r, tl_shadow_view_inf
                                               uint32_t *atlas_size);
 /**
  * Reads the shadow atlas's stored depth, one float a texel, atlas_size x atlas_size, rows bottom to
- * top: the window depth of the frame's convention (D24: standard, far 1; reversed D32F: reversed,
- * far 0). A texel of a view at distance z along its light's axis holds, with n and f its near_z and
- * far_z, perspective: f (z - n) / (z (f - n)) (reversed: n (f - z) / (z (f - n))); orthographic:
- * (z - n) / (f - n) (reversed: (f - z) / (f - n)). *size is the buffer's size in bytes and receives
- * the bytes written; a NULL `depth` asks for the size. TL_ERROR_INVALID_ARGUMENT without an atlas
- * (no casting light rendered yet) or with a buffer too small.
+ * top: reversed window depth whatever the frame's depth format (near 1, far and empty 0). A texel
+ * of a view at distance z along its light's axis holds, with n and f its near_z and far_z,
+ * perspective: n (f - z) / (z (f - n)); orthographic: (f - z) / (f - n). *size is the buffer's
+ * size in bytes and receives the bytes written; a NULL `depth` asks for the size.
+ * TL_ERROR_INVALID_ARGUMENT without an atlas (no casting light rendered yet) or with a buffer too
+ * small.
  */
 TL_API tl_result tl_renderer_read_shadow_atlas(tl_renderer *r, float *depth, size_t *size);
 /** The renderer's target size (0 x 0 for NULL); either pointer may be NULL. */

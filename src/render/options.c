@@ -57,7 +57,7 @@ const tl_option_info tl__frame_option_rows[] = {
     /* the shadow atlas (shadows.h; not a pass of the table) */
     TL__OPT_SWITCH(shadows.enabled, "off: no light casts, whatever its shadow flag says"),
     TL__OPT_UINT(shadows.atlas_size, 1024, 16384, TL_OPTION_POW2, 4096, "texels", "the shadow atlas's side"),
-    TL__OPT_UINT(shadows.max_lights, 1, TL__SHADOW_MAX_LIGHTS, 0, 8, "lights",
+    TL__OPT_UINT(shadows.max_lights, 1, TL__SHADOW_MAX_LIGHTS, 0, TL_SHADOW_DEFAULT_MAX_LIGHTS, "lights",
                  "most casting lights given a map per frame (the budget)"),
     TL__OPT_UINT(shadows.pcf_radius, 1, 3, 0, 1, "texels", "PCF kernel radius r: (2 r + 1)^2 bilinear compare taps"),
     TL__OPT_SWITCH(shadows.cache, "off: every shadow map rendered every frame"),

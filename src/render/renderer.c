@@ -61,6 +61,7 @@ static tl_result tl__replan(tl_renderer *r)
     f.has_environment = r->env.loaded; /* the renderer's, not the scene's */
     tl_renderer_desc d = r->desc;
     d.options = r->given; /* as the caller gave them: the plan tells an option asked from its default */
+    d.options.msaa = r->desc.options.msaa; /* but the samples the context's targets have (tl__msaa_for_context) */
     tl_result res = tl__plan_build(&d, &f, g->apps, g->app_count, &plan);
     if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: planning the frame failed");
     if ((res = tl__plan_budget(r, &plan)) != TL_OK) return res;

@@ -117,7 +117,8 @@ static size_t differ(const uint8_t *a, const uint8_t *b)
     return n;
 }
 
-/* One combination: renderers A and B, FRAMES frames each; A's frame k against B's frame k, and
+/* One combination: renderers A and B, FRAMES frames each (with TL_DETERMINISM_DUMP=DIR, the first
+ * frame is also written to DIR/NN.rgba: the images of two builds compared byte for byte); A's frame k against B's frame k, and
  * (without fog noise) against A's first frame. Returns the differing bytes found. */
 static size_t run_combo(const tl_scene *s, const combo *c, uint8_t *buf[2][FRAMES])
 {
@@ -126,6 +127,14 @@ static size_t run_combo(const tl_scene *s, const combo *c, uint8_t *buf[2][FRAME
     int ok = r[0] && r[1];
     for (int k = 0; ok && k < FRAMES; k++) ok = frame(r[0], buf[0][k]) && frame(r[1], buf[1][k]);
     TL_CHECK(ok);
+    const char *dump = getenv("TL_DETERMINISM_DUMP"); /* a folder: each combination's first frame, raw RGBA8 */
+    if (ok && dump) {
+        char path[512];
+        snprintf(path, sizeof path, "%s/%02zu.rgba", dump, (size_t)(c - k_combos));
+        FILE *f = fopen(path, "wb");
+        TL_CHECK(f && fwrite(buf[0][0], 1, (size_t)W * H * 4, f) == (size_t)W * H * 4);
+        if (f) fclose(f);
+    }
     for (int k = 0; ok && k < FRAMES; k++) {
         size_t across = differ(buf[0][k], buf[1][k]);
         size_t within = c->o.fog.noise > 0.0f ? 0u : differ(buf[0][0], buf[0][k]);
