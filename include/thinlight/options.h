@@ -8,7 +8,7 @@
  * @code
  *   tl_renderer_options o = {0};
  *   const tl_option_info *refine = tl_option_find("ssr.refine");
- *   tl_option_parse(refine, "9", &o, &logger);   // "options.ssr.refine = 9 is out of range (1..8; 0: 4)"
+ *   tl_option_parse(refine, "9", &o, &my_logger); // logs "options.ssr.refine = 9 is out of range (1..8; 0: 4)"
  *   for (size_t i = 0; i < tl_option_count(); i++) puts(tl_option_at(i)->name);
  * @endcode
  */

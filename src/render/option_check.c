@@ -65,11 +65,14 @@ int tl_option_value_valid(const tl_option_info *i, double v)
     if (!i || isnan(v)) return 0;
     if (tl__integer_type(i->type) && v != floor(v)) return 0;
     if (i->type == TL_OPTION_TARGETS) return v >= 0.0 && v <= (double)UINT32_MAX;
+    double lo = i->min, hi = i->max;
+    if (!tl__integer_type(i->type)) /* as the float field holds them: 0.2f is in (0, 0.2] */
+        v = (double)(float)v, lo = (double)(float)lo, hi = (double)(float)hi;
     if (v == 0.0) return 1; /* the default */
     if (v < 0.0 && (i->flags & TL_OPTION_NEGATIVE_ZERO) && isfinite(v)) return 1;
-    if (!isfinite(v) || v < i->min || v > i->max) return 0;
-    if ((i->flags & TL_OPTION_MIN_OPEN) && v == i->min) return 0;
-    if ((i->flags & TL_OPTION_MAX_OPEN) && v == i->max) return 0;
+    if (!isfinite(v) || v < lo || v > hi) return 0;
+    if ((i->flags & TL_OPTION_MIN_OPEN) && v == lo) return 0;
+    if ((i->flags & TL_OPTION_MAX_OPEN) && v == hi) return 0;
     return !(i->flags & TL_OPTION_POW2) || tl__pow2(v);
 }
 

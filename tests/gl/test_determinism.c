@@ -5,6 +5,8 @@
  * only). llvmpipe shades with several threads, so a result that depends on which fragment or
  * invocation ran first (an atomic counter's order, a shared list) shows up here as differing bytes
  * within a few frames. */
+#include <string.h>
+
 #include "tl_test.h"
 
 #include "render_fixture.h"
@@ -148,34 +150,35 @@ static size_t run_combo(const tl_scene *s, const combo *c, uint8_t *buf[2][FRAME
     return worst;
 }
 
-/* Every value of every enumerated option, every light scale, tile size and sample count appears in
- * some combination: a value added to an enum without a combination fails here. */
-#define COVER(field, first, count)                                                                 \
-    for (int v = (first); v < (count); v++) {                                                      \
-        int seen = 0;                                                                              \
-        for (size_t c = 0; c < COMBOS; c++) seen |= (int)k_combos[c].o.field == v;                \
-        if (!seen) fprintf(stderr, "no combination has " #field " = %d\n", v);                    \
-        missing += !seen;                                                                          \
+/* Whether some combination holds a value of field f named `name` (DEFAULT counts as the value it
+ * stands for: same name). */
+static int combos_hold(const tl_option_info *f, const char *name)
+{
+    for (size_t c = 0; c < COMBOS; c++) {
+        int32_t v;
+        memcpy(&v, (const char *)&k_combos[c].o + f->offset, sizeof v);
+        if (f->type == TL_OPTION_BOOL ? (v != 0) == (strcmp(name, "1") == 0) : strcmp(f->value_name((uint32_t)v), name) == 0)
+            return 1;
     }
+    return 0;
+}
+
+/* Every value of every enumerated option and both of every on/off option of the option registry
+ * (a field added to it is covered here with no line written), every light scale, tile size and
+ * sample count appears in some combination: a value without a combination fails here. */
 static int combos_cover_every_value(void)
 {
     int missing = 0;
-    COVER(mode, 0, TL_MODE_COUNT_)
-    COVER(depth_format, 0, TL_DEPTH_FORMAT_COUNT_)
-    COVER(rt0, 0, TL_RT0_COUNT_)
-    COVER(light_buffer, 0, TL_LIGHT_BUFFER_COUNT_)
-    COVER(light_format, 0, TL_LIGHT_FORMAT_COUNT_)
-    COVER(light_strategy, 0, TL_LIGHT_STRATEGY_COUNT_)
-    COVER(lighting, 0, TL_LIGHTING_COUNT_)
-    COVER(fresnel, 0, TL_FRESNEL_COUNT_)
-    COVER(tiled_shading, 0, TL_TILED_SHADING_COUNT_)
-    COVER(transparency, 0, TL_TRANSPARENCY_COUNT_)
-    COVER(msaa_lighting, 0, TL_MSAA_LIGHTING_COUNT_)
-    COVER(fxaa, 0, TL_FXAA_COUNT_)
-    COVER(ssao.method, 0, TL_SSAO_COUNT_)
-    COVER(fog.mode, 0, TL_FOG_COUNT_)
-    COVER(shadows.filter, 0, TL_SHADOW_FILTER_PCSS + 1)
-    COVER(clearcoat, 0, TL_CLEARCOAT_COUNT_)
+    for (size_t i = 0; i < tl_option_count(); i++) {
+        const tl_option_info *f = tl_option_at(i);
+        if (f->type != TL_OPTION_ENUM && f->type != TL_OPTION_SWITCH && f->type != TL_OPTION_BOOL) continue;
+        for (uint32_t v = 0; v < (f->type == TL_OPTION_BOOL ? 2u : f->count); v++) {
+            const char *name = f->type == TL_OPTION_BOOL ? (v ? "1" : "0") : f->value_name(v);
+            if (combos_hold(f, name)) continue;
+            fprintf(stderr, "no combination has %s = %s\n", f->name, name);
+            missing++;
+        }
+    }
     const float scales[] = {0.0f, 1.0f, 0.5f, 0.25f};
     const uint32_t tiles[] = {0, 8, 16, 32}, samples[] = {0, 2, 4};
     for (size_t i = 0; i < 4; i++) {
