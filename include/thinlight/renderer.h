@@ -407,7 +407,10 @@ typedef int (*tl_is_current_fn)(void *user);
 #define TL_TARGETS_ALL 0xFFFFFFFFu
 
 /** How the renderer draws a frame: every field may change between frames (tl_renderer_set_options)
- *  and every zeroed field means its default. tl_renderer_desc.options holds the first ones. */
+ *  and every zeroed field means its default. tl_renderer_desc.options holds the first ones. Each
+ *  field's name, range, default, unit and help are its row of the option registry (options.h);
+ *  an on/off field reads positively: `enabled` or an `int` turns on what is off by default, a
+ *  tl_switch turns off what is on by default. */
 typedef struct tl_renderer_options {
     tl_render_mode mode;               /**< default thin-lpp */
     tl_depth_format depth_format;      /**< default D24 (D24S8); D32F_REVERSED for reversed Z */
