@@ -93,11 +93,26 @@ static int tl__row_check(const tl_option_info *i, const tl_renderer_options *o, 
     return 1;
 }
 
+/* Whether row i is an effect's `enabled` ("ssr.enabled"); its struct's prefix length in *n. */
+static int tl__enabled_row(const tl_option_info *i, size_t *n)
+{
+    const char *dot = strchr(i->name, '.');
+    if (i->type != TL_OPTION_BOOL || !dot || strcmp(dot, ".enabled") != 0) return 0;
+    *n = (size_t)(dot - i->name) + 1u;
+    return 1;
+}
+
 int tl__options_check(const tl_renderer_options *o, tl__why *why)
 {
-    const tl_option_info *i;
-    for (size_t n = 0; (i = tl_option_at(n)) != NULL; n++)
-        if (tl__option_group_on(i, o) && !tl__row_check(i, o, why)) return 0;
+    const tl_option_info *i, *off = NULL; /* the `enabled` row of an effect that is off */
+    size_t prefix = 0;
+    for (size_t n = 0; (i = tl_option_at(n)) != NULL; n++) {
+        /* a struct's rows follow its `enabled`: skipped while it is 0 */
+        if (off && strncmp(i->name, off->name, prefix) == 0) continue;
+        off = NULL;
+        if (!tl__row_check(i, o, why)) return 0;
+        if (tl__enabled_row(i, &prefix) && tl__get(i, o, 0) == 0.0) off = i;
+    }
     return 1;
 }
 

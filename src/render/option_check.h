@@ -90,14 +90,11 @@ extern const size_t tl__frame_option_row_count;
 
 /* 1 when every field of `o` holds zero, a value in range or (TL_OPTION_NEGATIVE_ZERO) a negative
  * one; 0 with the first that does not in `why` (may be NULL) as "options.NAME = VALUE is out of
- * range (RANGE)". The fields below an effect's `enabled` are not looked at while it is 0. */
+ * range (RANGE)". The fields below an effect's `enabled` (its struct's rows, which follow it) are
+ * not looked at while it is 0. */
 int tl__options_check(const tl_renderer_options *o, tl__why *why);
 /* Every field whose default is one value (zero_text NULL): zero becomes `zero`, and with
  * TL_OPTION_NEGATIVE_ZERO a negative float becomes 0. Computed defaults are the passes' (resolve). */
 void tl__options_defaults(tl_renderer_options *o);
-/* The group a row belongs to: the `enabled` row of its struct when it has one ("ssr.enabled" for
- * "ssr.refine"), else NULL; and whether that group is on in `o`. */
-const tl_option_info *tl__option_group(const tl_option_info *row);
-int tl__option_group_on(const tl_option_info *row, const tl_renderer_options *o);
 
 #endif

@@ -94,24 +94,3 @@ const tl_option_info *tl_option_find(const char *name)
         if (strcmp(o->name, name) == 0) return o;
     return NULL;
 }
-
-const tl_option_info *tl__option_group(const tl_option_info *row)
-{
-    const char *dot = row ? strchr(row->name, '.') : NULL;
-    if (!dot) return NULL;
-    char name[64];
-    size_t n = (size_t)(dot - row->name);
-    if (n + sizeof ".enabled" > sizeof name) return NULL;
-    memcpy(name, row->name, n);
-    memcpy(name + n, ".enabled", sizeof ".enabled");
-    const tl_option_info *g = tl_option_find(name);
-    return g && g->type == TL_OPTION_BOOL ? g : NULL;
-}
-
-int tl__option_group_on(const tl_option_info *row, const tl_renderer_options *o)
-{
-    const tl_option_info *g = tl__option_group(row);
-    int on = 1;
-    if (g && g != row) memcpy(&on, (const char *)o + g->offset, sizeof on);
-    return on != 0;
-}
