@@ -93,19 +93,6 @@ static const combo k_combos[] = {
 };
 #define COMBOS (sizeof k_combos / sizeof k_combos[0])
 
-static tl_renderer *make(const tl_scene *s, const tl_renderer_options *o)
-{
-    tl_renderer_desc d = {.width = W, .height = H, .options = *o, .get_proc_address = tl_context_proc_loader,
-                          .get_proc_address_user = g_ctx, .logger = tl_test_logger};
-    tl_renderer *r = NULL;
-    if (tl_renderer_create(&d, &r) != TL_OK) return NULL;
-    if (tl_renderer_set_scene(r, s) != TL_OK) {
-        tl_renderer_destroy(r);
-        return NULL;
-    }
-    return r;
-}
-
 static int frame(tl_renderer *r, uint8_t *out)
 {
     size_t size = (size_t)W * H * 4;
@@ -124,7 +111,8 @@ static size_t differ(const uint8_t *a, const uint8_t *b)
  * (without fog noise) against A's first frame. Returns the differing bytes found. */
 static size_t run_combo(const tl_scene *s, const combo *c, uint8_t *buf[2][FRAMES])
 {
-    tl_renderer *r[2] = {make(s, &c->o), make(s, &c->o)};
+    const tl_test_renderer_desc d = {.renderer = {.width = W, .height = H, .options = c->o}, .scene = s};
+    tl_renderer *r[2] = {tl_test_renderer(&d), tl_test_renderer(&d)};
     size_t worst = 0;
     int ok = r[0] && r[1];
     for (int k = 0; ok && k < FRAMES; k++) ok = frame(r[0], buf[0][k]) && frame(r[1], buf[1][k]);

@@ -180,13 +180,9 @@ TL_TEST(renderer_logs_each_downgrade_once)
     test_scene t;
     lit_room(&t);
     log_count c = {0};
-    tl_renderer_desc d = {.width = 96, .height = 54, .options = {.msaa = 4, .light_scale = 0.5f},
-                          .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
-                          .logger = {count_log, &c}};
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
+    tl_renderer_desc d = {.width = 96, .height = 54, .options = {.msaa = 4, .light_scale = 0.5f}, .logger = {count_log, &c}};
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .scene = &t.s});
     if (!r) return;
-    TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_OK);
     for (int f = 0; f < 4; f++) TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
     TL_CHECK(tl_renderer_set_lights(r, t.s.lights, 1) == TL_OK); /* fewer light types: a re-plan */
     TL_CHECK(tl_renderer_resize(r, 80, 45) == TL_OK);

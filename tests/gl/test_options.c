@@ -9,48 +9,11 @@
 #include <time.h>
 
 #include "gl/gl.h"
+#include "gl_counter.h"
 #include "render_fixture.h"
 #include "thinlight/context.h"
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
-
-/* ---- a loader that counts what a change must not do ------------------------------------------- */
-
-#define COUNTED_VOID(name, params, args)                                                           \
-    static void(GLAD_API_PTR *real_##name) params;                                                 \
-    static unsigned long n_##name;                                                                 \
-    static void GLAD_API_PTR count_##name params                                                   \
-    {                                                                                              \
-        n_##name++;                                                                                \
-        real_##name args;                                                                          \
-    }
-
-COUNTED_VOID(TextureSubImage2D,
-             (GLuint t, GLint l, GLint x, GLint y, GLsizei w, GLsizei h, GLenum f, GLenum ty, const void *p),
-             (t, l, x, y, w, h, f, ty, p))
-COUNTED_VOID(GenerateTextureMipmap, (GLuint t), (t))
-COUNTED_VOID(LinkProgram, (GLuint p), (p))
-
-static tl_gl_function count_loader(void *user, const char *name)
-{
-    static const struct {
-        const char *name;
-        void *real_slot;
-        tl_gl_function thunk;
-    } wrapped[] = {{"glTextureSubImage2D", (void *)&real_TextureSubImage2D, (tl_gl_function)count_TextureSubImage2D},
-                   {"glGenerateTextureMipmap", (void *)&real_GenerateTextureMipmap,
-                    (tl_gl_function)count_GenerateTextureMipmap},
-                   {"glLinkProgram", (void *)&real_LinkProgram, (tl_gl_function)count_LinkProgram}};
-    tl_gl_function real = tl_context_proc_loader(user, name);
-    for (size_t i = 0; i < sizeof wrapped / sizeof wrapped[0]; i++)
-        if (real && strcmp(name, wrapped[i].name) == 0) {
-            memcpy(wrapped[i].real_slot, &real, sizeof real); /* same representation for every function pointer */
-            return wrapped[i].thunk;
-        }
-    return real;
-}
-
-static void counts_reset(void) { n_TextureSubImage2D = n_GenerateTextureMipmap = n_LinkProgram = 0; }
 
 /* ---- the scene, renderers, an application pass ------------------------------------------------- */
 
@@ -93,15 +56,12 @@ static void square_execute(void *user, const tl_app_pass_context *ctx)
 static const tl_app_pass_desc k_square = {.name = "square", .after = "transparent", .writes = TL_TARGET_BIT(TL_TARGET_HDR),
                                           .execute = square_execute};
 
+/* Every renderer here counts GL calls (gl_counter.h) and carries the square. */
 static tl_renderer *renderer(const tl_renderer_options *o, uint32_t w, uint32_t h, const tl_scene *s)
 {
-    tl_renderer_desc d = {.width = w, .height = h, .options = *o, .get_proc_address = count_loader,
-                          .get_proc_address_user = g_ctx, .logger = tl_test_logger};
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
-    if (r && s) TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);
-    if (r) TL_CHECK(tl_renderer_add_pass(r, &k_square) == TL_OK);
-    return r;
+    return tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = w, .height = h, .options = *o, .get_proc_address = tl_test_gl_counting_loader},
+        .scene = s, .passes = &k_square, .pass_count = 1});
 }
 
 /* ---- the options a frame may change ------------------------------------------------------------ */
@@ -210,14 +170,16 @@ TL_TEST(options_change_keeps_scene_and_programs)
     tl_renderer *r = s ? renderer(&k_cases[0].o, 96, 54, s) : NULL;
     for (int round = 0; r && round < 2; round++)
         for (size_t k = 0; k < CASES; k++) {
-            counts_reset();
+            tl_test_gl_counts_reset();
             TL_CHECK(tl_renderer_set_options(r, &k_cases[k].o) == TL_OK);
             TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
-            if (n_TextureSubImage2D || n_GenerateTextureMipmap || (round && n_LinkProgram))
+            unsigned long uploads = tl_test_gl_calls("glTextureSubImage2D"),
+                          mipmaps = tl_test_gl_calls("glGenerateTextureMipmap"), links = tl_test_gl_calls("glLinkProgram");
+            if (uploads || mipmaps || (round && links))
                 fprintf(stderr, "%s, round %d: %lu texture uploads, %lu mipmaps, %lu programs linked\n", k_cases[k].name,
-                        round, n_TextureSubImage2D, n_GenerateTextureMipmap, n_LinkProgram);
-            TL_CHECK_EQ_U(n_TextureSubImage2D + n_GenerateTextureMipmap, 0);
-            if (round) TL_CHECK_EQ_U(n_LinkProgram, 0);
+                        round, uploads, mipmaps, links);
+            TL_CHECK_EQ_U(uploads + mipmaps, 0);
+            if (round) TL_CHECK_EQ_U(links, 0);
         }
     tl_renderer_destroy(r);
     tl_scene_destroy(s);

@@ -30,11 +30,7 @@ static void said_log(void *user, tl_log_level level, const char *message)
 
 static tl_renderer *renderer(said *log)
 {
-    tl_renderer_desc d = {.width = W, .height = H, .get_proc_address = tl_context_proc_loader,
-                          .get_proc_address_user = g_ctx, .logger = {said_log, log}};
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
-    return r;
+    return tl_test_renderer(&(tl_test_renderer_desc){.renderer = {.width = W, .height = H, .logger = {said_log, log}}});
 }
 
 static void lit_room(test_scene *t)

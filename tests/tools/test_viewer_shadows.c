@@ -129,7 +129,7 @@ static void debug_expected(const float *d, const uint8_t *output, int cascades, 
         }
 }
 
-TL_TEST(viewer_shadow_only_and_cascades_show_the_debug_target)
+TL_TEST_FULL(viewer_shadow_only_and_cascades_show_the_debug_target)
 {
     tl_scene *scene = NULL;
     tl_renderer *r = crypt_renderer(&scene);
