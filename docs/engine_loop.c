@@ -112,8 +112,8 @@ int main(int argc, char **argv)
         {0},
         {.mode = TL_MODE_FAT, .light_strategy = TL_LIGHT_STRATEGY_TILED},
         {.mode = TL_MODE_FORWARD, .lighting = TL_LIGHTING_GGX},
-        {.mode = TL_MODE_THIN_DEFERRED, .ssao = {.method = TL_SSAO_DISC}, .bloom = {.enabled = 1}},
-        {.depth_format = TL_DEPTH_FORMAT_D32F_REVERSED, .fog = {.mode = TL_FOG_DISTANCE}},
+        {.mode = TL_MODE_THIN_DEFERRED, .ssao = {.enabled = 1, .method = TL_SSAO_DISC}, .bloom = {.enabled = 1}},
+        {.depth_format = TL_DEPTH_FORMAT_D32F_REVERSED, .fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}},
         {.light_strategy = TL_LIGHT_STRATEGY_TILED, .fxaa = TL_FXAA_OFF, .vignette = {.enabled = 1}},
     };
     uint32_t added = 0, programs_after_first_round = 0, rebuilt = 0;

@@ -87,9 +87,8 @@ static void bench__fresnel_variant(bench_options *o, bench_scene *scene)
     tl_scene_feature_set features;
     tl_frame_plan plan;
     tl_scene_features(bench_scene_get(scene), &features);
-    tl_renderer_desc desc = {.options.mode = TL_MODE_THIN_LPP, .options.lighting = o->lighting, .width = 64,
-                             .height = 64};
-    o->fresnel_nv_variant = o->fresnel == TL_FRESNEL_DEFAULT && tl_frame_plan_build(&desc, &features, &plan) == TL_OK &&
+    tl_renderer_desc desc = bench_config_desc(o, bench_config_make(TL_MODE_THIN_LPP, TL_LIGHT_STRATEGY_DEFAULT), 64, 64);
+    o->fresnel_nv_variant = o->base.fresnel == TL_FRESNEL_DEFAULT && tl_frame_plan_build(&desc, &features, &plan) == TL_OK &&
                             plan.lighting == TL_LIGHTING_GGX;
 }
 
@@ -117,7 +116,7 @@ int main(int argc, char **argv)
         goto done;
     bench__fresnel_variant(opt, scene);
     tl_tool_machine(run->cpu, sizeof run->cpu, &run->cores);
-    /* the plans first: the sweep times each planned mode against its no_planning renderer */
+    /* the plans first: the sweep times each planned mode against its renderer with planning off */
     if (bench_planning_compare(run, scene) || bench_sweep(run, scene)) goto done;
     int plot_failed = opt->out && !opt->no_plot && (bench_plots(run) || bench_aa_plot(run) || bench_shadows_plot(run));
     bench_print_table(run);

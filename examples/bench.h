@@ -16,6 +16,7 @@
 #include "tool_environment.h"
 #include "tool_gl.h"
 #include "tool_log.h"
+#include "tool_options.h"
 #include "tool_util.h"
 
 #define BENCH_TOOL "thinlight-bench"
@@ -76,11 +77,11 @@ static inline tl_light_format bench_config_light_format(bench_config c)
     return bench_config_variant_of(c) == BENCH_VARIANT_R11G11B10F ? TL_LIGHT_FORMAT_R11G11B10F
                                                                    : TL_LIGHT_FORMAT_DEFAULT;
 }
-/* The light scale: 0.5 or 0.25 for those variants, else 0 (the default, 1). */
+/* The light scale: 2^-1 and 2^-2 for those variants, else 0 (the default, 1). */
 static inline float bench_config_light_scale(bench_config c)
 {
     unsigned v = bench_config_variant_of(c);
-    return v == BENCH_VARIANT_LIGHT_HALF ? 0.5f : v == BENCH_VARIANT_LIGHT_QUARTER ? 0.25f : 0.0f;
+    return v >= BENCH_VARIANT_LIGHT_HALF ? 1.0f / (float)(2u << (v - BENCH_VARIANT_LIGHT_HALF)) : 0.0f;
 }
 /* The Fresnel layout: n.v for that variant, else `asked` (--fresnel). */
 static inline tl_fresnel_layout bench_config_fresnel(bench_config c, tl_fresnel_layout asked)
@@ -102,10 +103,12 @@ typedef enum bench_effect {
     BENCH_EFFECT_DOF,
     BENCH_EFFECT_BLOOM,
     BENCH_EFFECT_SSR, /* not in forward, which plans no reflections (no gloss to read) */
+    BENCH_EFFECT_VIGNETTE,
     BENCH_EFFECTS
 } bench_effect;
 const char *bench_effect_name(bench_effect e);
-/* Every effect's name in bench_effect order, then "none" (--effects) and NULL. */
+/* Every effect's name in bench_effect order (its options' struct in tl_renderer_options), then
+ * "none" (--effects) and NULL. */
 extern const char *const bench_effect_names[BENCH_EFFECTS + 2];
 
 /* Antialiasing methods the bench can measure (--aa), each against a supersampled truth
@@ -155,17 +158,14 @@ typedef struct bench_options {
     tl_tool_context_args context_args; /* --context, --device, --list-devices as given */
     tl_tool_context_options context;   /* what they ask for */
     tl_tool_budgets budgets;           /* --max-target-memory, --max-load-memory, --max-texture-pixels */
-    tl_lighting_model lighting;      /* --lighting (auto: from the scene's materials) */
-    tl_fresnel_layout fresnel;       /* --fresnel (thin-lpp with GGX) */
-    unsigned effects;                /* --effects: bits (1u << bench_effect); 0: none measured */
-    tl_renderer_desc effect_desc;    /* the effects' parameters (--ssao-*, --fog-*, --dof-*, --bloom-*, --ssr-*) */
-    tl_tool_environment env;         /* --environment; --background and its intensity in env_desc.options */
-    tl_renderer_desc env_desc;
+    tl_renderer_options base;        /* the renderer options given (tool_options.h): every configuration's, the
+                                        swept fields and the effects' `enabled` aside (bench_config_desc) */
+    unsigned effects;                /* --effects and the effects' flags: bits (1u << bench_effect); 0: none */
+    tl_tool_environment env;         /* --environment */
     const char *effects_doc;         /* --effects-doc: the effects table between its markers */
     unsigned aa;                     /* --aa: bits (1u << bench_aa); 0: not measured */
     const char *aa_doc;              /* --aa-doc: the AA table between its markers */
     const char *aa_section;          /* --aa-doc-section: the markers' and images' name; NULL: the default pair */
-    tl_tiled_shading tiled_shading;  /* --tiled-shading: the tiled strategy's light pass (default fragment) */
     int shadows;                     /* --shadows: 1 when "on" was given (measured against "off") */
     const char *shadows_doc;         /* --shadows-doc: the shadows' table between its markers */
 } bench_options;
@@ -173,6 +173,20 @@ typedef struct bench_options {
 /* bench_args.c: the command line into `o`: 0; -1 after --help or --list-options (printed); or 2
  * (bad usage) after one line on stderr. */
 int bench_parse_args(int argc, char **argv, bench_options *o);
+/* The renderer options the sweep sets itself (field names, NULL-terminated) and the list flag that
+ * sweeps each (its names from the field's row): --modes, --strategies, --light-formats,
+ * --light-scales. The other fields are flags of their own (bench_renderer_flags). */
+extern const char *const bench_swept_fields[];
+extern const char *const bench_swept_flags[];
+typedef struct bench_renderer_flags {
+    tl_tool_options flags; /* every field's flag but the swept ones' */
+    tl_tool_options swept; /* the swept fields' own, whose choices the list flags take */
+} bench_renderer_flags;
+void bench_renderer_flags_build(bench_renderer_flags *f);
+/* A configuration's renderer descriptor at w x h, without the context: the options given
+ * (bench_options.base) with every effect off, the configuration's mode, strategy, light format,
+ * light scale and Fresnel layout, statistics read every frame. */
+tl_renderer_desc bench_config_desc(const bench_options *o, bench_config c, uint32_t w, uint32_t h);
 
 /* One effect in one configuration, at the first size and light count: the configuration rendered
  * with the effect and without it, frame by frame in turn; its error against fat with the same effect. */
@@ -291,7 +305,7 @@ typedef struct bench_aa_image {
     uint32_t lights;
 } bench_aa_image;
 
-/* What planning saves for one mode (the plan against tl_renderer_options.no_planning), for the scene
+/* What planning saves for one mode (the plan against tl_renderer_options.planning off), for the scene
  * with the largest light count. */
 typedef struct bench_planning {
     tl_render_mode mode;
@@ -299,7 +313,7 @@ typedef struct bench_planning {
     size_t programs, unplanned_programs;
     size_t passes, unplanned_passes;
     /* Median frame time (GPU timers, else wall clock) at the first size of a planned renderer and of
-     * one with no_planning, their frames interleaved; NaN until bench_sweep measures them. */
+     * one with planning off, their frames interleaved; NaN until bench_sweep measures them. */
     double planned_ms, unplanned_ms;
 } bench_planning;
 
@@ -314,6 +328,7 @@ typedef struct bench_run {
     size_t cores;
     char scene_name[256];
     char light_definition[256];    /* what "N lights" means for this scene */
+    char shadow_casters[128];      /* --shadows: which of them cast */
     size_t scene_triangles, scene_objects, scene_file_lights;
     double seconds;                /* the whole sweep */
     double load_start, load_end;   /* 1-minute load average before and after it (NaN: unknown) */
@@ -405,7 +420,7 @@ uint32_t bench_light_buffer_bpp(const bench_record *r);    /* light.diffuse + li
 int bench_effects_measure(bench_run *run, tl_context *ctx, bench_scene *scene, tl_tool_progress *progress,
                           uint64_t *done);
 uint64_t bench_effects_frames(const bench_options *opt);
-/* The effect's parameters from opt.effect_desc into `d`, turned on. */
+/* The effect's options from opt.base into `d` (every field of its struct), turned on. */
 void bench_effect_enable(const bench_options *opt, bench_effect e, tl_renderer_desc *d);
 
 /* bench_effects_report.c: the effects' table (stdout), JSON member and Markdown table. */

@@ -36,13 +36,10 @@ typedef struct bench__aa_item {
 
 static tl_renderer_desc bench__aa_desc(const bench_options *opt, bench_config c, bench_aa aa)
 {
-    tl_renderer_desc d = {.options.mode = bench_config_mode(c), .options.light_strategy = bench_config_strategy(c),
-                          .options.lighting = opt->lighting, .options.fresnel = bench_config_fresnel(c, opt->fresnel),
-                          .options.fxaa = aa == BENCH_AA_FXAA ? TL_FXAA_DEFAULT : TL_FXAA_OFF,
-                          .options.msaa = bench_aa_samples(aa), .options.msaa_lighting = bench_aa_lighting(aa),
-                          .options.tiled_shading = opt->tiled_shading,
-                          .width = opt->sizes[0].width,
-                          .height = opt->sizes[0].height, .options.synchronous_stats = 1};
+    tl_renderer_desc d = bench_config_desc(opt, c, opt->sizes[0].width, opt->sizes[0].height);
+    d.options.fxaa = aa == BENCH_AA_FXAA ? TL_FXAA_DEFAULT : TL_FXAA_OFF;
+    d.options.msaa = bench_aa_samples(aa);
+    d.options.msaa_lighting = bench_aa_lighting(aa);
     tl_tool_budget_renderer(&opt->budgets, &d);
     return d;
 }

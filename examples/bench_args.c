@@ -1,5 +1,6 @@
 /* thinlight-bench's command line: its options (a table for the tools' one parser, tool_args.h),
  * their defaults and --help. */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -7,16 +8,16 @@
 #include "bench.h"
 #include "bench_shadows.h"
 #include "tool_budget.h"
-#include "tool_effects.h"
+#include "tool_options.h"
 
 static const char usage_head[] =
     "usage: " BENCH_TOOL " [--scene default|FILE.gltf] [--size WxH[,WxH...]] [--lights N,N,...]\n"
     "                       [--modes MODE,...] [--strategies S,...] [--light-formats F,...]\n"
     "                       [--frames N] [--warmup N] [--json OUT.json] [--out DIR] [--quick]\n"
-    "                       [--doc FILE.md] [--seed S] [--lighting M] [--fresnel F] [--no-plot]\n"
-    "                       [--effects E,...] [--effects-doc FILE.md] [effect options]\n"
+    "                       [--doc FILE.md] [--seed S] [--no-plot] [renderer options]\n"
+    "                       [--effects E,...] [--effects-doc FILE.md]\n"
     "                       [--aa M,...] [--aa-doc FILE.md] [--aa-doc-section NAME]\n"
-    "                       [--tiled-shading fragment|compute] [--shadows off,on] [--shadows-doc FILE.md]\n"
+    "                       [--shadows off,on] [--shadows-doc FILE.md]\n"
     "                       [--context C] [--device N] [memory budgets]\n"
     "                       [--list-devices] [--list-options] [--help]\n"
     "\n"
@@ -36,14 +37,13 @@ static const char usage_head[] =
     "                   (default volumes,tiled). forward with volumes is per-object light lists\n"
     "                   (\"forward\"), with tiled Forward+ (\"forward+\"); fat of the same strategy\n"
     "                   is each one's error reference\n"
-    "  --light-formats LIST rgba16f (always) and r11g11b10f: thin-lpp/tiled also with the\n"
-    "                   R11G11B10F light buffer (default rgba16f,r11g11b10f)\n"
-    "  --light-scales LIST 1 (always), 0.5, 0.25: thin-lpp also with its light buffer at that\n"
-    "                   scale per axis, with the first strategy (default 1,0.5,0.25); a table of its own\n"
-    "                   gives their error against fat and against thin-lpp at scale 1, over the frame\n"
-    "                   and over the edge pixels (fat's depth steps and creases), their passes' times,\n"
-    "                   bytes and re-lit fraction\n"
-    "  --tiled-shading K the tiled strategy's light pass: fragment (default) or compute\n";
+    "  --light-formats LIST the light buffer's formats (options.light_format): the default (always)\n"
+    "                   and the others: thin-lpp/tiled also with the R11G11B10F light buffer (default all)\n"
+    "  --light-scales LIST options.light_scale: 1 (always) and the smaller scales: thin-lpp also with\n"
+    "                   its light buffer at that scale per axis, with the first strategy (default all); a\n"
+    "                   table of its own gives their error against fat and against thin-lpp at scale 1,\n"
+    "                   over the frame and over the edge pixels (fat's depth steps and creases), their\n"
+    "                   passes' times, bytes and re-lit fraction\n";
 static const char usage_outputs[] =
     "  --json FILE      write one record per (mode, strategy, lights, size)\n"
     "  --out DIR        write final images, heat maps of |mode - fat| (at the largest light count;\n"
@@ -55,17 +55,14 @@ static const char usage_outputs[] =
     "                   in FILE with the tables, and copy the plots to img/ beside it (needs --out\n"
     "                   unless --no-plot)\n"
     "  --seed S         seed of the light layout (default 1)\n"
-    "  --lighting M     auto (default: ggx for glTF materials, else blinn-phong), blinn-phong or ggx\n"
-    "  --fresnel F      thin-lpp with GGX: two-sums (default, exact) or nv (Schlick with n.v per pixel);\n"
-    "                   without it, a GGX-lit sweep also measures thin-lpp/tiled/nv beside the exact layout\n"
     "  --no-plot        do not run gnuplot\n"
-    "  --effects LIST   none (default), ssao, fog, dof, bloom, ssr: at the first size and light count,\n"
+    "  --effects LIST   none (default), ssao, fog, dof, bloom, ssr, vignette: at the first size and light count,\n"
     "                   every configuration of the first strategy also renders with each effect (ssr:\n"
     "                   not forward, which has no reflections), taking turns with frames without it:\n"
     "                   the effect's cost (its passes' GPU time) and its error against fat with the\n"
     "                   same effect (SSAO: also the AO target's) join the table, the JSON (\"effects\")\n"
-    "                   and the error-vs-time plot. --ssao, --fog, --dof, --bloom, --ssr add one;\n"
-    "                   their parameter options set it up:\n";
+    "                   and the error-vs-time plot. --ssao, --fog, --dof, --bloom, --ssr, --vignette\n"
+    "                   add one; their parameter options (below) set it up\n";
 static const char usage_middle[] =
     "  --effects-doc FILE replace the text between " BENCH_EFFECTS_DOC_BEGIN " and\n"
     "                   " BENCH_EFFECTS_DOC_END " in FILE with the effects' table\n"
@@ -85,15 +82,22 @@ static const char usage_middle[] =
     "  --aa-doc-section NAME the section between <!-- bench-aa:NAME:begin --> and <!-- bench-aa:NAME:end -->\n"
     "                   instead, its plot and crops named bench_aa_NAME_* (letters, digits, '-')\n"
     "  --shadows LIST   off, on (default: not measured): with on, at the first size and light count,\n"
-    "                   every configuration with the crypt's lights without shadows, with its moonlight\n"
-    "                   and braziers casting (cached) and casting without the cache, frames taking\n"
-    "                   turns; the shadow maps' and the lookup's time, atlas bytes, maps rendered and\n"
-    "                   kept, and the shadow terms of the casting braziers (one at a time) against the\n"
-    "                   ray-traced truth (D24 and reversed D32F; a bench built with Embree 3, else no\n"
-    "                   truth): a table,\n"
-    "                   the JSON (\"shadows\") and a plot. The built-in crypt only\n"
+    "                   every configuration with the scene's lights without shadows, casting (cached)\n"
+    "                   and casting without the cache, frames taking turns; the shadow maps' and the\n"
+    "                   lookup's time, atlas bytes, maps rendered and kept, and the shadow terms of the\n"
+    "                   casting point lights (one at a time) against the ray-traced truth (D24 and\n"
+    "                   reversed D32F; a bench built with Embree 3, else no truth): a table, the JSON\n"
+    "                   (\"shadows\") and a plot. The crypt's moonlight and braziers cast; a glTF file\n"
+    "                   is loaded with the shadow rule (its directional lights and brightest seeded\n"
+    "                   lights, up to 8, and its lights' thinlight_shadow flags: docs/gltf.md), which\n"
+    "                   its sweeps then render too\n"
     "  --shadows-doc FILE replace the text between " BENCH_SHADOWS_DOC_BEGIN " and\n"
     "                   " BENCH_SHADOWS_DOC_END " in FILE with the shadows' table, copy the plot to img/\n";
+static const char usage_options[] =
+    "Renderer options, for every configuration (each effect's only where it is measured; the\n"
+    "sweep sets mode, light_strategy, light_format and light_scale: --modes, --strategies,\n"
+    "--light-formats, --light-scales). Without --fresnel a GGX-lit sweep also measures\n"
+    "thin-lpp/tiled/nv beside the exact layout:\n";
 static const char usage_tail[] =
     "  --list-options   list every option and the values it takes, then exit\n"
     "  --help           this text\n"
@@ -113,16 +117,18 @@ static const char usage_tail[] =
 
 enum {
     B_HELP, B_LIST, B_QUICK, B_NO_PLOT, B_SCENE, B_SIZE, B_LIGHTS, B_MODES, B_STRATEGIES, B_FORMATS, B_SCALES, B_FRAMES,
-    B_WARMUP, B_SEED, B_LIGHTING, B_FRESNEL, B_JSON, B_OUT, B_DOC, B_EFFECTS, B_EFFECTS_DOC, B_AA, B_AA_DOC,
-    B_AA_SECTION, B_TILED_SHADING, B_SHADOWS, B_SHADOWS_DOC
+    B_WARMUP, B_SEED, B_JSON, B_OUT, B_DOC, B_EFFECTS, B_EFFECTS_DOC, B_AA, B_AA_DOC, B_AA_SECTION, B_SHADOWS,
+    B_SHADOWS_DOC
 };
 
-static const char *const bench__format_names[] = {"rgba16f", "r11g11b10f", NULL};
-static const char *const bench__scale_names[] = {"1", "0.5", "0.25", NULL};
-static const char *const bench__shading_names[] = {"fragment", "compute", NULL};
+/* The renderer options the sweep sets itself, each through a list flag of its own
+ * (bench_swept_flags), and the rest's flags (tool_options.h). */
+const char *const bench_swept_fields[] = {"mode", "light_strategy", "light_format", "light_scale", NULL};
+const char *const bench_swept_flags[] = {"--modes", "--strategies", "--light-formats", "--light-scales", NULL};
+static bench_renderer_flags bench__flags;
 static const char *const bench__shadow_names[] = {"off", "on", NULL};
 
-static const tl_opt bench__opts[] = {
+static tl_opt bench__opts[] = {
     {"--help", TL_OPT_FLAG, .id = B_HELP},
     {"-h", TL_OPT_FLAG, .id = B_HELP},
     {"--list-options", TL_OPT_FLAG, .id = B_LIST},
@@ -133,13 +139,11 @@ static const tl_opt bench__opts[] = {
     {"--lights", TL_OPT_UINT_LIST, .id = B_LIGHTS, .lo = 0, .hi = BENCH_MAX_LIGHTS, .items = BENCH_MAX_LIGHT_COUNTS},
     {"--modes", TL_OPT_TEXT_LIST, .id = B_MODES, .items = 2 * BENCH_MODES},
     {"--strategies", TL_OPT_TEXT_LIST, .id = B_STRATEGIES, .items = 2 * BENCH_STRATEGIES},
-    {"--light-formats", TL_OPT_TEXT_LIST, .id = B_FORMATS, .items = 4, .choices = bench__format_names},
-    {"--light-scales", TL_OPT_TEXT_LIST, .id = B_SCALES, .items = 6, .choices = bench__scale_names},
+    {"--light-formats", TL_OPT_TEXT_LIST, .id = B_FORMATS, .items = 4},
+    {"--light-scales", TL_OPT_TEXT_LIST, .id = B_SCALES, .items = 6},
     {"--frames", TL_OPT_UINT, .id = B_FRAMES, .lo = 1, .hi = BENCH_MAX_FRAMES},
     {"--warmup", TL_OPT_UINT, .id = B_WARMUP, .lo = 0, .hi = BENCH_MAX_FRAMES},
     {"--seed", TL_OPT_UINT, .id = B_SEED, .lo = 0, .hi = UINT64_MAX},
-    {"--lighting", TL_OPT_TEXT, .id = B_LIGHTING},
-    {"--fresnel", TL_OPT_TEXT, .id = B_FRESNEL},
     {"--json", TL_OPT_TEXT, .id = B_JSON},
     {"--out", TL_OPT_TEXT, .id = B_OUT},
     {"--doc", TL_OPT_TEXT, .id = B_DOC},
@@ -148,10 +152,35 @@ static const tl_opt bench__opts[] = {
     {"--aa", TL_OPT_TEXT_LIST, .id = B_AA, .items = 2 * BENCH_AAS, .choices = bench_aa_names},
     {"--aa-doc", TL_OPT_TEXT, .id = B_AA_DOC},
     {"--aa-doc-section", TL_OPT_TEXT, .id = B_AA_SECTION},
-    {"--tiled-shading", TL_OPT_TEXT, .id = B_TILED_SHADING, .choices = bench__shading_names},
     {"--shadows", TL_OPT_TEXT_LIST, .id = B_SHADOWS, .items = 2, .choices = bench__shadow_names},
     {"--shadows-doc", TL_OPT_TEXT, .id = B_SHADOWS_DOC},
 };
+
+void bench_renderer_flags_build(bench_renderer_flags *f)
+{
+    static const char *const none[] = {NULL};
+    tl_tool_options_build(&f->flags, bench_swept_fields);
+    /* the swept fields' own rows give their lists' names: build those alone, keep their choices */
+    const char *others[TL_TOOL_OPTIONS_MAX + 1];
+    size_t n = 0;
+    for (size_t i = 0; i < tl_option_count() && n < TL_TOOL_OPTIONS_MAX; i++) {
+        const char *name = tl_option_at(i)->name;
+        int swept = 0;
+        for (size_t k = 0; bench_swept_fields[k]; k++) swept |= strcmp(bench_swept_fields[k], name) == 0;
+        if (!swept) others[n++] = name;
+    }
+    others[n] = NULL;
+    tl_tool_options_build(&f->swept, others);
+    for (size_t i = 0; i < sizeof bench__opts / sizeof bench__opts[0]; i++)
+        for (size_t k = 0; bench_swept_flags[k]; k++) {
+            if (strcmp(bench__opts[i].name, bench_swept_flags[k]) != 0) continue;
+            const tl_opt *own = NULL;
+            for (size_t j = 0; j < f->swept.count; j++)
+                if (strcmp(f->swept.field[j]->name, bench_swept_fields[k]) == 0 && !f->swept.spec[j].fixed) own = &f->swept.opts[j];
+            bench__opts[i].choices = own ? own->choices : none;
+            bench__opts[i].values = own ? own->values : NULL;
+        }
+}
 
 static const uint32_t bench__default_lights[] = {8, 16, 32, 64, 128, 256, 512, 1024};
 static const uint32_t bench__quick_lights[] = {8, 64, 256};
@@ -173,17 +202,12 @@ static void bench__set_lights(bench_options *o, const uint32_t *lights, size_t n
         if (!o->light_count || o->lights[o->light_count - 1] != sorted[i]) o->lights[o->light_count++] = sorted[i];
 }
 
-/* --modes and --strategies name the library's modes and strategies (repeats are dropped); 0 or 2. */
+/* --modes and --strategies: the library's modes and strategies by name (repeats are dropped). */
 static int bench__modes(bench_options *o, const tl_opt_value *v)
 {
     o->mode_count = 0;
-    for (size_t i = 0; i < v->count; i++) {
-        tl_render_mode m;
-        if (strcmp(v->item[i], "default") == 0 || tl_render_mode_from_name(v->item[i], &m) != TL_OK)
-            return tl_opt_usage(BENCH_TOOL, "--modes: unknown mode '%s' (thin-lpp, thin-deferred, fat, forward)",
-                                v->item[i]);
-        if (!bench_mode_requested(o, m)) o->modes[o->mode_count++] = m;
-    }
+    for (size_t i = 0; i < v->count; i++)
+        if (!bench_mode_requested(o, (tl_render_mode)v->u[i])) o->modes[o->mode_count++] = (tl_render_mode)v->u[i];
     return 0;
 }
 
@@ -191,15 +215,23 @@ static int bench__strategies(bench_options *o, const tl_opt_value *v)
 {
     o->strategy_count = 0;
     for (size_t i = 0; i < v->count; i++) {
-        tl_light_strategy s;
-        if (tl_light_strategy_from_name(v->item[i], &s) != TL_OK)
-            return tl_opt_usage(BENCH_TOOL, "--strategies: unknown light strategy '%s' (volumes, tiled, auto)",
-                                v->item[i]);
         int seen = 0;
-        for (size_t k = 0; k < o->strategy_count; k++) seen |= o->strategies[k] == s;
-        if (!seen) o->strategies[o->strategy_count++] = s;
+        for (size_t k = 0; k < o->strategy_count; k++) seen |= o->strategies[k] == (tl_light_strategy)v->u[i];
+        if (!seen) o->strategies[o->strategy_count++] = (tl_light_strategy)v->u[i];
     }
     return 0;
+}
+
+/* --light-scales: choice k is the scale min 2^k of options.light_scale's row; bit j - 1 of
+ * light_scales asks for the scale 2^-j (1 is the configurations themselves). */
+static void bench__scales(bench_options *o, const tl_opt_value *v)
+{
+    const tl_option_info *f = tl_option_find("light_scale");
+    o->light_scales = 0;
+    for (size_t i = 0; f && i < v->count; i++) {
+        long j = lround(-log2(ldexp(f->min, (int)v->u[i])));
+        if (j > 0) o->light_scales |= 1u << (j - 1);
+    }
 }
 
 /* What the command line gave (the rest takes its default, which --quick may change). */
@@ -213,8 +245,9 @@ static int bench__option(bench_options *o, bench__given *g, const tl_opt_table *
 {
     switch (opt->id) {
     case B_HELP:
-        printf("%s%s%s%s%s%s%s%s", usage_head, usage_outputs, tl_tool_effects_help, tl_tool_environment_help, usage_middle,
-               TL_TOOL_CONTEXT_HELP, tl_tool_budget_help, usage_tail);
+        printf("%s%s%s%s%s", usage_head, usage_outputs, usage_middle, tl_tool_environment_help, usage_options);
+        tl_tool_options_help(stdout, &bench__flags.flags);
+        printf("%s%s%s", TL_TOOL_CONTEXT_HELP, tl_tool_budget_help, usage_tail);
         return -1;
     case B_LIST: tl_opt_list(stdout, tables, ntables); return -1;
     case B_QUICK: o->quick = 1; break;
@@ -233,25 +266,14 @@ static int bench__option(bench_options *o, bench__given *g, const tl_opt_table *
     }
     case B_MODES: g->modes = 1; return bench__modes(o, v);
     case B_STRATEGIES: g->strategies = 1; return bench__strategies(o, v);
-    case B_FORMATS:
+    case B_FORMATS: /* the default is the configurations themselves */
         o->small_light_buffer = 0;
-        for (size_t i = 0; i < v->count; i++) o->small_light_buffer |= v->u[i] == 1;
+        for (size_t i = 0; i < v->count; i++) o->small_light_buffer |= v->u[i] == TL_LIGHT_FORMAT_R11G11B10F;
         break;
-    case B_SCALES: /* 1 is the configurations themselves */
-        o->light_scales = 0;
-        for (size_t i = 0; i < v->count; i++) o->light_scales |= v->u[i] == 1 ? 1u : v->u[i] == 2 ? 2u : 0u;
-        break;
+    case B_SCALES: bench__scales(o, v); break;
     case B_FRAMES: o->frames = (uint32_t)v->u[0], g->frames = 1; break;
     case B_WARMUP: o->warmup = (uint32_t)v->u[0], g->warmup = 1; break;
     case B_SEED: o->seed = v->u[0], g->seed = 1; break;
-    case B_LIGHTING:
-        if (tl_lighting_model_from_name(v->text, &o->lighting) != TL_OK)
-            return tl_opt_usage(BENCH_TOOL, "--lighting wants auto, blinn-phong or ggx, got '%s'", v->text);
-        break;
-    case B_FRESNEL:
-        if (tl_fresnel_layout_from_name(v->text, &o->fresnel) != TL_OK)
-            return tl_opt_usage(BENCH_TOOL, "--fresnel wants two-sums or nv, got '%s'", v->text);
-        break;
     case B_JSON: o->json = v->text; break;
     case B_OUT: o->out = v->text; break;
     case B_DOC: o->doc = v->text; break;
@@ -270,7 +292,6 @@ static int bench__option(bench_options *o, bench__given *g, const tl_opt_table *
             return tl_opt_usage(BENCH_TOOL, "--aa-doc-section wants letters, digits and '-', got '%s'", v->text);
         o->aa_section = v->text;
         break;
-    case B_TILED_SHADING: o->tiled_shading = v->u[0] ? TL_TILED_SHADING_COMPUTE : TL_TILED_SHADING_FRAGMENT; break;
     case B_SHADOWS:
         o->shadows = 0;
         for (size_t i = 0; i < v->count; i++) o->shadows |= v->u[i] == 1;
@@ -281,13 +302,17 @@ static int bench__option(bench_options *o, bench__given *g, const tl_opt_table *
     return 0;
 }
 
-/* An effect option (tool_effects.h): the flags also add their effect to the measured ones. */
-static int bench__effect_option(bench_options *o, const tl_opt *opt, const tl_opt_value *v)
+/* The effects whose `enabled` the renderer options set (--ssao, ...): measured (bench_effects.c). */
+static void bench__effects_enabled(bench_options *o)
 {
-    if (!tl_tool_effect_apply(&o->effect_desc, opt, v)) return 0;
-    for (int e = 0; opt->kind == TL_OPT_FLAG && e < BENCH_EFFECTS; e++)
-        if (!strcmp(opt->name + 2, bench_effect_names[e])) o->effects |= 1u << e;
-    return 1;
+    for (int e = 0; e < BENCH_EFFECTS; e++) {
+        char name[48];
+        snprintf(name, sizeof name, "%s.enabled", bench_effect_names[e]);
+        const tl_option_info *f = tl_option_find(name);
+        int on = 0;
+        if (f) memcpy(&on, (const char *)&o->base + f->offset, sizeof on);
+        if (on) o->effects |= 1u << e;
+    }
 }
 
 /* Defaults for what the command line did not give. */
@@ -320,8 +345,10 @@ int bench_parse_args(int argc, char **argv, bench_options *o)
     o->small_light_buffer = 1;
     o->light_scales = 3u;
     bench__given given = {0};
-    const tl_opt_table tables[] = {TL_OPT_TABLE(bench__opts), tl_tool_effect_options, tl_tool_context_option_table,
-                                   tl_tool_budget_option_table, tl_tool_environment_option_table};
+    bench_renderer_flags_build(&bench__flags);
+    const tl_opt_table tables[] = {TL_OPT_TABLE(bench__opts), tl_tool_options_table(&bench__flags.flags),
+                                   tl_tool_context_option_table, tl_tool_budget_option_table,
+                                   tl_tool_environment_option_table};
     size_t ntables = sizeof tables / sizeof tables[0];
     tl_opt_parser p;
     tl_opt_begin(&p, BENCH_TOOL, argc, argv, tables, ntables);
@@ -330,16 +357,16 @@ int bench_parse_args(int argc, char **argv, bench_options *o)
     int rc;
     while ((rc = tl_opt_next(&p, &opt, &v)) == 1) {
         if (!opt) return tl_opt_usage(BENCH_TOOL, "unexpected argument '%s'", v.text);
-        if (tl_tool_environment_apply(&o->env, &o->env_desc, opt, &v)) continue;
-        if (!bench__effect_option(o, opt, &v) && !tl_tool_context_option(&o->context_args, opt, &v) &&
-            !tl_tool_budget_option(&o->budgets, opt, &v) && (rc = bench__option(o, &given, tables, ntables, opt, &v)))
+        if ((rc = tl_tool_options_apply(BENCH_TOOL, &bench__flags.flags, &o->base, opt, &v)) == 2) return rc;
+        if (rc || tl_tool_environment_apply(&o->env, opt, &v)) continue;
+        if (!tl_tool_context_option(&o->context_args, opt, &v) && !tl_tool_budget_option(&o->budgets, opt, &v) &&
+            (rc = bench__option(o, &given, tables, ntables, opt, &v)))
             return rc;
+        rc = 0;
     }
     if (rc || o->context_args.list_devices) return rc;
+    bench__effects_enabled(o);
     bench__defaults(o, &given);
-    if (o->shadows && strcmp(o->scene, "default") != 0)
-        return tl_opt_usage(BENCH_TOOL, "--shadows measures the built-in crypt's casting lights: not with --scene %s",
-                            o->scene);
     if (o->doc && !o->out && !o->no_plot)
         return tl_opt_usage(BENCH_TOOL, "--doc %s needs --out DIR for the plots (or --no-plot)", o->doc);
     return tl_tool_context_parse(BENCH_TOOL, &o->context_args, &o->context);

@@ -13,7 +13,7 @@
 #include "bench.h"
 #include "tool_log.h"
 
-const char *const bench_effect_names[BENCH_EFFECTS + 2] = {"ssao", "fog", "dof", "bloom", "ssr", "none", NULL};
+const char *const bench_effect_names[BENCH_EFFECTS + 2] = {"ssao", "fog", "dof", "bloom", "ssr", "vignette", "none", NULL};
 
 const char *bench_effect_name(bench_effect e) { return (unsigned)e < BENCH_EFFECTS ? bench_effect_names[e] : "?"; }
 
@@ -24,7 +24,8 @@ static double bench__effect_ms(bench_effect e, const tl_frame_stats *st)
                                                      {TL_PASS_FOG, TL_PASS_COUNT, TL_PASS_COUNT},
                                                      {TL_PASS_DOF, TL_PASS_DOF_APPLY, TL_PASS_COUNT},
                                                      {TL_PASS_BLOOM, TL_PASS_COUNT, TL_PASS_COUNT},
-                                                     {TL_PASS_SSR, TL_PASS_SSR_APPLY, TL_PASS_COUNT}};
+                                                     {TL_PASS_SSR, TL_PASS_SSR_APPLY, TL_PASS_COUNT},
+                                                     {TL_PASS_VIGNETTE, TL_PASS_COUNT, TL_PASS_COUNT}};
     double ms = 0.0;
     for (int k = 0; k < 3; k++)
         if (passes[e][k] != TL_PASS_COUNT && st->pass_ms[passes[e][k]] > 0.0) ms += st->pass_ms[passes[e][k]];
@@ -33,29 +34,15 @@ static double bench__effect_ms(bench_effect e, const tl_frame_stats *st)
 
 void bench_effect_enable(const bench_options *opt, bench_effect e, tl_renderer_desc *d)
 {
-    const tl_renderer_desc *t = &opt->effect_desc;
-    switch (e) {
-    case BENCH_EFFECT_SSAO:
-        d->options.ssao = t->options.ssao;
-        if (d->options.ssao.method == TL_SSAO_OFF) d->options.ssao.method = TL_SSAO_DISC;
-        break;
-    case BENCH_EFFECT_FOG:
-        d->options.fog = t->options.fog;
-        if (d->options.fog.mode == TL_FOG_OFF) d->options.fog.mode = TL_FOG_DISTANCE;
-        break;
-    case BENCH_EFFECT_DOF:
-        d->options.dof = t->options.dof;
-        d->options.dof.enabled = 1;
-        break;
-    case BENCH_EFFECT_BLOOM:
-        d->options.bloom = t->options.bloom;
-        d->options.bloom.enabled = 1;
-        break;
-    default:
-        d->options.ssr = t->options.ssr;
-        d->options.ssr.enabled = 1;
-        break;
-    }
+    size_t n = strlen(bench_effect_names[e]);
+    const tl_option_info *f;
+    for (size_t i = 0; (f = tl_option_at(i)) != NULL; i++) /* the fields of its struct, "ssao.*" */
+        if (strncmp(f->name, bench_effect_names[e], n) == 0 && f->name[n] == '.')
+            memcpy((char *)&d->options + f->offset, (const char *)&opt->base + f->offset, f->size);
+    char name[48];
+    snprintf(name, sizeof name, "%s.enabled", bench_effect_names[e]);
+    int on = 1;
+    if ((f = tl_option_find(name)) != NULL) memcpy((char *)&d->options + f->offset, &on, sizeof on);
 }
 
 /* Whether configuration c has effect e at all: forward plans no reflections (no gloss to read). */
@@ -107,11 +94,9 @@ static tl_renderer *bench__effect_renderer(bench_run *run, tl_context *ctx, cons
                                            size_t count, bench_config c, int slot, const bench_effect *list)
 {
     const bench_options *opt = &run->opt;
-    tl_renderer_desc d = {.options.mode = bench_config_mode(c), .options.light_strategy = bench_config_strategy(c),
-                          .options.lighting = opt->lighting, .options.fresnel = bench_config_fresnel(c, opt->fresnel),
-                          .width = opt->sizes[0].width, .height = opt->sizes[0].height, .options.synchronous_stats = 1};
+    tl_renderer_desc d = bench_config_desc(opt, c, opt->sizes[0].width, opt->sizes[0].height);
     if (slot) bench_effect_enable(opt, list[slot - 1], &d);
-    if (d.options.ssao.method != TL_SSAO_OFF) d.options.keep_targets = TL_TARGET_BIT(TL_TARGET_AO);
+    if (d.options.ssao.enabled) d.options.keep_targets |= TL_TARGET_BIT(TL_TARGET_AO);
     tl_renderer *r = bench_renderer(run, ctx, (size_t)slot, d, scene);
     if (r && tl_renderer_set_lights(r, lights, count) != TL_OK) {
         tl_tool_log_error(&run->log, "%s", tl_renderer_last_error(r)); /* once: the logger said it */

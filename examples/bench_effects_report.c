@@ -20,7 +20,7 @@ void bench_effects_print_table(const bench_run *run)
            "same effect)\n",
            e0->width, e0->height, e0->lights, e0->frames,
            run->timers_ok ? "GPU timers of the effect's passes" : "wall clock");
-    printf("%-6s %-20s %10s %10s %10s %7s %6s %12s %12s %9s %9s %10s\n", "effect", "mode", "effect ms", "frame ms",
+    printf("%-8s %-20s %10s %10s %10s %7s %6s %12s %12s %9s %9s %10s\n", "effect", "mode", "effect ms", "frame ms",
            "without", "ratio", "B/px", "PSNR", "without", "AO mean", "AO max", "AO PSNR");
     for (size_t i = 0; i < run->effect_count; i++) {
         const bench_effect_record *e = &run->effects[i];
@@ -33,7 +33,7 @@ void bench_effects_print_table(const bench_run *run)
             snprintf(aomax, sizeof aomax, "%.4f", e->ao.max_abs);
         }
         int ref = bench_config_mode(e->config) == BENCH_REFERENCE;
-        printf("%-6s %-20s %10.2f %10.2f %10.2f %7.3f %6u %12s %12s %9s %9s %10s\n", bench_effect_name(e->effect),
+        printf("%-8s %-20s %10.2f %10.2f %10.2f %7.3f %6u %12s %12s %9s %9s %10s\n", bench_effect_name(e->effect),
                bench_config_name(e->config), e->effect_ms, e->frame_ms, e->base_ms, e->ratio, e->bytes_per_pixel,
                ref ? "(ref)" : psnr, ref ? "(ref)" : base, ref ? "-" : aomean, ref ? "-" : aomax, ref ? "-" : ao);
     }

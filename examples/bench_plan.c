@@ -1,5 +1,5 @@
 /* What the frame planner saves (DESIGN.md section 4): each mode's plan for the scene against the
- * plan the renderer makes with tl_renderer_options.no_planning (every feature planned for, whatever
+ * plan the renderer makes with tl_renderer_options.planning off (every feature planned for, whatever
  * the scene uses). Pure: tl_frame_plan_build needs no GL; bench_sweep adds the frame times. */
 #include <math.h>
 #include <string.h>
@@ -26,10 +26,10 @@ int bench_planning_compare(bench_run *run, bench_scene *scene)
     run->planning_count = 0;
     for (size_t m = 0; m < mode_count; m++) {
         tl_frame_plan plan, full;
-        tl_renderer_desc desc = {.options.mode = modes[m], .width = opt->sizes[0].width, .height = opt->sizes[0].height,
-                                 .options.lighting = opt->lighting, .options.fresnel = opt->fresnel};
+        tl_renderer_desc desc = bench_config_desc(opt, bench_config_make(modes[m], TL_LIGHT_STRATEGY_DEFAULT),
+                                                  opt->sizes[0].width, opt->sizes[0].height);
         tl_result a = tl_frame_plan_build(&desc, &features, &plan);
-        desc.options.no_planning = 1;
+        desc.options.planning = TL_SWITCH_OFF;
         tl_result b = tl_frame_plan_build(&desc, &features, &full);
         if (a != TL_OK || b != TL_OK) {
             tl_tool_fail(BENCH_TOOL, "%s: tl_frame_plan_build: %s", tl_render_mode_name(modes[m]),

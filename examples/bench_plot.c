@@ -209,7 +209,7 @@ static int bench__error_data(FILE *f, const void *ctx)
  * per effect, the configuration's colour, labelled "+effect". */
 static void bench__error_effects(FILE *f, const tl_tool_plot *p, const bench_run *run, const char *column, size_t *block)
 {
-    static const int point_types[BENCH_EFFECTS] = {5, 9, 11, 13, 15};
+    static const int point_types[BENCH_EFFECTS] = {5, 9, 11, 13, 15, 3};
     unsigned titled = 0;
     for (size_t i = 0; i < run->effect_count; i++) {
         const bench_effect_record *e = &run->effects[i];

@@ -206,7 +206,7 @@ static void bench__planning(const bench_run *run, bench__summary *s)
 {
     char line[BENCH__LINE];
     snprintf(line, sizeof line,
-             "what planning saves (the plan against no_planning, %u lights; ms: median frame at %ux%u):",
+             "what planning saves (the plan against planning off, %u lights; ms: median frame at %ux%u):",
              run->opt.lights[run->opt.light_count - 1], run->opt.sizes[0].width, run->opt.sizes[0].height);
     for (size_t i = 0; i < run->planning_count; i++) {
         const bench_planning *p = &run->planning[i];

@@ -35,7 +35,9 @@ static int bench__load_file(const bench_options *opt, bench_scene *s, tl_tool_lo
 {
     char error[512] = "";
     uint32_t largest = opt->lights[opt->light_count - 1];
-    tl_gltf_options o = {.extra_lights = largest, .seed = opt->seed};
+    /* with --shadows on, the shadow rule (docs/gltf.md, "Shadows"); the lights' flags always */
+    tl_gltf_options o = {.extra_lights = largest, .seed = opt->seed,
+                         .shadow_lights = opt->shadows ? TL_SHADOW_DEFAULT_MAX_LIGHTS : 0};
     tl_tool_budget_gltf(&opt->budgets, &o);
     tl_result res = tl_tool_load_gltf(opt->scene, &o, log, &s->scene, error, sizeof error);
     if (res != TL_OK) {
@@ -85,6 +87,7 @@ int bench_scene_open(const bench_options *opt, bench_scene **out, bench_run *run
         snprintf(run->light_definition, sizeof run->light_definition,
                  "lights = local lights per frame (point + spot, 1 in 8 a spot light), plus the crypt's directional "
                  "moonlight");
+        snprintf(run->shadow_casters, sizeof run->shadow_casters, "the moonlight and the braziers");
     } else {
         int rc = bench__load_file(opt, s, &run->log);
         if (rc) {
@@ -97,6 +100,8 @@ int bench_scene_open(const bench_options *opt, bench_scene **out, bench_run *run
         snprintf(run->light_definition, sizeof run->light_definition,
                  "lights = seeded point lights per frame (the file's point and spot lights left out), plus its %zu "
                  "directional light(s)", s->fixed_count);
+        snprintf(run->shadow_casters, sizeof run->shadow_casters,
+                 "those the loader's shadow rule and the file's thinlight_shadow flags make cast: docs/gltf.md");
     }
     run->scene_triangles = s->scene->index_count / 3;
     run->scene_objects = s->scene->object_count;

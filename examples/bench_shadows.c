@@ -1,10 +1,11 @@
 /* The shadows' measurements (--shadows): at the first size and the first light count, every
  * configuration (each strategy's, fat first) is rendered by three renderers taking turns frame by
- * frame (the first to go rotates): the crypt's lights without shadows, with its moonlight and
- * braziers casting (the cache on: nothing moves, so the maps are kept), and casting with every map
- * rendered every frame (no cache). Then each configuration's shadow term of each casting brazier
- * (one at a time), with D24 and with reversed D32F, is compared with the ray-traced truth
- * (bench_shadows_truth.c) and with fat's of the same strategy; the counts add up over the braziers. */
+ * frame (the first to go rotates): the scene's lights without shadows, casting (the crypt's
+ * moonlight and braziers; a glTF file's by the loader's shadow rule and its flags; the cache on:
+ * nothing moves, so the maps are kept), and casting with every map rendered every frame (no
+ * cache). Then each configuration's shadow term of each casting point light (one at a time), with
+ * D24 and with reversed D32F, is compared with the ray-traced truth (bench_shadows_truth.c) and
+ * with fat's of the same strategy; the counts add up over the lights. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -59,6 +60,7 @@ static int bench__shadow_lights_make(bench_scene *scene, uint32_t n, bench__shad
             return 1;
         }
         memcpy(l->list[k], src, l->count[k] * sizeof *src);
+        for (size_t i = 0; i < l->count[k] && !k; i++) l->list[k][i].shadow = 0; /* "off": a file's flags too */
     }
     const float *eye = bench_scene_get(scene)->camera.position;
     for (size_t i = 0; i < l->count[1]; i++) { /* insertion by distance, the nearest kept */
@@ -74,11 +76,8 @@ static int bench__shadow_lights_make(bench_scene *scene, uint32_t n, bench__shad
 
 static tl_renderer_desc bench__shadow_desc(const bench_options *opt, bench_config c, int slot)
 {
-    tl_renderer_desc d = {.options.mode = bench_config_mode(c), .options.light_strategy = bench_config_strategy(c),
-                          .options.lighting = opt->lighting, .options.fresnel = bench_config_fresnel(c, opt->fresnel),
-                          .width = opt->sizes[0].width, .height = opt->sizes[0].height,
-                          .options.synchronous_stats = 1};
-    d.options.shadows.no_cache = slot == BENCH__NOCACHE;
+    tl_renderer_desc d = bench_config_desc(opt, c, opt->sizes[0].width, opt->sizes[0].height);
+    if (slot == BENCH__NOCACHE) d.options.shadows.cache = TL_SWITCH_OFF;
     tl_tool_budget_renderer(&opt->budgets, &d);
     return d;
 }
@@ -258,8 +257,8 @@ static int bench__truth_measure(bench_run *run, tl_context *ctx, const tl_scene 
         snprintf(run->shadow_truth_why, sizeof run->shadow_truth_why, "no casting point light in the frame");
         return 0;
     }
-    snprintf(run->shadow_truth_light, sizeof run->shadow_truth_light, "the %zu casting braziers (one at a time)",
-             l->truth_count);
+    snprintf(run->shadow_truth_light, sizeof run->shadow_truth_light, "the %zu casting %s (one at a time)",
+             l->truth_count, strcmp(run->opt.scene, "default") == 0 ? "braziers" : "point lights");
     bench__shadow_truth_state t = {0};
     int err = 0;
     for (size_t k = 0; !err && k < l->truth_count; k++) {

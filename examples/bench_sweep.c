@@ -3,7 +3,7 @@
  * every mode see the same share of whatever else the machine is doing. Then medians of the GPU
  * timers and the wall clock, the plan's targets, the renderer's fragment and byte counts, and the
  * error of the final and HDR images against fat's images of the same frame. Last, what planning
- * saves in time: each mode planned against tl_renderer_options.no_planning, on the same context. */
+ * saves in time: each mode planned against tl_renderer_options.planning off, on the same context. */
 #define _DEFAULT_SOURCE /* sysconf(_SC_PHYS_PAGES) */
 
 #include <math.h>
@@ -341,7 +341,6 @@ void bench_renderer_desc(bench_run *run, tl_context *ctx, tl_renderer_desc *d)
 tl_renderer *bench_renderer(bench_run *run, tl_context *ctx, size_t slot, tl_renderer_desc d, const tl_scene *scene)
 {
     tl_renderer **r = &run->renderers[slot];
-    d.options.environment = run->opt.env_desc.options.environment; /* --background, --environment-intensity */
     if (!*r) {
         bench_renderer_desc(run, ctx, &d);
         if (tl_renderer_create(&d, r) != TL_OK) return NULL; /* the logger said why */
@@ -368,18 +367,27 @@ void bench_renderers_close(bench_run *run)
     }
 }
 
-/* A configuration's renderer descriptor at one size (without the context). */
+tl_renderer_desc bench_config_desc(const bench_options *o, bench_config c, uint32_t w, uint32_t h)
+{
+    tl_renderer_desc d = {.width = w, .height = h, .options = o->base};
+    const tl_option_info *f;
+    for (size_t i = 0; (f = tl_option_at(i)) != NULL; i++) /* the effects: measured one at a time */
+        if (f->type == TL_OPTION_BOOL && strstr(f->name, ".enabled")) memset((char *)&d.options + f->offset, 0, f->size);
+    d.options.mode = bench_config_mode(c);
+    d.options.light_strategy = bench_config_strategy(c);
+    d.options.light_format = bench_config_light_format(c);
+    d.options.light_scale = bench_config_light_scale(c);
+    d.options.fresnel = bench_config_fresnel(c, o->base.fresnel);
+    d.options.synchronous_stats = 1;
+    return d;
+}
+
+/* A configuration's renderer descriptor at one size, its HDR kept (without the context). */
 static tl_renderer_desc bench__config_desc(const bench_run *run, bench_config c, bench_size size)
 {
-    const bench_options *opt = &run->opt;
-    tl_renderer_desc d = {.options.mode = bench_config_mode(c), .options.light_strategy = bench_config_strategy(c),
-                          .options.light_format = bench_config_light_format(c), .options.lighting = opt->lighting,
-                          .options.fresnel = bench_config_fresnel(c, opt->fresnel),
-                          .options.light_scale = bench_config_light_scale(c), .width = size.width,
-                          .options.tiled_shading = opt->tiled_shading,
-                          .height = size.height, .options.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
-                          .options.synchronous_stats = 1};
-    tl_tool_budget_renderer(&opt->budgets, &d);
+    tl_renderer_desc d = bench_config_desc(&run->opt, c, size.width, size.height);
+    d.options.keep_targets |= TL_TARGET_BIT(TL_TARGET_HDR);
+    tl_tool_budget_renderer(&run->opt.budgets, &d);
     return d;
 }
 
@@ -670,7 +678,7 @@ static int bench__planning_frames(bench_run *run, tl_renderer **r, const char *n
 }
 
 /* What planning saves in time: each mode of run->planning rendered at the first size with the
- * largest light count by a planned renderer and by one with tl_renderer_options.no_planning, the two
+ * largest light count by a planned renderer and by one with tl_renderer_options.planning off, the two
  * taking turns frame by frame when both fit beside each other (bench_renderers_at_once), else one
  * after the other, after the same warm-up; medians of the frame time. */
 static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *scene, tl_tool_progress *progress,
@@ -695,9 +703,9 @@ static int bench__planning_times(bench_run *run, tl_context *ctx, bench_scene *s
         for (size_t first = 0; !err && first < 2; first += together) {
             tl_renderer *r[2] = {NULL, NULL};
             for (size_t k = 0; !err && k < together; k++) {
-                tl_renderer_desc desc = {.options.mode = p->mode, .width = size.width, .height = size.height,
-                                         .options.no_planning = (int)(first + k), .options.lighting = run->opt.lighting,
-                                         .options.fresnel = run->opt.fresnel, .options.synchronous_stats = 1};
+                tl_renderer_desc desc = bench_config_desc(&run->opt, bench_config_make(p->mode, TL_LIGHT_STRATEGY_DEFAULT),
+                                                          size.width, size.height);
+                desc.options.planning = first + k ? TL_SWITCH_OFF : TL_SWITCH_DEFAULT;
                 r[k] = bench_renderer(run, ctx, k, desc, bench_scene_get(scene));
                 if (!r[k]) err = 1;
                 else if (tl_renderer_set_lights(r[k], lights, count) != TL_OK) {

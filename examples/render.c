@@ -119,9 +119,12 @@ static int load_scene(render_args *a, tl_tool_log *log, tl_scene **out)
         return res != TL_OK;
     }
     if (strcmp(a->scene, "default") != 0) {
-        /* a glTF file: its own lights (or the default rig), plus --lights N seeded point lights */
+        /* a glTF file: its own lights (or the default rig), plus --lights N seeded point lights;
+         * with --shadows the loader's rule makes them cast up to the budget (docs/gltf.md) */
         char gerr[1024] = "";
-        tl_gltf_options o = {.extra_lights = a->sd.point_lights, .seed = a->sd.seed};
+        uint32_t budget = a->rd.options.shadows.max_lights ? a->rd.options.shadows.max_lights : TL_SHADOW_DEFAULT_MAX_LIGHTS;
+        tl_gltf_options o = {.extra_lights = a->sd.point_lights, .seed = a->sd.seed,
+                             .shadow_lights = a->sd.shadows ? budget : 0};
         tl_tool_budget_gltf(&a->budgets, &o);
         res = tl_tool_load_gltf(a->scene, &o, log, out, gerr, sizeof gerr);
         if (res != TL_OK) tl_tool_log_error(log, "%s", gerr[0] ? gerr : tl_result_string(res));
@@ -174,8 +177,9 @@ static void print_stats(tl_renderer *r, const tl_frame_stats *st, const tl_scene
         printf("  %llu pixels re-lit at full resolution by the light scale's edge fix-up (%.2f %% of the frame)\n",
                (unsigned long long)st->relit_pixels, 100.0 * st->relit_fraction);
     if (st->shadow_atlas_bytes)
-        printf("  shadows: %u lights with a map (%u fading), %u maps rendered, %u kept, atlas %.1f MiB, "
-               "shadow maps %.2f ms GPU (part of the frame's)\n", st->shadow_lights, st->shadow_lights_fading,
+        printf("  shadows: %u lights with a map (%u fading, %u in view without one: over --shadow-max), %u maps "
+               "rendered, %u kept, atlas %.1f MiB, shadow maps %.2f ms GPU (part of the frame's)\n", st->shadow_lights,
+               st->shadow_lights_fading, st->shadow_lights_unmapped,
                st->shadow_maps_rendered, st->shadow_maps_cached, (double)st->shadow_atlas_bytes / 1048576.0,
                st->shadow_ms);
 }

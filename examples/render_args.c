@@ -4,8 +4,7 @@
 #include <string.h>
 
 #include "render.h"
-#include "tool_effects.h"
-#include "tool_settings.h"
+#include "tool_options.h"
 
 static const char usage_head[] =
     "usage: thinlight-render SCENE.gltf|SCENE.glb|default|showcase -o OUT.png|OUT.exr [options]\n"
@@ -18,14 +17,11 @@ static const char usage_head[] =
     "  --no-directional      leave out the directional light\n"
     "  --seed S              scene seed (default 1)\n"
     "  --glass N             the built-in scene with N alpha-blended glass panes (default 0; 0..8)\n"
-    "  --shadows             the built-in scene's moonlight and braziers cast shadows (docs/shadows.md)\n"
-    "  --shadow-no-cache     render every shadow map every frame (default: unchanged maps are kept)\n"
-    "  --shadow-max N        casting lights given a map per frame (default 8; 1..64)\n"
-    "  --shadow-pcf R        PCF kernel radius in texels (default 1; 0: one bilinear tap; 0..3)\n"
-    "  --shadow-filter F     pcf (default) or pcss: soft shadows whose penumbra widens away from the\n"
-    "                        contact, from tl_light.source_radius (point, spot) and --shadow-sun-angle\n"
-    "  --shadow-sun-angle D  PCSS: directional lights' angular radius in degrees (default 0.266;\n"
-    "                        above 0, up to 11.4)\n"
+    "  --shadows             the built-in scene's moonlight and braziers cast shadows (docs/shadows.md);\n"
+    "                        a glTF file's directional lights and brightest other lights, up to\n"
+    "                        --shadow-max (docs/gltf.md, \"Shadows\"; its lights' thinlight_shadow\n"
+    "                        flags are honoured with or without it); the --shadow-* renderer options\n"
+    "                        below set the atlas up\n"
     "  --shadow-move         every frame after the first, the first casting local light moves 1 cm\n"
     "                        (measures the shadow cache with one light moving)\n"
     "  --shadow-move-object  every frame after the first, the object nearest that light moves 1 cm\n"
@@ -34,6 +30,7 @@ static const char usage_head[] =
     "  --print-plan          print the frame plan: passes, inputs, outputs, targets, programs\n"
     "  --dump-targets DIR    write every target of the plan as EXR into DIR (depth, decoded\n"
     "                        normals and 32-bit targets as 32-bit floats, the others as half)\n";
+static const char usage_options[] = "Renderer options (docs/renderer.md, \"Options at run time\"):\n";
 static const char usage_tail[] =
     "  --list-options        list every option and the values it takes, then exit\n"
     "  --help                this text\n"
@@ -44,11 +41,11 @@ static const char usage_tail[] =
     "Exit status: 0 success, 1 bad input (an unreadable scene, an unwritable output, a frame over\n"
     "the target-memory budget), 2 bad usage (an unknown option, a malformed or out-of-range value).\n";
 
-enum { R_HELP, R_LIST, R_OUT, R_DUMP, R_SIZE, R_LIGHTS, R_SPOTS, R_NO_DIRECTIONAL, R_SEED, R_FRAMES, R_STATS, R_PLAN, R_GLASS, R_SHADOWS, R_SHADOW_NO_CACHE, R_SHADOW_MAX, R_SHADOW_PCF, R_SHADOW_MOVE, R_SHADOW_MOVE_OBJECT,
-       R_SHADOW_FILTER, R_SHADOW_SUN_ANGLE };
+enum { R_HELP, R_LIST, R_OUT, R_DUMP, R_SIZE, R_LIGHTS, R_SPOTS, R_NO_DIRECTIONAL, R_SEED, R_FRAMES, R_STATS, R_PLAN,
+       R_GLASS, R_SHADOWS, R_SHADOW_MOVE, R_SHADOW_MOVE_OBJECT };
 
-static const char *const shadow_filter_names[] = {"pcf", "pcss", NULL};
-static const int shadow_filter_values[] = {TL_SHADOW_FILTER_PCF, TL_SHADOW_FILTER_PCSS};
+/* The renderer options' flags (tool_options.h): every field of the registry. */
+static tl_tool_options render_flags;
 
 static const tl_opt render_opts[] = {
     {"--help", TL_OPT_FLAG, .id = R_HELP},
@@ -66,12 +63,6 @@ static const tl_opt render_opts[] = {
     {"--print-plan", TL_OPT_FLAG, .id = R_PLAN},
     {"--glass", TL_OPT_UINT, .id = R_GLASS, .lo = 0, .hi = 8},
     {"--shadows", TL_OPT_FLAG, .id = R_SHADOWS},
-    {"--shadow-no-cache", TL_OPT_FLAG, .id = R_SHADOW_NO_CACHE},
-    {"--shadow-max", TL_OPT_UINT, .id = R_SHADOW_MAX, .lo = 1, .hi = 64},
-    {"--shadow-pcf", TL_OPT_UINT, .id = R_SHADOW_PCF, .lo = 0, .hi = 3},
-    {"--shadow-filter", TL_OPT_TEXT, .id = R_SHADOW_FILTER, .choices = shadow_filter_names,
-     .values = shadow_filter_values},
-    {"--shadow-sun-angle", TL_OPT_REAL, .id = R_SHADOW_SUN_ANGLE, .min = 0.0, .max = 11.4, .flags = TL_OPT_MIN_OPEN},
     {"--shadow-move", TL_OPT_FLAG, .id = R_SHADOW_MOVE},
     {"--shadow-move-object", TL_OPT_FLAG, .id = R_SHADOW_MOVE_OBJECT},
 };
@@ -82,8 +73,9 @@ static int render_option(render_args *a, const tl_opt_table *tables, size_t ntab
 {
     switch (o->id) {
     case R_HELP:
-        printf("%s%s%s%s%s%s%s", usage_head, tl_tool_settings_help, tl_tool_environment_help, tl_tool_effects_help,
-               TL_TOOL_CONTEXT_HELP, tl_tool_budget_help, usage_tail);
+        printf("%s%s%s", usage_head, tl_tool_environment_help, usage_options);
+        tl_tool_options_help(stdout, &render_flags);
+        printf("%s%s%s", TL_TOOL_CONTEXT_HELP, tl_tool_budget_help, usage_tail);
         return -1;
     case R_LIST: tl_opt_list(stdout, tables, ntables); return -1;
     case R_OUT: a->out = v->text; break;
@@ -98,18 +90,8 @@ static int render_option(render_args *a, const tl_opt_table *tables, size_t ntab
     case R_PLAN: a->plan = 1; break;
     case R_GLASS: a->sd.glass_panes = (uint32_t)v->u[0]; break;
     case R_SHADOWS: a->sd.shadows = 1; break;
-    case R_SHADOW_NO_CACHE: a->rd.options.shadows.no_cache = 1; break;
-    case R_SHADOW_MAX: a->rd.options.shadows.max_lights = (uint32_t)v->u[0]; break;
     case R_SHADOW_MOVE: a->shadow_move = 1; break;
     case R_SHADOW_MOVE_OBJECT: a->shadow_move = 2; break;
-    case R_SHADOW_FILTER: a->rd.options.shadows.filter = (tl_shadow_filter)v->u[0]; break;
-    case R_SHADOW_SUN_ANGLE:
-        a->rd.options.shadows.directional_angle = (float)(v->f[0] * 3.14159265358979323846 / 180.0);
-        break;
-    case R_SHADOW_PCF:
-        a->rd.options.shadows.pcf_radius = (uint32_t)v->u[0];
-        a->rd.options.shadows.no_pcf = v->u[0] == 0;
-        break;
     default: break;
     }
     return 0;
@@ -119,10 +101,9 @@ static int render_option(render_args *a, const tl_opt_table *tables, size_t ntab
 static int render_apply(render_args *a, const tl_opt_table *tables, size_t ntables, const tl_opt *o,
                         const tl_opt_value *v)
 {
-    int rc = tl_tool_settings_apply(RENDER_TOOL, &a->rd, o, v);
+    int rc = tl_tool_options_apply(RENDER_TOOL, &render_flags, &a->rd.options, o, v);
     if (rc) return rc == 1 ? 0 : rc;
-    if (tl_tool_environment_apply(&a->env, &a->rd, o, v)) return 0;
-    if (tl_tool_effect_apply(&a->rd, o, v) || tl_tool_context_option(&a->context_args, o, v) ||
+    if (tl_tool_environment_apply(&a->env, o, v) || tl_tool_context_option(&a->context_args, o, v) ||
         tl_tool_budget_option(&a->budgets, o, v))
         return 0;
     return render_option(a, tables, ntables, o, v);
@@ -132,7 +113,8 @@ int render_parse_args(int argc, char **argv, render_args *a)
 {
     memset(a, 0, sizeof *a);
     a->frames = 1;
-    const tl_opt_table tables[] = {TL_OPT_TABLE(render_opts), tl_tool_settings_option_table, tl_tool_effect_options,
+    tl_tool_options_build(&render_flags, NULL);
+    const tl_opt_table tables[] = {TL_OPT_TABLE(render_opts), tl_tool_options_table(&render_flags),
                                    tl_tool_context_option_table, tl_tool_budget_option_table,
                                    tl_tool_environment_option_table};
     size_t ntables = sizeof tables / sizeof tables[0];

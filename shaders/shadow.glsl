@@ -3,10 +3,12 @@
 // the record names its views in the atlas: one spot map, six cube faces or four cascades. The
 // lookup point is moved off the surface by a bias derived from the texel's world size, the PCF
 // kernel's reach and the two depth formats' quantisation (never a tuned constant):
-//   along n: (r + 1) w sin(theta) + e_gbuffer(z),   along l: e_atlas(w)
+//   along n: (r + 1) w sin(theta) + (R + 1) w e_n + e_gbuffer(z),   along l: e_atlas(w)
 // where w is the texel's world size at the point, r the kernel radius, theta the angle between n
-// and l, e_gbuffer the rebuilt position's error and e_atlas the atlas depth's quantum. With TL_PCSS
-// the view is filtered by shadow_pcss.glsl instead of the fixed PCF kernel.
+// and the map's depth axis (l for cascades; tl_shadow_biased), R the largest kernel radius, e_n the
+// stored normal's angular error, e_gbuffer the rebuilt position's error and e_atlas the atlas
+// depth's quantum. With TL_PCSS the view is filtered by shadow_pcss.glsl instead of the fixed PCF
+// kernel.
 #ifndef TL_SHADOW_GLSL
 #define TL_SHADOW_GLSL
 
@@ -15,7 +17,7 @@
 struct tl_shadow_view {
     mat4 m;      // view space to the view's clip space
     vec4 rect;   // atlas uv offset (xy) and scale (zw) of the view's tile
-    vec4 texel;  // x: texel world size per clip w; y, z, w: atlas depth quantum c0 + c1 w + c2 w^2 (world)
+    vec4 texel;  // x: texel world size per clip w; y, z: atlas depth quantum c0 + c1 w (world); w: e_arith's constant part
     vec4 depth;  // PCSS: stored depth d to light distance z (w = 1: 1/z = x d + y; else z = x d + y), z: light size in texels
 };
 struct tl_shadow_light {
@@ -24,10 +26,11 @@ struct tl_shadow_light {
     vec4 splits; // cascades: the view depth where each ends
 };
 // A uniform block, not a storage buffer: on llvmpipe the lookup's per-lane storage loads were most
-// of the shadows' cost (docs/shadows.md, Cost); 32 + 64 x 48 + 384 x 112 bytes = 45 KiB.
+// of the shadows' cost (docs/shadows.md, Cost); 48 + 64 x 48 + 384 x 112 bytes = 45 KiB.
 layout(std140, binding = TL_UBO_SHADOWS) uniform tl_shadow_block {
     vec4 u_shadow_params;   // 1 / atlas side, PCF radius, G-buffer error: a z + b z^2 (a, b)
-    uvec4 u_shadow_flags;   // x: reversed depth (atlas compare GEQUAL), y: PCSS's largest radius in texels
+    uvec4 u_shadow_flags;   // y: PCSS's largest radius in texels (the atlas: reversed depth, compare GEQUAL)
+    vec4 u_shadow_bias;     // x: the lighting normal's angular error bound, radians (its storage)
     tl_shadow_light tl_shadow_lights[TL_SHADOW_LIGHTS];
     tl_shadow_view tl_shadow_views[TL_SHADOW_VIEWS];
 };
@@ -46,7 +49,7 @@ float tl_shadow_sample(tl_shadow_view sv, vec3 q)
     vec4 c = sv.m * vec4(q, 1.0);
     if (c.w <= 0.0) return 1.0;
     vec3 ndc = c.xyz / c.w;
-    float ref = u_shadow_flags.x != 0u ? ndc.z : ndc.z * 0.5 + 0.5;
+    float ref = ndc.z;
     vec2 uv = sv.rect.xy + (ndc.xy * 0.5 + 0.5) * sv.rect.zw;
     float t = u_shadow_params.x;
     vec2 lo = sv.rect.xy + vec2(0.5 * t), hi = sv.rect.xy + sv.rect.zw - vec2(0.5 * t);
@@ -60,16 +63,31 @@ float tl_shadow_sample(tl_shadow_view sv, vec3 q)
 #endif
 
 // p biased for view sv whose clip w at p is w for a kernel of radius r texels: n and l unit, view
-// space (l towards the light).
+// space (l towards the light). theta is the angle between n and the map's depth axis: the light
+// direction for cascades, the view's axis (clip w's gradient, a unit vector) for spot maps and cube
+// faces, whose stored depth is measured along that axis and not along the ray to the light: there a
+// texel x across the map meets the receiver's plane x sin(theta) nearer in that depth however steep
+// the ray (a spot tilted over a floor: the ray near the vertical, the axis far from it).
 vec3 tl_shadow_biased(tl_shadow_view sv, float w, vec3 p, vec3 n, vec3 l, float r)
 {
     w = max(w, 0.0);
     float texel = sv.texel.x * w;
-    float cos_t = clamp(dot(n, l), 0.0, 1.0), sin_t = sqrt(1.0 - cos_t * cos_t);
+    vec3 axis = vec3(sv.m[0].w, sv.m[1].w, sv.m[2].w); // 0 for an orthographic view
+    float cos_t = dot(axis, axis) > 0.0 ? min(abs(dot(n, axis)), 1.0) : clamp(dot(n, l), 0.0, 1.0);
+    float sin_t = sqrt(1.0 - cos_t * cos_t);
+    // the rebuilt position errs along the camera ray, by e_z (p / z): along n that is e_z |p.n| / z
     float z = -p.z;
-    float e_gbuffer = u_shadow_params.z * z + u_shadow_params.w * z * z;
-    float e_atlas = sv.texel.y + sv.texel.z * w + sv.texel.w * w * w;
-    return p + n * ((r + 1.0) * texel * sin_t + e_gbuffer) + l * e_atlas;
+    float e_gbuffer = (u_shadow_params.z + u_shadow_params.w * z) * abs(dot(p, n));
+    // the light distance's float arithmetic, 2^-24 times 4 (a matrix row's terms) times the size of
+    // the coordinates it comes from: the lookup's camera space (|p| + |eye - camera|), the shadow
+    // pass's model matrix (|p_world|) and projection (|p_world| + |eye|), |p_world| <= |p| + |camera|:
+    // 2^-22 (3 |p| + 2 |eye| + 3 |camera|)
+    float e_arith = exp2(-22.0) * (3.0 * length(p) + sv.texel.w);
+    float e_atlas = sv.texel.y + sv.texel.z * w + e_arith;
+    // the stored normal may be off the surface's by u_shadow_bias.x radians: the plane within the
+    // largest kernel's reach (PCSS extends it beyond r) may lie that much steeper
+    float reach = (max(r, float(u_shadow_flags.y)) + 1.0) * texel;
+    return p + n * ((r + 1.0) * texel * sin_t + reach * u_shadow_bias.x + e_gbuffer) + l * e_atlas;
 }
 #ifdef TL_PCSS
 #include "shadow_pcss.glsl"

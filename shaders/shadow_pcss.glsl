@@ -32,7 +32,7 @@ vec4 tl_shadow_project(tl_shadow_view sv, vec3 q)
     vec4 c = sv.m * vec4(q, 1.0);
     if (c.w <= 0.0) return vec4(0.0, 0.0, 0.0, -1.0);
     vec3 ndc = c.xyz / c.w;
-    float ref = u_shadow_flags.x != 0u ? ndc.z : ndc.z * 0.5 + 0.5;
+    float ref = ndc.z;
     return vec4(sv.rect.xy + (ndc.xy * 0.5 + 0.5) * sv.rect.zw, ref, 1.0);
 }
 
@@ -40,7 +40,7 @@ vec4 tl_shadow_project(tl_shadow_view sv, vec3 q)
 float tl_shadow_tap(vec2 uv, float ref)
 {
     vec4 d = textureGather(u_shadow_depth, uv);
-    vec4 lit = u_shadow_flags.x != 0u ? vec4(greaterThanEqual(vec4(ref), d)) : vec4(lessThanEqual(vec4(ref), d));
+    vec4 lit = vec4(greaterThanEqual(vec4(ref), d)); // reversed depth: nearer is greater
     vec2 f = fract(uv / u_shadow_params.x - 0.5);
     return mix(mix(lit.w, lit.z, f.x), mix(lit.x, lit.y, f.x), f.y);
 }
@@ -78,7 +78,7 @@ float tl_shadow_blockers(tl_shadow_view sv, vec4 a, vec2 slope, float radius, ve
             vec2 uv = clamp(a.xy + (vec2(x, y) - 1.5) * step, lo, hi);
             float ref = tl_shadow_plane(a, slope, uv);
             vec4 d = textureGather(u_shadow_depth, uv);
-            vec4 b = u_shadow_flags.x != 0u ? vec4(greaterThan(d, vec4(ref))) : vec4(lessThan(d, vec4(ref)));
+            vec4 b = vec4(greaterThan(d, vec4(ref)));
             for (int k = 0; k < 4; k++) sum += b[k] * tl_shadow_distance(sv, d[k]);
             count += dot(b, vec4(1.0));
         }
@@ -114,7 +114,7 @@ float tl_shadow_pcss(tl_shadow_view sv, float w, vec3 p, vec3 n, vec3 l)
     vec4 a = tl_shadow_project(sv, q);
     if (a.w < 0.0) return 1.0;
     vec2 slope = tl_shadow_slope(sv, q, n, a, rmax * sv.texel.x * max(w, 0.0));
-    float zr = tl_shadow_distance(sv, a.z), near = tl_shadow_distance(sv, u_shadow_flags.x != 0u ? 1.0 : 0.0);
+    float zr = tl_shadow_distance(sv, a.z), near = tl_shadow_distance(sv, 1.0);
     float search = clamp(tl_shadow_penumbra(sv, near, zr), rmin, rmax);
     float zb = tl_shadow_blockers(sv, a, slope, search, lo, hi);
     float r = zb < 0.0 ? rmin : clamp(tl_shadow_penumbra(sv, zb, zr), rmin, rmax);

@@ -1,7 +1,6 @@
-/* The background and environment options of the renderer tools (tool_environment.h). */
+/* The environment file of the renderer tools (tool_environment.h). */
 #include "tool_environment.h"
 
-#include <float.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -17,33 +16,20 @@ static void tl__env_image_free(tl_float_image *img)
 #endif
 
 const char tl_tool_environment_help[] =
-    "  --background R,G,B    linear background radiance where nothing is drawn (default 0,0,0: black)\n"
     "  --environment FILE    equirectangular HDR image (.hdr, .exr; twice as wide as high) drawn as the sky\n"
     "                        and lighting every material (diffuse from SH, specular split sum); or a cube:\n"
-    "                        its six faces in a row, +X -X +Y -Y +Z -Z (six times as wide as high)\n"
-    "  --environment-intensity K  scales the environment (default 1)\n";
-
-enum { E_BACKGROUND = 1, E_FILE, E_INTENSITY };
+    "                        its six faces in a row, +X -X +Y -Y +Z -Z (six times as wide as high)\n";
 
 static const tl_opt env_opts[] = {
-    {"--background", TL_OPT_REALS, .id = E_BACKGROUND, .min = 0.0, .max = 65504.0, .items = 3},
-    {"--environment", TL_OPT_TEXT, .id = E_FILE},
-    {"--environment-intensity", TL_OPT_REAL, .id = E_INTENSITY, .min = 0.0, .max = 65504.0, .flags = TL_OPT_MIN_OPEN},
+    {"--environment", TL_OPT_TEXT, .id = 0},
 };
 
 const tl_opt_table tl_tool_environment_option_table = TL_OPT_TABLE(env_opts);
 
-int tl_tool_environment_apply(tl_tool_environment *e, tl_renderer_desc *d, const tl_opt *o, const tl_opt_value *v)
+int tl_tool_environment_apply(tl_tool_environment *e, const tl_opt *o, const tl_opt_value *v)
 {
     if (!tl_opt_in(o, tl_tool_environment_option_table)) return 0;
-    switch (o->id) {
-    case E_BACKGROUND:
-        for (int k = 0; k < 3; k++) d->options.environment.background[k] = (float)v->f[k];
-        break;
-    case E_FILE: e->path = v->text; break;
-    case E_INTENSITY: d->options.environment.intensity = (float)v->f[0]; break;
-    default: break;
-    }
+    e->path = v->text;
     return 1;
 }
 

@@ -1,7 +1,7 @@
-/* The background and environment options of the renderer tools (--background R,G,B,
- * --environment FILE.hdr|.exr, --environment-intensity K): parsed into a tl_renderer_desc and a
- * path, the file read before any context is made (a missing or corrupt file, or one of the wrong
- * shape, is one line and exit 1), and set on the renderer. Not part of the library. */
+/* The environment file of the renderer tools (--environment FILE.hdr|.exr; --background and
+ * --environment-intensity are renderer options, tool_options.h): its path, the file read before any
+ * context is made (a missing or corrupt file, or one of the wrong shape, is one line and exit 1),
+ * and set on the renderer. Not part of the library. */
 #ifndef TL_TOOL_ENVIRONMENT_H
 #define TL_TOOL_ENVIRONMENT_H
 
@@ -17,8 +17,8 @@ typedef struct tl_tool_environment {
 extern const char tl_tool_environment_help[];
 extern const tl_opt_table tl_tool_environment_option_table;
 
-/* A parsed option: 1 when it is one of the table's (applied to d or e), 0 when it is not. */
-int tl_tool_environment_apply(tl_tool_environment *e, tl_renderer_desc *d, const tl_opt *o, const tl_opt_value *v);
+/* A parsed option: 1 when it is --environment (its path kept in e), 0 when it is not. */
+int tl_tool_environment_apply(tl_tool_environment *e, const tl_opt *o, const tl_opt_value *v);
 /* Reads e->path (nothing without one): 0, or 1 after one line naming the file and the problem. */
 int tl_tool_environment_read(const char *tool, tl_tool_environment *e);
 /* Sets the read environment on r (nothing without one): 0, or 1 after one line. */

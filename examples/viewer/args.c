@@ -4,8 +4,7 @@
 #include <string.h>
 
 #include "args.h"
-#include "tool_effects.h"
-#include "tool_settings.h"
+#include "tool_options.h"
 
 #define VW_TOOL "thinlight-viewer"
 
@@ -19,7 +18,9 @@ static const char vw_usage[] =
     "                        ao-raw, ao (with --ssao), dof-coc (with --dof), ssr (with --ssr),\n"
     "                        bloom (with --bloom), msaa-edges, material-model, shadow-atlas,\n"
     "                        shadow-cascades, shadow-only (with casting lights: --shadows)\n"
-    "  --shadows             the crypt's moonlight and braziers cast shadows (docs/shadows.md)\n"
+    "  --shadows             the crypt's moonlight and braziers cast shadows (docs/shadows.md); a glTF\n"
+    "                        file's directional lights and brightest other lights, up to 8 (docs/gltf.md,\n"
+    "                        \"Shadows\"; its lights' thinlight_shadow flags are honoured without it too)\n"
     "  --grid                every view as thumbnails\n"
     "  --split MODE          left half in --mode, right half in MODE\n"
     "  --animate             move the lights\n"
@@ -38,10 +39,9 @@ static const char vw_usage[] =
     "                        for tests; with --frames)\n"
     "  --print-frames        print one line per frame: its light scale, camera motion and GPU time\n"
     "  --list-options        list every option and the values it takes, then exit\n"
-    "  --help                this text\n"
-    "The renderer's settings:\n";
-static const char vw_usage_effects[] =
-    "Screen-space effects (as thinlight-render; the panel's Effects section changes them live):\n";
+    "  --help                this text\n";
+static const char vw_usage_options[] =
+    "Renderer options (as thinlight-render; the panel changes them live):\n";
 static const char vw_usage_budgets[] =
     "Memory budgets (as thinlight-render):\n";
 static const char vw_usage_tail[] =
@@ -74,13 +74,16 @@ static const char vw_keys[] =
     "  P or F12              screenshot (viewer-N.png in the current directory)\n"
     "  Escape                quit\n";
 
+/* The renderer options' flags (tool_options.h): every field of the registry. */
+static tl_tool_options vw_flags;
+
 void vw_print_usage(FILE *f)
 {
+    tl_tool_options_build(&vw_flags, NULL);
     fputs(vw_usage, f);
-    fputs(tl_tool_settings_help, f);
     fputs(tl_tool_environment_help, f);
-    fputs(vw_usage_effects, f);
-    fputs(tl_tool_effects_help, f);
+    fputs(vw_usage_options, f);
+    tl_tool_options_help(f, &vw_flags);
     fputs(vw_usage_budgets, f);
     fputs(tl_tool_budget_help, f);
     fputs(vw_usage_tail, f);
@@ -154,10 +157,9 @@ static int vw_option(vw_args *a, const tl_opt_table *tables, size_t ntables, con
 /* Any option of the tables; -1 to go on, else the exit status. */
 static int vw_apply(vw_args *a, const tl_opt_table *tables, size_t ntables, const tl_opt *o, const tl_opt_value *v)
 {
-    int rc = tl_tool_settings_apply(VW_TOOL, &a->desc, o, v);
+    int rc = tl_tool_options_apply(VW_TOOL, &vw_flags, &a->desc.options, o, v);
     if (rc) return rc == 1 ? -1 : rc;
-    if (tl_tool_environment_apply(&a->env, &a->desc, o, v)) return -1;
-    if (tl_tool_effect_apply(&a->desc, o, v) || tl_tool_budget_option(&a->budgets, o, v)) return -1;
+    if (tl_tool_environment_apply(&a->env, o, v) || tl_tool_budget_option(&a->budgets, o, v)) return -1;
     return vw_option(a, tables, ntables, o, v);
 }
 
@@ -166,8 +168,9 @@ int vw_parse_args(int argc, char **argv, vw_args *a)
     memset(a, 0, sizeof *a);
     a->width = 1280;
     a->height = 720;
-    const tl_opt_table tables[] = {TL_OPT_TABLE(vw_opts), tl_tool_settings_option_table, tl_tool_effect_options,
-                                   tl_tool_budget_option_table, tl_tool_environment_option_table};
+    tl_tool_options_build(&vw_flags, NULL);
+    const tl_opt_table tables[] = {TL_OPT_TABLE(vw_opts), tl_tool_options_table(&vw_flags), tl_tool_budget_option_table,
+                                   tl_tool_environment_option_table};
     size_t ntables = sizeof tables / sizeof tables[0];
     tl_opt_parser p;
     tl_opt_begin(&p, VW_TOOL, argc, argv, tables, ntables);

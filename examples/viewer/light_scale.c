@@ -18,6 +18,15 @@
 #define VW_STILL_SECONDS 0.25
 #define VW_STILL_FRAMES 3u
 
+/* The light scales the renderer takes (its row of the option registry: powers of two) and the
+ * divisor of the smallest (4: 1/4). */
+static const tl_option_info *vw_scales(void) { return tl_option_find("light_scale"); }
+static uint32_t vw_lowest_divisor(void)
+{
+    const tl_option_info *f = vw_scales();
+    return f && f->min > 0.0 ? (uint32_t)(1.0 / f->min + 0.5) : 1u;
+}
+
 float vw_light_scale_used(const vw_app *app)
 {
     float chosen = app->desc.options.light_scale > 0.0f ? app->desc.options.light_scale : 1.0f;
@@ -40,8 +49,9 @@ int vw_light_scale_step(vw_app *app, const tl_camera *cam, float dt)
     if (moved) {
         d->still_s = 0.0;
         d->still_frames = 0;
-        if (!d->divisor) d->divisor = over ? 4u : 2u;
-        else if (d->divisor == 2u && over && app->last_gpu_scale <= 0.5f) d->divisor = 4u;
+        uint32_t lowest = vw_lowest_divisor();
+        if (!d->divisor) d->divisor = over ? lowest : 2u;
+        else if (d->divisor == 2u && over && app->last_gpu_scale <= 0.5f) d->divisor = lowest;
     } else if (d->divisor) {
         d->still_s += dt;
         d->still_frames++;
@@ -52,13 +62,19 @@ int vw_light_scale_step(vw_app *app, const tl_camera *cam, float dt)
 
 const char *vw_light_scale_name(float scale)
 {
-    return scale <= 0.25f ? "1/4" : scale <= 0.5f ? "1/2" : "1";
+    static const char *const names[] = {"1", "1/2", "1/4", "1/8", "1/16"};
+    unsigned k = 0;
+    while (k + 1 < sizeof names / sizeof names[0] && scale <= 0.75f / (float)(1u << k)) k++;
+    return names[k];
 }
 
+/* The next scale down, from the smallest back to the largest (R: 1, 1/2, 1/4). */
 void vw_light_scale_cycle(vw_app *app)
 {
+    const tl_option_info *f = vw_scales();
     float s = app->desc.options.light_scale > 0.0f ? app->desc.options.light_scale : 1.0f;
-    app->desc.options.light_scale = s <= 0.25f ? 1.0f : s <= 0.5f ? 0.25f : 0.5f;
+    float next = s * 0.5f;
+    app->desc.options.light_scale = f && next < (float)f->min ? (float)f->max : next;
     app->rebuild = 1;
 }
 

@@ -44,7 +44,8 @@ int vw_load_scene(vw_app *app)
     if (app->scene_path && strcmp(app->scene_path, "showcase") == 0) { /* the material models' spheres */
         res = tl_scene_create_showcase(&(tl_showcase_scene_desc){.point_lights = app->crypt.point_lights}, &s);
     } else if (app->scene_path) {
-        tl_gltf_options o = {.logger = vw_logger(app), .extra_lights = app->gltf_extra_lights};
+        tl_gltf_options o = {.logger = vw_logger(app), .extra_lights = app->gltf_extra_lights,
+                             .shadow_lights = app->crypt.shadows ? TL_SHADOW_DEFAULT_MAX_LIGHTS : 0};
         tl_tool_budget_gltf(&app->budgets, &o);
         res = tl_scene_load_gltf(app->scene_path, &o, &s);
     } else {

@@ -101,15 +101,14 @@ static long vw_atlas_view(const tl_shadow_view_info *v, size_t n, uint32_t x, ui
 
 /* A texel's grey: t = (z - near) / (far - near) along its view's axis, 1 - 0.85 t (white nearest);
  * dark blue where nothing was drawn (the far value). docs/viewer.md has the formula. */
-void vw_atlas_texel(const tl_shadow_view_info *v, float d, int reversed, uint8_t *px)
+void vw_atlas_texel(const tl_shadow_view_info *v, float d, uint8_t *px)
 {
     float n = v->near_z, f = v->far_z, z;
-    if (d == (reversed ? 0.0f : 1.0f)) {
+    if (d == 0.0f) { /* reversed depth (tl_renderer_read_shadow_atlas): the far value */
         vw_px(px, 0.0f, 0.0f, 0.3f);
         return;
     }
-    if (v->perspective) z = reversed ? n * f / (n + d * (f - n)) : n * f / (f - d * (f - n));
-    else z = reversed ? f - d * (f - n) : n + d * (f - n);
+    z = v->perspective ? n * f / (n + d * (f - n)) : f - d * (f - n);
     float t = (z - n) / (f - n);
     vw_px(px, 1.0f - 0.85f * t, 1.0f - 0.85f * t, 1.0f - 0.85f * t);
 }
@@ -122,7 +121,6 @@ static void vw_atlas_draw(vw_app *app, const float *atlas, uint32_t side, const 
     static const float edge[4][3] = {{1, 1, 1}, {0, 1, 1}, {1, 0, 1}, {1, 1, 0}}; /* by tl_light_type */
     /* at the right (the legend is at the bottom left) */
     uint32_t s = app->width < app->height ? app->width : app->height, x0 = app->width - s, y0 = (app->height - s) / 2;
-    int reversed = app->desc.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
     for (uint32_t y = 0; y < app->height; y++)
         for (uint32_t x = 0; x < app->width; x++) {
             uint8_t *px = out + 4 * ((size_t)y * app->width + x);
@@ -138,7 +136,7 @@ static void vw_atlas_draw(vw_app *app, const float *atlas, uint32_t side, const 
                 const float *c = edge[w->type < 4 ? w->type : 0];
                 vw_px(px, c[0], c[1], c[2]);
             } else {
-                vw_atlas_texel(w, atlas[(size_t)ty * side + tx], reversed, px);
+                vw_atlas_texel(w, atlas[(size_t)ty * side + tx], px);
             }
         }
 }

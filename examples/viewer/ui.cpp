@@ -1,7 +1,10 @@
 // The viewer's panel: Dear ImGui (Debian's libimgui-dev) with its GLFW and OpenGL 3 back ends.
-// Edits vw_app's settings (a change sets app->rebuild, or goes through vw_update_view) and shows
+// Edits vw_app's settings (every renderer option, made from the option registry; a change sets
+// app->rebuild, or goes through vw_update_view) and shows
 // the smoothed per-pass times, the bytes per pixel and the frame plan. The view image is drawn
 // behind the panel with the background draw list.
+#include <float.h>
+#include <math.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -14,7 +17,6 @@
 #include "viewer.h"
 extern "C" {
 #include "session.h"
-#include "tool_effects.h"
 }
 
 static bool vw_ui_started;
@@ -60,24 +62,11 @@ template <typename E> static bool vw_combo(const char *label, E *value, const ch
     return changed;
 }
 
-// The light scale (thin-lpp): the one chosen, the dynamic switch and the scale in use now.
+// The light scale's dynamic switch (the scale itself is an option below) and the scale in use now.
 static bool vw_ui_light_scale(vw_app *app)
 {
-    static const char *scales[] = {"1", "1/2", "1/4"};
-    static const float values[] = {1.0f, 0.5f, 0.25f};
-    float *s = &app->desc.options.light_scale;
-    int k = *s <= 0.25f ? 2 : *s <= 0.5f ? 1 : 0;
-    bool c = false;
-    if (ImGui::BeginCombo("light scale", scales[k])) {
-        for (int i = 0; i < 3; i++)
-            if (ImGui::Selectable(scales[i], i == k) && i != k) {
-                *s = values[i];
-                c = true;
-            }
-        ImGui::EndCombo();
-    }
-    bool dyn = app->dyn.on != 0;
-    if (ImGui::Checkbox("dynamic: lower while the camera moves", &dyn)) {
+    bool dyn = app->dyn.on != 0, c = false;
+    if (ImGui::Checkbox("dynamic light scale: lower while the camera moves", &dyn)) {
         vw_light_scale_toggle_dynamic(app);
         c = true;
     }
@@ -87,7 +76,7 @@ static bool vw_ui_light_scale(vw_app *app)
     return c;
 }
 
-// Antialiasing: none, FXAA or MSAA n (aa.c), and what the plan made of it.
+// Antialiasing as one choice (key M): none, FXAA or MSAA n (aa.c), and what the plan made of it.
 static bool vw_ui_aa(vw_app *app)
 {
     vw_aa a = vw_aa_of(&app->desc.options);
@@ -104,27 +93,199 @@ static bool vw_ui_aa(vw_app *app)
     return c;
 }
 
+// ---- the renderer options, from the option registry (thinlight/options.h) -----------------------
+// Every field of tl_renderer_options gets a widget made from its row: a checkbox (on/off), a combo
+// (an enum, a switch, a power of two, the kept targets), a slider over its range or a drag for an
+// unbounded one, a colour for a colour. A zero field shows its default until edited. An effect's
+// fields show under its `enabled` while it is on; turning it off keeps them for when it comes back.
+
+// Writes `text` into the field through the registry (its range checked); true when it changed.
+static bool vw_ui_set(vw_app *app, const tl_option_info *f, const char *text)
+{
+    tl_renderer_options o = app->desc.options;
+    char why[256] = "";
+    tl_logger log = {[](void *user, tl_log_level, const char *m) { snprintf(static_cast<char *>(user), 256, "%s", m); },
+                     why};
+    if (tl_option_parse(f, text, &o, &log) != TL_OK) {
+        snprintf(app->status, sizeof app->status, "%s", why);
+        return false;
+    }
+    bool changed = memcmp(&o, &app->desc.options, sizeof o) != 0;
+    app->desc.options = o;
+    return changed;
+}
+
+static double vw_ui_get(const vw_app *app, const tl_option_info *f, size_t k = 0)
+{
+    const char *at = reinterpret_cast<const char *>(&app->desc.options) + f->offset;
+    if (f->type == TL_OPTION_FLOAT || f->type == TL_OPTION_FLOAT3) {
+        float v;
+        memcpy(&v, at + k * sizeof v, sizeof v);
+        return v;
+    }
+    uint32_t u;
+    memcpy(&u, at, sizeof u);
+    return f->type == TL_OPTION_UINT || f->type == TL_OPTION_TARGETS ? u : static_cast<double>(static_cast<int32_t>(u));
+}
+
+// The label: the field's name below its struct ("refine" under ssr).
+static const char *vw_ui_label(const tl_option_info *f)
+{
+    const char *dot = strrchr(f->name, '.');
+    return dot ? dot + 1 : f->name;
+}
+
+// A choice among names: an enum's or a switch's values, or a power of two's.
+static bool vw_ui_combo(vw_app *app, const tl_option_info *f)
+{
+    char now[64];
+    tl_option_format(f, &app->desc.options, now, sizeof now);
+    if (f->flags & TL_OPTION_POW2 && vw_ui_get(app, f) == 0.0) snprintf(now, sizeof now, "%g", f->zero);
+    bool c = false;
+    if (!ImGui::BeginCombo(vw_ui_label(f), now)) return false;
+    if (f->flags & TL_OPTION_POW2) {
+        for (double v = f->min; v <= f->max; v *= 2.0) {
+            char t[32];
+            snprintf(t, sizeof t, "%g", v);
+            if (ImGui::Selectable(t, strcmp(t, now) == 0)) c |= vw_ui_set(app, f, t);
+        }
+    } else {
+        for (uint32_t v = 1; v <= f->count; v++) { // DEFAULT last, where its name is its own ("auto")
+            const char *name = f->value_name(v % f->count);
+            bool alias = false;
+            for (uint32_t w = 1; v == f->count && w < f->count; w++) alias |= strcmp(name, f->value_name(w)) == 0;
+            if (!alias && ImGui::Selectable(name, strcmp(name, now) == 0)) c |= vw_ui_set(app, f, name);
+        }
+    }
+    ImGui::EndCombo();
+    return c;
+}
+
+// The kept targets: a checkbox per target.
+static bool vw_ui_targets(vw_app *app, const tl_option_info *f)
+{
+    char now[512];
+    tl_option_format(f, &app->desc.options, now, sizeof now);
+    bool c = false;
+    if (!ImGui::BeginCombo(vw_ui_label(f), now)) return false;
+    uint32_t bits = static_cast<uint32_t>(vw_ui_get(app, f));
+    for (uint32_t t = 0; t < f->count && t < 32u; t++) {
+        bool on = (bits >> t) & 1u;
+        if (ImGui::Checkbox(f->value_name(t), &on)) { /* every value is in range: no check to make */
+            bits = on ? bits | (1u << t) : bits & ~(1u << t);
+            memcpy(reinterpret_cast<char *>(&app->desc.options) + f->offset, &bits, sizeof bits);
+            c = true;
+        }
+    }
+    ImGui::EndCombo();
+    return c;
+}
+
+// A number: a slider over a bounded range, a drag over an unbounded one; zero shown as the default.
+static bool vw_ui_number(vw_app *app, const tl_option_info *f)
+{
+    double raw = vw_ui_get(app, f);
+    bool neg_zero = (f->flags & TL_OPTION_NEGATIVE_ZERO) != 0, bounded = f->min > -FLT_MAX && f->max < FLT_MAX;
+    float lo = f->min > -FLT_MAX ? static_cast<float>(f->min) : -1e6f, hi = bounded ? static_cast<float>(f->max) : 1e6f;
+    float v = static_cast<float>(raw == 0.0 ? (f->zero_text ? 0.0 : f->zero) : raw < 0.0 && neg_zero ? 0.0 : raw);
+    const char *fmt = raw == 0.0 && f->zero_text ? "default" : f->type == TL_OPTION_UINT ? "%.0f" : "%.3f";
+    if (f->type == TL_OPTION_UINT) {
+        int n = static_cast<int>(v);
+        if (ImGui::SliderInt(vw_ui_label(f), &n, static_cast<int>(lo), static_cast<int>(hi))) v = static_cast<float>(n);
+    } else if (bounded) {
+        ImGui::SliderFloat(vw_ui_label(f), &v, lo, hi, fmt);
+    } else {
+        float speed = static_cast<float>(fmax(fabs(f->zero), 0.1) * 0.01);
+        ImGui::DragFloat(vw_ui_label(f), &v, speed, lo, hi, fmt);
+    }
+    if (!ImGui::IsItemDeactivatedAfterEdit() && !(f->type == TL_OPTION_UINT && ImGui::IsItemEdited())) return false;
+    char text[48];
+    snprintf(text, sizeof text, "%.9g", v == 0.0f && neg_zero ? -1.0 : static_cast<double>(v));
+    return vw_ui_set(app, f, text);
+}
+
+static bool vw_ui_colour(vw_app *app, const tl_option_info *f)
+{
+    float rgb[3];
+    for (size_t k = 0; k < 3; k++) rgb[k] = static_cast<float>(fmax(vw_ui_get(app, f, k), 0.0));
+    ImGui::ColorEdit3(vw_ui_label(f), rgb, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR);
+    if (!ImGui::IsItemDeactivatedAfterEdit()) return false;
+    char text[96];
+    snprintf(text, sizeof text, "%.9g,%.9g,%.9g", rgb[0], rgb[1], rgb[2]);
+    return vw_ui_set(app, f, text);
+}
+
+// One field's widget; true when an edit is finished (the renderer is then made again).
+static bool vw_ui_option(vw_app *app, const tl_option_info *f)
+{
+    ImGui::PushID(f->name);
+    bool c = false;
+    if (f->type == TL_OPTION_BOOL) {
+        bool on = vw_ui_get(app, f) != 0.0;
+        const char *label = strstr(f->name, ".enabled") ? f->name : vw_ui_label(f);
+        if (ImGui::Checkbox(label, &on)) c = vw_ui_set(app, f, on ? "1" : "0");
+    } else if (f->type == TL_OPTION_ENUM || f->type == TL_OPTION_SWITCH || (f->flags & TL_OPTION_POW2)) {
+        c = vw_ui_combo(app, f);
+    } else if (f->type == TL_OPTION_TARGETS) {
+        c = vw_ui_targets(app, f);
+    } else if (f->type == TL_OPTION_FLOAT3) {
+        c = vw_ui_colour(app, f);
+    } else {
+        c = vw_ui_number(app, f);
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s (options.%s)", f->help, f->name);
+    ImGui::PopID();
+    return c;
+}
+
+// The struct a field belongs to ("ssr" of "ssr.refine"; "" for the frame's own), and whether it is
+// an effect's (has an `enabled` switching it on) and on.
+static void vw_ui_group(const tl_option_info *f, char *group, size_t size)
+{
+    const char *dot = strchr(f->name, '.');
+    snprintf(group, size, "%.*s", dot ? static_cast<int>(dot - f->name) : 0, f->name);
+}
+
+static int vw_ui_effect_state(const vw_app *app, const char *group)
+{
+    char name[80];
+    snprintf(name, sizeof name, "%s.enabled", group);
+    const tl_option_info *e = group[0] ? tl_option_find(name) : nullptr;
+    if (!e || e->type != TL_OPTION_BOOL) return -1; // not an effect
+    return vw_ui_get(app, e) != 0.0;
+}
+
+// The fields of one kind: the frame's own (effects 0, groups 0), the effects' (effects 1) or the
+// other structs' (groups 1: shadows, environment), in the registry's order.
+static bool vw_ui_options(vw_app *app, int effects, int groups)
+{
+    bool c = false;
+    char last[64] = "";
+    for (size_t i = 0; i < tl_option_count(); i++) {
+        const tl_option_info *f = tl_option_at(i);
+        char group[64];
+        vw_ui_group(f, group, sizeof group);
+        int effect = vw_ui_effect_state(app, group);
+        if ((effect >= 0) != (effects != 0) || (!effects && (group[0] != 0) != (groups != 0))) continue;
+        if (effect == 0 && !strstr(f->name, ".enabled")) continue; // an effect that is off: its switch only
+        if (!effect && group[0] && strcmp(group, last) != 0) {
+            ImGui::Separator();
+            ImGui::TextDisabled("%s", group);
+        }
+        snprintf(last, sizeof last, "%s", group);
+        bool below = effect == 1 && !strstr(f->name, ".enabled");
+        if (below) ImGui::Indent();
+        c |= vw_ui_option(app, f);
+        if (below) ImGui::Unindent();
+    }
+    return c;
+}
+
 static void vw_ui_settings(vw_app *app)
 {
-    static const char *modes[] = {"thin-lpp", "thin-deferred", "fat", "forward"};
-    static const char *strategies[] = {"auto", "volumes", "tiled"};
-    static const char *depths[] = {"d24", "d32f", "d32f-reversed"};
-    static const char *rt0s[] = {"rgba8 (oct 2x12 + gloss 8)", "rgb10a2 (oct 2x10 + gloss 10)"};
-    static const char *buffers[] = {"exact (diffuse + specular)", "compact (one RGBA16F)"};
-    static const char *fxaas[] = {"off", "12", "29", "39"};
-    tl_renderer_desc *d = &app->desc;
-    bool c = vw_combo("mode", &d->options.mode, modes, TL_MODE_THIN_LPP, 4);
-    c |= vw_combo("light strategy", &d->options.light_strategy, strategies, TL_LIGHT_STRATEGY_DEFAULT, 3);
-    ImGui::TextDisabled("  planned: %s (%s)", tl_light_strategy_name(app->plan.light_strategy), app->plan.strategy_reason);
+    bool c = vw_ui_aa(app);
     c |= vw_ui_light_scale(app);
-    c |= vw_combo("depth", &d->options.depth_format, depths, TL_DEPTH_FORMAT_D24, 3);
-    c |= vw_combo("RT0 packing", &d->options.rt0, rt0s, TL_RT0_RGBA8, 2);
-    c |= vw_combo("light buffer", &d->options.light_buffer, buffers, TL_LIGHT_BUFFER_EXACT, 2);
-    c |= vw_ui_aa(app);
-    if (d->options.msaa <= 1 && d->options.fxaa != TL_FXAA_OFF) c |= vw_combo("FXAA preset", &d->options.fxaa, fxaas, TL_FXAA_OFF, 4);
-    if (d->options.exposure <= 0) d->options.exposure = 1.0f;
-    ImGui::SliderFloat("exposure", &d->options.exposure, 0.05f, 20.0f, "%.3f", ImGuiSliderFlags_Logarithmic);
-    c |= ImGui::IsItemDeactivatedAfterEdit();
+    ImGui::TextDisabled("  planned: %s (%s)", tl_light_strategy_name(app->plan.light_strategy), app->plan.strategy_reason);
     ImGui::Text("lights: %zu", app->light_count);
     ImGui::SameLine();
     if (ImGui::SmallButton("x2")) vw_scale_lights(app, 1);
@@ -133,151 +294,7 @@ static void vw_ui_settings(vw_app *app)
     ImGui::SameLine();
     bool anim = app->animate != 0;
     if (ImGui::Checkbox("animate", &anim)) app->animate = anim;
-    if (c) app->rebuild = 1;
-}
-
-// ---- screen-space effects ------------------------------------------------------------------------
-// One row per effect: its name, the tool flag that turns it on with its defaults (tool_effects.h,
-// the flags thinlight-render takes) and its options in tl_renderer_desc, whose first field (method,
-// mode or enabled) is zero when the effect is off. A new effect is one more row (and a slot in
-// vw_app.fx_saved); its parameters are rows of vw_params.
-struct vw_effect {
-    const char *name, *flag;
-    size_t offset, size;
-};
-#define VW_FX(field) offsetof(tl_renderer_desc, field), sizeof(tl_renderer_desc::field)
-static const vw_effect vw_effects[] = {
-    {"SSAO", "--ssao", VW_FX(options.ssao)},
-    {"fog", "--fog", VW_FX(options.fog)},
-    {"depth of field", "--dof", VW_FX(options.dof)},
-    {"reflections", "--ssr", VW_FX(options.ssr)},
-    {"bloom", "--bloom", VW_FX(options.bloom)},
-};
-static const int vw_effect_count = static_cast<int>(sizeof vw_effects / sizeof vw_effects[0]);
-
-// The main parameters, shown under their effect while it is on. A zero field means the
-// library's default, shown as `def` until it is edited, or as "default" where that depends on
-// other settings (def -1: k_d = 2 radius, focus on the camera's target, largest CoC 2 apertures).
-enum vw_param_kind { VW_F32, VW_F32_LOG, VW_U32, VW_ENUM, VW_RGB, VW_BOOL };
-struct vw_param {
-    const char *effect, *label;
-    vw_param_kind kind;
-    size_t offset;
-    float lo, hi, def;
-    const char *const *names; // VW_ENUM: values 1, 2, ... (0 is off)
-};
-#define VW_AT(field) offsetof(tl_renderer_desc, field)
-static const char *const vw_ssao_methods[] = {"disc (slides)", "hemisphere", nullptr};
-static const char *const vw_fog_modes[] = {"distance", "height", nullptr};
-static const vw_param vw_params[] = {
-    {"SSAO", "estimator", VW_ENUM, VW_AT(options.ssao.method), 0, 0, 1, vw_ssao_methods},
-    {"SSAO", "samples", VW_U32, VW_AT(options.ssao.samples), 1, 64, 16, nullptr},
-    {"SSAO", "radius", VW_F32_LOG, VW_AT(options.ssao.radius), 0.05f, 10, 1, nullptr},
-    {"SSAO", "bias k_b", VW_F32, VW_AT(options.ssao.bias), 0, 2, 0, nullptr},
-    {"SSAO", "falloff k_d", VW_F32, VW_AT(options.ssao.falloff), 0, 20, -1, nullptr},
-    {"SSAO", "exponent x", VW_F32, VW_AT(options.ssao.exponent), 0.25f, 8, 3, nullptr},
-    {"SSAO", "blur half-width", VW_U32, VW_AT(options.ssao.blur_radius), 1, 8, 2, nullptr},
-    {"SSAO", "on diffuse light too", VW_BOOL, VW_AT(options.ssao.diffuse), 0, 1, 0, nullptr},
-    {"fog", "kind", VW_ENUM, VW_AT(options.fog.mode), 0, 0, 1, vw_fog_modes},
-    {"fog", "density", VW_F32_LOG, VW_AT(options.fog.density), 0.001f, 1, 0.05f, nullptr},
-    {"fog", "colour", VW_RGB, VW_AT(options.fog.color), 0, 0, 0, nullptr},
-    {"fog", "height", VW_F32, VW_AT(options.fog.height), -20, 20, 0, nullptr},
-    {"fog", "height falloff", VW_F32_LOG, VW_AT(options.fog.height_falloff), 0.01f, 5, 0.5f, nullptr},
-    {"fog", "noise", VW_F32, VW_AT(options.fog.noise), 0, 1, 0, nullptr},
-    {"depth of field", "focus distance", VW_F32, VW_AT(options.dof.focus_distance), 0, 100, -1, nullptr},
-    {"depth of field", "aperture", VW_F32_LOG, VW_AT(options.dof.aperture), 0.001f, 0.1f, 0.01f, nullptr},
-    {"depth of field", "largest CoC", VW_F32, VW_AT(options.dof.max_radius), 0, 0.2f, -1, nullptr},
-    {"depth of field", "taps", VW_U32, VW_AT(options.dof.samples), 8, 128, 48, nullptr},
-    {"reflections", "steps", VW_U32, VW_AT(options.ssr.steps), 4, 256, 48, nullptr},
-    {"reflections", "distance", VW_F32_LOG, VW_AT(options.ssr.max_distance), 0.5f, 100, 16, nullptr},
-    {"reflections", "thickness", VW_F32_LOG, VW_AT(options.ssr.thickness), 0.01f, 5, 0.4f, nullptr},
-    {"reflections", "least gloss", VW_F32, VW_AT(options.ssr.min_gloss), 0, 0.99f, 0.4f, nullptr},
-    {"reflections", "intensity", VW_F32_LOG, VW_AT(options.ssr.intensity), 0.1f, 10, 1, nullptr},
-    {"bloom", "threshold", VW_F32_LOG, VW_AT(options.bloom.threshold), 0.05f, 20, 1, nullptr},
-    {"bloom", "intensity", VW_F32_LOG, VW_AT(options.bloom.intensity), 0.02f, 4, 0.5f, nullptr},
-    {"bloom", "scatter", VW_F32, VW_AT(options.bloom.scatter), 0.05f, 1, 0.7f, nullptr},
-    {"bloom", "levels", VW_U32, VW_AT(options.bloom.levels), 1, 8, 6, nullptr},
-};
-
-// One parameter's widget; true when an edit is finished (the renderer is then made again).
-static bool vw_ui_param(tl_renderer_desc *d, const vw_param &p)
-{
-    unsigned char *at = reinterpret_cast<unsigned char *>(d) + p.offset;
-    float f;
-    int i;
-    memcpy(&f, at, sizeof f);
-    memcpy(&i, at, sizeof i);
-    bool edited = false;
-    if (p.kind == VW_F32 || p.kind == VW_F32_LOG) {
-        float v = f != 0 ? f : p.def > 0 ? p.def : 0.0f;
-        ImGuiSliderFlags flags = p.kind == VW_F32_LOG ? ImGuiSliderFlags_Logarithmic : 0;
-        if (ImGui::SliderFloat(p.label, &v, p.lo, p.hi, f == 0 && p.def < 0 ? "default" : "%.3f", flags))
-            memcpy(at, &v, sizeof v);
-        edited = ImGui::IsItemDeactivatedAfterEdit();
-    } else if (p.kind == VW_U32) {
-        int v = i != 0 ? i : static_cast<int>(p.def);
-        if (ImGui::SliderInt(p.label, &v, static_cast<int>(p.lo), static_cast<int>(p.hi))) memcpy(at, &v, sizeof v);
-        edited = ImGui::IsItemDeactivatedAfterEdit();
-    } else if (p.kind == VW_ENUM) {
-        int count = 0;
-        while (p.names[count]) count++;
-        edited = vw_combo(p.label, &i, p.names, 1, count);
-        if (edited) memcpy(at, &i, sizeof i);
-    } else if (p.kind == VW_RGB) {
-        float rgb[3];
-        memcpy(rgb, at, sizeof rgb);
-        if (ImGui::ColorEdit3(p.label, rgb, ImGuiColorEditFlags_Float | ImGuiColorEditFlags_HDR)) memcpy(at, rgb, sizeof rgb);
-        edited = ImGui::IsItemDeactivatedAfterEdit();
-    } else {
-        bool b = i != 0;
-        edited = ImGui::Checkbox(p.label, &b);
-        i = b ? 1 : 0;
-        memcpy(at, &i, sizeof i);
-    }
-    return edited;
-}
-
-// A checkbox per effect (its first field says whether it is on); turning one off keeps its
-// settings for when it comes back, turning it on the first time takes the tool flag's defaults.
-static bool vw_ui_effect_toggle(vw_app *app, int e)
-{
-    const vw_effect &fx = vw_effects[e];
-    unsigned char *at = reinterpret_cast<unsigned char *>(&app->desc) + fx.offset, *saved = app->fx_saved[e];
-    int first;
-    memcpy(&first, at, sizeof first);
-    bool on = first != 0;
-    if (!ImGui::Checkbox(fx.name, &on)) return false;
-    if (!on) {
-        memcpy(saved, at, fx.size);
-        memset(at, 0, fx.size);
-    } else {
-        int was;
-        memcpy(&was, saved, sizeof was);
-        if (was) memcpy(at, saved, fx.size);
-        else tl_tool_effect_flag(&app->desc, fx.flag);
-    }
-    return true;
-}
-
-static void vw_ui_effects(vw_app *app)
-{
-    bool c = false;
-    static_assert(sizeof vw_effects / sizeof vw_effects[0] <= sizeof(vw_app::fx_saved) / sizeof(vw_app::fx_saved[0]),
-                  "vw_app.fx_saved: one slot per effect");
-    for (int e = 0; e < vw_effect_count; e++) {
-        if (vw_effects[e].size > sizeof app->fx_saved[0]) continue; // cannot happen with the rows above
-        ImGui::PushID(e);
-        c |= vw_ui_effect_toggle(app, e);
-        int first;
-        memcpy(&first, reinterpret_cast<unsigned char *>(&app->desc) + vw_effects[e].offset, sizeof first);
-        for (const vw_param &p : vw_params)
-            if (first && !strcmp(p.effect, vw_effects[e].name)) {
-                ImGui::Indent();
-                c |= vw_ui_param(&app->desc, p);
-                ImGui::Unindent();
-            }
-        ImGui::PopID();
-    }
+    c |= vw_ui_options(app, 0, 0);
     if (c) app->rebuild = 1;
 }
 
@@ -335,7 +352,8 @@ static void vw_ui_panel(vw_app *app)
                 ImGui::GetIO().Framerate);
     ImGui::TextDisabled("camera: %s (F toggles, C resets)", app->cam.mode == VW_CAMERA_FLY ? "fly" : "orbit");
     if (ImGui::CollapsingHeader("Renderer", ImGuiTreeNodeFlags_DefaultOpen)) vw_ui_settings(app);
-    if (ImGui::CollapsingHeader("Effects", ImGuiTreeNodeFlags_DefaultOpen)) vw_ui_effects(app);
+    if (ImGui::CollapsingHeader("Effects", ImGuiTreeNodeFlags_DefaultOpen) && vw_ui_options(app, 1, 0)) app->rebuild = 1;
+    if (ImGui::CollapsingHeader("Shadows and environment") && vw_ui_options(app, 0, 1)) app->rebuild = 1;
     if (ImGui::CollapsingHeader("View", ImGuiTreeNodeFlags_DefaultOpen)) vw_ui_views(app);
     if (ImGui::CollapsingHeader("Passes and bytes", ImGuiTreeNodeFlags_DefaultOpen)) vw_ui_timings(app);
     if (ImGui::CollapsingHeader("Frame plan") && app->plan_text) {

@@ -121,7 +121,6 @@ typedef struct vw_app {
     size_t plan_text_size;
     float depth_range[2];            /* the depth view's scale: nearest and farthest covered pixel */
     uint32_t tile_max;               /* the tile view's scale: most lights in one tile */
-    unsigned char fx_saved[5][64];   /* an effect's settings while the panel has it off (ui.cpp) */
     char status[160];                /* a line for the panel (the last screenshot, an error) */
     char view_note[96];              /* why a view is empty in this mode */
     uint8_t *image;                  /* the view, RGBA8 bottom-up, width x height */
@@ -162,7 +161,7 @@ int vw_shadow_cascades(vw_app *app, tl_renderer *r, uint8_t *out);
 int vw_shadow_only(vw_app *app, tl_renderer *r, uint8_t *out);
 int vw_shadow_debug_wanted(const vw_app *app);
 void vw_cascade_legend_colour(float t, uint8_t rgb[3]);
-void vw_atlas_texel(const tl_shadow_view_info *v, float d, int reversed, uint8_t *px);
+void vw_atlas_texel(const tl_shadow_view_info *v, float d, uint8_t *px);
 
 /* views.c */
 const char *vw_view_name(vw_view v);

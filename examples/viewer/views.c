@@ -393,7 +393,7 @@ static int vw_view_diff_fat(vw_app *app, tl_renderer *r, const tl_camera *cam, u
 /* SSAO's targets: AO as grey, black 0 (occluded) to white 1 (open). */
 static int vw_view_ao_target(vw_app *app, tl_renderer *r, uint8_t *out, tl_target_id t)
 {
-    if (app->desc.options.ssao.method == TL_SSAO_OFF)
+    if (!app->desc.options.ssao.enabled)
         return vw_unavailable(app, "SSAO is off (--ssao, or the Effects panel)");
     const float *ao = vw_read(app, r, t, 0);
     const float *d = vw_read(app, r, TL_TARGET_DEPTH, 1);

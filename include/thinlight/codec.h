@@ -249,6 +249,9 @@ typedef enum tl_depth_format {
 /** Stable short name of a depth format ("d24", "d32f", "d32f-reversed"; DEFAULT gives its
  *  value's name, "unknown" for values out of range). */
 TL_API const char *tl_depth_format_name(tl_depth_format format);
+/** Parses a name of tl_depth_format_name ("d24" gives TL_DEPTH_FORMAT_D24); TL_ERROR_INVALID_ARGUMENT
+ *  for anything else. */
+TL_API tl_result tl_depth_format_from_name(const char *name, tl_depth_format *format);
 
 /** A symmetric or off-centre perspective projection. far <= 0 or Inf means an infinite far plane. */
 typedef struct tl_projection {

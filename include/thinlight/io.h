@@ -164,6 +164,13 @@ typedef struct tl_gltf_options {
                                     SIZE_MAX = no budget. Over it: TL_ERROR_LIMIT naming what */
     tl_gltf_files files;       /**< external buffers and images; zeroed: see tl_gltf_files */
     const char *name;          /**< tl_scene_parse_gltf: what messages call the data; NULL = "memory" */
+    /** Which lights cast shadows (tl_light.shadow; docs/gltf.md, "Shadows"). Always: a
+     *  KHR_lights_punctual light whose "extras" hold "thinlight_shadow": true casts, false never
+     *  casts. 0: no other light casts. N > 0 (the tools' --shadows, with the renderer's
+     *  tl_shadow_desc.max_lights): also every other directional light, then the other point and
+     *  spot lights (the default rig's and the extra lights included), brightest first, while fewer
+     *  than N lights cast. */
+    uint32_t shadow_lights;
 } tl_gltf_options;
 
 /**

@@ -46,6 +46,21 @@ TL_API const char *tl_render_mode_name(tl_render_mode mode);
 /** Parses a name of tl_render_mode_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
 TL_API tl_result tl_render_mode_from_name(const char *name, tl_render_mode *mode);
 
+/** A behaviour that is on unless turned off (docs/option-changes.md, "One polarity"): zero, the
+ *  default, is on. Options that are off by default are an `int` (`enabled`, `fullscreen_lights`):
+ *  zero is off and 1 turns them on. */
+typedef enum tl_switch {
+    TL_SWITCH_DEFAULT = 0, /**< "on": the default */
+    TL_SWITCH_ON,          /**< "on", said explicitly */
+    TL_SWITCH_OFF,         /**< "off" */
+    TL_SWITCH_COUNT_       /**< number of values */
+} tl_switch;
+
+/** "on" (TL_SWITCH_DEFAULT and TL_SWITCH_ON), "off" ("unknown" otherwise). */
+TL_API const char *tl_switch_name(tl_switch value);
+/** Parses a name of tl_switch_name ("on" gives TL_SWITCH_ON); TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_switch_from_name(const char *name, tl_switch *value);
+
 /** How the thin G-buffer's RT0 holds normal and gloss (codec.h). */
 typedef enum tl_rt0_packing {
     TL_RT0_DEFAULT = 0, /**< = TL_RT0_RGBA8 */
@@ -53,6 +68,11 @@ typedef enum tl_rt0_packing {
     TL_RT0_RGB10A2,     /**< octahedral 2x10 + gloss 10 + 2 flags */
     TL_RT0_COUNT_       /**< number of values */
 } tl_rt0_packing;
+
+/** "rgba8" (TL_RT0_DEFAULT too), "rgb10a2" ("unknown" otherwise). */
+TL_API const char *tl_rt0_packing_name(tl_rt0_packing value);
+/** Parses a name of tl_rt0_packing_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_rt0_packing_from_name(const char *name, tl_rt0_packing *value);
 
 /** Light-buffer layout. */
 typedef enum tl_light_buffer {
@@ -62,6 +82,11 @@ typedef enum tl_light_buffer {
                                       approximated by the diffuse light's chromaticity */
     TL_LIGHT_BUFFER_COUNT_       /**< number of values */
 } tl_light_buffer;
+
+/** "exact" (TL_LIGHT_BUFFER_DEFAULT too), "compact" ("unknown" otherwise). */
+TL_API const char *tl_light_buffer_name(tl_light_buffer value);
+/** Parses a name of tl_light_buffer_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_light_buffer_from_name(const char *name, tl_light_buffer *value);
 
 /** How the light pass accumulates lights (DESIGN.md section 2). */
 typedef enum tl_light_strategy {
@@ -87,6 +112,11 @@ typedef enum tl_tiled_shading {
     TL_TILED_SHADING_COUNT_       /**< number of values */
 } tl_tiled_shading;
 
+/** "fragment" (TL_TILED_SHADING_DEFAULT too), "compute" ("unknown" otherwise). */
+TL_API const char *tl_tiled_shading_name(tl_tiled_shading value);
+/** Parses a name of tl_tiled_shading_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_tiled_shading_from_name(const char *name, tl_tiled_shading *value);
+
 /** How a multisampled frame is lit (`msaa` above 1; docs/antialiasing.md). */
 typedef enum tl_msaa_lighting {
     TL_MSAA_LIGHTING_DEFAULT = 0,      /**< thin-lpp: the material pass; thin-deferred and fat: per-sample edges */
@@ -97,6 +127,11 @@ typedef enum tl_msaa_lighting {
                                             fragment tiled pass) */
     TL_MSAA_LIGHTING_COUNT_            /**< number of values */
 } tl_msaa_lighting;
+
+/** "default", "material-pass", "per-sample-edges" ("unknown" otherwise). */
+TL_API const char *tl_msaa_lighting_name(tl_msaa_lighting value);
+/** Parses a name of tl_msaa_lighting_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_msaa_lighting_from_name(const char *name, tl_msaa_lighting *value);
 
 /** thin-lpp: how a clearcoat material's coat is lit from the light buffer (docs/lighting.md,
  *  "Material models"). */
@@ -113,6 +148,11 @@ typedef enum tl_clearcoat_lighting {
     TL_CLEARCOAT_COUNT_           /**< number of values */
 } tl_clearcoat_lighting;
 
+/** "auto", "approx", "sums" ("unknown" otherwise). */
+TL_API const char *tl_clearcoat_lighting_name(tl_clearcoat_lighting value);
+/** Parses a name of tl_clearcoat_lighting_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_clearcoat_lighting_from_name(const char *name, tl_clearcoat_lighting *value);
+
 /** Storage of the light buffer's targets (thin-lpp). */
 typedef enum tl_light_format {
     TL_LIGHT_FORMAT_DEFAULT = 0, /**< = TL_LIGHT_FORMAT_RGBA16F */
@@ -120,6 +160,11 @@ typedef enum tl_light_format {
     TL_LIGHT_FORMAT_R11G11B10F,  /**< 4 B/px per target (6- and 5-bit mantissas, no alpha): the exact layout only */
     TL_LIGHT_FORMAT_COUNT_       /**< number of values */
 } tl_light_format;
+
+/** "rgba16f" (TL_LIGHT_FORMAT_DEFAULT too), "r11g11b10f" ("unknown" otherwise). */
+TL_API const char *tl_light_format_name(tl_light_format value);
+/** Parses a name of tl_light_format_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_light_format_from_name(const char *name, tl_light_format *value);
 
 /** The lighting model of a frame (docs/lighting.md); one model per frame, every mode. */
 typedef enum tl_lighting_model {
@@ -184,21 +229,32 @@ typedef enum tl_fxaa_preset {
     TL_FXAA_COUNT_       /**< number of values */
 } tl_fxaa_preset;
 
+/** "29" (TL_FXAA_DEFAULT too), "off", "12", "39" ("unknown" otherwise). */
+TL_API const char *tl_fxaa_preset_name(tl_fxaa_preset value);
+/** Parses a name of tl_fxaa_preset_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_fxaa_preset_from_name(const char *name, tl_fxaa_preset *value);
+
 /** How screen-space ambient occlusion estimates occlusion (docs/effects.md). */
 typedef enum tl_ssao_method {
-    TL_SSAO_OFF = 0,    /**< no SSAO (default): no pass, no target */
-    TL_SSAO_DISC,       /**< the deferred-shading slides' estimator over a Poisson-disc set of screen-space
+    TL_SSAO_DEFAULT = 0, /**< = TL_SSAO_DISC */
+    TL_SSAO_DISC,       /**< "disc": the deferred-shading slides' estimator over a Poisson-disc set of screen-space
                              neighbours p_i: AO = sum (1 - A B)^x / n, A = 1 - smoothstep(0, k_d, |p_i - p| - k_b),
                              B = max(0, n . (p_i - p) / |p_i - p|) */
-    TL_SSAO_HEMISPHERE, /**< points in the normal-oriented hemisphere of the radius, occluded where the surface
+    TL_SSAO_HEMISPHERE, /**< "hemisphere": points in the normal-oriented hemisphere of the radius, occluded where the surface
                              they project to lies in front of them; each weighted by A as above */
     TL_SSAO_COUNT_      /**< number of values */
 } tl_ssao_method;
 
+/** "disc" (TL_SSAO_DEFAULT too), "hemisphere" ("unknown" otherwise). */
+TL_API const char *tl_ssao_method_name(tl_ssao_method value);
+/** Parses a name of tl_ssao_method_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_ssao_method_from_name(const char *name, tl_ssao_method *value);
+
 /** Screen-space ambient occlusion from depth and RT0 (fat: its position and normal targets;
  *  forward: normals rebuilt from the depth pre-pass). Zeroed: off. */
 typedef struct tl_ssao_desc {
-    tl_ssao_method method; /**< default OFF */
+    int enabled;           /**< 1: on (default 0: no pass, no target) */
+    tl_ssao_method method; /**< default disc */
     uint32_t samples;      /**< samples per pixel, 1..64; default 16 */
     float radius;          /**< view-space radius of the neighbourhood; default 1 */
     float bias;            /**< k_b: distance within which a neighbour occludes fully; default 0 */
@@ -210,15 +266,21 @@ typedef struct tl_ssao_desc {
 
 /** How fog density varies (docs/effects.md). */
 typedef enum tl_fog_mode {
-    TL_FOG_OFF = 0,  /**< no fog (default): no pass */
-    TL_FOG_DISTANCE, /**< constant density: transmittance exp(-density * distance) */
-    TL_FOG_HEIGHT,   /**< density * exp(-height_falloff * (y - height)), integrated along the view ray */
+    TL_FOG_DEFAULT = 0, /**< = TL_FOG_DISTANCE */
+    TL_FOG_DISTANCE, /**< "distance": constant density: transmittance exp(-density * distance) */
+    TL_FOG_HEIGHT,   /**< "height": density * exp(-height_falloff * (y - height)), integrated along the view ray */
     TL_FOG_COUNT_    /**< number of values */
 } tl_fog_mode;
 
+/** "distance" (TL_FOG_DEFAULT too), "height" ("unknown" otherwise). */
+TL_API const char *tl_fog_mode_name(tl_fog_mode value);
+/** Parses a name of tl_fog_mode_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_fog_mode_from_name(const char *name, tl_fog_mode *value);
+
 /** Fog from linear depth, blended over HDR: c = c T + colour (1 - T). Zeroed: off. */
 typedef struct tl_fog_desc {
-    tl_fog_mode mode;     /**< default OFF */
+    int enabled;          /**< 1: on (default 0: no pass) */
+    tl_fog_mode mode;     /**< default distance */
     float color[3];       /**< linear radiance of the fog; default black */
     float density;        /**< extinction per unit length (height fog: at y = height); default 0.05 */
     float height;         /**< height fog: world y of the reference density; default 0 */
@@ -284,26 +346,37 @@ typedef struct tl_vignette_desc {
 
 /** How the shadow atlas is filtered (tl_shadow_desc.filter; docs/shadows.md). */
 typedef enum tl_shadow_filter {
-    TL_SHADOW_FILTER_DEFAULT = 0, /**< PCF */
-    TL_SHADOW_FILTER_PCF,         /**< percentage-closer filtering with a fixed kernel (pcf_radius) */
+    TL_SHADOW_FILTER_DEFAULT = 0, /**< = TL_SHADOW_FILTER_PCF */
+    TL_SHADOW_FILTER_PCF,         /**< "pcf": percentage-closer filtering with a fixed kernel (pcf_radius) */
     /** Percentage-closer soft shadows: a blocker search in the view's tile, then a PCF whose radius
      *  follows the penumbra of the light's size (tl_light.source_radius for point and spot lights,
-     *  tl_shadow_desc.directional_angle for directional ones), at least pcf_radius. */
-    TL_SHADOW_FILTER_PCSS
+     *  tl_shadow_desc.directional_angle for directional ones), at least pcf_radius ("pcss"). */
+    TL_SHADOW_FILTER_PCSS,
+    TL_SHADOW_FILTER_BILINEAR,    /**< "bilinear": a single bilinear compare tap (the PCF kernel of radius 0) */
+    TL_SHADOW_FILTER_COUNT_       /**< number of values */
 } tl_shadow_filter;
+
+/** "pcf" (TL_SHADOW_FILTER_DEFAULT too), "pcss", "bilinear" ("unknown" otherwise). */
+TL_API const char *tl_shadow_filter_name(tl_shadow_filter value);
+/** Parses a name of tl_shadow_filter_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
+TL_API tl_result tl_shadow_filter_from_name(const char *name, tl_shadow_filter *value);
+
+/** tl_shadow_desc.max_lights's default (what a zero means), for tools that size other things by it
+ *  (tl_gltf_options.shadow_lights). */
+#define TL_SHADOW_DEFAULT_MAX_LIGHTS 8u
 
 /** Shadows of the lights with tl_light.shadow (docs/shadows.md): one depth atlas holding a
  *  perspective map per spot light, six cube faces per point light and four stable cascades per
  *  directional light; looked up with PCF (or PCSS) and a bias derived from the texel size and the
  *  depth formats. Zeroed: the defaults below (shadows on for lights that ask for them). */
 typedef struct tl_shadow_desc {
-    int disabled;         /**< 1: no light casts, whatever tl_light.shadow says */
+    tl_switch enabled;    /**< default on; TL_SWITCH_OFF: no light casts, whatever tl_light.shadow says */
     uint32_t atlas_size;  /**< the atlas's side in texels, 1024..16384, a power of two; default 4096 */
     uint32_t max_lights;  /**< most casting lights given a map per frame (the budget), 1..64; default 8 */
-    uint32_t pcf_radius;  /**< PCF kernel: (2 r + 1)^2 bilinear compare taps, r in 0..3; 0 means the default 1 */
-    int no_pcf;           /**< 1: a single bilinear compare tap (the kernel r = 0) */
-    int no_cache;         /**< 1: every map is rendered every frame (default: unchanged maps are kept) */
-    tl_shadow_filter filter; /**< default PCF; PCSS for penumbrae that widen away from the contact */
+    uint32_t pcf_radius;  /**< PCF kernel: (2 r + 1)^2 bilinear compare taps, r in 1..3; 0 means the default 1
+                               (TL_SHADOW_FILTER_BILINEAR is the single tap, r = 0) */
+    tl_switch cache;      /**< default on: unchanged maps are kept; TL_SWITCH_OFF: every map rendered every frame */
+    tl_shadow_filter filter; /**< default PCF; PCSS for penumbrae that widen away from the contact; BILINEAR */
     /** PCSS: the angular radius of directional lights' discs, radians, 0..0.2; 0 means the default
      *  0.00465 (the sun's and the full moon's). */
     float directional_angle;
@@ -337,7 +410,10 @@ typedef uint64_t tl_target_set;
 #define TL_TARGETS_ALL UINT64_MAX
 
 /** How the renderer draws a frame: every field may change between frames (tl_renderer_set_options)
- *  and every zeroed field means its default. tl_renderer_desc.options holds the first ones. */
+ *  and every zeroed field means its default. tl_renderer_desc.options holds the first ones. Each
+ *  field's name, range, default, unit and help are its row of the option registry (options.h);
+ *  an on/off field reads positively: `enabled` or an `int` turns on what is off by default, a
+ *  tl_switch turns off what is on by default. */
 typedef struct tl_renderer_options {
     tl_render_mode mode;               /**< default thin-lpp */
     tl_depth_format depth_format;      /**< default D24 (D24S8); D32F_REVERSED for reversed Z */
@@ -382,10 +458,10 @@ typedef struct tl_renderer_options {
      *  crypt's own). Otherwise it replaces the scene's, and a negative component means exactly 0:
      *  `.ambient = {-1, -1, -1}` turns the ambient term off. */
     float ambient[3];
-    int forward_no_depth_prepass;      /**< forward mode: 1 leaves out the depth pre-pass (default: on) */
-    int no_planning;                   /**< 1: plan for every feature whatever the scene uses (all light
-                                            types, specular, textures, normal maps, alpha): shows what
-                                            planning saves */
+    tl_switch forward_depth_prepass;   /**< forward mode's depth pre-pass: default on; TL_SWITCH_OFF leaves it out */
+    tl_switch planning;                /**< default on; TL_SWITCH_OFF: plan for every feature whatever the scene
+                                            uses (all light types, specular, textures, normal maps, alpha): shows
+                                            what planning saves */
     int fullscreen_lights;             /**< 1: shade point and spot lights over the whole screen instead
                                             of drawing their volumes (the reference the volume tests
                                             compare against; costs every light the full screen) */
@@ -717,8 +793,9 @@ typedef struct tl_frame_stats {
     uint64_t relit_pixels;              /**< light_scale below 1: pixels the edge fix-up re-lit at full resolution
                                              (fragments: a pixel two coplanar surfaces both draw counts twice) */
     double relit_fraction;              /**< relit_pixels over the frame's pixels */
-    uint32_t shadow_lights;             /**< casting lights given a map this frame (at most the budget) */
-    uint32_t shadow_lights_fading;      /**< casting lights over the budget, fading out instead of a map */
+    uint32_t shadow_lights;             /**< casting lights with a map this frame (their views in the atlas):
+                                             the budget's, plus for 8 frames those leaving it (fading out) */
+    uint32_t shadow_lights_fading;      /**< of those, the ones whose shadow is fading in or out */
     uint32_t shadow_maps_rendered;      /**< atlas views (cascades, cube faces, spot maps) rendered this frame */
     uint32_t shadow_maps_cached;        /**< atlas views kept from an earlier frame (nothing in range changed) */
     size_t shadow_atlas_bytes;          /**< the shadow atlas's memory (0 without casting lights) */
@@ -726,6 +803,9 @@ typedef struct tl_frame_stats {
                                              when a map was rendered, 0 when every map was cached; -1: unavailable */
     uint64_t msaa_edge_pixels;          /**< MSAA per-sample edges: pixels lit per sample (msaa-classify's count) */
     double msaa_edge_fraction;          /**< msaa_edge_pixels over the frame's pixels */
+    uint32_t shadow_lights_unmapped;    /**< casting lights that reach the view but have no map this frame:
+                                             over the budget (tl_shadow_desc.max_lights); the first time
+                                             (and whenever the count grows) the logger gets a warning */
 } tl_frame_stats;
 
 /** "gbuffer", "lights", ... ("unknown" out of range); the names of debug groups and timers. */
@@ -1053,12 +1133,12 @@ TL_API tl_result tl_renderer_get_shadow_views(tl_renderer *r, tl_shadow_view_inf
                                               uint32_t *atlas_size);
 /**
  * Reads the shadow atlas's stored depth, one float a texel, atlas_size x atlas_size, rows bottom to
- * top: the window depth of the frame's convention (D24: standard, far 1; reversed D32F: reversed,
- * far 0). A texel of a view at distance z along its light's axis holds, with n and f its near_z and
- * far_z, perspective: f (z - n) / (z (f - n)) (reversed: n (f - z) / (z (f - n))); orthographic:
- * (z - n) / (f - n) (reversed: (f - z) / (f - n)). *size is the buffer's size in bytes and receives
- * the bytes written; a NULL `depth` asks for the size. TL_ERROR_INVALID_ARGUMENT without an atlas
- * (no casting light rendered yet) or with a buffer too small.
+ * top: reversed window depth whatever the frame's depth format (near 1, far and empty 0). A texel
+ * of a view at distance z along its light's axis holds, with n and f its near_z and far_z,
+ * perspective: n (f - z) / (z (f - n)); orthographic: (f - z) / (f - n). *size is the buffer's
+ * size in bytes and receives the bytes written; a NULL `depth` asks for the size.
+ * TL_ERROR_INVALID_ARGUMENT without an atlas (no casting light rendered yet) or with a buffer too
+ * small.
  */
 TL_API tl_result tl_renderer_read_shadow_atlas(tl_renderer *r, float *depth, size_t *size);
 /** The renderer's target size (0 x 0 for NULL); either pointer may be NULL. */
@@ -1067,4 +1147,7 @@ TL_API void tl_renderer_get_size(const tl_renderer *r, uint32_t *width, uint32_t
 #ifdef __cplusplus
 }
 #endif
+
+/* The option registry (every field above with its name, range, default and help). */
+#include "thinlight/options.h"
 #endif

@@ -13,6 +13,16 @@ const char *tl_depth_format_name(tl_depth_format format)
     return (unsigned)format < TL_DEPTH_FORMAT_COUNT_ ? tl__depth_names[format] : "unknown";
 }
 
+tl_result tl_depth_format_from_name(const char *name, tl_depth_format *format)
+{
+    for (int i = TL_DEPTH_FORMAT_D24; name && format && i < TL_DEPTH_FORMAT_COUNT_; i++)
+        if (strcmp(name, tl__depth_names[i]) == 0) {
+            *format = (tl_depth_format)i;
+            return TL_OK;
+        }
+    return TL_ERROR_INVALID_ARGUMENT;
+}
+
 static int tl__reversed(const tl_projection *p) { return p->format == TL_DEPTH_FORMAT_D32F_REVERSED; }
 
 /* +-Inf to +-FLT_MAX (finite values unchanged). */

@@ -27,6 +27,7 @@ void resolve(const tl_gltf_options &o, context *c)
     c->budget = o.max_memory ? o.max_memory : TL_GLTF_DEFAULT_MAX_MEMORY;
     c->scene_number = o.scene_number;
     c->extra_lights = o.extra_lights;
+    c->shadow_lights = o.shadow_lights;
     c->seed = o.seed ? o.seed : 1;
     c->default_lights = !o.no_default_lights;
 }

@@ -34,6 +34,7 @@ struct context {
     mutable size_t peak = 0;
     uint32_t scene_number = 0;
     uint32_t extra_lights = 0;
+    uint32_t shadow_lights = 0;     // the shadow rule's budget; 0: the extras' flags only
     uint64_t seed = 1;
     bool default_lights = true;
     // Set when reading an external buffer fails inside tinygltf, so that the failure keeps its
@@ -344,7 +345,11 @@ void orthogonal(const float n[3], float out[3]);
 
 // ---- lights and camera (gltf_lights.cpp, gltf_camera.cpp) -----------------------------------
 
-void convert_lights(const context &c, const tinygltf::Model &m, const scene_graph &g, vec<tl_light> *out);
+// `flags` receives each converted light's extras.thinlight_shadow: 1 true, 0 false, -1 none.
+void convert_lights(const context &c, const tinygltf::Model &m, const scene_graph &g, vec<tl_light> *out,
+                    vec<signed char> *flags);
+// Sets tl_light.shadow from the flags (-1 beyond flags' size) and, with c.shadow_lights, the rule.
+void shadow_rule(const context &c, const vec<signed char> &flags, vec<tl_light> *lights);
 void default_rig(const float bmin[3], const float bmax[3], vec<tl_light> *out);
 void extra_lights(const context &c, const float bmin[3], const float bmax[3], vec<tl_light> *out);
 // Skips, with a warning naming `what`N], each light from `first` on that the renderer would refuse.

@@ -3,6 +3,7 @@
 // albedo * colour * attenuation * N.L), so a glTF intensity I (candela, or lux for directional
 // lights) becomes colour * I / pi: the radiance glTF's own Lambert term albedo / pi * I / d^2
 // gives. The numbers are documented in docs/gltf.md.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -73,9 +74,58 @@ void spot_cone(const context &c, const std::string &name, double inner, double o
     if (!(l->cos_outer < l->cos_inner)) l->cos_outer = std::nextafter(l->cos_inner, -1.0f);
 }
 
+// A JSON value in a message: numbers and booleans as written, strings quoted (cut at 40 bytes).
+std::string describe(const tinygltf::Value &v)
+{
+    if (v.IsBool()) return v.Get<bool>() ? "true" : "false";
+    if (v.IsNumber()) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.17g", v.GetNumberAsDouble());
+        return text;
+    }
+    if (v.IsString()) {
+        const std::string &s = v.Get<std::string>();
+        return "\"" + s.substr(0, 40) + (s.size() > 40 ? "...\"" : "\"");
+    }
+    return v.IsArray() ? "an array" : v.IsObject() ? "an object" : "null";
+}
+
+// A light's "extras": {"thinlight_shadow": true | false} (docs/gltf.md, "Shadows"): 1, 0, or -1
+// when absent; any other value is ignored with a warning naming it.
+signed char shadow_flag(const context &c, const std::string &name, const tinygltf::Value &extras)
+{
+    if (!extras.IsObject() || !extras.Has("thinlight_shadow")) return -1;
+    const tinygltf::Value &v = extras.Get("thinlight_shadow");
+    if (v.IsBool()) return v.Get<bool>() ? 1 : 0;
+    warn(c, name + ".extras.thinlight_shadow = " + describe(v) + ": not true or false; ignored");
+    return -1;
+}
+
 } // namespace
 
-void convert_lights(const context &c, const tinygltf::Model &m, const scene_graph &g, vec<tl_light> *out)
+void shadow_rule(const context &c, const vec<signed char> &flags, vec<tl_light> *lights)
+{
+    size_t casting = 0;
+    vec<size_t> local = make_vec<size_t>(c);
+    for (size_t i = 0; i < lights->size(); i++) {
+        tl_light &l = (*lights)[i];
+        signed char f = i < flags.size() ? flags[i] : -1;
+        l.shadow = f == 1 || (f < 0 && c.shadow_lights && l.type == TL_LIGHT_DIRECTIONAL);
+        casting += (size_t)l.shadow;
+        if (f < 0 && c.shadow_lights && l.type != TL_LIGHT_DIRECTIONAL) local.push_back(i);
+    }
+    // brightest first: the largest colour channel times radius^2 (the renderer's screen ranking
+    // without the camera: its light over the area it reaches); the file's order on ties
+    auto power = [&](size_t i) {
+        const tl_light &l = (*lights)[i];
+        return std::fmax(l.color[0], std::fmax(l.color[1], l.color[2])) * (double)l.radius * (double)l.radius;
+    };
+    std::stable_sort(local.begin(), local.end(), [&](size_t a, size_t b) { return power(a) > power(b); });
+    for (size_t k = 0; k < local.size() && casting < c.shadow_lights; k++, casting++) (*lights)[local[k]].shadow = 1;
+}
+
+void convert_lights(const context &c, const tinygltf::Model &m, const scene_graph &g, vec<tl_light> *out,
+                    vec<signed char> *flags)
 {
     for (const light_instance &li : g.lights) {
         const tinygltf::Light &L = m.lights[(size_t)li.light];
@@ -130,7 +180,9 @@ void convert_lights(const context &c, const tinygltf::Model &m, const scene_grap
             }
         }
         if (l.type == TL_LIGHT_SPOT) spot_cone(c, name, L.spot.innerConeAngle, L.spot.outerConeAngle, &l);
-        if (renderable(c, name, l)) out->push_back(l);
+        if (!renderable(c, name, l)) continue;
+        out->push_back(l);
+        flags->push_back(shadow_flag(c, name, L.extras));
     }
 }
 

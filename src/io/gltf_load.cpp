@@ -275,7 +275,8 @@ void finish_scene(const context &c, const tinygltf::Model &model, load_state *st
     }
 
     vec<tl_light> lights = make_vec<tl_light>(c);
-    convert_lights(c, model, st->g, &lights);
+    vec<signed char> flags = make_vec<signed char>(c);
+    convert_lights(c, model, st->g, &lights, &flags);
     if (lights.empty() && c.default_lights) {
         default_rig(s->bounds_min, s->bounds_max, &lights);
         drop_unrenderable(c, "default_rig[", 0, &lights);
@@ -283,6 +284,7 @@ void finish_scene(const context &c, const tinygltf::Model &model, load_state *st
     size_t first_extra = lights.size();
     extra_lights(c, s->bounds_min, s->bounds_max, &lights);
     drop_unrenderable(c, "extra_lights[", first_extra, &lights);
+    shadow_rule(c, flags, &lights);
     s->lights = scene_array<tl_light>(c, lights.size(), std::to_string(lights.size()) + " lights");
     if (!lights.empty()) std::memcpy(s->lights, lights.data(), lights.size() * sizeof(tl_light));
     s->light_count = lights.size();

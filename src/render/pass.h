@@ -26,7 +26,6 @@ typedef struct tl__view tl__view;           /* view.h */
 
 /* How a mode lays out the frame: one row per mode (modes.c), read by the passes' declare steps. */
 typedef struct tl__mode_def {
-    const char *name;
     tl_target_set gbuffer_writes; /* colour targets the G-buffer pass writes (dropped when nobody reads them) */
     tl_target_set light_reads; /* targets the light pass reads (depth is also depth-tested) */
     tl_target_set light_samples; /* of those, the ones it samples */
@@ -39,7 +38,7 @@ typedef struct tl__mode_def {
 extern const tl__mode_def tl__modes[TL_MODE_COUNT_];
 
 /* What planning starts from: resolved options and the scene's features (all of them with
- * no_planning), with facts several passes share. */
+ * planning off), with facts several passes share. */
 typedef struct tl__plan_input {
     tl_renderer_desc d;         /* resolved: size and options */
     tl_renderer_options asked;  /* the options as the caller gave them, zeroes unresolved (the downgrades) */
@@ -156,23 +155,27 @@ enum {
  * (what the pass did beyond its draws). */
 enum { TL__PASS_SCENE = 1u, TL__PASS_LIGHTS = 2u, TL__PASS_SHADOWS = 4u };
 
-/* A pass's slice of tl_renderer_options, e.g. `TL__OPTIONS(ssao)` in its definition. */
-#define TL__OPTIONS(field)                                                                        \
+/* A pass's slice of tl_renderer_options and its rows of the option registry (option_check.h), e.g.
+ * `TL__OPTIONS(ssao, tl__ssao_rows)` in its definition. */
+#define TL__OPTIONS(field, rows)                                                                  \
     .options_name = #field, .options_offset = offsetof(tl_renderer_options, field),               \
-    .options_size = sizeof(((tl_renderer_options *)0)->field)
+    .options_size = sizeof(((tl_renderer_options *)0)->field), .option_rows = (rows),             \
+    .option_row_count = sizeof(rows) / sizeof((rows)[0])
 
 typedef struct tl__pass_def {
     tl_pass id;       /* its stable public index (statistics); the table's order is the frame's */
     const char *name;
     tl__program_src programs[TL__PASS_MAX_PROGRAMS + 1];
     const tl__target_def *targets[TL__PASS_MAX_TARGETS]; /* the targets it owns (declares) */
-    /* its options (TL__OPTIONS): resolve gives zeroed fields their defaults and returns 0 for a
-     * value out of range, naming the field (under `prefix`, "options.ssr"), its value and range in
-     * `why` (option_check.h; an effect that is off is zeroed whole, so its other fields cannot
-     * change a plan) */
+    /* its options (TL__OPTIONS): their rows of the option registry (name, range, default, help;
+     * checked before resolve, zeroes with one default value already given it), and resolve for what
+     * is left: an effect that is off zeroed whole (so its other fields cannot change a plan),
+     * defaults computed from other fields */
     const char *options_name;
     size_t options_offset, options_size;
-    int (*resolve)(void *options, const char *prefix, tl__why *why);
+    const tl_option_info *option_rows;
+    size_t option_row_count;
+    void (*resolve)(void *options);
     /* its std140 parameter block, bound at TL_UBO_PASS while it runs (frame.glsl has the frame's):
      * params writes it from the resolved options and the view (NULL outside a frame) */
     uint32_t params_size;

@@ -22,32 +22,23 @@ static uint32_t tl__bloom_levels(const tl_renderer_options *o) { return o->bloom
 static const tl__target_def tl__target_bloom = {TL__TARGET(BLOOM, "bloom"), .format = GL_RGBA16F,
                                                 .levels_of = tl__bloom_levels, .shift = 1, .linear = 1};
 
-/* tl_bloom_desc's defaults (docs/effects.md); 0 for values out of range. */
-static int tl__bloom_resolve(void *options, const char *prefix, tl__why *why)
+/* tl_bloom_desc in the option registry (docs/effects.md). */
+static const tl_option_info tl__bloom_rows[] = {
+    TL__OPT_BOOL(bloom.enabled, "bloom"),
+    TL__OPT_FLOAT(bloom.threshold, TL__OPT_ABOVE_0 | TL_OPTION_NEGATIVE_ZERO, 1, NULL, "HDR",
+                  "bloom: brightness (largest channel) where it starts"),
+    TL__OPT_FLOAT(bloom.knee, 0.0, 1.0, TL_OPTION_MIN_OPEN | TL_OPTION_NEGATIVE_ZERO, 0.5, NULL, "of the threshold",
+                  "bloom: soft knee"),
+    TL__OPT_FLOAT(bloom.intensity, TL__OPT_ABOVE_0, 0.5, NULL, "", "bloom: weight of the bloom image added to HDR"),
+    TL__OPT_FLOAT(bloom.scatter, 0.0, 1.0, TL_OPTION_MIN_OPEN, 0.7, NULL, "",
+                  "bloom: weight of each coarser level (larger: wider glow)"),
+    TL__OPT_UINT(bloom.levels, 1, TL__MAX_LEVELS, 0, 6, "levels", "bloom: mip levels of the chain, the first at half size"),
+};
+
+static void tl__bloom_resolve(void *options)
 {
     tl_bloom_desc *b = (tl_bloom_desc *)options;
-    if (!b->enabled) {
-        memset(b, 0, sizeof *b);
-        return 1;
-    }
-    b->enabled = 1;
-    if (b->threshold == 0.0f) b->threshold = 1.0f;
-    if (b->threshold < 0.0f) b->threshold = 0.0f;
-    if (b->knee == 0.0f) b->knee = 0.5f;
-    if (b->knee < 0.0f) b->knee = 0.0f;
-    if (!(b->intensity > 0.0f)) b->intensity = 0.5f;
-    if (!(b->scatter > 0.0f)) b->scatter = 0.7f;
-    if (!b->levels) b->levels = 6;
-    char levels[32];
-    snprintf(levels, sizeof levels, "1..%u; 0: 6", TL__MAX_LEVELS);
-    const tl__option_range rows[] = {
-        TL__RANGE_INT(b->levels > TL__MAX_LEVELS, "levels", b->levels, levels),
-        TL__RANGE_FLOAT(!isfinite(b->threshold), "threshold", b->threshold, "finite; 0: 1, < 0: 0"),
-        TL__RANGE_FLOAT(!(b->knee <= 1.0f), "knee", b->knee, "0..1; 0: 0.5, < 0: 0"),
-        TL__RANGE_FLOAT(!isfinite(b->intensity), "intensity", b->intensity, "finite; <= 0: 0.5"),
-        TL__RANGE_FLOAT(!(b->scatter <= 1.0f), "scatter", b->scatter, "(0, 1]; <= 0: 0.7"),
-    };
-    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
+    if (!b->enabled) memset(b, 0, sizeof *b);
 }
 
 /* std140 block tl_bloom_block of shaders/bloom.frag.glsl: threshold, knee (absolute), intensity, scatter. */
@@ -119,7 +110,7 @@ const tl__pass_def tl__pass_bloom = {
                  {"bloom.down", "fullscreen.vert.glsl", "bloom.frag.glsl"},
                  {"bloom.up", "fullscreen.vert.glsl", "bloom.frag.glsl"}},
     .targets = {&tl__target_bloom},
-    TL__OPTIONS(bloom),
+    TL__OPTIONS(bloom, tl__bloom_rows),
     .resolve = tl__bloom_resolve,
     .params_size = 4 * sizeof(float),
     .params = tl__bloom_params,

@@ -12,33 +12,24 @@
 
 /* ---- fog: HDR = HDR T + colour (1 - T) ------------------------------------------------------- */
 
-/* tl_fog_desc's defaults (docs/effects.md); 0 for values out of range. */
-static int tl__fog_resolve(void *options, const char *prefix, tl__why *why)
+/* tl_fog_desc in the option registry (docs/effects.md). */
+static const tl_option_info tl__fog_rows[] = {
+    TL__OPT_BOOL(fog.enabled, "fog"),
+    TL__OPT_ENUM(fog.mode, tl_fog_mode, TL_FOG_COUNT_, TL_FOG_DISTANCE, NULL,
+                 "fog density: constant, or falling off with height"),
+    TL__OPT_FLOAT3(fog.color, 0.0, TL__OPT_FINITE, 0, NULL, "linear radiance", "fog colour (0: black)"),
+    TL__OPT_FLOAT(fog.density, TL__OPT_ABOVE_0, 0.05, NULL, "per unit length", "fog: extinction (height fog: at fog.height)"),
+    TL__OPT_FLOAT(fog.height, -TL__OPT_FINITE, TL__OPT_FINITE, 0, 0, NULL, "world units", "height fog: y of the reference density"),
+    TL__OPT_FLOAT(fog.height_falloff, TL__OPT_ABOVE_0, 0.5, NULL, "per unit of height", "height fog: density fall-off"),
+    TL__OPT_FLOAT(fog.noise, 0.0, 1.0, 0, 0, NULL, "", "fog: fractal-noise modulation of the density"),
+    TL__OPT_FLOAT(fog.noise_scale, TL__OPT_ABOVE_0, 0.5, NULL, "per unit length", "fog noise: features"),
+    TL__OPT_FLOAT(fog.noise_speed, -TL__OPT_FINITE, TL__OPT_FINITE, 0, 0.3, NULL, "units per second", "fog noise: drift"),
+};
+
+static void tl__fog_resolve(void *options)
 {
     tl_fog_desc *f = (tl_fog_desc *)options;
-    const tl__option_range mode = TL__RANGE_ENUM("mode", f->mode, TL_FOG_COUNT_, "tl_fog_mode");
-    if (!tl__option_ranges(&mode, 1, prefix, why)) return 0;
-    if (f->mode == TL_FOG_OFF) {
-        memset(f, 0, sizeof *f);
-        return 1;
-    }
-    if (!(f->density > 0.0f)) f->density = 0.05f;
-    if (!(f->height_falloff > 0.0f)) f->height_falloff = 0.5f;
-    if (!(f->noise > 0.0f)) f->noise = 0.0f;
-    if (!(f->noise_scale > 0.0f)) f->noise_scale = 0.5f;
-    if (f->noise_speed == 0.0f) f->noise_speed = 0.3f;
-    const tl__option_range rows[] = {
-        TL__RANGE_FLOAT(!(f->color[0] >= 0.0f && isfinite(f->color[0])), "color[0]", f->color[0], "finite, >= 0"),
-        TL__RANGE_FLOAT(!(f->color[1] >= 0.0f && isfinite(f->color[1])), "color[1]", f->color[1], "finite, >= 0"),
-        TL__RANGE_FLOAT(!(f->color[2] >= 0.0f && isfinite(f->color[2])), "color[2]", f->color[2], "finite, >= 0"),
-        TL__RANGE_FLOAT(!isfinite(f->density), "density", f->density, "finite; <= 0: 0.05"),
-        TL__RANGE_FLOAT(!isfinite(f->height), "height", f->height, "finite"),
-        TL__RANGE_FLOAT(!isfinite(f->height_falloff), "height_falloff", f->height_falloff, "finite; <= 0: 0.5"),
-        TL__RANGE_FLOAT(!(f->noise <= 1.0f), "noise", f->noise, "0..1"),
-        TL__RANGE_FLOAT(!isfinite(f->noise_scale), "noise_scale", f->noise_scale, "finite; <= 0: 0.5"),
-        TL__RANGE_FLOAT(!isfinite(f->noise_speed), "noise_speed", f->noise_speed, "finite; 0: 0.3"),
-    };
-    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
+    if (!f->enabled) memset(f, 0, sizeof *f);
 }
 
 /* std140 block tl_fog_block of shaders/fog.frag.glsl. */
@@ -65,7 +56,7 @@ static void tl__fog_params(const tl_renderer_options *o, const tl__view *v, void
 
 static void tl__fog_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (in->o->fog.mode == TL_FOG_OFF) return;
+    if (!in->o->fog.enabled) return;
     d->samples = TL__B(DEPTH);
     d->reads = TL__B(DEPTH) | TL__B(HDR);
     d->writes = TL__B(HDR);
@@ -81,13 +72,13 @@ static void tl__fog_permute(const tl__plan_input *in, const tl__pass_decl *d, tl
     if (in->o->fog.noise > 0.0f) tl__perm_flag(&out->slot[0], TL__F_FOG_NOISE);
 }
 
-static int tl__fog_wanted(const tl_renderer_options *o) { return o->fog.mode != TL_FOG_OFF; }
+static int tl__fog_wanted(const tl_renderer_options *o) { return o->fog.enabled; }
 
 const tl__pass_def tl__pass_fog = {
     .id = TL_PASS_FOG,
     .name = "fog",
     .programs = {{"fog", "fullscreen.vert.glsl", "fog.frag.glsl"}},
-    TL__OPTIONS(fog),
+    TL__OPTIONS(fog, tl__fog_rows),
     .resolve = tl__fog_resolve,
     .params_size = sizeof(tl__fog_block),
     .params = tl__fog_params,
@@ -103,26 +94,25 @@ const tl__pass_def tl__pass_fog = {
 
 static const tl__target_def tl__target_dof = {TL__TARGET(DOF, "dof"), .format = GL_RGBA16F};
 
-/* tl_dof_desc's defaults (docs/effects.md); 0 for values out of range. */
-static int tl__dof_resolve(void *options, const char *prefix, tl__why *why)
+/* tl_dof_desc in the option registry (docs/effects.md). */
+static const tl_option_info tl__dof_rows[] = {
+    TL__OPT_BOOL(dof.enabled, "depth of field"),
+    TL__OPT_FLOAT(dof.focus_distance, TL__OPT_ABOVE_0, 0, "the camera's distance to its target", "view units",
+                  "depth of field: view distance in focus"),
+    TL__OPT_FLOAT(dof.aperture, 0.0, 1.0, TL_OPTION_MIN_OPEN, 0.01, NULL, "of the image height",
+                  "depth of field: circle of confusion's radius at infinity"),
+    TL__OPT_FLOAT(dof.max_radius, 0.0, 1.0, TL_OPTION_MIN_OPEN, 0, "2 x aperture", "of the image height",
+                  "depth of field: largest circle of confusion"),
+    TL__OPT_UINT(dof.samples, 8, 128, 0, 48, "taps", "depth of field: gather taps"),
+};
+
+/* Off: zeroed whole; the largest circle follows the aperture (a zero focus distance stays: the
+ * camera's target, per frame). */
+static void tl__dof_resolve(void *options)
 {
     tl_dof_desc *f = (tl_dof_desc *)options;
-    if (!f->enabled) {
-        memset(f, 0, sizeof *f);
-        return 1;
-    }
-    f->enabled = 1;
-    if (!(f->focus_distance > 0.0f)) f->focus_distance = 0.0f; /* 0: the camera's target, per frame */
-    if (!(f->aperture > 0.0f)) f->aperture = 0.01f;
-    if (!(f->max_radius > 0.0f)) f->max_radius = 2.0f * f->aperture;
-    if (!f->samples) f->samples = 48;
-    const tl__option_range rows[] = {
-        TL__RANGE_INT(f->samples < 8 || f->samples > 128, "samples", f->samples, "8..128; 0: 48"),
-        TL__RANGE_FLOAT(!isfinite(f->focus_distance), "focus_distance", f->focus_distance, "finite; <= 0: the target's"),
-        TL__RANGE_FLOAT(!(f->aperture <= 1.0f), "aperture", f->aperture, "(0, 1]; <= 0: 0.01"),
-        TL__RANGE_FLOAT(!(f->max_radius <= 1.0f), "max_radius", f->max_radius, "(0, 1]; <= 0: 2 aperture"),
-    };
-    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
+    if (!f->enabled) memset(f, 0, sizeof *f);
+    else if (f->max_radius == 0.0f) f->max_radius = 2.0f * f->aperture;
 }
 
 /* std140 block tl_dof_block of shaders/dof.frag.glsl: focus distance, aperture, largest CoC, 0. */
@@ -158,7 +148,7 @@ const tl__pass_def tl__pass_dof = {
     .name = "dof",
     .programs = {{"dof", "fullscreen.vert.glsl", "dof.frag.glsl"}},
     .targets = {&tl__target_dof},
-    TL__OPTIONS(dof),
+    TL__OPTIONS(dof, tl__dof_rows),
     .resolve = tl__dof_resolve,
     .params_size = 4 * sizeof(float),
     .params = tl__dof_params,

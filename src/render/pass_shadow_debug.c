@@ -13,12 +13,10 @@
 
 static const tl__target_def tl__target_shadow_debug = {TL__TARGET(SHADOW_DEBUG, "shadow.debug"), .format = GL_RGBA16F};
 
-static int tl__shadow_debug_resolve(void *options, const char *prefix, tl__why *why)
-{
-    int *on = (int *)options;
-    const tl__option_range row = TL__RANGE_INT(*on != 0 && *on != 1, NULL, *on, "0 or 1");
-    return tl__option_ranges(&row, 1, prefix, why);
-}
+/* tl_renderer_options.shadow_debug in the option registry. */
+static const tl_option_info tl__shadow_debug_rows[] = {
+    TL__OPT_BOOL(shadow_debug, "the frame also writes shadow.debug (shadow term, cascade)"),
+};
 
 int tl__shadow_debug_planned(const tl__plan_input *in)
 {
@@ -54,8 +52,7 @@ const tl__pass_def tl__pass_shadow_debug = {
     .name = "shadow-debug",
     .programs = {{"shadow-debug", "fullscreen.vert.glsl", "shadow_debug.frag.glsl"}},
     .targets = {&tl__target_shadow_debug},
-    TL__OPTIONS(shadow_debug),
-    .resolve = tl__shadow_debug_resolve,
+    TL__OPTIONS(shadow_debug, tl__shadow_debug_rows),
     .declare = tl__shadow_debug_declare,
     .permute = tl__shadow_debug_permute,
     .execute = tl__draw_fullscreen,

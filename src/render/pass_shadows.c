@@ -25,7 +25,7 @@ static const tl__target_def tl__target_shadow_atlas = {.id = TL_TARGET_SHADOW_AT
  * exactly the plan without shadows. */
 void tl__shadows_plan(tl__plan_input *in)
 {
-    if (!in->lights || !in->f.shadow_lights || in->o->shadows.disabled) return;
+    if (!in->lights || !in->f.shadow_lights || in->o->shadows.enabled == TL_SWITCH_OFF) return;
     in->shadows = (uint32_t)in->f.shadow_lights;
     tl__perm_flag(&in->spec_perm, TL__F_SHADOWS);
     if (in->o->shadows.filter == TL_SHADOW_FILTER_PCSS) tl__perm_flag(&in->spec_perm, TL__F_PCSS);

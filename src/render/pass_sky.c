@@ -11,21 +11,13 @@
 
 #define TL__B(t) TL_TARGET_BIT(TL_TARGET_##t)
 
-/* tl_environment_options's defaults; 0 for values out of range. */
-static int tl__sky_resolve(void *options, const char *prefix, tl__why *why)
-{
-    tl_environment_options *e = (tl_environment_options *)options;
-    if (e->intensity == 0.0f) e->intensity = 1.0f;
-    const float *bg = e->background;
-    const tl__option_range rows[] = {
-        TL__RANGE_FLOAT(!(bg[0] >= 0.0f && bg[0] <= 65504.0f), "background[0]", bg[0], "0..65504"),
-        TL__RANGE_FLOAT(!(bg[1] >= 0.0f && bg[1] <= 65504.0f), "background[1]", bg[1], "0..65504"),
-        TL__RANGE_FLOAT(!(bg[2] >= 0.0f && bg[2] <= 65504.0f), "background[2]", bg[2], "0..65504"),
-        TL__RANGE_FLOAT(!(e->intensity > 0.0f && e->intensity <= 65504.0f), "intensity", e->intensity,
-                        "(0, 65504]; 0: 1"),
-    };
-    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
-}
+/* tl_environment_options in the option registry (docs/renderer.md, "Background and environment"). */
+static const tl_option_info tl__environment_rows[] = {
+    TL__OPT_FLOAT3(environment.background, 0.0, 65504.0, 0, NULL, "linear radiance",
+                   "background where no geometry is drawn and no environment is set (0: black, no sky pass)"),
+    TL__OPT_FLOAT(environment.intensity, 0.0, 65504.0, TL_OPTION_MIN_OPEN, 1, NULL, "",
+                  "scales the environment, as sky and as light"),
+};
 
 /* std140 block tl_sky_block of shaders/sky.frag.glsl: the background, the intensity. */
 static void tl__sky_params(const tl_renderer_options *o, const tl__view *v, void *block)
@@ -62,8 +54,7 @@ const tl__pass_def tl__pass_sky = {
     .id = TL_PASS_SKY,
     .name = "sky",
     .programs = {{"sky", "fullscreen.vert.glsl", "sky.frag.glsl"}},
-    TL__OPTIONS(environment),
-    .resolve = tl__sky_resolve,
+    TL__OPTIONS(environment, tl__environment_rows),
     .params_size = 4 * sizeof(float),
     .params = tl__sky_params,
     .declare = tl__sky_declare,

@@ -16,32 +16,26 @@
 static const tl__target_def tl__target_ao_raw = {TL__TARGET(AO_RAW, "ao.raw"), .format = GL_R16F};
 static const tl__target_def tl__target_ao = {TL__TARGET(AO, "ao"), .format = GL_R16F};
 
-/* tl_ssao_desc's defaults (docs/effects.md); 0 for values out of range. */
-static int tl__ssao_resolve(void *options, const char *prefix, tl__why *why)
+/* tl_ssao_desc in the option registry (docs/effects.md). */
+static const tl_option_info tl__ssao_rows[] = {
+    TL__OPT_BOOL(ssao.enabled, "screen-space ambient occlusion"),
+    TL__OPT_ENUM(ssao.method, tl_ssao_method, TL_SSAO_COUNT_, TL_SSAO_DISC, NULL,
+                 "SSAO estimator: the slides' Poisson disc, or a normal-oriented hemisphere"),
+    TL__OPT_UINT(ssao.samples, 1, 64, 0, 16, "samples", "SSAO: samples per pixel"),
+    TL__OPT_FLOAT(ssao.radius, TL__OPT_ABOVE_0, 1, NULL, "view units", "SSAO: radius of the neighbourhood"),
+    TL__OPT_FLOAT(ssao.bias, 0.0, TL__OPT_FINITE, 0, 0, NULL, "view units", "SSAO: k_b, distance that occludes fully"),
+    TL__OPT_FLOAT(ssao.falloff, TL__OPT_ABOVE_0, 0, "2 x radius", "view units", "SSAO: k_d, width of the fall-off after k_b"),
+    TL__OPT_FLOAT(ssao.exponent, TL__OPT_ABOVE_0, 3, NULL, "", "SSAO: exponent x of each sample's term"),
+    TL__OPT_UINT(ssao.blur_radius, 1, 8, 0, 2, "px", "SSAO: half-width of the depth-aware blur"),
+    TL__OPT_BOOL(ssao.diffuse, "SSAO also scales the diffuse light (thin-lpp, forward)"),
+};
+
+/* Off: zeroed whole; the fall-off follows the radius. */
+static void tl__ssao_resolve(void *options)
 {
     tl_ssao_desc *s = (tl_ssao_desc *)options;
-    const tl__option_range method = TL__RANGE_ENUM("method", s->method, TL_SSAO_COUNT_, "tl_ssao_method");
-    if (!tl__option_ranges(&method, 1, prefix, why)) return 0;
-    if (s->method == TL_SSAO_OFF) {
-        memset(s, 0, sizeof *s);
-        return 1;
-    }
-    if (!s->samples) s->samples = 16;
-    if (!(s->radius > 0.0f)) s->radius = 1.0f;
-    if (!(s->falloff > 0.0f)) s->falloff = 2.0f * s->radius;
-    if (!(s->exponent > 0.0f)) s->exponent = 3.0f;
-    if (!(s->bias > 0.0f)) s->bias = 0.0f;
-    if (!s->blur_radius) s->blur_radius = 2;
-    s->diffuse = s->diffuse != 0;
-    const tl__option_range rows[] = {
-        TL__RANGE_INT(s->samples > 64, "samples", s->samples, "1..64; 0: 16"),
-        TL__RANGE_INT(s->blur_radius > 8, "blur_radius", s->blur_radius, "1..8; 0: 2"),
-        TL__RANGE_FLOAT(!isfinite(s->radius), "radius", s->radius, "finite; <= 0: 1"),
-        TL__RANGE_FLOAT(!isfinite(s->falloff), "falloff", s->falloff, "finite; <= 0: 2 radius"),
-        TL__RANGE_FLOAT(!isfinite(s->exponent), "exponent", s->exponent, "finite; <= 0: 3"),
-        TL__RANGE_FLOAT(!isfinite(s->bias), "bias", s->bias, "finite; <= 0: 0"),
-    };
-    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
+    if (!s->enabled) memset(s, 0, sizeof *s);
+    else if (s->falloff == 0.0f) s->falloff = 2.0f * s->radius;
 }
 
 /* std140 block tl_ssao_block of shaders/ssao.frag.glsl: radius, k_b, k_d, exponent. */
@@ -81,14 +75,14 @@ static void tl__ssao_permute(const tl__plan_input *in, const tl__pass_decl *d, t
     tl__perm_flag(k, tl__ssao_fat(in) ? TL__F_SSAO_FAT : in->mode->forward ? TL__F_SSAO_DEPTH_NORMALS : in->rt0_flag);
 }
 
-static int tl__ssao_wanted(const tl_renderer_options *o) { return o->ssao.method != TL_SSAO_OFF; }
+static int tl__ssao_wanted(const tl_renderer_options *o) { return o->ssao.enabled; }
 
 const tl__pass_def tl__pass_ssao = {
     .id = TL_PASS_SSAO,
     .name = "ssao",
     .programs = {{"ssao", "fullscreen.vert.glsl", "ssao.frag.glsl"}},
     .targets = {&tl__target_ao_raw, &tl__target_ao},
-    TL__OPTIONS(ssao),
+    TL__OPTIONS(ssao, tl__ssao_rows),
     .resolve = tl__ssao_resolve,
     .params_size = 4 * sizeof(float),
     .params = tl__ssao_params,

@@ -13,32 +13,25 @@
 
 static const tl__target_def tl__target_ssr = {TL__TARGET(SSR, "ssr"), .format = GL_RGBA16F};
 
-/* tl_ssr_desc's defaults (docs/effects.md); 0 for values out of range. */
-static int tl__ssr_resolve(void *options, const char *prefix, tl__why *why)
+/* tl_ssr_desc in the option registry (docs/effects.md). */
+static const tl_option_info tl__ssr_rows[] = {
+    TL__OPT_BOOL(ssr.enabled, "screen-space reflections (thin-lpp, thin-deferred, fat)"),
+    TL__OPT_UINT(ssr.steps, 4, 256, 0, 48, "steps", "SSR: linear steps along the ray"),
+    TL__OPT_UINT(ssr.refine, 1, 8, 0, 4, "steps", "SSR: binary refinement steps after a hit"),
+    TL__OPT_FLOAT(ssr.max_distance, TL__OPT_ABOVE_0, 16, NULL, "view units", "SSR: length of a ray"),
+    TL__OPT_FLOAT(ssr.thickness, TL__OPT_ABOVE_0, 0.4, NULL, "view units",
+                  "SSR: how far behind a surface a ray still hits it"),
+    TL__OPT_FLOAT(ssr.min_gloss, 0.0, 1.0, TL_OPTION_MIN_OPEN | TL_OPTION_MAX_OPEN | TL_OPTION_NEGATIVE_ZERO, 0.4, NULL,
+                  "", "SSR: gloss below which a pixel reflects nothing"),
+    TL__OPT_FLOAT(ssr.edge_fade, 0.0, 0.5, TL_OPTION_MIN_OPEN, 0.1, NULL, "of the screen",
+                  "SSR: where hits fade out at the screen's edges"),
+    TL__OPT_FLOAT(ssr.intensity, TL__OPT_ABOVE_0, 1, NULL, "", "SSR: scale of the added reflection"),
+};
+
+static void tl__ssr_resolve(void *options)
 {
     tl_ssr_desc *s = (tl_ssr_desc *)options;
-    if (!s->enabled) {
-        memset(s, 0, sizeof *s);
-        return 1;
-    }
-    s->enabled = 1;
-    if (!s->steps) s->steps = 48;
-    if (!s->refine) s->refine = 4;
-    if (!(s->max_distance > 0.0f)) s->max_distance = 16.0f;
-    if (!(s->thickness > 0.0f)) s->thickness = 0.4f;
-    if (!(s->min_gloss > 0.0f)) s->min_gloss = s->min_gloss == 0.0f ? 0.4f : 0.0f;
-    if (!(s->edge_fade > 0.0f)) s->edge_fade = 0.1f;
-    if (!(s->intensity > 0.0f)) s->intensity = 1.0f;
-    const tl__option_range rows[] = {
-        TL__RANGE_INT(s->steps < 4 || s->steps > 256, "steps", s->steps, "4..256; 0: 48"),
-        TL__RANGE_INT(s->refine > 8, "refine", s->refine, "1..8; 0: 4"),
-        TL__RANGE_FLOAT(!isfinite(s->max_distance), "max_distance", s->max_distance, "finite; <= 0: 16"),
-        TL__RANGE_FLOAT(!isfinite(s->thickness), "thickness", s->thickness, "finite; <= 0: 0.4"),
-        TL__RANGE_FLOAT(!(s->min_gloss < 1.0f), "min_gloss", s->min_gloss, "[0, 1); 0: 0.4, < 0: 0"),
-        TL__RANGE_FLOAT(!(s->edge_fade <= 0.5f), "edge_fade", s->edge_fade, "(0, 0.5]; <= 0: 0.1"),
-        TL__RANGE_FLOAT(!isfinite(s->intensity), "intensity", s->intensity, "finite; <= 0: 1"),
-    };
-    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
+    if (!s->enabled) memset(s, 0, sizeof *s);
 }
 
 /* std140 block tl_ssr_block of shaders/ssr.frag.glsl. */
@@ -85,7 +78,7 @@ const tl__pass_def tl__pass_ssr = {
     .name = "ssr",
     .programs = {{"ssr", "fullscreen.vert.glsl", "ssr.frag.glsl"}},
     .targets = {&tl__target_ssr},
-    TL__OPTIONS(ssr),
+    TL__OPTIONS(ssr, tl__ssr_rows),
     .resolve = tl__ssr_resolve,
     .params_size = sizeof(tl__ssr_block),
     .params = tl__ssr_params,

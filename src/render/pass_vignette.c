@@ -13,24 +13,18 @@
 
 static const tl__target_def tl__target_vignette = {TL__TARGET(VIGNETTE, "vignette"), .format = GL_R16F};
 
-/* tl_vignette_desc's defaults; 0 for values out of range. */
-static int tl__vignette_resolve(void *options, const char *prefix, tl__why *why)
+/* tl_vignette_desc in the option registry. */
+static const tl_option_info tl__vignette_rows[] = {
+    TL__OPT_BOOL(vignette.enabled, "vignette: HDR darkened towards the corners"),
+    TL__OPT_FLOAT(vignette.strength, 0.0, 1.0, TL_OPTION_MIN_OPEN, 0.5, NULL, "", "vignette: darkening at full fall-off"),
+    TL__OPT_FLOAT(vignette.radius, TL__OPT_ABOVE_0, 0.5, NULL, "of the half-diagonal", "vignette: where the fall-off starts"),
+    TL__OPT_FLOAT(vignette.softness, TL__OPT_ABOVE_0, 0.5, NULL, "of the half-diagonal", "vignette: the fall-off's width"),
+};
+
+static void tl__vignette_resolve(void *options)
 {
     tl_vignette_desc *v = (tl_vignette_desc *)options;
-    if (!v->enabled) {
-        memset(v, 0, sizeof *v);
-        return 1;
-    }
-    v->enabled = 1;
-    if (!(v->strength > 0.0f)) v->strength = 0.5f;
-    if (!(v->radius > 0.0f)) v->radius = 0.5f;
-    if (!(v->softness > 0.0f)) v->softness = 0.5f;
-    const tl__option_range rows[] = {
-        TL__RANGE_FLOAT(!(v->strength <= 1.0f), "strength", v->strength, "(0, 1]; <= 0: 0.5"),
-        TL__RANGE_FLOAT(!isfinite(v->radius), "radius", v->radius, "finite; <= 0: 0.5"),
-        TL__RANGE_FLOAT(!isfinite(v->softness), "softness", v->softness, "finite; <= 0: 0.5"),
-    };
-    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
+    if (!v->enabled) memset(v, 0, sizeof *v);
 }
 
 /* std140 block tl_vignette_block of shaders/vignette.frag.glsl: strength, radius, softness, 0. */
@@ -87,7 +81,7 @@ const tl__pass_def tl__pass_vignette = {
     .programs = {{"vignette.factor", "fullscreen.vert.glsl", "vignette.frag.glsl"},
                  {"vignette.apply", "fullscreen.vert.glsl", "vignette.frag.glsl"}},
     .targets = {&tl__target_vignette},
-    TL__OPTIONS(vignette),
+    TL__OPTIONS(vignette, tl__vignette_rows),
     .resolve = tl__vignette_resolve,
     .params_size = 4 * sizeof(float),
     .params = tl__vignette_params,

@@ -128,7 +128,7 @@ static void tl__plan_input_init(const tl_renderer_desc *d, const tl_scene_featur
     in->o = &in->d.options;
     in->f = *features;
     tl_scene_feature_set *f = &in->f;
-    if (d->options.no_planning) { /* plan for every feature, as a renderer without a planner would */
+    if (d->options.planning == TL_SWITCH_OFF) { /* plan for every feature, as a renderer without a planner would */
         f->point_lights += !f->point_lights;
         f->spot_lights += !f->spot_lights;
         f->directional_lights += !f->directional_lights;

@@ -49,11 +49,11 @@ static void tl__downgrades_passes(const tl__plan_input *in, tl_frame_plan *p)
     const tl_renderer_options *o = in->o;
     if (o->ssr.enabled && in->mode->forward)
         tl__downgrade(p, "ssr.enabled", "1", "0", "forward has no G-buffer gloss to read");
-    if (o->ssao.method != TL_SSAO_OFF && !tl__ssao_pass(in))
-        tl__downgrade(p, "ssao.method", o->ssao.method == TL_SSAO_HEMISPHERE ? "hemisphere" : "disc", "off",
-                      "forward without its depth pre-pass (forward_no_depth_prepass) has no depth to read");
-    if (o->forward_no_depth_prepass && in->mode->forward && tl__forward_plus(in))
-        tl__downgrade(p, "forward_no_depth_prepass", "1", "0", "Forward+ culls its tiles on the pre-pass's depth");
+    if (o->ssao.enabled && !tl__ssao_pass(in))
+        tl__downgrade(p, "ssao.enabled", "1", "0",
+                      "forward without its depth pre-pass (forward_depth_prepass off) has no depth to read");
+    if (o->forward_depth_prepass == TL_SWITCH_OFF && in->mode->forward && tl__forward_plus(in))
+        tl__downgrade(p, "forward_depth_prepass", "off", "on", "Forward+ culls its tiles on the pre-pass's depth");
     /* without a casting light there is no shadow to show: nothing replaced */
     if (o->shadow_debug && in->shadows && !tl__shadow_debug_planned(in))
         tl__downgrade(p, "shadow_debug", "1", "0", "a multisampled G-buffer or depth (MSAA) would need a sample chosen");

@@ -12,37 +12,10 @@
 
 #include "shadows.h"
 
-void tl__shadow_desc_resolve(tl_shadow_desc *s)
-{
-    if (!s->atlas_size) s->atlas_size = 4096;
-    if (!s->max_lights) s->max_lights = 8;
-    if (!s->pcf_radius) s->pcf_radius = 1;
-    if (s->no_pcf) s->pcf_radius = 0;
-    if (s->filter == TL_SHADOW_FILTER_DEFAULT) s->filter = TL_SHADOW_FILTER_PCF;
-    if (s->directional_angle == 0.0f) s->directional_angle = 0.00465f;
-}
-
-int tl__shadow_desc_check(const tl_shadow_desc *s, const char *prefix, tl__why *why)
-{
-    uint32_t a = s->atlas_size;
-    char lights[32];
-    snprintf(lights, sizeof lights, "1..%u; 0: 8", (unsigned)TL__SHADOW_MAX_LIGHTS);
-    const tl__option_range rows[] = {
-        TL__RANGE_INT(a < 1024 || a > 16384 || (a & (a - 1)) != 0, "atlas_size", a,
-                      "a power of two, 1024..16384; 0: 4096"),
-        TL__RANGE_INT(s->max_lights > TL__SHADOW_MAX_LIGHTS, "max_lights", s->max_lights, lights),
-        TL__RANGE_INT(s->pcf_radius > 3, "pcf_radius", s->pcf_radius, "0..3; 0: 1"),
-        TL__RANGE_INT(s->filter < TL_SHADOW_FILTER_PCF || s->filter > TL_SHADOW_FILTER_PCSS, "filter", (int)s->filter,
-                      "1 PCF or 2 PCSS; 0: PCF"),
-        TL__RANGE_FLOAT(!(s->directional_angle > 0.0f && s->directional_angle <= 0.2f), "directional_angle",
-                        s->directional_angle, "(0, 0.2] radians; 0: 0.00465"),
-    };
-    return tl__option_ranges(rows, sizeof rows / sizeof rows[0], prefix, why);
-}
-
 /* ---- matrices ----------------------------------------------------------------------------------- */
 
 static float tl__dot3(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+static float tl__norm3(const float a[3]) { return sqrtf(tl__dot3(a, a)); }
 
 static void tl__cross3(const float a[3], const float b[3], float out[3])
 {
@@ -72,26 +45,30 @@ static tl__mat4 tl__look(const float eye[3], const float f[3])
     return m;
 }
 
-/* Perspective (w = -z) with depth [-1, 1] (GL) or reversed [1, 0] (clip control [0, 1]). */
-static tl__mat4 tl__perspective(float tan_half, float n, float f, int reversed)
+/* Perspective (w = -z) with reversed depth, near 1 and far 0 (clip control [0, 1]): the atlas's one
+ * convention whatever the frame's depth format. Standard GL depth would hold the light distance w
+ * only to w^2 / n of a float step near 1, and the reference computed from camera-space positions
+ * (terms of the camera's distances, not w) would err by float's step times those distances times
+ * w / n: for a point light (n = radius / 1024) a thousand times the reversed map's error. */
+static tl__mat4 tl__perspective(float tan_half, float n, float f)
 {
     tl__mat4 m = {{0}};
     m.m[0] = m.m[5] = 1.0f / tan_half;
     m.m[11] = -1.0f;
-    m.m[10] = reversed ? n / (f - n) : -(f + n) / (f - n);
-    m.m[14] = reversed ? n * f / (f - n) : -2.0f * f * n / (f - n);
+    m.m[10] = n / (f - n);
+    m.m[14] = n * f / (f - n);
     return m;
 }
 
-/* Orthographic over x, y in [-h, h] around (cx, cy) (light view), depth n..f, as above. */
-static tl__mat4 tl__ortho(float cx, float cy, float h, float n, float f, int reversed)
+/* Orthographic over x, y in [-h, h] around (cx, cy) (light view), depth n..f reversed (1 to 0). */
+static tl__mat4 tl__ortho(float cx, float cy, float h, float n, float f)
 {
     tl__mat4 m = {{0}};
     m.m[0] = m.m[5] = 1.0f / h;
     m.m[12] = -cx / h;
     m.m[13] = -cy / h;
-    m.m[10] = reversed ? 1.0f / (f - n) : -2.0f / (f - n);
-    m.m[14] = reversed ? f / (f - n) : -(f + n) / (f - n);
+    m.m[10] = 1.0f / (f - n);
+    m.m[14] = f / (f - n);
     m.m[15] = 1.0f;
     return m;
 }
@@ -132,6 +109,41 @@ static int tl__atlas_alloc(tl__atlas_grid *g, uint32_t size, uint32_t *x, uint32
             return 1;
         }
     return 0;
+}
+
+static uint32_t tl__kind_views(int kind)
+{
+    return kind == TL_LIGHT_POINT ? 6u : kind == TL_LIGHT_SPOT ? 1u : (uint32_t)TL__SHADOW_CASCADES;
+}
+
+/* Tile sides, in cells, of the lights that get a map (in rank order, `kinds`): each light takes the
+ * largest side its kind allows (directional 8 cells, a quarter of the atlas; spot and point 4, an
+ * eighth) whose views leave every later light room at one cell (1/32 of the atlas): the budget's
+ * 64 point lights need 384 of the 1024 cells, so every light in it gets a map. */
+static void tl__tile_sides(const int *kinds, size_t n, uint32_t *sides)
+{
+    uint32_t reserve = 0, left = TL__ATLAS_CELLS * TL__ATLAS_CELLS;
+    for (size_t j = 0; j < n; j++) reserve += tl__kind_views(kinds[j]);
+    for (size_t j = 0; j < n; j++) {
+        uint32_t views = tl__kind_views(kinds[j]), c = kinds[j] == TL_LIGHT_DIRECTIONAL ? 8u : 4u;
+        reserve -= views;
+        while (c > 1 && views * c * c > left - reserve) c /= 2;
+        sides[j] = c;
+        left -= views * c * c;
+    }
+}
+
+/* Places the tiles, largest first (then by rank): aligned power-of-two squares placed in falling
+ * size each find a free aligned square while their area fits, so none fails. xy: 2 x 6 per light. */
+static void tl__tile_place(const int *kinds, const uint32_t *sides, size_t n, uint32_t cell, uint32_t (*xy)[12])
+{
+    tl__atlas_grid grid;
+    memset(&grid, 0, sizeof grid);
+    grid.cell = cell;
+    for (uint32_t c = 8; c >= 1; c /= 2)
+        for (size_t j = 0; j < n; j++)
+            for (uint32_t v = 0; sides[j] == c && v < tl__kind_views(kinds[j]); v++)
+                tl__atlas_alloc(&grid, c * cell, &xy[j][2 * v], &xy[j][2 * v + 1]);
 }
 
 /* ---- selection ------------------------------------------------------------------------------ */
@@ -198,8 +210,8 @@ typedef struct tl__view_ctx {
     tl__mat4 view_inv;   /* camera view to world */
     uint32_t atlas;      /* side in texels */
     uint32_t pcf;        /* kernel radius (PCSS: its largest) */
-    int reversed;
     float light_size;    /* PCSS: the light's radius (world) or its disc's angular radius's tangent */
+    float camera;        /* the camera's distance from the world's origin */
     const tl__scene_gpu *g;
 } tl__view_ctx;
 
@@ -246,20 +258,20 @@ uint64_t tl__shadow_casters(const tl__scene_gpu *g, const tl__mat4 *world_clip,
 /* PCSS: the stored depth d to the light-space distance z (perspective: 1/z = x d + y, from clip
  * z = P22 z_view + P23 and w = -z_view; orthographic: z = x d + y) and the light's size in texels
  * (a radius R at the light: R / texel per w; a disc of angular radius a: tan a / texel). */
-static void tl__view_depth(tl__shadow_view_gpu *gv, const tl__mat4 *proj, float texel_per_w, float size, int persp,
-                           int reversed)
+static void tl__view_depth(tl__shadow_view_gpu *gv, const tl__mat4 *proj, float texel_per_w, float size, int persp)
 {
-    float a = proj->m[10], b = proj->m[14], k = reversed ? 1.0f : 2.0f, o = reversed ? 0.0f : 1.0f;
-    gv->depth[0] = persp ? k / b : -k / a;
-    gv->depth[1] = persp ? (a - o) / b : (b + o) / a;
+    float a = proj->m[10], b = proj->m[14];
+    gv->depth[0] = persp ? 1.0f / b : -1.0f / a;
+    gv->depth[1] = persp ? a / b : b / a;
     gv->depth[2] = size / texel_per_w;
     gv->depth[3] = (float)persp;
 }
 
-/* One view: its matrices for rendering and lookup, its tile, the bias coefficients. `persp`: the
- * projection's near and far for the atlas depth's quantum (0, 0: orthographic over `depth`). */
+/* One view: its matrices for rendering and lookup, its tile, the bias coefficients. `persp`: a
+ * perspective view (else orthographic); n and f its depth range; `eye` its eye's distance from the
+ * world's origin. */
 static void tl__view_add(tl__shadows *s, const tl__view_ctx *c, const tl__mat4 *proj, const tl__mat4 *look,
-                         float texel_per_w, float n, float f, int persp, uint32_t x, uint32_t y, uint32_t size)
+                         float texel_per_w, float n, float f, int persp, float eye, uint32_t x, uint32_t y, uint32_t size)
 {
     size_t i = s->view_count++;
     tl__shadow_view *sv = &s->views[i];
@@ -273,13 +285,16 @@ static void tl__view_add(tl__shadows *s, const tl__view_ctx *c, const tl__mat4 *
     gv->rect[0] = (float)x / a, gv->rect[1] = (float)y / a, gv->rect[2] = gv->rect[3] = (float)size / a;
     gv->texel[0] = texel_per_w;
     /* the atlas depth's quantum along the light, two float32 steps (the stored value's rounding
-     * and the reference's arithmetic): perspective GL depth near 1 steps 2^-24 over dd/dz =
-     * f n / ((f - n) z^2); reversed, d = n (f - z) / (z (f - n)) steps d 2^-23, z 2^-23 in z;
-     * orthographic, depth is linear over f - n */
+     * and the reference's arithmetic): reversed perspective, d = n (f - z) / (z (f - n)) steps d
+     * 2^-23, z 2^-23 in z; orthographic, depth is linear over f - n */
     gv->texel[1] = persp ? 0.0f : 2.0f * ldexpf(1.0f, -24) * (f - n);
-    gv->texel[2] = persp && c->reversed ? 2.0f * ldexpf(1.0f, -23) : 0.0f;
-    gv->texel[3] = persp && !c->reversed ? 2.0f * ldexpf(1.0f, -24) * (f - n) / (f * n) : 0.0f;
-    tl__view_depth(gv, proj, texel_per_w, c->light_size, persp, c->reversed);
+    gv->texel[2] = persp ? 2.0f * ldexpf(1.0f, -23) : 0.0f;
+    /* the light distance both sides compute from coordinates of other origins (the lookup from
+     * camera space, the shadow pass from object and world space) errs by float's step times those
+     * coordinates' sizes (shadow.glsl's e_arith): here their part that does not depend on the point,
+     * 2 |eye| + 3 |camera| (world; a cascade's eye is the origin) */
+    gv->texel[3] = 2.0f * eye + 3.0f * c->camera;
+    tl__view_depth(gv, proj, texel_per_w, c->light_size, persp);
     uint64_t h = tl__fnv(14695981039346656037ull, sv->world_clip.m, sizeof sv->world_clip.m);
     uint32_t tile[3] = {x, y, size};
     h = tl__fnv(h, tile, sizeof tile);
@@ -301,8 +316,8 @@ static void tl__spot_views(tl__shadows *s, const tl__view_ctx *c, const tl_light
     float co = fmaxf(l->cos_outer, 0.17f); /* at most 80 degrees off the axis: wider cones lose the rest */
     float tan_half = tl__tan_margin(sqrtf(1.0f - co * co) / co, c->pcf, size);
     float n = l->radius / 1024.0f, f = l->radius;
-    tl__mat4 look = tl__look(l->position, dir), proj = tl__perspective(tan_half, n, f, c->reversed);
-    tl__view_add(s, c, &proj, &look, 2.0f * tan_half / (float)size, n, f, 1, xy[0], xy[1], size);
+    tl__mat4 look = tl__look(l->position, dir), proj = tl__perspective(tan_half, n, f);
+    tl__view_add(s, c, &proj, &look, 2.0f * tan_half / (float)size, n, f, 1, tl__norm3(l->position), xy[0], xy[1], size);
 }
 
 static void tl__point_views(tl__shadows *s, const tl__view_ctx *c, const tl_light *l, const uint32_t *xy, uint32_t size)
@@ -310,10 +325,11 @@ static void tl__point_views(tl__shadows *s, const tl__view_ctx *c, const tl_ligh
     static const float dirs[6][3] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
     float tan_half = tl__tan_margin(1.0f, c->pcf, size);
     float n = l->radius / 1024.0f, f = l->radius;
-    tl__mat4 proj = tl__perspective(tan_half, n, f, c->reversed);
+    tl__mat4 proj = tl__perspective(tan_half, n, f);
     for (int k = 0; k < 6; k++) {
         tl__mat4 look = tl__look(l->position, dirs[k]);
-        tl__view_add(s, c, &proj, &look, 2.0f * tan_half / (float)size, n, f, 1, xy[2 * k], xy[2 * k + 1], size);
+        tl__view_add(s, c, &proj, &look, 2.0f * tan_half / (float)size, n, f, 1, tl__norm3(l->position), xy[2 * k],
+                     xy[2 * k + 1], size);
     }
 }
 
@@ -382,24 +398,9 @@ static void tl__cascade_views(tl__shadows *s, const tl__view_ctx *c, const tl_li
         cl[1] = floorf(cl[1] / texel) * texel;
         float n, f;
         tl__cascade_depth(c, &look, cl, r, &n, &f);
-        tl__mat4 proj = tl__ortho(cl[0], cl[1], r, n, f, c->reversed);
-        tl__view_add(s, c, &proj, &look, texel, n, f, 0, xy[2 * i], xy[2 * i + 1], size);
+        tl__mat4 proj = tl__ortho(cl[0], cl[1], r, n, f);
+        tl__view_add(s, c, &proj, &look, texel, n, f, 0, 0.0f, xy[2 * i], xy[2 * i + 1], size);
     }
-}
-
-/* Tiles for a light's views, largest first then halved while the atlas has no room (down to 1/32
- * of it); 0 when none fits. */
-static uint32_t tl__light_tiles(tl__atlas_grid *grid, int kind, uint32_t atlas, uint32_t *xy)
-{
-    uint32_t views = kind == TL_LIGHT_POINT ? 6 : kind == TL_LIGHT_SPOT ? 1 : TL__SHADOW_CASCADES;
-    for (uint32_t size = kind == TL_LIGHT_DIRECTIONAL ? atlas / 4 : atlas / 8; size >= grid->cell; size /= 2) {
-        tl__atlas_grid saved = *grid;
-        uint32_t v = 0;
-        for (; v < views && tl__atlas_alloc(grid, size, &xy[2 * v], &xy[2 * v + 1]); v++) {}
-        if (v == views) return size;
-        *grid = saved;
-    }
-    return 0;
 }
 
 /* ---- the frame ------------------------------------------------------------------------------ */
@@ -407,8 +408,8 @@ static uint32_t tl__light_tiles(tl__atlas_grid *grid, int kind, uint32_t atlas, 
 /* Fades: a light in the budget gains its shadow at once when it takes a free place (nothing is
  * displaced: the first frame, fewer casting lights than the budget) and over
  * TL__SHADOW_FADE_FRAMES frames when it displaces another; a light leaving the budget keeps its map
- * while its shadow fades out. Returns the lights in the budget. */
-static size_t tl__shadow_fades(tl__shadows *s, size_t casting, uint32_t budget)
+ * while its shadow fades out. */
+static void tl__shadow_fades(tl__shadows *s, size_t casting, uint32_t budget)
 {
     size_t selected = 0;
     int displacing = s->light_count >= budget;
@@ -422,20 +423,81 @@ static size_t tl__shadow_fades(tl__shadows *s, size_t casting, uint32_t budget)
             s->fade[i] = fmaxf(0.0f, s->fade[i] - step);
         }
     }
-    return selected;
 }
 
+/* The angular error bound (radians) of the normal the lighting passes read: RT0's octahedral code
+ * rounds each of its two coordinates by half a cell c = 2 / (2^bits - 1), which moves the unnormalised
+ * point (u, v, 1 - |u| - |v|) by at most c sqrt(3/2), and normalising (|point| >= 1/sqrt(3)) turns
+ * that into at most c sqrt(3/2) sqrt(3) = 2.12 c radians; fat's half floats round each component by
+ * 2^-11 relative; forward interpolates float normals (2^-22 for the interpolation and normalising). */
+static float tl__normal_error(const tl_renderer_options *o)
+{
+    if (o->mode == TL_MODE_FAT) return ldexpf(1.0f, -11);
+    if (o->mode == TL_MODE_FORWARD) return ldexpf(1.0f, -22);
+    float cells = o->rt0 == TL_RT0_RGB10A2 ? 1023.0f : 4095.0f; /* 2 x 10 or 2 x 12 bits */
+    return 2.0f / cells * sqrtf(1.5f) * sqrtf(3.0f);
+}
+
+/* The lookup's constants; `reversed`: the frame's depth format (the G-buffer's position error). */
 static void tl__shadow_block_params(tl__shadows *s, const tl__view *v, const tl_renderer_options *o, int reversed)
 {
     s->block.params[0] = 1.0f / (float)o->shadows.atlas_size;
     s->block.params[1] = (float)o->shadows.pcf_radius;
-    /* the position rebuilt from the G-buffer's depth, two steps of its format: reversed D32F keeps
-     * z to 2^-23 relative; D24 steps 2^-24 in window depth, z^2 (f - n) / (f n) 2^-24 in z */
+    /* the position rebuilt from the G-buffer's depth: reversed D32F keeps z to 2^-23 relative, two
+     * steps (the stored value's rounding and the reconstruction's arithmetic); D24 steps 2^-24 in
+     * window depth, z^2 (f - n) / (f n) 2^-24 in z, four steps: the vertex's projection, the
+     * rasterizer's float interpolation (one float ulp below 1 is one D24 step), the conversion to
+     * 24 bits (rounded or truncated) and the read back with the reconstruction's rounded m[10] */
     float n = v->near_z, f = v->info.far_z;
     s->block.params[2] = reversed ? ldexpf(1.0f, -22) : 0.0f;
-    s->block.params[3] = reversed ? 0.0f : ldexpf(1.0f, -23) * (f > 0.0f ? (f - n) / (f * n) : 1.0f / n);
-    s->block.flags[0] = (uint32_t)reversed;
+    s->block.params[3] = reversed ? 0.0f : ldexpf(1.0f, -22) * (f > 0.0f ? (f - n) / (f * n) : 1.0f / n);
     s->block.flags[1] = o->shadows.filter == TL_SHADOW_FILTER_PCSS ? TL__SHADOW_PCSS_RADIUS : 0u;
+    s->block.bias[0] = tl__normal_error(o);
+}
+
+/* One mapped light's record and views; its slot is the record + 1. */
+static void tl__light_record(tl__shadows *s, tl__view_ctx *c, const tl_light *li, uint32_t i, int kind,
+                             const uint32_t *xy, uint32_t size, float angle)
+{
+    tl__shadow_light_gpu *rec = &s->block.lights[s->light_count];
+    c->light_size = kind == TL_LIGHT_DIRECTIONAL ? tanf(angle) : li->source_radius;
+    rec->info[0] = (uint32_t)s->view_count;
+    if (kind == TL_LIGHT_SPOT) tl__spot_views(s, c, li, xy, size);
+    else if (kind == TL_LIGHT_POINT) tl__point_views(s, c, li, xy, size);
+    else tl__cascade_views(s, c, li, xy, size, rec->splits);
+    rec->info[1] = (uint32_t)s->view_count - rec->info[0];
+    for (uint32_t k = rec->info[0]; k < s->view_count; k++) {
+        s->views[k].light = i, s->views[k].index = k - rec->info[0];
+        s->views[k].split = kind == TL_LIGHT_DIRECTIONAL ? rec->splits[k - rec->info[0]] : 0.0f;
+    }
+    rec->info[2] = (uint32_t)kind;
+    rec->fade[0] = s->fade[i];
+    rec->fade[1] = (float)size;
+    s->slots[i] = (float)(++s->light_count);
+}
+
+/* The frame's figures, and once per new largest count a warning naming the casting lights in view
+ * left without a map and why (the budget: the lookup holds at most TL__SHADOW_MAX_LIGHTS). */
+static void tl__shadow_stats(tl__device *dev, tl__shadows *s, size_t casting, const tl_renderer_options *o,
+                             tl_frame_stats *st)
+{
+    uint32_t in_view = 0, mapped = 0, fading = 0;
+    for (size_t j = 0; j < casting; j++) {
+        uint32_t i = s->order[j];
+        in_view += s->score[i] > 0.0f;
+        mapped += s->score[i] > 0.0f && s->slots[i] > 0.0f;
+        fading += s->slots[i] > 0.0f && s->fade[i] < 1.0f;
+    }
+    st->shadow_lights = (uint32_t)s->light_count;
+    st->shadow_lights_fading = fading;
+    st->shadow_lights_unmapped = in_view - mapped;
+    st->shadow_atlas_bytes = (size_t)o->shadows.atlas_size * o->shadows.atlas_size * 4u;
+    if (in_view - mapped <= s->unmapped_logged) return;
+    s->unmapped_logged = in_view - mapped;
+    tl__log_message(&dev->log, TL_LOG_WARNING,
+                    "renderer: %u of %u casting lights in view have no shadow map: shadows.max_lights = %u "
+                    "(the most lights given a map per frame, 1..%d; the brightest and nearest first)",
+                    in_view - mapped, in_view, o->shadows.max_lights, TL__SHADOW_MAX_LIGHTS);
 }
 
 tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights *l, const tl__scene_gpu *g,
@@ -445,47 +507,28 @@ tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights 
     tl_result res = tl__shadow_arrays(dev, s, l->count ? l->count : 1);
     if (res == TL_OK && !s->program) res = tl__program_get(dev, "shadow.depth", &src, NULL, NULL, &s->program);
     if (res != TL_OK) return res;
-    int reversed = o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED;
     /* the views hold the largest kernel: the PCF radius, or PCSS's largest */
     uint32_t reach = o->shadows.filter == TL_SHADOW_FILTER_PCSS ? TL__SHADOW_PCSS_RADIUS : o->shadows.pcf_radius;
-    tl__view_ctx c = {v, tl__rigid_inverse(&v->view), o->shadows.atlas_size, reach, reversed, 0.0f, g};
+    tl__view_ctx c = {v, tl__rigid_inverse(&v->view), o->shadows.atlas_size, reach, 0.0f, tl__norm3(v->eye), g};
     size_t casting = tl__shadow_order(s, l, v);
-    size_t selected = tl__shadow_fades(s, casting, o->shadows.max_lights);
-    tl__atlas_grid grid;
-    memset(&grid, 0, sizeof grid);
-    grid.cell = o->shadows.atlas_size / TL__ATLAS_CELLS;
+    tl__shadow_fades(s, casting, o->shadows.max_lights);
+    /* every light with a shadow strength gets a map, in rank order, as many as the lookup holds */
+    uint32_t mapped[TL__SHADOW_MAX_LIGHTS], sides[TL__SHADOW_MAX_LIGHTS], xy[TL__SHADOW_MAX_LIGHTS][12];
+    int kinds[TL__SHADOW_MAX_LIGHTS];
+    size_t n = 0;
+    for (size_t j = 0; j < casting && n < TL__SHADOW_MAX_LIGHTS; j++)
+        if (s->fade[s->order[j]] > 0.0f) mapped[n] = s->order[j], kinds[n] = tl__light_kind(&l->lights[mapped[n]]), n++;
+    uint32_t cell = o->shadows.atlas_size / TL__ATLAS_CELLS;
+    tl__tile_sides(kinds, n, sides);
+    tl__tile_place(kinds, sides, n, cell, xy);
     s->view_count = s->light_count = 0;
     memset(s->block.lights, 0, sizeof s->block.lights);
-    uint32_t fading = 0;
-    for (size_t j = 0; j < casting && s->light_count < TL__SHADOW_MAX_LIGHTS; j++) {
-        uint32_t i = s->order[j], xy[12];
-        const tl_light *li = &l->lights[i];
-        int kind = tl__light_kind(li);
-        if (s->fade[i] <= 0.0f) continue;
-        uint32_t size = tl__light_tiles(&grid, kind, c.atlas, xy);
-        if (!size) continue;
-        tl__shadow_light_gpu *rec = &s->block.lights[s->light_count];
-        c.light_size = kind == TL_LIGHT_DIRECTIONAL ? tanf(o->shadows.directional_angle) : li->source_radius;
-        rec->info[0] = (uint32_t)s->view_count;
-        if (kind == TL_LIGHT_SPOT) tl__spot_views(s, &c, li, xy, size);
-        else if (kind == TL_LIGHT_POINT) tl__point_views(s, &c, li, xy, size);
-        else tl__cascade_views(s, &c, li, xy, size, rec->splits);
-        rec->info[1] = (uint32_t)s->view_count - rec->info[0];
-        for (uint32_t k = rec->info[0]; k < s->view_count; k++) {
-            s->views[k].light = i, s->views[k].index = k - rec->info[0];
-            s->views[k].split = kind == TL_LIGHT_DIRECTIONAL ? rec->splits[k - rec->info[0]] : 0.0f;
-        }
-        rec->info[2] = (uint32_t)kind;
-        rec->fade[0] = s->fade[i];
-        rec->fade[1] = (float)size;
-        fading += s->fade[i] < 1.0f;
-        s->slots[i] = (float)(++s->light_count);
-    }
-    tl__shadow_block_params(s, v, o, reversed);
+    for (size_t j = 0; j < n; j++)
+        tl__light_record(s, &c, &l->lights[mapped[j]], mapped[j], kinds[j], xy[j], sides[j] * cell,
+                         o->shadows.directional_angle);
+    tl__shadow_block_params(s, v, o, o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED);
     for (size_t i = 0; i < s->view_count; i++)
-        s->views[i].render = o->shadows.no_cache || i >= s->kept_count || s->kept[i] != s->views[i].signature;
-    st->shadow_lights = (uint32_t)selected;
-    st->shadow_lights_fading = fading;
-    st->shadow_atlas_bytes = (size_t)o->shadows.atlas_size * o->shadows.atlas_size * 4u;
+        s->views[i].render = o->shadows.cache == TL_SWITCH_OFF || i >= s->kept_count || s->kept[i] != s->views[i].signature;
+    tl__shadow_stats(dev, s, casting, o, st);
     return TL_OK;
 }

@@ -20,11 +20,12 @@ static void tl__atlas_release(const GladGLContext *gl, tl__shadows *s)
     s->kept_count = 0;
 }
 
-/* The atlas for `size` and the depth convention; 1 when it was made again (every tile is empty). */
-static int tl__atlas_make(tl__device *dev, tl__shadows *s, uint32_t size, int reversed)
+/* The atlas for `size` (reversed depth: far 0, nearer greater); 1 when it was made again (every tile
+ * is empty). */
+static int tl__atlas_make(tl__device *dev, tl__shadows *s, uint32_t size)
 {
     const GladGLContext *gl = &dev->gl;
-    if (s->atlas && s->atlas_size == size && s->reversed == reversed) return 0;
+    if (s->atlas && s->atlas_size == size) return 0;
     tl__atlas_release(gl, s);
     gl->CreateTextures(GL_TEXTURE_2D, 1, &s->atlas);
     gl->TextureStorage2D(s->atlas, 1, GL_DEPTH_COMPONENT32F, (GLsizei)size, (GLsizei)size);
@@ -33,14 +34,13 @@ static int tl__atlas_make(tl__device *dev, tl__shadows *s, uint32_t size, int re
     gl->TextureParameteri(s->atlas, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl->TextureParameteri(s->atlas, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     gl->TextureParameteri(s->atlas, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
-    gl->TextureParameteri(s->atlas, GL_TEXTURE_COMPARE_FUNC, reversed ? GL_GEQUAL : GL_LEQUAL); /* 1: lit */
+    gl->TextureParameteri(s->atlas, GL_TEXTURE_COMPARE_FUNC, GL_GEQUAL); /* 1: lit */
     tl__gl_label(gl, GL_TEXTURE, s->atlas, "shadow.atlas");
     gl->CreateFramebuffers(1, &s->fbo);
     gl->NamedFramebufferTexture(s->fbo, GL_DEPTH_ATTACHMENT, s->atlas, 0);
     gl->NamedFramebufferDrawBuffer(s->fbo, GL_NONE);
     tl__gl_label(gl, GL_FRAMEBUFFER, s->fbo, "shadow.atlas");
     s->atlas_size = size;
-    s->reversed = reversed;
     return 1;
 }
 
@@ -103,11 +103,13 @@ static uint32_t tl__shadow_draw(tl__device *dev, tl__shadows *s, const tl__scene
     tl__state_framebuffer(gl, &dev->state, s->fbo);
     tl__state_program(gl, &dev->state, program);
     tl__state_vertex_array(gl, &dev->state, g->vao);
-    tl__pipeline p = {.depth_test = TL__DEPTH_LESS, .depth_write = 1, .color_write = 0, .cull = TL__CULL_OFF,
-                      .depth_clamp = 1, .clip_zero_one = (uint8_t)s->reversed};
+    /* reversed depth whatever the frame's (shadow_views.c): nearer is greater; the state maps LESS to
+     * GREATER only under a reversed frame */
+    tl__pipeline p = {.depth_test = dev->state.reversed ? TL__DEPTH_LESS : TL__DEPTH_GEQUAL, .depth_write = 1,
+                      .color_write = 0, .cull = TL__CULL_OFF, .depth_clamp = 1, .clip_zero_one = 1};
     tl__state_apply(gl, &dev->state, &p);
     gl->Enable(GL_SCISSOR_TEST);
-    float far = s->reversed ? 0.0f : 1.0f;
+    float far = 0.0f;
     for (size_t i = 0; i < s->view_count; i++) {
         tl__shadow_view *v = &s->views[i];
         if (!v->render) continue;
@@ -125,7 +127,7 @@ uint32_t tl__shadows_render(tl__device *dev, tl__shadows *s, const tl__scene_gpu
 {
     const GladGLContext *gl = &dev->gl;
     tl__shadow_buffers(dev, s);
-    if (tl__atlas_make(dev, s, (uint32_t)(1.0f / s->block.params[0] + 0.5f), (int)s->block.flags[0])) s->kept_count = 0;
+    if (tl__atlas_make(dev, s, (uint32_t)(1.0f / s->block.params[0] + 0.5f))) s->kept_count = 0;
     uint32_t rendered = 0;
     for (size_t i = 0; i < s->view_count; i++) {
         tl__shadow_view *v = &s->views[i];

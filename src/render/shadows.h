@@ -21,7 +21,7 @@ enum {
 typedef struct tl__shadow_view_gpu {
     float m[16];    /* view space to the view's clip space */
     float rect[4];  /* atlas uv offset, scale */
-    float texel[4]; /* texel world size per clip w; atlas depth quantum c0 + c1 w + c2 w^2 */
+    float texel[4]; /* texel world size per clip w; atlas depth quantum c0 + c1 w; e_arith's constant part */
     float depth[4]; /* PCSS: stored depth d to light distance z (1/z or z = x d + y), light size in texels, perspective */
 } tl__shadow_view_gpu;
 typedef struct tl__shadow_light_gpu {
@@ -31,7 +31,8 @@ typedef struct tl__shadow_light_gpu {
 } tl__shadow_light_gpu;
 typedef struct tl__shadow_block {
     float params[4];   /* 1 / atlas side, PCF radius, G-buffer position error a z + b z^2 */
-    uint32_t flags[4]; /* reversed depth, PCSS's largest radius (0: PCF) */
+    uint32_t flags[4]; /* 0, PCSS's largest radius (0: PCF), 0, 0 */
+    float bias[4];     /* the lighting normal's angular error bound (radians), 0, 0, 0 */
     tl__shadow_light_gpu lights[TL__SHADOW_MAX_LIGHTS];
 } tl__shadow_block;
 
@@ -62,19 +63,14 @@ typedef struct tl__shadows {
     size_t view_count, light_count;
     uint64_t kept[TL__SHADOW_MAX_VIEWS]; /* the signature each tile holds (0: nothing) */
     size_t kept_count;
+    uint32_t unmapped_logged;  /* the most casting lights in view without a map a warning named */
     /* GL */
     GLuint atlas, fbo, lookup, ubo;
     GLuint depth_sampler;      /* PCSS: the atlas read as depth values (no compare) */
     GLuint program;            /* the shadow pass's (the device's program cache owns it) */
     uint32_t atlas_size;
-    int reversed;
     size_t ubo_stride;
 } tl__shadows;
-
-/* desc.c: the defaults of tl_shadow_desc, and whether it is in range. */
-void tl__shadow_desc_resolve(tl_shadow_desc *s);
-/* 1 when the resolved options are in range, else 0 naming the field in `why` (option_check.h). */
-int tl__shadow_desc_check(const tl_shadow_desc *s, const char *prefix, tl__why *why);
 
 /* shadow_views.c: selects the casting lights (budget, fading), places their views in the atlas and
  * computes every matrix; decides which views must be rendered again (signatures); fills the slots,

@@ -1,4 +1,5 @@
 /* Targets as the passes declare them (targets.h). */
+#include <math.h>
 #include <string.h>
 
 #include "targets.h"
@@ -110,7 +111,9 @@ uint32_t tl__gbuffer_samples(const tl_renderer_options *o) { return tl__msaa_sam
 uint32_t tl__light_shift(const tl_renderer_options *o)
 {
     if (o->mode != TL_MODE_THIN_LPP) return 0u;
-    return o->light_scale == 0.25f ? 2u : o->light_scale == 0.5f ? 1u : 0u;
+    int e = 0;
+    frexpf(o->light_scale, &e); /* a resolved scale is a power of two (its registry row): 2^(1 - e) */
+    return o->light_scale > 0.0f && o->light_scale < 1.0f ? (uint32_t)(1 - e) : 0u;
 }
 
 void tl__target_size(const tl__target_def *def, const tl_renderer_options *o, uint32_t width, uint32_t height,

@@ -72,7 +72,7 @@ const char *tl__msaa_how(const tl_renderer_options *o);
 int tl__msaa_sample_edges(const tl_renderer_options *o);
 uint32_t tl__gbuffer_samples(const tl_renderer_options *o);
 
-/* The light buffer's shift (light_scale 1, 0.5, 0.25: 0, 1, 2): thin-lpp only, every other mode 0. */
+/* The light buffer's shift (light_scale 2^-k: k): thin-lpp only, every other mode 0. */
 uint32_t tl__light_shift(const tl_renderer_options *o);
 
 /* The size of a target's first level and its mip levels for a frame of width x height: a reduced

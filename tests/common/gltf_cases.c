@@ -204,6 +204,50 @@ static int case_generated_frames(const char *dir, const char *name, char *path, 
     return rc;
 }
 
+/* The shadow scenes (tlf_write_shadow_scene): shadow_spot and shadow_sun without a flag, _cast
+ * "thinlight_shadow": true, _no_cast false, _bad_flag "yes". */
+static int case_shadow_scene(const char *dir, const char *name, char *path, size_t path_size)
+{
+    int sun = strncmp(name, "shadow_sun", 10) == 0;
+    const char *suffix = name + 10 + !sun; /* after "shadow_sun" or "shadow_spot" */
+    const char *flag = !*suffix                             ? NULL
+                       : strcmp(suffix, "_cast") == 0       ? "true"
+                       : strcmp(suffix, "_no_cast") == 0    ? "false"
+                       : strcmp(suffix, "_bad_flag") == 0   ? "\"yes\""
+                                                            : "";
+    if (flag && !*flag) return -1;
+    char file[96];
+    snprintf(file, sizeof file, "%s.gltf", name);
+    tlf_join(path, path_size, dir, file);
+    return tlf_write_shadow_scene(dir, name, TLF_DATA_URI, sun, flag);
+}
+
+/* Eight lights on a quad, for the shadow flags and the rule (docs/gltf.md, "Shadows"): 0 a
+ * directional light without a flag, 1 one flagged false, 2 a spot flagged true, 3 a point light of
+ * intensity 100 and 4 one of 10 (no flags), 5 a point light flagged "yes", 6 one flagged 1 (both
+ * not booleans), 7 one whose extras are not an object; all point and spot lights range 10. */
+static int case_light_shadow_flags(const char *dir, const char *name, char *path, size_t path_size)
+{
+    static const char *const lights[8] = {
+        "{\"type\":\"directional\"}", "{\"type\":\"directional\",\"extras\":{\"thinlight_shadow\":false}}",
+        "{\"type\":\"spot\",\"range\":10,\"spot\":{},\"extras\":{\"thinlight_shadow\":true}}",
+        "{\"type\":\"point\",\"intensity\":100,\"range\":10}", "{\"type\":\"point\",\"intensity\":10,\"range\":10}",
+        "{\"type\":\"point\",\"range\":10,\"extras\":{\"thinlight_shadow\":\"yes\"}}",
+        "{\"type\":\"point\",\"range\":10,\"extras\":{\"thinlight_shadow\":1}}",
+        "{\"type\":\"point\",\"range\":10,\"extras\":[true]}"};
+    tlf_buf m = {0};
+    buf_printf(&m, "\"meshes\":[{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":1}]}],"
+                   "\"extensionsUsed\":[\"KHR_lights_punctual\"],\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[");
+    for (int k = 0; k < 8; k++) buf_printf(&m, "%s%s", k ? "," : "", lights[k]);
+    buf_printf(&m, "]}},\"nodes\":[{\"mesh\":0}");
+    for (int k = 0; k < 8; k++)
+        buf_printf(&m, ",{\"translation\":[0,%d,0],\"extensions\":{\"KHR_lights_punctual\":{\"light\":%d}}}", k + 1, k);
+    buf_printf(&m, "],\"scenes\":[{\"nodes\":[0,1,2,3,4,5,6,7,8]}]");
+    int rc = m.oom ? -1 : quad_case(dir, name, TLF_EXTERNAL, buf_str(&m), 1, path, path_size);
+    buf_free(&m);
+    return rc;
+}
+
 int tlf_write_case(const char *dir, const char *name, char *path, size_t path_size)
 {
     if (tlf_mkdir_p(dir)) return -1;
@@ -228,6 +272,9 @@ int tlf_write_case(const char *dir, const char *name, char *path, size_t path_si
         tlf_join(path, path_size, dir, "lights.gltf");
         return 0;
     }
+    if (strncmp(name, "shadow_spot", 11) == 0 || strncmp(name, "shadow_sun", 10) == 0)
+        return case_shadow_scene(dir, name, path, path_size);
+    if (strcmp(name, "light_shadow_flags") == 0) return case_light_shadow_flags(dir, name, path, path_size);
     if (strcmp(name, "indices") == 0) return case_indices(dir, name, path, path_size);
     if (strcmp(name, "generated_frames") == 0) return case_generated_frames(dir, name, path, path_size);
     if (strcmp(name, "quad") == 0) return quad_case(dir, name, TLF_EXTERNAL, "", 0, path, path_size);
@@ -482,4 +529,6 @@ const char *const tlf_case_names[] = {
     "view_past_buffer", "accessor_ref_out_of_range", "mesh_ref_out_of_range", "index_out_of_range", "node_cycle",
     "node_self_child", "node_two_parents", "node_child_out_of_range", "nan_position", "inf_position",
     "zero_normals", "empty_scene", "no_scenes", "required_extension", "sparse_accessor", "lines_mode", "unknown_mode",
-    "multi_scene", "zero_accessors", "mirrored", "orthographic_camera", "camera_zfar", NULL};
+    "multi_scene", "zero_accessors", "mirrored", "orthographic_camera", "camera_zfar", "shadow_spot",
+    "shadow_spot_cast", "shadow_spot_no_cast", "shadow_spot_bad_flag", "shadow_sun", "shadow_sun_no_cast",
+    "light_shadow_flags", NULL};

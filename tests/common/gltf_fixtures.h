@@ -33,6 +33,17 @@ int tlf_write_textured_boxes(const char *dir, const char *name, tlf_storage stor
 int tlf_write_materials(const char *dir, const char *name, tlf_storage storage);
 int tlf_write_lights(const char *dir, const char *name, tlf_storage storage);
 
+/* A shadow scene (tests of shadows from files): a 20 m floor facing +Y at y = 0 and a box of half
+ * size TLF_SHADOW_BOX_HALF floating at y = TLF_SHADOW_BOX_Y above the origin, under a spot light at
+ * y = TLF_SHADOW_SPOT_Y looking straight down (outer cone 0.6 rad, intensity 200 cd, range 20) or,
+ * with `sun`, a directional light shining straight down (3 lux), seen by the file's camera from
+ * (0, 7, 7) looking at the origin (yfov 0.8). `flag`: NULL, or the JSON value of the light's
+ * "extras": {"thinlight_shadow": ...} ("true", "false", "\"yes\"", ...). */
+#define TLF_SHADOW_BOX_Y 1.5f
+#define TLF_SHADOW_BOX_HALF 0.5f
+#define TLF_SHADOW_SPOT_Y 5.0f
+int tlf_write_shadow_scene(const char *dir, const char *name, tlf_storage storage, int sun, const char *flag);
+
 /**
  * Writes the named test case into `dir` and puts the path of the file to load into `path`.
  * Cases: see gltf_cases.c (tlf_case_names lists them). Returns 0, or -1 for an

@@ -250,6 +250,50 @@ int tlf_write_lights(const char *dir, const char *name, tlf_storage storage)
     return rc;
 }
 
+int tlf_write_shadow_scene(const char *dir, const char *name, tlf_storage storage, int sun, const char *flag)
+{
+    tlf_doc d = {.dir = dir};
+    tlf_mesh m;
+    make_quad(&m, 0.0f, 0.0f, 0.0f, 10.0f);
+    int floor_pos = doc_accessor(&d, m.pos, 4, F32, "VEC3", 0);
+    int floor_nrm = doc_accessor(&d, m.nrm, 4, F32, "VEC3", 0);
+    int floor_idx = doc_accessor(&d, m.idx, 6, U16, "SCALAR", 0);
+    const float centre[3] = {0.0f, TLF_SHADOW_BOX_Y, 0.0f};
+    make_box(&m, centre, TLF_SHADOW_BOX_HALF);
+    int box = add_mesh(&d, &m);
+    tlf_buf extras = {0}, members = {0};
+    if (flag) buf_printf(&extras, ",\"extras\":{\"thinlight_shadow\":%s}", flag);
+    /* the light: -90 degrees about X turns its -Z down; the camera: -45 degrees, looking at the origin */
+    buf_printf(&members,
+               "\"extensionsUsed\":[\"KHR_lights_punctual\"],"
+               "\"extensions\":{\"KHR_lights_punctual\":{\"lights\":[%s%s}]}},",
+               sun ? "{\"name\":\"sun\",\"type\":\"directional\",\"intensity\":3"
+                   : "{\"name\":\"spot\",\"type\":\"spot\",\"intensity\":200,\"range\":20,"
+                     "\"spot\":{\"innerConeAngle\":0.4,\"outerConeAngle\":0.6}",
+               buf_str(&extras));
+    buf_printf(&members,
+               "\"cameras\":[{\"type\":\"perspective\",\"perspective\":{\"yfov\":0.8,\"znear\":0.1,\"zfar\":100}}],"
+               "\"materials\":[{\"name\":\"grey\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.6,0.6,0.6,1],"
+               "\"metallicFactor\":0,\"roughnessFactor\":0.8}}],"
+               "\"meshes\":[{\"name\":\"floor\",\"primitives\":[{\"attributes\":{\"POSITION\":%d,\"NORMAL\":%d},"
+               "\"indices\":%d,\"material\":0}]},"
+               "{\"name\":\"box\",\"primitives\":[{\"attributes\":{\"POSITION\":%d,\"NORMAL\":%d,\"TEXCOORD_0\":%d},"
+               "\"indices\":%d,\"material\":0}]}],"
+               "\"nodes\":[{\"name\":\"floor\",\"mesh\":0},{\"name\":\"box\",\"mesh\":1},"
+               "{\"name\":\"spot\",\"translation\":[0,%g,0],\"rotation\":[-0.70710678118654752,0,0,0.70710678118654752],"
+               "\"extensions\":{\"KHR_lights_punctual\":{\"light\":0}}},"
+               "{\"name\":\"camera\",\"camera\":0,\"translation\":[0,7,7],"
+               "\"rotation\":[-0.38268343236508977,0,0,0.92387953251128676]}],"
+               "\"scenes\":[{\"nodes\":[0,1,2,3]}]",
+               floor_pos, floor_nrm, floor_idx, box, box + 1, box + 2, box + 3, (double)TLF_SHADOW_SPOT_Y);
+    char path[1024];
+    int rc = members.oom || extras.oom ? -1 : doc_write(&d, name, storage, buf_str(&members), path, sizeof path);
+    buf_free(&extras);
+    buf_free(&members);
+    doc_free(&d);
+    return rc;
+}
+
 int tl_test_write_gltf_scenes(const char *dir)
 {
     if (tlf_mkdir_p(dir)) {

@@ -2,6 +2,7 @@
 #include "render_fixture.h"
 
 #include "context_fixture.h"
+#include "tl_test.h"
 
 #include <stdio.h>
 #include <stdlib.h>
@@ -32,21 +33,52 @@ int ensure_context(void)
     return 1;
 }
 
+/* Fails the running case (unless `t` may fail) naming the step; destroys `r`; NULL. */
+static tl_renderer *tl_test_renderer_failed(const tl_test_renderer_desc *t, tl_renderer *r, const char *step,
+                                            tl_result res)
+{
+    const tl_renderer_desc *d = &t->renderer;
+    fprintf(stderr, "%s: %s failed (%ux%u, mode %s): %s%s%s\n", t->may_fail ? "note" : "error", step, d->width,
+            d->height, tl_render_mode_name(d->options.mode), tl_result_string(res), r ? ": " : "",
+            r ? tl_renderer_last_error(r) : "");
+    if (!t->may_fail) tl_test_failures++;
+    tl_renderer_destroy(r);
+    return NULL;
+}
+
+tl_renderer *tl_test_renderer(const tl_test_renderer_desc *t)
+{
+    tl_renderer_desc d = t->renderer;
+    if (!d.get_proc_address) d.get_proc_address = tl_context_proc_loader;
+    if (!d.get_proc_address_user) {
+        if (!ensure_context()) return tl_test_renderer_failed(t, NULL, "the test context", TL_ERROR_GL);
+        d.get_proc_address_user = g_ctx;
+    }
+    if (!d.logger.fn) d.logger = tl_test_logger;
+    if (t->readable) {
+        d.options.keep_targets = TL_TARGETS_ALL;
+        d.options.synchronous_stats = 1;
+    }
+    tl_renderer *r = NULL;
+    tl_result res = tl_renderer_create(&d, &r);
+    if (res != TL_OK) return tl_test_renderer_failed(t, r, "tl_renderer_create", res);
+    if (t->scene && (res = tl_renderer_set_scene(r, t->scene)) != TL_OK)
+        return tl_test_renderer_failed(t, r, "tl_renderer_set_scene", res);
+    for (size_t i = 0; i < t->pass_count; i++)
+        if ((res = tl_renderer_add_pass(r, &t->passes[i])) != TL_OK)
+            return tl_test_renderer_failed(t, r, "tl_renderer_add_pass", res);
+    for (uint32_t f = 0; f < t->frames; f++)
+        if ((res = tl_renderer_render(r, NULL, NULL)) != TL_OK)
+            return tl_test_renderer_failed(t, r, "tl_renderer_render", res);
+    if (t->frames && (res = tl_renderer_wait(r, NULL)) != TL_OK)
+        return tl_test_renderer_failed(t, r, "tl_renderer_wait", res);
+    return r;
+}
+
 tl_renderer *tl_test_render_once(const tl_scene *s, tl_renderer_desc d)
 {
-    if (!ensure_context()) return NULL;
     d.options.keep_targets = TL_TARGETS_ALL;
-    d.get_proc_address = tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
-    d.logger = tl_test_logger;
-    tl_renderer *r = NULL;
-    if (tl_renderer_create(&d, &r) != TL_OK) return NULL;
-    if (tl_renderer_set_scene(r, s) != TL_OK || tl_renderer_render(r, NULL, NULL) != TL_OK ||
-        tl_renderer_wait(r, NULL) != TL_OK) {
-        tl_renderer_destroy(r);
-        return NULL;
-    }
-    return r;
+    return tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .scene = s, .frames = 1, .may_fail = true});
 }
 
 float *tl_test_read_target(tl_renderer *r, tl_target_id id, size_t n)

@@ -1,12 +1,12 @@
 /* Shared by the renderer tests: one lazily created OSMesa context per test process, current for
- * every case and destroyed at exit; renderers load GL through tl_context_proc_loader with g_ctx as
- * the user pointer. */
+ * every case and destroyed at exit, and the factory of the renderers on it (tl_test_renderer). */
 #ifndef TL_RENDER_FIXTURE_H
 #define TL_RENDER_FIXTURE_H
 
 #include "thinlight/context.h"
 #include "thinlight/renderer.h"
 
+#include <stdbool.h>
 #include <stddef.h>
 
 extern tl_context *g_ctx;
@@ -18,8 +18,29 @@ extern const tl_logger tl_test_logger;
  * a message on stderr. */
 int ensure_context(void);
 
-/* A renderer on g_ctx for `d` (every target kept, g_ctx's loader, the test logger) with scene `s`
- * set and one frame rendered and waited for; NULL when any step fails (its message logged). */
+/* ---- the renderer factory ----------------------------------------------------------------------
+ * Every renderer a test needs for its case comes from here (a case about tl_renderer_create itself
+ * calls it). What the test asks for; zero is the default in every field. */
+typedef struct tl_test_renderer_desc {
+    /* Size, options, allocator and limits as tl_renderer_create takes them. Zero get_proc_address:
+     * tl_context_proc_loader; zero get_proc_address_user: g_ctx (created on the first call); zero
+     * logger: tl_test_logger. */
+    tl_renderer_desc renderer;
+    const tl_scene *scene;          /* given to set_scene after create (NULL: none) */
+    const tl_app_pass_desc *passes; /* pass_count application passes, added after the scene */
+    size_t pass_count;
+    uint32_t frames;                /* frames rendered with the scene's camera, then waited for */
+    bool readable;                  /* every target kept and synchronous statistics (options.keep_targets =
+                                     * TL_TARGETS_ALL, options.synchronous_stats = 1): each frame's targets
+                                     * and figures can be read after it */
+    bool may_fail;                  /* a failed step returns NULL without failing the running case */
+} tl_test_renderer_desc;
+
+/* The renderer `t` describes; NULL when a step failed, after a line on stderr naming the step (and,
+ * unless t->may_fail, a failure of the running case). */
+tl_renderer *tl_test_renderer(const tl_test_renderer_desc *t);
+/* tl_test_renderer for `d` with every target kept and one frame of `s` rendered and waited for;
+ * NULL (after the note) when a step fails, for the caller to check. */
 tl_renderer *tl_test_render_once(const tl_scene *s, tl_renderer_desc d);
 /* The RGBA float pixels (n of them, rows bottom-up) of a target, malloc'd; NULL when it cannot be
  * read. */

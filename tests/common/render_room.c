@@ -1,4 +1,4 @@
-/* The renderer tests' room scene and renderer (render_room.h). */
+/* The renderer tests' room scene (render_room.h). */
 #include "render_room.h"
 
 #include <math.h>
@@ -74,22 +74,4 @@ void build_room(test_scene *t)
     t->s.material_count = 2;
     t->s.lights = t->lights;
     t->s.camera = (tl_camera){{0, 3, 8}, {0, 1.5f, 0}, {0, 1, 0}, 1.0f, 0.1f, 100.0f};
-}
-
-tl_renderer *make_renderer_desc(tl_renderer_desc d)
-{
-    d.options.keep_targets = TL_TARGETS_ALL;
-    d.options.synchronous_stats = 1;
-    d.get_proc_address = tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
-    d.logger = tl_test_logger;
-    tl_renderer *r = NULL;
-    tl_renderer_create(&d, &r);
-    return r;
-}
-
-tl_renderer *make_renderer(uint32_t w, uint32_t h, tl_depth_format depth, int fullscreen, tl_fxaa_preset fxaa)
-{
-    return make_renderer_desc((tl_renderer_desc){.width = w, .height = h, .options.depth_format = depth,
-                                                 .options.fullscreen_lights = fullscreen, .options.fxaa = fxaa});
 }

@@ -1,5 +1,5 @@
-/* A closed room (inward faces) with a box in it, and a renderer for it on the shared context
- * (render_fixture.h): the scene of the renderer tests in tests/gl and tests/input. */
+/* A closed room (inward faces) with a box in it: the scene of the renderer tests in tests/gl and
+ * tests/input, whose renderers come from render_fixture.h. */
 #ifndef TL_RENDER_ROOM_H
 #define TL_RENDER_ROOM_H
 
@@ -21,9 +21,5 @@ typedef struct test_scene {
 /* Room [-10,10] x [0,10] x [-10,10] seen from inside, plus a box [-1,1] x [0,2] x [-1,1]. */
 void build_room(test_scene *t);
 
-/* A renderer on g_ctx (ensure_context() first); NULL after a message on stderr. */
-/* The same for any descriptor: every target kept readable, synchronous statistics, the test logger. */
-tl_renderer *make_renderer_desc(tl_renderer_desc d);
-tl_renderer *make_renderer(uint32_t w, uint32_t h, tl_depth_format depth, int fullscreen, tl_fxaa_preset fxaa);
 
 #endif

@@ -165,11 +165,11 @@ TL_TEST(fxaa_matches_cpu_reference_every_preset)
     fx_test_image(img, w, h);
     for (size_t k = 0; k < sizeof presets / sizeof presets[0]; k++) {
         const fx_params *p = &presets[k].p;
-        tl_renderer *r = make_renderer_desc((tl_renderer_desc){.width = (uint32_t)w, .height = (uint32_t)h,
-                                                                .options.fxaa = presets[k].preset,
-                                                                .options.fxaa_edge_threshold = (float)p->threshold,
-                                                                .options.fxaa_edge_threshold_min = (float)p->threshold_min,
-                                                                .options.fxaa_subpix = (float)p->subpix});
+        tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+            .renderer = {.width = (uint32_t)w, .height = (uint32_t)h, .options.fxaa = presets[k].preset,
+                         .options.fxaa_edge_threshold = (float)p->threshold,
+                         .options.fxaa_edge_threshold_min = (float)p->threshold_min, .options.fxaa_subpix = (float)p->subpix},
+            .readable = true});
         size_t size = n * 4 * sizeof *ldr;
         int ok = r && tl_renderer_apply_fxaa(r, img, out, &(size_t){n * 4}) == TL_OK &&
                  tl_renderer_read_target(r, TL_TARGET_LDR, ldr, &size) == TL_OK;

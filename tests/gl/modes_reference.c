@@ -40,21 +40,13 @@ static float *read_target(tl_renderer *r, tl_target_id id, size_t n)
 int modes_render(const tl_scene *s, tl_renderer_desc d, modes_frame *f)
 {
     memset(f, 0, sizeof *f);
-    if (!ensure_context()) return 0;
-    d.options.keep_targets = TL_TARGETS_ALL;
-    d.options.synchronous_stats = 1;
-    d.get_proc_address = tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
-    d.logger = tl_test_logger;
-    tl_renderer *r = NULL;
-    if (tl_renderer_create(&d, &r) != TL_OK) return 0;
     tl_app_pass_desc ap = {.name = "capture-view", .before = "tonemap", .writes = BIT(TL_TARGET_HDR),
                            .execute = capture_view, .user = f};
+    tl_renderer *r = tl_test_renderer(
+        &(tl_test_renderer_desc){.renderer = d, .scene = s, .passes = &ap, .pass_count = 1, .frames = 1, .readable = true});
+    if (!r) return 0;
     size_t n = (size_t)d.width * d.height;
-    int ok = tl_renderer_set_scene(r, s) == TL_OK && tl_renderer_add_pass(r, &ap) == TL_OK &&
-             tl_renderer_render(r, NULL, NULL) == TL_OK && tl_renderer_wait(r, NULL) == TL_OK &&
-             tl_renderer_get_plan(r, &f->plan) == TL_OK;
-    if (!ok) fprintf(stderr, "%s: %s\n", tl_render_mode_name(d.options.mode), tl_renderer_last_error(r));
+    int ok = tl_renderer_get_plan(r, &f->plan) == TL_OK;
     f->w = d.width;
     f->h = d.height;
     f->mode = d.options.mode;

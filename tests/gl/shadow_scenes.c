@@ -109,6 +109,38 @@ int tl_shadow_penumbra_case(tl_shadow_case *c)
     return tl_scene_compute_bounds(s) == TL_OK;
 }
 
+int tl_shadow_spot_case(tl_shadow_case *c, int occluder)
+{
+    memset(c, 0, sizeof *c);
+    tl_scene *s = calloc(1, sizeof *s);
+    tl__builder b = {calloc(28, sizeof(tl_vertex)), calloc(42, sizeof(uint32_t)), 0, 0};
+    tl_object *objects = calloc(2, sizeof *objects);
+    if (!s || !b.v || !b.ix || !objects) return 0;
+    tl__quad(&b, (float[3]){-30, 0, 30}, (float[3]){60, 0, 0}, (float[3]){0, 0, -60}); /* the floor, 60 m */
+    objects[0] = (tl_object){.first_index = 0, .index_count = 6};
+    tl__box(&b, (float[3]){-0.4f, 0, -2.8f}, (float[3]){0.4f, 0.3f, -2.0f}); /* a box in both pools */
+    objects[1] = (tl_object){.first_index = 6, .index_count = 36};
+    s->vertices = b.v, s->vertex_count = b.nv, s->indices = b.ix, s->index_count = b.ni;
+    s->objects = objects, s->object_count = occluder ? 2 : 1;
+    s->camera = (tl_camera){.position = {0.0f, 3.0f, 3.0f}, .target = {0.0f, 0.0f, -4.0f}, .fov_y = 1.1f,
+                            .near_z = 0.05f, .far_z = 200.0f};
+    c->scene = s;
+    c->built = 1;
+    /* a spot 0.6 m over the floor looking 14 degrees down, its 50-degree cone reaching from below
+     * its foot to the horizon (the floor seen at grazing angles far off, at 26 degrees from the
+     * vertical near the foot: far from the axis's angle), and a spot 2 m up tilted 45 degrees */
+    c->lights[0] = (tl_light){.type = TL_LIGHT_SPOT, .position = {0.0f, 0.6f, 0.0f}, .direction = {0, -0.25f, -1},
+                              .color = {20, 20, 20}, .radius = 40.0f, .cos_inner = 0.766f, .cos_outer = 0.643f,
+                              .shadow = 1};
+    c->lights[1] = (tl_light){.type = TL_LIGHT_SPOT, .position = {1.5f, 2.0f, -1.0f}, .direction = {-0.5f, -0.707f, -0.5f},
+                              .color = {20, 20, 20}, .radius = 20.0f, .cos_inner = 0.866f, .cos_outer = 0.707f,
+                              .shadow = 1};
+    c->light_names[0] = "spot 0.6 m up, 14 deg down";
+    c->light_names[1] = "spot 2 m up, 45 deg down";
+    c->light_count = 2;
+    return tl_scene_compute_bounds(s) == TL_OK;
+}
+
 int tl_shadow_crypt_case(tl_shadow_case *c, uint32_t detail)
 {
     memset(c, 0, sizeof *c);

@@ -19,6 +19,9 @@ int tl_shadow_stiff_case(tl_shadow_case *c);
 /* A box resting on a floor, a pole and a floating plate under a spot and a point light with a
  * 0.25 m source radius: penumbrae that widen away from the contact (PCSS against area truth). */
 int tl_shadow_penumbra_case(tl_shadow_case *c);
+/* A floor under two spot lights whose axes are tilted from its normal (one low, looking 14 degrees
+ * down to the horizon; one 2 m up at 45 degrees); with `occluder`, a box standing in both pools. */
+int tl_shadow_spot_case(tl_shadow_case *c, int occluder);
 int tl_shadow_crypt_case(tl_shadow_case *c, uint32_t detail);
 void tl_shadow_case_free(tl_shadow_case *c);
 
@@ -28,5 +31,10 @@ void tl_shadow_case_free(tl_shadow_case *c);
  * malloc'd, rows bottom-up, or NULL after a line on stderr. */
 float *tl_shadow_term(const tl_shadow_case *c, const tl_light *light, tl_renderer_options o, uint32_t w, uint32_t h,
                       tl_frame_stats *stats);
+/* The same ratio not clamped to 1 (a filter whose weights sum past 1 shows as a term above 1);
+ * with `views`, the frame's shadow views (tl_renderer_get_shadow_views: *view_count their capacity,
+ * then their count, 0 when they could not be read). */
+float *tl_shadow_ratio(const tl_shadow_case *c, const tl_light *light, tl_renderer_options o, uint32_t w, uint32_t h,
+                       tl_frame_stats *stats, tl_shadow_view_info *views, size_t *view_count);
 
 #endif

@@ -362,21 +362,10 @@ static void capture_view(void *user, const tl_app_pass_context *ctx)
 /* Renders `s` with `d` (every target kept) and captures the frame's projection; NULL on failure. */
 static tl_renderer *render_captured(const tl_scene *s, tl_renderer_desc d, float proj[16])
 {
-    if (!ensure_context()) return NULL;
     d.options.keep_targets = TL_TARGETS_ALL;
-    d.get_proc_address = tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
-    d.logger = tl_test_logger;
-    tl_renderer *r = NULL;
-    if (tl_renderer_create(&d, &r) != TL_OK) return NULL;
     tl_app_pass_desc ap = {.name = "capture-view", .before = "tonemap", .writes = BIT(TL_TARGET_HDR),
                            .execute = capture_view, .user = proj};
-    if (tl_renderer_set_scene(r, s) != TL_OK || tl_renderer_add_pass(r, &ap) != TL_OK ||
-        tl_renderer_render(r, NULL, NULL) != TL_OK || tl_renderer_wait(r, NULL) != TL_OK) {
-        tl_renderer_destroy(r);
-        return NULL;
-    }
-    return r;
+    return tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .scene = s, .passes = &ap, .pass_count = 1, .frames = 1});
 }
 
 typedef struct ssao_result {
@@ -565,7 +554,7 @@ TL_TEST(ssao_matches_cpu_estimator_every_mode)
                     tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m]};
                     d.options.depth_format = z ? TL_DEPTH_FORMAT_D32F_REVERSED : TL_DEPTH_FORMAT_D24;
                     d.options.ssao = params[ps];
-                    d.options.ssao.method = (tl_ssao_method)method;
+                    d.options.ssao.enabled = 1, d.options.ssao.method = (tl_ssao_method)method;
                     ssao_result res;
                     check_frame(&q, d, &res);
                     printf("  %-10s %-13s %-13s set %d: raw %.3f, blur %.3f, HDR %.3f of the slack; reference "

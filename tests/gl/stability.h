@@ -54,7 +54,6 @@ typedef struct mini_scene {
 
 static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
 
-tl_renderer *make_renderer(tl_renderer_desc d);
 tl_material plain_material(float albedo, float specular, float gloss);
 /* Camera at the origin looking down -Z with +Y up: view space equals world space, so the lights
  * and surfaces are given in view space directly. */

@@ -8,21 +8,6 @@
 
 /* ---- renderer, small hand-made scenes --------------------------------------------------------- */
 
-tl_renderer *make_renderer(tl_renderer_desc d)
-{
-    d.get_proc_address = tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
-    d.options.keep_targets = TL_TARGETS_ALL; /* every target is read back */
-    d.options.synchronous_stats = 1;
-    d.logger = tl_test_logger;
-    if (!d.options.fxaa) d.options.fxaa = TL_FXAA_OFF;
-    tl_renderer *r = NULL;
-    tl_result res = tl_renderer_create(&d, &r);
-    if (res != TL_OK) fprintf(stderr, "  tl_renderer_create %ux%u mode %s failed\n", d.width, d.height,
-                              tl_render_mode_name(d.options.mode));
-    return r;
-}
-
 tl_material plain_material(float albedo, float specular, float gloss)
 {
     tl_material m = {.alpha = 1.0f};
@@ -182,8 +167,8 @@ int run_scene(run *u, tl_renderer_desc d, const tl_scene *s, const char *label)
         return 0;
     }
     u->desc = d;
-    u->r = make_renderer(d);
-    TL_CHECK(u->r != NULL);
+    if (!d.options.fxaa) d.options.fxaa = TL_FXAA_OFF;
+    u->r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .readable = true}); /* every target is read back */
     if (!u->r) return 0;
     tl_result res = tl_renderer_set_scene(u->r, s);
     if (res != TL_OK)

@@ -302,8 +302,8 @@ TL_TEST(stability_nan_inf_vertices)
         m.s.light_count = 1;
         char label[80];
         snprintf(label, sizeof label, "%s", cases[ci].what);
-        tl_renderer *r = make_renderer((tl_renderer_desc){.width = 64, .height = 64});
-        TL_CHECK(r != NULL);
+        tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+            .renderer = {.width = 64, .height = 64, .options.fxaa = TL_FXAA_OFF}, .readable = true});
         if (!r) continue;
         tl_result res = tl_renderer_set_scene(r, &m.s);
         if (res != TL_OK) {

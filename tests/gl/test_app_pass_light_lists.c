@@ -49,17 +49,6 @@ static GLADapiproc fixture_load(void *user, const char *name)
     return (GLADapiproc)tl_context_get_proc_address((tl_context *)user, name);
 }
 
-static tl_renderer *make_renderer(tl_light_strategy strategy, tl_render_mode mode, const tl_scene *s)
-{
-    tl_renderer_desc d = {.options.mode = mode, .options.light_strategy = strategy, .width = 160, .height = 96,
-                          .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
-                          .logger = tl_test_logger};
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
-    if (r) TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);
-    return r;
-}
-
 /* Tiled, in every mode (Forward+ included): the pass sees a buffer of the documented layout, every
  * count is at most the scene's local lights, and the counts of tiles that kept their lists add up to
  * the entries the frame's statistics report. With light volumes there are no lists: the name is 0. */
@@ -79,7 +68,10 @@ TL_TEST(app_pass_reads_tile_light_lists)
     size_t local = 0;
     for (size_t i = 0; i < s->light_count; i++) local += s->lights[i].type != TL_LIGHT_DIRECTIONAL;
     for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++) {
-        tl_renderer *r = make_renderer(TL_LIGHT_STRATEGY_TILED, (tl_render_mode)mode, s);
+        tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+            .renderer = {.options = {.mode = (tl_render_mode)mode, .light_strategy = TL_LIGHT_STRATEGY_TILED}, .width = 160,
+                         .height = 96},
+            .scene = s});
         if (!r) continue;
         tl_frame_plan plan;
         TL_CHECK(tl_renderer_get_plan(r, &plan) == TL_OK);
@@ -113,7 +105,10 @@ TL_TEST(app_pass_reads_tile_light_lists)
         tl_renderer_destroy(r);
     }
     /* light volumes: the plan has no lists, the read is dropped and the name is 0 */
-    tl_renderer *r = make_renderer(TL_LIGHT_STRATEGY_VOLUMES, TL_MODE_THIN_LPP, s);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.options = {.mode = TL_MODE_THIN_LPP, .light_strategy = TL_LIGHT_STRATEGY_VOLUMES}, .width = 160,
+                     .height = 96},
+        .scene = s});
     if (r) {
         lists_pass p = {.gl = &gl, .name = 1};
         tl_app_pass_desc ap = {.name = "lists", .before = "tonemap", .reads = BIT(TL_TARGET_LIGHT_LISTS),
@@ -426,11 +421,8 @@ TL_TEST(tile_light_counts_match_cpu_cull)
         tl_renderer_desc d = {.options.mode = runs[k].mode, .options.light_strategy = TL_LIGHT_STRATEGY_TILED,
                               .width = 160, .height = 96,
                               .options.depth_format = runs[k].depth, .options.tile_size = runs[k].tile,
-                              .options.keep_targets = TL_TARGETS_ALL,
-                              .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
-                              .logger = tl_test_logger};
-        tl_renderer *r = NULL;
-        TL_CHECK(tl_renderer_create(&d, &r) == TL_OK && tl_renderer_set_scene(r, s) == TL_OK);
+                              .options.keep_targets = TL_TARGETS_ALL};
+        tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .scene = s});
         if (!r) continue;
         tl_frame_plan plan;
         TL_CHECK(tl_renderer_get_plan(r, &plan) == TL_OK);

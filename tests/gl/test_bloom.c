@@ -24,13 +24,7 @@ static const tl_light_strategy k_strategies[2] = {TL_LIGHT_STRATEGY_VOLUMES, TL_
 
 static tl_renderer *renderer(tl_renderer_desc d, const tl_scene *s)
 {
-    d.get_proc_address = tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
-    d.logger = tl_test_logger;
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
-    if (r && s) TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);
-    return r;
+    return tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .scene = s});
 }
 
 static tl_scene *small_scene(void)
@@ -251,15 +245,12 @@ static void hdr_source_free(hdr_source *src)
 /* A renderer whose HDR, just before the bloom pass, is `rgba` (w x h); HDR and bloom kept. */
 static tl_renderer *bloom_renderer(const tl_scene *s, uint32_t w, uint32_t h, tl_bloom_desc bloom, hdr_source *src)
 {
-    tl_renderer *r = renderer((tl_renderer_desc){.width = w, .height = h, .options.fxaa = TL_FXAA_OFF,
-                                                 .options.bloom = bloom,
-                                                 .options.keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_BLOOM)},
-                              s);
     tl_app_pass_desc ap = {.name = "test-image", .before = "bloom", .writes = BIT(TL_TARGET_HDR),
                            .execute = hdr_source_execute, .user = src};
-    if (r) TL_CHECK(tl_renderer_add_pass(r, &ap) == TL_OK);
-    if (r) TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
-    return r;
+    return tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = w, .height = h, .options.fxaa = TL_FXAA_OFF, .options.bloom = bloom,
+                     .options.keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_BLOOM)},
+        .scene = s, .passes = &ap, .pass_count = 1, .frames = 1});
 }
 
 /* Threshold 0: four times the sum of the half-size bloom image is the sum of HDR (the 13-tap
@@ -451,8 +442,8 @@ TL_TEST_FULL(bloom_finite_at_fp16_max_and_on_tiny_targets)
             uint32_t w = sizes[i][0], h = sizes[i][1];
             tl_renderer *r = renderer((tl_renderer_desc){.options.mode = k_modes[m], .width = w, .height = h,
                                                          .options.keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_BLOOM),
-                                                         .options.ssao = {.method = TL_SSAO_DISC},
-                                                         .options.fog = {.mode = TL_FOG_DISTANCE},
+                                                         .options.ssao = {.enabled = 1, .method = TL_SSAO_DISC},
+                                                         .options.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE},
                                                          .options.dof = {.enabled = 1},
                                                          .options.bloom = {.enabled = 1, .threshold = -1}},
                                       s);

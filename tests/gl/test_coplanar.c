@@ -244,7 +244,7 @@ static void coplanar_against_fat(tl_depth_format depth)
         tl_renderer_desc d = base;
         d.options.mode = cases[c].mode;
         d.options.light_strategy = cases[c].strategy;
-        d.options.forward_no_depth_prepass = cases[c].no_prepass;
+        d.options.forward_depth_prepass = cases[c].no_prepass ? TL_SWITCH_OFF : TL_SWITCH_DEFAULT;
         uint8_t *img = render_ldr(&t.s, d);
         TL_CHECK(img != NULL);
         if (!img) continue;

@@ -5,6 +5,8 @@
  * only). llvmpipe shades with several threads, so a result that depends on which fragment or
  * invocation ran first (an atomic counter's order, a shared list) shows up here as differing bytes
  * within a few frames. */
+#include <string.h>
+
 #include "tl_test.h"
 
 #include "render_fixture.h"
@@ -60,28 +62,28 @@ static const combo k_combos[] = {
     {"fat tiled, msaa 2 sample edges", 0, 0,
      {.mode = TL_MODE_FAT, TILED, .msaa = 2, .msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES}},
     {"forward+, msaa 4", 0, 0, {.mode = TL_MODE_FORWARD, TILED, .msaa = 4}},
-    {"forward volumes, no pre-pass", 0, 0, {.mode = TL_MODE_FORWARD, VOLUMES, .forward_no_depth_prepass = 1}},
+    {"forward volumes, no pre-pass", 0, 0, {.mode = TL_MODE_FORWARD, VOLUMES, .forward_depth_prepass = TL_SWITCH_OFF}},
     {"effects: ssao disc, distance fog, dof, bloom, ssr, vignette", 0, 0,
-     {.ssao = {.method = TL_SSAO_DISC}, .fog = {.mode = TL_FOG_DISTANCE, .color = {0.1f, 0.1f, 0.12f}},
+     {.ssao = {.enabled = 1, .method = TL_SSAO_DISC}, .fog = {.enabled = 1, .mode = TL_FOG_DISTANCE, .color = {0.1f, 0.1f, 0.12f}},
       .dof = {.enabled = 1}, .bloom = {.enabled = 1, .threshold = 0.3f}, .ssr = {.enabled = 1},
       .vignette = {.enabled = 1}}},
     {"thin-deferred: ssao hemisphere diffuse, height fog with noise", 0, 0,
-     {.mode = TL_MODE_THIN_DEFERRED, .ssao = {.method = TL_SSAO_HEMISPHERE, .diffuse = 1},
-      .fog = {.mode = TL_FOG_HEIGHT, .density = 0.2f, .noise = 0.5f}}},
+     {.mode = TL_MODE_THIN_DEFERRED, .ssao = {.enabled = 1, .method = TL_SSAO_HEMISPHERE, .diffuse = 1},
+      .fog = {.enabled = 1, .mode = TL_FOG_HEIGHT, .density = 0.2f, .noise = 0.5f}}},
     {"thin-lpp 1/2 tiled with every effect", 0, 0,
-     {LPP, TILED, .light_scale = 0.5f, .ssao = {.method = TL_SSAO_DISC}, .fog = {.mode = TL_FOG_DISTANCE},
+     {LPP, TILED, .light_scale = 0.5f, .ssao = {.enabled = 1, .method = TL_SSAO_DISC}, .fog = {.enabled = 1, .mode = TL_FOG_DISTANCE},
       .dof = {.enabled = 1}, .bloom = {.enabled = 1}, .ssr = {.enabled = 1}, .vignette = {.enabled = 1}}},
     {"shadows pcf, radius 3, no cache, debug", 0, 0,
-     {.shadows = {.filter = TL_SHADOW_FILTER_PCF, .pcf_radius = 3, .no_cache = 1}, .shadow_debug = 1}},
+     {.shadows = {.filter = TL_SHADOW_FILTER_PCF, .pcf_radius = 3, .cache = TL_SWITCH_OFF}, .shadow_debug = 1}},
     {"shadows pcss, tiled 1/2", 0, 0, {LPP, TILED, .light_scale = 0.5f, .shadows = {.filter = TL_SHADOW_FILTER_PCSS}}},
     {"shadows one tap, budget 2, fat", 0, 0,
-     {.mode = TL_MODE_FAT, .shadows = {.no_pcf = 1, .max_lights = 2, .atlas_size = 2048}}},
-    {"shadows disabled", 0, 0, {.shadows = {.disabled = 1}}},
+     {.mode = TL_MODE_FAT, .shadows = {.filter = TL_SHADOW_FILTER_BILINEAR, .max_lights = 2, .atlas_size = 2048}}},
+    {"shadows disabled", 0, 0, {.shadows = {.enabled = TL_SWITCH_OFF}}},
     {"fxaa off, exposure 2", 0, 0, {.fxaa = TL_FXAA_OFF, .exposure = 2.0f}},
     {"fxaa 12, thresholds", 0, 0, {.fxaa = TL_FXAA_12, .fxaa_edge_threshold = 0.25f, .fxaa_subpix = -1.0f}},
     {"fxaa 29, ambient", 0, 0, {.fxaa = TL_FXAA_29, .ambient = {0.05f, 0.04f, 0.03f}, .fxaa_edge_threshold_min = 0.05f}},
     {"fxaa 39, background", 0, 0, {.fxaa = TL_FXAA_39, .environment = {.background = {0.02f, 0.03f, 0.05f}}}},
-    {"no planning, full-screen lights", 0, 0, {.no_planning = 1, .fullscreen_lights = 1}},
+    {"no planning, full-screen lights", 0, 0, {.planning = TL_SWITCH_OFF, .fullscreen_lights = 1}},
     {"synchronous statistics, every target kept", 0, 0, {.synchronous_stats = 1, .keep_targets = TL_TARGETS_ALL}},
     {"showcase: defaults", 1, 0, {0}},
     {"showcase: clearcoat approximate", 1, 0, {.clearcoat = TL_CLEARCOAT_APPROXIMATE}},
@@ -90,19 +92,6 @@ static const combo k_combos[] = {
     {"showcase: thin-deferred tiled 1/1, msaa 2", 1, 0, {.mode = TL_MODE_THIN_DEFERRED, TILED, .msaa = 2}},
 };
 #define COMBOS (sizeof k_combos / sizeof k_combos[0])
-
-static tl_renderer *make(const tl_scene *s, const tl_renderer_options *o)
-{
-    tl_renderer_desc d = {.width = W, .height = H, .options = *o, .get_proc_address = tl_context_proc_loader,
-                          .get_proc_address_user = g_ctx, .logger = tl_test_logger};
-    tl_renderer *r = NULL;
-    if (tl_renderer_create(&d, &r) != TL_OK) return NULL;
-    if (tl_renderer_set_scene(r, s) != TL_OK) {
-        tl_renderer_destroy(r);
-        return NULL;
-    }
-    return r;
-}
 
 static int frame(tl_renderer *r, uint8_t *out)
 {
@@ -122,7 +111,8 @@ static size_t differ(const uint8_t *a, const uint8_t *b)
  * (without fog noise) against A's first frame. Returns the differing bytes found. */
 static size_t run_combo(const tl_scene *s, const combo *c, uint8_t *buf[2][FRAMES])
 {
-    tl_renderer *r[2] = {make(s, &c->o), make(s, &c->o)};
+    const tl_test_renderer_desc d = {.renderer = {.width = W, .height = H, .options = c->o}, .scene = s};
+    tl_renderer *r[2] = {tl_test_renderer(&d), tl_test_renderer(&d)};
     size_t worst = 0;
     int ok = r[0] && r[1];
     for (int k = 0; ok && k < FRAMES; k++) ok = frame(r[0], buf[0][k]) && frame(r[1], buf[1][k]);
@@ -148,34 +138,35 @@ static size_t run_combo(const tl_scene *s, const combo *c, uint8_t *buf[2][FRAME
     return worst;
 }
 
-/* Every value of every enumerated option, every light scale, tile size and sample count appears in
- * some combination: a value added to an enum without a combination fails here. */
-#define COVER(field, first, count)                                                                 \
-    for (int v = (first); v < (count); v++) {                                                      \
-        int seen = 0;                                                                              \
-        for (size_t c = 0; c < COMBOS; c++) seen |= (int)k_combos[c].o.field == v;                \
-        if (!seen) fprintf(stderr, "no combination has " #field " = %d\n", v);                    \
-        missing += !seen;                                                                          \
+/* Whether some combination holds a value of field f named `name` (DEFAULT counts as the value it
+ * stands for: same name). */
+static int combos_hold(const tl_option_info *f, const char *name)
+{
+    for (size_t c = 0; c < COMBOS; c++) {
+        int32_t v;
+        memcpy(&v, (const char *)&k_combos[c].o + f->offset, sizeof v);
+        if (f->type == TL_OPTION_BOOL ? (v != 0) == (strcmp(name, "1") == 0) : strcmp(f->value_name((uint32_t)v), name) == 0)
+            return 1;
     }
+    return 0;
+}
+
+/* Every value of every enumerated option and both of every on/off option of the option registry
+ * (a field added to it is covered here with no line written), every light scale, tile size and
+ * sample count appears in some combination: a value without a combination fails here. */
 static int combos_cover_every_value(void)
 {
     int missing = 0;
-    COVER(mode, 0, TL_MODE_COUNT_)
-    COVER(depth_format, 0, TL_DEPTH_FORMAT_COUNT_)
-    COVER(rt0, 0, TL_RT0_COUNT_)
-    COVER(light_buffer, 0, TL_LIGHT_BUFFER_COUNT_)
-    COVER(light_format, 0, TL_LIGHT_FORMAT_COUNT_)
-    COVER(light_strategy, 0, TL_LIGHT_STRATEGY_COUNT_)
-    COVER(lighting, 0, TL_LIGHTING_COUNT_)
-    COVER(fresnel, 0, TL_FRESNEL_COUNT_)
-    COVER(tiled_shading, 0, TL_TILED_SHADING_COUNT_)
-    COVER(transparency, 0, TL_TRANSPARENCY_COUNT_)
-    COVER(msaa_lighting, 0, TL_MSAA_LIGHTING_COUNT_)
-    COVER(fxaa, 0, TL_FXAA_COUNT_)
-    COVER(ssao.method, 0, TL_SSAO_COUNT_)
-    COVER(fog.mode, 0, TL_FOG_COUNT_)
-    COVER(shadows.filter, 0, TL_SHADOW_FILTER_PCSS + 1)
-    COVER(clearcoat, 0, TL_CLEARCOAT_COUNT_)
+    for (size_t i = 0; i < tl_option_count(); i++) {
+        const tl_option_info *f = tl_option_at(i);
+        if (f->type != TL_OPTION_ENUM && f->type != TL_OPTION_SWITCH && f->type != TL_OPTION_BOOL) continue;
+        for (uint32_t v = 0; v < (f->type == TL_OPTION_BOOL ? 2u : f->count); v++) {
+            const char *name = f->type == TL_OPTION_BOOL ? (v ? "1" : "0") : f->value_name(v);
+            if (combos_hold(f, name)) continue;
+            fprintf(stderr, "no combination has %s = %s\n", f->name, name);
+            missing++;
+        }
+    }
     const float scales[] = {0.0f, 1.0f, 0.5f, 0.25f};
     const uint32_t tiles[] = {0, 8, 16, 32}, samples[] = {0, 2, 4};
     for (size_t i = 0; i < 4; i++) {

@@ -38,8 +38,8 @@ static const downgrade_case k_cases[] = {
     {"msaa with an effect", {.msaa = 2, .bloom.enabled = 1}, {.bloom.enabled = 1}, 4, "msaa", "2", "1", "bloom reads a one-sample HDR"},
     {"light scale outside thin-lpp", {.mode = TL_MODE_FAT, .light_scale = 0.25f}, {.mode = TL_MODE_FAT}, 4,
      "light_scale", "0.25", "1", "only thin-lpp"},
-    {"stipple with fog", {.transparency = TL_TRANSPARENCY_STIPPLE, .fog.mode = TL_FOG_DISTANCE},
-     {.fog.mode = TL_FOG_DISTANCE}, 4, "transparency", "stipple", "forward", "fog"},
+    {"stipple with fog", {.transparency = TL_TRANSPARENCY_STIPPLE, .fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}},
+     {.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}}, 4, "transparency", "stipple", "forward", "fog"},
     {"stipple in fat", {.mode = TL_MODE_FAT, .transparency = TL_TRANSPARENCY_STIPPLE}, {.mode = TL_MODE_FAT}, 4,
      "transparency", "stipple", "forward", "thin-lpp"},
     {"clearcoat sums with MSAA", {.clearcoat = TL_CLEARCOAT_SUMS, .msaa = 4}, {.msaa = 4}, 4, "clearcoat", "sums",
@@ -52,10 +52,10 @@ static const downgrade_case k_cases[] = {
     {"reflections in forward", {.mode = TL_MODE_FORWARD, .ssr.enabled = 1}, {.mode = TL_MODE_FORWARD}, 4,
      "ssr.enabled", "1", "0", "forward"},
     {"SSAO in forward without the pre-pass",
-     {.mode = TL_MODE_FORWARD, .forward_no_depth_prepass = 1, .ssao.method = TL_SSAO_HEMISPHERE},
-     {.mode = TL_MODE_FORWARD, .forward_no_depth_prepass = 1}, 4, "ssao.method", "hemisphere", "off", "pre-pass"},
-    {"no pre-pass in Forward+", {.mode = TL_MODE_FORWARD, .forward_no_depth_prepass = 1}, {.mode = TL_MODE_FORWARD},
-     40, "forward_no_depth_prepass", "1", "0", "Forward+"},
+     {.mode = TL_MODE_FORWARD, .forward_depth_prepass = TL_SWITCH_OFF, .ssao = {.enabled = 1, .method = TL_SSAO_HEMISPHERE}},
+     {.mode = TL_MODE_FORWARD, .forward_depth_prepass = TL_SWITCH_OFF}, 4, "ssao.enabled", "1", "0", "pre-pass"},
+    {"no pre-pass in Forward+", {.mode = TL_MODE_FORWARD, .forward_depth_prepass = TL_SWITCH_OFF}, {.mode = TL_MODE_FORWARD},
+     40, "forward_depth_prepass", "off", "on", "Forward+"},
     {"shadow debug with per-sample edges", {.mode = TL_MODE_FAT, .msaa = 4, .shadow_debug = 1},
      {.mode = TL_MODE_FAT, .msaa = 4}, 4, "shadow_debug", "1", "0", "multisampled"},
     {"full-screen lights with tiles", {.fullscreen_lights = 1}, {0}, 40, "fullscreen_lights", "1", "0", "tiled"},
@@ -104,7 +104,7 @@ TL_TEST(plan_lists_each_downgrade_with_option_value_and_reason)
     }
     /* every default, and the automatic choices a scene leads to, list nothing */
     const tl_renderer_options autos[] = {{0},
-                                         {.fog.mode = TL_FOG_DISTANCE},                 /* auto transparency: forward */
+                                         {.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}},                 /* auto transparency: forward */
                                          {.msaa = 4},                                   /* auto clearcoat: approx */
                                          {.light_buffer = TL_LIGHT_BUFFER_COMPACT},     /* default Fresnel: nv */
                                          {.mode = TL_MODE_FORWARD, .tile_size = 32},    /* a tile size with volumes */
@@ -180,13 +180,9 @@ TL_TEST(renderer_logs_each_downgrade_once)
     test_scene t;
     lit_room(&t);
     log_count c = {0};
-    tl_renderer_desc d = {.width = 96, .height = 54, .options = {.msaa = 4, .light_scale = 0.5f},
-                          .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
-                          .logger = {count_log, &c}};
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
+    tl_renderer_desc d = {.width = 96, .height = 54, .options = {.msaa = 4, .light_scale = 0.5f}, .logger = {count_log, &c}};
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .scene = &t.s});
     if (!r) return;
-    TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_OK);
     for (int f = 0; f < 4; f++) TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
     TL_CHECK(tl_renderer_set_lights(r, t.s.lights, 1) == TL_OK); /* fewer light types: a re-plan */
     TL_CHECK(tl_renderer_resize(r, 80, 45) == TL_OK);

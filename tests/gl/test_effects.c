@@ -56,12 +56,12 @@ TL_TEST(effects_off_plan_nothing_on_plan_their_passes)
         TL_CHECK(tl_frame_plan_build(&n, &f, &noise) == TL_OK);
         TL_CHECK(memcmp(&base, &noise, sizeof base) == 0);
         tl_renderer_desc e = d;
-        e.options.ssao.method = TL_SSAO_DISC;
+        e.options.ssao.enabled = 1, e.options.ssao.method = TL_SSAO_DISC;
         TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
         TL_CHECK((on.targets & BIT(TL_TARGET_AO)) && (on.targets & BIT(TL_TARGET_AO_RAW)));
         TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel + 4u); /* ao.raw and ao, R16F */
         e = d;
-        e.options.fog.mode = TL_FOG_HEIGHT;
+        e.options.fog.enabled = 1, e.options.fog.mode = TL_FOG_HEIGHT;
         TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
         TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel);
         TL_CHECK(plan_has_effects(&on));
@@ -75,15 +75,15 @@ TL_TEST(effects_off_plan_nothing_on_plan_their_passes)
         TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel + 2u); /* its factor, R16F */
         /* forward without a depth pre-pass has no depth to estimate from: no SSAO */
         e = d;
-        e.options.ssao.method = TL_SSAO_DISC;
-        e.options.forward_no_depth_prepass = 1;
+        e.options.ssao.enabled = 1, e.options.ssao.method = TL_SSAO_DISC;
+        e.options.forward_depth_prepass = TL_SWITCH_OFF;
         TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
         if (modes[m] == TL_MODE_FORWARD) TL_CHECK(!(on.targets & BIT(TL_TARGET_AO)));
     }
-    tl_renderer_desc bad = {.width = 8, .height = 8, .options.ssao = {.method = TL_SSAO_DISC, .samples = 65}};
+    tl_renderer_desc bad = {.width = 8, .height = 8, .options.ssao = {.enabled = 1, .method = TL_SSAO_DISC, .samples = 65}};
     tl_frame_plan p;
     TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
-    bad = (tl_renderer_desc){.width = 8, .height = 8, .options.fog = {.mode = TL_FOG_DISTANCE, .noise = 2.0f}};
+    bad = (tl_renderer_desc){.width = 8, .height = 8, .options.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE, .noise = 2.0f}};
     TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
     bad = (tl_renderer_desc){.width = 8, .height = 8, .options.vignette = {.enabled = 1, .strength = 1.5f}};
     TL_CHECK(tl_frame_plan_build(&bad, &f, &p) == TL_ERROR_INVALID_ARGUMENT);
@@ -156,7 +156,7 @@ TL_TEST(ssao_open_plane_is_one)
             for (size_t z = 0; z < 2; z++) {
                 tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m],
                                       .options.depth_format = depths[z]};
-                d.options.ssao.method = (tl_ssao_method)method;
+                d.options.ssao.enabled = 1, d.options.ssao.method = (tl_ssao_method)method;
                 tl_renderer *r = tl_test_render_once(&q.s, d);
                 TL_CHECK(r);
                 if (!r) continue;
@@ -188,7 +188,7 @@ TL_TEST(ssao_inner_corner_darkens_bounded)
     for (int method = TL_SSAO_DISC; method <= TL_SSAO_HEMISPHERE; method++)
         for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
             tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m]};
-            d.options.ssao = (tl_ssao_desc){.method = (tl_ssao_method)method, .radius = radius, .falloff = radius};
+            d.options.ssao = (tl_ssao_desc){.enabled = 1, .method = (tl_ssao_method)method, .radius = radius, .falloff = radius};
             tl_renderer *r = tl_test_render_once(&q.s, d);
             TL_CHECK(r);
             if (!r) continue;
@@ -231,7 +231,7 @@ TL_TEST_FULL(effects_stats_count_effect_targets_apart)
         tl_renderer_desc d = {.width = 64, .height = 48, .options.mode = modes[m],
                               .options.light_strategy = TL_LIGHT_STRATEGY_TILED,
                               .options.synchronous_stats = 1, .options.lighting = TL_LIGHTING_GGX};
-        d.options.ssao.method = TL_SSAO_DISC;
+        d.options.ssao.enabled = 1, d.options.ssao.method = TL_SSAO_DISC;
         d.options.dof.enabled = 1;
         d.options.bloom.enabled = 1;
         d.options.ssr.enabled = 1;
@@ -266,7 +266,7 @@ TL_TEST_FULL(effects_finite_tiny_targets_and_extreme_depth)
                 q.s.camera.far_z = fars[fi];
                 tl_renderer_desc d = {.width = sizes[s][0], .height = sizes[s][1], .options.mode = modes[m],
                                       .options.depth_format = TL_DEPTH_FORMAT_D32F_REVERSED};
-                d.options.ssao.method = fi ? TL_SSAO_HEMISPHERE : TL_SSAO_DISC;
+                d.options.ssao.enabled = 1, d.options.ssao.method = fi ? TL_SSAO_HEMISPHERE : TL_SSAO_DISC;
                 d.options.fog = (tl_fog_desc){.mode = fi ? TL_FOG_HEIGHT : TL_FOG_DISTANCE, .noise = 0.5f,
                                               .color = {1, 1, 1}};
                 d.options.dof.enabled = 1;
@@ -304,7 +304,7 @@ TL_TEST(fog_known_depth_matches_formula_infinite_far_finite)
         for (size_t z = 0; z < 2; z++) {
             tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[m], .options.depth_format = depths[z]};
             tl_renderer *plain = tl_test_render_once(&q.s, d);
-            d.options.fog = (tl_fog_desc){.mode = TL_FOG_DISTANCE, .density = density, .color = {fog[0], fog[1],
+            d.options.fog = (tl_fog_desc){.enabled = 1, .mode = TL_FOG_DISTANCE, .density = density, .color = {fog[0], fog[1],
                                                                                                  fog[2]}};
             tl_renderer *fogged = tl_test_render_once(&q.s, d);
             TL_CHECK(plain && fogged);
@@ -335,7 +335,7 @@ TL_TEST(fog_known_depth_matches_formula_infinite_far_finite)
     /* looking away from the wall: background at the infinite far plane */
     q.s.camera.target[2] = 10.0f;
     tl_renderer *r = tl_test_render_once(&q.s, (tl_renderer_desc){.width = 8, .height = 8,
-                                                                  .options.fog = {.mode = TL_FOG_DISTANCE,
+                                                                  .options.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE,
                                                                                   .color = {fog[0], fog[1], fog[2]}}});
     float *h = r ? tl_test_read_target(r, TL_TARGET_HDR, 64) : NULL;
     TL_CHECK(h);

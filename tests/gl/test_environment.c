@@ -102,19 +102,14 @@ static void sphere_row_build(sphere_row *g)
                               .near_z = 1.0f, .far_z = 100.0f};
 }
 
+/* Every renderer here: W x H without FXAA and ambient light, every target kept. */
 static tl_renderer *make(tl_renderer_options o)
 {
-    if (!ensure_context()) return NULL;
     tl_renderer_desc d = {.width = W, .height = H, .options = o};
     d.options.fxaa = TL_FXAA_OFF;
     d.options.keep_targets = TL_TARGETS_ALL;
     d.options.ambient[0] = d.options.ambient[1] = d.options.ambient[2] = -1.0f;
-    d.get_proc_address = tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
-    d.logger = tl_test_logger;
-    tl_renderer *r = NULL;
-    tl_renderer_create(&d, &r);
-    return r;
+    return tl_test_renderer(&(tl_test_renderer_desc){.renderer = d});
 }
 
 static float *environment_image(void)

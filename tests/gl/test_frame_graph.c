@@ -10,88 +10,13 @@
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
 
+#include "gl_counter.h"
 #include "render_fixture.h"
 
 #define BIT(t) TL_TARGET_BIT(t)
 
-/* ---- a loader that counts the calls that must not happen in a steady frame ------------------- */
-
-#define COUNTED(ret, name, params, args)                                                           \
-    static ret(GLAD_API_PTR *real_##name) params;                                                  \
-    static unsigned long n_##name;                                                                 \
-    static ret GLAD_API_PTR count_##name params                                                    \
-    {                                                                                              \
-        n_##name++;                                                                                \
-        return real_##name args;                                                                   \
-    }
-#define COUNTED_VOID(name, params, args)                                                           \
-    static void(GLAD_API_PTR *real_##name) params;                                                 \
-    static unsigned long n_##name;                                                                 \
-    static void GLAD_API_PTR count_##name params                                                   \
-    {                                                                                              \
-        n_##name++;                                                                                \
-        real_##name args;                                                                          \
-    }
-
-COUNTED(GLint, GetUniformLocation, (GLuint p, const GLchar *n), (p, n))
-COUNTED_VOID(GetNamedFramebufferAttachmentParameteriv, (GLuint f, GLenum a, GLenum p, GLint *v), (f, a, p, v))
-COUNTED_VOID(GetFramebufferAttachmentParameteriv, (GLenum t, GLenum a, GLenum p, GLint *v), (t, a, p, v))
-COUNTED_VOID(Finish, (void), ())
-COUNTED_VOID(CompileShader, (GLuint s), (s))
-COUNTED_VOID(LinkProgram, (GLuint p), (p))
-COUNTED_VOID(GetIntegerv, (GLenum e, GLint *v), (e, v))
-COUNTED(GLenum, GetError, (void), ())
-COUNTED_VOID(GetQueryObjectuiv, (GLuint q, GLenum e, GLuint *v), (q, e, v))
-COUNTED_VOID(GetQueryObjectui64v, (GLuint q, GLenum e, GLuint64 *v), (q, e, v))
-COUNTED_VOID(ProgramUniform1i, (GLuint p, GLint l, GLint v), (p, l, v))
-COUNTED_VOID(ProgramUniform1f, (GLuint p, GLint l, GLfloat v), (p, l, v))
-COUNTED_VOID(ProgramUniformMatrix4fv, (GLuint p, GLint l, GLsizei c, GLboolean t, const GLfloat *v), (p, l, c, t, v))
-COUNTED_VOID(Uniform1i, (GLint l, GLint v), (l, v))
-COUNTED_VOID(NamedBufferSubData, (GLuint b, GLintptr o, GLsizeiptr s, const void *d), (b, o, s, d))
-COUNTED_VOID(BufferSubData, (GLenum t, GLintptr o, GLsizeiptr s, const void *d), (t, o, s, d))
-COUNTED_VOID(DrawElementsInstancedBaseInstance,
-             (GLenum m, GLsizei c, GLenum t, const void *i, GLsizei n, GLuint b), (m, c, t, i, n, b))
-
-typedef struct counted {
-    const char *name;
-    void *real_slot; /* where the real entry point goes (a function pointer variable) */
-    tl_gl_function thunk;
-    unsigned long *count;
-} counted;
-
-#define ENTRY(name) {"gl" #name, (void *)&real_##name, (tl_gl_function)count_##name, &n_##name}
-static const counted g_counted[] = {
-    ENTRY(GetUniformLocation), ENTRY(GetNamedFramebufferAttachmentParameteriv),
-    ENTRY(GetFramebufferAttachmentParameteriv), ENTRY(Finish), ENTRY(CompileShader), ENTRY(LinkProgram),
-    ENTRY(GetIntegerv), ENTRY(GetError), ENTRY(GetQueryObjectuiv), ENTRY(GetQueryObjectui64v),
-    ENTRY(ProgramUniform1i), ENTRY(ProgramUniform1f), ENTRY(ProgramUniformMatrix4fv), ENTRY(Uniform1i),
-    ENTRY(NamedBufferSubData), ENTRY(BufferSubData), ENTRY(DrawElementsInstancedBaseInstance),
-};
-#define COUNTED_N (sizeof g_counted / sizeof g_counted[0])
-
-static tl_gl_function counting_loader(void *user, const char *name)
-{
-    tl_gl_function real = tl_context_proc_loader(user, name);
-    for (size_t i = 0; i < COUNTED_N; i++)
-        if (real && strcmp(name, g_counted[i].name) == 0) {
-            memcpy(g_counted[i].real_slot, &real, sizeof real); /* same representation for every function pointer */
-            return g_counted[i].thunk;
-        }
-    return real;
-}
-
-static void counts_reset(void)
-{
-    for (size_t i = 0; i < COUNTED_N; i++) *g_counted[i].count = 0;
-}
-
-static void counts_print(const char *label)
-{
-    printf("%s:", label);
-    for (size_t i = 0; i < COUNTED_N; i++)
-        if (*g_counted[i].count) printf(" %s %lu", g_counted[i].name + 2, *g_counted[i].count);
-    printf("\n");
-}
+/* A count of the GL call counter (gl_counter.h): N(Finish) is glFinish's. */
+#define N(name) tl_test_gl_calls("gl" #name)
 
 /* ---- shared set-up ------------------------------------------------------------------------------ */
 
@@ -100,17 +25,6 @@ static tl_scene *crypt(uint32_t lights)
     tl_scene *s = NULL;
     TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = lights, .detail = 1}, &s) == TL_OK);
     return s;
-}
-
-static tl_renderer *renderer(tl_renderer_desc d, tl_get_proc_address_fn loader, const tl_scene *s)
-{
-    d.get_proc_address = loader ? loader : tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
-    d.logger = tl_test_logger;
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
-    if (r && s) TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);
-    return r;
 }
 
 static GLADapiproc fixture_load(void *user, const char *name)
@@ -137,43 +51,44 @@ TL_TEST(frame_graph_steady_frame_gl_calls)
     if (!s) return;
     for (int run = 0; run < 2 * (TL_MODE_COUNT_ - 1); run++) { /* every mode, then with every effect on */
         int mode = TL_MODE_THIN_LPP + run % (TL_MODE_COUNT_ - 1), fx = run >= TL_MODE_COUNT_ - 1;
-        tl_renderer_desc d = {.options.mode = (tl_render_mode)mode, .width = 160, .height = 90};
+        tl_renderer_desc d = {.options.mode = (tl_render_mode)mode, .width = 160, .height = 90,
+                              .get_proc_address = tl_test_gl_counting_loader};
         if (fx) {
-            d.options.ssao.method = TL_SSAO_DISC;
-            d.options.fog.mode = TL_FOG_DISTANCE;
+            d.options.ssao.enabled = 1, d.options.ssao.method = TL_SSAO_DISC;
+            d.options.fog.enabled = 1, d.options.fog.mode = TL_FOG_DISTANCE;
             d.options.dof.enabled = d.options.bloom.enabled = 1;
         }
-        tl_renderer *r = renderer(d, counting_loader, s);
+        tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .scene = s});
         if (!r) continue;
         TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK); /* warm: the first use of every object */
         TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
-        counts_reset();
+        tl_test_gl_counts_reset();
         TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
         char label[80];
         snprintf(label, sizeof label, "%s%s, steady frame without statistics", tl_render_mode_name((tl_render_mode)mode),
                  fx ? " with every effect" : "");
-        counts_print(label);
-        TL_CHECK_EQ_U(n_GetUniformLocation + n_Uniform1i + n_ProgramUniform1i + n_ProgramUniform1f +
-                          n_ProgramUniformMatrix4fv, 0);
-        TL_CHECK_EQ_U(n_GetNamedFramebufferAttachmentParameteriv + n_GetFramebufferAttachmentParameteriv, 0);
-        TL_CHECK_EQ_U(n_Finish, 0);
-        TL_CHECK_EQ_U(n_CompileShader + n_LinkProgram, 0);
-        TL_CHECK_EQ_U(n_GetIntegerv + n_GetError + n_GetQueryObjectuiv + n_GetQueryObjectui64v, 0);
-        TL_CHECK_EQ_U(n_NamedBufferSubData + n_BufferSubData, 0); /* per-frame data: the mapped ring */
-        TL_CHECK(n_DrawElementsInstancedBaseInstance > 0);
+        tl_test_gl_counts_print(label);
+        TL_CHECK_EQ_U(N(GetUniformLocation) + N(Uniform1i) + N(ProgramUniform1i) + N(ProgramUniform1f) +
+                          N(ProgramUniformMatrix4fv), 0);
+        TL_CHECK_EQ_U(N(GetNamedFramebufferAttachmentParameteriv) + N(GetFramebufferAttachmentParameteriv), 0);
+        TL_CHECK_EQ_U(N(Finish), 0);
+        TL_CHECK_EQ_U(N(CompileShader) + N(LinkProgram), 0);
+        TL_CHECK_EQ_U(N(GetIntegerv) + N(GetError) + N(GetQueryObjectuiv) + N(GetQueryObjectui64v), 0);
+        TL_CHECK_EQ_U(N(NamedBufferSubData) + N(BufferSubData), 0); /* per-frame data: the mapped ring */
+        TL_CHECK(N(DrawElementsInstancedBaseInstance) > 0);
         /* statistics read frames later: still no wait */
-        counts_reset();
+        tl_test_gl_counts_reset();
         tl_frame_stats st;
         for (int f = 0; f < 6; f++) TL_CHECK(tl_renderer_render(r, NULL, &st) == TL_OK);
         snprintf(label, sizeof label, "%s%s, 6 frames with ring statistics", tl_render_mode_name((tl_render_mode)mode),
                  fx ? " with every effect" : "");
-        counts_print(label);
-        TL_CHECK_EQ_U(n_Finish, 0);
-        TL_CHECK_EQ_U(n_GetUniformLocation + n_GetNamedFramebufferAttachmentParameteriv, 0);
+        tl_test_gl_counts_print(label);
+        TL_CHECK_EQ_U(N(Finish), 0);
+        TL_CHECK_EQ_U(N(GetUniformLocation) + N(GetNamedFramebufferAttachmentParameteriv), 0);
         /* waiting is asked for: one glFinish */
-        counts_reset();
+        tl_test_gl_counts_reset();
         TL_CHECK(tl_renderer_wait(r, &st) == TL_OK);
-        TL_CHECK_EQ_U(n_Finish, 1);
+        TL_CHECK_EQ_U(N(Finish), 1);
         TL_CHECK(st.gpu_valid && st.frame == 9);
         tl_renderer_destroy(r);
     }
@@ -187,7 +102,7 @@ TL_TEST(frame_graph_stats_ring_read_later)
     if (!ensure_context()) { tl_test_failures++; return; }
     tl_scene *s = crypt(16);
     if (!s) return;
-    tl_renderer *r = renderer((tl_renderer_desc){.width = 96, .height = 64}, NULL, s);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = {.width = 96, .height = 64}, .scene = s});
     if (!r) return;
     uint64_t last = 0;
     size_t reported = 0;
@@ -303,12 +218,11 @@ TL_TEST(frame_graph_render_to_state_promise)
         for (int k = 0; k < 4; k++) {
             int dz = k % 2;
             tl_light_strategy ls = k < 2 ? TL_LIGHT_STRATEGY_VOLUMES : TL_LIGHT_STRATEGY_TILED;
-            tl_renderer *r = renderer((tl_renderer_desc){.options.mode = (tl_render_mode)mode,
-                                                         .options.depth_format = depths[dz],
-                                                         .width = 96, .height = 64, .options.light_strategy = ls,
-                                                         .options.tiled_shading = dz ? TL_TILED_SHADING_COMPUTE
-                                                                             : TL_TILED_SHADING_FRAGMENT},
-                                      NULL, s);
+            tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+                .renderer = {.options.mode = (tl_render_mode)mode, .options.depth_format = depths[dz], .width = 96,
+                             .height = 64, .options.light_strategy = ls,
+                             .options.tiled_shading = dz ? TL_TILED_SHADING_COMPUTE : TL_TILED_SHADING_FRAGMENT},
+                .scene = s});
             if (!r) continue;
             scramble_state(&gl, fbo, tex, vao, buf);
             tl_render_output o = {.framebuffer = out_fbo, .x = 7, .y = 9, .width = 150, .height = 100};
@@ -433,11 +347,10 @@ TL_TEST(frame_graph_app_pass_tints_hdr)
     const tl_depth_format depths[2] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
     for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++)
         for (int dz = 0; dz < 2; dz++) {
-            tl_renderer *r = renderer((tl_renderer_desc){.options.mode = (tl_render_mode)mode,
-                                                         .options.depth_format = depths[dz],
-                                                         .width = w, .height = h,
-                                                         .options.keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_DEPTH)},
-                                      NULL, s);
+            tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+                .renderer = {.options.mode = (tl_render_mode)mode, .options.depth_format = depths[dz], .width = w,
+                             .height = h, .options.keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_DEPTH)},
+                .scene = s});
             if (!r) continue;
             TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
             float *plain = read_hdr(r, n);
@@ -511,7 +424,7 @@ static void nothing(void *user, const tl_app_pass_context *ctx)
 TL_TEST(frame_graph_app_pass_bad_input)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
-    tl_renderer *r = renderer((tl_renderer_desc){.width = 32, .height = 32}, NULL, NULL);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = {.width = 32, .height = 32}});
     if (!r) return;
     tl_app_pass_desc ok = {.name = "a", .after = "lights", .writes = BIT(TL_TARGET_HDR), .execute = nothing};
     tl_app_pass_desc d = ok;
@@ -559,9 +472,10 @@ TL_TEST(frame_graph_shared_targets_readback)
     if (!s) return;
     const uint32_t w = 120, h = 80;
     size_t n = (size_t)w * h, size = n * 4 * sizeof(float);
-    tl_renderer *shared = renderer((tl_renderer_desc){.width = w, .height = h}, NULL, s);
-    tl_renderer *kept = renderer((tl_renderer_desc){.width = w, .height = h, .options.keep_targets = TL_TARGETS_ALL},
-                                 NULL, s);
+    tl_test_renderer_desc d = {.renderer = {.width = w, .height = h}, .scene = s};
+    tl_renderer *shared = tl_test_renderer(&d);
+    d.renderer.options.keep_targets = TL_TARGETS_ALL;
+    tl_renderer *kept = tl_test_renderer(&d);
     if (!shared || !kept) return;
     tl_frame_plan ps, pk;
     TL_CHECK(tl_renderer_get_plan(shared, &ps) == TL_OK && tl_renderer_get_plan(kept, &pk) == TL_OK);
@@ -727,7 +641,8 @@ TL_TEST(frame_graph_resize_reallocates)
     if (!ensure_context()) { tl_test_failures++; return; }
     tl_scene *s = crypt(8);
     if (!s) return;
-    tl_renderer *r = renderer((tl_renderer_desc){.width = 64, .height = 48, .options.synchronous_stats = 1}, NULL, s);
+    tl_renderer *r = tl_test_renderer(
+        &(tl_test_renderer_desc){.renderer = {.width = 64, .height = 48, .options.synchronous_stats = 1}, .scene = s});
     if (!r) return;
     tl_frame_stats a, b;
     TL_CHECK(tl_renderer_render(r, NULL, &a) == TL_OK);

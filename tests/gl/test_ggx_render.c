@@ -18,20 +18,13 @@ typedef struct frame {
     float *hdr, *pos; /* W x H x 4; pos only when asked (fat) */
 } frame;
 
+/* Every renderer here: W x H without FXAA, every target and the frame's statistics readable. */
 static tl_renderer *make(tl_renderer_desc d)
 {
-    if (!ensure_context()) return NULL;
     d.width = W;
     d.height = H;
     d.options.fxaa = TL_FXAA_OFF;
-    d.options.keep_targets = TL_TARGETS_ALL;
-    d.options.synchronous_stats = 1;
-    d.get_proc_address = tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
-    d.logger = tl_test_logger;
-    tl_renderer *r = NULL;
-    tl_renderer_create(&d, &r);
-    return r;
+    return tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .readable = true});
 }
 
 static float *read_target(tl_renderer *r, tl_target_id t)

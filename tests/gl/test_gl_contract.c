@@ -304,11 +304,7 @@ TL_TEST(gl_contract_dirty_state_same_bytes)
         d.width = W;
         d.height = H;
         d.options.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR);
-        d.get_proc_address = tl_context_proc_loader;
-        d.get_proc_address_user = g_ctx;
-        d.logger = tl_test_logger;
-        tl_renderer *r = NULL;
-        TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
+        tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d});
         if (!r) continue;
         TL_CHECK(run_frame(&gl, r, &c.t.s, &o, NULL, 0, &clean));
         size_t lit = 0;
@@ -348,12 +344,8 @@ TL_TEST(gl_contract_pixel_store_survives)
     build_scene(&c);
     app_objects o;
     make_objects(&gl, &o);
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&(tl_renderer_desc){.width = W, .height = H,
-                                                    .options.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR),
-                                                    .get_proc_address = tl_context_proc_loader,
-                                                    .get_proc_address_user = g_ctx, .logger = tl_test_logger},
-                                &r) == TL_OK);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = W, .height = H, .options.keep_targets = TL_TARGET_BIT(TL_TARGET_HDR)}});
     static frame_bytes f;
     const GLenum names[] = {GL_UNPACK_ROW_LENGTH, GL_UNPACK_SKIP_PIXELS, GL_UNPACK_SKIP_ROWS, GL_UNPACK_ALIGNMENT,
                             GL_UNPACK_LSB_FIRST,  GL_PACK_ROW_LENGTH,    GL_PACK_SKIP_PIXELS, GL_PACK_SKIP_ROWS,

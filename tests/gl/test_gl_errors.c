@@ -31,10 +31,9 @@ static void drain_gl_errors(void)
 static tl_renderer *room_renderer(test_scene *t)
 {
     build_room(t);
-    tl_renderer *r = make_renderer(64, 48, TL_DEPTH_FORMAT_D24, 0, TL_FXAA_OFF);
-    TL_CHECK(r != NULL);
-    if (r) TL_CHECK(tl_renderer_set_scene(r, &t->s) == TL_OK);
-    return r;
+    return tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = 64, .height = 48, .options = {.depth_format = TL_DEPTH_FORMAT_D24, .fxaa = TL_FXAA_OFF}},
+        .scene = &t->s, .readable = true});
 }
 
 TL_TEST(gl_error_in_app_pass_fails_naming_the_pass)
@@ -120,10 +119,8 @@ TL_TEST(gl_objects_of_the_renderer_all_labelled)
     };
     for (int i = 0; i < 3; i++) {
         build_room(&t);
-        tl_renderer *r = make_renderer_desc(descs[i]);
-        TL_CHECK(r != NULL);
+        tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = descs[i], .scene = &t.s, .readable = true});
         if (!r) continue;
-        TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_OK);
         TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
         unsigned live = 0;
         live += check_labels("glIsBuffer", 0x82E0 /* GL_BUFFER */, "buffer", 512);

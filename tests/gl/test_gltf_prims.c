@@ -255,11 +255,7 @@ TL_TEST(renderer_non_finite_vertex_color_or_uv1_refused)
     tl_object o = {.index_count = 3};
     tl_scene s = {.vertices = v, .vertex_count = 3, .indices = idx, .index_count = 3, .objects = &o, .object_count = 1,
                   .colors = &colors[0][0], .uv1 = &uv1[0][0]};
-    if (!ensure_context()) return;
-    tl_renderer_desc d = {.width = 8, .height = 8, .get_proc_address = tl_context_proc_loader,
-                          .get_proc_address_user = g_ctx};
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = {.width = 8, .height = 8}});
     if (!r) return;
     TL_CHECK(tl_renderer_set_scene(r, &s) == TL_OK);
     colors[1][2] = NAN;

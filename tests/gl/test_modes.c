@@ -150,18 +150,6 @@ TL_TEST(plan_format_and_bad_input)
 
 /* ---- GL ------------------------------------------------------------------------------------- */
 
-static tl_renderer *make_renderer(tl_render_mode mode, uint32_t w, uint32_t h)
-{
-    tl_renderer *r = NULL;
-    /* every target kept readable, statistics of the frame just rendered */
-    tl_renderer_desc d = {.options.mode = mode, .width = w, .height = h, .options.keep_targets = TL_TARGETS_ALL,
-                          .options.synchronous_stats = 1,
-                          .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
-                          .logger = tl_test_logger};
-    tl_renderer_create(&d, &r);
-    return r;
-}
-
 /* The renderer allocates exactly what its plan lists, for every mode, and the programs it
  * compiles are cached: a second scene with the same features compiles nothing. */
 TL_TEST(plan_allocations_match_renderer)
@@ -171,10 +159,9 @@ TL_TEST(plan_allocations_match_renderer)
     TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 8, .detail = 1}, &s) == TL_OK);
     if (!s) return;
     for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++) {
-        tl_renderer *r = make_renderer((tl_render_mode)mode, 96, 64);
-        TL_CHECK(r != NULL);
+        tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+            .renderer = {.options.mode = (tl_render_mode)mode, .width = 96, .height = 64}, .scene = s, .readable = true});
         if (!r) continue;
-        TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);
         tl_frame_stats st;
         TL_CHECK(tl_renderer_render(r, NULL, &st) == TL_OK);
         tl_frame_plan p;
@@ -225,7 +212,8 @@ typedef struct frame_images {
 static int render_mode(const tl_scene *s, tl_render_mode mode, uint32_t w, uint32_t h, frame_images *out,
                        tl_frame_stats *st)
 {
-    tl_renderer *r = make_renderer(mode, w, h);
+    tl_renderer *r = tl_test_renderer(
+        &(tl_test_renderer_desc){.renderer = {.options.mode = mode, .width = w, .height = h}, .readable = true});
     if (!r) return 0;
     size_t n = (size_t)w * h * 4;
     out->ldr = malloc(n);
@@ -382,7 +370,8 @@ TL_TEST(render_to_caller_framebuffer)
     TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 8, .detail = 1}, &s) == TL_OK);
     if (!s) return;
     const uint32_t w = 64, h = 48, W = 100, H = 80;
-    tl_renderer *r = make_renderer(TL_MODE_THIN_LPP, w, h);
+    tl_renderer *r = tl_test_renderer(
+        &(tl_test_renderer_desc){.renderer = {.options.mode = TL_MODE_THIN_LPP, .width = w, .height = h}, .readable = true});
     TL_CHECK(r && tl_renderer_set_scene(r, s) == TL_OK && tl_renderer_render(r, NULL, NULL) == TL_OK);
     if (!r) return;
     uint8_t *own = malloc((size_t)w * h * 4), *theirs = malloc((size_t)W * H * 4);
@@ -439,7 +428,7 @@ TL_TEST(render_to_caller_framebuffer)
 }
 
 /* What planning saves: a scene without specular materials and without spot lights, planned and
- * unplanned (tl_renderer_options.no_planning): fewer bytes, fewer programs, the same image. */
+ * unplanned (tl_renderer_options.planning off): fewer bytes, fewer programs, the same image. */
 TL_TEST(plan_saving_same_image)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
@@ -459,7 +448,7 @@ TL_TEST(plan_saving_same_image)
         tl_renderer *r = NULL;
         tl_renderer_desc d = {.width = w, .height = h, .get_proc_address = tl_context_proc_loader,
                               .get_proc_address_user = g_ctx, .options.synchronous_stats = 1,
-                              .options.no_planning = unplanned};
+                              .options.planning = unplanned ? TL_SWITCH_OFF : TL_SWITCH_DEFAULT};
         TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
         if (!r) continue;
         TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);

@@ -2,7 +2,8 @@
  * plan's multisampled targets, their bytes and its refusals; a lit triangle over a flat background
  * resolves to the triangle's analytic coverage of each edge pixel within 1/samples, and every
  * interior pixel equals the one-sample frame within FP16 rounding, in thin-lpp (the material pass
- * multisampled over the 1x light buffer) and forward, with volumes and with tiles; switching MSAA
+ * multisampled over the 1x light buffer) and forward, with volumes and with tiles; per-sample edges
+ * of a depth step alone (same normal, same material) classified and lit per sample; switching MSAA
  * at run time and resizing; the crypt's figures.
  * The triangle case was seen to fail under two mutations: every fragment taking its own pixel's
  * light texel (a resolved pixel off its covered sample positions by 0.28) and the tone map
@@ -146,8 +147,8 @@ TL_TEST(msaa_plan_targets_and_refusals)
         {.options.mode = TL_MODE_THIN_DEFERRED, .options.msaa_lighting = TL_MSAA_LIGHTING_MATERIAL_PASS},
         {.options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES, .options.light_scale = 0.5f},
         {.options.mode = TL_MODE_FORWARD, .options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES},
-        {.options.mode = TL_MODE_FAT, .options.ssao.method = TL_SSAO_DISC},
-        {.options.light_scale = 0.5f}, {.options.ssao.method = TL_SSAO_DISC}, {.options.bloom.enabled = 1}};
+        {.options.mode = TL_MODE_FAT, .options.ssao = {.enabled = 1, .method = TL_SSAO_DISC}},
+        {.options.light_scale = 0.5f}, {.options.ssao = {.enabled = 1, .method = TL_SSAO_DISC}}, {.options.bloom.enabled = 1}};
     for (int i = 0; i < 8; i++) {
         tl_frame_plan p, off;
         refused[i].options.msaa = 4;
@@ -624,6 +625,150 @@ TL_TEST(msaa_tile_depth_bounds_cover_every_sample)
             TL_CHECK_LE(worst, 1.0 / 256.0);
             free(tiled.hdr), free(volumes.hdr), tiled.hdr = volumes.hdr = NULL;
         }
+    }
+}
+
+/* ---- an edge of depth alone ------------------------------------------------------------------------- */
+
+/* The triangle raised over its background with nothing else different: both face the camera (normal
+ * +Z), one material, lit by a point light 2 m behind the camera, 7 m from the triangle's plane and
+ * 12 m from the background's (its light about 3 times the background's). parts: 1 the background at z = -10
+ * (4: moved to z = -5, the triangle's plane over the whole frame), 2 the triangle at z = -5. */
+static void depth_scene_init(tri_scene *t, int parts)
+{
+    static const double bx[4] = {-2, W + 2, W + 2, -2}, by[4] = {-2, -2, H + 2, H + 2};
+    tri_scene_init(t);
+    for (int i = 0; i < 4; i++) unproject(bx[i], by[i], parts & 4 ? -5.0 : -10.0, t->v[i].position);
+    for (int i = 4; i < 7; i++) t->v[i].normal[0] = 0.0f, t->v[i].normal[2] = 1.0f;
+    t->mat[0] = (tl_material){.albedo = {0.5f, 0.5f, 0.5f}};
+    t->obj[1].material = 0;
+    t->s.material_count = 1;
+    t->light = (tl_light){.type = TL_LIGHT_POINT, .position = {0.3f, -0.2f, 2.0f}, .color = {40, 40, 40},
+                          .radius = 40.0f};
+    if (!(parts & 2)) t->s.object_count = 1, t->s.index_count = 6;
+}
+
+/* The frame's 8-bit output and, with per-sample edges, its msaa.edges target (R: 1 marked). */
+static int render_depth_frame(const tl_scene *s, tl_render_mode mode, lit_by by, uint32_t msaa, uint8_t *out,
+                              float **edges)
+{
+    tl_renderer_desc d = {.width = W, .height = H};
+    d.options.mode = mode;
+    d.options.light_strategy = by.st;
+    d.options.tiled_shading = by.shading;
+    d.options.msaa = msaa;
+    d.options.msaa_lighting = msaa > 1 ? TL_MSAA_LIGHTING_SAMPLE_EDGES : TL_MSAA_LIGHTING_DEFAULT;
+    d.options.fxaa = TL_FXAA_OFF;
+    d.options.ambient[0] = d.options.ambient[1] = d.options.ambient[2] = -1.0f;
+    tl_renderer *r = tl_test_render_once(s, d);
+    size_t size = (size_t)W * H * 4;
+    int ok = r && tl_renderer_read_output(r, out, &size) == TL_OK;
+    if (ok && edges) ok = (*edges = tl_test_read_target(r, TL_TARGET_MSAA_EDGES, (size_t)W * H)) != NULL;
+    tl_renderer_destroy(r);
+    return ok;
+}
+
+/* The continuous 8-bit sRGB code of linear v. */
+static double srgb_encode8(double v)
+{
+    v = fmin(fmax(v, 0.0), 1.0);
+    return 255.0 * (v <= 0.0031308 ? 12.92 * v : 1.055 * pow(v, 1.0 / 2.4) - 0.055);
+}
+
+static double srgb_decode_c(double code) /* a continuous code, clamped to 0..255 */
+{
+    double c = fmin(fmax(code, 0.0), 255.0) / 255.0;
+    return c <= 0.04045 ? c / 12.92 : pow((c + 0.055) / 1.055, 2.4);
+}
+
+/* The least and the largest code of channel c over pixel k's 3 x 3 neighbourhood: the light at a
+ * point within half a pixel of k's centre (a sample's) lies between them (one plane, one point
+ * light: a smooth field, near linear over a pixel). */
+static void code_range(const uint8_t *out, size_t k, int c, double r[2])
+{
+    int i = (int)(k % W), j = (int)(k / W);
+    r[0] = 255.0, r[1] = 0.0;
+    for (int y = j - 1; y <= j + 1; y++)
+        for (int x = i - 1; x <= i + 1; x++) {
+            if (x < 0 || y < 0 || x >= W || y >= H) continue;
+            double v = out[4 * ((size_t)y * W + (size_t)x) + (size_t)c];
+            r[0] = fmin(r[0], v), r[1] = fmax(r[1], v);
+        }
+}
+
+/* The figures of one multisampled frame against the two one-sample frames. */
+typedef struct depth_edge {
+    size_t mixed, marked, wrong_marks, outside;
+    double worst, width, apart; /* codes beyond the interval; the widest interval; the frames' least difference */
+} depth_edge;
+
+/* Per-sample edges of a depth step alone with n samples: msaa.edges marks exactly the pixels whose
+ * sample positions lie on both surfaces (the geometry's, with the context's positions), and every
+ * pixel resolves to its samples' mix of the two surfaces' one-sample frames (near: the triangle's
+ * plane drawn alone over the frame; far: the background alone): the covered positions' share k / n
+ * of near and the rest of far, mixed in linear light (each sample tone-mapped, then averaged). The
+ * thin modes light a sample at its own position, so each frame's value is taken over the 3 x 3
+ * pixels around (code_range); interval: those codes +- 1/2 (their rounding), the mix's relative FP16
+ * step either way, the output's code +- 1/2. Interior pixels (k = 0 or n) are lit once. */
+static depth_edge measure_depth_edge(const tri_scene *t, uint32_t n, float pos[8][2], const uint8_t *near,
+                                     const uint8_t *far, const uint8_t *ms, const float *edges)
+{
+    depth_edge e = {.apart = 255.0};
+    for (size_t k = 0; k < (size_t)W * H; k++) {
+        double sc = sampled_coverage(t, (int)(k % W), (int)(k / W), n, pos), a[2], b[2];
+        int mix = sc > 0.0 && sc < 1.0, mark = edges[4 * k] > 0.5f;
+        e.mixed += (size_t)mix, e.marked += (size_t)mark, e.wrong_marks += (size_t)(mix != mark);
+        for (int c = 0; c < 3; c++) {
+            code_range(near, k, c, a);
+            code_range(far, k, c, b);
+            double lo = sc * srgb_decode_c(a[0] - 0.5) + (1.0 - sc) * srgb_decode_c(b[0] - 0.5);
+            double hi = sc * srgb_decode_c(a[1] + 0.5) + (1.0 - sc) * srgb_decode_c(b[1] + 0.5);
+            lo = srgb_encode8(lo * (1.0 - 1.0 / 1024.0)), hi = srgb_encode8(hi * (1.0 + 1.0 / 1024.0));
+            double got = ms[4 * k + (size_t)c], beyond = fmax(lo - 0.5 - got, got - hi - 0.5);
+            if (mix) e.width = fmax(e.width, hi - lo + 1.0);
+            if (mix) e.apart = fmin(e.apart, fabs((double)near[4 * k + (size_t)c] - far[4 * k + (size_t)c]));
+            if (beyond > 0.0) e.outside++, e.worst = fmax(e.worst, beyond);
+        }
+    }
+    return e;
+}
+
+/* A depth step with the same normal and material on both sides (the classification by depth alone,
+ * docs/antialiasing.md): thin-lpp, thin-deferred and fat, 2 and 4 samples, light volumes and the
+ * compute tiled pass (which lights the edge samples itself). */
+TL_TEST(msaa_sample_edges_depth_step_alone_classified_and_lit_per_sample)
+{
+    if (!ensure_context()) return;
+    static tri_scene full, near, far;
+    static uint8_t one[2][W * H * 4], ms[W * H * 4];
+    depth_scene_init(&full, 3);
+    depth_scene_init(&near, 6);
+    depth_scene_init(&far, 1);
+    const tl_render_mode modes3[3] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT};
+    const lit_by bys[2] = {by_volumes, by_tiles_compute};
+    for (int m = 0; m < 3; m++) {
+        TL_CHECK(render_depth_frame(&near.s, modes3[m], by_volumes, 1, one[0], NULL) &&
+                 render_depth_frame(&far.s, modes3[m], by_volumes, 1, one[1], NULL));
+        for (uint32_t n = 2; n <= 4; n *= 2)
+            for (int k = 0; k < 2; k++) {
+                float pos[8][2], *edges = NULL;
+                uint32_t real = context_samples(n); /* asked n, the targets have real (llvmpipe: 4 for 2) */
+                TL_CHECK(real >= n && real <= 8 && sample_positions(real, pos));
+                if (!render_depth_frame(&full.s, modes3[m], bys[k], n, ms, &edges)) {
+                    TL_CHECK(!"rendered");
+                    continue;
+                }
+                depth_edge e = measure_depth_edge(&full, real, pos, one[0], one[1], ms, edges);
+                printf("%s/%s msaa %u per-sample edges, depth step alone: %zu pixels with samples on both surfaces, "
+                       "%zu marked (%zu differ); %zu channels beyond their interval (worst by %.2f codes); on those "
+                       "pixels the two frames differ by %.0f codes at least, the widest interval is %.1f\n",
+                       tl_render_mode_name(modes3[m]), k ? "tiled (compute)" : "volumes", n, e.mixed, e.marked,
+                       e.wrong_marks, e.outside, e.worst, e.apart, e.width);
+                TL_CHECK(e.mixed > 50 && e.apart > 2.0 * e.width);
+                TL_CHECK_EQ_U(e.wrong_marks, 0);
+                TL_CHECK_EQ_U(e.outside, 0);
+                free(edges);
+            }
     }
 }
 

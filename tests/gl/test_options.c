@@ -9,48 +9,11 @@
 #include <time.h>
 
 #include "gl/gl.h"
+#include "gl_counter.h"
 #include "render_fixture.h"
 #include "thinlight/context.h"
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
-
-/* ---- a loader that counts what a change must not do ------------------------------------------- */
-
-#define COUNTED_VOID(name, params, args)                                                           \
-    static void(GLAD_API_PTR *real_##name) params;                                                 \
-    static unsigned long n_##name;                                                                 \
-    static void GLAD_API_PTR count_##name params                                                   \
-    {                                                                                              \
-        n_##name++;                                                                                \
-        real_##name args;                                                                          \
-    }
-
-COUNTED_VOID(TextureSubImage2D,
-             (GLuint t, GLint l, GLint x, GLint y, GLsizei w, GLsizei h, GLenum f, GLenum ty, const void *p),
-             (t, l, x, y, w, h, f, ty, p))
-COUNTED_VOID(GenerateTextureMipmap, (GLuint t), (t))
-COUNTED_VOID(LinkProgram, (GLuint p), (p))
-
-static tl_gl_function count_loader(void *user, const char *name)
-{
-    static const struct {
-        const char *name;
-        void *real_slot;
-        tl_gl_function thunk;
-    } wrapped[] = {{"glTextureSubImage2D", (void *)&real_TextureSubImage2D, (tl_gl_function)count_TextureSubImage2D},
-                   {"glGenerateTextureMipmap", (void *)&real_GenerateTextureMipmap,
-                    (tl_gl_function)count_GenerateTextureMipmap},
-                   {"glLinkProgram", (void *)&real_LinkProgram, (tl_gl_function)count_LinkProgram}};
-    tl_gl_function real = tl_context_proc_loader(user, name);
-    for (size_t i = 0; i < sizeof wrapped / sizeof wrapped[0]; i++)
-        if (real && strcmp(name, wrapped[i].name) == 0) {
-            memcpy(wrapped[i].real_slot, &real, sizeof real); /* same representation for every function pointer */
-            return wrapped[i].thunk;
-        }
-    return real;
-}
-
-static void counts_reset(void) { n_TextureSubImage2D = n_GenerateTextureMipmap = n_LinkProgram = 0; }
 
 /* ---- the scene, renderers, an application pass ------------------------------------------------- */
 
@@ -93,15 +56,12 @@ static void square_execute(void *user, const tl_app_pass_context *ctx)
 static const tl_app_pass_desc k_square = {.name = "square", .after = "transparent", .writes = TL_TARGET_BIT(TL_TARGET_HDR),
                                           .execute = square_execute};
 
+/* Every renderer here counts GL calls (gl_counter.h) and carries the square. */
 static tl_renderer *renderer(const tl_renderer_options *o, uint32_t w, uint32_t h, const tl_scene *s)
 {
-    tl_renderer_desc d = {.width = w, .height = h, .options = *o, .get_proc_address = count_loader,
-                          .get_proc_address_user = g_ctx, .logger = tl_test_logger};
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
-    if (r && s) TL_CHECK(tl_renderer_set_scene(r, s) == TL_OK);
-    if (r) TL_CHECK(tl_renderer_add_pass(r, &k_square) == TL_OK);
-    return r;
+    return tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = w, .height = h, .options = *o, .get_proc_address = tl_test_gl_counting_loader},
+        .scene = s, .passes = &k_square, .pass_count = 1});
 }
 
 /* ---- the options a frame may change ------------------------------------------------------------ */
@@ -111,7 +71,7 @@ typedef struct option_case {
     tl_renderer_options o;
 } option_case;
 
-#define SSAO_ON {.method = TL_SSAO_DISC}
+#define SSAO_ON {.enabled = 1, .method = TL_SSAO_DISC}
 static const option_case k_cases[] = {
     {"defaults", {0}},
     {"forward", {.mode = TL_MODE_FORWARD}},
@@ -129,9 +89,9 @@ static const option_case k_cases[] = {
                                                   .light_strategy = TL_LIGHT_STRATEGY_TILED, .tile_size = 8,
                                                   .tiled_shading = TL_TILED_SHADING_COMPUTE}},
     {"ssao", {.ssao = SSAO_ON}},
-    {"ssao hemisphere, forward", {.mode = TL_MODE_FORWARD, .ssao = {.method = TL_SSAO_HEMISPHERE, .diffuse = 1}}},
-    {"fog", {.fog = {.mode = TL_FOG_DISTANCE, .color = {0.1f, 0.1f, 0.12f}}}},
-    {"height fog, fat", {.mode = TL_MODE_FAT, .fog = {.mode = TL_FOG_HEIGHT, .density = 0.2f}}},
+    {"ssao hemisphere, forward", {.mode = TL_MODE_FORWARD, .ssao = {.enabled = 1, .method = TL_SSAO_HEMISPHERE, .diffuse = 1}}},
+    {"fog", {.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE, .color = {0.1f, 0.1f, 0.12f}}}},
+    {"height fog, fat", {.mode = TL_MODE_FAT, .fog = {.enabled = 1, .mode = TL_FOG_HEIGHT, .density = 0.2f}}},
     {"depth of field", {.dof = {.enabled = 1, .aperture = 0.02f}}},
     {"bloom", {.bloom = {.enabled = 1, .threshold = 0.2f}}},
     {"bloom, 3 levels", {.bloom = {.enabled = 1, .threshold = 0.2f, .levels = 3}}},
@@ -142,13 +102,13 @@ static const option_case k_cases[] = {
     {"fxaa 12", {.fxaa = TL_FXAA_12, .fxaa_subpix = -1}},
     {"fxaa 39, exposure 2", {.fxaa = TL_FXAA_39, .exposure = 2.0f}},
     {"ambient off, full-screen lights", {.ambient = {-1, -1, -1}, .fullscreen_lights = 1}},
-    {"forward without pre-pass", {.mode = TL_MODE_FORWARD, .forward_no_depth_prepass = 1}},
-    {"every effect", {.ssao = SSAO_ON, .fog = {.mode = TL_FOG_DISTANCE}, .dof = {.enabled = 1}, .bloom = {.enabled = 1},
+    {"forward without pre-pass", {.mode = TL_MODE_FORWARD, .forward_depth_prepass = TL_SWITCH_OFF}},
+    {"every effect", {.ssao = SSAO_ON, .fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}, .dof = {.enabled = 1}, .bloom = {.enabled = 1},
                       .ssr = {.enabled = 1}, .vignette = {.enabled = 1}, .fxaa = TL_FXAA_OFF}},
     {"every effect, fat, reversed z", {.mode = TL_MODE_FAT, .depth_format = TL_DEPTH_FORMAT_D32F_REVERSED,
-                                       .ssao = SSAO_ON, .fog = {.mode = TL_FOG_DISTANCE}, .dof = {.enabled = 1},
+                                       .ssao = SSAO_ON, .fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}, .dof = {.enabled = 1},
                                        .bloom = {.enabled = 1}, .ssr = {.enabled = 1}}},
-    {"no planning", {.no_planning = 1}},
+    {"no planning", {.planning = TL_SWITCH_OFF}},
     {"defaults again", {0}},
 };
 #define CASES (sizeof k_cases / sizeof k_cases[0])
@@ -210,14 +170,16 @@ TL_TEST(options_change_keeps_scene_and_programs)
     tl_renderer *r = s ? renderer(&k_cases[0].o, 96, 54, s) : NULL;
     for (int round = 0; r && round < 2; round++)
         for (size_t k = 0; k < CASES; k++) {
-            counts_reset();
+            tl_test_gl_counts_reset();
             TL_CHECK(tl_renderer_set_options(r, &k_cases[k].o) == TL_OK);
             TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
-            if (n_TextureSubImage2D || n_GenerateTextureMipmap || (round && n_LinkProgram))
+            unsigned long uploads = tl_test_gl_calls("glTextureSubImage2D"),
+                          mipmaps = tl_test_gl_calls("glGenerateTextureMipmap"), links = tl_test_gl_calls("glLinkProgram");
+            if (uploads || mipmaps || (round && links))
                 fprintf(stderr, "%s, round %d: %lu texture uploads, %lu mipmaps, %lu programs linked\n", k_cases[k].name,
-                        round, n_TextureSubImage2D, n_GenerateTextureMipmap, n_LinkProgram);
-            TL_CHECK_EQ_U(n_TextureSubImage2D + n_GenerateTextureMipmap, 0);
-            if (round) TL_CHECK_EQ_U(n_LinkProgram, 0);
+                        round, uploads, mipmaps, links);
+            TL_CHECK_EQ_U(uploads + mipmaps, 0);
+            if (round) TL_CHECK_EQ_U(links, 0);
         }
     tl_renderer_destroy(r);
     tl_scene_destroy(s);
@@ -228,12 +190,12 @@ TL_TEST(options_out_of_range_keep_the_renderer)
 {
     if (!ensure_context() || !load_gl()) { tl_test_failures++; return; }
     tl_scene *s = crypt(8);
-    tl_renderer_options fog = {.fog = {.mode = TL_FOG_DISTANCE}};
+    tl_renderer_options fog = {.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}};
     tl_renderer *r = s ? renderer(&fog, 64, 36, s) : NULL;
     const size_t n = 64 * 36 * 4;
     uint8_t *a = malloc(n), *b = malloc(n);
     const tl_renderer_options bad[] = {{.mode = TL_MODE_COUNT_},      {.tile_size = 12},
-                                       {.ssao = {.method = TL_SSAO_DISC, .samples = 65}},
+                                       {.ssao = {.enabled = 1, .method = TL_SSAO_DISC, .samples = 65}},
                                        {.bloom = {.enabled = 1, .levels = 9}},
                                        {.light_buffer = TL_LIGHT_BUFFER_COMPACT, .light_format = TL_LIGHT_FORMAT_R11G11B10F}};
     if (r && a && b && render_read(r, a, n)) {
@@ -287,7 +249,7 @@ static const cost_case k_costs[] = {
     {"depth format (D24 <-> reversed D32F)", {0}, {.depth_format = TL_DEPTH_FORMAT_D32F_REVERSED}},
     {"lighting (Blinn-Phong <-> GGX)", {.lighting = TL_LIGHTING_BLINN_PHONG}, {.lighting = TL_LIGHTING_GGX}},
     {"SSAO off <-> on", {0}, {.ssao = SSAO_ON}},
-    {"fog off <-> on", {0}, {.fog = {.mode = TL_FOG_DISTANCE}}},
+    {"fog off <-> on", {0}, {.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}}},
     {"depth of field off <-> on", {0}, {.dof = {.enabled = 1}}},
     {"bloom off <-> on", {0}, {.bloom = {.enabled = 1}}},
     {"reflections off <-> on", {0}, {.ssr = {.enabled = 1}}},

@@ -18,11 +18,12 @@ static void compare_volumes(test_scene *t, const tl_camera *cam, tl_depth_format
     const uint32_t w = 160, h = 96;
     TL_CHECK(ensure_context());
     if (!g_ctx) return;
-    tl_renderer *vol = make_renderer(w, h, depth, 0, TL_FXAA_OFF), *ref = make_renderer(w, h, depth, 1, TL_FXAA_OFF);
-    TL_CHECK(vol && ref);
+    tl_test_renderer_desc d = {.renderer = {.width = w, .height = h, .options = {.depth_format = depth, .fxaa = TL_FXAA_OFF}},
+                               .scene = &t->s, .readable = true};
+    tl_renderer *vol = tl_test_renderer(&d);
+    d.renderer.options.fullscreen_lights = 1;
+    tl_renderer *ref = tl_test_renderer(&d);
     if (!vol || !ref) return;
-    TL_CHECK(tl_renderer_set_scene(vol, &t->s) == TL_OK);
-    TL_CHECK(tl_renderer_set_scene(ref, &t->s) == TL_OK);
     tl_frame_stats sv, sr;
     TL_CHECK(tl_renderer_render(vol, cam, &sv) == TL_OK);
     TL_CHECK(tl_renderer_render(ref, cam, &sr) == TL_OK);
@@ -143,10 +144,10 @@ TL_TEST(light_volume_mixed_types_draw_calls)
     t.s.light_count = 4;
     compare_volumes(&t, NULL, TL_DEPTH_FORMAT_D24, "mixed types (D24)");
     /* draw calls grow with light types, not counts */
-    tl_renderer *r = make_renderer(96, 64, TL_DEPTH_FORMAT_D24, 0, TL_FXAA_OFF);
-    TL_CHECK(r != NULL);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = 96, .height = 64, .options = {.depth_format = TL_DEPTH_FORMAT_D24, .fxaa = TL_FXAA_OFF}},
+        .scene = &t.s, .readable = true});
     if (!r) return;
-    TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_OK);
     tl_frame_stats st;
     TL_CHECK(tl_renderer_render(r, NULL, &st) == TL_OK);
     TL_CHECK_EQ_U(st.lights_drawn[TL_LIGHT_POINT], 2);
@@ -171,11 +172,12 @@ TL_TEST(fxaa_reduces_edge_gradient)
     t.s.light_count = 1;
     /* a slightly rotated view so that the box's silhouette edges are not axis-aligned */
     tl_camera cam = {{2.5f, 2.2f, 6.5f}, {0, 1.2f, 0}, {0.12f, 1, 0}, 0.9f, 0.1f, 100.0f};
-    tl_renderer *off = make_renderer(w, h, TL_DEPTH_FORMAT_D24, 0, TL_FXAA_OFF);
-    tl_renderer *on = make_renderer(w, h, TL_DEPTH_FORMAT_D24, 0, TL_FXAA_29);
-    TL_CHECK(off && on);
+    tl_test_renderer_desc d = {.renderer = {.width = w, .height = h, .options = {.depth_format = TL_DEPTH_FORMAT_D24, .fxaa = TL_FXAA_OFF}},
+                               .scene = &t.s, .readable = true};
+    tl_renderer *off = tl_test_renderer(&d);
+    d.renderer.options.fxaa = TL_FXAA_29;
+    tl_renderer *on = tl_test_renderer(&d);
     if (!off || !on) return;
-    TL_CHECK(tl_renderer_set_scene(off, &t.s) == TL_OK && tl_renderer_set_scene(on, &t.s) == TL_OK);
     TL_CHECK(tl_renderer_render(off, &cam, NULL) == TL_OK && tl_renderer_render(on, &cam, NULL) == TL_OK);
     size_t n = (size_t)w * h * 4;
     uint8_t *a = malloc(n), *b = malloc(n);
@@ -220,8 +222,8 @@ TL_TEST(fxaa_flat_and_text_pattern_bounded)
     const uint32_t w = 128, h = 64;
     TL_CHECK(ensure_context());
     if (!g_ctx) return;
-    tl_renderer *r = make_renderer(w, h, TL_DEPTH_FORMAT_D24, 0, TL_FXAA_29);
-    TL_CHECK(r != NULL);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = w, .height = h, .options = {.depth_format = TL_DEPTH_FORMAT_D24, .fxaa = TL_FXAA_29}}, .readable = true});
     if (!r) return;
     size_t n = (size_t)w * h * 4;
     uint8_t *img = malloc(n), *out = malloc(n);
@@ -306,8 +308,8 @@ TL_TEST(default_scene_image_sanity)
     tl_scene *scene = NULL;
     TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 64}, &scene) == TL_OK);
     if (!scene) return;
-    tl_renderer *r = make_renderer(w, h, TL_DEPTH_FORMAT_D24, 0, TL_FXAA_29);
-    TL_CHECK(r != NULL);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = w, .height = h, .options = {.depth_format = TL_DEPTH_FORMAT_D24, .fxaa = TL_FXAA_29}}, .readable = true});
     if (!r) {
         tl_scene_destroy(scene);
         return;

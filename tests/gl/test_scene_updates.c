@@ -11,79 +11,18 @@
 #include <time.h>
 
 #include "gl/gl.h"
+#include "gl_counter.h"
 #include "render_fixture.h"
 #include "thinlight/context.h"
 #include "thinlight/renderer.h"
 #include "thinlight/scene.h"
 
-/* ---- a loader that counts what an update uploads ------------------------------------------------ */
+/* ---- what an update uploads: the GL call counter (gl_counter.h) ------------------------------- */
 
-static unsigned long n_uploads, n_textures, n_links; /* GL calls that send data; texture uploads; links */
-static unsigned long long n_upload_bytes;            /* bytes those calls sent from the CPU */
-
-static void(GLAD_API_PTR *real_NamedBufferStorage)(GLuint, GLsizeiptr, const void *, GLbitfield);
-static void GLAD_API_PTR count_NamedBufferStorage(GLuint b, GLsizeiptr size, const void *data, GLbitfield flags)
-{
-    if (data) {
-        n_uploads++;
-        n_upload_bytes += (unsigned long long)size;
-    }
-    real_NamedBufferStorage(b, size, data, flags);
-}
-static void(GLAD_API_PTR *real_NamedBufferSubData)(GLuint, GLintptr, GLsizeiptr, const void *);
-static void GLAD_API_PTR count_NamedBufferSubData(GLuint b, GLintptr offset, GLsizeiptr size, const void *data)
-{
-    n_uploads++;
-    n_upload_bytes += (unsigned long long)size;
-    real_NamedBufferSubData(b, offset, size, data);
-}
-static void(GLAD_API_PTR *real_NamedBufferData)(GLuint, GLsizeiptr, const void *, GLenum);
-static void GLAD_API_PTR count_NamedBufferData(GLuint b, GLsizeiptr size, const void *data, GLenum usage)
-{
-    if (data) {
-        n_uploads++;
-        n_upload_bytes += (unsigned long long)size;
-    }
-    real_NamedBufferData(b, size, data, usage);
-}
-static void(GLAD_API_PTR *real_TextureSubImage2D)(GLuint, GLint, GLint, GLint, GLsizei, GLsizei, GLenum, GLenum,
-                                                   const void *);
-static void GLAD_API_PTR count_TextureSubImage2D(GLuint t, GLint l, GLint x, GLint y, GLsizei w, GLsizei h, GLenum f,
-                                                 GLenum ty, const void *p)
-{
-    n_textures++;
-    real_TextureSubImage2D(t, l, x, y, w, h, f, ty, p);
-}
-static void(GLAD_API_PTR *real_LinkProgram)(GLuint);
-static void GLAD_API_PTR count_LinkProgram(GLuint p)
-{
-    n_links++;
-    real_LinkProgram(p);
-}
-
-static tl_gl_function count_loader(void *user, const char *name)
-{
-    static const struct {
-        const char *name;
-        void *real_slot;
-        tl_gl_function thunk;
-    } wrapped[] = {
-        {"glNamedBufferStorage", (void *)&real_NamedBufferStorage, (tl_gl_function)count_NamedBufferStorage},
-        {"glNamedBufferSubData", (void *)&real_NamedBufferSubData, (tl_gl_function)count_NamedBufferSubData},
-        {"glNamedBufferData", (void *)&real_NamedBufferData, (tl_gl_function)count_NamedBufferData},
-        {"glTextureSubImage2D", (void *)&real_TextureSubImage2D, (tl_gl_function)count_TextureSubImage2D},
-        {"glLinkProgram", (void *)&real_LinkProgram, (tl_gl_function)count_LinkProgram},
-    };
-    tl_gl_function real = tl_context_proc_loader(user, name);
-    for (size_t i = 0; i < sizeof wrapped / sizeof wrapped[0]; i++)
-        if (real && strcmp(name, wrapped[i].name) == 0) {
-            memcpy(wrapped[i].real_slot, &real, sizeof real); /* same representation for every function pointer */
-            return wrapped[i].thunk;
-        }
-    return real;
-}
-
-static void counts_reset(void) { n_uploads = n_textures = n_links = 0, n_upload_bytes = 0; }
+#define UPLOADS tl_test_gl_uploads()           /* GL calls that send buffer data */
+#define UPLOAD_BYTES tl_test_gl_upload_bytes() /* bytes those calls sent from the CPU */
+#define TEXTURES tl_test_gl_calls("glTextureSubImage2D")
+#define LINKS tl_test_gl_calls("glLinkProgram")
 
 /* ---- scenes and renderers ------------------------------------------------------------------------ */
 
@@ -97,18 +36,11 @@ static tl_scene *crypt(void)
     return s;
 }
 
+/* Every renderer here counts GL calls. */
 static tl_renderer *renderer(const tl_renderer_options *o, const tl_scene *s)
 {
-    tl_renderer_desc d = {.width = W, .height = H, .options = *o, .get_proc_address = count_loader,
-                          .get_proc_address_user = g_ctx, .logger = tl_test_logger};
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
-    if (r && s && tl_renderer_set_scene(r, s) != TL_OK) {
-        TL_CHECK(!"set_scene");
-        tl_renderer_destroy(r);
-        r = NULL;
-    }
-    return r;
+    return tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = W, .height = H, .options = *o, .get_proc_address = tl_test_gl_counting_loader}, .scene = s});
 }
 
 static int frame(tl_renderer *r, uint8_t *out)
@@ -769,11 +701,11 @@ TL_TEST(updates_upload_nothing_but_new_geometry)
     uint8_t *px = malloc(PIXELS);
     if (r && px && frame(r, px)) {
         /* a steady frame's uploads (the stream is mapped, not uploaded: expected none) */
-        counts_reset();
+        tl_test_gl_counts_reset();
         TL_CHECK(frame(r, px));
-        unsigned long steady = n_uploads;
-        unsigned long long steady_bytes = n_upload_bytes;
-        counts_reset();
+        unsigned long steady = UPLOADS;
+        unsigned long long steady_bytes = UPLOAD_BYTES;
+        tl_test_gl_counts_reset();
         for (uint32_t i = 0; i < (uint32_t)s->object_count; i++) {
             float m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0.01f * (float)(i % 7), 0, 0, 1};
             TL_CHECK(tl_renderer_set_object_transform(r, i, m) == TL_OK);
@@ -783,42 +715,42 @@ TL_TEST(updates_upload_nothing_but_new_geometry)
         TL_CHECK(tl_renderer_set_object(r, 4, &same) == TL_OK);
         TL_CHECK(frame(r, px));
         fprintf(stderr, "moved and hid %zu objects, set one, one frame: %lu uploads, %llu bytes (a steady frame: %lu, "
-                "%llu); %lu texture uploads, %lu programs linked\n", s->object_count, n_uploads, n_upload_bytes, steady,
-                steady_bytes, n_textures, n_links);
-        TL_CHECK_EQ_U(n_uploads, steady);
-        TL_CHECK_EQ_U(n_upload_bytes, steady_bytes);
-        TL_CHECK_EQ_U(n_textures, 0);
-        TL_CHECK_EQ_U(n_links, 0);
+                "%llu); %lu texture uploads, %lu programs linked\n", s->object_count, UPLOADS, UPLOAD_BYTES, steady,
+                steady_bytes, TEXTURES, LINKS);
+        TL_CHECK_EQ_U(UPLOADS, steady);
+        TL_CHECK_EQ_U(UPLOAD_BYTES, steady_bytes);
+        TL_CHECK_EQ_U(TEXTURES, 0);
+        TL_CHECK_EQ_U(LINKS, 0);
         /* adding past the slots doubles them: the object-id list (4 bytes a slot) is the one upload;
          * an add into a removed slot uploads nothing */
         uint32_t id;
-        counts_reset();
+        tl_test_gl_counts_reset();
         TL_CHECK(tl_renderer_add_object(r, &same, &id) == TL_OK);
-        TL_CHECK_EQ_U(n_uploads, 1);
-        TL_CHECK_EQ_U(n_upload_bytes, 4 * 2 * s->object_count);
+        TL_CHECK_EQ_U(UPLOADS, 1);
+        TL_CHECK_EQ_U(UPLOAD_BYTES, 4 * 2 * s->object_count);
         TL_CHECK(tl_renderer_remove_object(r, 7) == TL_OK);
-        counts_reset();
+        tl_test_gl_counts_reset();
         TL_CHECK(tl_renderer_add_object(r, &same, &id) == TL_OK);
         TL_CHECK_EQ_U(id, 7);
         TL_CHECK(tl_renderer_add_object(r, &same, &id) == TL_OK);
         TL_CHECK(frame(r, px));
-        TL_CHECK_EQ_U(n_uploads, steady);
-        TL_CHECK_EQ_U(n_textures + n_links, 0);
+        TL_CHECK_EQ_U(UPLOADS, steady);
+        TL_CHECK_EQ_U(TEXTURES + LINKS, 0);
         /* appended geometry: its own bytes (the shifted indices) and nothing else, grown or not */
         tl_vertex bv[24];
         uint32_t bi[36], first;
         for (int g = 0; g < 3; g++) {
             box_mesh((float[3]){0, 1, (float)g}, 0.25f, bv, bi);
-            counts_reset();
+            tl_test_gl_counts_reset();
             TL_CHECK(tl_renderer_add_geometry(r, bv, 24, bi, 36, &first) == TL_OK);
-            TL_CHECK_EQ_U(n_upload_bytes, sizeof bv + sizeof bi);
-            TL_CHECK_EQ_U(n_uploads, 2);
+            TL_CHECK_EQ_U(UPLOAD_BYTES, sizeof bv + sizeof bi);
+            TL_CHECK_EQ_U(UPLOADS, 2);
         }
         /* a material's record: one std140 block */
-        counts_reset();
+        tl_test_gl_counts_reset();
         TL_CHECK(tl_renderer_set_material(r, 1, &s->materials[1]) == TL_OK);
-        TL_CHECK_EQ_U(n_uploads, 1);
-        TL_CHECK_LE(n_upload_bytes, 256);
+        TL_CHECK_EQ_U(UPLOADS, 1);
+        TL_CHECK_LE(UPLOAD_BYTES, 256);
     }
     free(px);
     tl_renderer_destroy(r);

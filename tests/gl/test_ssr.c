@@ -278,14 +278,14 @@ TL_TEST(ssr_and_ssao_without_lights_in_every_mode)
         for (int fx = 0; fx < 3; fx++) {
             tl_renderer_desc d = {.width = W, .height = H, .options.mode = modes[md]};
             if (fx != 1) d.options.ssr.enabled = 1;
-            if (fx != 0) d.options.ssao.method = TL_SSAO_HEMISPHERE;
+            if (fx != 0) d.options.ssao.enabled = 1, d.options.ssao.method = TL_SSAO_HEMISPHERE;
             tl_renderer *r = tl_test_render_once(&m.s, d);
             TL_CHECK(r != NULL);
             float *t = r && d.options.ssr.enabled ? tl_test_read_target(r, TL_TARGET_SSR, (size_t)W * H) : NULL;
             size_t lit = 0;
             for (size_t i = 0; t && i < (size_t)W * H; i++) lit += t[4 * i] > 0.0f;
             printf("  %s, %s%s, no lights: %s, %zu reflecting pixels\n", tl_render_mode_name(modes[md]),
-                   d.options.ssr.enabled ? "ssr " : "", d.options.ssao.method ? "ssao" : "", r ? "rendered" : "FAILED",
+                   d.options.ssr.enabled ? "ssr " : "", d.options.ssao.enabled ? "ssao" : "", r ? "rendered" : "FAILED",
                    lit);
             if (d.options.ssr.enabled) TL_CHECK(lit > 100);
             free(t);

@@ -273,7 +273,7 @@ TL_TEST(transparency_stipple_plan_rules)
         {{.light_scale = 0.5f}, "collapse"},
         {{.mode = TL_MODE_FAT}, "thin-lpp"},
         {{.mode = TL_MODE_FORWARD, .transparency = TL_TRANSPARENCY_STIPPLE}, "stipple asked, but"},
-        {{.fog.mode = TL_FOG_DISTANCE}, "fog"},
+        {{.fog = {.enabled = 1, .mode = TL_FOG_DISTANCE}}, "fog"},
         {{.transparency = TL_TRANSPARENCY_FORWARD}, "forced"},
     };
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {

@@ -92,13 +92,13 @@ static void compare_tiled(test_scene *t, const tl_camera *cam, tl_depth_format d
     tl_renderer_desc dr = d;
     dr.options.fullscreen_lights = 1;
     dr.options.light_strategy = TL_LIGHT_STRATEGY_VOLUMES;
-    tl_renderer *ref = make_renderer_desc(dr);
+    tl_renderer *ref = tl_test_renderer(&(tl_test_renderer_desc){.renderer = dr, .readable = true});
     TL_CHECK(ref && tl_renderer_set_scene(ref, &t->s) == TL_OK && tl_renderer_render(ref, cam, NULL) == TL_OK);
     uint8_t *ref_out = ref ? read_output(ref, n) : NULL;
     for (int compute = 0; compute < 2; compute++) {
         d.options.light_strategy = TL_LIGHT_STRATEGY_TILED;
         d.options.tiled_shading = compute ? TL_TILED_SHADING_COMPUTE : TL_TILED_SHADING_FRAGMENT;
-        tl_renderer *r = make_renderer_desc(d);
+        tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .readable = true});
         TL_CHECK(r && tl_renderer_set_scene(r, &t->s) == TL_OK && tl_renderer_render(r, cam, NULL) == TL_OK);
         if (!r || !ref) continue;
         char name[160];
@@ -183,7 +183,8 @@ TL_TEST(tiled_tile_and_image_borders)
         dr.options.fullscreen_lights = 1;
         dr.options.light_strategy = TL_LIGHT_STRATEGY_VOLUMES;
         d.options.light_strategy = TL_LIGHT_STRATEGY_TILED;
-        tl_renderer *ref = make_renderer_desc(dr), *r = make_renderer_desc(d);
+        tl_renderer *ref = tl_test_renderer(&(tl_test_renderer_desc){.renderer = dr, .readable = true});
+        tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .readable = true});
         TL_CHECK(ref && r);
         if (!ref || !r) continue;
         TL_CHECK(tl_renderer_set_scene(ref, &t.s) == TL_OK && tl_renderer_render(ref, NULL, NULL) == TL_OK);
@@ -272,9 +273,9 @@ TL_TEST_FULL(tiled_matches_volumes_every_mode)
             tl_renderer_desc d = {.options.mode = (tl_render_mode)mode, .width = w, .height = h,
                                   .options.depth_format = depths[dz],
                                   .options.fxaa = TL_FXAA_OFF, .options.light_strategy = TL_LIGHT_STRATEGY_VOLUMES};
-            tl_renderer *vol = make_renderer_desc(d);
+            tl_renderer *vol = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .readable = true});
             d.options.light_strategy = TL_LIGHT_STRATEGY_TILED;
-            tl_renderer *til = make_renderer_desc(d);
+            tl_renderer *til = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .readable = true});
             TL_CHECK(vol && til);
             if (!vol || !til) continue;
             TL_CHECK(tl_renderer_set_scene(vol, s) == TL_OK && tl_renderer_render(vol, NULL, NULL) == TL_OK);
@@ -330,8 +331,8 @@ TL_TEST_FULL(tiled_65536_lights_overflow_then_growth)
     TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 65536, .spot_lights = 4096, .detail = 1},
                                      &s) == TL_OK);
     if (!s) return;
-    tl_renderer *r = make_renderer_desc((tl_renderer_desc){.width = w, .height = h,
-                                                           .options.light_strategy = TL_LIGHT_STRATEGY_TILED});
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = w, .height = h, .options.light_strategy = TL_LIGHT_STRATEGY_TILED}, .readable = true});
     TL_CHECK(r && tl_renderer_set_scene(r, s) == TL_OK);
     if (!r) return;
     tl_frame_stats first, later;
@@ -377,9 +378,9 @@ TL_TEST(tiled_light_buffer_r11g11b10f)
     if (!s) return;
     tl_renderer_desc d = {.width = w, .height = h, .options.fxaa = TL_FXAA_OFF,
                           .options.light_strategy = TL_LIGHT_STRATEGY_TILED};
-    tl_renderer *full = make_renderer_desc(d);
+    tl_renderer *full = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .readable = true});
     d.options.light_format = TL_LIGHT_FORMAT_R11G11B10F;
-    tl_renderer *small = make_renderer_desc(d);
+    tl_renderer *small = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .readable = true});
     TL_CHECK(full && small);
     if (!full || !small) return;
     TL_CHECK(tl_renderer_set_scene(full, s) == TL_OK && tl_renderer_render(full, NULL, NULL) == TL_OK);
@@ -442,7 +443,7 @@ TL_TEST(tiled_planner_chooses_by_light_count)
     TL_CHECK(p.light_strategy == TL_LIGHT_STRATEGY_VOLUMES && strstr(p.strategy_reason, "forced"));
     d.options.light_strategy = TL_LIGHT_STRATEGY_TILED;
     d.options.mode = TL_MODE_FORWARD;
-    d.options.forward_no_depth_prepass = 1; /* Forward+ keeps its depth pre-pass: the tiles' bounds need it */
+    d.options.forward_depth_prepass = TL_SWITCH_OFF; /* Forward+ keeps its depth pre-pass: the tiles' bounds need it */
     TL_CHECK(tl_frame_plan_build(&d, &(tl_scene_feature_set){.point_lights = 2}, &p) == TL_OK);
     TL_CHECK(p.pass_count >= 3 && p.passes[0].pass == TL_PASS_DEPTH_PREPASS && p.passes[1].pass == TL_PASS_LIGHT_CULL);
     d.options.tile_size = 12;

@@ -156,11 +156,9 @@ static void take(const tl_scene *s, const tl_camera *camera, shot *out)
 {
     memset(out, 0, sizeof *out);
     out->set = out->render = TL_ERROR_GL;
-    if (!ensure_context()) return;
-    tl_renderer *r = NULL;
-    tl_renderer_desc d = {.width = W, .height = H, .options.synchronous_stats = 1, .get_proc_address = tl_context_proc_loader,
-                          .get_proc_address_user = g_ctx, .logger = tl_test_logger};
-    if (tl_renderer_create(&d, &r) != TL_OK) return;
+    tl_renderer *r =
+        tl_test_renderer(&(tl_test_renderer_desc){.renderer = {.width = W, .height = H, .options.synchronous_stats = 1}});
+    if (!r) return;
     out->set = tl_renderer_set_scene(r, s);
     if (out->set == TL_OK) {
         tl_renderer_get_plan(r, &out->plan);
@@ -438,10 +436,7 @@ TL_TEST(zero_scene_renders_an_empty_frame)
  * names the light and the field. */
 TL_TEST(zero_light_refused_naming_radius)
 {
-    if (!ensure_context()) { tl_test_failures++; return; }
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&(tl_renderer_desc){.width = W, .height = H, .get_proc_address = tl_context_proc_loader,
-                                                    .get_proc_address_user = g_ctx}, &r) == TL_OK);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = {.width = W, .height = H}});
     tl_light zero = {0};
     TL_CHECK(tl_renderer_set_lights(r, &zero, 1) == TL_ERROR_INVALID_ARGUMENT);
     TL_CHECK(strstr(tl_renderer_last_error(r), "lights[0].radius = 0: a point light needs a finite radius > 0"));
@@ -507,10 +502,7 @@ TL_TEST(zero_render_output_is_the_default_framebuffer)
 {
     static boxes b;
     build_boxes(&b, 0);
-    if (!ensure_context()) { tl_test_failures++; return; }
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&(tl_renderer_desc){.width = W, .height = H, .get_proc_address = tl_context_proc_loader,
-                                                    .get_proc_address_user = g_ctx, .logger = tl_test_logger}, &r) == TL_OK);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = {.width = W, .height = H}});
     static uint8_t own[W * H * 4], fb0[W * H * 4];
     TL_CHECK(tl_renderer_set_scene(r, &b.s) == TL_OK && tl_renderer_render(r, NULL, NULL) == TL_OK);
     TL_CHECK(tl_renderer_read_output(r, own, &(size_t){sizeof own}) == TL_OK);

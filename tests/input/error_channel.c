@@ -49,10 +49,7 @@ TL_TEST(one_error_channel_renderer_loader_image_writer)
     TL_CHECK(err.message[0] == '\0' && err.count == 0);
 
     /* the renderer: a call on the renderer, its line in the record and in its own last error */
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&(tl_renderer_desc){.width = 32, .height = 32, .get_proc_address = tl_context_proc_loader,
-                                                    .get_proc_address_user = g_ctx, .logger = log},
-                                &r) == TL_OK);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = {.width = 32, .height = 32, .logger = log}});
     if (!r) return;
     tl_renderer_options bad = {.mode = (tl_render_mode)99};
     TL_CHECK(failed_with(&err, &seen, tl_renderer_set_options(r, &bad), TL_ERROR_INVALID_ARGUMENT, "options.mode"));

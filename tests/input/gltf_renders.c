@@ -94,13 +94,11 @@ static void seen_log(void *user, tl_log_level level, const char *message)
 static uint8_t *render_quietly(const tl_scene *s)
 {
     seen log = {0};
-    tl_renderer_desc d = {.width = W, .height = H, .get_proc_address = tl_context_proc_loader,
-                          .get_proc_address_user = g_ctx, .logger = {seen_log, &log}};
-    tl_renderer *r = NULL;
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = W, .height = H, .logger = {seen_log, &log}}, .scene = s, .frames = 1});
     size_t size = (size_t)W * H * 4;
     uint8_t *px = malloc(size);
-    int ok = px && tl_renderer_create(&d, &r) == TL_OK && tl_renderer_set_scene(r, s) == TL_OK &&
-             tl_renderer_render(r, NULL, NULL) == TL_OK && tl_renderer_read_output(r, px, &size) == TL_OK;
+    int ok = px && r && tl_renderer_read_output(r, px, &size) == TL_OK;
     if (log.errors + log.warnings) fprintf(stderr, "  the renderer said: \"%s\"\n", log.line);
     TL_CHECK(ok);
     TL_CHECK_EQ_U(log.errors + log.warnings, 0);

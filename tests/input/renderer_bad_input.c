@@ -23,8 +23,9 @@ TL_TEST(renderer_bad_input)
     tl_renderer_desc d = {.width = 100000, .height = 10, .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
                           .logger = {capture_log, err}};
     TL_CHECK(tl_renderer_create(&d, &r) == TL_ERROR_LIMIT && !r && strstr(err, "100000"));
-    r = make_renderer(32, 32, TL_DEPTH_FORMAT_D24, 0, TL_FXAA_OFF);
-    TL_CHECK(r != NULL);
+    r = tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = 32, .height = 32, .options = {.depth_format = TL_DEPTH_FORMAT_D24, .fxaa = TL_FXAA_OFF}},
+        .readable = true});
     if (!r) return;
     TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_ERROR_INVALID_ARGUMENT); /* no scene yet */
     test_scene t;

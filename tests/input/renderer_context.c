@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "gl_counter.h"
 #include "render_room.h"
 #include "tl_test.h"
 
@@ -132,7 +133,9 @@ static void *wrong_thread(void *arg)
 static void calls_from_another_thread(int own_context)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
-    tl_renderer *r = make_renderer(W, H, TL_DEPTH_FORMAT_D24, 0, TL_FXAA_29);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = W, .height = H, .options = {.depth_format = TL_DEPTH_FORMAT_D24, .fxaa = TL_FXAA_29}},
+        .readable = true});
     static test_scene t, u;
     room_with_light(&t);
     room_with_light(&u);
@@ -172,24 +175,8 @@ TL_TEST(renderer_calls_from_a_thread_with_another_context_fail_and_keep_the_scen
 
 /* ---- an application's own loader: the check when the thread changes --------------------------- */
 
-static unsigned long g_is_vertex_array_calls;
-static unsigned char (*g_real_is_vertex_array)(unsigned);
-static unsigned char counted_is_vertex_array(unsigned name)
-{
-    g_is_vertex_array_calls++;
-    return g_real_is_vertex_array(name);
-}
-
-/* A loader that is not tl_context_proc_loader, as an application with its own context has. */
-static tl_gl_function app_loader(void *user, const char *name)
-{
-    tl_gl_function f = tl_context_get_proc_address((tl_context *)user, name);
-    if (f && strcmp(name, "glIsVertexArray") == 0) {
-        memcpy(&g_real_is_vertex_array, &f, sizeof f);
-        return (tl_gl_function)counted_is_vertex_array;
-    }
-    return f;
-}
+/* The counting loader is not tl_context_proc_loader, as an application with its own context has. */
+#define IS_VERTEX_ARRAY_CALLS tl_test_gl_calls("glIsVertexArray")
 
 static void *app_thread(void *arg)
 {
@@ -220,23 +207,20 @@ static void *moved_thread(void *arg)
 TL_TEST(renderer_application_context_checked_when_the_thread_changes)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
-    tl_renderer_desc d = {.width = W, .height = H, .get_proc_address = app_loader, .get_proc_address_user = g_ctx,
-                          .logger = tl_test_logger};
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
-    if (!r) return;
     static test_scene t;
     room_with_light(&t);
-    TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_OK);
-    g_is_vertex_array_calls = 0;
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = W, .height = H, .get_proc_address = tl_test_gl_counting_loader}, .scene = &t.s});
+    if (!r) return;
+    tl_test_gl_counts_reset();
     for (int i = 0; i < 3; i++) TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
-    unsigned long steady = g_is_vertex_array_calls;
+    unsigned long steady = IS_VERTEX_ARRAY_CALLS;
     pthread_t th;
     TL_CHECK(pthread_create(&th, NULL, app_thread, r) == 0);
     pthread_join(th, NULL);
-    unsigned long other = g_is_vertex_array_calls - steady;
+    unsigned long other = IS_VERTEX_ARRAY_CALLS - steady;
     for (int i = 0; i < 3; i++) TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
-    unsigned long back = g_is_vertex_array_calls - steady - other;
+    unsigned long back = IS_VERTEX_ARRAY_CALLS - steady - other;
     printf("  glIsVertexArray: %lu in 3 steady frames, %lu on the other thread, %lu in 3 frames back on the first\n",
            steady, other, back);
     /* the context moves to another thread (released here, made current there): one query there */
@@ -246,11 +230,11 @@ TL_TEST(renderer_application_context_checked_when_the_thread_changes)
     pthread_join(th, NULL);
     TL_CHECK(tl_context_make_current(g_ctx) == TL_OK);
     printf("  context moved to another thread: %d of 3 frames there rendered, glIsVertexArray %lu more\n", m.rendered,
-           g_is_vertex_array_calls - steady - other - back);
+           IS_VERTEX_ARRAY_CALLS - steady - other - back);
     TL_CHECK(m.rendered == 3);
-    TL_CHECK_EQ_U(g_is_vertex_array_calls - steady - other - back, 1);
+    TL_CHECK_EQ_U(IS_VERTEX_ARRAY_CALLS - steady - other - back, 1);
     TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK); /* back here: one more */
-    TL_CHECK_EQ_U(g_is_vertex_array_calls - steady - other - back, 2);
+    TL_CHECK_EQ_U(IS_VERTEX_ARRAY_CALLS - steady - other - back, 2);
     TL_CHECK_EQ_U(steady, 0);
     TL_CHECK_EQ_U(other, 1);
     TL_CHECK_EQ_U(back, 0); /* the other thread never had it: the first is still trusted */
@@ -259,33 +243,8 @@ TL_TEST(renderer_application_context_checked_when_the_thread_changes)
 
 /* ---- render_to's framebuffer -------------------------------------------------------------------- */
 
-static unsigned long g_fb_queries;
-static unsigned char (*g_real_is_framebuffer)(unsigned);
-static unsigned (*g_real_check_status)(unsigned, unsigned);
-static unsigned char counted_is_framebuffer(unsigned name)
-{
-    g_fb_queries++;
-    return g_real_is_framebuffer(name);
-}
-static unsigned counted_check_status(unsigned fb, unsigned target)
-{
-    g_fb_queries++;
-    return g_real_check_status(fb, target);
-}
-
-static tl_gl_function fb_loader(void *user, const char *name)
-{
-    tl_gl_function f = tl_context_proc_loader(user, name);
-    if (f && strcmp(name, "glIsFramebuffer") == 0) {
-        memcpy(&g_real_is_framebuffer, &f, sizeof f);
-        return (tl_gl_function)counted_is_framebuffer;
-    }
-    if (f && strcmp(name, "glCheckNamedFramebufferStatus") == 0) {
-        memcpy(&g_real_check_status, &f, sizeof f);
-        return (tl_gl_function)counted_check_status;
-    }
-    return f;
-}
+/* The framebuffer queries render_to makes, through the counting loader. */
+#define FB_QUERIES (tl_test_gl_calls("glIsFramebuffer") + tl_test_gl_calls("glCheckNamedFramebufferStatus"))
 
 /* render_to into a name that is no framebuffer, or one without attachments, is
  * TL_ERROR_INVALID_ARGUMENT naming it (before: TL_OK, and GL_INVALID_OPERATION in the frame); a
@@ -293,14 +252,11 @@ static tl_gl_function fb_loader(void *user, const char *name)
 TL_TEST(renderer_render_to_missing_or_incomplete_framebuffer_refused)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
-    tl_renderer_desc d = {.width = W, .height = H, .get_proc_address = fb_loader, .get_proc_address_user = g_ctx,
-                          .logger = tl_test_logger};
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
-    if (!r) return;
     static test_scene t;
     room_with_light(&t);
-    TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_OK);
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = W, .height = H, .get_proc_address = tl_test_gl_counting_loader}, .scene = &t.s});
+    if (!r) return;
     typedef void (*create_t)(int, unsigned *);
     typedef void (*create_tex_t)(unsigned, int, unsigned *);
     typedef void (*storage_t)(unsigned, int, unsigned, int, int);
@@ -328,16 +284,16 @@ TL_TEST(renderer_render_to_missing_or_incomplete_framebuffer_refused)
     TL_CHECK(strstr(tl_renderer_last_error(r), "is not complete (GL_FRAMEBUFFER_INCOMPLETE_MISSING_ATTACHMENT)") != NULL);
     printf("  \"%s\"\n", tl_renderer_last_error(r));
     o.framebuffer = complete;
-    g_fb_queries = 0;
+    tl_test_gl_counts_reset();
     TL_CHECK(tl_renderer_render_to(r, NULL, &o, NULL) == TL_OK);
-    unsigned long first = g_fb_queries;
+    unsigned long first = FB_QUERIES;
     for (int i = 0; i < 3; i++) TL_CHECK(tl_renderer_render_to(r, NULL, &o, NULL) == TL_OK);
     o.framebuffer = 0; /* OSMesa's default framebuffer is complete */
     TL_CHECK(tl_renderer_render_to(r, NULL, &o, NULL) == TL_OK);
     printf("  framebuffer queries: %lu for the first frame into a framebuffer, %lu for 3 more\n", first,
-           g_fb_queries - first - 1);
+           FB_QUERIES - first - 1);
     TL_CHECK_EQ_U(first, 2);
-    TL_CHECK_EQ_U(g_fb_queries, 3); /* and one for framebuffer 0 */
+    TL_CHECK_EQ_U(FB_QUERIES, 3); /* and one for framebuffer 0 */
     TL_CHECK(tl_renderer_wait(r, NULL) == TL_OK);
     del_fb(1, &empty);
     del_fb(1, &complete);

@@ -60,10 +60,8 @@ static void life(const tl_renderer_desc *base, const tl_scene *s, size_t period)
     tl_renderer_desc d = *base;
     d.allocator = (tl_allocator){periodic_alloc, periodic_free, &p};
     d.logger = (tl_logger){count_errors, &p};
-    d.get_proc_address = tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK); /* failures start after create (renderer_limits.c fails it) */
+    /* failures start after create (renderer_limits.c fails it) */
+    tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d});
     if (!r) return;
     p.errors = 0;
     p.on = 1;

@@ -38,15 +38,14 @@ static void keep_error(void *user, tl_log_level level, const char *message)
     if (level == TL_LOG_ERROR) snprintf(((counted *)user)->line, sizeof ((counted *)user)->line, "%s", message);
 }
 
+/* A renderer whose allocations `c` counts and whose last error it keeps; NULL when create fails (some
+ * cases ask for that). */
 static tl_renderer *counted_renderer(tl_renderer_desc d, counted *c)
 {
-    d.get_proc_address = tl_context_proc_loader;
-    d.get_proc_address_user = g_ctx;
     d.allocator = (tl_allocator){counted_alloc, counted_free, c};
     d.logger = (tl_logger){keep_error, c};
     d.options.synchronous_stats = 1;
-    tl_renderer *r = NULL;
-    return tl_renderer_create(&d, &r) == TL_OK ? r : NULL;
+    return tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .may_fail = true});
 }
 
 typedef void (*get_integer64_fn)(unsigned, int64_t *);

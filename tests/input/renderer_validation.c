@@ -33,12 +33,8 @@ static void seen_log(void *user, tl_log_level level, const char *message)
 
 static tl_renderer *renderer(seen *log, tl_depth_format depth)
 {
-    tl_renderer_desc d = {.width = W, .height = H, .options.depth_format = depth, .options.fxaa = TL_FXAA_OFF,
-                          .get_proc_address = tl_context_proc_loader, .get_proc_address_user = g_ctx,
-                          .logger = {seen_log, log}};
-    tl_renderer *r = NULL;
-    TL_CHECK(tl_renderer_create(&d, &r) == TL_OK);
-    return r;
+    return tl_test_renderer(&(tl_test_renderer_desc){
+        .renderer = {.width = W, .height = H, .options = {.depth_format = depth, .fxaa = TL_FXAA_OFF}, .logger = {seen_log, log}}});
 }
 
 /* The room lit by an off-centre point light and a directional light, with some ambient. */

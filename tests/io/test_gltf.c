@@ -215,6 +215,66 @@ TL_TEST(gltf_lights_punctual)
     unload(&l);
 }
 
+/* Shadows from a file (docs/gltf.md, "Shadows"): "extras": {"thinlight_shadow": true} casts and
+ * false never does, whatever the rule; a value that is not a boolean is a warning naming it and
+ * counts as absent; with options.shadow_lights = N the rule adds every other directional light and
+ * then the brightest point and spot lights while fewer than N cast. */
+TL_TEST(gltf_light_shadow_flags_and_rule)
+{
+    static const struct {
+        uint32_t budget;
+        int casts[8];
+    } want[] = {
+        {0, {0, 0, 1, 0, 0, 0, 0, 0}}, /* the flags alone */
+        {1, {1, 0, 1, 0, 0, 0, 0, 0}}, /* directional lights cast past the budget */
+        {3, {1, 0, 1, 1, 0, 0, 0, 0}}, /* then the brightest point light (100 cd) */
+        {4, {1, 0, 1, 1, 1, 0, 0, 0}}, /* then the next (10 cd) */
+        {8, {1, 0, 1, 1, 1, 1, 1, 1}}, /* all but the one flagged false */
+    };
+    for (size_t k = 0; k < sizeof want / sizeof want[0]; k++) {
+        loaded l;
+        tl_gltf_options o = {.shadow_lights = want[k].budget};
+        load_opts(&l, "gltf_light_shadow_flags_and_rule", "light_shadow_flags", &o);
+        if (l.result != TL_OK) printf("%s\n", l.error);
+        TL_CHECK(l.result == TL_OK);
+        if (l.result != TL_OK) return;
+        TL_CHECK_EQ_U(l.scene->light_count, 8);
+        for (size_t i = 0; i < l.scene->light_count && i < 8; i++) {
+            if ((l.scene->lights[i].shadow != 0) != want[k].casts[i])
+                printf("budget %u: light %zu shadow %d, expected %d\n", want[k].budget, i, l.scene->lights[i].shadow,
+                       want[k].casts[i]);
+            TL_CHECK((l.scene->lights[i].shadow != 0) == want[k].casts[i]);
+        }
+        /* the two values that are not booleans, each one line naming the light, the field and the value */
+        TL_CHECK_EQ_U(l.log.warnings, 2);
+        TL_CHECK(strstr(l.log.warnings_text, "KHR_lights_punctual.lights[5].extras.thinlight_shadow = \"yes\"") != NULL);
+        TL_CHECK(strstr(l.log.warnings_text, "KHR_lights_punctual.lights[6].extras.thinlight_shadow = 1") != NULL);
+        unload(&l);
+    }
+}
+
+/* The rule covers the default rig: a file without lights gets its key light (directional) and
+ * its fill lights casting up to the budget; without the rule none casts. */
+TL_TEST(gltf_default_rig_shadow_rule)
+{
+    for (uint32_t budget = 0; budget <= 3; budget += 3) {
+        loaded l;
+        tl_gltf_options o = {.shadow_lights = budget};
+        load_opts(&l, "gltf_default_rig_shadow_rule", "textured_boxes", &o);
+        TL_CHECK(l.result == TL_OK);
+        if (l.result != TL_OK) return;
+        size_t casting = 0, directional = 0;
+        for (size_t i = 0; i < l.scene->light_count; i++) {
+            casting += l.scene->lights[i].shadow != 0;
+            directional += l.scene->lights[i].shadow && l.scene->lights[i].type == TL_LIGHT_DIRECTIONAL;
+        }
+        TL_CHECK_EQ_U(l.scene->light_count, 5);
+        TL_CHECK_EQ_U(casting, budget);
+        TL_CHECK_EQ_U(directional, budget ? 1 : 0);
+        unload(&l);
+    }
+}
+
 TL_TEST(gltf_index_sizes)
 {
     loaded l;

@@ -129,7 +129,7 @@ TL_TEST(sphere_irradiance_limits_and_continuity)
  * docs/lighting.md, from lighting_doc). Asserted: the references are good to 0.5 %; the point
  * limit (radius/d = 0.001) keeps the highlight's energy to 1 %; and the accuracy the doc claims
  * for the method over the whole table: peak within a factor 2, energy within a factor 1.5. */
-TL_TEST(sphere_representative_point_vs_monte_carlo)
+TL_TEST_FULL(sphere_representative_point_vs_monte_carlo)
 {
     const tl_rp_resolution res = {256, 512, 256};
     double worst_peak = 1.0, worst_energy = 1.0;

@@ -562,7 +562,7 @@ function(check_shadows_dimension)
     expect_exit(2 "--shadows '${bad}'")
   endforeach()
   run_tool(--shadows on --scene "${WORK}/none.gltf" --json "${WORK}/bad.json")
-  expect_exit(2 "--shadows with a glTF scene")
+  expect_exit(1 "--shadows with a glTF scene that does not exist")
   file(WRITE "${WORK}/plain.md" "# no markers\n")
   run_tool(--shadows on --size 64x36 --lights 8 --no-plot --shadows-doc "${WORK}/plain.md" --json "${WORK}/bad.json")
   expect_exit(1 "--shadows-doc without markers")
@@ -571,6 +571,47 @@ function(check_shadows_dimension)
     message(FATAL_ERROR "--shadows-doc without markers changed the file")
   endif()
   expect_only("bad --shadows runs" shadows.md plain.md)
+endfunction()
+
+# --shadows with a glTF file (docs/gltf.md, "Shadows"; make_gltf_scenes' shadow_sun cases: a box
+# floating over a floor under a directional light shining down). The bench's lights are the file's
+# directional light and 2 seeded point lights; --shadows on loads the file with the shadow rule:
+# the sun and both seeded lights cast (3), their maps are rendered without the cache and kept with
+# it, and the truth (with Embree) counts pixels of the casting point lights. The sun flagged
+# "thinlight_shadow": false does not cast: 2.
+function(check_gltf_shadows)
+  execute_process(COMMAND ${MAKE_SCENES} "${WORK}" shadow_sun shadow_sun_no_cast RESULT_VARIABLE r)
+  if(NOT r EQUAL 0)
+    message(FATAL_ERROR "make_gltf_scenes failed")
+  endif()
+  foreach(run "shadow_sun:3" "shadow_sun_no_cast:2")
+    string(REPLACE ":" ";" run "${run}")
+    list(GET run 0 file)
+    list(GET run 1 want)
+    run_tool(--scene "${WORK}/${file}.gltf" --shadows off,on --size 128x72 --lights 2 --modes thin-lpp --strategies tiled
+             --light-formats rgba16f --light-scales 1 --frames 1 --warmup 0 --no-plot --json "${WORK}/${file}.json")
+    expect_exit(0 "--shadows on ${file}.gltf")
+    file(READ "${WORK}/${file}.json" json)
+    string(JSON n LENGTH "${json}" shadows records)
+    if(NOT n EQUAL 2)
+      message(FATAL_ERROR "${file}: ${n} shadow records, expected 2 (fat/tiled, thin-lpp/tiled)")
+    endif()
+    foreach(key casting_lights shadow_lights maps_cached maps_rendered_no_cache)
+      json_get(NUMBER "${file}" shadows records 1 ${key})
+      set(${key} "${value}")
+    endforeach()
+    if(NOT casting_lights EQUAL want OR NOT shadow_lights EQUAL want OR NOT maps_cached GREATER 0
+       OR NOT maps_rendered_no_cache EQUAL maps_cached)
+      message(FATAL_ERROR "${file}: ${casting_lights} casting lights (expected ${want}), ${shadow_lights} with a map, "
+                          "maps kept ${maps_cached}, rendered without the cache ${maps_rendered_no_cache}")
+    endif()
+    if(EMBREE)
+      json_get(NUMBER "${file} truth" shadows records 1 truth D32F-rev counted)
+      if(NOT value GREATER 0)
+        message(FATAL_ERROR "${file}: the truth counted ${value} pixels")
+      endif()
+    endif()
+  endforeach()
 endfunction()
 
 # --aa (docs/antialiasing.md): a tiny run measures none, FXAA and 4x MSAA in thin-lpp and forward

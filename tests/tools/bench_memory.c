@@ -95,7 +95,7 @@ static void show(const char *log)
     free(text);
 }
 
-TL_TEST(bench_holds_a_large_texture_once_not_per_configuration)
+TL_TEST_FULL(bench_holds_a_large_texture_once_not_per_configuration)
 {
     const char *dir = TL_BENCH_MEMORY_DIR;
     tlh_rmtree(dir);

@@ -124,6 +124,55 @@ function(check_gltf_plans)
   endif()
 endfunction()
 
+# Shadows from a glTF file (docs/gltf.md, "Shadows"): a box floating over a floor under a spot light
+# (make_gltf_scenes' shadow_spot cases). --shadows makes the spot cast (the image changes, --stats
+# says one light has a map); without it nothing casts; the light's "thinlight_shadow" flag casts
+# without --shadows (the same bytes as the rule's image) and false keeps it dark even with it; a
+# value that is not a boolean is one warning naming the field and the value, and counts as absent.
+function(check_gltf_shadows)
+  execute_process(COMMAND ${MAKE_SCENES} "${WORK}" shadow_spot shadow_spot_cast shadow_spot_no_cast shadow_spot_bad_flag
+                  RESULT_VARIABLE r)
+  if(NOT r EQUAL 0)
+    message(FATAL_ERROR "make_gltf_scenes failed")
+  endif()
+  # name|file|extra argument (- for none)
+  set(runs "plain|shadow_spot|-" "rule|shadow_spot|--shadows" "cast|shadow_spot_cast|-"
+           "no_cast|shadow_spot_no_cast|--shadows" "bad|shadow_spot_bad_flag|-")
+  foreach(run IN LISTS runs)
+    string(REPLACE "|" ";" run "${run}")
+    list(GET run 0 name)
+    list(GET run 1 file)
+    list(GET run 2 extra)
+    set(args "${WORK}/${file}.gltf" --size 96x54 --stats -o "${WORK}/${name}.png")
+    if(NOT extra STREQUAL "-")
+      list(APPEND args ${extra})
+    endif()
+    run_tool(${args})
+    expect_exit(0 "${name}")
+    file(SHA256 "${WORK}/${name}.png" sum_${name})
+    set(out_${name} "${out}")
+    set(err_${name} "${err}")
+  endforeach()
+  if(sum_plain STREQUAL sum_rule)
+    message(FATAL_ERROR "--shadows changed nothing in a glTF file's image")
+  endif()
+  if(NOT out_rule MATCHES "shadows: 1 lights with a map" OR out_plain MATCHES "shadows:")
+    message(FATAL_ERROR "--stats: --shadows should give one light a map, none without it:
+${out_rule}
+---
+${out_plain}")
+  endif()
+  if(NOT sum_cast STREQUAL sum_rule)
+    message(FATAL_ERROR "\"thinlight_shadow\": true without --shadows is not the image of the rule")
+  endif()
+  if(NOT sum_no_cast STREQUAL sum_plain OR NOT sum_bad STREQUAL sum_plain)
+    message(FATAL_ERROR "\"thinlight_shadow\": false (with --shadows) or \"yes\" (without) cast a shadow")
+  endif()
+  if(NOT err_bad MATCHES "KHR_lights_punctual.lights\\[0\\].extras.thinlight_shadow = \"yes\": not true or false; ignored")
+    message(FATAL_ERROR "no warning naming the bad flag:\n${err_bad}")
+  endif()
+endfunction()
+
 # The effects (docs/effects.md): on, they render and dump their targets; a bad value is one line
 # and exit 2, with no output written.
 function(check_effects)

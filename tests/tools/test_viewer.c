@@ -303,7 +303,7 @@ TL_TEST_FULL(viewer_light_scale_fixed_without_dynamic_never_above_chosen)
 /* MSAA with per-sample lighting on edges (fat, --msaa 4): the final view is thinlight-render's
  * image, and the msaa-edges view marks in red the pixels msaa-classify lit per sample (msaa.edges:
  * some, never most of the frame). */
-TL_TEST(viewer_msaa_sample_edges_view)
+TL_TEST_FULL(viewer_msaa_sample_edges_view)
 {
     char cmd[2048];
     snprintf(cmd, sizeof cmd,

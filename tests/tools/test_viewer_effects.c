@@ -207,7 +207,7 @@ TL_TEST(viewer_screenshot_carries_the_legend)
 
 /* Bad values of the effect flags: exit 2, one line on stderr, no screenshot (the arguments fail
  * before any window, so no display is needed). */
-TL_TEST(viewer_effect_flags_bad_values_exit_2_one_line)
+TL_TEST_FULL(viewer_effect_flags_bad_values_exit_2_one_line)
 {
     static const char *const bad[] = {
         "--ssao-samples 0",   "--ssao-samples 65", "--ssao-radius nan",    "--ssao-radius 0",  "--ssao-bias -1",

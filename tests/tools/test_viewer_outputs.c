@@ -64,7 +64,7 @@ static void work(const char *name, char *dir, size_t size)
     TL_CHECK(realpath(rel, dir) != NULL && strlen(dir) < size); /* the injector matches real paths */
 }
 
-TL_TEST(viewer_screenshot_full_disk_keeps_old_file)
+TL_TEST_FULL(viewer_screenshot_full_disk_keeps_old_file)
 {
     char dir[PATH_MAX], shot[PATH_MAX + 16], counts[PATH_MAX + 16];
     work("full_disk", dir, sizeof dir);

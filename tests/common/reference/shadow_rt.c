@@ -196,6 +196,25 @@ void tl_shadow_rt_truth(const tl_shadow_rt *rt, const tl_camera *c, uint32_t w, 
     tl__pixels(rt, c, w, h, tl__hard_pixel, &t);
 }
 
+typedef struct tl__surface {
+    float *position, *normal;
+} tl__surface;
+
+static void tl__surface_pixel(void *user, size_t i, uint32_t object, const float p[3], const float ng[3])
+{
+    tl__surface *t = (tl__surface *)user;
+    (void)object;
+    memcpy(&t->position[3 * i], p, 3 * sizeof(float));
+    memcpy(&t->normal[3 * i], ng, 3 * sizeof(float));
+}
+
+void tl_shadow_rt_surface(const tl_shadow_rt *rt, const tl_camera *c, uint32_t w, uint32_t h, float *position,
+                          float *normal)
+{
+    tl__surface t = {position, normal};
+    tl__pixels(rt, c, w, h, tl__surface_pixel, &t);
+}
+
 /* An orthonormal pair perpendicular to unit a. */
 static void tl__perpendicular(const float a[3], float e1[3], float e2[3])
 {

@@ -23,6 +23,11 @@ void tl_shadow_rt_destroy(tl_shadow_rt *rt);
 void tl_shadow_rt_truth(const tl_shadow_rt *rt, const tl_camera *camera, uint32_t w, uint32_t h, const tl_light *light,
                         uint8_t *state, uint32_t *object);
 
+/* Per pixel the primary hit's world position and geometric normal (facing the eye), 3 floats each;
+ * zeros without a hit (tl_shadow_rt_truth's object is 0 there). */
+void tl_shadow_rt_surface(const tl_shadow_rt *rt, const tl_camera *camera, uint32_t w, uint32_t h, float *position,
+                          float *normal);
+
 /* A light with a size: per pixel the fraction of its emitter seen from the surface point, from
  * strata^2 stratified shadow rays over the disc that faces the point (point and spot lights: the
  * sphere of source_radius around position; directional lights: the cone of angular radius `angle`
