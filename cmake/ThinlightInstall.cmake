@@ -66,7 +66,7 @@ configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/thinlightConfig.cmake.
 # Same major version = same ABI (README "Using thinlight as a library").
 write_basic_package_version_file(${PROJECT_BINARY_DIR}/package/thinlightConfigVersion.cmake
   VERSION ${PROJECT_VERSION}
-  COMPATIBILITY SameMajorVersion)
+  COMPATIBILITY SameMinorVersion)
 install(FILES
   ${PROJECT_BINARY_DIR}/package/thinlightConfig.cmake
   ${PROJECT_BINARY_DIR}/package/thinlightConfigVersion.cmake

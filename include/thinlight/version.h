@@ -14,7 +14,7 @@
 /** Major version: changes when the API or ABI breaks; the shared libraries' SOVERSION. */
 #define TL_VERSION_MAJOR 0
 /** Minor version: additions that keep the ABI (0.x: see the README). Kept below 100. */
-#define TL_VERSION_MINOR 1
+#define TL_VERSION_MINOR 2
 /** Patch version: fixes only. Kept below 100. */
 #define TL_VERSION_PATCH 0
 /** Version as one comparable number: major * 10000 + minor * 100 + patch. */

@@ -17,7 +17,7 @@
 #                                           OSMesa, GLFW, OIIO or C++ runtime NEEDED, no gl*/OSMesa*
 #                                           symbol referenced (executables and libthinlight-codec.so)
 #   packaging_config_version_same_major     find_package(thinlight <major>.<minor>) is found,
-#                                           <major + 1>.0 is not
+#                                           <major + 1>.0 is not (nor 0.<minor + 1> while major is 0)
 #   packaging_codec_only_c_compiler         a separate configure with THINLIGHT_WITH_RENDERER,
 #                                           _IO, _OSMESA, _EGL, _GLFW off and no C++ compiler builds
 #                                           thinlight_codec, which needs libm and libc only
@@ -387,7 +387,12 @@ if(CMAKE_SCRIPT_MODE_FILE)
     string(REGEX MATCH "^([0-9]+)\\.([0-9]+)" mm "${VERSION}")
     set(major ${CMAKE_MATCH_1})
     math(EXPR next "${major} + 1")
-    foreach(request "${mm}" "${next}.0")
+    math(EXPR next_minor "${CMAKE_MATCH_2} + 1")
+    set(refused "${next}.0")
+    if(major EQUAL 0) # while the major version is 0 a minor release may break (docs/versioning.md)
+      list(APPEND refused "0.${next_minor}")
+    endif()
+    foreach(request "${mm}" ${refused})
       file(WRITE "${WORK}/${request}/CMakeLists.txt"
         "cmake_minimum_required(VERSION 3.25)\nproject(v LANGUAGES NONE)\n"
         "find_package(thinlight ${request} CONFIG REQUIRED)\n"
@@ -401,7 +406,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
         message(FATAL_ERROR "find_package(thinlight ${request}) accepted ${VERSION}")
       endif()
     endforeach()
-    message(STATUS "thinlight ${VERSION}: ${mm} found, ${next}.0 refused")
+    message(STATUS "thinlight ${VERSION}: ${mm} found, ${refused} refused")
 
   elseif(CHECK STREQUAL "codec_only_c_compiler" OR CHECK STREQUAL "no_optional_deps")
     # A configure of the source tree that must not need what the options turn off. No C++
