@@ -1,5 +1,4 @@
-/* thinlight-bench: the memory and bandwidth comparison of the four render modes (DESIGN.md
- * section 6). This file holds the order of the work and the checks before it (the command line:
+/* thinlight-bench: the memory and bandwidth comparison of the four render modes (docs/tools.md). This file holds the order of the work and the checks before it (the command line:
  * bench_args.c); see bench.h. */
 #include <errno.h>
 #include <stdio.h>

@@ -1,6 +1,5 @@
 /* thinlight-bench: what the thin G-buffer saves in memory and bandwidth, what it costs in time and
- * what it loses in image quality, against the fat G-buffer and forward shading (DESIGN.md
- * section 6). Shared between bench.c (command line), bench_sweep.c (the measurements),
+ * what it loses in image quality, against the fat G-buffer and forward shading (docs/tools.md). Shared between bench.c (command line), bench_sweep.c (the measurements),
  * bench_scene.c (scene and lights), bench_report.c (table, JSON, doc), bench_plot.c (gnuplot) and
  * bench_images.c (final images and error heat maps). */
 #ifndef TL_BENCH_H

@@ -1,4 +1,4 @@
-/* What the frame planner saves (DESIGN.md section 4): each mode's plan for the scene against the
+/* What the frame planner saves (docs/frame.md, "The frame planner"): each mode's plan for the scene against the
  * plan the renderer makes with tl_renderer_options.planning off (every feature planned for, whatever
  * the scene uses). Pure: tl_frame_plan_build needs no GL; bench_sweep adds the frame times. */
 #include <math.h>

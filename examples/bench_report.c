@@ -1,5 +1,4 @@
-/* What the sweep found, three ways: a one-screen table on stdout, the JSON records (DESIGN.md
- * section 6) and the generated section of docs/bandwidth.md. The summary lines are made once and
+/* What the sweep found, three ways: a one-screen table on stdout, the JSON records (docs/tools.md) and the generated section of docs/bandwidth.md. The summary lines are made once and
  * shared by the table and the doc. */
 #include <math.h>
 #include <stdarg.h>

@@ -1,6 +1,6 @@
 /* thinlight-codec-report: measures every G-buffer encoding (error against its input, and encode
  * and decode time on this machine) and writes a table, JSON, an error-vs-time plot and,
- * optionally, the generated section of docs/precision.md. Contract: DESIGN.md section 6. */
+ * optionally, the generated section of docs/precision.md. Contract: docs/tools.md. */
 #define _POSIX_C_SOURCE 200809L
 
 #include <errno.h>

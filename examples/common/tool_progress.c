@@ -1,4 +1,4 @@
-/* Progress on stderr for work longer than a second (DESIGN.md section 6), the monotonic clock and
+/* Progress on stderr for work longer than a second (docs/tools.md), the monotonic clock and
  * a one-line description of the machine for reports. */
 #define _POSIX_C_SOURCE 200809L
 

@@ -88,7 +88,7 @@ TL_API const char *tl_light_buffer_name(tl_light_buffer value);
 /** Parses a name of tl_light_buffer_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
 TL_API tl_result tl_light_buffer_from_name(const char *name, tl_light_buffer *value);
 
-/** How the light pass accumulates lights (DESIGN.md section 2). */
+/** How the light pass accumulates lights (docs/frame.md). */
 typedef enum tl_light_strategy {
     TL_LIGHT_STRATEGY_DEFAULT = 0, /**< "auto": the planner picks per scene (tl_frame_plan.light_strategy says which, and why) */
     TL_LIGHT_STRATEGY_VOLUMES,     /**< "volumes": instanced spheres, cones and a full-screen triangle, blended per
@@ -692,7 +692,7 @@ typedef struct tl_plan_downgrade {
     char reason[96];  /**< why */
 } tl_plan_downgrade;
 
-/** What a frame allocates, runs and compiles (DESIGN.md section 4): the frame graph. */
+/** What a frame allocates, runs and compiles (docs/frame.md, "The frame planner"): the frame graph. */
 typedef struct tl_frame_plan {
     tl_render_mode mode;                         /**< the mode planned for */
     uint32_t width;                              /**< target width in pixels */

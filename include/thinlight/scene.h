@@ -254,7 +254,7 @@ typedef struct tl_scene {
     float *uv1;
 } tl_scene;
 
-/** What a scene uses, for the frame planner (DESIGN.md section 4). Only materials that some
+/** What a scene uses, for the frame planner (docs/frame.md, "The frame planner"). Only materials that some
  *  non-empty object draws with count. */
 typedef struct tl_scene_feature_set {
     size_t point_lights;       /**< number of point lights */

@@ -1,4 +1,4 @@
-/* One frame: the compiled passes of the plan in order (shared/DESIGN.md section 2). Per frame the
+/* One frame: the compiled passes of the plan in order (docs/frame.md). Per frame the
  * CPU culls the scene's objects, has the lights module prepare what the plan's passes declared,
  * writes the frame's uniform block, per-object records and light data into the streaming buffer,
  * then runs each pass: debug group, queries (only when statistics were asked for), framebuffer,

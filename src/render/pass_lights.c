@@ -1,4 +1,4 @@
-/* The light pass: instanced light volumes (DESIGN.md section 2). One instanced draw per light type
+/* The light pass: instanced light volumes (docs/frame.md). One instanced draw per light type
  * and side: volumes the camera is outside of by their front faces (depth LEQUAL: lights hidden
  * behind the scene cost nothing), those that contain it or may cross the near plane by their back
  * faces (GEQUAL), both with depth clamp so the far plane cuts nothing; directional lights as a

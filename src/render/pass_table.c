@@ -1,4 +1,4 @@
-/* The pass table: every built-in pass in execution order (DESIGN.md section 2). A new pass is one
+/* The pass table: every built-in pass in execution order (docs/frame.md). A new pass is one
  * entry here plus its definition (declare, permute, execute) in a pass_*.c file; the planner,
  * the compile step, the frame and the statistics derive everything else from it. */
 #include <string.h>

@@ -1,4 +1,4 @@
-/* The tiled strategy's passes (DESIGN.md section 2): light-cull (a compute pass: per-tile depth
+/* The tiled strategy's passes (docs/frame.md): light-cull (a compute pass: per-tile depth
  * bounds and light lists, tiles.c) and the tiled light pass (every pixel once, looping over its
  * tile's lights: a full-screen triangle, or a compute pass). The light pass reads and writes what
  * the volumes' would in the mode, so the strategies differ only in how lights are gathered. */

@@ -1,4 +1,4 @@
-/* The frame planner (DESIGN.md sections 2 and 4): every pass of the table declares what it would
+/* The frame planner (docs/frame.md): every pass of the table declares what it would
  * read and write for this configuration and scene; passes whose outputs nobody reads are culled,
  * writes nobody reads are dropped, every target gets a lifetime (first write to last read) and
  * targets with disjoint lifetimes and view-compatible formats share one allocation. Then each pass

@@ -108,7 +108,7 @@ void describe_u(size_t i, const void *ctx);
 
 #define RANDOM_COUNT 131072u /* >= 10^5 */
 void random_directions(fvec *a, uint64_t seed, size_t count);
-/* Every extreme input of DESIGN.md section 5 for normals. */
+/* Every extreme input of docs/stability.md for normals. */
 void extreme_normals(fvec *a);
 
 #endif

@@ -247,7 +247,7 @@ void random_directions(fvec *a, uint64_t seed, size_t count)
     }
 }
 
-/* Every extreme input of DESIGN.md section 5 for normals. */
+/* Every extreme input of docs/stability.md for normals. */
 void extreme_normals(fvec *a)
 {
     const float inf = INFINITY, nan = NAN, dmin = 0x1.0p-149f, dmax = 0x1.fffffcp-127f;

@@ -1,4 +1,4 @@
-/* Extreme and stiff cases of DESIGN.md section 5 in rendered frames (OSMesa/llvmpipe): lighting
+/* Extreme and stiff cases of docs/stability.md in rendered frames (OSMesa/llvmpipe): lighting
  * limits (gloss 0 and 1, grazing N.L and N.V, a light at the shaded point, radius 0 and huge,
  * 10^4 lights on one pixel, intensities at the FP16 maximum) and scene limits (no lights, no
  * geometry, 1x1 and the largest target, degenerate triangles, NaN/Inf vertices, missing

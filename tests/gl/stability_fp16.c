@@ -222,7 +222,7 @@ TL_TEST(stability_10k_lights_fp16_accumulation)
 
 /* Light colours at and beyond the FP16 maximum (65504), alone and in pairs whose sum exceeds it,
  * and at 1 mm from the surface with radius 0.5, where the weight reaches the per-light clamp 4096
- * (1 / (0.01 radius)^2 = 40000 before it): DESIGN.md section 5 says no NaN or Inf may reach any
+ * (1 / (0.01 radius)^2 = 40000 before it): docs/stability.md says no NaN or Inf may reach any
  * target. Every allocated target is read back; the pixel under the light (the centre of the 63x63
  * frame) must come out white, not black or NaN. llvmpipe stores FP16 rounding toward zero, which
  * saturates at 65504 where round-to-nearest hardware gives Inf (colour x weight > 65520, or a

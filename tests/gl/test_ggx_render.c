@@ -444,7 +444,7 @@ TL_TEST(ggx_fresnel_layouts_agree_for_white_metal)
     free(g);
 }
 
-/* ---- extreme cases (DESIGN.md section 5) under GGX ------------------------------------------- */
+/* ---- extreme cases (docs/stability.md) under GGX ------------------------------------------- */
 
 /* Every target of every mode, strategy and layout stays finite and non-negative: roughness 0 (the
  * smoothest lobe, gloss 1) and 1 (gloss 0), a grazing camera and a grazing directional light,

@@ -16,7 +16,7 @@
  * (which subtracts terms of similar size where the horizon cuts the sphere) also gets the
  * propagated error of its two atan calls, measured first on the same implementation: twice the
  * largest error times |d E / d atan| of each. The gloss mapping must be bit-exact
- * (codec parity). Every output must be finite, and the extreme cases of DESIGN.md section 5 for
+ * (codec parity). Every output must be finite, and the extreme cases of docs/stability.md for
  * the GGX model must give finite, non-negative weights within the per-light clamp. */
 #include <float.h>
 #include <math.h>
@@ -594,7 +594,7 @@ TL_TEST(glsl_lighting_gloss_to_ggx_alpha_bit_exact)
     tl_gl_fixture_close(&f);
 }
 
-/* DESIGN.md section 5 for the GGX model in GLSL: roughness at the floor and 1, n.v and n.l -> 0,
+/* docs/stability.md for the GGX model in GLSL: roughness at the floor and 1, n.v and n.l -> 0,
  * a light behind the surface, at the shaded point, a hair from it, source radius 0 and larger than
  * the distance, tiny and huge ranges: finite, non-negative, within the clamp (and the reference's
  * values where the reference is continuous, checked by the cases above). */

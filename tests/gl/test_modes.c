@@ -30,7 +30,7 @@ static int any_program_has(const tl_frame_plan *p, const char *define)
 
 /* ---- pure planning ------------------------------------------------------------------------- */
 
-/* Every combination of features, in every mode: the structural rules of DESIGN.md section 4. */
+/* Every combination of features, in every mode: the structural rules of docs/frame.md, "The frame planner". */
 TL_TEST(plan_rules_exhaustive)
 {
     size_t checked = 0;

@@ -1,4 +1,4 @@
-/* Zero is the default, everywhere (issue 26; STYLE.md): each public struct, zeroed where a call
+/* Zero is the default, everywhere (issue 26; docs/architecture.md): each public struct, zeroed where a call
  * accepts it, means what its header documents and works. The renderer's cases run on five boxes
  * away from the origin (so that a box left at the origin, which is where zeroed bounds put it, is
  * outside the view), lit by one directional light; each zeroed frame is compared byte for byte

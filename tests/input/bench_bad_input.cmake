@@ -1,4 +1,4 @@
-# thinlight-bench's command-line contract on bad input (DESIGN.md section 6): bad usage exits 2,
+# thinlight-bench's command-line contract on bad input (docs/tools.md): bad usage exits 2,
 # bad input 1, each with one line on stderr and no partial output.
 #
 # The checker of the tests tests/input/CMakeLists.txt adds (tl_add_cli_test), run as

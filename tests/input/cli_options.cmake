@@ -1,4 +1,4 @@
-# Every tool's options against values that must be refused (DESIGN.md section 6: bad usage exits 2
+# Every tool's options against values that must be refused (docs/tools.md: bad usage exits 2
 # with one line). The options come from the tool's own table (`TOOL --list-options`), so an option
 # added to a tool is tested without a line here. Each option that takes a number, a size, a byte
 # count, a list of them or a name from a fixed set is given, after the arguments of a small job

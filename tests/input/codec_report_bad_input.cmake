@@ -1,4 +1,4 @@
-# thinlight-codec-report's command-line contract on bad input (DESIGN.md section 6): bad usage
+# thinlight-codec-report's command-line contract on bad input (docs/tools.md): bad usage
 # exits 2, an output that cannot be written 1 with a message naming it, and a --doc file without
 # markers is left unchanged.
 #

@@ -1,4 +1,4 @@
-# thinlight-render's command-line contract on bad input (DESIGN.md section 6): exit 1 on bad
+# thinlight-render's command-line contract on bad input (docs/tools.md): exit 1 on bad
 # input with one line naming the problem, 2 on bad usage, and no partial output.
 # The checker of the tests tests/input/CMakeLists.txt adds (tl_add_cli_test), run as
 #   cmake -DTOOL=<thinlight-render> -DCHECK=<bad_usage|bad_input> -DWORK=<scratch dir> -P render_cli_bad_input.cmake

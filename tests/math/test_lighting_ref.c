@@ -2,7 +2,7 @@
  * GGX distribution is normalised, the lobe's directional albedo stays <= 1, the sphere light's
  * closed-form irradiance equals its Monte Carlo integral, the representative point's error is
  * measured (and bounded by the accuracy docs/lighting.md claims), and every extreme case of
- * DESIGN.md section 5 gives finite, non-negative weights. */
+ * docs/stability.md gives finite, non-negative weights. */
 #include <float.h>
 #include <math.h>
 #include <stdint.h>
@@ -247,7 +247,7 @@ static int finite_nonneg(const double *t, int count)
     return 1;
 }
 
-/* DESIGN.md section 5 for both models: gloss 0 and 1 (roughness 1 and the alpha floor), n.v and
+/* docs/stability.md for both models: gloss 0 and 1 (roughness 1 and the alpha floor), n.v and
  * n.l -> 0, a light behind the surface, at the shaded point and a hair from it, source radius 0
  * and far larger than the distance, huge and tiny ranges: every weight finite and >= 0, and no
  * more than the per-light clamp. */

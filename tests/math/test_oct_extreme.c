@@ -1,4 +1,4 @@
-/* Octahedral encoding: the extreme and stiff cases of DESIGN.md section 5, one case each.
+/* Octahedral encoding: the extreme and stiff cases of docs/stability.md, one case each.
  * Error bounds per bit budget are the random-input worst cases asserted in test_oct.c, which
  * halve with every bit: 0.96 deg at 8 bits (0.06 deg at 12). */
 #include <float.h>

@@ -1,5 +1,5 @@
 # Every public header compiles alone, as C11 and as C++17, with -Wall -Wextra -Wpedantic -Werror
-# (STYLE.md "API shape"). One generated translation unit per header per language, containing only
+# (docs/architecture.md, "Layers"). One generated translation unit per header per language, containing only
 # `#include "thinlight/X.h"`, goes into an OBJECT library that is part of the normal build, so a
 # header that does not stand alone fails the build. The tests:
 #   headers_compile_alone        rebuilds those targets;

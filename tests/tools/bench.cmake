@@ -1,4 +1,4 @@
-# thinlight-bench (DESIGN.md section 6): a tiny sweep whose JSON must keep the contract (keys,
+# thinlight-bench (docs/tools.md): a tiny sweep whose JSON must keep the contract (keys,
 # types, one record per (mode, lights)), whose images must stay within each mode's error bound
 # against fat, and whose bytes per pixel must add up; --help exits 0. Bad usage (exit 2) and bad
 # input (exit 1 with one line and no partial output) are checked by tests/input/bench_bad_input.cmake.

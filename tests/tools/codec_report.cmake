@@ -1,4 +1,4 @@
-# Smoke test of thinlight-codec-report's command-line contract (DESIGN.md section 6): the JSON
+# Smoke test of thinlight-codec-report's command-line contract (docs/tools.md): the JSON
 # report of a --quick run. Bad usage and unwritable outputs: tests/input/codec_report_bad_input.cmake.
 #
 # The checker of the tests tests/tools/CMakeLists.txt adds (tl_add_cli_test), run as

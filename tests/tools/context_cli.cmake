@@ -1,4 +1,4 @@
-# The tools' --context, --device and --list-devices (DESIGN.md section 6: every renderer tool takes
+# The tools' --context, --device and --list-devices (docs/tools.md: every renderer tool takes
 # --context auto|osmesa|egl|glfw): bad values exit 2 with one line, the device list exits 0, an
 # EGL run says on stderr which context it got; thinlight-codec-report makes no context and refuses
 # the options. Included by tests/CMakeLists.txt it adds the tests; run with `cmake -P` it is the

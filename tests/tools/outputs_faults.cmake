@@ -1,4 +1,4 @@
-# Every output of the tools is whole or absent (DESIGN.md section 6, docs/outputs.md), checked
+# Every output of the tools is whole or absent (docs/tools.md, docs/outputs.md), checked
 # with the fault injector (common/fault_inject.h) preloaded into the tool:
 #   full disk   the k-th write fails (ENOSPC, and every later one), for every k until the run
 #               succeeds; the last fsync and the last close fail (EIO; every fsync and close of

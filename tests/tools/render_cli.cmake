@@ -1,4 +1,4 @@
-# thinlight-render's command-line contract (DESIGN.md section 6): exit 0 with an image (bad input
+# thinlight-render's command-line contract (docs/tools.md): exit 0 with an image (bad input
 # and bad usage: tests/input/render_cli_bad_input.cmake).
 # The checker of the tests tests/tools/CMakeLists.txt adds (tl_add_cli_test), run as
 #   cmake -DTOOL=<thinlight-render> -DCHECK=<writes_png|dump_targets|gltf_plans> -DWORK=<scratch dir> -P render_cli.cmake
