@@ -1,4 +1,4 @@
-// Bloom (docs/effects.md, src/render/pass_bloom.c): one of three steps, all sampling bilinearly
+// Bloom (docs/effects.md, src/render/passes/pass_bloom.c): one of three steps, all sampling bilinearly
 // (the taps sit on texel corners, where the bilinear weights are exact).
 //   TL_BLOOM_PREFILTER: soft threshold of HDR, then the 13-tap downsample into level 0.
 //   TL_BLOOM_DOWN:      the 13-tap downsample of the level above (Jimenez 2014, slide 150): the

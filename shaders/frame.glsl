@@ -1,5 +1,5 @@
 // Per-frame and per-view data of every pass: one std140 uniform block at a fixed binding, written
-// once per frame (tl__frame_ubo in src/render/view.h mirrors it member for member). A pass's own
+// once per frame (tl__frame_ubo in src/render/scene/view.h mirrors it member for member). A pass's own
 // parameters are its block at TL_UBO_PASS, declared in its shader (tl__pass_def.params).
 
 #ifndef TL_FRAME_GLSL

@@ -1,4 +1,4 @@
-// MSAA with per-sample lighting on edges (docs/antialiasing.md, src/render/pass_msaa.c): the
+// MSAA with per-sample lighting on edges (docs/antialiasing.md, src/render/passes/pass_msaa.c): the
 // G-buffer has TL_GBUFFER_SAMPLES samples per pixel. msaa-classify marks the edge pixels (samples
 // that differ in depth or normal) in msaa.edges; the light pass (volumes or tiles) then lights
 // every other pixel once, from sample 0's surface at the pixel's centre, its output going to every

@@ -3,7 +3,7 @@
 // material pass of thin-lpp, forward, and the G-buffer pass of thin-deferred and fat, each with
 // the material's own albedo, F0, gloss, occlusion and normal). Diffuse: the irradiance from 9 SH
 // coefficients (Ramamoorthi and Hanrahan 2001); specular: the GGX-prefiltered chain times the
-// split-sum table, F0 A + B (Karis 2013). All of it made on the CPU (src/render/ibl_bake.c).
+// split-sum table, F0 A + B (Karis 2013). All of it made on the CPU (src/render/environment/ibl_bake.c).
 
 #ifndef TL_IBL_GLSL
 #define TL_IBL_GLSL

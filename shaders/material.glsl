@@ -6,7 +6,7 @@
 #ifndef TL_MATERIAL_GLSL
 #define TL_MATERIAL_GLSL
 
-// One std140 record per material (tl__material_ubo in src/render/renderer_internal.h), bound as a
+// One std140 record per material (tl__material_ubo in src/render/scene/scene_gpu.h), bound as a
 // range of the scene's material buffer when the material changes.
 layout(std140, binding = TL_UBO_MATERIAL) uniform tl_material_block {
     vec3 u_albedo;

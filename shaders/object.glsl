@@ -1,5 +1,5 @@
 // Per-object data of the geometry passes: one std430 record per object, selected by the object id
-// the draw passes as its base instance (tl__object_gpu in src/render/renderer_internal.h).
+// the draw passes as its base instance (tl__object_gpu in src/render/scene/scene_gpu.h).
 
 #ifndef TL_OBJECT_GLSL
 #define TL_OBJECT_GLSL

@@ -1,4 +1,4 @@
-// The shadow pass (src/render/shadows_render.c): casters' depth into one view of the shadow atlas.
+// The shadow pass (src/render/shadows/shadows.c): casters' depth into one view of the shadow atlas.
 // The view's matrix (world to the view's clip space) is its block at TL_UBO_PASS.
 #include "object.glsl"
 

@@ -1,4 +1,4 @@
-// Vignette (src/render/pass_vignette.c). TL_VIGNETTE_FACTOR: the factor f = 1 - strength *
+// Vignette (src/render/passes/pass_vignette.c). TL_VIGNETTE_FACTOR: the factor f = 1 - strength *
 // smoothstep(radius, radius + softness, d), d the distance from the centre over the half-diagonal,
 // into the vignette target. Otherwise: (0, 0, 0, 1 - f) blended SRC_ALPHA, ONE_MINUS_SRC_ALPHA onto
 // HDR, which becomes HDR f. Each draw writes its pass's one target at location 0.

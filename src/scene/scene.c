@@ -3,7 +3,6 @@
 #include <stdlib.h>
 
 #include "core/alloc.h"
-#include "scene_internal.h"
 #include "scene/validate.h"
 
 void tl_scene_destroy(tl_scene *scene)

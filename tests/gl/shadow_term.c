@@ -1,9 +1,9 @@
-/* The renderer's shadow term of one light (shadow_scenes.h), on the tests' context. */
+/* The renderer's shadow term of one light (shadow_term.h), on the tests' context. */
 #include <math.h>
 #include <stdlib.h>
 
 #include "render_fixture.h"
-#include "shadow_scenes.h"
+#include "shadow_term.h"
 
 static float *tl__hdr_luma(tl_renderer *r, size_t n)
 {

@@ -1,4 +1,4 @@
-/* Shadows (docs/shadows.md) against ray-traced truth (Embree, tests/common/reference/shadow_rt.c):
+/* Shadows (docs/shadows.md) against ray-traced truth (Embree, examples/common/shadow_rt.c):
  * the fraction of pixels whose lit or shadowed state differs from the truth outside the penumbra
  * (acne and leaks apart), per mode, strategy and depth format, on the stiff scene and the crypt;
  * and what the planner and the cache promise; PCSS against the truth of lights with a size (area
@@ -10,7 +10,7 @@
 
 #include "render_fixture.h"
 #include "shadow_rt.h"
-#include "shadow_scenes.h"
+#include "shadow_term.h"
 #include "tl_test.h"
 
 enum { TL__BAND = 2 }; /* pixels beside a change of the truth's state: the penumbra's reach on screen */

@@ -24,14 +24,14 @@
 #   packaging_renderer_without_optional_deps  THINLIGHT_WITH_IO/_OSMESA/_EGL/_GLFW off: libthinlight
 #                                           builds and needs none of their libraries
 #   version_header_library_and_project_agree  TL_VERSION_*, tl_version(), project(VERSION)
-#   getting_started_writes_png              docs/getting_started.c renders and writes a PNG
+#   getting_started_writes_png              examples/getting_started.c renders and writes a PNG
 #   docs_getting_started_matches_source     the program in docs/getting-started.md is the file
 #                                           verbatim and under 60 lines
-#   engine_loop_runs_and_writes_png         docs/engine_loop.c: 48 frames of changed options, moved,
+#   engine_loop_runs_and_writes_png         examples/engine_loop.c: 48 frames of changed options, moved,
 #                                           hidden, added and removed objects, dirty GL state, a resize;
 #                                           no program built after the first round; a PNG
-#   docs_engine_loop_matches_source         docs/getting-started.md shows docs/engine_loop.c verbatim
-#   gltf_and_own_objects_both_show          docs/gltf_and_own_objects.c: a glTF written at run time, set
+#   docs_engine_loop_matches_source         docs/getting-started.md shows examples/engine_loop.c verbatim
+#   gltf_and_own_objects_both_show          examples/gltf_and_own_objects.c: a glTF written at run time, set
 #                                           whole, then the program's own texture, material, box and
 #                                           light added; its box (red and blue texels) and the file's
 #                                           objects each change pixels when hidden; a PNG
@@ -157,14 +157,14 @@ if(CMAKE_SCRIPT_MODE_FILE)
   endfunction()
 
   # The programs a consumer build made, run against the prefix.
-  # docs/getting-started.md shows docs/FILE verbatim: the ```c block after "<!-- docs/FILE -->".
+  # docs/getting-started.md shows examples/FILE verbatim: the ```c block after "<!-- examples/FILE -->".
   function(expect_doc_program file)
-    file(READ "${SOURCE_DIR}/docs/${file}" program)
+    file(READ "${SOURCE_DIR}/examples/${file}" program)
     file(READ "${SOURCE_DIR}/docs/getting-started.md" md)
-    set(marker "<!-- docs/${file} -->\n```c\n")
+    set(marker "<!-- examples/${file} -->\n```c\n")
     string(FIND "${md}" "${marker}" start)
     if(start EQUAL -1)
-      message(FATAL_ERROR "docs/getting-started.md has no '<!-- docs/${file} -->' + ```c block")
+      message(FATAL_ERROR "docs/getting-started.md has no '<!-- examples/${file} -->' + ```c block")
     endif()
     string(LENGTH "${marker}" skip)
     math(EXPR start "${start} + ${skip}")
@@ -173,10 +173,10 @@ if(CMAKE_SCRIPT_MODE_FILE)
     string(SUBSTRING "${rest}" 0 ${end} block)
     if(NOT block STREQUAL program)
       file(WRITE "${WORK}/block.c" "${block}")
-      execute_process(COMMAND diff -u "${SOURCE_DIR}/docs/${file}" "${WORK}/block.c" OUTPUT_VARIABLE d)
-      message(FATAL_ERROR "the program in docs/getting-started.md differs from docs/${file}:\n${d}")
+      execute_process(COMMAND diff -u "${SOURCE_DIR}/examples/${file}" "${WORK}/block.c" OUTPUT_VARIABLE d)
+      message(FATAL_ERROR "the program in docs/getting-started.md differs from examples/${file}:\n${d}")
     endif()
-    message(STATUS "docs/getting-started.md holds docs/${file} verbatim")
+    message(STATUS "docs/getting-started.md holds examples/${file} verbatim")
   endfunction()
 
   function(run_consumer_programs dir)
@@ -349,7 +349,7 @@ if(CMAKE_SCRIPT_MODE_FILE)
       separate_arguments(libs UNIX_COMMAND "${libs}")
       cc("${WORK}/render_frame" ${cflags} "${SOURCE_DIR}/tests/packaging/consumer/render_frame.c" ${libs})
       if(WITH_IO)
-        cc("${WORK}/getting_started" ${cflags} "${SOURCE_DIR}/docs/getting_started.c" ${libs})
+        cc("${WORK}/getting_started" ${cflags} "${SOURCE_DIR}/examples/getting_started.c" ${libs})
       endif()
     endif()
     run_consumer_programs("${WORK}")
@@ -466,10 +466,10 @@ if(CMAKE_SCRIPT_MODE_FILE)
     expect_doc_program(gltf_and_own_objects.c)
 
   elseif(CHECK STREQUAL "getting_started_doc")
-    file(STRINGS "${SOURCE_DIR}/docs/getting_started.c" lines)
+    file(STRINGS "${SOURCE_DIR}/examples/getting_started.c" lines)
     list(LENGTH lines n)
     if(n GREATER_EQUAL 60)
-      message(FATAL_ERROR "docs/getting_started.c has ${n} lines; the guide promises fewer than 60")
+      message(FATAL_ERROR "examples/getting_started.c has ${n} lines; the guide promises fewer than 60")
     endif()
     expect_doc_program(getting_started.c)
 
@@ -558,25 +558,25 @@ set_tests_properties(version_header_library_and_project_agree PROPERTIES LABELS 
 
 # docs/getting-started.md: its program is built and run, and is what the page shows.
 if(TARGET thinlight_io AND THINLIGHT_WITH_OSMESA)
-  add_executable(tl_getting_started ${PROJECT_SOURCE_DIR}/docs/getting_started.c)
+  add_executable(tl_getting_started ${PROJECT_SOURCE_DIR}/examples/getting_started.c)
   target_link_libraries(tl_getting_started PRIVATE thinlight::thinlight thinlight_warnings)
   tl_add_packaging_test(getting_started_writes_png getting_started LABELS "packaging;docs;gl"
     ARGS -DPROGRAM=$<TARGET_FILE:tl_getting_started>)
 endif()
 tl_add_packaging_test(docs_getting_started_matches_source getting_started_doc LABELS "packaging;docs")
-# docs/engine_loop.c: an engine's frame loop (options, scene updates, GL state, a resize, an
+# examples/engine_loop.c: an engine's frame loop (options, scene updates, GL state, a resize, an
 # application pass) runs, builds no program after its first round of options, and is on the page.
 if(TARGET thinlight_io AND THINLIGHT_WITH_OSMESA)
-  add_executable(tl_engine_loop ${PROJECT_SOURCE_DIR}/docs/engine_loop.c)
+  add_executable(tl_engine_loop ${PROJECT_SOURCE_DIR}/examples/engine_loop.c)
   target_link_libraries(tl_engine_loop PRIVATE thinlight::thinlight thinlight_warnings m)
   tl_add_packaging_test(engine_loop_runs_and_writes_png engine_loop LABELS "packaging;docs;gl"
     ARGS -DPROGRAM=$<TARGET_FILE:tl_engine_loop>)
 endif()
 tl_add_packaging_test(docs_engine_loop_matches_source engine_loop_doc LABELS "packaging;docs")
-# docs/gltf_and_own_objects.c: a loaded glTF and the application's own texture, material, box and
+# examples/gltf_and_own_objects.c: a loaded glTF and the application's own texture, material, box and
 # light in one renderer; both show in the frame, and the program is on the page.
 if(TARGET thinlight_io AND THINLIGHT_WITH_OSMESA AND TARGET make_gltf_scenes)
-  add_executable(tl_gltf_and_own_objects ${PROJECT_SOURCE_DIR}/docs/gltf_and_own_objects.c)
+  add_executable(tl_gltf_and_own_objects ${PROJECT_SOURCE_DIR}/examples/gltf_and_own_objects.c)
   target_link_libraries(tl_gltf_and_own_objects PRIVATE thinlight::thinlight thinlight_warnings m)
   tl_add_packaging_test(gltf_and_own_objects_both_show gltf_and_own_objects LABELS "packaging;docs;gl;gltf"
     ARGS -DPROGRAM=$<TARGET_FILE:tl_gltf_and_own_objects> -DMAKE_SCENES=$<TARGET_FILE:make_gltf_scenes>)

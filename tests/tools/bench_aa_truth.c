@@ -1,4 +1,4 @@
-/* The AA measurement's truth (examples/bench_aa_truth.c): its CPU tone map is the renderer's
+/* The AA measurement's truth (examples/bench/bench_aa_truth.c): its CPU tone map is the renderer's
  * (fat with FXAA off, its HDR target tone-mapped on the CPU, equals the renderer's output within
  * one 8-bit step, at two exposures), and its resolve averages tone-mapped samples, not radiance. */
 #include <math.h>

@@ -1,5 +1,5 @@
 /* Double-precision reference of light from an environment (docs/lighting.md, "Light from the
- * environment"), written for the tests independently of src/render/ibl_bake.c: the test
+ * environment"), written for the tests independently of src/render/environment/ibl_bake.c: the test
  * environment (an analytic sky), the equirectangular image's radiance as GL samples it, and a
  * Monte Carlo estimate of the radiance a surface of the lighting model (normalised Lambert, GGX
  * with Schlick-GGX k = alpha / 2 and Schlick's Fresnel) reflects from it. World space, +Y up;

@@ -1,6 +1,6 @@
-/* Private to src/scene: allocation through the scene's allocator, the mesh builder the primitive
- * generators write into, the procedural textures and the crypt's dimensions shared by the
- * geometry and the light placement. */
+/* Private to the built-in scenes (src/scene/builtin): allocation through the scene's allocator, the
+ * mesh builder the primitive generators write into, the procedural textures and the crypt's
+ * dimensions shared by the geometry and the light placement. */
 #ifndef TL_SCENE_INTERNAL_H
 #define TL_SCENE_INTERNAL_H
 

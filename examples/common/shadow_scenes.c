@@ -1,4 +1,4 @@
-/* The shadow tests' scenes and the renderer's shadow term (shadow_scenes.h). */
+/* The scenes of the shadow tests and thinlight-shadows-report (shadow_scenes.h). */
 #include "shadow_scenes.h"
 
 #include <math.h>

@@ -1,5 +1,5 @@
 /* The shadows' truth for the bench (--shadows): the ray-traced visibility of
- * tests/common/reference/shadow_rt.c (Embree 3, a test and bench dependency, never the library's),
+ * examples/common/shadow_rt.c (Embree 3, a test and bench dependency, never the library's),
  * linked in only where CMake found Embree (BENCH_WITH_EMBREE); without it every figure is "no
  * truth" with the reason. */
 #include <math.h>
