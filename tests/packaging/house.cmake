@@ -5,6 +5,8 @@
 #       their work from the passes' declarations
 #   no_file_cites_outside_the_repository  no source, doc or test cites a document outside the
 #       repository (the team's design notes live beside it, not in it)
+#   examples_build_nothing_from_tests  no CMakeLists.txt under examples/ names a file or folder of
+#       tests/ in a command (the tests build from examples/, never the reverse)
 # Included by tests/packaging/CMakeLists.txt it adds the tests; run with `cmake -P` it is the
 # checker, with -DCHECK=<generic|citations> -DSOURCE_DIR=<the source tree>.
 
@@ -60,17 +62,38 @@ if(CMAKE_SCRIPT_MODE_FILE)
     endif()
     list(LENGTH paths n)
     message(STATUS "${n} files read, none cites outside the repository")
+  elseif(CHECK STREQUAL "examples")
+    file(GLOB_RECURSE paths "${SOURCE_DIR}/examples/CMakeLists.txt" "${SOURCE_DIR}/examples/*.cmake")
+    set(found "")
+    foreach(path IN LISTS paths)
+      file(STRINGS "${path}" lines)
+      foreach(line IN LISTS lines)
+        string(REGEX REPLACE "#.*$" "" code "${line}") # comments may say where a test lives
+        if(code MATCHES "tests/")
+          file(RELATIVE_PATH rel "${SOURCE_DIR}" "${path}")
+          list(APPEND found "${rel}: ${line}")
+        endif()
+      endforeach()
+    endforeach()
+    if(found)
+      list(JOIN found "\n" text)
+      message(FATAL_ERROR "examples/ builds from tests/:\n${text}")
+    endif()
+    list(LENGTH paths n)
+    message(STATUS "${n} CMake files of examples/ name nothing of tests/")
   else()
     message(FATAL_ERROR "unknown CHECK '${CHECK}'")
   endif()
   return()
 endif()
 
-foreach(check generic citations)
+foreach(check generic citations examples)
   if(check STREQUAL "generic")
     set(name generic_files_name_no_target_pass_or_effect)
-  else()
+  elseif(check STREQUAL "citations")
     set(name no_file_cites_outside_the_repository)
+  else()
+    set(name examples_build_nothing_from_tests)
   endif()
   add_test(NAME ${name} COMMAND ${CMAKE_COMMAND} -DCHECK=${check} -DSOURCE_DIR=${PROJECT_SOURCE_DIR}
     -P ${CMAKE_CURRENT_LIST_FILE})
