@@ -51,14 +51,16 @@ tl_fat_model tl_fat_model_read(ivec2 px, vec3 n, vec3 v)
     return fm;
 }
 
-// One light's radiance on the pixel under its model (tl_light_weights' arguments, the light's colour,
-// and the pixel's albedo and specular colour).
-vec3 tl_fat_model_radiance(tl_fat_model fm, int type, vec3 p, vec3 n, vec3 v, float shape, vec3 color,
-                           vec4 position_radius, vec3 direction, float cos_inner, float cos_outer,
-                           float source_radius, vec3 albedo, vec3 spec_color)
+// One light's radiance on the pixel under its model (the light's record and type, and the pixel's
+// albedo and specular colour).
+vec3 tl_fat_model_radiance(tl_fat_model fm, tl_light_data ld, int type, vec3 p, vec3 n, vec3 v, float shape,
+                           vec3 albedo, vec3 spec_color)
 {
     if (fm.model == 1) return vec3(0.0); // unlit
-    vec3 t = tl_light_weights(type, p, n, v, shape, position_radius, direction, cos_inner, cos_outer, source_radius);
+    vec3 t = tl_light_data_weights(ld, type, p, n, v, shape), color = ld.color_type.rgb;
+    vec4 position_radius = ld.position_radius;
+    vec3 direction = ld.direction_cos_outer.xyz;
+    float cos_inner = ld.cos_inner.x, cos_outer = ld.direction_cos_outer.w;
     const vec3 fp16_max = vec3(65504.0);
     vec3 d = min(color * t.x, fp16_max);
     vec3 l, sheen = vec3(0.0);
@@ -72,8 +74,7 @@ vec3 tl_fat_model_radiance(tl_fat_model fm, int type, vec3 p, vec3 n, vec3 v, fl
 #endif
     vec3 c = albedo * d + spec_color * min(color * t.y, fp16_max) + min(color * t.z, fp16_max);
     if (fm.model == 2) {
-        vec3 tc = tl_light_weights(type, p, n, v, fm.coat_shape, position_radius, direction, cos_inner, cos_outer,
-                                   source_radius);
+        vec3 tc = tl_light_data_weights(ld, type, p, n, v, fm.coat_shape);
         c = c * (1.0 - fm.fc) + fm.fc * color * min(tc.y + tc.z, TL_LIGHT_CLAMP);
     }
     return c + sheen;

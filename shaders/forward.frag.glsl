@@ -32,8 +32,7 @@ layout(binding = TL_UNIT_AO) uniform sampler2D u_ao;
 void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout vec3 diffuse, inout vec3 specular,
                     inout vec3 fresnel)
 {
-    vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
-                              l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
+    vec3 t = tl_light_data_weights(l, int(l.color_type.w), p, n, v, shape);
     float vis = 1.0;
 #ifdef TL_SHADOWS
 #if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD)

@@ -5,17 +5,18 @@
 #include "light_eval.glsl"
 #ifdef TL_SHADOWS
 #include "shadow.glsl"
-flat in float f_shadow; // the light's shadow slot (0: casts none)
 #endif
 #if defined(TL_MATERIAL_MODELS) && !defined(TL_LIGHT_ACCUM)
 #include "fat_models.glsl" // each light under the pixel's material model
 #endif
 
+// the light's record, view space (light.vert.glsl)
 flat in vec4 f_position_radius;
-flat in vec3 f_color;
+flat in vec4 f_color_type;
 flat in vec4 f_direction_cos_outer;
-flat in float f_cos_inner;
-flat in float f_source_radius;
+flat in vec4 f_cos_inner;
+
+tl_light_data tl_volume_light() { return tl_light_data(f_position_radius, f_color_type, f_direction_cos_outer, f_cos_inner); }
 
 #ifdef TL_LIGHT_ACCUM
 layout(location = TL_OUT_LIGHT_DIFFUSE) out vec4 o_diffuse;
@@ -34,12 +35,11 @@ vec3 tl_light_coat(ivec2 px, vec3 p, vec3 n, vec3 v)
 {
     float g;
     if (!tl_coat_gloss(px, g)) return vec3(0.0);
-    vec3 t = tl_light_weights(TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(g), f_position_radius, f_direction_cos_outer.xyz,
-                              f_cos_inner, f_direction_cos_outer.w, f_source_radius);
+    vec3 t = tl_light_data_weights(tl_volume_light(), TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(g));
 #ifdef TL_SHADOWS
-    if (f_shadow > 0.0 && t != vec3(0.0)) t *= tl_light_shadow(f_shadow, TL_LIGHT_TYPE, p, n, f_position_radius.xyz, f_direction_cos_outer.xyz);
+    if (f_cos_inner.z > 0.0 && t != vec3(0.0)) t *= tl_light_shadow(f_cos_inner.z, TL_LIGHT_TYPE, p, n, f_position_radius.xyz, f_direction_cos_outer.xyz);
 #endif
-    return min(f_color * (t.y + t.z), vec3(65504.0));
+    return min(f_color_type.rgb * (t.y + t.z), vec3(65504.0));
 }
 #endif
 #else
@@ -80,29 +80,27 @@ void main()
         vec3 albedo, spec_color;
         tl_rt1_read(px, albedo, spec_color);
 #endif
-        vec3 radiance = tl_fat_model_radiance(fm, TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(gloss), f_color,
-                                              f_position_radius, f_direction_cos_outer.xyz, f_cos_inner,
-                                              f_direction_cos_outer.w, f_source_radius, albedo, spec_color);
+        vec3 radiance = tl_fat_model_radiance(fm, tl_volume_light(), TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(gloss),
+                                              albedo, spec_color);
 #ifdef TL_SHADOWS
         // one light's radiance is linear in its visibility, whatever the model
-        if (f_shadow > 0.0 && radiance != vec3(0.0))
-            radiance *= tl_light_shadow(f_shadow, TL_LIGHT_TYPE, p, n, f_position_radius.xyz, f_direction_cos_outer.xyz);
+        if (f_cos_inner.z > 0.0 && radiance != vec3(0.0))
+            radiance *= tl_light_shadow(f_cos_inner.z, TL_LIGHT_TYPE, p, n, f_position_radius.xyz, f_direction_cos_outer.xyz);
 #endif
         o_color = vec4(min(radiance, vec3(65504.0)), 0.0);
         return;
     }
 #endif
-    vec3 t = tl_light_weights(TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(gloss), f_position_radius, f_direction_cos_outer.xyz,
-                              f_cos_inner, f_direction_cos_outer.w, f_source_radius);
+    vec3 t = tl_light_data_weights(tl_volume_light(), TL_LIGHT_TYPE, p, n, v, tl_lobe_shape(gloss));
 #ifdef TL_SHADOWS
-    if (f_shadow > 0.0 && t != vec3(0.0)) t *= tl_light_shadow(f_shadow, TL_LIGHT_TYPE, p, n, f_position_radius.xyz, f_direction_cos_outer.xyz);
+    if (f_cos_inner.z > 0.0 && t != vec3(0.0)) t *= tl_light_shadow(f_cos_inner.z, TL_LIGHT_TYPE, p, n, f_position_radius.xyz, f_direction_cos_outer.xyz);
 #endif
     // One light's output never exceeds the FP16 maximum, whatever its colour (an Inf would poison
     // every later sum); sums past it are the readers' job (material.frag, tonemap.frag).
     const vec3 fp16_max = vec3(65504.0);
-    vec3 diffuse = min(f_color * t.x, fp16_max);
-    vec3 specular = min(f_color * t.y, fp16_max); // times F0
-    vec3 fresnel = min(f_color * t.z, fp16_max);  // added as it is (GGX's Schlick part)
+    vec3 diffuse = min(f_color_type.rgb * t.x, fp16_max);
+    vec3 specular = min(f_color_type.rgb * t.y, fp16_max); // times F0
+    vec3 fresnel = min(f_color_type.rgb * t.z, fp16_max);  // added as it is (GGX's Schlick part)
 #ifdef TL_LIGHT_ACCUM
 #ifndef TL_FRESNEL_SUMS
     specular = min(specular + fresnel, fp16_max); // one sum: Fresnel is applied per pixel

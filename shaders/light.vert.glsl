@@ -1,33 +1,27 @@
 // Pass 2: light volumes. One instanced draw per light type: TL_LIGHT_TYPE 1 point (sphere),
-// 2 spot (cone), 3 directional (full-screen triangle). Per-instance data in view space.
+// 2 spot (cone), 3 directional (full-screen triangle). Each instance is the light's record
+// (tl_light_data, light_eval.glsl) in world space; the fragments get it in view space.
 #include "frame.glsl"
 #include "fullscreen.glsl"
 
 layout(location = 0) in vec3 a_position;           // unit volume mesh (sphere or cone)
 layout(location = 1) in vec4 i_position_radius;    // world
-layout(location = 2) in vec4 i_color;
+layout(location = 2) in vec4 i_color_type;
 layout(location = 3) in vec4 i_direction_cos_outer; // world direction light travels
-layout(location = 4) in vec2 i_cos_inner_source; // spot cos_inner, sphere light radius
+layout(location = 4) in vec4 i_cos_inner;           // as tl_light_data's
 
-flat out vec4 f_position_radius; // view space
-flat out vec3 f_color;
-flat out vec4 f_direction_cos_outer; // view space
-flat out float f_cos_inner;
-flat out float f_source_radius;
-#ifdef TL_SHADOWS
-flat out float f_shadow; // the light's shadow slot (shadow.glsl), in the colour's alpha
-#endif
+// the light's record, view space (light.frag.glsl)
+flat out vec4 f_position_radius;
+flat out vec4 f_color_type;
+flat out vec4 f_direction_cos_outer;
+flat out vec4 f_cos_inner;
 
 void main()
 {
     f_position_radius = vec4((u_view * vec4(i_position_radius.xyz, 1.0)).xyz, i_position_radius.w);
-    f_color = i_color.rgb;
+    f_color_type = i_color_type;
     f_direction_cos_outer = vec4(normalize(mat3(u_view) * i_direction_cos_outer.xyz), i_direction_cos_outer.w);
-    f_cos_inner = i_cos_inner_source.x;
-    f_source_radius = i_cos_inner_source.y;
-#ifdef TL_SHADOWS
-    f_shadow = i_color.w;
-#endif
+    f_cos_inner = i_cos_inner;
 #if TL_LIGHT_TYPE == 3 || defined(TL_LIGHT_FULLSCREEN)
     gl_Position = vec4(tl_fullscreen_position(gl_VertexID), 0.0, 1.0);
 #elif TL_LIGHT_TYPE == 2

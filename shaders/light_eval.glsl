@@ -11,6 +11,15 @@
 #include "codec.glsl"
 #include "lighting.glsl"
 
+// One light as every pass reads it (the lights storage block's record, tiles.glsl; the light
+// volumes' instance, light.vert.glsl): view space; C packs it once (tl__light_record_fill).
+struct tl_light_data {
+    vec4 position_radius;     // view space
+    vec4 color_type;          // linear colour, type (1 point, 2 spot, 3 directional)
+    vec4 direction_cos_outer; // view space
+    vec4 cos_inner;           // spot cos_inner, sphere light radius, shadow slot (0: none), specular scale
+};
+
 // The lobe's shape from the stored gloss, once per pixel: the GGX alpha or the Blinn-Phong power.
 float tl_lobe_shape(float gloss)
 {
@@ -33,6 +42,15 @@ vec3 tl_light_weights(int type, vec3 p, vec3 n, vec3 v, float shape, vec4 positi
     return vec3(tl_light_terms(type, p, n, v, shape, position_radius.xyz, position_radius.w, direction, cos_inner,
                                cos_outer), 0.0);
 #endif
+}
+
+// One light's weights at p (tl_light_weights of its record) with its specular scale on the
+// specular terms: the one place a light's own factors apply, for every pass.
+vec3 tl_light_data_weights(tl_light_data l, int type, vec3 p, vec3 n, vec3 v, float shape)
+{
+    vec3 t = tl_light_weights(type, p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz, l.cos_inner.x,
+                              l.direction_cos_outer.w, l.cos_inner.y);
+    return vec3(t.x, t.yz * l.cos_inner.w);
 }
 
 #endif

@@ -20,8 +20,7 @@ vec3 tl_fat_tiled_add(tl_fat_model fm, tl_light_data l, vec3 p, vec3 n, vec3 v, 
         if (type == 2 && d2 > 0.0 && dot(-to_light, l.direction_cos_outer.xyz) <= l.direction_cos_outer.w * sqrt(d2))
             return vec3(0.0);
     }
-    vec3 c = tl_fat_model_radiance(fm, type, p, n, v, shape, l.color_type.rgb, l.position_radius, l.direction_cos_outer.xyz,
-                                   l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y, albedo, spec_color);
+    vec3 c = tl_fat_model_radiance(fm, l, type, p, n, v, shape, albedo, spec_color);
 #ifdef TL_SHADOWS
     if (l.cos_inner.z > 0.0 && c != vec3(0.0)) // a casting light (its shadow slot): linear in its visibility
         c *= tl_light_shadow(l.cos_inner.z, type, p, n, l.position_radius.xyz, l.direction_cos_outer.xyz);

@@ -107,8 +107,7 @@ void tl_model_light_add(tl_light_data ld, vec3 p, vec3 n, vec3 v, float vis)
     vec3 c = ld.color_type.rgb * vis;
     if (model == TL_MODEL_CLEARCOAT) {
         float shape = tl_lobe_shape(1.0 - u_clearcoat_roughness);
-        vec3 t = tl_light_weights(type, p, n, v, shape, ld.position_radius, ld.direction_cos_outer.xyz, ld.cos_inner.x,
-                                  ld.direction_cos_outer.w, ld.cos_inner.y);
+        vec3 t = tl_light_data_weights(ld, type, p, n, v, shape);
         tl_model_acc.coat += c * min(t.y + t.z, TL_LIGHT_CLAMP);
         return;
     }

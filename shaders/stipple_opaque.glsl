@@ -23,8 +23,7 @@ void tl_stipple_relight(bool wanted, vec3 p, vec3 n, float gloss, out vec3 diffu
     uint first = tl_objects[v_object].lights.x, count = wanted ? tl_objects[v_object].lights.y : 0u;
     for (uint i = 0u; i < count; i++) {
         tl_light_data l = tl_lights[tl_light_indices[first + i]];
-        vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
-                                  l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
+        vec3 t = tl_light_data_weights(l, int(l.color_type.w), p, n, v, shape);
         diffuse += min(l.color_type.rgb * t.x, fp16_max);
         specular += min(l.color_type.rgb * t.y, fp16_max);
         fresnel += min(l.color_type.rgb * t.z, fp16_max);
@@ -50,8 +49,7 @@ vec3 tl_stipple_relight_coat(vec3 p, vec3 n)
     uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
     for (uint i = 0u; i < count; i++) {
         tl_light_data l = tl_lights[tl_light_indices[first + i]];
-        vec3 t = tl_light_weights(int(l.color_type.w), p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz,
-                                  l.cos_inner.x, l.direction_cos_outer.w, l.cos_inner.y);
+        vec3 t = tl_light_data_weights(l, int(l.color_type.w), p, n, v, shape);
         coat += min(l.color_type.rgb * (t.y + t.z), vec3(65504.0));
     }
     return tl_stipple_finite(coat);

@@ -20,8 +20,7 @@ vec3 tl_tiled_terms(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape)
         if (d2 >= l.position_radius.w * l.position_radius.w) return vec3(0.0);
         if (type == 2 && d2 > 0.0 && dot(-to_light, l.direction_cos_outer.xyz) <= l.direction_cos_outer.w * sqrt(d2)) return vec3(0.0);
     }
-    return tl_light_weights(type, p, n, v, shape, l.position_radius, l.direction_cos_outer.xyz, l.cos_inner.x,
-                            l.direction_cos_outer.w, l.cos_inner.y);
+    return tl_light_data_weights(l, type, p, n, v, shape);
 }
 
 // The clamped terms t of light l added to the sums.

@@ -6,13 +6,8 @@
 #define TL_TILES_GLSL
 
 #include "frame.glsl"
+#include "light_eval.glsl" // tl_light_data
 
-struct tl_light_data {
-    vec4 position_radius;     // view space
-    vec4 color_type;          // linear colour, type (1 point, 2 spot, 3 directional)
-    vec4 direction_cos_outer; // view space
-    vec4 cos_inner;           // spot cos_inner, sphere light radius (source_radius), 0, 0
-};
 layout(std430, binding = TL_SSBO_LIGHTS) readonly buffer tl_light_buffer { tl_light_data tl_lights[]; };
 
 // A tile whose list did not fit in the entries buffer: its pixels loop over every visible light.

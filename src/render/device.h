@@ -19,7 +19,7 @@
 #include "thinlight/renderer.h"
 
 #define TL__OUTPUTS_KNOWN 4 /* framebuffers render_to checked and does not ask about again */
-#define TL__LIGHT_BYTES 64u  /* one light of the lights storage block (lights.h, tl__forward_light) */
+#define TL__LIGHT_BYTES 64u  /* one light of the lights storage block (lights.h, tl__light_record) */
 
 /* What the context allows, read once at creation. */
 typedef struct tl__limits {

@@ -87,7 +87,7 @@ static double tl__pass_bytes(const tl__slot_plan *p, const tl__pass_decl *d, dou
     if (d->state.depth_write && (d->writes & depth_bit)) per_frag += depth;
     per_frag += tl__bpp(p, d->writes & ~depth_bit) * (d->state.blend ? 2.0 : 1.0);
     return pixels * tl__bpp(p, d->clears) + frags * per_frag +
-           (double)indices * (4.0 + tl__attribute_bytes(p->vertex_attributes)) + (double)instances * sizeof(tl__instance);
+           (double)indices * (4.0 + tl__attribute_bytes(p->vertex_attributes)) + (double)instances * sizeof(tl__light_record);
 }
 
 /* ---- reading a slot ---------------------------------------------------------------------------- */

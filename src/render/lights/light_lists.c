@@ -23,27 +23,6 @@ void tl__light_sphere(const tl_light *l, float c[3], float *radius)
     }
 }
 
-static void tl__view_light(const tl__view *v, const tl_light *l, int type, tl__forward_light *fl)
-{
-    const float *m = v->view.m;
-    for (int k = 0; k < 3; k++)
-        fl->position_radius[k] = m[k] * l->position[0] + m[4 + k] * l->position[1] + m[8 + k] * l->position[2] + m[12 + k];
-    fl->position_radius[3] = l->radius;
-    float dir[3] = {l->direction[0], l->direction[1], l->direction[2]};
-    tl__vec3_normalize(dir);
-    if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f) dir[1] = -1.0f;
-    float vd[3];
-    for (int k = 0; k < 3; k++) vd[k] = m[k] * dir[0] + m[4 + k] * dir[1] + m[8 + k] * dir[2];
-    tl__vec3_normalize(vd);
-    memcpy(fl->color_type, l->color, sizeof(float) * 3);
-    fl->color_type[3] = (float)type;
-    memcpy(fl->direction_cos_outer, vd, sizeof vd);
-    fl->direction_cos_outer[3] = type == TL_LIGHT_SPOT ? l->cos_outer : -1.0f;
-    fl->cos_inner[0] = type == TL_LIGHT_SPOT ? l->cos_inner : 1.0f;
-    fl->cos_inner[1] = type == TL_LIGHT_DIRECTIONAL ? 0.0f : l->source_radius;
-    fl->cos_inner[2] = fl->cos_inner[3] = 0.0f;
-}
-
 /* Appends the visible lights of one kind (0: directional, 1: local with a shadow slot, 2: the
  * other local ones); returns the new count. */
 static size_t tl__add_visible(tl__lights *r, const tl__view *v, int kind, size_t n)
@@ -57,8 +36,7 @@ static size_t tl__add_visible(tl__lights *r, const tl__view *v, int kind, size_t
         float c[3], rad;
         tl__light_sphere(l, c, &rad);
         if (!directional && (rad <= 0.0f || !tl__sphere_visible((float(*)[4])v->planes, c, rad))) continue;
-        tl__view_light(v, l, type, &r->view[n]);
-        if (r->shadow_slots) r->view[n].cos_inner[2] = r->shadow_slots[i];
+        tl__light_record_fill(l, v->view.m, r->shadow_slots ? r->shadow_slots[i] : 0.0f, &r->view[n]);
         memcpy(r->view_spheres[n], c, sizeof c);
         r->view_spheres[n][3] = directional ? -1.0f : rad;
         r->view_index[n++] = (uint32_t)i;
@@ -73,16 +51,16 @@ void tl__visible_lights(tl__device *dev, tl__lights *r, const tl__view *v, size_
     r->view_dir_count = tl__add_visible(r, v, 0, 0);
     r->view_cast_end = tl__add_visible(r, v, 1, r->view_dir_count);
     r->view_count = tl__add_visible(r, v, 2, r->view_cast_end);
-    *stream_bytes += (r->view_count + 1) * sizeof(tl__forward_light) + dev->lim.ssbo_align;
+    *stream_bytes += (r->view_count + 1) * sizeof(tl__light_record) + dev->lim.ssbo_align;
 }
 
 void tl__visible_lights_upload(tl__device *dev, tl__lights *r)
 {
     size_t n = r->view_count ? r->view_count : 1, offset = 0;
-    void *dst = tl__stream_reserve(&dev->stream, n * sizeof(tl__forward_light), dev->lim.ssbo_align, &offset);
+    void *dst = tl__stream_reserve(&dev->stream, n * sizeof(tl__light_record), dev->lim.ssbo_align, &offset);
     if (!dst) return;
-    if (r->view_count) memcpy(dst, r->view, r->view_count * sizeof(tl__forward_light));
-    else memset(dst, 0, sizeof(tl__forward_light));
+    if (r->view_count) memcpy(dst, r->view, r->view_count * sizeof(tl__light_record));
+    else memset(dst, 0, sizeof(tl__light_record));
     tl__stream_bind_range(&dev->gl, &dev->stream, GL_SHADER_STORAGE_BUFFER, TL__SSBO_LIGHTS, offset,
-                          n * sizeof(tl__forward_light));
+                          n * sizeof(tl__light_record));
 }

@@ -95,8 +95,8 @@ void tl__light_volumes_create(tl__device *dev, tl__lights *r)
     }
     gl->CreateVertexArrays(TL__LIGHT_KINDS, r->vao);
     static const char *const names[TL__LIGHT_KINDS] = {"vao.lights.point", "vao.lights.spot", "vao.lights.directional"};
-    const GLuint offs[4] = {offsetof(tl__instance, position_radius), offsetof(tl__instance, color),
-                            offsetof(tl__instance, direction_cos_outer), offsetof(tl__instance, cos_inner)};
+    const GLuint offs[4] = {offsetof(tl__light_record, position_radius), offsetof(tl__light_record, color_type),
+                            offsetof(tl__light_record, direction_cos_outer), offsetof(tl__light_record, cos_inner)};
     for (int k = 0; k < TL__LIGHT_KINDS; k++) {
         GLuint vao = r->vao[k];
         if (k < 2) {
@@ -109,7 +109,7 @@ void tl__light_volumes_create(tl__device *dev, tl__lights *r)
         gl->VertexArrayBindingDivisor(vao, 1, 1);
         for (GLuint a = 0; a < 4; a++) {
             gl->EnableVertexArrayAttrib(vao, a + 1);
-            gl->VertexArrayAttribFormat(vao, a + 1, a == 3 ? 2 : 4, GL_FLOAT, GL_FALSE, offs[a]);
+            gl->VertexArrayAttribFormat(vao, a + 1, 4, GL_FLOAT, GL_FALSE, offs[a]);
             gl->VertexArrayAttribBinding(vao, a + 1, 1);
         }
         tl__gl_label(gl, GL_VERTEX_ARRAY, vao, names[k]);
@@ -144,21 +144,6 @@ static int tl__light_side(const tl__lights *r, const tl__view *v, const tl_light
     return !r->fullscreen && d2 > margin * margin;
 }
 
-static void tl__instance_fill(const tl_light *l, int type, tl__instance *in)
-{
-    float dir[3] = {l->direction[0], l->direction[1], l->direction[2]};
-    tl__vec3_normalize(dir);
-    if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f) dir[1] = -1.0f;
-    memcpy(in->position_radius, l->position, sizeof(float) * 3);
-    in->position_radius[3] = l->radius;
-    memcpy(in->color, l->color, sizeof(float) * 3);
-    in->color[3] = 0.0f;
-    memcpy(in->direction_cos_outer, dir, sizeof dir);
-    in->direction_cos_outer[3] = type == TL_LIGHT_SPOT ? l->cos_outer : -1.0f;
-    in->cos_inner = type == TL_LIGHT_SPOT ? l->cos_inner : 1.0f;
-    in->source_radius = type == TL_LIGHT_DIRECTIONAL ? 0.0f : l->source_radius;
-}
-
 void tl__volumes_prepare(tl__lights *r, const tl__view *v, tl_frame_stats *st, size_t *stream_bytes)
 {
     size_t n = 0;
@@ -172,15 +157,14 @@ void tl__volumes_prepare(tl__lights *r, const tl__view *v, tl_frame_stats *st, s
                 if (type - 1 != k) continue;
                 int side = tl__light_side(r, v, l, type);
                 if (side < 0 || side != (pass == 0)) continue;
-                tl__instance_fill(l, type, &r->instances[n]);
-                if (r->shadow_slots) r->instances[n].color[3] = r->shadow_slots[i];
+                tl__light_record_fill(l, NULL, r->shadow_slots ? r->shadow_slots[i] : 0.0f, &r->instances[n]);
                 n++;
                 r->instance_count[k]++;
                 r->instance_outside[k] += (size_t)side;
             }
         st->lights_drawn[k + 1] = (uint32_t)r->instance_count[k];
     }
-    *stream_bytes += n * sizeof(tl__instance) + 16;
+    *stream_bytes += n * sizeof(tl__light_record) + 16;
 }
 
 void tl__volumes_upload(tl__device *dev, tl__lights *r)
@@ -189,12 +173,12 @@ void tl__volumes_upload(tl__device *dev, tl__lights *r)
     size_t total = 0;
     for (int k = 0; k < TL__LIGHT_KINDS; k++) total += r->instance_count[k];
     size_t offset = 0;
-    uint8_t *dst = total ? (uint8_t *)tl__stream_reserve(&dev->stream, total * sizeof(tl__instance), 16, &offset) : NULL;
+    uint8_t *dst = total ? (uint8_t *)tl__stream_reserve(&dev->stream, total * sizeof(tl__light_record), 16, &offset) : NULL;
     if (!dst) return;
-    memcpy(dst, r->instances, total * sizeof(tl__instance));
+    memcpy(dst, r->instances, total * sizeof(tl__light_record));
     for (int k = 0; k < TL__LIGHT_KINDS; k++)
         if (r->instance_count[k])
             gl->VertexArrayVertexBuffer(r->vao[k], 1, dev->stream.buffer,
-                                        (GLintptr)(offset + r->instance_base[k] * sizeof(tl__instance)),
-                                        sizeof(tl__instance));
+                                        (GLintptr)(offset + r->instance_base[k] * sizeof(tl__light_record)),
+                                        sizeof(tl__light_record));
 }

@@ -12,21 +12,16 @@
 enum { TL__LIGHT_KINDS = 3 }; /* point, spot, directional: index = type - 1 */
 #define TL__QUERY_RING 4      /* frames whose queries and tile counters may be in flight */
 
-/* One light volume instance (light.vert attributes 1..4), world space. */
-typedef struct tl__instance {
+/* One light as every pass reads it (tl_light_data, light_eval.glsl): a record of the lights storage
+ * block (view space) or a light volume's instance (light.vert attributes 1..4, world space). One
+ * function packs it (tl__light_record_fill), so a light's new factor is one line there and one in
+ * tl_light_data_weights. */
+typedef struct tl__light_record {
     float position_radius[4];
-    float color[4];
+    float color_type[4];          /* linear colour, type (1 point, 2 spot, 3 directional) */
     float direction_cos_outer[4];
-    float cos_inner, source_radius; /* attribute 4 (vec2) */
-} tl__instance;
-
-/* One light of the lights storage block (forward.frag.glsl, tiles), view space. */
-typedef struct tl__forward_light {
-    float position_radius[4];
-    float color_type[4];
-    float direction_cos_outer[4];
-    float cos_inner[4]; /* cos_inner, source radius, 0, 0 */
-} tl__forward_light;
+    float cos_inner[4];           /* spot cos_inner, source radius, shadow slot (0: none), specular scale */
+} tl__light_record;
 
 /* Tiled light lists (tiles.c): four counters (entries used, tiles that overflowed, shaded pairs as
  * two 32-bit halves) then (offset, count) per tile; the entries; and a ring of read-back copies of
@@ -60,14 +55,14 @@ struct tl__lights {
     size_t allocated;           /* lights the five per-light arrays hold (reused while enough) */
     size_t kinds[TL__LIGHT_KINDS]; /* lights per type */
     /* volumes (light_volumes.c) */
-    tl__instance *instances;  /* per frame: the visible lights by type, outside volumes first */
+    tl__light_record *instances;  /* per frame: the visible lights by type, outside volumes first */
     size_t instance_base[TL__LIGHT_KINDS], instance_count[TL__LIGHT_KINDS], instance_outside[TL__LIGHT_KINDS];
     int fullscreen;           /* this frame's point and spot lights are full-screen triangles */
     GLuint vao[TL__LIGHT_KINDS];
     GLuint vbo_volume[2], ibo_volume[2];
     uint32_t volume_index_count[2];
     /* the frame's visible lights in view space, directional ones first (light_lists.c) */
-    tl__forward_light *view;
+    tl__light_record *view;
     uint32_t *view_index;      /* scene light index of each */
     float (*view_spheres)[4];  /* world-space bounding sphere of each; radius < 0: reaches everything */
     size_t view_count, view_dir_count;
@@ -85,6 +80,10 @@ struct tl__lights {
      * (owned by the shadow module, shadows.c) */
     const float *shadow_slots;
 };
+
+/* lights.c: a light's record, world space (view: NULL) or in the view's space (its 4x4 matrix,
+ * column-major), with its shadow slot. */
+void tl__light_record_fill(const tl_light *l, const float *view, float shadow_slot, tl__light_record *out);
 
 /* lights.c: validated copies of the lights (with per-frame scratch for them), counted by type;
  * TL_ERROR_LIMIT past the device's light limit, before the array is read. */

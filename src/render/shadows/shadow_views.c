@@ -456,8 +456,8 @@ static void tl__shadow_block_params(tl__shadows *s, const tl__view *v, const tl_
 }
 
 /* One mapped light's record and views; its slot is the record + 1. */
-static void tl__light_record(tl__shadows *s, tl__view_ctx *c, const tl_light *li, uint32_t i, int kind,
-                             const uint32_t *xy, uint32_t size, float angle)
+static void tl__shadow_light_record(tl__shadows *s, tl__view_ctx *c, const tl_light *li, uint32_t i, int kind,
+                                    const uint32_t *xy, uint32_t size, float angle)
 {
     tl__shadow_light_gpu *rec = &s->block.lights[s->light_count];
     c->light_size = kind == TL_LIGHT_DIRECTIONAL ? tanf(angle) : li->source_radius;
@@ -524,7 +524,7 @@ tl_result tl__shadows_prepare(tl__device *dev, tl__shadows *s, const tl__lights 
     s->view_count = s->light_count = 0;
     memset(s->block.lights, 0, sizeof s->block.lights);
     for (size_t j = 0; j < n; j++)
-        tl__light_record(s, &c, &l->lights[mapped[j]], mapped[j], kinds[j], xy[j], sides[j] * cell,
+        tl__shadow_light_record(s, &c, &l->lights[mapped[j]], mapped[j], kinds[j], xy[j], sides[j] * cell,
                          o->shadows.directional_angle);
     tl__shadow_block_params(s, v, o, o->depth_format == TL_DEPTH_FORMAT_D32F_REVERSED);
     for (size_t i = 0; i < s->view_count; i++)
