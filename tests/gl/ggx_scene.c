@@ -66,11 +66,15 @@ void ggx_scene_build(ggx_scene *g)
     g->mat[1].specular[1] = 0.766f;
     g->mat[1].specular[2] = 0.336f;
     g->mat[1].gloss = 102.0f / 255.0f; /* roughness 0.6 */
-    g->lights[0] = (tl_light){TL_LIGHT_POINT, {1.6f, 2.8f, 2.2f}, {0}, {24, 22, 20}, 9.0f, 0, 0, 0, 0};
-    g->lights[1] = (tl_light){TL_LIGHT_SPOT, {-2.0f, 3.5f, 1.0f}, {0.5f, -0.8f, -0.2f}, {30, 26, 40}, 8.0f, 0.93f, 0.8f, 0, 0};
+    g->lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {1.6f, 2.8f, 2.2f}, .color = {24, 22, 20},
+                              .radius = 9.0f};
+    g->lights[1] = (tl_light){.type = TL_LIGHT_SPOT, .position = {-2.0f, 3.5f, 1.0f},
+                              .direction = {0.5f, -0.8f, -0.2f}, .color = {30, 26, 40}, .radius = 8.0f,
+                              .cos_inner = 0.93f, .cos_outer = 0.8f};
     float *d = g->lights[1].direction, l = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     for (int k = 0; k < 3; k++) d[k] /= l;
-    g->lights[2] = (tl_light){TL_LIGHT_DIRECTIONAL, {0}, {-0.3f, -0.8f, -0.52f}, {0.8f, 0.85f, 1.0f}, 0, 0, 0, 0, 0};
+    g->lights[2] = (tl_light){.type = TL_LIGHT_DIRECTIONAL, .direction = {-0.3f, -0.8f, -0.52f},
+                              .color = {0.8f, 0.85f, 1.0f}};
     d = g->lights[2].direction, l = sqrtf(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
     for (int k = 0; k < 3; k++) d[k] /= l;
     g->s.vertices = g->v;

@@ -74,7 +74,8 @@ void add_wall(mini_scene *m, float dist, uint32_t material)
 
 tl_light point_light(float x, float y, float z, float radius, float r, float g, float b)
 {
-    return (tl_light){TL_LIGHT_POINT, {x, y, z}, {0, -1, 0}, {r, g, b}, radius, 0, 0, 0, 0};
+    return (tl_light){.type = TL_LIGHT_POINT, .position = {x, y, z}, .direction = {0, -1, 0}, .color = {r, g, b},
+                      .radius = radius};
 }
 
 /* ---- reading targets ---------------------------------------------------------------------- */

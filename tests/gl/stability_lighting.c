@@ -55,7 +55,8 @@ TL_TEST(stability_grazing_light_n_dot_l)
         m.mat[0] = plain_material(0.5f, 1.0f, 0.75f);
         add_wall(&m, 5.0f, 0);
         m.light[0] = point_light(2.0f, 0.5f, -5.0f + offsets[o], 6.0f, 3.0f, 3.0f, 3.0f);
-        m.light[1] = (tl_light){TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {1.0f, 0.0f, offsets[o]}, {2, 2, 2}, 0, 0, 0, 0, 0};
+        m.light[1] = (tl_light){.type = TL_LIGHT_DIRECTIONAL, .direction = {1.0f, 0.0f, offsets[o]},
+                                .color = {2, 2, 2}};
         m.s.light_count = 2;
         char label[80];
         snprintf(label, sizeof label, "grazing N.L, light offset %g", (double)offsets[o]);
@@ -104,7 +105,7 @@ TL_TEST(stability_grazing_view_n_dot_v)
     m.mat[0] = plain_material(0.5f, 1.0f, 0.9f);
     add_quad(&m, (float[3]){-300, -1, 10}, (float[3]){600, 0, 0}, (float[3]){0, 0, -400}, 0); /* +Y */
     m.light[0] = point_light(0.0f, 0.0f, -60.0f, 80.0f, 400.0f, 400.0f, 400.0f);
-    m.light[1] = (tl_light){TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {0.0f, -1e-3f, -1.0f}, {3, 3, 3}, 0, 0, 0, 0, 0};
+    m.light[1] = (tl_light){.type = TL_LIGHT_DIRECTIONAL, .direction = {0.0f, -1e-3f, -1.0f}, .color = {3, 3, 3}};
     m.s.light_count = 2;
     char label[64];
     snprintf(label, sizeof label, "grazing N.V");
@@ -189,7 +190,8 @@ TL_TEST(stability_light_radius_zero)
     for (size_t t = 0; t < sizeof tiny / sizeof tiny[0]; t++) {
         /* a point light on the surface (distance 0 at its pixel) and a spot light in front */
         m.light[1] = point_light(0.0f, 0.0f, -5.0f, tiny[t], 5.0f, 5.0f, 5.0f);
-        m.light[2] = (tl_light){TL_LIGHT_SPOT, {0, 0, -4}, {0, 0, -1}, {5, 5, 5}, tiny[t], 0.9f, 0.8f, 0, 0};
+        m.light[2] = (tl_light){.type = TL_LIGHT_SPOT, .position = {0, 0, -4}, .direction = {0, 0, -1},
+                                .color = {5, 5, 5}, .radius = tiny[t], .cos_inner = 0.9f, .cos_outer = 0.8f};
         m.s.light_count = 3;
         char label[80];
         snprintf(label, sizeof label, "radius %g", (double)tiny[t]);

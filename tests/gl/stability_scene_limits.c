@@ -58,8 +58,9 @@ TL_TEST(stability_empty_scene)
             mini_scene m;
             mini_init(&m, 1.0471976f, 0.1f, 100.0f);
             m.light[0] = point_light(0.0f, 0.0f, -2.0f, 5.0f, 1.0f, 1.0f, 1.0f);
-            m.light[1] = (tl_light){TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {0, -1, 0}, {1, 1, 1}, 0, 0, 0, 0, 0};
-            m.light[2] = (tl_light){TL_LIGHT_SPOT, {0, 0, 0}, {0, 0, -1}, {1, 1, 1}, 5.0f, 0.9f, 0.8f, 0, 0};
+            m.light[1] = (tl_light){.type = TL_LIGHT_DIRECTIONAL, .direction = {0, -1, 0}, .color = {1, 1, 1}};
+            m.light[2] = (tl_light){.type = TL_LIGHT_SPOT, .direction = {0, 0, -1}, .color = {1, 1, 1},
+                                    .radius = 5.0f, .cos_inner = 0.9f, .cos_outer = 0.8f};
             m.s.light_count = 3;
             m.s.ambient[0] = m.s.ambient[1] = m.s.ambient[2] = 0.5f;
             if (variant == 0) {
@@ -108,8 +109,10 @@ TL_TEST(stability_1x1_target)
         m.mat[0] = plain_material(0.5f, 0.5f, 0.6f);
         add_wall(&m, 5.0f, 0);
         m.light[0] = point_light(0.5f, 0.3f, -3.0f, 6.0f, 3.0f, 2.0f, 1.0f);
-        m.light[1] = (tl_light){TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {-0.2f, -0.3f, -1.0f}, {0.5f, 0.5f, 0.5f}, 0, 0, 0, 0, 0};
-        m.light[2] = (tl_light){TL_LIGHT_SPOT, {0, 0, -1}, {0, 0, -1}, {4, 4, 4}, 8.0f, 0.95f, 0.9f, 0, 0};
+        m.light[1] = (tl_light){.type = TL_LIGHT_DIRECTIONAL, .direction = {-0.2f, -0.3f, -1.0f},
+                                .color = {0.5f, 0.5f, 0.5f}};
+        m.light[2] = (tl_light){.type = TL_LIGHT_SPOT, .position = {0, 0, -1}, .direction = {0, 0, -1},
+                                .color = {4, 4, 4}, .radius = 8.0f, .cos_inner = 0.95f, .cos_outer = 0.9f};
         m.s.light_count = 3;
         m.s.ambient[2] = 0.05f;
         char label[64];

@@ -221,7 +221,8 @@ TL_TEST_FULL(effects_stats_count_effect_targets_apart)
 {
     quads q;
     corner_scene(&q);
-    q.light[0] = (tl_light){TL_LIGHT_POINT, {0, 2, 1}, {0, -1, 0}, {4, 4, 4}, 10.0f, 0, 0, 0, 0};
+    q.light[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {0, 2, 1}, .direction = {0, -1, 0},
+                            .color = {4, 4, 4}, .radius = 10.0f};
     q.s.lights = q.light;
     q.s.light_count = 1;
     const uint32_t gbuffer = BIT(TL_TARGET_DEPTH) | BIT(TL_TARGET_RT0) | BIT(TL_TARGET_RT1) | BIT(TL_TARGET_FAT_POSITION) |

@@ -463,7 +463,8 @@ TL_TEST(ggx_extremes_stay_finite_every_mode)
     g->lights[0].position[0] = 0.0f; /* inside the sphere */
     g->lights[0].position[1] = 1.3f;
     g->lights[0].position[2] = 0.0f;
-    g->lights[3] = (tl_light){TL_LIGHT_POINT, {1.5f, 0.0f, 1.0f}, {0}, {50, 50, 50}, 3.0f, 0, 0, 0, 0}; /* on the plane */
+    g->lights[3] = (tl_light){.type = TL_LIGHT_POINT, .position = {1.5f, 0.0f, 1.0f}, .color = {50, 50, 50},
+                              .radius = 3.0f}; /* on the plane */
     g->s.light_count = 4;
     const tl_target_id ids[] = {TL_TARGET_HDR, TL_TARGET_LIGHT_DIFFUSE, TL_TARGET_LIGHT_SPECULAR, TL_TARGET_LIGHT_FRESNEL};
     for (int pass = 0; pass < 2; pass++) {
@@ -642,7 +643,8 @@ TL_TEST(ggx_sphere_light_extremes)
 {
     ggx_scene *g = malloc(sizeof *g);
     ggx_scene_build(g);
-    g->lights[0] = (tl_light){TL_LIGHT_POINT, {0.5f, 0.4f, 1.0f}, {0}, {30, 30, 30}, 6.0f, 0, 0, 2.0f, 0};
+    g->lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {0.5f, 0.4f, 1.0f}, .color = {30, 30, 30},
+                              .radius = 6.0f, .source_radius = 2.0f};
     g->lights[1].source_radius = 20.0f; /* beyond its 8 m range */
     for (int m = TL_MODE_THIN_LPP; m < TL_MODE_COUNT_; m++)
         for (int s = TL_LIGHT_STRATEGY_VOLUMES; s <= TL_LIGHT_STRATEGY_TILED; s++) {

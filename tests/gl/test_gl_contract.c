@@ -154,10 +154,14 @@ static void build_scene(contract_scene *c)
     c->t.s.textures = &c->tex;
     c->t.s.texture_count = 1;
     c->t.mat[1].albedo_map = TL_TEXTURE_MAP(0);
-    c->t.lights[0] = (tl_light){TL_LIGHT_POINT, {-4, 2, -2}, {0, -1, 0}, {3, 1, 1}, 9.0f, 0, 0, 0, 0};
-    c->t.lights[1] = (tl_light){TL_LIGHT_POINT, {3, 1.5f, 3}, {0, -1, 0}, {1, 3, 1}, 8.0f, 0, 0, 0, 0};
-    c->t.lights[2] = (tl_light){TL_LIGHT_SPOT, {0, 9, 0}, {0, -1, 0}, {2, 2, 4}, 12.0f, 0.95f, 0.8f, 0, 0};
-    c->t.lights[3] = (tl_light){TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {0.3f, -1, -0.2f}, {0.3f, 0.3f, 0.35f}, 0, 0, 0, 0, 0};
+    c->t.lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {-4, 2, -2}, .direction = {0, -1, 0},
+                                .color = {3, 1, 1}, .radius = 9.0f};
+    c->t.lights[1] = (tl_light){.type = TL_LIGHT_POINT, .position = {3, 1.5f, 3}, .direction = {0, -1, 0},
+                                .color = {1, 3, 1}, .radius = 8.0f};
+    c->t.lights[2] = (tl_light){.type = TL_LIGHT_SPOT, .position = {0, 9, 0}, .direction = {0, -1, 0},
+                                .color = {2, 2, 4}, .radius = 12.0f, .cos_inner = 0.95f, .cos_outer = 0.8f};
+    c->t.lights[3] = (tl_light){.type = TL_LIGHT_DIRECTIONAL, .direction = {0.3f, -1, -0.2f},
+                                .color = {0.3f, 0.3f, 0.35f}};
     c->t.s.light_count = 4;
 }
 

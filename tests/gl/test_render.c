@@ -59,7 +59,8 @@ static void compare_volumes(test_scene *t, const tl_camera *cam, tl_depth_format
 
 static void set_point(test_scene *t, float x, float y, float z, float radius)
 {
-    t->lights[0] = (tl_light){TL_LIGHT_POINT, {x, y, z}, {0, -1, 0}, {4, 3, 2}, radius, 0, 0, 0, 0};
+    t->lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {x, y, z}, .direction = {0, -1, 0},
+                              .color = {4, 3, 2}, .radius = radius};
     t->s.light_count = 1;
 }
 
@@ -104,7 +105,8 @@ TL_TEST(light_volume_spot_camera_inside)
 {
     test_scene t;
     build_room(&t);
-    t.lights[0] = (tl_light){TL_LIGHT_SPOT, {0, 4, 8.5f}, {0, -0.5f, -1}, {6, 6, 9}, 14.0f, 0.9f, 0.75f, 0, 0};
+    t.lights[0] = (tl_light){.type = TL_LIGHT_SPOT, .position = {0, 4, 8.5f}, .direction = {0, -0.5f, -1},
+                             .color = {6, 6, 9}, .radius = 14.0f, .cos_inner = 0.9f, .cos_outer = 0.75f};
     t.s.light_count = 1;
     compare_volumes(&t, NULL, TL_DEPTH_FORMAT_D24, "spot, camera inside (D24)");
 }
@@ -121,8 +123,12 @@ TL_TEST(light_volume_spot_up_to_90_degrees_matches_full_screen)
     for (int i = 0; i < 8; i++) {
         test_scene t;
         build_room(&t);
-        const tl_light large = {TL_LIGHT_SPOT, {0, 1.5f, 2}, {0, 0, -1}, {9, 8, 7}, 14.0f, outer[i % 4] + 0.25f, outer[i % 4], 0, 0},
-                       small = {TL_LIGHT_SPOT, {2, 1, 3}, {1, 0, 0}, {9, 8, 7}, 2.0f, outer[i % 4] + 0.25f, outer[i % 4], 0, 0};
+        const tl_light large = {.type = TL_LIGHT_SPOT, .position = {0, 1.5f, 2}, .direction = {0, 0, -1},
+                                .color = {9, 8, 7}, .radius = 14.0f, .cos_inner = outer[i % 4] + 0.25f,
+                                .cos_outer = outer[i % 4]},
+                       small = {.type = TL_LIGHT_SPOT, .position = {2, 1, 3}, .direction = {1, 0, 0},
+                                .color = {9, 8, 7}, .radius = 2.0f, .cos_inner = outer[i % 4] + 0.25f,
+                                .cos_outer = outer[i % 4]};
         t.lights[0] = i < 4 ? large : small;
         t.s.light_count = 1;
         char label[64];
@@ -137,10 +143,14 @@ TL_TEST(light_volume_mixed_types_draw_calls)
 {
     test_scene t;
     build_room(&t);
-    t.lights[0] = (tl_light){TL_LIGHT_POINT, {-4, 2, -2}, {0, -1, 0}, {3, 1, 1}, 4.0f, 0, 0, 0, 0};
-    t.lights[1] = (tl_light){TL_LIGHT_POINT, {4, 1, 0}, {0, -1, 0}, {1, 3, 1}, 3.0f, 0, 0, 0, 0};
-    t.lights[2] = (tl_light){TL_LIGHT_SPOT, {0, 9, 0}, {0, -1, 0}, {2, 2, 4}, 12.0f, 0.95f, 0.8f, 0, 0};
-    t.lights[3] = (tl_light){TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {-0.3f, -1, -0.2f}, {0.2f, 0.2f, 0.3f}, 0, 0, 0, 0, 0};
+    t.lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {-4, 2, -2}, .direction = {0, -1, 0},
+                             .color = {3, 1, 1}, .radius = 4.0f};
+    t.lights[1] = (tl_light){.type = TL_LIGHT_POINT, .position = {4, 1, 0}, .direction = {0, -1, 0},
+                             .color = {1, 3, 1}, .radius = 3.0f};
+    t.lights[2] = (tl_light){.type = TL_LIGHT_SPOT, .position = {0, 9, 0}, .direction = {0, -1, 0},
+                             .color = {2, 2, 4}, .radius = 12.0f, .cos_inner = 0.95f, .cos_outer = 0.8f};
+    t.lights[3] = (tl_light){.type = TL_LIGHT_DIRECTIONAL, .direction = {-0.3f, -1, -0.2f},
+                             .color = {0.2f, 0.2f, 0.3f}};
     t.s.light_count = 4;
     compare_volumes(&t, NULL, TL_DEPTH_FORMAT_D24, "mixed types (D24)");
     /* draw calls grow with light types, not counts */
@@ -168,7 +178,8 @@ TL_TEST(fxaa_reduces_edge_gradient)
     if (!g_ctx) return;
     test_scene t;
     build_room(&t);
-    t.lights[0] = (tl_light){TL_LIGHT_POINT, {2, 4, 4}, {0, -1, 0}, {30, 30, 30}, 14.0f, 0, 0, 0, 0};
+    t.lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {2, 4, 4}, .direction = {0, -1, 0},
+                             .color = {30, 30, 30}, .radius = 14.0f};
     t.s.light_count = 1;
     /* a slightly rotated view so that the box's silhouette edges are not axis-aligned */
     tl_camera cam = {{2.5f, 2.2f, 6.5f}, {0, 1.2f, 0}, {0.12f, 1, 0}, 0.9f, 0.1f, 100.0f};
@@ -383,10 +394,10 @@ TL_TEST(default_scene_image_sanity)
     const tl_camera *c = &scene->camera;
     float f[3] = {c->target[0] - c->position[0], c->target[1] - c->position[1], c->target[2] - c->position[2]};
     float fl = sqrtf(f[0] * f[0] + f[1] * f[1] + f[2] * f[2]);
-    more[scene->light_count] = (tl_light){TL_LIGHT_POINT,
-                                          {c->position[0] + 6 * f[0] / fl, c->position[1] + 6 * f[1] / fl,
+    more[scene->light_count] = (tl_light){.type = TL_LIGHT_POINT,
+                                          .position = {c->position[0] + 6 * f[0] / fl, c->position[1] + 6 * f[1] / fl,
                                            c->position[2] + 6 * f[2] / fl},
-                                          {0, -1, 0}, {40, 40, 40}, 8.0f, 0, 0, 0, 0};
+                                          .direction = {0, -1, 0}, .color = {40, 40, 40}, .radius = 8.0f};
     TL_CHECK(tl_renderer_set_lights(r, more, scene->light_count + 1) == TL_OK);
     TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
     TL_CHECK(tl_renderer_read_target(r, TL_TARGET_HDR, after, &(size_t){nf}) == TL_OK);

@@ -118,7 +118,8 @@ static void compare_tiled(test_scene *t, const tl_camera *cam, tl_depth_format d
 
 static void set_point(test_scene *t, float x, float y, float z, float radius)
 {
-    t->lights[0] = (tl_light){TL_LIGHT_POINT, {x, y, z}, {0, -1, 0}, {4, 3, 2}, radius, 0, 0, 0, 0};
+    t->lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {x, y, z}, .direction = {0, -1, 0},
+                              .color = {4, 3, 2}, .radius = radius};
     t->s.light_count = 1;
 }
 
@@ -141,13 +142,18 @@ TL_TEST(tiled_light_volume_edge_cases)
         set_point(&t, 0.0f, 3.0f, -8.0f, 5.0f); /* reaching past the far plane */
         snprintf(label, sizeof label, "far plane (%s)", dn);
         compare_tiled(&t, &far_cam, depths[dz], 16, label);
-        t.lights[0] = (tl_light){TL_LIGHT_SPOT, {0, 4, 8.5f}, {0, -0.5f, -1}, {6, 6, 9}, 14.0f, 0.9f, 0.75f, 0, 0};
+        t.lights[0] = (tl_light){.type = TL_LIGHT_SPOT, .position = {0, 4, 8.5f}, .direction = {0, -0.5f, -1},
+                                 .color = {6, 6, 9}, .radius = 14.0f, .cos_inner = 0.9f, .cos_outer = 0.75f};
         snprintf(label, sizeof label, "spot, camera inside (%s)", dn);
         compare_tiled(&t, NULL, depths[dz], 16, label);
-        t.lights[0] = (tl_light){TL_LIGHT_POINT, {-4, 2, -2}, {0, -1, 0}, {3, 1, 1}, 4.0f, 0, 0, 0, 0};
-        t.lights[1] = (tl_light){TL_LIGHT_POINT, {4, 1, 0}, {0, -1, 0}, {1, 3, 1}, 3.0f, 0, 0, 0, 0};
-        t.lights[2] = (tl_light){TL_LIGHT_SPOT, {0, 9, 0}, {0, -1, 0}, {2, 2, 4}, 12.0f, 0.95f, 0.8f, 0, 0};
-        t.lights[3] = (tl_light){TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {-0.3f, -1, -0.2f}, {0.2f, 0.2f, 0.3f}, 0, 0, 0, 0, 0};
+        t.lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {-4, 2, -2}, .direction = {0, -1, 0},
+                                 .color = {3, 1, 1}, .radius = 4.0f};
+        t.lights[1] = (tl_light){.type = TL_LIGHT_POINT, .position = {4, 1, 0}, .direction = {0, -1, 0},
+                                 .color = {1, 3, 1}, .radius = 3.0f};
+        t.lights[2] = (tl_light){.type = TL_LIGHT_SPOT, .position = {0, 9, 0}, .direction = {0, -1, 0},
+                                 .color = {2, 2, 4}, .radius = 12.0f, .cos_inner = 0.95f, .cos_outer = 0.8f};
+        t.lights[3] = (tl_light){.type = TL_LIGHT_DIRECTIONAL, .direction = {-0.3f, -1, -0.2f},
+                                 .color = {0.2f, 0.2f, 0.3f}};
         t.s.light_count = 4;
         snprintf(label, sizeof label, "mixed types (%s)", dn);
         compare_tiled(&t, NULL, depths[dz], 16, label);
@@ -167,13 +173,17 @@ TL_TEST(tiled_tile_and_image_borders)
     size_t k = 0;
     tl_rng rng = {0xB0DE4u};
     for (; k < 56; k++) /* on the back and side walls and the floor, across the whole view */
-        lights[k] = (tl_light){TL_LIGHT_POINT,
-                               {(float)(tl_rng_unit(&rng) * 20.0 - 10.0), (float)(tl_rng_unit(&rng) * 6.0),
+        lights[k] = (tl_light){.type = TL_LIGHT_POINT,
+                               .position = {(float)(tl_rng_unit(&rng) * 20.0 - 10.0), (float)(tl_rng_unit(&rng) * 6.0),
                                 (float)(tl_rng_unit(&rng) * 14.0 - 10.0)},
-                               {0, -1, 0}, {1.5f, 1.2f, 0.8f}, (float)(0.6 + tl_rng_unit(&rng) * 1.4), 0, 0, 0, 0};
-    lights[k++] = (tl_light){TL_LIGHT_POINT, {0.0f, 3.0f, 9.5f}, {0, -1, 0}, {5, 5, 5}, 1.0f, 0, 0, 0, 0};  /* behind the eye */
-    lights[k++] = (tl_light){TL_LIGHT_POINT, {0.4f, 2.8f, 7.95f}, {0, -1, 0}, {2, 2, 2}, 0.5f, 0, 0, 0, 0}; /* at the near plane */
-    lights[k++] = (tl_light){TL_LIGHT_SPOT, {-9.5f, 6.0f, 5.0f}, {0.2f, -1, -0.3f}, {3, 2, 1}, 8.0f, 0.95f, 0.85f, 0, 0};
+                               .direction = {0, -1, 0}, .color = {1.5f, 1.2f, 0.8f},
+                               .radius = (float)(0.6 + tl_rng_unit(&rng) * 1.4)};
+    lights[k++] = (tl_light){.type = TL_LIGHT_POINT, .position = {0.0f, 3.0f, 9.5f}, .direction = {0, -1, 0},
+                             .color = {5, 5, 5}, .radius = 1.0f};  /* behind the eye */
+    lights[k++] = (tl_light){.type = TL_LIGHT_POINT, .position = {0.4f, 2.8f, 7.95f}, .direction = {0, -1, 0},
+                             .color = {2, 2, 2}, .radius = 0.5f}; /* at the near plane */
+    lights[k++] = (tl_light){.type = TL_LIGHT_SPOT, .position = {-9.5f, 6.0f, 5.0f}, .direction = {0.2f, -1, -0.3f},
+                             .color = {3, 2, 1}, .radius = 8.0f, .cos_inner = 0.95f, .cos_outer = 0.85f};
     t.s.lights = lights;
     t.s.light_count = k;
     const uint32_t tiles[3] = {8, 16, 32};

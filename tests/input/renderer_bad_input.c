@@ -33,7 +33,8 @@ TL_TEST(renderer_bad_input)
     t.idx[5] = 100000; /* index out of range */
     TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_ERROR_INVALID_ARGUMENT);
     build_room(&t);
-    t.lights[0] = (tl_light){TL_LIGHT_POINT, {NAN, 0, 0}, {0, -1, 0}, {1, 1, 1}, 2, 0, 0, 0, 0};
+    t.lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {NAN, 0, 0}, .direction = {0, -1, 0},
+                             .color = {1, 1, 1}, .radius = 2};
     t.s.light_count = 1;
     TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_ERROR_INVALID_ARGUMENT);
     TL_CHECK(strlen(tl_renderer_last_error(r)) > 0);

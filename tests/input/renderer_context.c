@@ -19,7 +19,7 @@
 static void room_with_light(test_scene *t)
 {
     build_room(t);
-    t->lights[0] = (tl_light){TL_LIGHT_POINT, {3, 6, -2}, {0, 0, 0}, {60, 55, 50}, 30, 0, 0, 0, 0};
+    t->lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {3, 6, -2}, .color = {60, 55, 50}, .radius = 30};
     t->s.light_count = 1;
     t->s.ambient[0] = t->s.ambient[1] = t->s.ambient[2] = 0.05f;
 }
@@ -57,7 +57,7 @@ static void wrong_thread_calls(job *j)
     size_t size = (size_t)W * H * 4, fsize = (size_t)W * H * 16;
     uint8_t *px = calloc(size, 1), *px2 = calloc(size, 1);
     float *f = calloc(fsize, 1);
-    tl_light light = {TL_LIGHT_POINT, {0, 5, 0}, {0, 0, 0}, {1, 1, 1}, 5, 0, 0, 0, 0};
+    tl_light light = {.type = TL_LIGHT_POINT, .position = {0, 5, 0}, .color = {1, 1, 1}, .radius = 5};
     tl_app_pass_desc pass = {.name = "late", .after = "lights", .writes = TL_TARGET_BIT(TL_TARGET_HDR),
                              .execute = noop_pass};
     if (!px || !px2 || !f) {

@@ -91,8 +91,10 @@ TL_TEST(renderer_allocator_failing_every_kth_call_through_its_life)
     if (!ensure_context()) { tl_test_failures++; return; }
     static test_scene t;
     build_room(&t);
-    t.lights[0] = (tl_light){TL_LIGHT_POINT, {0, 5, 0}, {0, -1, 0}, {4, 4, 4}, 12, 0, 0, 0, 0};
-    t.lights[1] = (tl_light){TL_LIGHT_SPOT, {2, 6, 2}, {0, -1, 0}, {3, 3, 3}, 10, 0.9f, 0.8f, 0, 0};
+    t.lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {0, 5, 0}, .direction = {0, -1, 0},
+                             .color = {4, 4, 4}, .radius = 12};
+    t.lights[1] = (tl_light){.type = TL_LIGHT_SPOT, .position = {2, 6, 2}, .direction = {0, -1, 0},
+                             .color = {3, 3, 3}, .radius = 10, .cos_inner = 0.9f, .cos_outer = 0.8f};
     t.s.light_count = 2;
     const tl_renderer_desc descs[3] = {
         {.width = 48, .height = 32},

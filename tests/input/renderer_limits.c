@@ -41,7 +41,8 @@ static size_t plan_bytes(const tl_renderer *r)
 static void lit_room(test_scene *t)
 {
     build_room(t);
-    t->lights[0] = (tl_light){TL_LIGHT_POINT, {0, 5, 0}, {0, -1, 0}, {4, 4, 4}, 12, 0, 0, 0, 0};
+    t->lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {0, 5, 0}, .direction = {0, -1, 0},
+                              .color = {4, 4, 4}, .radius = 12};
     t->s.lights = t->lights;
     t->s.light_count = 1;
 }

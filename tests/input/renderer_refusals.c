@@ -36,7 +36,7 @@ static tl_renderer *renderer(said *log)
 static void lit_room(test_scene *t)
 {
     build_room(t);
-    t->lights[0] = (tl_light){TL_LIGHT_POINT, {3, 6, -2}, {0, 0, 0}, {60, 55, 50}, 30, 0, 0, 0, 0};
+    t->lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {3, 6, -2}, .color = {60, 55, 50}, .radius = 30};
     t->s.light_count = 1;
 }
 

@@ -184,8 +184,9 @@ static tl_light *air_lights(size_t n)
 {
     tl_light *l = (tl_light *)calloc(n ? n : 1, sizeof *l);
     for (size_t i = 0; l && i < n; i++)
-        l[i] = (tl_light){TL_LIGHT_POINT, {-0.5f + (float)(i % 1024) / 1024.0f, 2.5f + (float)(i / 1024 % 1024) / 2048.0f, 5},
-                          {0, -1, 0}, {1, 1, 1}, 1e-3f, 0, 0, 0, 0};
+        l[i] = (tl_light){.type = TL_LIGHT_POINT,
+                          .position = {-0.5f + (float)(i % 1024) / 1024.0f, 2.5f + (float)(i / 1024 % 1024) / 2048.0f, 5},
+                          .direction = {0, -1, 0}, .color = {1, 1, 1}, .radius = 1e-3f};
     return l;
 }
 
@@ -243,7 +244,8 @@ TL_TEST(renderer_storage_block_lowered_limits_lights_and_tile_headers)
     if (!ensure_context()) { tl_test_failures++; return; }
     static test_scene t;
     build_room(&t);
-    t.lights[0] = (tl_light){TL_LIGHT_POINT, {0, 5, 0}, {0, -1, 0}, {4, 4, 4}, 12, 0, 0, 0, 0};
+    t.lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {0, 5, 0}, .direction = {0, -1, 0},
+                             .color = {4, 4, 4}, .radius = 12};
     t.s.light_count = 1;
     counted c = {0};
     /* 100 lights of 64 bytes */
@@ -299,7 +301,8 @@ TL_TEST(renderer_tile_entries_clamped_to_the_storage_block_lose_no_light)
     static test_scene t;
     build_room(&t);
     for (int i = 0; i < 4; i++)
-        t.lights[i] = (tl_light){TL_LIGHT_POINT, {-6.0f + 4.0f * (float)i, 4, -2}, {0, -1, 0}, {3, 2, 1}, 9, 0, 0, 0, 0};
+        t.lights[i] = (tl_light){.type = TL_LIGHT_POINT, .position = {-6.0f + 4.0f * (float)i, 4, -2},
+                                 .direction = {0, -1, 0}, .color = {3, 2, 1}, .radius = 9};
     t.s.light_count = 4;
     tl_renderer_desc d = {.width = 96, .height = 64, .options.light_strategy = TL_LIGHT_STRATEGY_TILED};
     counted c = {0};
@@ -341,7 +344,9 @@ TL_TEST(renderer_forward_light_lists_over_the_storage_block_refused)
     t.s.objects = objs;
     t.s.object_count = 17;
     static tl_light lights[33];
-    for (int i = 0; i < 33; i++) lights[i] = (tl_light){TL_LIGHT_POINT, {0, 5, 0}, {0, -1, 0}, {0.1f, 0.1f, 0.1f}, 40, 0, 0, 0, 0};
+    for (int i = 0; i < 33; i++) lights[i] = (tl_light){.type = TL_LIGHT_POINT, .position = {0, 5, 0},
+                                                        .direction = {0, -1, 0}, .color = {0.1f, 0.1f, 0.1f},
+                                                        .radius = 40};
     t.s.lights = lights;
     t.s.light_count = 32;
     counted c = {0};
@@ -383,7 +388,9 @@ TL_TEST(renderer_light_fields_and_negative_sizes_refused)
     TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_OK);
     TL_CHECK(tl_renderer_resize(r, (uint32_t)-8, 32) == TL_ERROR_LIMIT && strstr(c.line, "4294967288x32") != NULL);
     /* each bad field of a light, alone: refused naming the light; the renderer keeps its lights */
-    const tl_light good = {TL_LIGHT_SPOT, {0, 5, 0}, {0, -1, 0}, {4, 4, 4}, 12, 0.9f, 0.8f, 0.1f, 0};
+    const tl_light good = {.type = TL_LIGHT_SPOT, .position = {0, 5, 0}, .direction = {0, -1, 0},
+                           .color = {4, 4, 4}, .radius = 12, .cos_inner = 0.9f, .cos_outer = 0.8f,
+                           .source_radius = 0.1f};
     tl_light bad[8];
     for (int i = 0; i < 8; i++) bad[i] = good;
     bad[0].radius = -1.0f;

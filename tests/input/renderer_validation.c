@@ -41,8 +41,9 @@ static tl_renderer *renderer(seen *log, tl_depth_format depth)
 static void lit_room(test_scene *t)
 {
     build_room(t);
-    t->lights[0] = (tl_light){TL_LIGHT_POINT, {4, 6, -3}, {0, 0, 0}, {60, 50, 40}, 30, 0, 0, 0, 0};
-    t->lights[1] = (tl_light){TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {-0.3f, -1, -0.2f}, {0.6f, 0.6f, 0.7f}, 0, 0, 0, 0, 0};
+    t->lights[0] = (tl_light){.type = TL_LIGHT_POINT, .position = {4, 6, -3}, .color = {60, 50, 40}, .radius = 30};
+    t->lights[1] = (tl_light){.type = TL_LIGHT_DIRECTIONAL, .direction = {-0.3f, -1, -0.2f},
+                              .color = {0.6f, 0.6f, 0.7f}};
     t->s.light_count = 2;
     t->s.ambient[0] = t->s.ambient[1] = t->s.ambient[2] = 0.05f;
 }
@@ -364,10 +365,12 @@ TL_TEST(renderer_lights_refused_naming_the_field)
     lit_room(&t);
     TL_CHECK(tl_renderer_set_scene(r, &t.s) == TL_OK);
     uint8_t *before = frame(r, NULL);
-    const tl_light point = {TL_LIGHT_POINT, {0, 5, 0}, {0, 0, 0}, {5, 5, 5}, 10, 0, 0, 0, 0};
-    const tl_light spot = {TL_LIGHT_SPOT, {0, 5, 0}, {0, -1, 0}, {5, 5, 5}, 10, 0.9f, 0.8f, 0, 0};
-    const tl_light dir = {TL_LIGHT_DIRECTIONAL, {0, 0, 0}, {0, -1, 0}, {1, 1, 1}, 0, 0, 0, 0, 0};
-    const tl_light degrees = {TL_LIGHT_SPOT, {0, 5, 0}, {0, -1, 0}, {5, 5, 5}, 10, 30, 20, 0, 0}; /* angles, not cosines */
+    const tl_light point = {.type = TL_LIGHT_POINT, .position = {0, 5, 0}, .color = {5, 5, 5}, .radius = 10};
+    const tl_light spot = {.type = TL_LIGHT_SPOT, .position = {0, 5, 0}, .direction = {0, -1, 0},
+                           .color = {5, 5, 5}, .radius = 10, .cos_inner = 0.9f, .cos_outer = 0.8f};
+    const tl_light dir = {.type = TL_LIGHT_DIRECTIONAL, .direction = {0, -1, 0}, .color = {1, 1, 1}};
+    const tl_light degrees = {.type = TL_LIGHT_SPOT, .position = {0, 5, 0}, .direction = {0, -1, 0},
+                              .color = {5, 5, 5}, .radius = 10, .cos_inner = 30, .cos_outer = 20}; /* angles, not cosines */
     struct { tl_light l; const char *message; } cases[20];
     size_t n = 0;
 #define CASE(base, field, value, text)                                                                  \
