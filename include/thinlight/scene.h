@@ -197,7 +197,15 @@ typedef struct tl_light {
     /** Non-zero: the light casts shadows through the shadow atlas (docs/shadows.md); 0 (the
      *  default): it does not, and a scene with no casting light plans and renders as before. */
     int shadow;
+    /** The light's specular (highlight) against its diffuse light, in every mode and strategy: 0
+     *  (the default) means 1; a value above 0 scales the highlight (0.5 halves it, 2 doubles it);
+     *  TL_LIGHT_SPECULAR_NONE lights without a highlight. Finite; another negative value is
+     *  refused, naming the field. */
+    float specular;
 } tl_light;
+
+/** tl_light.specular: a light with no specular term (diffuse only). */
+#define TL_LIGHT_SPECULAR_NONE (-1.0f)
 
 /** A perspective camera looking from position at target. The renderer refuses, naming the field,
  *  a camera it cannot draw (tl_renderer_render, and set_scene for the scene's); the table of

@@ -415,6 +415,10 @@ tl_result tl__light_check(const tl_light *l, const char *what, char *message, si
             return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size, "%s.direction = (0, 0, 0): a %s light needs a direction",
                            what, type);
     }
+    if (!isfinite(l->specular) || (l->specular < 0.0f && l->specular != TL_LIGHT_SPECULAR_NONE))
+        return tl__say(TL_ERROR_INVALID_ARGUMENT, message, size,
+                       "%s.specular = %g: not a finite scale >= 0 (0: 1) or TL_LIGHT_SPECULAR_NONE", what,
+                       (double)l->specular);
     if (l->type == TL_LIGHT_SPOT) return tl__spot_check(l, what, message, size);
     return TL_OK;
 }

@@ -98,6 +98,7 @@ static void lights_to_view(const tl_scene *s, const float view[16], tl_ref_light
         o->source_radius = 0.0; /* Blinn-Phong: punctual (GGX: set by the caller) */
         o->cos_inner = l->type == TL_LIGHT_SPOT ? l->cos_inner : 1.0;
         o->cos_outer = l->cos_outer;
+        o->specular = l->specular;
     }
 }
 

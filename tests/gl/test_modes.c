@@ -3,6 +3,8 @@
  * into a caller-owned framebuffer. */
 #include "tl_test.h"
 
+#include <math.h>
+
 #include "thinlight/context.h"
 #include "thinlight/io.h"
 #include "thinlight/metrics.h"
@@ -317,6 +319,21 @@ TL_TEST(modes_match_fat_default_scene)
     compare_modes_to_fat(&(tl_default_scene_desc){.point_lights = 64, .detail = 2}, "64 lights");
 }
 
+/* Per-light specular scales against the double-precision reference: a third of the crypt's lights
+ * diffuse only, a third at twice and a third at half their highlight. Seen to fail with the
+ * reference ignoring the scales (45,624 thin-lpp values beyond its range). */
+TL_TEST(modes_match_fat_light_specular_scales)
+{
+    if (!ensure_context()) { tl_test_failures++; return; }
+    tl_scene *s = NULL;
+    TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 64, .detail = 2}, &s) == TL_OK);
+    if (!s) return;
+    static const float k[3] = {TL_LIGHT_SPECULAR_NONE, 2.0f, 0.5f};
+    for (size_t i = 0; i < s->light_count; i++) s->lights[i].specular = k[i % 3];
+    compare_scene_to_fat(s, 320, 180, 320 * 180 * 3 * 9 / 10, 45.0, "specular scales");
+    tl_scene_destroy(s);
+}
+
 TL_TEST(modes_match_fat_many_lights)
 {
     compare_modes_to_fat(&(tl_default_scene_desc){.point_lights = 512, .detail = 1, .seed = 7}, "512 lights");
@@ -358,6 +375,89 @@ TL_TEST(modes_transparent_materials)
     free(opaque.hdr);
     free(fat.ldr);
     free(fat.hdr);
+    tl_scene_destroy(s);
+}
+
+/* tl_light.specular in every mode and light strategy: 0 and 1 render the same HDR bytes; with D the
+ * frame of diffuse-only lights (TL_LIGHT_SPECULAR_NONE) and S = HDR(1) - D their highlights, a scale
+ * k gives D + k S within the FP16 rounding of the sums (2^-8 of the values), and S is not nothing.
+ * Half the materials are blended, so the transparent pass's lights follow too. Seen to fail with
+ * the scale clamped to 1 in the packing (82.8 times the bound). */
+static float *spec_hdr(tl_renderer *r, tl_light *lights, size_t count, float k, size_t n)
+{
+    for (size_t i = 0; i < count; i++) lights[i].specular = k;
+    if (tl_renderer_set_lights(r, lights, count) != TL_OK || tl_renderer_render(r, NULL, NULL) != TL_OK ||
+        tl_renderer_wait(r, NULL) != TL_OK) {
+        fprintf(stderr, "  specular %g: %s\n", (double)k, tl_renderer_last_error(r));
+        return NULL;
+    }
+    return tl_test_read_target(r, TL_TARGET_HDR, n);
+}
+
+/* The largest error of the frame at scale k against D + k S, in units of its bound; counts in
+ * *highlit the pixels whose red highlight is above 1 % of their diffuse light. */
+static double spec_worst(const float *hk, const float *none, const float *one, double k, size_t px, size_t *highlit)
+{
+    double worst = 0.0;
+    *highlit = 0;
+    for (size_t i = 0; i < px; i++)
+        for (int c = 0; c < 3; c++) {
+            double dv = none[4 * i + c], sv = (double)one[4 * i + c] - dv, want = dv + k * sv;
+            double tol = 0x1.0p-8 * (fabs(dv) + k * fabs(sv) + fabs((double)one[4 * i + c])) + 1e-6;
+            worst = fmax(worst, fabs((double)hk[4 * i + c] - want) / tol);
+            if (c == 0 && sv > 0.01 * fmax(dv, 1e-3)) ++*highlit;
+        }
+    return worst;
+}
+
+TL_TEST(light_specular_scales_the_highlight_in_every_mode_and_strategy)
+{
+    if (!ensure_context()) { tl_test_failures++; return; }
+    tl_scene *s = NULL;
+    TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 32, .detail = 1, .seed = 3}, &s) == TL_OK);
+    if (!s) return;
+    for (size_t m = 0; m < s->material_count; m += 2) {
+        s->materials[m].flags |= TL_MATERIAL_ALPHA_BLEND;
+        s->materials[m].alpha = 0.5f;
+    }
+    const uint32_t w = 160, h = 90;
+    const size_t px = (size_t)w * h;
+    static const struct { tl_light_strategy strategy; tl_tiled_shading shading; const char *name; } ways[3] = {
+        {TL_LIGHT_STRATEGY_VOLUMES, TL_TILED_SHADING_DEFAULT, "volumes"},
+        {TL_LIGHT_STRATEGY_TILED, TL_TILED_SHADING_FRAGMENT, "tiled"},
+        {TL_LIGHT_STRATEGY_TILED, TL_TILED_SHADING_COMPUTE, "tiled compute"},
+    };
+    for (int mode = TL_MODE_THIN_LPP; mode < TL_MODE_COUNT_; mode++)
+        for (int way = 0; way < 3; way++) {
+            if (mode == TL_MODE_FORWARD && way == 2) continue; /* Forward+ has no shading pass to choose */
+            tl_renderer_desc d = {.width = w, .height = h};
+            d.options.mode = (tl_render_mode)mode;
+            d.options.light_strategy = ways[way].strategy;
+            d.options.tiled_shading = ways[way].shading;
+            d.options.ambient[0] = d.options.ambient[1] = d.options.ambient[2] = -1.0f; /* the lights alone */
+            tl_renderer *r = tl_test_renderer(&(tl_test_renderer_desc){.renderer = d, .scene = s, .readable = true});
+            TL_CHECK(r != NULL);
+            if (!r) continue;
+            float *one = spec_hdr(r, s->lights, s->light_count, 1.0f, px);
+            float *zero = spec_hdr(r, s->lights, s->light_count, 0.0f, px);
+            float *none = spec_hdr(r, s->lights, s->light_count, TL_LIGHT_SPECULAR_NONE, px);
+            float *half = spec_hdr(r, s->lights, s->light_count, 0.5f, px);
+            float *twice = spec_hdr(r, s->lights, s->light_count, 2.0f, px);
+            TL_CHECK(one && zero && none && half && twice);
+            if (one && zero && none && half && twice) {
+                TL_CHECK(memcmp(one, zero, px * 4 * sizeof(float)) == 0);
+                size_t highlit = 0;
+                double worst = fmax(spec_worst(half, none, one, 0.5, px, &highlit),
+                                    spec_worst(twice, none, one, 2.0, px, &highlit));
+                printf("specular %-13s %-13s: 0 = 1 byte for byte; %zu of %zu pixels with a highlight; 0.5 and 2 "
+                       "within %.3f of the FP16 bound of D + k S\n",
+                       tl_render_mode_name((tl_render_mode)mode), ways[way].name, highlit, px, worst);
+                TL_CHECK(highlit * 20 > px); /* the crypt's highlights cover more than 5 % of the frame */
+                TL_CHECK_LE(worst, 1.0);
+            }
+            free(one), free(zero), free(none), free(half), free(twice);
+            tl_renderer_destroy(r);
+        }
     tl_scene_destroy(s);
 }
 

@@ -371,7 +371,7 @@ TL_TEST(renderer_lights_refused_naming_the_field)
     const tl_light dir = {.type = TL_LIGHT_DIRECTIONAL, .direction = {0, -1, 0}, .color = {1, 1, 1}};
     const tl_light degrees = {.type = TL_LIGHT_SPOT, .position = {0, 5, 0}, .direction = {0, -1, 0},
                               .color = {5, 5, 5}, .radius = 10, .cos_inner = 30, .cos_outer = 20}; /* angles, not cosines */
-    struct { tl_light l; const char *message; } cases[20];
+    struct { tl_light l; const char *message; } cases[24];
     size_t n = 0;
 #define CASE(base, field, value, text)                                                                  \
     do {                                                                                                \
@@ -401,6 +401,10 @@ TL_TEST(renderer_lights_refused_naming_the_field)
     CASE(point, color[1], NAN, "lights[1].color = (5, nan, 5): not finite");
     CASE(point, position[2], INFINITY, "lights[1].position = (0, 5, inf): not finite");
     CASE(point, type, (tl_light_type)9, "lights[1].type = 9: not a tl_light_type");
+    /* the specular scale: >= 0 or TL_LIGHT_SPECULAR_NONE (-1) */
+    CASE(point, specular, -0.5f, "lights[1].specular = -0.5: not a finite scale >= 0 (0: 1) or TL_LIGHT_SPECULAR_NONE");
+    CASE(spot, specular, NAN, "lights[1].specular = nan: not a finite scale >= 0 (0: 1) or TL_LIGHT_SPECULAR_NONE");
+    CASE(dir, specular, INFINITY, "lights[1].specular = inf: not a finite scale >= 0 (0: 1) or TL_LIGHT_SPECULAR_NONE");
 #undef CASE
     for (size_t i = 0; i < n; i++) {
         tl_light two[2] = {t.lights[0], cases[i].l};

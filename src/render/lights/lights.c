@@ -201,5 +201,5 @@ void tl__light_record_fill(const tl_light *l, const float *view, float shadow_sl
     out->cos_inner[0] = type == TL_LIGHT_SPOT ? l->cos_inner : 1.0f;
     out->cos_inner[1] = type == TL_LIGHT_DIRECTIONAL ? 0.0f : l->source_radius;
     out->cos_inner[2] = shadow_slot;
-    out->cos_inner[3] = 1.0f; /* the specular scale */
+    out->cos_inner[3] = l->specular == 0.0f ? 1.0f : l->specular < 0.0f ? 0.0f : l->specular; /* tl_light.specular */
 }

@@ -229,6 +229,9 @@ void tl_ref_shade(tl_ref_model model, const tl_ref_surface *s, const double p[3]
         double t[3] = {0.0, 0.0, 0.0};
         if (model == TL_REF_MODEL_GGX) tl_ref_ggx_terms(&lights[k], p, nu, v, alpha, t);
         else tl_ref_blinn_phong_terms(&lights[k], p, nu, v, power, t);
+        double k_spec = lights[k].specular == 0.0 ? 1.0 : fmax(lights[k].specular, 0.0); /* after the clamp */
+        t[1] *= k_spec;
+        t[2] *= k_spec;
         /* one light's output never exceeds FP16's maximum (light.frag.glsl) */
         for (int i = 0; i < 3; i++) {
             diffuse[i] += fmin(lights[k].color[i] * t[0], fp16_max);

@@ -35,6 +35,7 @@ typedef struct tl_ref_light {
     double range;         /* the windowed falloff reaches 0 here (point, spot) */
     double source_radius; /* sphere light radius (point, spot; GGX model only); 0 = punctual */
     double cos_inner, cos_outer;
+    double specular;      /* tl_light.specular: 0 = 1, a value above 0 scales the highlight, < 0 none */
 } tl_ref_light;
 
 typedef enum tl_ref_model {
