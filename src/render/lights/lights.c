@@ -8,8 +8,6 @@
 
 #include "lights.h"
 
-_Static_assert(sizeof(tl__light_record) == TL__LIGHT_BYTES, "the lights storage block's record");
-
 enum { TL__LIGHTS_VISIBLE = TL__LIGHTS_VIEW | TL__LIGHTS_INDEX_BUFFER | TL__LIGHTS_OBJECT_LISTS | TL__LIGHTS_TILES };
 
 tl_result tl__lights_count_check(tl__device *dev, size_t count)
@@ -176,30 +174,4 @@ void tl__lights_read_counters(tl__device *dev, tl__lights *l, tl_target_set targ
 {
     if (targets & TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS)) tl__tiles_collect(dev, &l->tiles, st);
     if (targets & TL_TARGET_BIT(TL_TARGET_LIGHT_FIXUP)) tl__fixup_collect(dev, &l->fixup, pixels, st);
-}
-
-/* One packing of a light for every pass: type resolved, direction unit (a zero one points down),
- * the cone's cosines only for spots, no sphere for directional lights. */
-void tl__light_record_fill(const tl_light *l, const float *view, float shadow_slot, tl__light_record *out)
-{
-    static const float identity[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-    const float *m = view ? view : identity;
-    int type = l->type == TL_LIGHT_DEFAULT ? TL_LIGHT_POINT : (int)l->type;
-    for (int k = 0; k < 3; k++)
-        out->position_radius[k] = m[k] * l->position[0] + m[4 + k] * l->position[1] + m[8 + k] * l->position[2] + m[12 + k];
-    out->position_radius[3] = l->radius;
-    float dir[3] = {l->direction[0], l->direction[1], l->direction[2]};
-    tl__vec3_normalize(dir);
-    if (dir[0] == 0.0f && dir[1] == 0.0f && dir[2] == 0.0f) dir[1] = -1.0f;
-    float d[3];
-    for (int k = 0; k < 3; k++) d[k] = m[k] * dir[0] + m[4 + k] * dir[1] + m[8 + k] * dir[2];
-    if (view) tl__vec3_normalize(d);
-    memcpy(out->color_type, l->color, sizeof(float) * 3);
-    out->color_type[3] = (float)type;
-    memcpy(out->direction_cos_outer, d, sizeof d);
-    out->direction_cos_outer[3] = type == TL_LIGHT_SPOT ? l->cos_outer : -1.0f;
-    out->cos_inner[0] = type == TL_LIGHT_SPOT ? l->cos_inner : 1.0f;
-    out->cos_inner[1] = type == TL_LIGHT_DIRECTIONAL ? 0.0f : l->source_radius;
-    out->cos_inner[2] = shadow_slot;
-    out->cos_inner[3] = l->specular == 0.0f ? 1.0f : l->specular < 0.0f ? 0.0f : l->specular; /* tl_light.specular */
 }
