@@ -79,3 +79,11 @@ void tl_test_option_enable_group(const tl_option_info *field, tl_renderer_option
     int on = 1;
     if (g && g != field && g->type == TL_OPTION_BOOL) memcpy((char *)o + g->offset, &on, sizeof on);
 }
+
+void tl_error_capture_log(void *user, tl_log_level level, const char *message)
+{
+    tl_error_capture *s = (tl_error_capture *)user;
+    if (level != TL_LOG_ERROR) return;
+    s->errors++;
+    snprintf(s->last, sizeof s->last, "%s", message);
+}

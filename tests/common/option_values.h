@@ -21,4 +21,12 @@ void tl_test_option_good_text(const tl_option_info *o, char *out, size_t size);
  * the field is looked at. */
 void tl_test_option_enable_group(const tl_option_info *field, tl_renderer_options *o);
 
+/* The renderer's error lines as a logger sees them (tl_logger {tl_error_capture_log, &capture}):
+ * how many, and the last one, for a test that checks a refusal's words. */
+typedef struct tl_error_capture {
+    int errors;
+    char last[512];
+} tl_error_capture;
+void tl_error_capture_log(void *user, tl_log_level level, const char *message);
+
 #endif

@@ -10,19 +10,6 @@
 #include "option_values.h"
 #include "tl_test.h"
 
-typedef struct said {
-    int errors;
-    char last[512];
-} said;
-
-static void said_log(void *user, tl_log_level level, const char *message)
-{
-    said *s = (said *)user;
-    if (level != TL_LOG_ERROR) return;
-    s->errors++;
-    snprintf(s->last, sizeof s->last, "%s", message);
-}
-
 /* Every byte of tl_renderer_options belongs to exactly one row (its fields are all 4 bytes wide:
  * no padding), names are unique and tl_option_find finds each row. A field added to the struct
  * without a row leaves bytes uncovered. */
@@ -58,8 +45,8 @@ TL_TEST(option_parse_format_round_trip_and_refusals_every_field)
         tl_renderer_options a = {0}, b = {0};
         char text[256], back[512];
         tl_test_option_good_text(o, text, sizeof text);
-        said log = {0};
-        tl_logger logger = {said_log, &log};
+        tl_error_capture log = {0};
+        tl_logger logger = {tl_error_capture_log, &log};
         int ok = tl_option_parse(o, text, &a, &logger) == TL_OK;
         tl_option_format(o, &a, back, sizeof back);
         ok = ok && tl_option_parse(o, back, &b, &logger) == TL_OK && memcmp(&a, &b, sizeof a) == 0 &&
@@ -73,8 +60,8 @@ TL_TEST(option_parse_format_round_trip_and_refusals_every_field)
             snprintf(text, sizeof text, "%.9g", bad[k]);
             snprintf(want, sizeof want, "options.%s = ", o->name);
             tl_renderer_options c = a;
-            said l = {0};
-            tl_logger lg = {said_log, &l};
+            tl_error_capture l = {0};
+            tl_logger lg = {tl_error_capture_log, &l};
             int r = tl_option_parse(o, text, &c, &lg) == TL_ERROR_INVALID_ARGUMENT && l.errors == 1 &&
                     strncmp(l.last, want, strlen(want)) == 0 && memcmp(&c, &a, sizeof a) == 0 &&
                     !tl_option_value_valid(o, bad[k]);

@@ -15,22 +15,9 @@
 #define W 64
 #define H 64
 
-typedef struct said {
-    int errors;
-    char last[512];
-} said;
-
-static void said_log(void *user, tl_log_level level, const char *message)
+static tl_renderer *renderer(tl_error_capture *log)
 {
-    said *s = (said *)user;
-    if (level != TL_LOG_ERROR) return;
-    s->errors++;
-    snprintf(s->last, sizeof s->last, "%s", message);
-}
-
-static tl_renderer *renderer(said *log)
-{
-    return tl_test_renderer(&(tl_test_renderer_desc){.renderer = {.width = W, .height = H, .logger = {said_log, log}}});
+    return tl_test_renderer(&(tl_test_renderer_desc){.renderer = {.width = W, .height = H, .logger = {tl_error_capture_log, log}}});
 }
 
 static void lit_room(test_scene *t)
@@ -48,7 +35,7 @@ static void lit_room(test_scene *t)
 TL_TEST(renderer_read_output_before_any_frame_refused)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
-    said log = {0};
+    tl_error_capture log = {0};
     tl_renderer *r = renderer(&log);
     if (!r) return;
     static test_scene t;
@@ -114,7 +101,7 @@ static void put(const tl_option_info *i, tl_renderer_options *o, size_t k, doubl
 }
 
 /* One refusal by set_options and by create: TL_ERROR_INVALID_ARGUMENT, exactly one line, `want`. */
-static int refused_by_both(tl_renderer *r, said *log, const tl_renderer_options *o, const char *want)
+static int refused_by_both(tl_renderer *r, tl_error_capture *log, const tl_renderer_options *o, const char *want)
 {
     char line[400];
     int before = log->errors;
@@ -123,9 +110,9 @@ static int refused_by_both(tl_renderer *r, said *log, const tl_renderer_options 
     int ok = res == TL_ERROR_INVALID_ARGUMENT && log->errors == before + 1 && strcmp(log->last, line) == 0 &&
              strcmp(tl_renderer_last_error(r), line) == 0;
     if (!ok) fprintf(stderr, "  %s \"%s\"\n      want \"%s\"\n", tl_result_string(res), log->last, line);
-    said at_create = {0};
+    tl_error_capture at_create = {0};
     tl_renderer_desc d = {.width = W, .height = H, .options = *o, .get_proc_address = tl_context_proc_loader,
-                          .get_proc_address_user = g_ctx, .logger = {said_log, &at_create}};
+                          .get_proc_address_user = g_ctx, .logger = {tl_error_capture_log, &at_create}};
     tl_renderer *bad = NULL;
     snprintf(line, sizeof line, "renderer: %s", want);
     res = tl_renderer_create(&d, &bad);
@@ -145,7 +132,7 @@ static int refused_by_both(tl_renderer *r, said *log, const tl_renderer_options 
 TL_TEST(renderer_options_out_of_range_name_field_value_and_range)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
-    said log = {0};
+    tl_error_capture log = {0};
     tl_renderer *r = renderer(&log);
     if (!r) return;
     size_t fields = 0, values = 0, named = 0, ignored_off = 0, below_effect = 0;
@@ -218,7 +205,7 @@ TL_TEST(renderer_msaa_past_the_context_names_options_msaa)
         printf("  this context has 8 samples (GL_MAX_SAMPLES %d): nothing to refuse\n", max_samples);
         return;
     }
-    said log = {0};
+    tl_error_capture log = {0};
     tl_renderer *r = renderer(&log);
     if (!r) return;
     static test_scene t;
@@ -233,9 +220,9 @@ TL_TEST(renderer_msaa_past_the_context_names_options_msaa)
     tl_renderer_get_options(r, &kept);
     TL_CHECK_EQ_U(kept.msaa, 0);
     TL_CHECK(tl_renderer_render(r, NULL, NULL) == TL_OK);
-    said at_create = {0};
+    tl_error_capture at_create = {0};
     tl_renderer_desc d = {.width = W, .height = H, .options.msaa = 8, .get_proc_address = tl_context_proc_loader,
-                          .get_proc_address_user = g_ctx, .logger = {said_log, &at_create}};
+                          .get_proc_address_user = g_ctx, .logger = {tl_error_capture_log, &at_create}};
     tl_renderer *bad = NULL;
     res = tl_renderer_create(&d, &bad);
     printf("  create: %s \"%s\"\n", tl_result_string(res), at_create.last);
