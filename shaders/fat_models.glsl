@@ -13,6 +13,7 @@
 #ifndef TL_FAT_MODELS_GLSL
 #define TL_FAT_MODELS_GLSL
 
+#include "light_eval.glsl"
 #include "model_light.glsl"
 
 struct tl_fat_model {

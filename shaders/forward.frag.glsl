@@ -15,42 +15,15 @@
 #endif
 
 #ifndef TL_DEPTH_ONLY
-#include "tiles.glsl" // the lights block (and, for Forward+, the tile lists)
-#ifdef TL_SHADOWS
-#include "shadow.glsl"
-#endif
-layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
 #if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD)
-#include "material_models.glsl" // per-material models: each light's exact terms
+#include "material_models.glsl" // per-material models: each light's exact terms (before the loop: its visitor)
 #endif
+#include "light_loop.glsl" // the lights block, the object lists and (Forward+) the tile lists
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
 #ifdef TL_SSAO_AMBIENT
 layout(binding = TL_UNIT_AO) uniform sampler2D u_ao;
 #endif
-
-void tl_forward_add(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape, inout vec3 diffuse, inout vec3 specular,
-                    inout vec3 fresnel)
-{
-    vec3 t = tl_light_data_weights(l, int(l.color_type.w), p, n, v, shape);
-    float vis = 1.0;
-#ifdef TL_SHADOWS
-#if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD)
-    bool lit = true; // a model's own terms (wrap, sheen) may reach past the standard ones
-#else
-    bool lit = t != vec3(0.0);
-#endif
-    if (l.cos_inner.z > 0.0 && lit)
-        vis = tl_light_shadow(l.cos_inner.z, int(l.color_type.w), p, n, l.position_radius.xyz, l.direction_cos_outer.xyz);
-    t *= vis;
-#endif
-    diffuse += l.color_type.rgb * t.x;
-    specular += l.color_type.rgb * t.y;
-    fresnel += l.color_type.rgb * t.z;
-#if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD)
-    tl_model_light_add(l, p, n, v, vis);
-#endif
-}
 #endif
 
 void main()
@@ -66,18 +39,10 @@ void main()
     vec3 p = v_view_position;
     vec3 v = normalize(-p);
     float shape = tl_lobe_shape(s.gloss);
-    vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
+    tl_light_sums sums = tl_light_sums_zero();
 #ifdef TL_FORWARD_TILED
-    // Forward+: the directional lights, then the pixel's tile lists (every local light of a chunk
-    // whose list overflowed)
-    for (uint i = 0u; i < u_light_counts.x; i++) tl_forward_add(tl_lights[i], p, n, v, shape, diffuse, specular, fresnel);
-    uint tile = tl_tile_index(ivec2(gl_FragCoord.xy)), chunks = tl_tile_chunks();
-    for (uint c = 0u; c < chunks; c++) {
-        uvec2 h = tl_tile_headers[tl_tile_header_index(tile, c)];
-        uint count = tl_tile_list_size(h, c);
-        for (uint k = 0u; k < count; k++)
-            tl_forward_add(tl_lights[tl_tile_list_light(h, c, k)], p, n, v, shape, diffuse, specular, fresnel);
-    }
+    // Forward+: the directional lights, then the pixel's tile lists
+    tl_tile_lights_walk(TL_LIGHTS_FORWARD, tl_tile_index(ivec2(gl_FragCoord.xy)), tl_light_point_at(p, n, v, shape), sums);
 #else
 #ifdef TL_STIPPLE
     // the stipple's resolve: the light of the layer's own pixels, or (none credible) forward
@@ -86,19 +51,17 @@ void main()
     float total = tl_stipple_layer_light(tl_stipple_layer(), z_s, dz_s, n,
                                          tl_stipple_power(any(greaterThan(s.specular, vec3(0.0))), s.gloss), ld, ls, lf);
     if (total >= TL_STIPPLE_CREDIBLE) {
-        tl_stipple_finish(total, ld, ls, lf, diffuse, specular, fresnel);
+        tl_stipple_finish(total, ld, ls, lf, sums.diffuse, sums.specular, sums.fresnel);
 #ifdef TL_FRESNEL_NV
-        fresnel = tl_fresnel_schlick(s.specular, clamp(dot(n, v), 0.0, 1.0)) * specular; // as the material pass
-        specular = vec3(0.0);
+        sums.fresnel = tl_fresnel_schlick(s.specular, clamp(dot(n, v), 0.0, 1.0)) * sums.specular; // as the material pass
+        sums.specular = vec3(0.0);
 #endif
     } else
 #endif
-    {
-        uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
-        for (uint k = 0u; k < count; k++)
-            tl_forward_add(tl_lights[tl_light_indices[first + k]], p, n, v, shape, diffuse, specular, fresnel);
-    }
+        tl_object_lights_walk(TL_LIGHTS_FORWARD, tl_objects[v_object].lights.x, tl_objects[v_object].lights.y,
+                              tl_light_point_at(p, n, v, shape), sums);
 #endif
+    vec3 diffuse = sums.diffuse, specular = sums.specular, fresnel = sums.fresnel;
 #ifdef TL_SPECULAR_NONE
     specular = fresnel = vec3(0.0);
 #endif

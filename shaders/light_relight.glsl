@@ -10,10 +10,7 @@
 #include "frame.glsl"
 #include "light_eval.glsl"
 #include "object.glsl"
-#include "tile_lights.glsl" // the visible lights block, the tile lists and their sums
-#ifndef TL_RELIGHT_TILES
-layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
-#endif
+#include "tile_lights.glsl" // the one light loop: the lights block, the tile and object lists, their sums
 // light.fixup (fixup.c): counters; the fourth counts the re-lit pixels (or samples)
 layout(std430, binding = TL_SSBO_FIXUP) buffer tl_fixup_buffer { uvec4 tl_fixup_counters; };
 layout(early_fragment_tests) in; // the counts and the list: only the pixels the depth test keeps
@@ -62,21 +59,17 @@ void tl_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 ls, out ve
     vec3 p = tl_view_position(z_f, ndc, u_ray_params);
     vec3 v = normalize(-p);
     float shape = tl_lobe_shape(gloss);
-    vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
+    tl_light_sums s = tl_light_sums_zero();
 #ifdef TL_RELIGHT_TILES
-    tl_tile_lights_add(tl_tile_index(ivec2(gl_FragCoord.xy)), p, n, v, shape, diffuse, specular, fresnel);
+    tl_tile_lights_walk(TL_LIGHTS_SUMS, tl_tile_index(ivec2(gl_FragCoord.xy)), tl_light_point_at(p, n, v, shape), s);
 #else
-    uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
-    for (uint i = 0u; i < count; i++)
-        tl_tiled_add_shadowed(tl_lights[tl_light_indices[first + i]], p, n, v, shape, diffuse, specular, fresnel);
+    tl_object_lights_walk(TL_LIGHTS_SUMS, tl_objects[v_object].lights.x, tl_objects[v_object].lights.y,
+                          tl_light_point_at(p, n, v, shape), s);
 #endif
-#ifndef TL_FRESNEL_SUMS
-    specular += fresnel; // one sum: Fresnel is applied per pixel
-    fresnel = vec3(0.0);
-#endif
-    ld = vec4(diffuse, tl_luminance(specular));
-    ls = specular;
-    lf = fresnel;
+    tl_light_sums_fold(s);
+    ld = vec4(s.diffuse, tl_luminance(s.specular));
+    ls = s.specular;
+    lf = s.fresnel;
 }
 
 // Sums as the material pass uses them: finite, and the compact layout's specular recoloured by

@@ -34,6 +34,9 @@ vec3 tl_finite(vec3 c) // FP16 sums of many bright lights can reach Inf: keep ta
 // files are included once, at their first #include: the ones both blocks below use come first
 #include "object.glsl"
 #include "tiles.glsl"
+#if (defined(TL_UPSAMPLE) || defined(TL_MSAA_LIGHT) || defined(TL_STIPPLE)) && !defined(TL_NO_LIGHTS)
+#include "light_loop.glsl" // the one light loop: the re-lighting's and the stipple's
+#endif
 #if (defined(TL_UPSAMPLE) || defined(TL_MSAA_LIGHT)) && !defined(TL_NO_LIGHTS)
 #include "light_relight.glsl" // re-lighting from lists: the light scale's fix-up and MSAA's edges
 #endif

@@ -1,6 +1,6 @@
 // The shadow-debug pass (pass_shadow_debug.c; docs/shadows.md, "Debug views"). Per pixel, the
 // surface read as the light pass reads it and every visible casting light looked up as the light
-// pass looks it up (tl_light_shadow):
+// pass looks it up (the light loop's shadow gate, tl_light_visibility):
 //   R: the shadow-only term sum(w_i s_i) / sum(w_i), s_i a casting light's visibility and w_i the
 //      luminance of its unshadowed diffuse light at the pixel (attenuation, cone, n.l included);
 //   G: sum(w_i) (0: no casting light reaches the pixel, R is then 1);
@@ -8,7 +8,7 @@
 //      towards the next cascade (as tl_shadow blends them), -1 beyond the last or without one;
 //   A: 1 on surfaces, 0 on the background (cleared).
 #include "gbuffer_decode.glsl"
-#include "tile_lights.glsl"
+#include "light_loop.glsl" // the lights block, the reach test and the shadow gate
 
 layout(location = TL_OUT_SHADOW_DEBUG) out vec4 o_debug;
 
@@ -80,11 +80,11 @@ void main()
     for (uint i = 0u; i < end; i++) {
         tl_light_data l = tl_lights[i];
         if (l.cos_inner.z <= 0.0) continue;
-        float w = tl_luminance(l.color_type.rgb) * tl_tiled_terms(l, p, n, v, shape).x;
+        int type = int(l.color_type.w);
+        float w = tl_luminance(l.color_type.rgb) * tl_light_reached_weights(l, type, p, n, v, shape).x;
         if (w <= 0.0) continue;
         all += w;
-        lit += w * tl_light_shadow(l.cos_inner.z, int(l.color_type.w), p, n, l.position_radius.xyz,
-                                   l.direction_cos_outer.xyz);
+        lit += w * tl_light_visibility(l, type, p, n, true);
     }
     o_debug = vec4(all > 0.0 ? lit / all : 1.0, min(all, 65504.0), tl_debug_cascade(p), 1.0);
 }

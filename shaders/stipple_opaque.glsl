@@ -11,48 +11,30 @@
 
 #include "light_eval.glsl"
 #include "stipple_gather.glsl"
-#include "tiles.glsl" // the visible lights block
-layout(std430, binding = TL_SSBO_FORWARD_INDICES) readonly buffer tl_light_index_buffer { uint tl_light_indices[]; };
+#include "light_loop.glsl" // the visible lights block and the object lists
 
 void tl_stipple_relight(bool wanted, vec3 p, vec3 n, float gloss, out vec3 diffuse, out vec3 specular, out vec3 fresnel)
 {
-    vec3 v = normalize(-p);
-    float shape = tl_lobe_shape(gloss);
-    const vec3 fp16_max = vec3(65504.0);
-    diffuse = specular = fresnel = vec3(0.0);
-    uint first = tl_objects[v_object].lights.x, count = wanted ? tl_objects[v_object].lights.y : 0u;
-    for (uint i = 0u; i < count; i++) {
-        tl_light_data l = tl_lights[tl_light_indices[first + i]];
-        vec3 t = tl_light_data_weights(l, int(l.color_type.w), p, n, v, shape);
-        diffuse += min(l.color_type.rgb * t.x, fp16_max);
-        specular += min(l.color_type.rgb * t.y, fp16_max);
-        fresnel += min(l.color_type.rgb * t.z, fp16_max);
-    }
-#ifndef TL_FRESNEL_SUMS
-    specular += fresnel; // one sum: Fresnel is applied per pixel
-    fresnel = vec3(0.0);
-#endif
+    tl_light_sums s = tl_light_sums_zero();
+    tl_object_lights_walk(TL_LIGHTS_PLAIN, tl_objects[v_object].lights.x, wanted ? tl_objects[v_object].lights.y : 0u,
+                          tl_light_point_at(p, n, normalize(-p), tl_lobe_shape(gloss)), s);
+    tl_light_sums_fold(s);
 #ifdef TL_SPECULAR_NONE
-    specular = fresnel = vec3(0.0);
+    s.specular = s.fresnel = vec3(0.0);
 #endif
-    diffuse = tl_stipple_finite(diffuse);
-    specular = tl_stipple_finite(specular);
-    fresnel = tl_stipple_finite(fresnel);
+    diffuse = tl_stipple_finite(s.diffuse);
+    specular = tl_stipple_finite(s.specular);
+    fresnel = tl_stipple_finite(s.fresnel);
 }
 
 #ifdef TL_STIPPLE_COAT
 // The coat's sum S1 + S2 at its gloss from the object's lights, as the light pass forms it.
 vec3 tl_stipple_relight_coat(vec3 p, vec3 n)
 {
-    vec3 v = normalize(-p), coat = vec3(0.0);
-    float shape = tl_lobe_shape(1.0 - u_clearcoat_roughness);
-    uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
-    for (uint i = 0u; i < count; i++) {
-        tl_light_data l = tl_lights[tl_light_indices[first + i]];
-        vec3 t = tl_light_data_weights(l, int(l.color_type.w), p, n, v, shape);
-        coat += min(l.color_type.rgb * (t.y + t.z), vec3(65504.0));
-    }
-    return tl_stipple_finite(coat);
+    tl_light_sums s = tl_light_sums_zero();
+    tl_object_lights_walk(TL_LIGHTS_COAT, tl_objects[v_object].lights.x, tl_objects[v_object].lights.y,
+                          tl_light_point_at(p, n, normalize(-p), tl_lobe_shape(1.0 - u_clearcoat_roughness)), s);
+    return tl_stipple_finite(s.specular);
 }
 
 // The coat's light into tl_stipple_coat: gathered with the coat's lobe (a second pass over the
