@@ -80,10 +80,12 @@ void main()
     t *= tl_light_visibility(tl_volume_light(), TL_LIGHT_TYPE, p, n, t != vec3(0.0));
     // One light's output never exceeds the FP16 maximum, whatever its colour (an Inf would poison
     // every later sum); sums past it are the readers' job (material.frag, tonemap.frag).
-    tl_light_sums one = tl_light_terms(f_color_type.rgb, t, true);
+    tl_light_sums one = tl_light_sums_of(f_color_type.rgb, t, true);
 #ifdef TL_LIGHT_ACCUM
+#ifndef TL_FRESNEL_SUMS
     tl_light_sums_fold(one);
-    one.specular = min(one.specular, TL_FP16_MAX);
+    one.specular = min(one.specular, TL_FP16_MAX); // the one specular sum of two clamped terms
+#endif
 #if defined(TL_SPECULAR_EXACT)
     o_diffuse = vec4(one.diffuse, 0.0);
     o_specular = vec4(one.specular, 0.0);

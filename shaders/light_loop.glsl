@@ -61,7 +61,7 @@ tl_light_sums tl_light_sums_zero() { return tl_light_sums(vec3(0.0), vec3(0.0), 
 // One light's terms t in colour `color`. `clamped`: each at most the FP16 maximum (an Inf would
 // poison every later sum: the light passes and the re-lighting); forward sums in float and clamps
 // its output.
-tl_light_sums tl_light_terms(vec3 color, vec3 t, bool clamped)
+tl_light_sums tl_light_sums_of(vec3 color, vec3 t, bool clamped)
 {
     tl_light_sums s = tl_light_sums(color * t.x, color * t.y, color * t.z);
     if (clamped) {
@@ -154,7 +154,7 @@ void tl_light_visit(int mode, tl_light_data l, bool shadowed, tl_light_point at,
 #endif
         float vis = shadowed ? tl_light_visibility(l, type, at.p, at.n, lit) : 1.0;
         t *= vis;
-        tl_light_sums_add(s, tl_light_terms(l.color_type.rgb, t, false));
+        tl_light_sums_add(s, tl_light_sums_of(l.color_type.rgb, t, false));
 #if defined(TL_MATERIAL_MODELS_GLSL) && defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD)
         tl_model_light_add(l, at.p, at.n, at.v, vis);
 #endif
@@ -163,12 +163,12 @@ void tl_light_visit(int mode, tl_light_data l, bool shadowed, tl_light_point at,
     if (mode == TL_LIGHTS_SUMS) {
         vec3 t = tl_light_reached_weights(l, type, at.p, at.n, at.v, at.shape);
         if (shadowed) t *= tl_light_visibility(l, type, at.p, at.n, t != vec3(0.0));
-        tl_light_sums_add(s, tl_light_terms(l.color_type.rgb, t, true));
+        tl_light_sums_add(s, tl_light_sums_of(l.color_type.rgb, t, true));
         return;
     }
     vec3 t = tl_light_data_weights(l, type, at.p, at.n, at.v, at.shape);
     if (mode == TL_LIGHTS_COAT) s.specular += tl_light_coat(l.color_type.rgb, t);
-    else tl_light_sums_add(s, tl_light_terms(l.color_type.rgb, t, true));
+    else tl_light_sums_add(s, tl_light_sums_of(l.color_type.rgb, t, true));
 }
 
 // The directional lights, then every light of `tile`'s lists, chunk by chunk in their order (a
