@@ -71,12 +71,15 @@ void main()
     // Forward+: the directional lights, then the pixel's tile lists (every local light of a chunk
     // whose list overflowed)
     for (uint i = 0u; i < u_light_counts.x; i++) tl_forward_add(tl_lights[i], p, n, v, shape, diffuse, specular, fresnel);
-    uint tile = tl_tile_index(ivec2(gl_FragCoord.xy)), chunks = tl_tile_chunks();
+    ivec2 px = ivec2(gl_FragCoord.xy);
+    uint tile = tl_tile_index(px), bit = tl_tile_block_bit(px), chunks = tl_tile_chunks();
     for (uint c = 0u; c < chunks; c++) {
         uvec2 h = tl_tile_headers[tl_tile_header_index(tile, c)];
         uint count = tl_tile_list_size(h, c);
-        for (uint k = 0u; k < count; k++)
-            tl_forward_add(tl_lights[tl_tile_list_light(h, c, k)], p, n, v, shape, diffuse, specular, fresnel);
+        for (uint k = 0u; k < count; k++) {
+            uint e = tl_tile_list_entry(h, k);
+            if ((e & bit) != 0u) tl_forward_add(tl_lights[tl_tile_entry_light(e, c)], p, n, v, shape, diffuse, specular, fresnel);
+        }
     }
 #else
 #ifdef TL_STIPPLE

@@ -64,7 +64,7 @@ void tl_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 ls, out ve
     float shape = tl_lobe_shape(gloss);
     vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
 #ifdef TL_RELIGHT_TILES
-    tl_tile_lights_add(tl_tile_index(ivec2(gl_FragCoord.xy)), p, n, v, shape, diffuse, specular, fresnel);
+    tl_tile_lights_add(ivec2(gl_FragCoord.xy), p, n, v, shape, diffuse, specular, fresnel);
 #else
     uint first = tl_objects[v_object].lights.x, count = tl_objects[v_object].lights.y;
     for (uint i = 0u; i < count; i++)

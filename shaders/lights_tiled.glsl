@@ -28,17 +28,20 @@ vec3 tl_fat_tiled_add(tl_fat_model fm, tl_light_data l, vec3 p, vec3 n, vec3 v, 
     return c;
 }
 
-// fat, thin-deferred: the directional lights, then the lights of `tile`'s lists, as tl_tile_lights_add visits them.
-vec3 tl_fat_tile_models(tl_fat_model fm, uint tile, vec3 p, vec3 n, vec3 v, float shape, vec3 albedo, vec3 spec_color)
+// fat, thin-deferred: the directional lights, then the lights of frame pixel px's tile lists, as tl_tile_lights_add visits them.
+vec3 tl_fat_tile_models(tl_fat_model fm, ivec2 px, vec3 p, vec3 n, vec3 v, float shape, vec3 albedo, vec3 spec_color)
 {
     vec3 c = vec3(0.0);
     for (uint i = 0u; i < u_light_counts.x; i++) c += tl_fat_tiled_add(fm, tl_lights[i], p, n, v, shape, albedo, spec_color);
-    uint chunks = tl_tile_chunks();
+    uint tile = tl_tile_index(px), bit = tl_tile_block_bit(px), chunks = tl_tile_chunks();
     for (uint ch = 0u; ch < chunks; ch++) {
         uvec2 h = tl_tile_headers[tl_tile_header_index(tile, ch)];
         uint count = tl_tile_list_size(h, ch);
-        for (uint k = 0u; k < count; k++)
-            c += tl_fat_tiled_add(fm, tl_lights[tl_tile_list_light(h, ch, k)], p, n, v, shape, albedo, spec_color);
+        for (uint k = 0u; k < count; k++) {
+            uint e = tl_tile_list_entry(h, k), i = tl_tile_entry_light(e, ch);
+            if ((e & bit) != 0u && tl_light_reaches(i, p))
+                c += tl_fat_tiled_add(fm, tl_lights[i], p, n, v, shape, albedo, spec_color);
+        }
     }
     return c;
 }
@@ -71,9 +74,9 @@ tl_tiled_result tl_tiled_shade(ivec2 px)
     float shape = tl_lobe_shape(gloss);
     vec3 diffuse = vec3(0.0), specular = vec3(0.0), fresnel = vec3(0.0);
 #ifdef TL_LIGHT_SHIFT
-    uint tile = tl_tile_index(px << TL_LIGHT_SHIFT); // tiles are in the frame's pixels
+    ivec2 frame_px = px << TL_LIGHT_SHIFT; // tiles are in the frame's pixels
 #else
-    uint tile = tl_tile_index(px);
+    ivec2 frame_px = px;
 #endif
 #if defined(TL_MATERIAL_MODELS) && !defined(TL_LIGHT_ACCUM)
     tl_fat_model fm = tl_fat_model_read(px, n, v);
@@ -82,11 +85,11 @@ tl_tiled_result tl_tiled_shade(ivec2 px)
         vec3 albedo, spec_color;
         tl_rt1_read(px, albedo, spec_color);
 #endif
-        res.diffuse = min(tl_fat_tile_models(fm, tile, p, n, v, shape, albedo, spec_color), vec3(65504.0));
+        res.diffuse = min(tl_fat_tile_models(fm, frame_px, p, n, v, shape, albedo, spec_color), vec3(65504.0));
         return res;
     }
 #endif
-    tl_tile_lights_add(tile, p, n, v, shape, diffuse, specular, fresnel);
+    tl_tile_lights_add(frame_px, p, n, v, shape, diffuse, specular, fresnel);
     const vec3 fp16_max = vec3(65504.0);
 #ifdef TL_LIGHT_ACCUM
 #ifndef TL_FRESNEL_SUMS
@@ -120,7 +123,7 @@ vec3 tl_tiled_coat(ivec2 px)
     float g, base_gloss;
     if (!tl_coat_gloss(px, g) || !tl_gbuffer_position(px, p)) return vec3(0.0);
     tl_gbuffer_normal_gloss(px, n, base_gloss);
-    tl_tile_lights_add(tl_tile_index(px), p, n, normalize(-p), tl_lobe_shape(g), d, s, f);
+    tl_tile_lights_add(px, p, n, normalize(-p), tl_lobe_shape(g), d, s, f);
     return min(s + f, vec3(65504.0));
 }
 #endif

@@ -51,27 +51,31 @@ void tl_tiled_add_shadowed(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape,
     tl_tiled_sum(l, t, diffuse, specular, fresnel);
 }
 
-// The directional lights, then every light of `tile`'s lists (chunk by chunk, in their order). The
-// casting local lights come first in the lights block (u_light_counts.z ends them), so a list
-// starts with them: only that first run of a list carries the shadow lookup's code, which llvmpipe
-// would otherwise run (masked) for every light of the list.
-void tl_tile_lights_add(uint tile, vec3 p, vec3 n, vec3 v, float shape, inout vec3 diffuse, inout vec3 specular,
+// The directional lights, then every light of the lists of frame pixel px's tile (chunk by chunk,
+// in their order) whose entry reaches px's block and whose range reaches p. The casting local
+// lights come first in the lights block (u_light_counts.z ends them), so a list starts with them:
+// only that first run of a list carries the shadow lookup's code, which llvmpipe would otherwise
+// run (masked) for every light of the list.
+void tl_tile_lights_add(ivec2 px, vec3 p, vec3 n, vec3 v, float shape, inout vec3 diffuse, inout vec3 specular,
                         inout vec3 fresnel)
 {
     for (uint i = 0u; i < u_light_counts.x; i++) tl_tiled_add_shadowed(tl_lights[i], p, n, v, shape, diffuse, specular, fresnel);
-    uint chunks = tl_tile_chunks();
+    uint tile = tl_tile_index(px), bit = tl_tile_block_bit(px), chunks = tl_tile_chunks();
     for (uint c = 0u; c < chunks; c++) {
         uvec2 h = tl_tile_headers[tl_tile_header_index(tile, c)];
         uint count = tl_tile_list_size(h, c), k = 0u;
 #ifdef TL_SHADOWS
         for (; k < count; k++) {
-            uint i = tl_tile_list_light(h, c, k);
+            uint e = tl_tile_list_entry(h, k), i = tl_tile_entry_light(e, c);
             if (i >= u_light_counts.z) break;
-            tl_tiled_add_shadowed(tl_lights[i], p, n, v, shape, diffuse, specular, fresnel);
+            if ((e & bit) != 0u) tl_tiled_add_shadowed(tl_lights[i], p, n, v, shape, diffuse, specular, fresnel);
         }
 #endif
-        for (; k < count; k++)
-            tl_tiled_add(tl_lights[tl_tile_list_light(h, c, k)], p, n, v, shape, diffuse, specular, fresnel);
+        for (; k < count; k++) {
+            uint e = tl_tile_list_entry(h, k), i = tl_tile_entry_light(e, c);
+            if ((e & bit) != 0u && tl_light_reaches(i, p))
+                tl_tiled_add(tl_lights[i], p, n, v, shape, diffuse, specular, fresnel);
+        }
     }
 }
 
