@@ -42,7 +42,7 @@ void main()
     tl_light_sums sums = tl_light_sums_zero();
 #ifdef TL_FORWARD_TILED
     // Forward+: the directional lights, then the pixel's tile lists
-    tl_tile_lights_walk(TL_LIGHTS_FORWARD, tl_tile_index(ivec2(gl_FragCoord.xy)), tl_light_point_at(p, n, v, shape), sums);
+    tl_tile_lights_walk(TL_LIGHTS_FORWARD, ivec2(gl_FragCoord.xy), tl_light_point_at(p, n, v, shape), sums);
 #else
 #ifdef TL_STIPPLE
     // the stipple's resolve: the light of the layer's own pixels, or (none credible) forward

@@ -171,26 +171,33 @@ void tl_light_visit(int mode, tl_light_data l, bool shadowed, tl_light_point at,
     else tl_light_sums_add(s, tl_light_sums_of(l.color_type.rgb, t, true));
 }
 
-// The directional lights, then every light of `tile`'s lists, chunk by chunk in their order (a
-// list that overflowed: every local light of its chunk). The casting local lights come first in
-// the lights block (u_light_counts.z ends them), so a list starts with them: only that first run
-// of a list carries the shadow lookup's code, which llvmpipe would otherwise run (masked) for
-// every light of the list.
-void tl_tile_lights_walk(int mode, uint tile, tl_light_point at, inout tl_light_sums s)
+// The directional lights, then every light of the lists of frame pixel px's tile, chunk by chunk in
+// their order (a list that overflowed: every local light of its chunk), skipping the entries whose
+// block mask lacks px's block. The casting local lights come first in the lights block
+// (u_light_counts.z ends them), so a list starts with them: only that first run of a list carries
+// the shadow lookup's code, which llvmpipe would otherwise run (masked) for every light of the
+// list. After it, the modes with a reach test read a light's position and range alone and the
+// rest of its record only where it reaches p (llvmpipe reads each field of a record as a gather).
+void tl_tile_lights_walk(int mode, ivec2 px, tl_light_point at, inout tl_light_sums s)
 {
     for (uint i = 0u; i < u_light_counts.x; i++) tl_light_visit(mode, tl_lights[i], true, at, s);
-    uint chunks = tl_tile_chunks();
+    uint tile = tl_tile_index(px), bit = tl_tile_block_bit(px), chunks = tl_tile_chunks();
+    bool reach_first = mode == TL_LIGHTS_SUMS || mode == TL_LIGHTS_MODELS;
     for (uint c = 0u; c < chunks; c++) {
         uvec2 h = tl_tile_headers[tl_tile_header_index(tile, c)];
         uint count = tl_tile_list_size(h, c), k = 0u;
 #ifdef TL_SHADOWS
         for (; k < count; k++) {
-            uint i = tl_tile_list_light(h, c, k);
+            uint e = tl_tile_list_entry(h, k), i = tl_tile_entry_light(e, c);
             if (i >= u_light_counts.z) break;
-            tl_light_visit(mode, tl_lights[i], true, at, s);
+            if ((e & bit) != 0u) tl_light_visit(mode, tl_lights[i], true, at, s);
         }
 #endif
-        for (; k < count; k++) tl_light_visit(mode, tl_lights[tl_tile_list_light(h, c, k)], false, at, s);
+        for (; k < count; k++) {
+            uint e = tl_tile_list_entry(h, k), i = tl_tile_entry_light(e, c);
+            if ((e & bit) != 0u && (!reach_first || tl_light_range_reaches(i, at.p)))
+                tl_light_visit(mode, tl_lights[i], false, at, s);
+        }
     }
 }
 

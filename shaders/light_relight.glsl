@@ -61,7 +61,7 @@ void tl_relight(vec3 n, float gloss, float z_f, out vec4 ld, out vec3 ls, out ve
     float shape = tl_lobe_shape(gloss);
     tl_light_sums s = tl_light_sums_zero();
 #ifdef TL_RELIGHT_TILES
-    tl_tile_lights_walk(TL_LIGHTS_SUMS, tl_tile_index(ivec2(gl_FragCoord.xy)), tl_light_point_at(p, n, v, shape), s);
+    tl_tile_lights_walk(TL_LIGHTS_SUMS, ivec2(gl_FragCoord.xy), tl_light_point_at(p, n, v, shape), s);
 #else
     tl_object_lights_walk(TL_LIGHTS_SUMS, tl_objects[v_object].lights.x, tl_objects[v_object].lights.y,
                           tl_light_point_at(p, n, v, shape), s);

@@ -38,9 +38,9 @@ tl_tiled_result tl_tiled_shade(ivec2 px)
     tl_light_point at = tl_light_point_at(p, n, v, shape);
     tl_light_sums sums = tl_light_sums_zero();
 #ifdef TL_LIGHT_SHIFT
-    uint tile = tl_tile_index(px << TL_LIGHT_SHIFT); // tiles are in the frame's pixels
+    ivec2 frame_px = px << TL_LIGHT_SHIFT; // tiles are in the frame's pixels
 #else
-    uint tile = tl_tile_index(px);
+    ivec2 frame_px = px;
 #endif
 #if defined(TL_MATERIAL_MODELS) && !defined(TL_LIGHT_ACCUM)
     at.fm = tl_fat_model_read(px, n, v);
@@ -51,12 +51,12 @@ tl_tiled_result tl_tiled_shade(ivec2 px)
         at.albedo = albedo;
         at.spec_color = spec_color;
 #endif
-        tl_tile_lights_walk(TL_LIGHTS_MODELS, tile, at, sums);
+        tl_tile_lights_walk(TL_LIGHTS_MODELS, frame_px, at, sums);
         res.diffuse = min(sums.diffuse, TL_FP16_MAX);
         return res;
     }
 #endif
-    tl_tile_lights_walk(TL_LIGHTS_SUMS, tile, at, sums);
+    tl_tile_lights_walk(TL_LIGHTS_SUMS, frame_px, at, sums);
 #ifdef TL_LIGHT_ACCUM
     tl_light_sums_fold(sums);
     res.diffuse = min(sums.diffuse, TL_FP16_MAX);
@@ -83,7 +83,7 @@ vec3 tl_tiled_coat(ivec2 px)
     if (!tl_coat_gloss(px, g) || !tl_gbuffer_position(px, p)) return vec3(0.0);
     tl_gbuffer_normal_gloss(px, n, base_gloss);
     tl_light_sums s = tl_light_sums_zero();
-    tl_tile_lights_walk(TL_LIGHTS_SUMS, tl_tile_index(px), tl_light_point_at(p, n, normalize(-p), tl_lobe_shape(g)), s);
+    tl_tile_lights_walk(TL_LIGHTS_SUMS, px, tl_light_point_at(p, n, normalize(-p), tl_lobe_shape(g)), s);
     return min(s.specular + s.fresnel, TL_FP16_MAX);
 }
 #endif

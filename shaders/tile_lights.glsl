@@ -23,12 +23,13 @@ void tl_tiled_add_shadowed(tl_light_data l, vec3 p, vec3 n, vec3 v, float shape,
     fresnel = s.fresnel;
 }
 
-// The directional lights, then every light of `tile`'s lists, added to the FP16-clamped sums.
-void tl_tile_lights_add(uint tile, vec3 p, vec3 n, vec3 v, float shape, inout vec3 diffuse, inout vec3 specular,
+// The directional lights, then every light of frame pixel px's tile lists (tl_tile_lights_walk),
+// added to the FP16-clamped sums.
+void tl_tile_lights_add(ivec2 px, vec3 p, vec3 n, vec3 v, float shape, inout vec3 diffuse, inout vec3 specular,
                         inout vec3 fresnel)
 {
     tl_light_sums s = tl_light_sums(diffuse, specular, fresnel);
-    tl_tile_lights_walk(TL_LIGHTS_SUMS, tile, tl_light_point_at(p, n, v, shape), s);
+    tl_tile_lights_walk(TL_LIGHTS_SUMS, px, tl_light_point_at(p, n, v, shape), s);
     diffuse = s.diffuse;
     specular = s.specular;
     fresnel = s.fresnel;

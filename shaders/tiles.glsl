@@ -45,10 +45,31 @@ uint tl_tile_list_size(uvec2 h, uint chunk)
     return h.x != TL_TILE_OVERFLOW ? h.y : min(uint(TL_CULL_CHUNK), u_light_counts.y - chunk * uint(TL_CULL_CHUNK));
 }
 
+// A list entry: the light's index within its chunk (low 16 bits) and the mask of the tile's 4 x 4
+// blocks it may reach (high 16 bits; light_cull.comp.glsl). On overflow, the chunk's k-th light
+// and every block.
+uint tl_tile_list_entry(uvec2 h, uint k) { return h.x != TL_TILE_OVERFLOW ? tl_tile_entries[h.x + k] : k | 0xFFFF0000u; }
+
+// An entry's light (an index into tl_lights).
+uint tl_tile_entry_light(uint e, uint chunk) { return u_light_counts.x + chunk * uint(TL_CULL_CHUNK) + (e & 0xFFFFu); }
+
 // The k-th light of a list (an index into tl_lights).
-uint tl_tile_list_light(uvec2 h, uint chunk, uint k)
+uint tl_tile_list_light(uvec2 h, uint chunk, uint k) { return tl_tile_entry_light(tl_tile_list_entry(h, k), chunk); }
+
+// The bit of frame pixel px's block in an entry's high half.
+uint tl_tile_block_bit(ivec2 px)
 {
-    return h.x != TL_TILE_OVERFLOW ? tl_tile_entries[h.x + k] : u_light_counts.x + chunk * uint(TL_CULL_CHUNK) + k;
+    uvec2 q = (uvec2(px) % u_tiles.x) / (u_tiles.x / 4u);
+    return 0x10000u << (q.y * 4u + q.x);
+}
+
+// Whether local light i's range reaches p, reading its position and range alone (the rest of its
+// record is read only for the lights that reach p).
+bool tl_light_range_reaches(uint i, vec3 p)
+{
+    vec4 pr = tl_lights[i].position_radius;
+    vec3 to_light = pr.xyz - p;
+    return dot(to_light, to_light) < pr.w * pr.w;
 }
 
 #endif

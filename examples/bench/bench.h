@@ -29,7 +29,7 @@
 #define BENCH_MAX_FRAMES 1000u
 #define BENCH_MODES (TL_MODE_COUNT_ - 1) /* every mode but DEFAULT */
 #define BENCH_STRATEGIES (TL_LIGHT_STRATEGY_COUNT_) /* auto, volumes, tiled */
-#define BENCH_CONFIGS (BENCH_MODES * BENCH_STRATEGIES * 5) /* x 5: as asked, R11G11B10F, Fresnel n.v, light 1/2, 1/4 */
+#define BENCH_CONFIGS (BENCH_MODES * BENCH_STRATEGIES * 6) /* x 6: as asked, R11G11B10F, Fresnel n.v, light 1/2, 1/4, tiled compute */
 #define BENCH_REFERENCE TL_MODE_FAT
 #define BENCH_PNG_MAX_BYTES (300u * 1024u)
 /* Heat maps show |mode - fat| of the final image, largest RGB channel, 0..HEAT_SCALE 8-bit steps. */
@@ -56,6 +56,8 @@ typedef unsigned bench_config;
 #define BENCH_VARIANT_FRESNEL_NV 2u
 #define BENCH_VARIANT_LIGHT_HALF 3u    /* thin-lpp with light_scale 0.5 (--light-scales) */
 #define BENCH_VARIANT_LIGHT_QUARTER 4u /* thin-lpp with light_scale 0.25 */
+#define BENCH_VARIANT_TILED_COMPUTE 5u /* thin-lpp, thin-deferred, fat with the tiled strategy's compute pass
+                                          ("<mode>/tiled-compute"; "<mode>/tiled" is the fragment pass) */
 static inline bench_config bench_config_make(tl_render_mode m, tl_light_strategy s)
 {
     return (unsigned)m + (unsigned)TL_MODE_COUNT_ * (unsigned)s;
@@ -80,7 +82,15 @@ static inline tl_light_format bench_config_light_format(bench_config c)
 static inline float bench_config_light_scale(bench_config c)
 {
     unsigned v = bench_config_variant_of(c);
-    return v >= BENCH_VARIANT_LIGHT_HALF ? 1.0f / (float)(2u << (v - BENCH_VARIANT_LIGHT_HALF)) : 0.0f;
+    return v == BENCH_VARIANT_LIGHT_HALF || v == BENCH_VARIANT_LIGHT_QUARTER
+               ? 1.0f / (float)(2u << (v - BENCH_VARIANT_LIGHT_HALF)) : 0.0f;
+}
+/* The tiled light pass: compute for that variant; the fragment pass for the others when the bench
+ * measures both (`asked` auto, the default), else `asked` (--tiled-shading fragment|compute). */
+static inline tl_tiled_shading bench_config_tiled_shading(bench_config c, tl_tiled_shading asked)
+{
+    if (bench_config_variant_of(c) == BENCH_VARIANT_TILED_COMPUTE) return TL_TILED_SHADING_COMPUTE;
+    return asked == TL_TILED_SHADING_AUTO ? TL_TILED_SHADING_FRAGMENT : asked;
 }
 /* The Fresnel layout: n.v for that variant, else `asked` (--fresnel). */
 static inline tl_fresnel_layout bench_config_fresnel(bench_config c, tl_fresnel_layout asked)

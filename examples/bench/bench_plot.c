@@ -29,13 +29,15 @@ static const char *bench__colour(bench_config c)
 }
 
 /* Tiled solid, volumes dashed, auto dotted (forward: per-object lists dashed, Forward+ solid);
- * the R11G11B10F light buffer dash-dotted, the n.v Fresnel layout dash-dot-dotted. */
+ * the R11G11B10F light buffer dash-dotted, the n.v Fresnel layout dash-dot-dotted; each light scale
+ * and the tiled compute pass a dash type of their own. */
 static const char *bench__dash(bench_config c)
 {
     if (bench_config_variant_of(c) == BENCH_VARIANT_R11G11B10F) return " dt 4"; /* dash-dot */
     if (bench_config_variant_of(c) == BENCH_VARIANT_FRESNEL_NV) return " dt 5";
     if (bench_config_variant_of(c) == BENCH_VARIANT_LIGHT_HALF) return " dt 6";
     if (bench_config_variant_of(c) == BENCH_VARIANT_LIGHT_QUARTER) return " dt 7";
+    if (bench_config_variant_of(c) == BENCH_VARIANT_TILED_COMPUTE) return " dt 8";
     switch (bench_config_strategy(c)) {
     case TL_LIGHT_STRATEGY_TILED: return "";
     case TL_LIGHT_STRATEGY_VOLUMES: return " dt 2";

@@ -481,8 +481,9 @@ static void bench__json_record(tl_tool_json *j, const bench_record *r)
     tl_tool_json_str(j, "strategy", tl_light_strategy_name(r->strategy));
     tl_tool_json_str(j, "light_format", bench_config_light_format(r->config) == TL_LIGHT_FORMAT_R11G11B10F
                                             ? "r11g11b10f" : "rgba16f");
-    static const char *const variants[] = {"", "r11g11b10f", "fresnel-nv", "light-scale-0.5", "light-scale-0.25"};
-    tl_tool_json_str(j, "variant", variants[bench_config_variant_of(r->config) % 5u]);
+    static const char *const variants[] = {"", "r11g11b10f", "fresnel-nv", "light-scale-0.5", "light-scale-0.25",
+                                           "tiled-compute"};
+    tl_tool_json_str(j, "variant", variants[bench_config_variant_of(r->config) % 6u]);
     tl_tool_json_num(j, "light_scale", bench_config_light_scale(r->config) > 0.0f ? bench_config_light_scale(r->config) : 1.0);
     tl_tool_json_bool(j, "reference", r->mode == BENCH_REFERENCE);
     tl_tool_json_str(j, "lighting", tl_lighting_model_name(r->lighting));

@@ -41,6 +41,11 @@ static const char *bench__config_string(bench_config c, int slug)
          {"thin-lpp/tiled/light-1/4", "thin-lpp-tiled-light-quarter"}}};
     if ((v == BENCH_VARIANT_LIGHT_HALF || v == BENCH_VARIANT_LIGHT_QUARTER) && m == TL_MODE_THIN_LPP)
         return scaled[v - BENCH_VARIANT_LIGHT_HALF][s][slug];
+    static const char *const compute[BENCH_MODES][2] = {{"thin-lpp/tiled-compute", "thin-lpp-tiled-compute"},
+                                                         {"thin-deferred/tiled-compute", "thin-deferred-tiled-compute"},
+                                                         {"fat/tiled-compute", "fat-tiled-compute"},
+                                                         {"?", "?"}};
+    if (v == BENCH_VARIANT_TILED_COMPUTE) return s == TL_LIGHT_STRATEGY_TILED ? compute[m - 1][slug] : "?";
     if (v && (m != TL_MODE_THIN_LPP || s != TL_LIGHT_STRATEGY_TILED)) return "?";
     if (v == BENCH_VARIANT_R11G11B10F) return slug ? "thin-lpp-tiled-r11g11b10f" : "thin-lpp/tiled/r11g11b10f";
     if (v == BENCH_VARIANT_FRESNEL_NV) return slug ? "thin-lpp-tiled-nv" : "thin-lpp/tiled/nv";
@@ -63,6 +68,16 @@ size_t bench_render_modes(const bench_options *opt, bench_config *modes)
         if (s == 0 && bench_mode_requested(opt, TL_MODE_THIN_LPP)) { /* the light scales (they light with volumes) */
             if (opt->light_scales & 1u) modes[n++] = bench_config_variant(lpp, BENCH_VARIANT_LIGHT_HALF);
             if (opt->light_scales & 2u) modes[n++] = bench_config_variant(lpp, BENCH_VARIANT_LIGHT_QUARTER);
+        }
+        if (opt->strategies[s] == TL_LIGHT_STRATEGY_TILED && opt->base.tiled_shading == TL_TILED_SHADING_AUTO) {
+            /* both tiled light passes, each a configuration: fat's first (the others' error reference
+             * stays fat/tiled) */
+            modes[n++] = bench_config_variant(bench_config_make(BENCH_REFERENCE, TL_LIGHT_STRATEGY_TILED),
+                                              BENCH_VARIANT_TILED_COMPUTE);
+            for (size_t i = 0; i < opt->mode_count; i++)
+                if (opt->modes[i] != BENCH_REFERENCE && opt->modes[i] != TL_MODE_FORWARD)
+                    modes[n++] = bench_config_variant(bench_config_make(opt->modes[i], TL_LIGHT_STRATEGY_TILED),
+                                                      BENCH_VARIANT_TILED_COMPUTE);
         }
         bench_config tiled = bench_config_make(TL_MODE_THIN_LPP, TL_LIGHT_STRATEGY_TILED);
         if (opt->strategies[s] != TL_LIGHT_STRATEGY_TILED || !bench_mode_requested(opt, TL_MODE_THIN_LPP)) continue;
@@ -378,6 +393,7 @@ tl_renderer_desc bench_config_desc(const bench_options *o, bench_config c, uint3
     d.options.light_format = bench_config_light_format(c);
     d.options.light_scale = bench_config_light_scale(c);
     d.options.fresnel = bench_config_fresnel(c, o->base.fresnel);
+    d.options.tiled_shading = bench_config_tiled_shading(c, o->base.tiled_shading);
     d.options.synchronous_stats = 1;
     return d;
 }

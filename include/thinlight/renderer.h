@@ -106,13 +106,15 @@ TL_API tl_result tl_light_strategy_from_name(const char *name, tl_light_strategy
 
 /** Which pass shades the tiles of the tiled strategy. */
 typedef enum tl_tiled_shading {
-    TL_TILED_SHADING_DEFAULT = 0, /**< = TL_TILED_SHADING_FRAGMENT (the faster on llvmpipe: docs/frame.md) */
+    TL_TILED_SHADING_DEFAULT = 0, /**< = TL_TILED_SHADING_AUTO: the planner picks (docs/frame.md, "Fragment or
+                                       compute"); tl_frame_plan.tiled_shading says which */
     TL_TILED_SHADING_FRAGMENT,    /**< a full-screen triangle */
     TL_TILED_SHADING_COMPUTE,     /**< a compute pass, one invocation per pixel, image stores */
-    TL_TILED_SHADING_COUNT_       /**< number of values */
+    TL_TILED_SHADING_COUNT_,      /**< number of values */
+    TL_TILED_SHADING_AUTO = TL_TILED_SHADING_DEFAULT /**< the planner picks */
 } tl_tiled_shading;
 
-/** "fragment" (TL_TILED_SHADING_DEFAULT too), "compute" ("unknown" otherwise). */
+/** "auto" (TL_TILED_SHADING_DEFAULT), "fragment", "compute" ("unknown" otherwise). */
 TL_API const char *tl_tiled_shading_name(tl_tiled_shading value);
 /** Parses a name of tl_tiled_shading_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
 TL_API tl_result tl_tiled_shading_from_name(const char *name, tl_tiled_shading *value);
@@ -424,7 +426,8 @@ typedef struct tl_renderer_options {
     tl_lighting_model lighting;        /**< default auto: from the scene's materials (tl_frame_plan.lighting) */
     tl_fresnel_layout fresnel;         /**< thin-lpp with GGX: default two sums (exact) */
     uint32_t tile_size;                /**< tiled strategy: tile side in pixels, 8, 16 or 32; 0: the default (docs/frame.md) */
-    tl_tiled_shading tiled_shading;    /**< tiled strategy: fragment (default) or compute shading pass */
+    tl_tiled_shading tiled_shading;    /**< tiled strategy: the light pass as a fragment or a compute pass;
+                                            auto (default): the planner picks (tl_frame_plan.tiled_shading) */
     /** thin-lpp: the light buffer's size per axis against the frame's, 1, 0.5 or 0.25 (0: the
      *  default, 1). Below 1 the light is computed on a reduced depth and RT0, upsampled in the
      *  material pass with depth and normal aware weights, and pixels with no credible reduced
@@ -721,6 +724,8 @@ typedef struct tl_frame_plan {
     uint32_t tile_size;                          /**< tiled: tile side in pixels (0 with volumes) */
     uint32_t tiles_x;                            /**< tiled: tiles across */
     uint32_t tiles_y;                            /**< tiled: tiles down */
+    tl_tiled_shading tiled_shading;              /**< tiled, deferred modes: the light pass's shader, fragment or
+                                                      compute (never auto); TL_TILED_SHADING_DEFAULT otherwise */
     float light_scale;                           /**< the light buffer's size per axis against the frame's
                                                       (1, 0.5, 0.25): 1 outside thin-lpp */
     char light_scale_reason[96];                 /**< why, when the options asked for a scale below 1 */

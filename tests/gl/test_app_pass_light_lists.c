@@ -130,8 +130,10 @@ TL_TEST(app_pass_reads_tile_light_lists)
  * view transform, the planes and the linearised depth: 64 float roundings of the magnitudes
  * involved, and one float step of each window depth, which the texel fetch may round the other
  * way); an undecided one counts both ways. So every tile has a count of lights that surely pass and
- * of lights that may: the list the GPU built must hold between the two. A light culled at 0.97 of
- * its range, or kept at 1.03, or a lost 2.5D slice, moves some tile outside. As a check of the CPU
+ * of lights that may. The GPU then drops the lights that reach none of the tile's 4 x 4 blocks (each
+ * block's box between its own depth bounds), so its list must hold at most the lights that may pass
+ * and at least those that surely reach the surface of a pixel of the tile. A light kept at 1.03 of
+ * its range moves some tile above; one culled at 0.97, or a lost block, below. As a check of the CPU
  * cull itself, every light that surely reaches the surface of some pixel of a tile (its range; a
  * spot's cone too) must surely pass for that tile. */
 
@@ -363,7 +365,7 @@ static void cull_execute(void *user, const tl_app_pass_context *ctx)
 }
 
 typedef struct cull_result {
-    size_t tiles, sure_entries, maybe_entries, gpu_entries, below, above, unreached;
+    size_t tiles, sure_entries, maybe_entries, reached_entries, gpu_entries, below, above, unreached;
 } cull_result;
 
 static void compare_tiles(const cull_view *v, const tl_scene *s, const uint32_t *headers, cull_result *res)
@@ -372,24 +374,30 @@ static void compare_tiles(const cull_view *v, const tl_scene *s, const uint32_t 
         for (uint32_t tx = 0; tx < v->tiles_x; tx++) {
             cull_tile t;
             tile_setup(v, tx, ty, &t);
-            size_t sure = 0, maybe = 0, index = (size_t)ty * v->tiles_x + tx;
+            size_t sure = 0, maybe = 0, reached = 0, index = (size_t)ty * v->tiles_x + tx;
             uint32_t got = headers[4 + 2 * index + 1];
             for (size_t i = 0; !t.empty && i < s->light_count; i++) {
                 if (s->lights[i].type == TL_LIGHT_DIRECTIONAL) continue;
                 cull_light l;
                 light_to_view(v, &s->lights[i], &l);
                 tri in = light_in_tile(&t, &l);
+                int reaches = reaches_tile(v, tx, ty, &l);
                 sure += in == TRI_YES;
                 maybe += in != TRI_NO;
-                if (in != TRI_YES && reaches_tile(v, tx, ty, &l)) res->unreached++;
+                reached += (size_t)reaches;
+                if (in != TRI_YES && reaches) res->unreached++;
             }
-            if (got < sure || got > maybe) {
+            /* the GPU keeps a light the tile's frustum keeps only where it may reach one of the tile's
+             * blocks (light_cull.comp.glsl): between the lights that surely reach a pixel and the
+             * lights the frustum test may keep */
+            if (got < reached || got > maybe) {
                 if (res->below + res->above < 4)
-                    printf("    tile (%u, %u): %u lights in its list, the CPU cull %zu surely, %zu at most\n", tx, ty, got,
-                           sure, maybe);
-                res->below += got < sure;
+                    printf("    tile (%u, %u): %u lights in its list, %zu surely reach a pixel, the CPU cull keeps %zu at "
+                           "most\n", tx, ty, got, reached, maybe);
+                res->below += got < reached;
                 res->above += got > maybe;
             }
+            res->reached_entries += reached;
             res->tiles++;
             res->sure_entries += sure;
             res->maybe_entries += maybe;
@@ -447,11 +455,11 @@ TL_TEST(tile_light_counts_match_cpu_cull)
             v.pr.format = runs[k].depth;
             cull_result res = {0};
             compare_tiles(&v, s, p.headers, &res);
-            printf("%-9s %-13s %2u px tiles: %zu tiles, %zu list entries (CPU cull: %zu sure, %zu at most); %zu tiles "
-                   "below, %zu above; %zu lights reaching a tile not surely kept\n",
+            printf("%-9s %-13s %2u px tiles: %zu tiles, %zu list entries (CPU cull: %zu sure, %zu at most; %zu surely "
+                   "reach a pixel); %zu tiles below, %zu above; %zu lights reaching a tile not surely kept\n",
                    tl_render_mode_name(d.options.mode), tl_depth_format_name(d.options.depth_format), plan.tile_size,
-                   res.tiles,
-                   res.gpu_entries, res.sure_entries, res.maybe_entries, res.below, res.above, res.unreached);
+                   res.tiles, res.gpu_entries, res.sure_entries, res.maybe_entries, res.reached_entries, res.below,
+                   res.above, res.unreached);
             TL_CHECK(res.sure_entries > 0);
             TL_CHECK_EQ_U(res.below, 0);
             TL_CHECK_EQ_U(res.above, 0);

@@ -50,6 +50,7 @@ typedef struct tl__plan_input {
     tl_light_strategy strategy; /* volumes or tiled (resolved) */
     char strategy_reason[96];
     uint32_t tile_size, tiles_x, tiles_y;
+    int tiled_compute;          /* tiled, deferred modes: the light pass is the compute pass (tl__plan_strategy) */
     int spec;                   /* specular materials */
     tl_lighting_model lighting; /* resolved: blinn-phong or ggx */
     tl_fresnel_layout fresnel;  /* thin-lpp, GGX, specular: the light buffer's Fresnel layout; else DEFAULT */

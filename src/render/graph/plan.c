@@ -47,6 +47,9 @@ static void tl__plan_strategy(tl__plan_input *in)
     in->tile_size = in->o->tile_size << (in->light_shift ? 1u : 0u);
     in->tiles_x = (in->d.width + in->tile_size - 1) / in->tile_size;
     in->tiles_y = (in->d.height + in->tile_size - 1) / in->tile_size;
+    /* the tiled light pass: as asked, or TL__TILED_SHADING_AUTO's pick (docs/frame.md, "Fragment or compute") */
+    tl_tiled_shading ts = in->o->tiled_shading == TL_TILED_SHADING_AUTO ? TL__TILED_SHADING_AUTO : in->o->tiled_shading;
+    in->tiled_compute = ts == TL_TILED_SHADING_COMPUTE;
 }
 
 /* The lighting model (forced, or GGX for materials authored for it) and the shaders' switches. */
@@ -408,6 +411,8 @@ static void tl__plan_choices(const tl__plan_input *in, tl_frame_plan *p)
         p->tile_size = in->tile_size;
         p->tiles_x = in->tiles_x;
         p->tiles_y = in->tiles_y;
+        if (!in->mode->forward)
+            p->tiled_shading = in->tiled_compute ? TL_TILED_SHADING_COMPUTE : TL_TILED_SHADING_FRAGMENT;
     }
 }
 

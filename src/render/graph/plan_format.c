@@ -96,7 +96,9 @@ size_t tl_frame_plan_format(const tl_frame_plan *p, char *buffer, size_t size)
                p->light_types & (1u << TL_LIGHT_DIRECTIONAL) ? " directional" : "", p->light_types ? "" : " none");
     tl__printf(&o, "light strategy: %s (%s)", tl_light_strategy_name(p->light_strategy), p->strategy_reason);
     if (p->light_strategy == TL_LIGHT_STRATEGY_TILED)
-        tl__printf(&o, "; %ux%u-pixel tiles, %u x %u", p->tile_size, p->tile_size, p->tiles_x, p->tiles_y);
+        tl__printf(&o, "; %ux%u-pixel tiles, %u x %u%s%s", p->tile_size, p->tile_size, p->tiles_x, p->tiles_y,
+                   p->tiled_shading ? ", shaded by a " : "", p->tiled_shading ? (p->tiled_shading == TL_TILED_SHADING_COMPUTE
+                                                                                   ? "compute pass" : "fragment pass") : "");
     tl__printf(&o, "\n");
     if (p->light_scale_reason[0])
         tl__printf(&o, "light scale: %g (%s)\n", (double)p->light_scale, p->light_scale_reason);

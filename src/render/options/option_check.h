@@ -33,7 +33,7 @@ int tl__why_say(tl__why *why, const char *fmt, ...) TL__PRINTF_LIKE(2, 3);
     X(tl_light_buffer, light_buffer, TL_LIGHT_BUFFER_COUNT_, "exact", "exact", "compact")                         \
     X(tl_light_format, light_format, TL_LIGHT_FORMAT_COUNT_, "rgba16f", "rgba16f", "r11g11b10f")                  \
     X(tl_light_strategy, light_strategy, TL_LIGHT_STRATEGY_COUNT_, "auto", "volumes", "tiled")                    \
-    X(tl_tiled_shading, tiled_shading, TL_TILED_SHADING_COUNT_, "fragment", "fragment", "compute")                \
+    X(tl_tiled_shading, tiled_shading, TL_TILED_SHADING_COUNT_, "auto", "fragment", "compute")                    \
     X(tl_lighting_model, lighting_model, TL_LIGHTING_COUNT_, "auto", "blinn-phong", "ggx")                        \
     X(tl_fresnel_layout, fresnel_layout, TL_FRESNEL_COUNT_, "two-sums", "two-sums", "nv")                         \
     X(tl_transparency, transparency, TL_TRANSPARENCY_COUNT_, "auto", "forward", "stipple")                        \

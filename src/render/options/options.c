@@ -26,7 +26,7 @@ const tl_option_info tl__frame_option_rows[] = {
     TL__OPT_ENUM(fresnel, tl_fresnel_layout, TL_FRESNEL_COUNT_, TL_FRESNEL_TWO_SUMS, NULL,
                  "thin-lpp with GGX: two specular sums (exact) or one, Schlick with n.v per pixel"),
     TL__OPT_UINT(tile_size, 8, 32, TL_OPTION_POW2, TL__TILE_SIZE_DEFAULT, "px", "tiled strategy: tile side"),
-    TL__OPT_ENUM(tiled_shading, tl_tiled_shading, TL_TILED_SHADING_COUNT_, TL_TILED_SHADING_FRAGMENT, NULL,
+    TL__OPT_ENUM(tiled_shading, tl_tiled_shading, TL_TILED_SHADING_COUNT_, 0, "auto: the planner picks",
                  "tiled strategy: the pass that shades the tiles"),
     TL__OPT_FLOAT(light_scale, 0.25, 1, TL_OPTION_POW2, 1, NULL, "per axis",
                   "thin-lpp: the light buffer's size against the frame's"),

@@ -74,7 +74,7 @@ const tl__pass_def tl__pass_msaa_classify = {
 static void tl__samples_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
     /* the compute tiled pass lights the edge pixels' samples in its own dispatch */
-    int compute = in->o->tiled_shading == TL_TILED_SHADING_COMPUTE;
+    int compute = in->tiled_compute;
     if (!tl__sample_edges(in) || (in->strategy == TL_LIGHT_STRATEGY_TILED && compute)) return;
     if (in->strategy == TL_LIGHT_STRATEGY_TILED)
         tl__pass_lights_tiled.declare(in, d);

@@ -61,7 +61,7 @@ const tl__pass_def tl__pass_light_cull = {
 
 /* ---- the tiled light pass ---------------------------------------------------------------------- */
 
-static int tl__compute_shading(const tl__plan_input *in) { return in->o->tiled_shading == TL_TILED_SHADING_COMPUTE; }
+static int tl__compute_shading(const tl__plan_input *in) { return in->tiled_compute; }
 
 static void tl__tiled_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
