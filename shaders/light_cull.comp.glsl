@@ -158,10 +158,13 @@ void main()
     // the light pass shades the light buffer's texels: a tile of the frame holds 4^shift times fewer
     pixels = (pixels + (1u << (2 * TL_LIGHT_SHIFT)) - 1u) >> (2 * TL_LIGHT_SHIFT);
 #endif
-    uint pairs = pixels * n, before = atomicAdd(tl_counters.z, pairs);
-    if (before > 0xFFFFFFFFu - pairs) atomicAdd(tl_counters.w, 1u);
     uint offset = n > 0u ? atomicAdd(tl_counters.x, n) : 0u;
-    if (n > 0u && offset + n > u_tiles.w) {
+    bool overflow = n > 0u && offset + n > u_tiles.w;
+    // the pairs the light pass will loop over: on overflow every light of the chunk
+    uint pairs = pixels * tl_tile_list_size(uvec2(overflow ? TL_TILE_OVERFLOW : offset, n), chunk);
+    uint before = atomicAdd(tl_counters.z, pairs);
+    if (before > 0xFFFFFFFFu - pairs) atomicAdd(tl_counters.w, 1u);
+    if (overflow) {
         atomicAdd(tl_counters.y, 1u);
         tl_tile_headers[index] = uvec2(TL_TILE_OVERFLOW, n);
         return;
