@@ -784,7 +784,8 @@ typedef struct tl_frame_stats {
                                                         (fragments shaded in the light pass) */
     uint64_t forward_light_pairs;       /**< forward: sum over drawn objects of the lights in their list */
     uint64_t light_pairs;               /**< pixel-light pairs the light pass shaded: fragments of the light
-                                             volumes; tiled: pixels x lists of their tiles (from the GPU) */
+                                             volumes; tiled: pixels x lists of their tiles (from the GPU), a tile
+                                             whose list overflowed x every light of its chunk (which it loops over) */
     uint32_t tile_overflows;            /**< tiled: tiles whose list did not fit and that looped over every
                                              visible light instead (none is lost; the lists grow for later frames) */
     uint64_t light_list_entries;        /**< tiled: entries of all tile lists */
@@ -1023,7 +1024,7 @@ typedef struct tl_light_pair_count {
  * per-sample lighting, or a mode whose depth is multisampled) is resolved as tl_renderer_read_target
  * resolves it, one sample per pixel: the count is per pixel, not per sample. Each light tests only
  * the pixels of a conservative screen rectangle around its range. Not a steady-frame call: it
- * allocates a float and a byte per pixel and waits for the GPU. TL_ERROR_INVALID_ARGUMENT before a
+ * allocates 17 bytes a pixel and waits for the GPU. TL_ERROR_INVALID_ARGUMENT before a
  * frame, or when the depth's memory was reused by a later pass (keep it with keep_targets).
  */
 TL_API tl_result tl_renderer_count_light_pairs(tl_renderer *r, tl_light_pair_count *out);
@@ -1031,20 +1032,23 @@ TL_API tl_result tl_renderer_count_light_pairs(tl_renderer *r, tl_light_pair_cou
 /** The ALU probe's figures (tl_renderer_light_probe). */
 typedef struct tl_light_probe_result {
     double ns_per_pair;   /**< GPU time per light evaluation: the light function's cost at its floor */
-    double ms;            /**< the timed dispatch */
+    double ms;            /**< the timed dispatch's evaluations (less the dispatch of 0 rounds) */
     uint64_t pairs;       /**< light evaluations it made */
     uint32_t lights;      /**< the lights it held in registers (up to 8 of the scene's local lights) */
-    int gpu_timed;        /**< 1: a GL timer query timed it; 0: the wall clock around a glFinish */
+    int gpu_timed;        /**< 1: GL timestamp queries timed it; 0: the wall clock around a glFinish */
 } tl_light_probe_result;
 /**
  * Times one compute dispatch that evaluates the frame's light function (tl_light_data_weights of
  * shaders/light_eval.glsl under the plan's lighting model, with the range and cone tests the light
  * passes make before it) for up to 8 of the scene's local lights (a unit point light when it has
  * none), loaded once into registers: no light list, no G-buffer read; every pair is in range and
- * faces its light and the eye, so the whole function runs. One invocation per pixel of the frame,
- * repeated until the dispatch takes at least about 2 ms; the fastest of three timings counts. Needs
- * compute shaders (every context thinlight runs on has them) and a scene; waits for the GPU. Not
- * a steady-frame call: it compiles its program on the first call.
+ * faces its light and the eye, so the whole function runs. One invocation per pixel of the frame
+ * (at least 4096), as many rounds over the 8 lights as make the evaluations take about 4 ms beyond
+ * a dispatch of 0 rounds (the launch and the wait), whose time is taken off; each the fastest of
+ * three. Timed by GL timestamp queries, or by the wall clock around the dispatch and a glFinish
+ * where the timestamps see less than half of it (llvmpipe). Needs compute shaders (every context
+ * thinlight runs on has them) and a scene; waits for the GPU. Not a steady-frame call: it compiles
+ * its program on the first call.
  */
 TL_API tl_result tl_renderer_light_probe(tl_renderer *r, tl_light_probe_result *out);
 
