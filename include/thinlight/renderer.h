@@ -1024,7 +1024,7 @@ typedef struct tl_light_pair_count {
  * per-sample lighting, or a mode whose depth is multisampled) is resolved as tl_renderer_read_target
  * resolves it, one sample per pixel: the count is per pixel, not per sample. Each light tests only
  * the pixels of a conservative screen rectangle around its range. Not a steady-frame call: it
- * allocates 17 bytes a pixel and waits for the GPU. TL_ERROR_INVALID_ARGUMENT before a
+ * allocates up to 18 bytes a cell and waits for the GPU. TL_ERROR_INVALID_ARGUMENT before a
  * frame, or when the depth's memory was reused by a later pass (keep it with keep_targets).
  */
 TL_API tl_result tl_renderer_count_light_pairs(tl_renderer *r, tl_light_pair_count *out);
@@ -1046,9 +1046,9 @@ typedef struct tl_light_probe_result {
  * (at least 4096), as many rounds over the 8 lights as make the evaluations take about 4 ms beyond
  * a dispatch of 0 rounds (the launch and the wait), whose time is taken off; each the fastest of
  * three. Timed by GL timestamp queries, or by the wall clock around the dispatch and a glFinish
- * where the timestamps see less than half of it (llvmpipe). Needs compute shaders (every context
- * thinlight runs on has them) and a scene; waits for the GPU. Not a steady-frame call: it compiles
- * its program on the first call.
+ * where the timestamps see less than half of it (llvmpipe). The lighting model is the plan's
+ * (Blinn-Phong before a scene). Needs compute shaders (every context thinlight runs on has them);
+ * waits for the GPU. Not a steady-frame call: it compiles its program on the first call.
  */
 TL_API tl_result tl_renderer_light_probe(tl_renderer *r, tl_light_probe_result *out);
 

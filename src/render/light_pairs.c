@@ -171,7 +171,8 @@ tl_result tl_renderer_count_light_pairs(tl_renderer *r, tl_light_pair_count *out
     const tl__camera_view *cam = &r->scene.frame_camera;
     tl__pair_grid g = {.w = r->graph.targets[depth_id].width, .h = r->graph.targets[depth_id].height,
                        .fw = r->desc.width, .fh = r->desc.height};
-    while (g.shift < 4 && (g.w << g.shift) < g.fw) g.shift++;
+    for (float scale = r->graph.plan.pub.light_scale; scale > 0.0f && scale < 1.0f && g.shift < 4; scale *= 2.0f)
+        g.shift++;
     res = tl_projection_perspective(r->desc.options.depth_format, cam->fov_y, (float)g.fw / (float)g.fh, cam->near_z,
                                     cam->far_z, &g.pr);
     if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: counting light pairs: no camera was resolved yet");

@@ -111,8 +111,6 @@ tl_result tl_renderer_light_probe(tl_renderer *r, tl_light_probe_result *out)
     memset(out, 0, sizeof *out);
     tl_result res = tl__need_context(&r->dev, "tl_renderer_light_probe");
     if (res != TL_OK) return res;
-    if (!r->graph.programs_ready && r->graph.plan.pub.pass_count == 0)
-        return tl__fail(&r->dev, TL_ERROR_INVALID_ARGUMENT, "renderer: the light probe needs a scene (its lighting model)");
     static const tl__program_src src = {"light.probe", NULL, NULL, "light_probe.comp.glsl"};
     tl__perm key;
     memset(&key, 0, sizeof key);
