@@ -1010,9 +1010,10 @@ typedef struct tl_light_pair_count {
     uint64_t surface_pixels;    /**< pixels with a surface (depth not at the clear value) */
     uint64_t directional_pairs; /**< surface_pixels x the directional lights: every surface pixel is lit by
                                      each; not in exact_pairs (local lights only) */
-    uint32_t width, height;     /**< the grid counted: the frame's, or the light buffer's below light_scale 1 */
+    uint32_t width;             /**< the grid counted: the frame's width, or the light buffer's below light_scale 1 */
+    uint32_t height;            /**< the grid's height */
     uint32_t local_lights;      /**< the scene's point and spot lights, all tested */
-    uint32_t directional_lights;
+    uint32_t directional_lights; /**< the scene's directional lights (directional_pairs) */
 } tl_light_pair_count;
 /**
  * Counts exactly, on the CPU, the pixel-light pairs of the last frame rendered (tl_renderer_render
