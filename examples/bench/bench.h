@@ -263,13 +263,27 @@ typedef struct bench_record {
     double cpu_ms_median;          /* CPU time the render call spends issuing commands */
     uint32_t gbuffer_bytes_per_pixel; /* depth + G-buffer + light buffer */
     uint64_t light_fragments[TL_LIGHT_TYPE_COUNT_];
-    uint64_t covered_pixels;       /* sum of light_fragments */
+    uint64_t light_fragment_sum;   /* sum of light_fragments, every type (the directional light's too): the
+                                      fragments the light volumes shaded past their range test; 0 for tiles */
+    uint64_t covered_pixels;       /* pixels with at least one local light in range (tl_light_pair_count) */
     uint32_t lights_drawn[TL_LIGHT_TYPE_COUNT_];
     uint64_t forward_light_pairs;
     uint32_t draw_calls, objects_drawn;
     uint64_t light_pairs;          /* pixel-light pairs the light pass shaded (tl_frame_stats.light_pairs) */
     double lighting_ms;            /* the passes that apply the lights: light-cull + lights or lights-tiled
                                       (deferred), light-cull + forward */
+    /* The roofline (docs/bandwidth.md, "Reading the results"): local lights only, at the grid the light
+     * pass shades. */
+    int pairs_counted;             /* exact_pairs and covered_pixels were counted (else absent) */
+    uint64_t exact_pairs;          /* pixel-light pairs in range (tl_renderer_count_light_pairs) */
+    int evaluated_known;           /* 0: forward's per-object lists (not countable per pixel): absent */
+    uint64_t evaluated_pairs;      /* what the strategy evaluated: tiled, pixels x their tiles' lists
+                                      (light_pairs); volumes, the local lights' fragments past the range test */
+    double probe_ns_own;           /* this record's renderer's ALU probe (tl_renderer_light_probe); NaN: none */
+    double probe_ns_per_pair;      /* the least probe_ns_own of the run at this size, light count and lighting
+                                      model (noise only adds time); NaN: absent */
+    double floor_ms;               /* exact_pairs x probe_ns_per_pair; NaN: absent */
+    double light_efficiency;       /* floor_ms / lighting_ms; NaN without a lighting time */
     tl_image_error ldr;            /* final image vs fat, RGB in 8-bit steps */
     tl_image_error edge_ldr;       /* the same over the edge pixels alone (bench_edges.c) */
     uint64_t edge_pixels;          /* how many pixels are edge pixels (0: no edge mask) */

@@ -113,31 +113,72 @@ static void bench__speedup_line(const bench_run *run, bench__summary *s, const c
     if (any) bench__say(s, "%s lights", line);
 }
 
-/* The fastest thin configuration against the fastest fat one at each count >= 256. */
+/* The fastest thin (thin-lpp, thin-deferred) and fat configurations at a light count. */
+static void bench__fastest(const bench_run *run, bench_size size, const bench_config *modes, size_t mode_count,
+                           uint32_t n, const bench_record **thin, const bench_record **fat)
+{
+    *thin = *fat = NULL;
+    for (size_t m = 0; m < mode_count; m++) {
+        const bench_record *r = bench_find(run, modes[m], n, size);
+        if (!r || !(r->ms_median > 0.0)) continue;
+        int is_thin = r->mode == TL_MODE_THIN_LPP || r->mode == TL_MODE_THIN_DEFERRED;
+        if (is_thin && (!*thin || r->ms_median < (*thin)->ms_median)) *thin = r;
+        if (r->mode == TL_MODE_FAT && (!*fat || r->ms_median < (*fat)->ms_median)) *fat = r;
+    }
+}
+
+/* Which pass of a frame takes the most of it (the light passes, cull + shading, counted as one):
+ * its name and share. */
+static const char *bench__dominant_pass(const bench_record *r, double *share)
+{
+    const char *name = "light pass (cull + shading)";
+    double most = r->lighting_ms;
+    for (int p = 0; p < TL_PASS_COUNT; p++) {
+        if (!(r->passes & (1u << p)) || p == TL_PASS_LIGHT_CULL || p == TL_PASS_LIGHTS || p == TL_PASS_LIGHTS_TILED ||
+            (r->mode == TL_MODE_FORWARD && p == TL_PASS_FORWARD))
+            continue;
+        if (r->pass_ms[p] > most) most = r->pass_ms[p], name = tl_pass_name((tl_pass)p);
+    }
+    *share = r->ms_median > 0.0 ? most / r->ms_median : NAN;
+    return name;
+}
+
+/* The fastest thin configuration against the fastest fat one at every light count, then which pass
+ * dominates the fastest thin frame at the largest count on this machine, and the light pass's
+ * efficiency there (the roofline). */
 static void bench__fastest_line(const bench_run *run, bench__summary *s, const char *at, bench_size size,
                                 const bench_config *modes, size_t mode_count)
 {
     const bench_options *opt = &run->opt;
     char line[BENCH__LINE];
-    snprintf(line, sizeof line, "%sfastest thin configuration over the fastest fat one:", at);
+    snprintf(line, sizeof line, "%sfastest thin configuration over the fastest fat one (frame time):", at);
     int any = 0;
+    const bench_record *thin = NULL, *fat = NULL;
     for (size_t li = 0; li < opt->light_count; li++) {
         uint32_t n = opt->lights[li];
-        const bench_record *thin = NULL, *fat = NULL;
-        if (n < 256) continue;
-        for (size_t m = 0; m < mode_count; m++) {
-            const bench_record *r = bench_find(run, modes[m], n, size);
-            if (!r || !(r->ms_median > 0.0)) continue;
-            int is_thin = r->mode == TL_MODE_THIN_LPP || r->mode == TL_MODE_THIN_DEFERRED;
-            if (is_thin && (!thin || r->ms_median < thin->ms_median)) thin = r;
-            if (r->mode == TL_MODE_FAT && (!fat || r->ms_median < fat->ms_median)) fat = r;
-        }
+        bench__fastest(run, size, modes, mode_count, n, &thin, &fat);
         if (!thin || !fat) continue;
         bench__add(line, "%s %s over %s %.2fx at %u", any ? "," : "", bench_config_name(thin->config),
                    bench_config_name(fat->config), bench_speedup(thin, fat), n);
         any = 1;
     }
-    if (any) bench__say(s, "%s lights", line);
+    if (!any) return;
+    bench__say(s, "%s lights", line);
+    if (!thin) return;
+    double share, light_share = thin->ms_median > 0.0 ? thin->lighting_ms / thin->ms_median : NAN;
+    char name[64];
+    const char *pass = bench__dominant_pass(thin, &share);
+    snprintf(name, sizeof name, "%s%s", pass, strstr(pass, "pass") ? "" : " pass");
+    char light[48] = "";
+    if (strcmp(pass, "light pass (cull + shading)") != 0)
+        snprintf(light, sizeof light, "; the light pass %.0f %%", 100.0 * light_share);
+    bench__say(s, "%sthe %s is %.0f %% of the fastest thin frame on this machine (%s, %u lights, %.2f ms%s)", at,
+               name, 100.0 * share, bench_config_name(thin->config), thin->lights, thin->ms_median, light);
+    if (fat && isfinite(thin->light_efficiency) && isfinite(fat->light_efficiency))
+        bench__say(s,
+                   "%slight efficiency (floor / light ms, the roofline table) at %u lights: %s %.2f, %s %.2f",
+                   at, thin->lights, bench_config_name(thin->config), thin->light_efficiency,
+                   bench_config_name(fat->config), fat->light_efficiency);
 }
 
 static void bench__scale_lines(const bench_run *run, bench__summary *s, const char *at, bench_size size);
@@ -167,8 +208,9 @@ static void bench__summarise(const bench_run *run, bench__summary *s)
                        fat->gbuffer_bytes_per_pixel, bench__gbuffer_only_bpp(sub), bench__gbuffer_only_bpp(fat),
                        bench__gbuffer_only_bpp(fat) ? 100.0 * bench__gbuffer_only_bpp(sub) / bench__gbuffer_only_bpp(fat) : 0.0,
                        sub->bytes_per_pixel, fat->bytes_per_pixel, sub->bytes_per_pixel_sum, fat->bytes_per_pixel_sum);
-        /* against fat, forward, forward+ and the subject's mode with the other strategies */
-        for (size_t m = 0; subject != ref && m < mode_count; m++) {
+        /* against fat, forward, forward+ and the subject's mode with the other strategies (not in
+         * --quick, whose few configurations would set the subject against fat's slowest strategy) */
+        for (size_t m = 0; !opt->quick && subject != ref && m < mode_count; m++) {
             tl_render_mode om = bench_config_mode(modes[m]);
             if (modes[m] == subject || (om != BENCH_REFERENCE && om != TL_MODE_FORWARD && om != bench_config_mode(subject)))
                 continue;
@@ -374,6 +416,76 @@ static void bench__scale_lines(const bench_run *run, bench__summary *s, const ch
     }
 }
 
+/* ---- the roofline ------------------------------------------------------------------------------ */
+
+static const char bench__roofline_caption[] =
+    "local lights only, at the grid the light pass shades; exact: pixel-light pairs in range (and cone), "
+    "counted on the CPU from the depth the light pass read; evaluated: the pairs the strategy evaluated "
+    "(tiles: pixels x their tiles' lists; volumes: fragments past the range test; forward's per-object "
+    "lists: -), over exact in brackets; probe: the ALU probe's ns per pair on this device (the least of the "
+    "run's probes at this size, light count and lighting model); floor = exact x "
+    "probe; efficiency = floor / light ms; covered: pixels with a local light in range";
+
+typedef struct bench__roofline_cells {
+    char exact[16], evaluated[32], probe[16], floor[16], eff[16], covered[16];
+} bench__roofline_cells;
+
+static void bench__roofline_row(const bench_record *r, bench__roofline_cells *c)
+{
+    bench__fmt(c->exact, sizeof c->exact, "%.3f", r->pairs_counted ? (double)r->exact_pairs * 1e-6 : NAN);
+    if (!r->evaluated_known) snprintf(c->evaluated, sizeof c->evaluated, "-");
+    else if (r->pairs_counted && r->exact_pairs)
+        snprintf(c->evaluated, sizeof c->evaluated, "%.3f (%.2fx)", (double)r->evaluated_pairs * 1e-6,
+                 (double)r->evaluated_pairs / (double)r->exact_pairs);
+    else snprintf(c->evaluated, sizeof c->evaluated, "%.3f", (double)r->evaluated_pairs * 1e-6);
+    bench__fmt(c->probe, sizeof c->probe, "%.3f", r->probe_ns_per_pair);
+    bench__fmt(c->floor, sizeof c->floor, "%.2f", r->floor_ms);
+    bench__fmt(c->eff, sizeof c->eff, "%.3f", r->light_efficiency);
+    bench__fmt(c->covered, sizeof c->covered, "%.0f", r->pairs_counted ? (double)r->covered_pixels : NAN);
+}
+
+static void bench__print_roofline(const bench_run *run, bench_size size)
+{
+    const bench_options *opt = &run->opt;
+    bench_config modes[BENCH_CONFIGS];
+    size_t mode_count = bench_render_modes(opt, modes);
+    printf("\nroofline at %ux%u: %s\n", size.width, size.height, bench__roofline_caption);
+    printf("%-27s %6s %8s %9s %16s %8s %8s %6s %9s\n", "config", "lights", "light ms", "exact M", "evaluated M",
+           "probe ns", "floor ms", "eff", "covered");
+    for (size_t m = 0; m < mode_count; m++) {
+        if (m) putchar('\n');
+        for (size_t li = 0; li < opt->light_count; li++) {
+            const bench_record *r = bench_find(run, modes[m], opt->lights[li], size);
+            if (!r) continue;
+            bench__roofline_cells c;
+            bench__roofline_row(r, &c);
+            printf("%-27s %6u %8.2f %9s %16s %8s %8s %6s %9s\n", bench_config_name(r->config), r->lights, r->lighting_ms,
+                   c.exact, c.evaluated, c.probe, c.floor, c.eff, c.covered);
+        }
+    }
+}
+
+static void bench__md_roofline(FILE *f, const bench_run *run, bench_size size)
+{
+    const bench_options *opt = &run->opt;
+    bench_config modes[BENCH_CONFIGS];
+    size_t mode_count = bench_render_modes(opt, modes);
+    fprintf(f, "\n#### Roofline, %ux%u\n\nThe light pass against its floor: %s.\n\n", size.width, size.height,
+            bench__roofline_caption);
+    fputs("| config | lights | light ms | exact Mpairs | evaluated Mpairs (x exact) | probe ns / pair | floor ms | "
+          "efficiency | covered px |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+          f);
+    for (size_t m = 0; m < mode_count; m++)
+        for (size_t li = 0; li < opt->light_count; li++) {
+            const bench_record *r = bench_find(run, modes[m], opt->lights[li], size);
+            if (!r) continue;
+            bench__roofline_cells c;
+            bench__roofline_row(r, &c);
+            fprintf(f, "| `%s` | %u | %.2f | %s | %s | %s | %s | %s | %s |\n", bench_config_name(r->config), r->lights,
+                    r->lighting_ms, c.exact, c.evaluated, c.probe, c.floor, c.eff, c.covered);
+        }
+}
+
 /* ---- stdout --------------------------------------------------------------------------------- */
 
 static void bench__fmt(char *buf, size_t size, const char *fmt, double v)
@@ -428,6 +540,7 @@ void bench_print_table(const bench_run *run)
             }
         }
     }
+    for (size_t si = 0; si < opt->size_count; si++) bench__print_roofline(run, opt->sizes[si]);
     for (size_t si = 0; si < opt->size_count; si++) bench__print_scales(run, opt->sizes[si]);
     bench__summary s = {0};
     bench__summarise(run, &s);
@@ -532,7 +645,9 @@ static void bench__json_record(tl_tool_json *j, const bench_record *r)
     }
     tl_tool_json_close(j, '}');
     tl_tool_json_num(j, "bytes_per_frame_estimate", r->bytes_moved);
-    tl_tool_json_uint(j, "covered_pixels", r->covered_pixels);
+    if (r->pairs_counted) tl_tool_json_uint(j, "covered_pixels", r->covered_pixels);
+    else tl_tool_json_num(j, "covered_pixels", NAN);
+    tl_tool_json_uint(j, "light_fragment_sum", r->light_fragment_sum);
     tl_tool_json_object(j, "light_fragments", 1);
     for (int t = TL_LIGHT_POINT; t < TL_LIGHT_TYPE_COUNT_; t++)
         tl_tool_json_uint(j, bench__light_type_name(t), r->light_fragments[t]);
@@ -547,6 +662,13 @@ static void bench__json_record(tl_tool_json *j, const bench_record *r)
     tl_tool_json_uint(j, "forward_light_pairs", r->forward_light_pairs);
     tl_tool_json_uint(j, "light_pairs", r->light_pairs);
     tl_tool_json_num(j, "light_ns_per_pair", bench_ns_per_pair(r));
+    if (r->pairs_counted) tl_tool_json_uint(j, "exact_pairs", r->exact_pairs);
+    else tl_tool_json_num(j, "exact_pairs", NAN);
+    if (r->evaluated_known) tl_tool_json_uint(j, "evaluated_pairs", r->evaluated_pairs);
+    else tl_tool_json_num(j, "evaluated_pairs", NAN);
+    tl_tool_json_num(j, "probe_ns_per_pair", r->probe_ns_per_pair);
+    tl_tool_json_num(j, "floor_ms", r->floor_ms);
+    tl_tool_json_num(j, "light_efficiency", r->light_efficiency);
     tl_tool_json_uint(j, "draw_calls", r->draw_calls);
     tl_tool_json_uint(j, "objects_drawn", r->objects_drawn);
     tl_tool_json_num(j, "psnr_db", r->ldr.psnr_db);
@@ -796,6 +918,7 @@ static int bench__write_doc(FILE *f, const void *ctx)
             run->timers_ok ? "GPU timer queries summed over the passes" : "wall clock (GPU timers unavailable)",
             run->light_definition);
     for (size_t si = 0; si < opt->size_count; si++) bench__md_table(f, run, opt->sizes[si]);
+    for (size_t si = 0; si < opt->size_count; si++) bench__md_roofline(f, run, opt->sizes[si]);
     for (size_t si = 0; si < opt->size_count; si++) bench__md_scales(f, run, opt->sizes[si]);
     bench__md_passes(f, run);
     bench__md_targets(f, run);

@@ -280,7 +280,7 @@ static void bench__summarise_frames(bench_run *run, tl_renderer *r, bench__sampl
     rec->bytes_moved = st->bytes_moved;
     for (int t = 0; t < TL_LIGHT_TYPE_COUNT_; t++) {
         rec->light_fragments[t] = st->light_fragments[t];
-        rec->covered_pixels += st->light_fragments[t];
+        rec->light_fragment_sum += st->light_fragments[t];
         rec->lights_drawn[t] = st->lights_drawn[t];
     }
     rec->forward_light_pairs = st->forward_light_pairs;
@@ -293,6 +293,58 @@ static void bench__summarise_frames(bench_run *run, tl_renderer *r, bench__sampl
     rec->lighting_ms = rec->pass_ms[TL_PASS_LIGHT_CULL] +
                        (rec->mode == TL_MODE_FORWARD ? rec->pass_ms[TL_PASS_FORWARD]
                                                      : rec->pass_ms[TL_PASS_LIGHTS] + rec->pass_ms[TL_PASS_LIGHTS_TILED]);
+}
+
+/* The roofline of the last frame: its exact pairs counted, what the strategy evaluated, the ALU
+ * probe's cost per pair on this device (the floor and the efficiency follow once every record has
+ * probed: bench__roofline_finish). A figure that cannot be had is absent (NaN, null in the JSON)
+ * after a warning, never guessed. */
+static void bench__roofline(bench_run *run, tl_renderer *r, const tl_frame_stats *st, bench_record *rec)
+{
+    rec->evaluated_known = rec->strategy == TL_LIGHT_STRATEGY_TILED || rec->mode != TL_MODE_FORWARD;
+    rec->evaluated_pairs = rec->strategy == TL_LIGHT_STRATEGY_TILED
+                               ? st->light_pairs
+                               : st->light_fragments[TL_LIGHT_POINT] + st->light_fragments[TL_LIGHT_SPOT];
+    if (!rec->evaluated_known) rec->evaluated_pairs = 0;
+    rec->probe_ns_own = rec->probe_ns_per_pair = rec->floor_ms = rec->light_efficiency = NAN;
+    tl_light_pair_count count;
+    tl_light_probe_result probe;
+    char line[512];
+    if (tl_renderer_count_light_pairs(r, &count) == TL_OK) {
+        rec->pairs_counted = 1;
+        rec->exact_pairs = count.exact_pairs;
+        rec->covered_pixels = count.covered_pixels;
+    } else {
+        snprintf(line, sizeof line, "%s: no exact pairs: %s", bench_config_name(rec->config), tl_renderer_last_error(r));
+        tl_tool_log_message(&run->log, TL_LOG_WARNING, line);
+    }
+    if (tl_renderer_light_probe(r, &probe) == TL_OK) {
+        rec->probe_ns_own = probe.ns_per_pair;
+    } else {
+        snprintf(line, sizeof line, "%s: no light probe: %s", bench_config_name(rec->config), tl_renderer_last_error(r));
+        tl_tool_log_message(&run->log, TL_LOG_WARNING, line);
+    }
+}
+
+/* The probe's cost per pair of a record: the least of the run's probes at its size, light count and
+ * lighting model (one per configuration's renderer; a busy machine only adds time, so the least is
+ * the floor's best estimate), then the floor and the efficiency. */
+static void bench__roofline_finish(bench_run *run)
+{
+    for (size_t i = 0; i < run->record_count; i++) {
+        bench_record *rec = &run->records[i];
+        double least = INFINITY;
+        for (size_t k = 0; k < run->record_count; k++) {
+            const bench_record *o = &run->records[k];
+            if (o->lights == rec->lights && o->width == rec->width && o->height == rec->height &&
+                o->lighting == rec->lighting && o->probe_ns_own < least)
+                least = o->probe_ns_own;
+        }
+        rec->probe_ns_per_pair = isfinite(least) ? least : NAN;
+        if (rec->pairs_counted && isfinite(rec->probe_ns_per_pair))
+            rec->floor_ms = (double)rec->exact_pairs * rec->probe_ns_per_pair * 1e-6;
+        if (rec->lighting_ms > 0.0 && isfinite(rec->floor_ms)) rec->light_efficiency = rec->floor_ms / rec->lighting_ms;
+    }
 }
 
 /* Reads the frame's images (into the reference buffers for fat) and measures the error. */
@@ -570,6 +622,7 @@ static int bench__sweep_lights(bench_run *run, bench__size_state *s, const bench
     for (size_t m = first; m < first + count; m++) {
         bench_record *rec = &job->recs[m];
         bench__summarise_frames(run, s->renderers[m], &s->samples[m], fb.pixels, rec);
+        bench__roofline(run, s->renderers[m], &s->samples[m].last, rec);
         if (bench__images(s->renderers[m], rec, &fb)) return 1;
         if (m == 0 && !s->fb.edge_done) { /* the first fat: the size's edge mask, then its own edge error */
             if (bench__edge_probe(run, s->renderers[m], modes[m], job->size, &s->fb)) return 1;
@@ -765,6 +818,7 @@ int bench_sweep(bench_run *run, bench_scene *scene)
     run->load_start = tl_tool_load_average();
     for (size_t si = 0; !err && si < opt->size_count; si++)
         err = bench__sweep_size(run, ctx, scene, opt->sizes[si], &progress, &done);
+    if (!err) bench__roofline_finish(run);
     if (!err) err = bench__planning_times(run, ctx, scene, &progress, &done);
     if (!err) err = bench_effects_measure(run, ctx, scene, &progress, &done);
     if (!err) err = bench_aa_measure(run, ctx, scene, &progress, &done);

@@ -789,7 +789,8 @@ typedef struct tl_frame_stats {
                                                         (fragments shaded in the light pass) */
     uint64_t forward_light_pairs;       /**< forward: sum over drawn objects of the lights in their list */
     uint64_t light_pairs;               /**< pixel-light pairs the light pass shaded: fragments of the light
-                                             volumes; tiled: pixels x lists of their tiles (from the GPU) */
+                                             volumes; tiled: pixels x lists of their tiles (from the GPU), a tile
+                                             whose list overflowed x every light of its chunk (which it loops over) */
     uint32_t tile_overflows;            /**< tiled: tiles whose list did not fit and that looped over every
                                              visible light instead (none is lost; the lists grow for later frames) */
     uint64_t light_list_entries;        /**< tiled: entries of all tile lists */
@@ -999,6 +1000,63 @@ TL_API tl_result tl_renderer_render(tl_renderer *r, const tl_camera *camera, tl_
  *  and, when `stats` is non-NULL, gives the last frame's statistics. Also reports GL errors the
  *  frames raised (TL_ERROR_GL). */
 TL_API tl_result tl_renderer_wait(tl_renderer *r, tl_frame_stats *stats);
+
+/*
+ * The light pass's roofline (docs/bandwidth.md, "Reading the results"): the work a frame must do
+ * and what one unit of it costs at best, to set beside tl_frame_stats.light_pairs (what the
+ * strategy evaluated) and the light passes' time.
+ */
+/** The exact pixel-light pairs of the last rendered frame (tl_renderer_count_light_pairs). */
+typedef struct tl_light_pair_count {
+    uint64_t exact_pairs;       /**< pairs of a pixel and a local (point or spot) light whose surface point
+                                     lies inside the light's range and, for a spot, its outer cone: the
+                                     shaders' own tests (d^2 < r^2; dot(-to_light, axis) > cos_outer d) */
+    uint64_t covered_pixels;    /**< pixels with at least one local light in range */
+    uint64_t surface_pixels;    /**< pixels with a surface (depth not at the clear value) */
+    uint64_t directional_pairs; /**< surface_pixels x the directional lights: every surface pixel is lit by
+                                     each; not in exact_pairs (local lights only) */
+    uint32_t width;             /**< the grid counted: the frame's width, or the light buffer's below light_scale 1 */
+    uint32_t height;            /**< the grid's height */
+    uint32_t local_lights;      /**< the scene's point and spot lights, all tested */
+    uint32_t directional_lights; /**< the scene's directional lights (directional_pairs) */
+} tl_light_pair_count;
+/**
+ * Counts exactly, on the CPU, the pixel-light pairs of the last frame rendered (tl_renderer_render
+ * or render_to), from the depth the light pass read, read back (a glGetTextureImage and a wait),
+ * and the renderer's lights in the frame's view space, through the same camera. A pixel's point
+ * is reconstructed as the light pass does (its centre, the depth's linear distance); at a
+ * light_scale below 1 the grid is the light buffer's, each texel at the pixel its reduced depth came
+ * from (TL_TARGET_LIGHT_DEPTH and TL_TARGET_LIGHT_OFFSET). A multisampled depth (MSAA with
+ * per-sample lighting, or a mode whose depth is multisampled) is resolved as tl_renderer_read_target
+ * resolves it, one sample per pixel: the count is per pixel, not per sample. Each light tests only
+ * the pixels of a conservative screen rectangle around its range. Not a steady-frame call: it
+ * allocates up to 18 bytes a cell and waits for the GPU. TL_ERROR_INVALID_ARGUMENT before a
+ * frame, or when the depth's memory was reused by a later pass (keep it with keep_targets).
+ */
+TL_API tl_result tl_renderer_count_light_pairs(tl_renderer *r, tl_light_pair_count *out);
+
+/** The ALU probe's figures (tl_renderer_light_probe). */
+typedef struct tl_light_probe_result {
+    double ns_per_pair;   /**< GPU time per light evaluation: the light function's cost at its floor */
+    double ms;            /**< the timed dispatch's evaluations (less the dispatch of 0 rounds) */
+    uint64_t pairs;       /**< light evaluations it made */
+    uint32_t lights;      /**< the lights it held in registers (up to 8 of the scene's local lights) */
+    int gpu_timed;        /**< 1: GL timestamp queries timed it; 0: the wall clock around a glFinish */
+} tl_light_probe_result;
+/**
+ * Times one compute dispatch that evaluates the frame's light function (tl_light_data_weights of
+ * shaders/light_eval.glsl under the plan's lighting model, with the range and cone tests the light
+ * passes make before it) for up to 8 of the scene's local lights (a unit point light when it has
+ * none), loaded once into registers: no light list, no G-buffer read; every pair is in range and
+ * faces its light and the eye, so the whole function runs. One invocation per pixel of the frame
+ * (at least 4096), as many rounds over the 8 lights as make the evaluations take about 4 ms beyond
+ * a dispatch of 0 rounds (the launch and the wait), whose time is taken off; each the fastest of
+ * three. Timed by GL timestamp queries, or by the wall clock around the dispatch and a glFinish
+ * where the timestamps see less than half of it (llvmpipe). The lighting model is the plan's
+ * (Blinn-Phong before a scene). Needs compute shaders (every context thinlight runs on has them);
+ * waits for the GPU. Not a steady-frame call: it compiles its program on the first call.
+ */
+TL_API tl_result tl_renderer_light_probe(tl_renderer *r, tl_light_probe_result *out);
 
 /** A framebuffer owned by the caller (GL name; 0 is the context's default framebuffer). */
 typedef struct tl_render_output {
