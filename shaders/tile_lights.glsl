@@ -1,6 +1,6 @@
 // A pixel's light sums from the tile lists (tiles.glsl): one light's clamped terms, and the
 // directional lights plus the lists of its tile. The tiled light pass (lights_tiled.glsl) and the
-// light scale's fix-up in the material pass (light_upsample.glsl) sum with these.
+// light scale's re-lit pixels in light-upsample (light_upsample.comp.glsl) sum with these.
 #ifndef TL_TILE_LIGHTS_GLSL
 #define TL_TILE_LIGHTS_GLSL
 
