@@ -780,7 +780,7 @@ typedef struct tl_frame_stats {
     double wall_ms;                     /**< render call start to GPU done; synchronous statistics only, else 0 */
     size_t target_bytes[TL_TARGET_COUNT]; /**< bytes each allocated target occupies; 0 = not allocated */
     size_t gbuffer_bytes;               /**< depth + RT0 + RT1 + FAT_* (no effect target, no light lists) */
-    size_t light_buffer_bytes;          /**< LIGHT_DIFFUSE + LIGHT_SPECULAR + LIGHT_FRESNEL */
+    size_t light_buffer_bytes;          /**< LIGHT_DIFFUSE + LIGHT_SPECULAR + LIGHT_FRESNEL (+ their LIGHT_REDUCED_* copies) */
     size_t total_target_bytes;          /**< sum of target_bytes */
     size_t allocated_target_bytes;      /**< memory the targets actually occupy (shared blocks once) */
     uint32_t objects_drawn;             /**< after frustum culling, per geometry pass */
@@ -795,8 +795,9 @@ typedef struct tl_frame_stats {
     uint64_t light_list_entries;        /**< tiled: entries of all tile lists */
     uint32_t draw_calls;                /**< GL draw calls of the frame */
     uint32_t programs_compiled;         /**< shader programs compiled so far by this renderer (cache misses) */
-    uint64_t relit_pixels;              /**< light_scale below 1: pixels the edge fix-up re-lit at full resolution
-                                             (fragments: a pixel two coplanar surfaces both draw counts twice) */
+    uint64_t relit_pixels;              /**< light_scale below 1: pixels light-upsample's edge fix-up re-lit at full
+                                             resolution, each once; MSAA in thin-lpp: the material pass's re-lit
+                                             fragments (a sample two coplanar surfaces both draw counts twice) */
     double relit_fraction;              /**< relit_pixels over the frame's pixels */
     uint32_t shadow_lights;             /**< casting lights with a map this frame (their views in the atlas):
                                              the budget's, plus for 8 frames those leaving it (fading out) */
