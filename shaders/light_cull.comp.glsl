@@ -158,8 +158,10 @@ void main()
     // the light pass shades the light buffer's texels: a tile of the frame holds 4^shift times fewer
     pixels = (pixels + (1u << (2 * TL_LIGHT_SHIFT)) - 1u) >> (2 * TL_LIGHT_SHIFT);
 #endif
+#ifndef TL_CULL_NO_PAIRS // the volumes light at a light scale: the lists serve light-upsample's re-lit pixels only
     uint pairs = pixels * n, before = atomicAdd(tl_counters.z, pairs);
     if (before > 0xFFFFFFFFu - pairs) atomicAdd(tl_counters.w, 1u);
+#endif
     uint offset = n > 0u ? atomicAdd(tl_counters.x, n) : 0u;
     if (n > 0u && offset + n > u_tiles.w) {
         atomicAdd(tl_counters.y, 1u);

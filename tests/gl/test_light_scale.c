@@ -717,6 +717,11 @@ TL_TEST(light_scale_relit_count_half_the_frame)
                    strategy_name(), (double)scales[k], relit, band, (unsigned long long)stats.relit_pixels,
                    stats.relit_fraction, worst);
             TL_CHECK(stats.relit_pixels >= relit && stats.relit_pixels <= relit + band);
+            if (g_strategy == TL_LIGHT_STRATEGY_VOLUMES) { /* the volumes' pairs, not light-cull's (it runs for the fix-up) */
+                uint64_t fragments = 0;
+                for (int t = 0; t < TL_LIGHT_TYPE_COUNT_; t++) fragments += stats.light_fragments[t];
+                TL_CHECK(stats.light_pairs == fragments && fragments > 0);
+            }
             TL_CHECK(fabs(stats.relit_fraction - (double)stats.relit_pixels / (W * H)) < 1e-12);
             if (k == 0) TL_CHECK_EQ_U(stats.relit_pixels, 0);
             if (k == 2) TL_CHECK(relit > (size_t)W * H / 4); /* far more than an edge's pixels */

@@ -52,6 +52,8 @@ static void tl__cull_permute(const tl__plan_input *in, const tl__pass_decl *d, t
         if (d->samples & TL__B(DEPTH_MSAA)) tl__perm_flag(&out->slot[0], TL__F_CULL_DEPTH_MSAA);
     } else if (in->light_shift) {
         tl__perm_value(&out->slot[0], TL__V_LIGHT_SHIFT, in->light_shift);
+        /* with volumes the lists serve light-upsample's re-lit pixels: the volumes count the pairs */
+        if (!tl__tiled(in)) tl__perm_flag(&out->slot[0], TL__F_CULL_NO_PAIRS);
     }
 }
 
