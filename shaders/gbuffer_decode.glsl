@@ -22,7 +22,24 @@ int tl_gbuffer_sample = 0; // the sample read, unless the pass is the per-sample
 #endif
 
 #ifdef TL_LIGHT_SHIFT
-// The light scale: the light pass reads the reduced depth and RT0 (light_reduce.frag.glsl)
+// The light scale: the light pass writes the reduced light buffer (LIGHT_REDUCED_*, which
+// light-upsample makes the full-size one of) under the names it has at scale 1
+#ifdef TL_OUT_LIGHT_REDUCED_DIFFUSE
+#define TL_OUT_LIGHT_DIFFUSE TL_OUT_LIGHT_REDUCED_DIFFUSE
+#endif
+#ifdef TL_OUT_LIGHT_REDUCED_SPECULAR
+#define TL_OUT_LIGHT_SPECULAR TL_OUT_LIGHT_REDUCED_SPECULAR
+#endif
+#ifdef TL_OUT_LIGHT_REDUCED_FRESNEL
+#define TL_OUT_LIGHT_FRESNEL TL_OUT_LIGHT_REDUCED_FRESNEL
+#endif
+#undef TL_IMAGE_LIGHT_DIFFUSE
+#define TL_IMAGE_LIGHT_DIFFUSE TL_IMAGE_LIGHT_REDUCED_DIFFUSE
+#undef TL_IMAGE_LIGHT_SPECULAR
+#define TL_IMAGE_LIGHT_SPECULAR TL_IMAGE_LIGHT_REDUCED_SPECULAR
+#undef TL_IMAGE_LIGHT_FRESNEL
+#define TL_IMAGE_LIGHT_FRESNEL TL_IMAGE_LIGHT_REDUCED_FRESNEL
+// and reads the reduced depth and RT0 (light_reduce.frag.glsl)
 layout(binding = TL_UNIT_LIGHT_DEPTH) uniform sampler2D u_depth;
 layout(binding = TL_UNIT_LIGHT_RT0) uniform sampler2D u_rt0;
 layout(binding = TL_UNIT_LIGHT_OFFSET) uniform sampler2D u_light_offset;

@@ -311,6 +311,8 @@ void main()
         tl_tile_headers[index] = uvec2(offset, k - offset); /* never an entry that was not written */
     }
     // the pixel-light pairs the light pass evaluates: each entry over the pixels of its blocks
+#ifndef TL_CULL_NO_PAIRS // the volumes light at a light scale: the lists serve light-upsample's re-lit pixels only
     uint before = atomicAdd(tl_counters.z, pairs);
     if (before > 0xFFFFFFFFu - pairs) atomicAdd(tl_counters.w, 1u);
+#endif
 }

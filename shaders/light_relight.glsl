@@ -1,6 +1,6 @@
-// Re-lighting one pixel of the material pass from light lists, where the light buffer has no
-// texel of its surface: the light scale's edge fix-up (light_upsample.glsl) and MSAA's edge
-// samples (light_msaa.glsl). TL_RELIGHT_TILES: the tiled lists of the pixel's tile; otherwise the
+// Re-lighting one sample of the material pass from light lists, where the light buffer has no
+// texel of its surface: MSAA's edge samples (light_msaa.glsl; the light scale re-lights its pixels
+// in light-upsample, light_upsample.comp.glsl). TL_RELIGHT_TILES: the tiled lists of the pixel's tile; otherwise the
 // object's own list (the forward path's). Also what both read of the G-buffer and the fix-up
 // buffer, where re-lit pixels are counted.
 #ifndef TL_LIGHT_RELIGHT_GLSL
@@ -36,8 +36,7 @@ float tl_relight_linear_depth(float d)
     return tl_depth_linearize(d, u_depth_params.x, u_depth_params.y, u_depth_params.z, u_depth_params.w > 0.5);
 }
 
-// Adds w times the light buffer's texel q to the sums (the light scale's weighted texels, MSAA's
-// own texel with w = 1).
+// Adds w times the light buffer's texel q to the sums (MSAA's own texel with w = 1).
 void tl_light_texel_add(ivec2 q, float w, inout vec4 ld, inout vec3 ls, inout vec3 lf)
 {
     ld += w * texelFetch(u_light_diffuse, q, 0);

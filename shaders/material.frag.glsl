@@ -34,14 +34,11 @@ vec3 tl_finite(vec3 c) // FP16 sums of many bright lights can reach Inf: keep ta
 // files are included once, at their first #include: the ones both blocks below use come first
 #include "object.glsl"
 #include "tiles.glsl"
-#if (defined(TL_UPSAMPLE) || defined(TL_MSAA_LIGHT) || defined(TL_STIPPLE)) && !defined(TL_NO_LIGHTS)
+#if (defined(TL_MSAA_LIGHT) || defined(TL_STIPPLE)) && !defined(TL_NO_LIGHTS)
 #include "light_loop.glsl" // the one light loop: the re-lighting's and the stipple's
 #endif
-#if (defined(TL_UPSAMPLE) || defined(TL_MSAA_LIGHT)) && !defined(TL_NO_LIGHTS)
-#include "light_relight.glsl" // re-lighting from lists: the light scale's fix-up and MSAA's edges
-#endif
-#if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
-#include "light_upsample.glsl"
+#if defined(TL_MSAA_LIGHT) && !defined(TL_NO_LIGHTS)
+#include "light_relight.glsl" // re-lighting from lists: MSAA's edges
 #endif
 #if defined(TL_STIPPLE) && !defined(TL_NO_LIGHTS)
 #include "stipple_opaque.glsl" // transparent layers took some of the G-buffer's pixels
@@ -52,11 +49,6 @@ vec3 tl_finite(vec3 c) // FP16 sums of many bright lights can reach Inf: keep ta
 
 void main()
 {
-#if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
-    // the light scale: the pixel's view depth and its plane's slope, before any discard
-    float z_f = tl_relight_linear_depth(gl_FragCoord.z);
-    vec2 dz = vec2(dFdx(z_f), dFdy(z_f));
-#endif
 #if defined(TL_MSAA_LIGHT) && !defined(TL_NO_LIGHTS)
     vec2 dzw = vec2(dFdx(gl_FragCoord.z), dFdy(gl_FragCoord.z)); // MSAA: the fragment's depth slope
 #endif
@@ -73,18 +65,14 @@ void main()
 #else
     float relight_gloss = s.gloss;
 #endif
-#if defined(TL_UPSAMPLE) && !defined(TL_NO_LIGHTS)
-    // HDR's alpha (read by no pass) marks the pixels the fix-up re-lit: 0.5 (tests, the figures)
-#if !defined(TL_MODEL) || TL_MODEL != 1 // unlit takes no light: never re-lit
-    if (tl_upsample_light(z_f, dz, any(greaterThan(s.specular, vec3(0.0))), diffuse, specular, fresnel)) alpha = 0.5;
-#endif
-#elif defined(TL_MSAA_LIGHT) && !defined(TL_NO_LIGHTS)
+#if defined(TL_MSAA_LIGHT) && !defined(TL_NO_LIGHTS)
+    // HDR's alpha (read by no pass) marks the samples re-lit here: 0.5 (tests)
     if (tl_msaa_light(dzw, tl_material_normal(), relight_gloss, diffuse, specular, fresnel))
-        alpha = 0.5; // re-lit here, as the light scale's fix-up marks its pixels
+        alpha = 0.5;
 #elif defined(TL_STIPPLE) && !defined(TL_NO_LIGHTS)
     if (tl_stipple_opaque_light(z_s, dz_s, tl_material_normal(), relight_gloss, any(greaterThan(s.specular, vec3(0.0))),
                                 diffuse, specular, fresnel))
-        alpha = 0.5; // lit here, as the light scale's fix-up marks its pixels
+        alpha = 0.5; // lit here, as MSAA's re-lit samples are marked
 #elif !defined(TL_NO_LIGHTS)
     ivec2 px = ivec2(gl_FragCoord.xy);
     vec4 ld = texelFetch(u_light_diffuse, px, 0);

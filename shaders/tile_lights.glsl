@@ -1,6 +1,7 @@
 // A pixel's light sums from the tile lists, as the tiled light pass (lights_tiled.glsl), the
-// re-lighting (light_relight.glsl) and the light scale's fix-up (light_upsample.glsl) call them:
-// thin wrappers of the one light loop (light_loop.glsl), which walks the lists and sums.
+// re-lighting (light_relight.glsl) and the light scale's re-lit pixels in light-upsample
+// (light_upsample.comp.glsl) call them: thin wrappers of the one light loop (light_loop.glsl),
+// which walks the lists and sums.
 #ifndef TL_TILE_LIGHTS_GLSL
 #define TL_TILE_LIGHTS_GLSL
 

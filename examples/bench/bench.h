@@ -292,7 +292,7 @@ typedef struct bench_record {
     tl_image_error edge_scale1_ldr; /* the same over the edge pixels */
     uint64_t relit_pixels;         /* tl_frame_stats.relit_pixels of the last frame */
     double relit_fraction;         /* tl_frame_stats.relit_fraction of the last frame */
-    double relit_fraction_marked;  /* HDR pixels the material pass marked re-lit (alpha 0.5) over all */
+    double relit_fraction_marked;  /* HDR pixels the material pass marked re-lit (alpha 0.5) over all (0 with light-upsample) */
     tl_image_error hdr;            /* HDR target vs fat, RGB, peak = fat's largest value */
     double hdr_peak;
     uint64_t nan_pixels;           /* pixels with a NaN or Inf channel in the HDR target */

@@ -305,7 +305,7 @@ static void bench__err_cell(char *buf, size_t size, const tl_image_error *e, int
 }
 
 typedef struct bench__scale_cells {
-    char fat[24], edge_fat[24], s1[24], edge_s1[24], relit[16], marked[16], reduce[16], material[16];
+    char fat[24], edge_fat[24], s1[24], edge_s1[24], relit[16], reduce[16], upsample[16], material[16];
 } bench__scale_cells;
 
 static void bench__scale_row(const bench_record *r, bench__scale_cells *c)
@@ -313,27 +313,24 @@ static void bench__scale_row(const bench_record *r, bench__scale_cells *c)
     int ref = r->mode == BENCH_REFERENCE, scaled = bench_config_scaled(r->config);
     bench__fmt(c->reduce, sizeof c->reduce, "%.2f",
                r->passes & (1u << TL_PASS_LIGHT_REDUCE) ? r->pass_ms[TL_PASS_LIGHT_REDUCE] : NAN);
+    bench__fmt(c->upsample, sizeof c->upsample, "%.2f",
+               r->passes & (1u << TL_PASS_LIGHT_UPSAMPLE) ? r->pass_ms[TL_PASS_LIGHT_UPSAMPLE] : NAN);
     bench__fmt(c->material, sizeof c->material, "%.2f",
                r->passes & (1u << TL_PASS_MATERIAL) ? r->pass_ms[TL_PASS_MATERIAL] : NAN);
     bench__err_cell(c->fat, sizeof c->fat, &r->ldr, !ref);
     bench__err_cell(c->edge_fat, sizeof c->edge_fat, &r->edge_ldr, !ref && r->edge_pixels);
     bench__err_cell(c->s1, sizeof c->s1, &r->scale1_ldr, r->has_scale1);
     bench__err_cell(c->edge_s1, sizeof c->edge_s1, &r->edge_scale1_ldr, r->has_scale1 && r->edge_pixels);
-    if (scaled) {
-        snprintf(c->relit, sizeof c->relit, "%.2f", 100.0 * r->relit_fraction);
-        snprintf(c->marked, sizeof c->marked, "%.2f", 100.0 * r->relit_fraction_marked);
-    } else {
-        snprintf(c->relit, sizeof c->relit, "-");
-        snprintf(c->marked, sizeof c->marked, "-");
-    }
+    if (scaled) snprintf(c->relit, sizeof c->relit, "%.2f", 100.0 * r->relit_fraction);
+    else snprintf(c->relit, sizeof c->relit, "-");
 }
 
 static const char bench__scale_caption[] =
     "error of the final image against fat at full resolution and against thin-lpp at light scale 1, over "
     "the whole frame and over the edge pixels alone (within " BENCH__STR(BENCH_EDGE_RADIUS) " pixels of a depth "
     "discontinuity or a normal crease of fat's frame), as PSNR dB / max error in 8-bit steps; ms: GPU time, "
-    "median; reduce, light, material: those passes' ms (light: cull + lights); re-lit %: "
-    "tl_frame_stats.relit_fraction; marked %: HDR pixels the material pass marked re-lit (alpha 0.5)";
+    "median; reduce, light, upsample, material: those passes' ms (light: cull + lights; upsample: light-upsample, "
+    "which also re-lights the edge pixels); re-lit %: tl_frame_stats.relit_fraction";
 
 static void bench__print_scales(const bench_run *run, bench_size size)
 {
@@ -345,8 +342,8 @@ static void bench__print_scales(const bench_run *run, bench_size size)
     printf("\nlight scales at %ux%u (edge pixels: %.1f %% of the frame): %s\n", size.width, size.height,
            any && any->edge_pixels ? 100.0 * (double)any->edge_pixels / ((double)size.width * size.height) : 0.0,
            bench__scale_caption);
-    printf("%-27s %6s %8s %7s %8s %8s %5s %7s %8s %11s %11s %11s %11s\n", "config", "lights", "ms med", "reduce",
-           "light", "material", "B/px", "re-lit%", "marked%", "vs fat", "edge fat", "vs scale 1", "edge s1");
+    printf("%-27s %6s %8s %7s %8s %8s %8s %5s %7s %11s %11s %11s %11s\n", "config", "lights", "ms med", "reduce",
+           "light", "upsample", "material", "B/px", "re-lit%", "vs fat", "edge fat", "vs scale 1", "edge s1");
     for (size_t li = 0; li < opt->light_count; li++) {
         if (li) putchar('\n');
         for (size_t m = 0; m < n; m++) {
@@ -354,9 +351,9 @@ static void bench__print_scales(const bench_run *run, bench_size size)
             if (!r) continue;
             bench__scale_cells c;
             bench__scale_row(r, &c);
-            printf("%-27s %6u %8.2f %7s %8.2f %8s %5u %7s %8s %11s %11s %11s %11s\n", bench_config_name(r->config),
-                   r->lights, r->ms_median, c.reduce, r->lighting_ms, c.material, r->bytes_per_pixel, c.relit, c.marked,
-                   c.fat, c.edge_fat, c.s1, c.edge_s1);
+            printf("%-27s %6u %8.2f %7s %8.2f %8s %8s %5u %7s %11s %11s %11s %11s\n", bench_config_name(r->config),
+                   r->lights, r->ms_median, c.reduce, r->lighting_ms, c.upsample, c.material, r->bytes_per_pixel,
+                   c.relit, c.fat, c.edge_fat, c.s1, c.edge_s1);
         }
     }
 }
@@ -369,7 +366,7 @@ static void bench__md_scales(FILE *f, const bench_run *run, bench_size size)
     if (!n) return;
     fprintf(f, "\n#### Light scales, %ux%u\n\nThin-lpp with its light buffer at 1/2 and 1/4 per axis: %s.\n\n",
             size.width, size.height, bench__scale_caption);
-    fputs("| config | lights | ms median | reduce ms | light ms | material ms | B/px | re-lit % | marked % | "
+    fputs("| config | lights | ms median | reduce ms | light ms | upsample ms | material ms | B/px | re-lit % | "
           "vs fat | edge vs fat | vs scale 1 | edge vs scale 1 |\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
           "---:|---:|\n",
           f);
@@ -379,9 +376,9 @@ static void bench__md_scales(FILE *f, const bench_run *run, bench_size size)
             if (!r) continue;
             bench__scale_cells c;
             bench__scale_row(r, &c);
-            fprintf(f, "| `%s` | %u | %.2f | %s | %.2f | %s | %u | %s | %s | %s | %s | %s | %s |\n",
-                    bench_config_name(r->config), r->lights, r->ms_median, c.reduce, r->lighting_ms, c.material,
-                    r->bytes_per_pixel, c.relit, c.marked, c.fat, c.edge_fat, c.s1, c.edge_s1);
+            fprintf(f, "| `%s` | %u | %.2f | %s | %.2f | %s | %s | %u | %s | %s | %s | %s | %s |\n",
+                    bench_config_name(r->config), r->lights, r->ms_median, c.reduce, r->lighting_ms, c.upsample,
+                    c.material, r->bytes_per_pixel, c.relit, c.fat, c.edge_fat, c.s1, c.edge_s1);
         }
 }
 
@@ -726,7 +723,8 @@ static int bench__write_json(FILE *f, const void *ctx)
     tl_tool_json_str(&j, "relit_definition",
                      "relit_fraction: tl_frame_stats.relit_fraction (pixels the edge fix-up re-lit at full resolution "
                      "over the frame's pixels; 0 from a library that does not count them); relit_fraction_marked: "
-                     "HDR pixels whose alpha is the material pass's re-lit mark (0.5), light-scale variants only");
+                     "HDR pixels whose alpha is the material pass's re-lit mark (0.5), light-scale variants only "
+                     "(0 from a library whose light-upsample pass re-lights them: its material pass marks none)");
     tl_tool_json_num(&j, "seconds", run->seconds);
     tl_tool_json_array(&j, "load_average", 1);
     tl_tool_json_num(&j, NULL, run->load_start);

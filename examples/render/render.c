@@ -58,7 +58,9 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         [TL_TARGET_DOF] = "dof",               [TL_TARGET_LIGHT_FRESNEL] = "light_fresnel",
         [TL_TARGET_BLOOM] = "bloom",           [TL_TARGET_SSR] = "ssr",
         [TL_TARGET_LIGHT_DEPTH] = "light_depth", [TL_TARGET_LIGHT_RT0] = "light_rt0_normal_gloss",
-        [TL_TARGET_LIGHT_OFFSET] = "light_offset"};
+        [TL_TARGET_LIGHT_OFFSET] = "light_offset", [TL_TARGET_LIGHT_REDUCED_DIFFUSE] = "light_reduced_diffuse",
+        [TL_TARGET_LIGHT_REDUCED_SPECULAR] = "light_reduced_specular",
+        [TL_TARGET_LIGHT_REDUCED_FRESNEL] = "light_reduced_fresnel"};
     tl_frame_plan plan;
     if (tl_renderer_get_plan(r, &plan) != TL_OK) memset(&plan, 0, sizeof plan);
     for (int t = 0; t < TL_TARGET_COUNT; t++) {

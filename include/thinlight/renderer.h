@@ -573,6 +573,7 @@ typedef enum tl_pass {
     TL_PASS_LIGHTS_SAMPLES, /**< MSAA per-sample edges: the light pass again, per sample, on edge pixels only */
     TL_PASS_SHADOW_DEBUG,  /**< tl_renderer_options.shadow_debug: the shadow term and cascade of each pixel, into shadow.debug */
     TL_PASS_SHADOWS,       /**< the casting lights' changed views rendered into the shadow atlas (first in the frame) */
+    TL_PASS_LIGHT_UPSAMPLE, /**< light_scale below 1: the reduced light buffer upsampled into the full-size one, edges re-lit (compute) */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
@@ -604,7 +605,7 @@ typedef enum tl_target_id {
     TL_TARGET_LIGHT_RT0,      /**< light_scale below 1: RT0 of that nearest sample, the light buffer's size */
     TL_TARGET_LIGHT_OFFSET,   /**< light_scale below 1: R8, that sample's pixel within its block (x + 4 y; 16: its centre) */
     TL_TARGET_LIGHT_FIXUP,    /**< light_scale below 1 or MSAA: a storage buffer (16 bytes), the count of the
-                                   pixels (samples) the material pass re-lit */
+                                   pixels (samples) light-upsample (the light scale) or the material pass (MSAA) re-lit */
     TL_TARGET_OPAQUE_DEPTH,   /**< stipple: the opaque surfaces' depth (depth's format); the material pass tests against it */
     TL_TARGET_DEPTH_MSAA,     /**< thin-lpp with MSAA: the multisampled depth the material pass tests against (depth's format) */
     TL_TARGET_MSAA_EDGES,     /**< MSAA per-sample edges: R8, 1 where the pixel's samples differ in depth or normal */
@@ -614,6 +615,10 @@ typedef enum tl_target_id {
     TL_TARGET_SHADOW_ATLAS,   /**< with casting lights: the shadow atlas (reversed D32F, tl_shadow_desc.atlas_size
                                    square; it keeps unchanged maps from frame to frame; read it with
                                    tl_renderer_read_shadow_atlas) */
+    TL_TARGET_LIGHT_REDUCED_DIFFUSE,  /**< light_scale below 1: what the light pass writes into LIGHT_DIFFUSE at scale 1,
+                                           the light buffer's size (light-upsample makes LIGHT_DIFFUSE of it) */
+    TL_TARGET_LIGHT_REDUCED_SPECULAR, /**< light_scale below 1: LIGHT_SPECULAR at the light buffer's size */
+    TL_TARGET_LIGHT_REDUCED_FRESNEL,  /**< light_scale below 1: LIGHT_FRESNEL at the light buffer's size */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -780,7 +785,7 @@ typedef struct tl_frame_stats {
     double wall_ms;                     /**< render call start to GPU done; synchronous statistics only, else 0 */
     size_t target_bytes[TL_TARGET_COUNT]; /**< bytes each allocated target occupies; 0 = not allocated */
     size_t gbuffer_bytes;               /**< depth + RT0 + RT1 + FAT_* (no effect target, no light lists) */
-    size_t light_buffer_bytes;          /**< LIGHT_DIFFUSE + LIGHT_SPECULAR + LIGHT_FRESNEL */
+    size_t light_buffer_bytes;          /**< LIGHT_DIFFUSE + LIGHT_SPECULAR + LIGHT_FRESNEL (+ their LIGHT_REDUCED_* copies) */
     size_t total_target_bytes;          /**< sum of target_bytes */
     size_t allocated_target_bytes;      /**< memory the targets actually occupy (shared blocks once) */
     uint32_t objects_drawn;             /**< after frustum culling, per geometry pass */
@@ -796,8 +801,9 @@ typedef struct tl_frame_stats {
     uint64_t light_list_entries;        /**< tiled: entries of all tile lists */
     uint32_t draw_calls;                /**< GL draw calls of the frame */
     uint32_t programs_compiled;         /**< shader programs compiled so far by this renderer (cache misses) */
-    uint64_t relit_pixels;              /**< light_scale below 1: pixels the edge fix-up re-lit at full resolution
-                                             (fragments: a pixel two coplanar surfaces both draw counts twice) */
+    uint64_t relit_pixels;              /**< light_scale below 1: pixels light-upsample's edge fix-up re-lit at full
+                                             resolution, each once; MSAA in thin-lpp: the material pass's re-lit
+                                             fragments (a sample two coplanar surfaces both draw counts twice) */
     double relit_fraction;              /**< relit_pixels over the frame's pixels */
     uint32_t shadow_lights;             /**< casting lights with a map this frame (their views in the atlas):
                                              the budget's, plus for 8 frames those leaving it (fading out) */

@@ -364,8 +364,8 @@ endfunction()
 # size: the same count in every record; the edge error is over a subset of the pixels, so its
 # largest error is at most the frame's); the variants also against thin-lpp at scale 1 (scale 1
 # itself: null), some re-lit pixels (counted by the library or marked in HDR's alpha), the
-# light-reduce pass, and a light buffer the scale squared of scale 1's (rounded as the bench
-# rounds bytes to B/px). The table, the doc, the heat maps against scale 1 and fat, the edge image
+# light-reduce and light-upsample passes, a reduced light buffer the scale squared of scale 1's
+# (rounded as the bench rounds bytes to B/px) and the full-size one the material pass reads. The table, the doc, the heat maps against scale 1 and fat, the edge image
 # and the plot's data carry them.
 function(check_light_scales)
   set(w 256)
@@ -436,16 +436,24 @@ function(check_light_scales)
         message(FATAL_ERROR "${name}: no pixel re-lit (relit_fraction ${relit}, marked ${marked})")
       endif()
       json_get(NUMBER "${name}" records ${i} pass_ms light-reduce)
-      # the reduced light buffer: scale^2 of scale 1's bytes, rounded to whole B/px as the bench does
+      json_get(NUMBER "${name}" records ${i} pass_ms light-upsample)
+      # the full-size light buffer light-upsample writes for the material pass: scale 1's bytes
       json_get(NUMBER "scale 1" records ${one_index} targets light.diffuse)
+      set(one_diffuse ${value})
+      json_get(NUMBER "${name}" records ${i} targets light.diffuse)
+      if(NOT value EQUAL one_diffuse)
+        message(FATAL_ERROR "${name}: light.diffuse ${value} B/px, expected scale 1's ${one_diffuse} (light-upsample's full size)")
+      endif()
+      # the reduced light buffer: scale^2 of scale 1's bytes, rounded to whole B/px as the bench does
+      set(value ${one_diffuse})
       if(scale STREQUAL "0.5")
         math(EXPR want "(${value} * ${pixels} / 4 + ${pixels} / 2) / ${pixels}")
       else()
         math(EXPR want "(${value} * ${pixels} / 16 + ${pixels} / 2) / ${pixels}")
       endif()
-      json_get(NUMBER "${name}" records ${i} targets light.diffuse)
+      json_get(NUMBER "${name}" records ${i} targets light.reduced.diffuse)
       if(NOT value EQUAL want)
-        message(FATAL_ERROR "${name}: light.diffuse ${value} B/px, expected ${want} (scale ${scale} squared of scale 1's)")
+        message(FATAL_ERROR "${name}: light.reduced.diffuse ${value} B/px, expected ${want} (scale ${scale} squared of scale 1's)")
       endif()
     endif()
   endforeach()

@@ -209,6 +209,9 @@ const char *tl__passes_refuse(const tl_renderer_options *o, unsigned what);
 /* What the light pass reads and writes in a mode, whichever strategy gathers the lights
  * (pass_lights.c; the tiled pass uses it too). */
 void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d);
+/* The light buffer's targets in `full` (LIGHT_DIFFUSE, _SPECULAR, _FRESNEL) swapped for their reduced
+ * copies (LIGHT_REDUCED_*), which the light pass writes at a light scale below 1 (pass_lights.c). */
+tl_target_set tl__light_buffer_reduced(tl_target_set full);
 void tl__light_pass_defines(const tl__plan_input *in, const tl__pass_decl *d, tl__perm *k);
 /* Forward shading reads tile lists (Forward+) in this plan; it has a depth pre-pass (modes.c). */
 int tl__forward_plus(const tl__plan_input *in);

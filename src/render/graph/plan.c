@@ -407,7 +407,8 @@ static void tl__plan_choices(const tl__plan_input *in, tl_frame_plan *p)
     snprintf(p->transparency_reason, sizeof p->transparency_reason, "%s", in->transparency_reason);
     tl__plan_clearcoat(in, p);
     tl__plan_downgrades(in, p);
-    if (in->strategy == TL_LIGHT_STRATEGY_TILED) {
+    /* tiles with the tiled strategy, and for the light scale's re-lit pixels (pass_light_upsample.c) */
+    if (in->strategy == TL_LIGHT_STRATEGY_TILED || (in->lights && in->light_shift && in->mode->material_pass)) {
         p->tile_size = in->tile_size;
         p->tiles_x = in->tiles_x;
         p->tiles_y = in->tiles_y;

@@ -156,5 +156,7 @@ void tl__tiles_collect(tl__device *dev, tl__tiles *t, tl_frame_stats *st)
     if (!tl__tiles_counters(dev, t, st->frame, 1, c)) return;
     st->light_list_entries = c[0];
     st->tile_overflows = c[1];
-    st->light_pairs = ((uint64_t)c[3] << 32) | c[2];
+    /* none counted: the lists served light-upsample alone (volumes at a light scale), whose light
+     * pass counted its own pairs */
+    if (c[2] | c[3]) st->light_pairs = ((uint64_t)c[3] << 32) | c[2];
 }

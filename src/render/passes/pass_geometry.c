@@ -156,8 +156,8 @@ const tl__pass_def tl__pass_gbuffer = {
 
 /* ---- material: the light pre-pass's second geometry pass ------------------------------------- */
 
-/* The count of the pixels (MSAA: samples) the material pass re-lit (fixup.c); the pixels themselves
- * are lit where they are found, from their tile's lists or their object's. */
+/* The count of the pixels the light scale's light-upsample re-lit, or of the samples MSAA's material
+ * pass re-lit (fixup.c); they are lit where they are found, from their tile's lists or their object's. */
 static size_t tl__fixup_bytes(const tl_frame_plan *p, const tl_renderer_options *o)
 {
     (void)p;
@@ -185,14 +185,8 @@ static void tl__material_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->writes = d->clears = TL__B(HDR);
     d->samples = TL__B(LIGHT_DIFFUSE) | TL__B(LIGHT_SPECULAR) | TL__B(LIGHT_FRESNEL) | /* those the light pass writes */
                  (tl__ssao_pass(in) ? TL__B(AO) : 0u) | (in->coat_sums ? TL__B(LIGHT_COAT) : 0u);
-    if (in->light_shift && in->lights) {
-        /* the light scale's upsample: the reduced depth and RT0 against the pixel's own RT0. The
-         * pixels it finds no credible match for are counted (light.fixup) and re-lit here over
-         * their tile's lists (tiled) or their object's light list (volumes) */
-        d->samples |= TL__B(LIGHT_DEPTH) | TL__B(LIGHT_RT0) | TL__B(LIGHT_OFFSET) | TL__B(RT0);
-        d->writes |= TL__B(LIGHT_FIXUP);
-        tl__material_relight_lists(in, d);
-    }
+    /* the light scale: light-upsample (pass_light_upsample.c) made the full-size light buffer, so the
+     * material pass is scale 1's */
     if (in->msaa > 1 && in->lights) {
         /* MSAA: a sample whose surface is not the one the G-buffer kept at its pixel (an edge)
          * takes the light of the neighbouring texel with its depth and normal, else it is re-lit
@@ -234,27 +228,18 @@ static void tl__material_permute(const tl__plan_input *in, const tl__pass_decl *
     } else if (in->stipple && lit) {
         tl__perm_flag(&k, TL__F_STIPPLE);
         tl__perm_flag(&k, in->rt0_flag);
-    } else if (lit && (d->samples & TL__B(LIGHT_RT0))) { /* the light scale's upsample */
-        tl__perm_value(&k, TL__V_UPSAMPLE, in->light_shift);
-        if (in->o->rt0 == TL_RT0_RGB10A2) tl__perm_flag(&k, TL__F_RT0_RGB10A2);
-        if (tiles) tl__perm_flag(&k, TL__F_RELIGHT_TILES);
     }
     tl__material_model_slots(in, &k, out); /* one program per material model */
 }
 
-/* The light scale's upsample reads the light buffer bilinearly inside surfaces: a linear sampler on
- * its units (texelFetch, the only read at scale 1, ignores samplers). */
+/* MSAA's re-lit samples are counted (fixup.c); with a light scale light-upsample counts its pixels
+ * there, and the material pass re-lights nothing (MSAA is refused with it). */
 static void tl__material_execute(const tl__pass_ctx *ctx)
 {
-    const GladGLContext *gl = ctx->gl;
-    const GLuint units[3] = {ctx->unit_of[TL_TARGET_LIGHT_DIFFUSE], ctx->unit_of[TL_TARGET_LIGHT_SPECULAR],
-                             ctx->unit_of[TL_TARGET_LIGHT_FRESNEL]};
-    tl__fixup *f = ctx->lights ? &ctx->lights->fixup : NULL;
-    for (int k = 0; k < 3; k++) gl->BindSampler(units[k], ctx->linear_sampler);
-    if (f) tl__fixup_begin(gl, f);
+    tl__fixup *f = ctx->lights && !ctx->light_shift ? &ctx->lights->fixup : NULL;
+    if (f) tl__fixup_begin(ctx->gl, f);
     tl__material_models_draw(ctx);
-    if (f) tl__fixup_end(gl, f, ctx->frame);
-    for (int k = 0; k < 3; k++) gl->BindSampler(units[k], 0);
+    if (f) tl__fixup_end(ctx->gl, f, ctx->frame);
 }
 
 const tl__pass_def tl__pass_material = {

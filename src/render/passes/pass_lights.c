@@ -20,17 +20,25 @@ static uint32_t tl__light_format(const tl_renderer_options *o)
 }
 
 static const tl__target_def tl__target_light_diffuse = {TL__TARGET(LIGHT_DIFFUSE, "light.diffuse"),
-                                                        .format_of = tl__light_format, .shift_of = tl__light_shift,
-                                                        .samples_of = tl__gbuffer_samples,
+                                                        .format_of = tl__light_format, .samples_of = tl__gbuffer_samples,
                                                         .store = TL__STORE_LIGHT};
 static const tl__target_def tl__target_light_specular = {TL__TARGET(LIGHT_SPECULAR, "light.specular"),
-                                                         .format_of = tl__light_format, .shift_of = tl__light_shift,
-                                                        .samples_of = tl__gbuffer_samples,
-                                                        .store = TL__STORE_LIGHT};
+                                                         .format_of = tl__light_format, .samples_of = tl__gbuffer_samples,
+                                                         .store = TL__STORE_LIGHT};
 static const tl__target_def tl__target_light_fresnel = {TL__TARGET(LIGHT_FRESNEL, "light.fresnel"),
-                                                        .format_of = tl__light_format, .shift_of = tl__light_shift,
-                                                        .samples_of = tl__gbuffer_samples,
+                                                        .format_of = tl__light_format, .samples_of = tl__gbuffer_samples,
                                                         .store = TL__STORE_LIGHT};
+/* The light scale: the light pass writes these at the light buffer's size, and light-upsample
+ * (pass_light_upsample.c) makes the full-size light buffer above of them for the material pass. */
+static const tl__target_def tl__target_light_reduced_diffuse = {TL__TARGET(LIGHT_REDUCED_DIFFUSE, "light.reduced.diffuse"),
+                                                                .format_of = tl__light_format, .shift_of = tl__light_shift,
+                                                                .store = TL__STORE_LIGHT};
+static const tl__target_def tl__target_light_reduced_specular = {TL__TARGET(LIGHT_REDUCED_SPECULAR, "light.reduced.specular"),
+                                                                 .format_of = tl__light_format, .shift_of = tl__light_shift,
+                                                                 .store = TL__STORE_LIGHT};
+static const tl__target_def tl__target_light_reduced_fresnel = {TL__TARGET(LIGHT_REDUCED_FRESNEL, "light.reduced.fresnel"),
+                                                                .format_of = tl__light_format, .shift_of = tl__light_shift,
+                                                                .store = TL__STORE_LIGHT};
 /* TL_CLEARCOAT_SUMS: the coat's specular sum (coat_sums.glsl), in the light buffer's format. */
 static const tl__target_def tl__target_light_coat = {TL__TARGET(LIGHT_COAT, "light.coat"),
                                                      .format_of = tl__light_format, .store = TL__STORE_LIGHT};
@@ -61,7 +69,19 @@ void tl__light_pass_targets(const tl__plan_input *in, tl__pass_decl *d)
         d->reads = (d->reads & ~full) | reduced;
         d->samples = (d->samples & ~full) | reduced;
         d->depth_target = TL_TARGET_LIGHT_DEPTH;
+        d->writes = tl__light_buffer_reduced(d->writes); /* light-upsample makes the full-size buffer */
     }
+}
+
+tl_target_set tl__light_buffer_reduced(tl_target_set full)
+{
+    static const tl_target_id pairs[3][2] = {{TL_TARGET_LIGHT_DIFFUSE, TL_TARGET_LIGHT_REDUCED_DIFFUSE},
+                                             {TL_TARGET_LIGHT_SPECULAR, TL_TARGET_LIGHT_REDUCED_SPECULAR},
+                                             {TL_TARGET_LIGHT_FRESNEL, TL_TARGET_LIGHT_REDUCED_FRESNEL}};
+    tl_target_set out = full;
+    for (int i = 0; i < 3; i++)
+        if (full & TL_TARGET_BIT(pairs[i][0])) out = (out & ~TL_TARGET_BIT(pairs[i][0])) | TL_TARGET_BIT(pairs[i][1]);
+    return out;
 }
 
 /* The shader switches of the light pass's reads, whatever the strategy: the RT0 encoding and the
@@ -174,7 +194,8 @@ const tl__pass_def tl__pass_lights = {
     .programs = {{"lights.point", "light.vert.glsl", "light.frag.glsl"},
                  {"lights.spot", "light.vert.glsl", "light.frag.glsl"},
                  {"lights.directional", "light.vert.glsl", "light.frag.glsl"}},
-    .targets = {&tl__target_light_diffuse, &tl__target_light_specular, &tl__target_light_fresnel, &tl__target_light_coat},
+    .targets = {&tl__target_light_diffuse, &tl__target_light_specular, &tl__target_light_fresnel, &tl__target_light_coat,
+                &tl__target_light_reduced_diffuse, &tl__target_light_reduced_specular, &tl__target_light_reduced_fresnel},
     .declare = tl__lights_declare,
     .permute = tl__lights_permute,
     .execute = tl__lights_execute,

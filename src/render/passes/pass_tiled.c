@@ -10,6 +10,13 @@
 
 static int tl__tiled(const tl__plan_input *in) { return in->lights && in->strategy == TL_LIGHT_STRATEGY_TILED; }
 
+/* The tile lists are built for the tiled strategy, and with a light scale below 1 for light-upsample's
+ * re-lit pixels whatever the strategy (pass_light_upsample.c). */
+static int tl__tile_lists(const tl__plan_input *in)
+{
+    return tl__tiled(in) || (in->lights && in->light_shift && in->mode->material_pass);
+}
+
 /* The light lists' bytes for a number of tiles: 4 counters, (offset, count) per tile, entries. */
 static size_t tl__light_lists_bytes(const tl_frame_plan *p, const tl_renderer_options *o)
 {
@@ -25,7 +32,7 @@ static const tl__target_def tl__target_light_lists = {TL__TARGET(LIGHT_LISTS, "l
 
 static void tl__cull_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!tl__tiled(in)) return;
+    if (!tl__tile_lists(in)) return;
     /* MSAA in thin-lpp: the tiles' bounds cover every sample's depth (the multisampled depth the
      * material pass tests against), so the edge samples it re-lights from the lists miss no light */
     d->reads = d->samples = TL_TARGET_BIT(tl__shading_depth(in)); /* depth.msaa, or DEPTH (per-sample edges) */
@@ -45,6 +52,8 @@ static void tl__cull_permute(const tl__plan_input *in, const tl__pass_decl *d, t
         if (d->samples & TL__B(DEPTH_MSAA)) tl__perm_flag(&out->slot[0], TL__F_CULL_DEPTH_MSAA);
     } else if (in->light_shift) {
         tl__perm_value(&out->slot[0], TL__V_LIGHT_SHIFT, in->light_shift);
+        /* with volumes the lists serve light-upsample's re-lit pixels: the volumes count the pairs */
+        if (!tl__tiled(in)) tl__perm_flag(&out->slot[0], TL__F_CULL_NO_PAIRS);
     }
 }
 
