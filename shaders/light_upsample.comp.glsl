@@ -73,12 +73,12 @@ float tl_upsample_linear(float d)
 
 // One pixel's light sums: diffuse (alpha: the specular luminance, as the light pass writes it),
 // specular, Fresnel.
-struct tl_light_sums {
+struct tl_upsample_light {
     vec4 d;
     vec3 s, f;
 };
 
-void tl_upsample_store(ivec2 px, tl_light_sums l)
+void tl_upsample_store(ivec2 px, tl_upsample_light l)
 {
     imageStore(u_diffuse_image, px, l.d);
 #ifdef TL_SPECULAR_EXACT
@@ -89,9 +89,9 @@ void tl_upsample_store(ivec2 px, tl_light_sums l)
 #endif
 }
 
-tl_light_sums tl_upsample_texel(ivec2 q)
+tl_upsample_light tl_upsample_texel(ivec2 q)
 {
-    tl_light_sums l;
+    tl_upsample_light l;
     l.d = texelFetch(u_reduced_diffuse, q, 0);
     l.s = l.f = vec3(0.0);
 #ifdef TL_SPECULAR_EXACT
@@ -104,7 +104,7 @@ tl_light_sums tl_upsample_texel(ivec2 q)
 }
 
 // The pixel's own sums at its position, normal and gloss, as the light pass at scale 1 (lights_tiled.glsl).
-tl_light_sums tl_upsample_relight(ivec2 px)
+tl_upsample_light tl_upsample_relight(ivec2 px)
 {
     float z = tl_upsample_linear(texelFetch(u_depth, px, 0).r);
     vec4 ng = tl_upsample_rt0(texelFetch(u_rt0, px, 0));
@@ -117,7 +117,7 @@ tl_light_sums tl_upsample_relight(ivec2 px)
     specular += fresnel; // one sum: Fresnel is applied per pixel
     fresnel = vec3(0.0);
 #endif
-    return tl_light_sums(vec4(diffuse, tl_luminance(specular)), specular, fresnel);
+    return tl_upsample_light(vec4(diffuse, tl_luminance(specular)), specular, fresnel);
 }
 
 // The view depth (< 0) of frame pixel px, or 1 for the background and outside the frame.
@@ -147,7 +147,7 @@ struct tl_quad {
     float z[4];
     vec4 rt0[4];
     vec3 n[4];
-    tl_light_sums l[4];
+    tl_upsample_light l[4];
     bool interior; // light_reduce.frag.glsl's flag 32: four texels on one plane with one normal
 };
 
@@ -171,7 +171,7 @@ tl_quad tl_upsample_quad(ivec2 base, ivec2 rsize)
 
 // Pixel px at (x, y) in the quad's block: its upsampled sums and their weight (< TL_UPSAMPLE_CREDIBLE:
 // to be re-lit).
-float tl_upsample_pixel(tl_quad t, ivec2 px, ivec2 xy, ivec2 fsize, out tl_light_sums sums)
+float tl_upsample_pixel(tl_quad t, ivec2 px, ivec2 xy, ivec2 fsize, out tl_upsample_light sums)
 {
     vec2 f = (vec2(xy) + 0.5) / float(TL_K);
     vec4 wb = vec4((1.0 - f.x) * (1.0 - f.y), f.x * (1.0 - f.y), (1.0 - f.x) * f.y, f.x * f.y);
@@ -198,7 +198,7 @@ float tl_upsample_pixel(tl_quad t, ivec2 px, ivec2 xy, ivec2 fsize, out tl_light
             total += w[j];
         }
     }
-    sums = tl_light_sums(vec4(0.0), vec3(0.0), vec3(0.0));
+    sums = tl_upsample_light(vec4(0.0), vec3(0.0), vec3(0.0));
     for (int j = 0; j < 4; j++) {
         if (w[j] > 0.0) {
             sums.d += w[j] * t.l[j].d;
@@ -222,7 +222,7 @@ void main()
         for (int i = 0; i < TL_K * TL_K; i++) {
             ivec2 xy = ivec2(i % TL_K, i / TL_K), px = first + xy;
             if (all(greaterThanEqual(px, ivec2(0))) && all(lessThan(px, fsize))) { // base -1: half a block before the frame
-                tl_light_sums sums = tl_light_sums(vec4(0.0), vec3(0.0), vec3(0.0));
+                tl_upsample_light sums = tl_upsample_light(vec4(0.0), vec3(0.0), vec3(0.0));
                 float total = 1.0;
                 if (texelFetch(u_depth, px, 0).r != u_clear_depth) total = tl_upsample_pixel(t, px, xy, fsize, sums);
                 // (the background: nothing reads it; zero, as the light pass writes)
