@@ -8,9 +8,9 @@
 /* Tiled strategy defaults (docs/frame.md gives the measurements behind them): the tile side, and
  * the number of local lights from which the planner prefers tiles to volumes. */
 #define TL__TILE_SIZE_DEFAULT 16u
-/* tiled_shading auto: the compute pass (docs/frame.md, "Fragment or compute": measured against the
- * fragment pass in the same bench runs) */
-#define TL__TILED_SHADING_AUTO TL_TILED_SHADING_COMPUTE
+/* tiled_shading auto: the fragment pass, the faster on the one device measured (llvmpipe: docs/frame.md,
+ * "Fragment or compute", the two passes as configurations of the same bench runs) */
+#define TL__TILED_SHADING_AUTO TL_TILED_SHADING_FRAGMENT
 #define TL__TILED_CROSSOVER 32u
 
 /* Resolves zeroed options to their defaults (desc.c; each pass resolves its own slice):
