@@ -242,6 +242,17 @@ vec4 tl_rt0_decode_rgb10a2(uint t)
     return vec4(tl_oct_decode(t & 0xFFFFFu, 10u), tl_gloss_decode((t >> 20) & 0x3FFu, 10u));
 }
 
+// An RT0 texel as a pass samples it (UNORM, 0..1) -> normal and gloss, in the frame's packing.
+vec4 tl_rt0_texel_decode(vec4 t)
+{
+#ifdef TL_RT0_RGB10A2
+    uvec4 q = uvec4(t * vec4(1023.0, 1023.0, 1023.0, 3.0) + 0.5);
+    return tl_rt0_decode_rgb10a2(q.x | (q.y << 10) | (q.z << 20) | (q.w << 30));
+#else
+    return tl_rt0_decode_rgba8(tl_unorm8_bytes(t));
+#endif
+}
+
 // ---- albedo --------------------------------------------------------------------------------
 
 float tl_clamp01(float v) { return v > 0.0 ? (v < 1.0 ? v : 1.0) : 0.0; }

@@ -89,13 +89,7 @@ bool tl_gbuffer_position(ivec2 px, out vec3 p)
 // RT0 -> view-space normal and gloss.
 void tl_gbuffer_normal_gloss(ivec2 px, out vec3 n, out float gloss)
 {
-    vec4 t = tl_gfetch(u_rt0, px);
-#ifdef TL_RT0_RGB10A2
-    uvec4 q = uvec4(t * vec4(1023.0, 1023.0, 1023.0, 3.0) + 0.5);
-    vec4 ng = tl_rt0_decode_rgb10a2(q.x | (q.y << 10) | (q.z << 20) | (q.w << 30));
-#else
-    vec4 ng = tl_rt0_decode_rgba8(tl_unorm8_bytes(t));
-#endif
+    vec4 ng = tl_rt0_texel_decode(tl_gfetch(u_rt0, px));
     n = ng.xyz;
     gloss = ng.w;
 }

@@ -21,15 +21,7 @@ layout(binding = TL_UNIT_RT0) uniform sampler2DMS u_rt0;
 layout(binding = TL_UNIT_RT0) uniform sampler2D u_rt0;
 #endif
 
-vec4 tl_relight_rt0(vec4 t) // normal and gloss, as the light pass decodes them
-{
-#ifdef TL_RT0_RGB10A2
-    uvec4 q = uvec4(t * vec4(1023.0, 1023.0, 1023.0, 3.0) + 0.5);
-    return tl_rt0_decode_rgb10a2(q.x | (q.y << 10) | (q.z << 20) | (q.w << 30));
-#else
-    return tl_rt0_decode_rgba8(tl_unorm8_bytes(t));
-#endif
-}
+vec4 tl_relight_rt0(vec4 t) { return tl_rt0_texel_decode(t); } // normal and gloss, as the light pass decodes them
 
 float tl_relight_linear_depth(float d)
 {

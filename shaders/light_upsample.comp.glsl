@@ -56,15 +56,7 @@ const float TL_UPSAMPLE_LOBE_POWER_MAX = 256.0;
 shared uint s_relit[TL_GROUP * TL_GROUP * TL_K * TL_K]; // the group's re-lit pixels, x | y << 16
 shared uint s_relit_count;
 
-vec4 tl_upsample_rt0(vec4 t) // normal and gloss, as the light pass decodes them
-{
-#ifdef TL_RT0_RGB10A2
-    uvec4 q = uvec4(t * vec4(1023.0, 1023.0, 1023.0, 3.0) + 0.5);
-    return tl_rt0_decode_rgb10a2(q.x | (q.y << 10) | (q.z << 20) | (q.w << 30));
-#else
-    return tl_rt0_decode_rgba8(tl_unorm8_bytes(t));
-#endif
-}
+vec4 tl_upsample_rt0(vec4 t) { return tl_rt0_texel_decode(t); } // normal and gloss, as the light pass decodes them
 
 float tl_upsample_linear(float d)
 {

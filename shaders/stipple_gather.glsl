@@ -41,15 +41,7 @@ float tl_stipple_linear_depth(float d)
     return tl_depth_linearize(d, u_depth_params.x, u_depth_params.y, u_depth_params.z, u_depth_params.w > 0.5);
 }
 
-vec3 tl_stipple_normal(vec4 t) // as the light pass decodes RT0
-{
-#ifdef TL_RT0_RGB10A2
-    uvec4 q = uvec4(t * vec4(1023.0, 1023.0, 1023.0, 3.0) + 0.5);
-    return tl_rt0_decode_rgb10a2(q.x | (q.y << 10) | (q.z << 20) | (q.w << 30)).xyz;
-#else
-    return tl_rt0_decode_rgba8(tl_unorm8_bytes(t)).xyz;
-#endif
-}
+vec3 tl_stipple_normal(vec4 t) { return tl_rt0_texel_decode(t).xyz; } // as the light pass decodes RT0
 
 // cos^power falls as a specular lobe does: a highlight is not carried across normals it tells apart
 float tl_stipple_power(bool glossy, float gloss)
