@@ -277,8 +277,8 @@ typedef struct bench_record {
     int pairs_counted;             /* exact_pairs and covered_pixels were counted (else absent) */
     uint64_t exact_pairs;          /* pixel-light pairs in range (tl_renderer_count_light_pairs) */
     int evaluated_known;           /* 0: forward's per-object lists (not countable per pixel): absent */
-    uint64_t evaluated_pairs;      /* what the strategy evaluated: tiled, pixels x their tiles' lists
-                                      (light_pairs); volumes, the local lights' fragments past the range test */
+    uint64_t evaluated_pairs;      /* what the strategy evaluated: tiled, each list entry over the
+                                      pixels of its blocks (light_pairs); volumes, the local lights' fragments past the range test */
     double probe_ns_own;           /* this record's renderer's ALU probe (tl_renderer_light_probe); NaN: none */
     double probe_ns_per_pair;      /* the least probe_ns_own of the run at this size, light count and lighting
                                       model (noise only adds time); NaN: absent */

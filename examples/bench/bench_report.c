@@ -418,7 +418,7 @@ static void bench__scale_lines(const bench_run *run, bench__summary *s, const ch
 static const char bench__roofline_caption[] =
     "local lights only, at the grid the light pass shades; exact: pixel-light pairs in range (and cone), "
     "counted on the CPU from the depth the light pass read; evaluated: the pairs the strategy evaluated "
-    "(tiles: pixels x their tiles' lists; volumes: fragments past the range test; forward's per-object "
+    "(tiles: each list entry over the pixels of its blocks; volumes: fragments past the range test; forward's per-object "
     "lists: -), over exact in brackets; probe: the ALU probe's ns per pair on this device (the least of the "
     "run's probes at this size, light count and lighting model); floor = exact x "
     "probe; efficiency = floor / light ms; covered: pixels with a local light in range";
