@@ -10,7 +10,7 @@
 #include "frame.glsl"
 #include "light_eval.glsl"
 #include "object.glsl"
-#include "tile_lights.glsl" // the one light loop: the lights block, the tile and object lists, their sums
+#include "light_loop.glsl" // the one light loop: the lights block, the tile and object lists, their sums
 // light.fixup (fixup.c): counters; the fourth counts the re-lit pixels (or samples)
 layout(std430, binding = TL_SSBO_FIXUP) buffer tl_fixup_buffer { uvec4 tl_fixup_counters; };
 layout(early_fragment_tests) in; // the counts and the list: only the pixels the depth test keeps

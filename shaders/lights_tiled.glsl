@@ -8,7 +8,7 @@
 #if defined(TL_MATERIAL_MODELS) && !defined(TL_LIGHT_ACCUM)
 #include "fat_models.glsl" // each light under the pixel's material model (before the loop: its visitor)
 #endif
-#include "tile_lights.glsl"
+#include "light_loop.glsl"
 
 struct tl_tiled_result {
     bool surface;   // false: background, nothing to add

@@ -53,9 +53,6 @@ uint tl_tile_list_entry(uvec2 h, uint k) { return h.x != TL_TILE_OVERFLOW ? tl_t
 // An entry's light (an index into tl_lights).
 uint tl_tile_entry_light(uint e, uint chunk) { return u_light_counts.x + chunk * uint(TL_CULL_CHUNK) + (e & 0xFFFFu); }
 
-// The k-th light of a list (an index into tl_lights).
-uint tl_tile_list_light(uvec2 h, uint chunk, uint k) { return tl_tile_entry_light(tl_tile_list_entry(h, k), chunk); }
-
 // The bit of frame pixel px's block in an entry's high half.
 uint tl_tile_block_bit(ivec2 px)
 {

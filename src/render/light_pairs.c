@@ -1,6 +1,6 @@
 /* The exact pixel-light pairs of the last frame (tl_renderer_count_light_pairs): the depth the light
  * pass read, read back, and the scene's local lights in the frame's view space, tested on the CPU
- * with the light passes' own range and cone tests (tile_lights.glsl, tl_tiled_terms), each light
+ * with the light passes' own range and cone tests (light_loop.glsl, tl_light_reaches), each light
  * over a conservative screen rectangle of its range. docs/bandwidth.md, "Reading the results". */
 #include <math.h>
 #include <string.h>
@@ -88,8 +88,8 @@ static void tl__pairs_rect(const tl__pair_grid *g, const float c[3], float rad, 
     }
 }
 
-/* One light's pairs over its rectangle, marking the cells it reaches. The tests of tl_tiled_terms
- * in float: outside when d2 >= r^2; a spot also when dot(-to_light, axis) <= cos_outer sqrt(d2). */
+/* One light's pairs over its rectangle, marking the cells it reaches. The tests of light_loop.glsl's
+ * tl_light_reaches in float: outside when d2 >= r^2; a spot also when dot(-to_light, axis) <= cos_outer sqrt(d2). */
 static uint64_t tl__pairs_light(const tl__pair_grid *g, const tl__light_record *l, const uint32_t rect[4],
                                 uint8_t *covered)
 {
