@@ -19,11 +19,9 @@
 #include "material_models.glsl" // per-material models: each light's exact terms (before the loop: its visitor)
 #endif
 #include "light_loop.glsl" // the lights block, the object lists and (Forward+) the tile lists
+#include "forward_color.glsl" // the lights' sums, ambient, the model and the environment into a colour
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
-#ifdef TL_SSAO_AMBIENT
-layout(binding = TL_UNIT_AO) uniform sampler2D u_ao;
-#endif
 #endif
 
 void main()
@@ -61,31 +59,7 @@ void main()
         tl_object_lights_walk(TL_LIGHTS_FORWARD, tl_objects[v_object].lights.x, tl_objects[v_object].lights.y,
                               tl_light_point_at(p, n, v, shape), sums);
 #endif
-    vec3 diffuse = sums.diffuse, specular = sums.specular, fresnel = sums.fresnel;
-#ifdef TL_SPECULAR_NONE
-    specular = fresnel = vec3(0.0);
-#endif
-#ifdef TL_SSAO_AMBIENT
-    // SSAO (docs/effects.md): the ambient term, and with TL_SSAO_DIFFUSE the diffuse light
-    float ao = texelFetch(u_ao, ivec2(gl_FragCoord.xy), 0).r;
-#ifdef TL_SSAO_DIFFUSE
-    diffuse *= ao;
-#endif
-    vec3 ambient = u_ambient * (s.occlusion * ao);
-#else
-    vec3 ambient = u_ambient * s.occlusion;
-#endif
-    vec3 c = s.albedo * (diffuse + ambient) + s.specular * specular + fresnel + s.emissive;
-#if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD) && !defined(TL_STIPPLE)
-    c = tl_model_shade(u_material_model, s, clamp(dot(n, v), 0.0, 1.0), diffuse, ambient, s.specular * specular + fresnel,
-                       tl_model_acc);
-#endif
-#ifdef TL_IBL
-#if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD) && !defined(TL_STIPPLE)
-    if (u_material_model != TL_MODEL_UNLIT) // an unlit material takes no light, the environment's neither
-#endif
-        c += tl_ibl(s.albedo, s.specular, s.gloss, s.occlusion, n, v);
-#endif
+    vec3 c = tl_forward_color(s, n, v, sums, ivec2(gl_FragCoord.xy));
 #ifdef TL_TRANSPARENT
     o_color = vec4(min(c, vec3(65504.0)), clamp(s.alpha, 0.0, 1.0));
 #else

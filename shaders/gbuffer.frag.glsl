@@ -1,7 +1,8 @@
 // Pass 1: G-buffer. The plan defines TL_OUT_<TARGET>=<location> for each target the pass writes:
 // RT0 (octahedral normal + gloss), RT1 (Y, checkerboard chroma, specular intensity), the FAT_*
 // full-float reference layout, HDR (deferred modes: emissive + ambient, which the light pass adds
-// to). TL_DEPTH_ONLY writes depth.
+// to). TL_DEPTH_ONLY writes depth. TL_VISIBILITY: the visibility buffer's id (VIS_ID), and RT0 only
+// when an effect reads normals.
 #include "codec.glsl"
 #include "frame.glsl"
 #include "lighting.glsl"
@@ -38,6 +39,9 @@ layout(location = TL_OUT_FAT_MATERIAL) out vec4 o_material;
 #endif
 #ifdef TL_OUT_HDR
 layout(location = TL_OUT_HDR) out vec4 o_hdr;
+#endif
+#ifdef TL_OUT_VIS_ID
+layout(location = TL_OUT_VIS_ID) out uint o_vis_id;
 #endif
 #ifdef TL_OUT_COAT_GLOSS
 layout(location = TL_OUT_COAT_GLOSS) out vec4 o_coat_gloss;
@@ -101,6 +105,18 @@ float tl_linear_to_srgb1(float c)
 
 void main()
 {
+#ifdef TL_OUT_VIS_ID
+    // the object's slot + 1 above the triangle's index within the object's draw (the plan refuses
+    // objects and triangles past the bits: pass_visibility.c)
+    o_vis_id = ((v_object + 1u) << TL_VIS_TRIANGLE_BITS) | uint(gl_PrimitiveID);
+#ifndef TL_OUT_RT0
+    // the id alone: the material is read only for the alpha test of a masked material
+#ifdef TL_ALPHA_MASK
+    if ((u_material_flags & 2) != 0 && tl_material_masked(tl_material_surface())) discard;
+#endif
+    return;
+#endif
+#endif
 #ifdef TL_STIPPLE
     if (!tl_stipple_owns(tl_stipple_layer(), ivec2(gl_FragCoord.xy))) discard;
 #endif

@@ -30,7 +30,7 @@ void main()
     vec4 world = model * vec4(a_position, 1.0);
     gl_Position = u_view_proj * world;
     v_view_position = (u_view * world).xyz;
-    v_normal = tl_objects[a_object].normal_view * a_normal;
+    v_normal = tl_object_normal_view(a_object) * a_normal;
     v_object = a_object;
 #ifdef TL_HAS_UV
     v_uv = a_uv;

@@ -38,10 +38,13 @@ typedef enum tl_render_mode {
     TL_MODE_THIN_DEFERRED, /**< "thin-deferred": thin G-buffer with RT1 (YCbCr albedo, specular), lights shade directly */
     TL_MODE_FAT,           /**< "fat": full-float deferred, 44 B/px; the precision reference */
     TL_MODE_FORWARD,       /**< "forward": per-object light lists, optional depth pre-pass */
+    TL_MODE_VISIBILITY,    /**< "visibility": depth and a 32-bit triangle id per pixel; a compute resolve
+                                rebuilds each pixel's attributes from its triangle and shades it with the
+                                tile lists (docs/frame.md, "Visibility buffer") */
     TL_MODE_COUNT_         /**< number of values */
 } tl_render_mode;
 
-/** "thin-lpp", "thin-deferred", "fat", "forward" ("unknown" otherwise). */
+/** "thin-lpp", "thin-deferred", "fat", "forward", "visibility" ("unknown" otherwise). */
 TL_API const char *tl_render_mode_name(tl_render_mode mode);
 /** Parses a name of tl_render_mode_name; TL_ERROR_INVALID_ARGUMENT for anything else. */
 TL_API tl_result tl_render_mode_from_name(const char *name, tl_render_mode *mode);
@@ -574,6 +577,8 @@ typedef enum tl_pass {
     TL_PASS_SHADOW_DEBUG,  /**< tl_renderer_options.shadow_debug: the shadow term and cascade of each pixel, into shadow.debug */
     TL_PASS_SHADOWS,       /**< the casting lights' changed views rendered into the shadow atlas (first in the frame) */
     TL_PASS_LIGHT_UPSAMPLE, /**< light_scale below 1: the reduced light buffer upsampled into the full-size one, edges re-lit (compute) */
+    TL_PASS_VIS_CLASSIFY,  /**< visibility: each tile's materials, into their lists of tiles (compute) */
+    TL_PASS_VIS_RESOLVE,   /**< visibility: per material, its tiles' pixels rebuilt from their triangles and shaded into HDR (compute) */
     TL_PASS_COUNT          /**< number of values; in a plan, the id of an application pass */
 } tl_pass;
 
@@ -619,6 +624,8 @@ typedef enum tl_target_id {
                                            the light buffer's size (light-upsample makes LIGHT_DIFFUSE of it) */
     TL_TARGET_LIGHT_REDUCED_SPECULAR, /**< light_scale below 1: LIGHT_SPECULAR at the light buffer's size */
     TL_TARGET_LIGHT_REDUCED_FRESNEL,  /**< light_scale below 1: LIGHT_FRESNEL at the light buffer's size */
+    TL_TARGET_VIS_ID,         /**< visibility: R32UI, (object slot + 1) << 20 | triangle within the object; 0: nothing drawn */
+    TL_TARGET_VIS_TILES,      /**< visibility: a storage buffer, per material bucket an indirect dispatch and its tiles */
     TL_TARGET_COUNT           /**< number of values */
 } tl_target_id;
 
@@ -1171,7 +1178,8 @@ TL_API tl_result tl_renderer_read_output(tl_renderer *r, uint8_t *rgba, size_t *
  * blurred colour and, in alpha, the circle of confusion's radius in pixels that the gather used
  * (docs/effects.md); SSR the reflection added to HDR and its weight; BLOOM its first level
  * (tl_plan_target.width x height, not the frame's size): the bloom image before its intensity;
- * SHADOW_DEBUG its four channels (tl_renderer_options.shadow_debug); LDR and OUTPUT their colour in [0,1]. *size is the
+ * SHADOW_DEBUG its four channels (tl_renderer_options.shadow_debug); VIS_ID the object slot, the
+ * triangle within the object, 1 and 1 (-1, -1, 0, 1 where nothing was drawn); LDR and OUTPUT their colour in [0,1]. *size is the
  * buffer's size in bytes and receives the bytes written; a NULL `rgba` asks for the size needed.
  * TL_ERROR_INVALID_ARGUMENT for a target the plan did not allocate, or one whose memory a later
  * pass of the frame reused (list it in tl_renderer_options.keep_targets to read it).

@@ -21,6 +21,13 @@
     X(SSBO_TILE_HEADERS, 3)      /* tiled: counters and per-tile (offset, count) */               \
     X(SSBO_TILE_ENTRIES, 4)      /* tiled: the lists' light indices */                            \
     X(SSBO_FIXUP, 5)             /* the light scale's and MSAA's re-lit count (fixup.c) */         \
+    X(SSBO_VIS_VERTICES, 6)      /* visibility: the scene's vertex buffer (tl_vertex, 12 floats) */ \
+    X(SSBO_VIS_INDICES, 7)       /* visibility: the scene's index buffer */                         \
+    X(SSBO_VIS_TILES, 8)         /* visibility: per material bucket, an indirect dispatch and its tiles */ \
+    X(SSBO_VIS_COLORS, 9)        /* visibility: tl_scene.colors (vec4 per vertex) */                \
+    X(SSBO_VIS_UV1, 10)          /* visibility: tl_scene.uv1 (vec2 per vertex) */                   \
+    X(VIS_TRIANGLE_BITS, 20)     /* visibility: the id's low bits, the triangle within its object */ \
+    X(VIS_BUCKETS, 64)           /* visibility: material buckets (material index mod 64) */         \
     X(UNIT_ALBEDO_TEXTURE, 16)   /* material textures (units 0 .. 15 are the pass's targets') */   \
     X(UNIT_NORMAL_TEXTURE, 17)                                                                    \
     X(UNIT_MR_TEXTURE, 18)                                                                        \
@@ -43,7 +50,7 @@ enum {
     TL__MATERIAL_TEXTURES = 5,
     TL__TARGET_UNITS = 16,       /* targets one pass may sample: units 0 .. 15 */
     TL__TEXTURE_UNITS_USED = 26, /* units the renderer may bind: 0 .. 24, and 25 left empty */
-    TL__BUFFER_BINDINGS_USED = 6, /* uniform and storage binding points it may bind: 0 .. 5 */
+    TL__BUFFER_BINDINGS_USED = 11, /* uniform and storage binding points it may bind: 0 .. 10 */
     TL__IMAGE_UNITS_USED = 7     /* image units a pass may bind: 0 .. 6 (7: TL_IMAGE_NONE) */
 };
 

@@ -112,6 +112,25 @@ static tl_result tl__read_rt0(tl_renderer *r, tl_target_id id, float *rgba, size
     return res;
 }
 
+/* Visibility's id split on the CPU: (object slot, triangle within it, 1, 1), or (-1, -1, 0, 1) where
+ * nothing was drawn; both fields are below 2^24, exact as floats. */
+static tl_result tl__read_vis_id(tl_renderer *r, tl_target_id id, float *rgba, size_t n, char *msg, size_t msg_size)
+{
+    unsigned char *ids = (unsigned char *)(rgba + n * 3); /* the upper quarter, spread out in order */
+    tl_result res = tl__target_read(&r->dev.gl, &r->graph.targets[id], GL_RED_INTEGER, GL_UNSIGNED_INT, ids,
+                                    n * sizeof(uint32_t), msg, msg_size);
+    for (size_t i = 0; res == TL_OK && i < n; i++) {
+        uint32_t v;
+        memcpy(&v, ids + 4 * i, sizeof v);
+        int drawn = v != 0u;
+        rgba[4 * i + 0] = drawn ? (float)((v >> TL__VIS_TRIANGLE_BITS) - 1u) : -1.0f;
+        rgba[4 * i + 1] = drawn ? (float)(v & ((1u << TL__VIS_TRIANGLE_BITS) - 1u)) : -1.0f;
+        rgba[4 * i + 2] = (float)drawn;
+        rgba[4 * i + 3] = 1.0f;
+    }
+    return res;
+}
+
 tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id id, float *rgba, size_t *size)
 {
     if (!r) return TL_ERROR_INVALID_ARGUMENT;
@@ -125,6 +144,7 @@ tl_result tl_renderer_read_target(tl_renderer *r, tl_target_id id, float *rgba, 
     /* the light scale's reduced depth and RT0 read as the frame's */
     if (r->graph.plan.targets[id]->depth) res = tl__read_depth(r, id, rgba, n, msg, sizeof msg);
     else if (r->graph.plan.targets[id]->read_rt0) res = tl__read_rt0(r, id, rgba, n, msg, sizeof msg);
+    else if (r->graph.plan.targets[id]->read_vis_id) res = tl__read_vis_id(r, id, rgba, n, msg, sizeof msg);
     else res = tl__target_read(&r->dev.gl, t, GL_RGBA, GL_FLOAT, rgba, *size, msg, sizeof msg);
     if (res != TL_OK) return tl__fail(&r->dev, res, "renderer: reading %s: %s", tl_target_name(id), msg);
     return TL_OK;

@@ -193,6 +193,8 @@ void modes_compare_reference(const tl_scene *s, const modes_frame *fat, const mo
     memcpy(pr.m, m->proj, sizeof pr.m);
     pr.format = m->depth_format;
     double sum_sq_pred = 0.0, sum_var = 0.0, sum_sq = 0.0, sum_sq_hdr = 0.0, sum_var_hdr = 0.0;
+    /* the modes that shade the unrounded interpolated normal and position: forward, visibility */
+    const int interpolated = m->mode == TL_MODE_FORWARD || m->mode == TL_MODE_VISIBILITY;
     for (size_t y = 0; y < h; y++)
         for (size_t x = 0; x < w; x++) {
             size_t i = y * w + x;
@@ -216,16 +218,17 @@ void modes_compare_reference(const tl_scene *s, const modes_frame *fat, const mo
                 surf.gloss = m->normal[4 * i + 3];
             } else {
                 memcpy(nm, nf, sizeof nm);
-                tilt = m->mode == TL_MODE_FORWARD ? FAT_NORMAL_ERROR : 0.0;
+                tilt = interpolated ? FAT_NORMAL_ERROR : 0.0;
             }
-            /* forward shades the interpolated position, which fat stores in full float; a thin mode
+            /* forward (and visibility, from its rebuilt barycentrics) shades the interpolated
+             * position, which fat stores in full float; a thin mode
              * the position its light pass rebuilt from depth, whose texel fetch may round the D24
              * code's conversion to float the other way: the range spans one float step either way */
-            const double *p = m->mode == TL_MODE_FORWARD ? pf : pm;
+            const double *p = interpolated ? pf : pm;
             size_t count = lights_at(all, nl, p, here);
             double c[3], lo[3], hi[3];
             shade_range(model, &surf, p, nm, tilt, here, count, c, lo, hi);
-            for (int step = -1; step <= 1 && !m->position && m->mode != TL_MODE_FORWARD; step += 2) {
+            for (int step = -1; step <= 1 && !m->position && !interpolated; step += 2) {
                 double q[3], c2[3], lo2[3], hi2[3];
                 frame_position(m, &pr, x, y, step, q);
                 shade_range(model, &surf, q, nm, tilt, here, count, c2, lo2, hi2);

@@ -164,7 +164,7 @@ TL_TEST(renderer_options_out_of_range_name_field_value_and_range)
         const char *said;
     } by_hand[] = {
         {{.ssr = {.enabled = 1, .refine = 9}}, "options.ssr.refine = 9 is out of range (1..8; 0: 4)"},
-        {{.mode = (tl_render_mode)9}, "options.mode = 9 is out of range (0..4, a tl_render_mode)"},
+        {{.mode = (tl_render_mode)9}, "options.mode = 9 is out of range (0..5, a tl_render_mode)"},
         {{.light_scale = 0.3f}, "options.light_scale = 0.3 is out of range (0.25, 0.5 or 1; 0: 1)"},
         {{.ambient = {0.1f, NAN, 0.1f}}, "options.ambient[1] = nan is out of range (>= 0; 0: the scene's ambient (all three 0), < 0: 0)"},
         {{.ssr = {.enabled = 1, .min_gloss = 1}}, "options.ssr.min_gloss = 1 is out of range ((0, 1); 0: 0.4, < 0: 0)"},

@@ -18,8 +18,11 @@ static void tl__clear(tl_renderer *r, const tl__compiled_pass *cp)
     tl__pipeline masks = dev->state.known ? dev->state.p : cp->decl->state; /* clears obey the write masks */
     masks.color_write = masks.depth_write = 1;
     tl__state_apply(&dev->gl, &dev->state, &masks);
-    for (uint8_t k = 0; k < cp->clear_count; k++)
-        dev->gl.ClearNamedFramebufferfv(cp->fbo, GL_COLOR, cp->clear_locations[k], tl__zero);
+    static const GLuint zero_uint[4] = {0, 0, 0, 0};
+    for (uint8_t k = 0; k < cp->clear_count; k++) {
+        if (cp->clear_uint & (1u << k)) dev->gl.ClearNamedFramebufferuiv(cp->fbo, GL_COLOR, cp->clear_locations[k], zero_uint);
+        else dev->gl.ClearNamedFramebufferfv(cp->fbo, GL_COLOR, cp->clear_locations[k], tl__zero);
+    }
     if (cp->clear_depth) {
         float far = r->desc.options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ? 0.0f : 1.0f;
         dev->gl.ClearNamedFramebufferfi(cp->fbo, GL_DEPTH_STENCIL, 0, far, 0);

@@ -187,7 +187,12 @@ static tl_result tl__graph_pass(tl__device *dev, tl__graph *r, tl__compiled_pass
     for (int t = 0; t < TL_TARGET_COUNT && n < TL__FRAMEBUFFER_MAX_COLORS; t++) {
         if (r->plan.targets[t]->depth || !(d->writes & TL_TARGET_BIT(t))) continue;
         if (r->plan.targets[t]->buffer_bytes) continue; /* a storage buffer (the fix-up list), bound by its module */
-        if (d->clears & TL_TARGET_BIT(t)) cp->clear_locations[cp->clear_count++] = (uint8_t)n;
+        if (d->clears & TL_TARGET_BIT(t)) {
+            const tl__format_info *f = tl__format_lookup(r->targets[t].internal_format);
+            if (f && (f->format == GL_RED_INTEGER || f->format == GL_RG_INTEGER || f->format == GL_RGBA_INTEGER))
+                cp->clear_uint |= (uint8_t)(1u << cp->clear_count);
+            cp->clear_locations[cp->clear_count++] = (uint8_t)n;
+        }
         colors[n++] = &r->targets[t];
     }
     cp->clear_depth = (d->clears & TL_TARGET_BIT(d->depth_target)) != 0;

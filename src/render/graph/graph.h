@@ -19,6 +19,7 @@ typedef struct tl__compiled_pass {
     GLuint programs[TL__PASS_MAX_PROGRAMS];
     uint8_t clear_locations[TL__FRAMEBUFFER_MAX_COLORS];
     uint8_t clear_count;
+    uint8_t clear_uint;  /* bit k: clear_locations[k] is an integer target (the visibility id), cleared as such */
     uint8_t clear_depth;
     uint8_t bind_count;  /* the targets it samples, on units 0 .. bind_count - 1 in tl_target_id order */
     GLuint textures[TL__TARGET_UNITS];

@@ -18,6 +18,8 @@ const tl__mode_def tl__modes[TL_MODE_COUNT_] = {
                                TL__B(HDR), TL__F_LIGHT_SHADE_THIN, 0, 0},
     [TL_MODE_FAT] = {TL__FAT | TL__B(HDR), TL__B(DEPTH) | TL__FAT, TL__FAT, TL__B(HDR), TL__F_LIGHT_SHADE_FAT, 0, 0},
     [TL_MODE_FORWARD] = {0, 0, 0, 0, TL__F_NONE, 0, 1},
+    /* the id, and RT0 only for an effect that reads normals (SSAO, SSR, shadow-debug): optional */
+    [TL_MODE_VISIBILITY] = {TL__B(VIS_ID) | TL__B(RT0), 0, 0, 0, TL__F_NONE, 0, 0, 1},
 };
 
 /* ---- what a mode plans, asked by several passes (pass.h) ------------------------------------- */
@@ -39,7 +41,7 @@ int tl__ssao_pass(const tl__plan_input *in)
 {
     if (!in->o->ssao.enabled) return 0;
     if (in->mode->forward) return tl__forward_prepass(in) ? 1 : 0;
-    return in->mode->material_pass ? 1 : 2;
+    return in->mode->material_pass || in->mode->visibility ? 1 : 2; /* visibility: vis-resolve samples it */
 }
 
 void tl__ssao_perm(const tl__plan_input *in, const tl__pass_decl *d, tl__perm *k)

@@ -33,6 +33,7 @@ typedef struct tl__mode_def {
     uint8_t light_flag;      /* what the light shader does: TL__F_LIGHT_ACCUM, TL__F_LIGHT_SHADE_* */
     uint8_t material_pass;   /* a second geometry pass applies materials to the light buffer */
     uint8_t forward;         /* no G-buffer: objects are shaded with their light lists */
+    uint8_t visibility;      /* a visibility buffer: depth and a triangle id; vis-resolve shades with the tile lists */
 } tl__mode_def;
 
 extern const tl__mode_def tl__modes[TL_MODE_COUNT_];

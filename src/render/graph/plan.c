@@ -30,7 +30,10 @@ static void tl__plan_strategy(tl__plan_input *in)
 {
     size_t local = in->f.point_lights + in->f.spot_lights;
     tl_light_strategy s = in->o->light_strategy;
-    if (s != TL_LIGHT_STRATEGY_DEFAULT) {
+    if (in->mode->visibility) {
+        s = TL_LIGHT_STRATEGY_TILED;
+        snprintf(in->strategy_reason, sizeof in->strategy_reason, "visibility: the resolve lights from the tile lists");
+    } else if (s != TL_LIGHT_STRATEGY_DEFAULT) {
         snprintf(in->strategy_reason, sizeof in->strategy_reason, "forced by the options");
     } else if (local >= TL__TILED_CROSSOVER) {
         s = TL_LIGHT_STRATEGY_TILED;
@@ -49,7 +52,7 @@ static void tl__plan_strategy(tl__plan_input *in)
     in->tiles_y = (in->d.height + in->tile_size - 1) / in->tile_size;
     /* the tiled light pass: as asked, or TL__TILED_SHADING_AUTO's pick (docs/frame.md, "Fragment or compute") */
     tl_tiled_shading ts = in->o->tiled_shading == TL_TILED_SHADING_AUTO ? TL__TILED_SHADING_AUTO : in->o->tiled_shading;
-    in->tiled_compute = ts == TL_TILED_SHADING_COMPUTE;
+    in->tiled_compute = ts == TL_TILED_SHADING_COMPUTE || in->mode->visibility; /* vis-resolve: a compute pass */
 }
 
 /* The lighting model (forced, or GGX for materials authored for it) and the shaders' switches. */

@@ -38,6 +38,10 @@ static void tl__downgrades_lighting(const tl__plan_input *in, tl_frame_plan *p)
     /* asked, not defaulted: the compact layout's default is one sum */
     if (in->asked.fresnel == TL_FRESNEL_TWO_SUMS && in->fresnel == TL_FRESNEL_NV)
         tl__downgrade(p, "fresnel", "two-sums", "nv", "the compact light buffer keeps one specular sum");
+    if (in->mode->visibility && o->light_strategy == TL_LIGHT_STRATEGY_VOLUMES)
+        tl__downgrade(p, "light_strategy", "volumes", "tiled", "visibility: the resolve lights from the tile lists");
+    if (in->mode->visibility && o->tiled_shading == TL_TILED_SHADING_FRAGMENT)
+        tl__downgrade(p, "tiled_shading", "fragment", "compute", "visibility: the resolve is a compute pass");
     if (o->fullscreen_lights && in->lights && (in->mode->forward || in->strategy == TL_LIGHT_STRATEGY_TILED))
         tl__downgrade(p, "fullscreen_lights", "1", "0",
                       in->mode->forward ? "forward draws no light volumes" : "the tiled strategy draws no light volumes");

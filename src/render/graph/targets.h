@@ -36,6 +36,7 @@ typedef struct tl__target_def {
     uint8_t depth;      /* a depth target: a pass's depth attachment (depth_target), never a colour write */
     uint8_t frame_output; /* the frame's final image: what read_output reads, where render_to draws */
     uint8_t read_rt0;   /* read_target decodes it as RT0 (octahedral normal, gloss), not as floats */
+    uint8_t read_vis_id; /* read_target splits it as visibility's id: object slot, triangle, drawn */
 } tl__target_def;
 
 /* The first fields of a definition: `{TL__TARGET(HDR, "hdr"), .format = GL_RGBA16F}`. */

@@ -122,6 +122,9 @@ void tl__lights_release(tl__device *dev, tl__lights *l)
     l->fwd_capacity = l->fwd_count = l->fwd_objects = 0;
     tl__tiles_release(dev, &l->tiles);
     tl__fixup_release(dev, &l->fixup);
+    if (l->vis.buffer) dev->gl.DeleteBuffers(1, &l->vis.buffer);
+    l->vis.buffer = 0;
+    l->vis.bytes = 0;
     tl__light_volumes_destroy(dev, l);
 }
 
@@ -166,7 +169,10 @@ void tl__lights_frame_block(const tl__lights *l, unsigned needs, uint32_t counts
 
 GLuint tl__lights_buffer(const tl__lights *l, tl_target_id t)
 {
-    return t == TL_TARGET_LIGHT_LISTS ? l->tiles.headers : t == TL_TARGET_LIGHT_FIXUP ? l->fixup.buffer : 0u;
+    return t == TL_TARGET_LIGHT_LISTS   ? l->tiles.headers
+           : t == TL_TARGET_LIGHT_FIXUP ? l->fixup.buffer
+           : t == TL_TARGET_VIS_TILES   ? l->vis.buffer
+                                        : 0u;
 }
 
 void tl__lights_read_counters(tl__device *dev, tl__lights *l, tl_target_set targets, uint32_t pixels,

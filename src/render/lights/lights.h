@@ -49,6 +49,13 @@ typedef struct tl__fixup {
     uint64_t fence_frame[TL__QUERY_RING];
 } tl__fixup;
 
+/* Visibility's material buckets (pass_visibility.c): one storage buffer, made again when a plan needs
+ * more tiles; vis-classify fills it, vis-resolve dispatches from it. */
+typedef struct tl__vis_tiles {
+    GLuint buffer;
+    size_t bytes;
+} tl__vis_tiles;
+
 struct tl__lights {
     tl_light *lights;
     size_t count;
@@ -76,6 +83,8 @@ struct tl__lights {
     tl__tiles tiles;
     /* the light scale's fix-up list (fixup.c) */
     tl__fixup fixup;
+    /* visibility's material buckets (pass_visibility.c) */
+    tl__vis_tiles vis;
     /* per scene light: its shadow slot (shadow.glsl) for this frame, 0: none; NULL without shadows
      * (owned by the shadow module, shadows.c) */
     const float *shadow_slots;

@@ -28,7 +28,7 @@ int tl__why_say(tl__why *why, const char *fmt, ...) TL__PRINTF_LIKE(2, 3);
  * the value it stands for, or its own where it means "the planner picks"). option_names.c makes
  * from each line the public tl_X_name / tl_X_from_name and the registry's value_name. */
 #define TL__OPTION_ENUMS(X)                                                                                       \
-    X(tl_render_mode, render_mode, TL_MODE_COUNT_, "thin-lpp", "thin-lpp", "thin-deferred", "fat", "forward")     \
+    X(tl_render_mode, render_mode, TL_MODE_COUNT_, "thin-lpp", "thin-lpp", "thin-deferred", "fat", "forward", "visibility")     \
     X(tl_rt0_packing, rt0_packing, TL_RT0_COUNT_, "rgba8", "rgba8", "rgb10a2")                                    \
     X(tl_light_buffer, light_buffer, TL_LIGHT_BUFFER_COUNT_, "exact", "exact", "compact")                         \
     X(tl_light_format, light_format, TL_LIGHT_FORMAT_COUNT_, "rgba16f", "rgba16f", "r11g11b10f")                  \

@@ -101,7 +101,7 @@ void tl__light_pass_defines(const tl__plan_input *in, const tl__pass_decl *d, tl
 
 static void tl__lights_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!in->lights || in->mode->forward || in->strategy != TL_LIGHT_STRATEGY_VOLUMES) return;
+    if (!in->lights || in->mode->forward || in->mode->visibility || in->strategy != TL_LIGHT_STRATEGY_VOLUMES) return;
     tl__light_pass_targets(in, d);
     if (!(d->writes & TL__B(HDR))) d->clears = d->writes;
     d->attach_depth = 1;

@@ -16,12 +16,13 @@ extern const tl__pass_def tl__pass_msaa_classify, tl__pass_lights_samples;
 extern const tl__pass_def tl__pass_shadow_debug;
 extern const tl__pass_def tl__pass_shadows;
 extern const tl__pass_def tl__pass_light_upsample;
+extern const tl__pass_def tl__pass_vis_classify, tl__pass_vis_resolve;
 
 const tl__pass_def *const tl__pass_table[TL_PASS_COUNT] = {
     &tl__pass_shadows,       &tl__pass_depth_prepass, &tl__pass_gbuffer,   &tl__pass_ssao,      &tl__pass_ssao_blur,   &tl__pass_ssao_apply,
     &tl__pass_stipple_depth, &tl__pass_stipple,
     &tl__pass_msaa_classify, &tl__pass_light_reduce,  &tl__pass_light_cull,    &tl__pass_lights,    &tl__pass_lights_tiled,
-    &tl__pass_lights_samples, &tl__pass_light_upsample, &tl__pass_material, &tl__pass_forward, &tl__pass_shadow_debug, &tl__pass_sky,
+    &tl__pass_lights_samples, &tl__pass_light_upsample, &tl__pass_vis_classify, &tl__pass_vis_resolve, &tl__pass_material, &tl__pass_forward, &tl__pass_shadow_debug, &tl__pass_sky,
     &tl__pass_points_lines,  &tl__pass_transparent,   &tl__pass_stipple_resolve, &tl__pass_ssr,       &tl__pass_ssr_apply, &tl__pass_fog,         &tl__pass_dof,
     &tl__pass_dof_apply,     &tl__pass_bloom,     &tl__pass_vignette,  &tl__pass_tonemap,   &tl__pass_fxaa,
 };

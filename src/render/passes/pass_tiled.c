@@ -74,7 +74,7 @@ static int tl__compute_shading(const tl__plan_input *in) { return in->tiled_comp
 
 static void tl__tiled_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
-    if (!tl__tiled(in) || in->mode->forward) return;
+    if (!tl__tiled(in) || in->mode->forward || in->mode->visibility) return; /* vis-resolve lights itself */
     tl__light_pass_targets(in, d);
     d->reads |= TL__B(LIGHT_LISTS);
     d->light_data = TL__LIGHTS_VIEW | TL__LIGHTS_TILES;

@@ -72,6 +72,9 @@ void tl__objects_fill(const tl__scene_gpu *g, const tl__view *v, const uint32_t 
             memcpy(&o->normal_view[c * 4], &nm[c * 3], 3 * sizeof(float));
             o->normal_view[c * 4 + 3] = 0.0f;
         }
+        uint32_t vis[2] = {g->objects[i].first_index, g->objects[i].material}; /* uint words (object.glsl) */
+        memcpy(&o->normal_view[3], &vis[0], sizeof vis[0]);
+        memcpy(&o->normal_view[7], &vis[1], sizeof vis[1]);
         o->light_first = first ? first[i] : 0u;
         o->light_count = first ? count[i] : 0u;
         o->pad[0] = o->pad[1] = 0u;
@@ -82,7 +85,7 @@ void tl__objects_fill(const tl__scene_gpu *g, const tl__view *v, const uint32_t 
         out[g->visible[g->visible_opaque + k]].pad[0] = (uint32_t)(k + 1);
 }
 
-static void tl__bind_material(const GladGLContext *gl, const tl__scene_gpu *g, uint32_t index)
+void tl__bind_material(const GladGLContext *gl, const tl__scene_gpu *g, uint32_t index)
 {
     gl->BindBufferRange(GL_UNIFORM_BUFFER, TL__UBO_MATERIAL, g->ubo_materials, (GLintptr)(index * g->material_stride),
                         (GLsizeiptr)sizeof(tl__material_ubo));

@@ -17,7 +17,9 @@ enum { TL__WARNED_NEAR = 1u }; /* warnings given once per scene (tl__scene_gpu.w
 /* std430 element of tl_object_buffer (shaders/object.glsl). */
 typedef struct tl__object_gpu {
     float model[16];
-    float normal_view[12]; /* mat3: three columns of vec4 */
+    /* mat3: three columns of vec4; the fourth words of the first two are the object's first index and
+     * material (visibility's resolve: object.glsl), as uint32_t */
+    float normal_view[12];
     uint32_t light_first, light_count, pad[2]; /* pad[0]: the object's stipple layer (0: none) */
 } tl__object_gpu;
 
@@ -30,7 +32,8 @@ typedef struct tl__material_ubo {
     int32_t flags, texture_mask, uv1_mask, model;
     float dielectric_f0[3], clearcoat;    /* the models' parameters (material_models.glsl) */
     float sheen_color[3], sheen_roughness;
-    float clearcoat_roughness, wrap, toon_steps, pad;
+    float clearcoat_roughness, wrap, toon_steps;
+    uint32_t index; /* the material's index (visibility's resolve) */
 } tl__material_ubo;
 
 typedef struct tl__gpu_material {
@@ -132,6 +135,8 @@ void tl__scene_bounds_refresh(tl__scene_gpu *g);
 /* draw.c: the visible objects once per frame (returns the opaque triangles' count), their per-object data
  * (with the per-object light lists' ranges when `first` is not NULL). */
 size_t tl__visibility(tl__scene_gpu *g, const tl__view *v);
+/* Material `index`'s record (a range of the materials' buffer) and textures, bound. */
+void tl__bind_material(const GladGLContext *gl, const tl__scene_gpu *g, uint32_t index);
 void tl__objects_fill(const tl__scene_gpu *g, const tl__view *v, const uint32_t *first, const uint32_t *count,
                       tl__object_gpu *out);
 

@@ -239,7 +239,7 @@ static GLuint tl__kept_texture(tl__device *dev, tl__scene_gpu *g, uint32_t index
     return *slot;
 }
 
-static void tl__material_record(const tl_material *m, int texture_mask, tl__material_ubo *u)
+static void tl__material_record(const tl_material *m, int texture_mask, uint32_t index, tl__material_ubo *u)
 {
     memset(u, 0, sizeof *u);
     memcpy(u->albedo, m->albedo, sizeof u->albedo);
@@ -263,6 +263,7 @@ static void tl__material_record(const tl_material *m, int texture_mask, tl__mate
     u->sheen_roughness = m->sheen_roughness;
     u->wrap = m->wrap;
     u->toon_steps = (float)m->toon_steps;
+    u->index = index; /* visibility's resolve: the pixels of this material */
 }
 
 /* Textures and one std140 record per material (a scene without materials: the zeroed one), with
@@ -285,7 +286,7 @@ static tl_result tl__upload_materials(tl__device *dev, tl__scene_gpu *g, const t
                 tl__slot_texture(dev, g, s, tl__material_texture(m, k), tl__material_texture_slots[k].srgb);
             if (g->materials[i].textures[k]) mask |= 1 << k;
         }
-        tl__material_record(m, mask, (tl__material_ubo *)(records + i * g->material_stride));
+        tl__material_record(m, mask, (uint32_t)i, (tl__material_ubo *)(records + i * g->material_stride));
     }
     const GladGLContext *gl = &dev->gl;
     gl->CreateBuffers(1, &g->ubo_materials);
@@ -401,7 +402,7 @@ static tl_result tl__material_write(tl__device *dev, tl__scene_gpu *g, uint32_t 
         mask |= 1 << k;
     }
     tl__material_ubo record;
-    tl__material_record(&resolved, mask, &record);
+    tl__material_record(&resolved, mask, index, &record);
     dev->gl.NamedBufferSubData(g->ubo_materials, (GLintptr)(index * g->material_stride), (GLsizeiptr)sizeof record,
                                &record);
     g->materials[index].flags = resolved.flags;

@@ -1,0 +1,95 @@
+// Visibility's attribute rebuild (vis-resolve): a pixel's triangle from the scene's buffers, the
+// perspective-correct barycentrics of the pixel's view ray against it, and the screen-space
+// derivatives a rasteriser gives its 2 x 2 quad (the texture's level of detail): the differences
+// along the quad's first row and column (coarse derivatives), from the rays through those pixels
+// against the triangle's plane, where a rasteriser's helper invocations would have evaluated it. Sets material.glsl's inputs (v_normal, v_uv, ...) as the vertex shader
+// (gbuffer.vert.glsl) and interpolation would have them.
+#ifndef TL_VIS_REBUILD_GLSL
+#define TL_VIS_REBUILD_GLSL
+
+layout(std430, binding = TL_SSBO_VIS_VERTICES) readonly buffer tl_vis_vertex_block { float tl_vis_vertices[]; };
+layout(std430, binding = TL_SSBO_VIS_INDICES) readonly buffer tl_vis_index_block { uint tl_vis_indices[]; };
+#ifdef TL_VCOLOR
+layout(std430, binding = TL_SSBO_VIS_COLORS) readonly buffer tl_vis_color_block { vec4 tl_vis_colors[]; };
+#endif
+#ifdef TL_UV1
+layout(std430, binding = TL_SSBO_VIS_UV1) readonly buffer tl_vis_uv1_block { vec2 tl_vis_uv1[]; };
+#endif
+
+// tl_vertex: position 0..2, normal 3..5, uv 6..7, tangent 8..11 (scene.h)
+vec3 tl_vis_vec3(uint v, uint at) { return vec3(tl_vis_vertices[v * 12u + at], tl_vis_vertices[v * 12u + at + 1u], tl_vis_vertices[v * 12u + at + 2u]); }
+vec2 tl_vis_vec2(uint v, uint at) { return vec2(tl_vis_vertices[v * 12u + at], tl_vis_vertices[v * 12u + at + 1u]); }
+
+// The view ray through window point q (pixels), as a direction with z = -1.
+vec3 tl_vis_ray(vec2 q) { return tl_view_position(-1.0, q * u_inv_size * 2.0 - 1.0, u_ray_params); }
+
+// Barycentrics (of p0, p1, p2) of the point where the ray from the eye along d meets the
+// triangle's plane (Moller-Trumbore with the origin at the eye): perspective-correct by
+// construction. Not clamped: the neighbours' rays may leave the triangle, as the rasteriser's
+// derivatives extend its plane.
+vec3 tl_vis_barycentrics(vec3 p0, vec3 e1, vec3 e2, vec3 d)
+{
+    vec3 pv = cross(d, e2);
+    float inv = 1.0 / dot(e1, pv);
+    vec3 t = -p0;
+    float b1 = dot(t, pv) * inv;
+    float b2 = dot(d, cross(t, e1)) * inv;
+    return vec3(1.0 - b1 - b2, b1, b2);
+}
+
+// A finite derivative: a ray parallel to the plane (the horizon) gives the coarsest level.
+vec2 tl_vis_finite(vec2 d) { return any(isnan(d)) || any(isinf(d)) ? vec2(1e8) : d; }
+
+void tl_vis_rebuild(uint object, uint triangle, vec2 q)
+{
+    uint first = tl_object_first_index(object) + 3u * triangle;
+    uint i0 = tl_vis_indices[first], i1 = tl_vis_indices[first + 1u], i2 = tl_vis_indices[first + 2u];
+    mat4 model_view = u_view * tl_objects[object].model;
+    vec3 p0 = (model_view * vec4(tl_vis_vec3(i0, 0u), 1.0)).xyz;
+    vec3 p1 = (model_view * vec4(tl_vis_vec3(i1, 0u), 1.0)).xyz;
+    vec3 p2 = (model_view * vec4(tl_vis_vec3(i2, 0u), 1.0)).xyz;
+    vec3 e1 = p1 - p0, e2 = p2 - p0;
+    // the rasteriser's facing: counter-clockwise on screen is the normal towards the eye
+    v_front_facing = dot(cross(e1, e2), p0) < 0.0;
+
+    vec3 b = tl_vis_barycentrics(p0, e1, e2, tl_vis_ray(q));
+    vec2 quad = floor((q - 0.5) * 0.5) * 2.0 + 0.5; // the quad's first pixel's centre
+    vec3 bq = tl_vis_barycentrics(p0, e1, e2, tl_vis_ray(quad));
+    vec3 bx = tl_vis_barycentrics(p0, e1, e2, tl_vis_ray(quad + vec2(1.0, 0.0))) - bq;
+    vec3 by = tl_vis_barycentrics(p0, e1, e2, tl_vis_ray(quad + vec2(0.0, 1.0))) - bq;
+    // the pixel's centre is inside the triangle the rasteriser chose; a sliver (an edge-on
+    // triangle) may put it outside by rounding, or make the weights not finite: held to the triangle
+    if (any(isnan(b)) || any(isinf(b))) b = vec3(1.0 / 3.0);
+    b = clamp(b, 0.0, 1.0);
+    b /= max(b.x + b.y + b.z, 1e-30);
+
+    v_object = object;
+    v_view_position = p0 * b.x + p1 * b.y + p2 * b.z;
+    mat3 nv = tl_object_normal_view(object);
+    v_normal = nv * (tl_vis_vec3(i0, 3u) * b.x + tl_vis_vec3(i1, 3u) * b.y + tl_vis_vec3(i2, 3u) * b.z);
+    vec2 u0 = tl_vis_vec2(i0, 6u), u1 = tl_vis_vec2(i1, 6u), u2 = tl_vis_vec2(i2, 6u);
+    v_uv = u0 * b.x + u1 * b.y + u2 * b.z;
+    v_uv_dx = tl_vis_finite(u0 * bx.x + u1 * bx.y + u2 * bx.z);
+    v_uv_dy = tl_vis_finite(u0 * by.x + u1 * by.y + u2 * by.z);
+#ifdef TL_NORMAL_MAP
+    vec4 t = vec4(tl_vis_vec3(i0, 8u), tl_vis_vertices[i0 * 12u + 11u]) * b.x +
+             vec4(tl_vis_vec3(i1, 8u), tl_vis_vertices[i1 * 12u + 11u]) * b.y +
+             vec4(tl_vis_vec3(i2, 8u), tl_vis_vertices[i2 * 12u + 11u]) * b.z;
+    v_tangent = vec4(mat3(model_view) * t.xyz, t.w);
+#else
+    v_tangent = vec4(0.0);
+#endif
+#ifdef TL_VCOLOR
+    v_color = tl_vis_colors[i0] * b.x + tl_vis_colors[i1] * b.y + tl_vis_colors[i2] * b.z;
+#endif
+#ifdef TL_UV1
+    vec2 w0 = tl_vis_uv1[i0], w1 = tl_vis_uv1[i1], w2 = tl_vis_uv1[i2];
+    v_uv1 = w0 * b.x + w1 * b.y + w2 * b.z;
+    v_uv1_dx = tl_vis_finite(w0 * bx.x + w1 * bx.y + w2 * bx.z);
+    v_uv1_dy = tl_vis_finite(w0 * by.x + w1 * by.y + w2 * by.z);
+#else
+    v_uv1_dx = v_uv1_dy = vec2(0.0);
+#endif
+}
+
+#endif
