@@ -94,6 +94,15 @@ void check_all_targets_finite(run *u, const char *label);
 
 /* NDC of a pixel centre, computed as the light pass computes it (float). */
 void pixel_ndc(uint32_t x, uint32_t y, uint32_t w, uint32_t h, float ndc[2]);
+/* The world-space direction (not unit) of the ray from c->position through window position (x, y)
+ * of a w x h frame (pixels, rows bottom-up: a pixel's centre is at x + 0.5, y + 0.5), in double,
+ * through the renderer's look-at (forward to the target, right = forward x up, up zero: +Y) and
+ * perspective (c->fov_y, aspect w / h). */
+void camera_ray(const tl_camera *c, uint32_t w, uint32_t h, double x, double y, double dir[3]);
+/* The nearest of `s`'s triangles (objects with an identity or zero transform, triangle primitives)
+ * the ray origin + t dir (t > 0) meets, in double: the object's index, or -1 when none; *t_hit its
+ * t. For the hand-made scenes' expectations (a few thousand triangles at most). */
+long scene_ray_object(const tl_scene *s, const double origin[3], const double dir[3], double *t_hit);
 /* The G-buffer sample the light pass sees at a pixel: position reconstructed from the stored
  * depth (the DEPTH target's linear distance), decoded normal and gloss; 0 for background.
  * The light pass fetches the same depth through a texture, which may convert it to float

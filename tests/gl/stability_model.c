@@ -12,6 +12,65 @@ void pixel_ndc(uint32_t x, uint32_t y, uint32_t w, uint32_t h, float ndc[2])
     ndc[1] = ((float)y + 0.5f) * (1.0f / (float)h) * 2.0f - 1.0f;
 }
 
+static void unit3(double v[3])
+{
+    double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    for (int k = 0; k < 3; k++) v[k] /= l;
+}
+
+static void cross3(const double a[3], const double b[3], double o[3])
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+void camera_ray(const tl_camera *c, uint32_t w, uint32_t h, double x, double y, double dir[3])
+{
+    double f[3], r[3], u[3], up[3] = {c->up[0], c->up[1], c->up[2]};
+    if (up[0] == 0.0 && up[1] == 0.0 && up[2] == 0.0) up[1] = 1.0;
+    for (int k = 0; k < 3; k++) f[k] = (double)c->target[k] - (double)c->position[k];
+    unit3(f);
+    cross3(f, up, r);
+    unit3(r);
+    cross3(r, f, u);
+    double ty = tan(0.5 * (double)c->fov_y), tx = ty * (double)w / (double)h;
+    double nx = 2.0 * x / (double)w - 1.0, ny = 2.0 * y / (double)h - 1.0;
+    for (int k = 0; k < 3; k++) dir[k] = f[k] + nx * tx * r[k] + ny * ty * u[k];
+}
+
+long scene_ray_object(const tl_scene *s, const double origin[3], const double dir[3], double *t_hit)
+{
+    long best = -1;
+    double best_t = INFINITY;
+    for (size_t o = 0; o < s->object_count; o++) {
+        const tl_object *ob = &s->objects[o];
+        for (uint32_t i = 0; i + 3 <= ob->index_count; i += 3) {
+            const float *p[3];
+            for (int k = 0; k < 3; k++) p[k] = s->vertices[s->indices[ob->first_index + i + k]].position;
+            /* Moller-Trumbore, both faces */
+            double e1[3], e2[3], q[3], pv[3], tv[3];
+            for (int k = 0; k < 3; k++) {
+                e1[k] = (double)p[1][k] - p[0][k];
+                e2[k] = (double)p[2][k] - p[0][k];
+                tv[k] = origin[k] - p[0][k];
+            }
+            cross3(dir, e2, pv);
+            double det = e1[0] * pv[0] + e1[1] * pv[1] + e1[2] * pv[2];
+            if (det == 0.0) continue;
+            double a = (tv[0] * pv[0] + tv[1] * pv[1] + tv[2] * pv[2]) / det;
+            cross3(tv, e1, q);
+            double b = (dir[0] * q[0] + dir[1] * q[1] + dir[2] * q[2]) / det;
+            double t = (e2[0] * q[0] + e2[1] * q[1] + e2[2] * q[2]) / det;
+            if (a < 0.0 || b < 0.0 || a + b > 1.0 || !(t > 0.0) || t >= best_t) continue;
+            best_t = t;
+            best = (long)o;
+        }
+    }
+    if (t_hit) *t_hit = best_t;
+    return best;
+}
+
 /* One step of a stored window depth as the light pass may see it: a float ULP of w, and at least
  * a D24 code for D24. */
 static float depth_read_step(tl_depth_format f, float w)
