@@ -24,17 +24,38 @@ vec2 tl_vis_vec2(uint v, uint at) { return vec2(tl_vis_vertices[v * 12u + at], t
 vec3 tl_vis_ray(vec2 q) { return tl_view_position(-1.0, q * u_inv_size * 2.0 - 1.0, u_ray_params); }
 
 // Barycentrics (of p0, p1, p2) of the point where the ray from the eye along d meets the
-// triangle's plane (Moller-Trumbore with the origin at the eye): perspective-correct by
-// construction. Not clamped: the neighbours' rays may leave the triangle, as the rasteriser's
-// derivatives extend its plane.
-vec3 tl_vis_barycentrics(vec3 p0, vec3 e1, vec3 e2, vec3 d)
+// triangle's plane (normal n = cross(p1 - p0, p2 - p0)): perspective-correct by construction. The
+// point is found first (t along the ray), then each weight is the area of the sub-triangle it and
+// an edge make over the whole one, from vectors to the point: a sliver's weights stay exact (a
+// Moller-Trumbore determinant of two long, nearly parallel edges would lose them). Not clamped:
+// the neighbours' rays may leave the triangle, as the rasteriser's derivatives extend its plane.
+vec3 tl_vis_barycentrics(vec3 p0, vec3 p1, vec3 p2, vec3 n, vec3 d)
 {
-    vec3 pv = cross(d, e2);
-    float inv = 1.0 / dot(e1, pv);
-    vec3 t = -p0;
-    float b1 = dot(t, pv) * inv;
-    float b2 = dot(d, cross(t, e1)) * inv;
-    return vec3(1.0 - b1 - b2, b1, b2);
+    vec3 p = d * (dot(n, p0) / dot(n, d));
+    float inv = 1.0 / dot(n, n);
+    float b0 = dot(cross(p1 - p, p2 - p), n) * inv;
+    float b1 = dot(cross(p2 - p, p0 - p), n) * inv;
+    return vec3(b0, b1, 1.0 - b0 - b1);
+}
+
+// A vertex's window position (pixels) from its view-space position (in front of the eye).
+vec2 tl_vis_window(vec3 p)
+{
+    vec2 ndc = vec2(u_ray_params.x * p.x + u_ray_params.z * p.z, u_ray_params.y * p.y + u_ray_params.w * p.z) / -p.z;
+    return (ndc * 0.5 + 0.5) / u_inv_size;
+}
+
+float tl_vis_cross(vec2 a, vec2 b) { return a.x * b.y - a.y * b.x; }
+
+// Barycentrics at window point q as a rasteriser has them: the areas of the sub-triangles q makes
+// with the window positions s0, s1, s2, each over its vertex's w (perspective-correct), normalised.
+// In two dimensions a sliver's weights are as exact as a large triangle's: its short side is small
+// in window units, but no depth enters the areas (the three-dimensional plane of a sliver tilts
+// with its vertices' depth rounding over its width, moving the point along the sliver).
+vec3 tl_vis_barycentrics_window(vec2 s0, vec2 s1, vec2 s2, vec3 inv_w, vec2 q)
+{
+    vec3 a = vec3(tl_vis_cross(s1 - q, s2 - q), tl_vis_cross(s2 - q, s0 - q), tl_vis_cross(s0 - q, s1 - q)) * inv_w;
+    return a / (a.x + a.y + a.z);
 }
 
 // A finite derivative: a ray parallel to the plane (the horizon) gives the coarsest level.
@@ -52,11 +73,26 @@ void tl_vis_rebuild(uint object, uint triangle, vec2 q)
     // the rasteriser's facing: counter-clockwise on screen is the normal towards the eye
     v_front_facing = dot(cross(e1, e2), p0) < 0.0;
 
-    vec3 b = tl_vis_barycentrics(p0, e1, e2, tl_vis_ray(q));
     vec2 quad = floor((q - 0.5) * 0.5) * 2.0 + 0.5; // the quad's first pixel's centre
-    vec3 bq = tl_vis_barycentrics(p0, e1, e2, tl_vis_ray(quad));
-    vec3 bx = tl_vis_barycentrics(p0, e1, e2, tl_vis_ray(quad + vec2(1.0, 0.0))) - bq;
-    vec3 by = tl_vis_barycentrics(p0, e1, e2, tl_vis_ray(quad + vec2(0.0, 1.0))) - bq;
+    vec3 b, bq, bx, by;
+    float near = 1e-6 * max(max(-p0.z, -p1.z), -p2.z);
+    if (p0.z < -near && p1.z < -near && p2.z < -near) {
+        // every vertex in front of the eye: in window space, as the rasteriser interpolates
+        vec2 s0 = tl_vis_window(p0), s1 = tl_vis_window(p1), s2 = tl_vis_window(p2);
+        vec3 inv_w = 1.0 / vec3(-p0.z, -p1.z, -p2.z);
+        b = tl_vis_barycentrics_window(s0, s1, s2, inv_w, q);
+        bq = tl_vis_barycentrics_window(s0, s1, s2, inv_w, quad);
+        bx = tl_vis_barycentrics_window(s0, s1, s2, inv_w, quad + vec2(1.0, 0.0)) - bq;
+        by = tl_vis_barycentrics_window(s0, s1, s2, inv_w, quad + vec2(0.0, 1.0)) - bq;
+    } else {
+        // a triangle crossing the eye's plane (clipped by the rasteriser): its view rays against
+        // its plane, which need no window position of the vertices behind the eye
+        vec3 plane_n = cross(e1, e2);
+        b = tl_vis_barycentrics(p0, p1, p2, plane_n, tl_vis_ray(q));
+        bq = tl_vis_barycentrics(p0, p1, p2, plane_n, tl_vis_ray(quad));
+        bx = tl_vis_barycentrics(p0, p1, p2, plane_n, tl_vis_ray(quad + vec2(1.0, 0.0))) - bq;
+        by = tl_vis_barycentrics(p0, p1, p2, plane_n, tl_vis_ray(quad + vec2(0.0, 1.0))) - bq;
+    }
     // the pixel's centre is inside the triangle the rasteriser chose; a sliver (an edge-on
     // triangle) may put it outside by rounding, or make the weights not finite: held to the triangle
     if (any(isnan(b)) || any(isinf(b))) b = vec3(1.0 / 3.0);

@@ -34,6 +34,7 @@ static const struct stiff_mode {
     {"thin-deferred", 0.02, 1, 0},
     {"fat", 0.0, 0, 0},
     {"forward", 0.0, 0, 0},
+    {"visibility", 0.0, 0, 1u << 20}, /* the id's 20 triangle bits (pass_visibility.c) */
 };
 #define STIFF_MODE_COUNT (sizeof stiff_modes / sizeof stiff_modes[0])
 

@@ -41,6 +41,7 @@ static const char *const lod_modes[] = {
     "thin-deferred",
     "fat",
     "forward",
+    "visibility",
 };
 #define LOD_MODE_COUNT (sizeof lod_modes / sizeof lod_modes[0])
 
