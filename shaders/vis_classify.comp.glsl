@@ -7,8 +7,8 @@
 #include "vis_tiles.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
-layout(binding = TL_UNIT_VIS_ID) uniform usampler2D u_vis_id;
-layout(rgba16f, binding = TL_IMAGE_HDR) uniform writeonly image2D u_hdr_image;
+layout(binding = TL_UNIT_VIS_ID) uniform TL_VIS_ID_SAMPLER u_vis_id;
+layout(rgba16f, binding = TL_IMAGE_HDR) uniform writeonly TL_VIS_HDR_IMAGE u_hdr_image;
 
 shared uint s_buckets[TL_VIS_BUCKETS / 32];
 
@@ -18,13 +18,15 @@ void main()
     if (lane < uint(TL_VIS_BUCKETS / 32)) s_buckets[lane] = 0u;
     barrier();
     ivec2 px = ivec2(gl_GlobalInvocationID.xy);
-    if (all(lessThan(px, textureSize(u_vis_id, 0)))) {
-        uint id = texelFetch(u_vis_id, px, 0).r;
-        if (id == 0u) {
-            imageStore(u_hdr_image, px, vec4(0.0));
-        } else {
-            uint b = tl_object_material(tl_vis_object(id)) % uint(TL_VIS_BUCKETS);
-            atomicOr(s_buckets[b / 32u], 1u << (b % 32u));
+    if (all(lessThan(px, tl_vis_id_size(u_vis_id)))) {
+        for (int s = 0; s < tl_vis_id_samples(u_vis_id); s++) {
+            uint id = tl_vis_id_fetch(u_vis_id, px, s);
+            if (id == 0u) {
+                tl_vis_hdr_store(u_hdr_image, px, s, vec4(0.0));
+            } else {
+                uint b = tl_object_material(tl_vis_object(id)) % uint(TL_VIS_BUCKETS);
+                atomicOr(s_buckets[b / 32u], 1u << (b % 32u));
+            }
         }
     }
     barrier();

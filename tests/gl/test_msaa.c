@@ -142,14 +142,15 @@ TL_TEST(msaa_plan_targets_and_refusals)
     }
     /* planned without, and said why: a method a mode lacks, per-sample edges with a reduced light
      * buffer, a reduced light buffer, effects */
-    tl_renderer_desc refused[8] = {
+    tl_renderer_desc refused[9] = {
         {.options.mode = TL_MODE_FAT, .options.msaa_lighting = TL_MSAA_LIGHTING_MATERIAL_PASS},
+        {.options.mode = TL_MODE_VISIBILITY, .options.msaa_lighting = TL_MSAA_LIGHTING_MATERIAL_PASS},
         {.options.mode = TL_MODE_THIN_DEFERRED, .options.msaa_lighting = TL_MSAA_LIGHTING_MATERIAL_PASS},
         {.options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES, .options.light_scale = 0.5f},
         {.options.mode = TL_MODE_FORWARD, .options.msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES},
         {.options.mode = TL_MODE_FAT, .options.ssao = {.enabled = 1, .method = TL_SSAO_DISC}},
         {.options.light_scale = 0.5f}, {.options.ssao = {.enabled = 1, .method = TL_SSAO_DISC}}, {.options.bloom.enabled = 1}};
-    for (int i = 0; i < 8; i++) {
+    for (int i = 0; i < 9; i++) {
         tl_frame_plan p, off;
         refused[i].options.msaa = 4;
         TL_CHECK(tl_frame_plan_build(&refused[i], &f, &p) == TL_OK);
@@ -418,7 +419,9 @@ static void check_triangle(tl_render_mode mode, lit_by by, uint32_t n, int light
     TL_CHECK(fabs(lin_in - lin_out) > (light_only ? 0.1 : 0.3) && edges > 200 && inside > (size_t)W * H / 2);
     /* a pixel with samples on both surfaces is a mix of both (its samples lit apart), not either alone */
     TL_CHECK(partial > 50 && mixed == partial);
-    if (how == TL_MSAA_LIGHTING_SAMPLE_EDGES) { /* those pixels, and no other, lit per sample */
+    /* those pixels, and no other, lit per sample (msaa-classify's count; visibility classifies no
+     * edges: its resolve shades each triangle of a pixel once, whatever samples it covers) */
+    if (how == TL_MSAA_LIGHTING_SAMPLE_EDGES && mode != TL_MODE_VISIBILITY) {
         double classified = ms.edges * W * H;
         TL_CHECK(classified > partial - 0.5 && classified < partial + 0.5);
     }
@@ -468,18 +471,20 @@ TL_TEST(msaa_triangle_edge_coverage_and_interior_pixels)
         }
 }
 
-/* MSAA with per-sample lighting on edges (thin-lpp, thin-deferred, fat): the same coverage and interior
+/* MSAA with per-sample lighting on edges (thin-lpp, thin-deferred, fat; visibility shades each
+ * triangle of a pixel once, at its first sample where it covers some): the same coverage and interior
  * checks, and the edge pixels of two surfaces that differ only in their light resolve to the mix
  * of both lights (a pixel lit once, from one surface, would be either alone); volumes and the
  * fragment tiled pass here, the compute tiled pass in its own test below. */
 static void check_sample_edges(lit_by by)
 {
     uint32_t top = max_samples();
-    const tl_render_mode modes3[3] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT};
+    const tl_render_mode modes4[4] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_VISIBILITY};
     for (uint32_t n = 2; n <= top; n *= 2)
-        for (int m = 0; m < 3; m++) {
-            check_triangle(modes3[m], by, n, 0, TL_MSAA_LIGHTING_SAMPLE_EDGES);
-            check_triangle(modes3[m], by, n, 1, TL_MSAA_LIGHTING_SAMPLE_EDGES);
+        for (int m = 0; m < 4; m++) {
+            if (modes4[m] == TL_MODE_VISIBILITY && by.st != TL_LIGHT_STRATEGY_TILED) continue; /* tiles only */
+            check_triangle(modes4[m], by, n, 0, TL_MSAA_LIGHTING_SAMPLE_EDGES);
+            check_triangle(modes4[m], by, n, 1, TL_MSAA_LIGHTING_SAMPLE_EDGES);
         }
 }
 

@@ -68,7 +68,7 @@ uint32_t tl__target_samples(const tl__target_def *def, const tl_renderer_options
 static tl_msaa_lighting tl__msaa_method(const tl_renderer_options *o)
 {
     if (o->msaa_lighting != TL_MSAA_LIGHTING_DEFAULT) return o->msaa_lighting;
-    int deferred = o->mode == TL_MODE_THIN_DEFERRED || o->mode == TL_MODE_FAT;
+    int deferred = o->mode == TL_MODE_THIN_DEFERRED || o->mode == TL_MODE_FAT || o->mode == TL_MODE_VISIBILITY;
     return deferred ? TL_MSAA_LIGHTING_SAMPLE_EDGES : TL_MSAA_LIGHTING_MATERIAL_PASS;
 }
 
@@ -85,7 +85,7 @@ const char *tl__msaa_refusal(const tl_renderer_options *o)
     tl_msaa_lighting m = tl__msaa_method(o);
     if (m == TL_MSAA_LIGHTING_SAMPLE_EDGES && tl__sample_edges_refusal(o)) return tl__sample_edges_refusal(o);
     if (m == TL_MSAA_LIGHTING_MATERIAL_PASS && o->mode != TL_MODE_THIN_LPP && o->mode != TL_MODE_FORWARD)
-        return "thin-deferred and fat have no material pass (msaa-lighting per-sample-edges)";
+        return "only thin-lpp has a material pass (msaa-lighting per-sample-edges)";
     if (tl__light_shift(o)) return "the reduced light buffer's upsample runs at one sample";
     const char *effect = tl__passes_refuse(o, TL__REFUSES_MSAA);
     if (effect) return effect;
@@ -95,6 +95,7 @@ const char *tl__msaa_refusal(const tl_renderer_options *o)
 const char *tl__msaa_how(const tl_renderer_options *o)
 {
     if (o->mode == TL_MODE_FORWARD) return "forward: every pass multisampled";
+    if (o->mode == TL_MODE_VISIBILITY) return "an id per sample: each triangle of a pixel shaded once, edges per sample";
     if (tl__msaa_sample_edges(o)) return "per-sample edges: G-buffer multisampled, edge pixels lit per sample";
     return "material pass multisampled over the 1x G-buffer and light buffer";
 }

@@ -21,7 +21,11 @@
 
 extern const tl__pass_def tl__pass_lights, tl__pass_lights_tiled;
 
-static int tl__sample_edges(const tl__plan_input *in) { return in->lights && tl__msaa_sample_edges(in->o); }
+/* visibility resolves every sample itself (pass_visibility.c): no edges to classify */
+static int tl__sample_edges(const tl__plan_input *in)
+{
+    return in->lights && tl__msaa_sample_edges(in->o) && !in->mode->visibility;
+}
 
 /* One byte a pixel, one sample: 1 on an edge pixel. */
 static const tl__target_def tl__target_msaa_edges = {TL__TARGET(MSAA_EDGES, "msaa.edges"), .format = GL_R8};

@@ -48,6 +48,20 @@ static const tl__target_def tl__target_vis_id = {TL__TARGET(VIS_ID, "vis.id"), .
 static const tl__target_def tl__target_vis_tiles = {TL__TARGET(VIS_TILES, "vis.tiles"),
                                                     .buffer_bytes = tl__vis_tiles_bytes, .store = TL__STORE_LISTS};
 
+/* MSAA (per-sample edges, the mode's way): the id and depth have the samples, HDR too; both passes
+ * loop over a pixel's samples (TL_GBUFFER_SAMPLES), the resolve shading each distinct triangle once. */
+static void tl__vis_samples(const tl__plan_input *in, tl__perm *k)
+{
+    if (tl__gbuffer_samples(in->o) > 1u) tl__perm_value(k, TL__V_GBUFFER_SAMPLES, in->msaa);
+}
+
+static void tl__vis_permute_samples(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+{
+    (void)d;
+    out->used[0] = 1;
+    tl__vis_samples(in, &out->slot[0]);
+}
+
 /* ---- vis-classify ---------------------------------------------------------------------------- */
 
 static void tl__classify_declare(const tl__plan_input *in, tl__pass_decl *d)
@@ -90,7 +104,7 @@ const tl__pass_def tl__pass_vis_classify = {
     .programs = {{"vis-classify", NULL, NULL, "vis_classify.comp.glsl"}},
     .targets = {&tl__target_vis_id, &tl__target_vis_tiles},
     .declare = tl__classify_declare,
-    .permute = tl__permute_one_program,
+    .permute = tl__vis_permute_samples,
     .execute = tl__classify_execute,
     .services = TL__PASS_LIGHTS,
 };
@@ -116,6 +130,7 @@ static void tl__resolve_permute(const tl__plan_input *in, const tl__pass_decl *d
     tl__perm_merge(k, &in->spec_perm);
     tl__perm_merge(k, &in->material);
     tl__ssao_perm(in, d, k);
+    tl__vis_samples(in, k);
 }
 
 /* The id's split refused past its bits, naming the object (the visible opaque ones: those drawn). */
