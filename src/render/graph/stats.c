@@ -75,13 +75,16 @@ static uint32_t tl__attribute_bytes(uint32_t attrs)
 /* Clears (every pixel of each cleared target) + per fragment that passed the depth test: the depth
  * test's read (when depth is not also sampled) and write, the sampled targets (a 5-texel cross for
  * neighbourhood reads), the colour writes (twice when blended: read and write) + vertex fetch
- * (indices drawn x (4 + attribute bytes)) + light instances (52 B each). Texture and constant
- * reads of materials are left out (caches absorb them). */
+ * (indices drawn x (4 + attribute bytes)) + light instances (52 B each). A compute pass counts
+ * no samples: it is taken to read its samples and write its writes once for every pixel (its
+ * invocations cover the frame). Texture and constant reads of materials are left out (caches
+ * absorb them). */
 static double tl__pass_bytes(const tl__slot_plan *p, const tl__pass_decl *d, double frags, size_t indices,
                              size_t instances)
 {
     const tl_target_set depth_bit = TL_TARGET_BIT(d->depth_target);
     double pixels = (double)p->width * p->height, depth = p->target_bytes_per_pixel[d->depth_target];
+    if (d->compute) frags = pixels;
     double per_frag = tl__bpp(p, d->samples) + 4.0 * tl__bpp(p, d->neighbourhood);
     if (d->state.depth_test && !(d->samples & depth_bit)) per_frag += depth;
     if (d->state.depth_write && (d->writes & depth_bit)) per_frag += depth;

@@ -176,6 +176,9 @@ static void tl__resolve_execute(const tl__pass_ctx *ctx)
         ctx->out->draw_calls++;
     }
     gl->BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+    /* the bytes-moved estimate's vertex fetch: each pixel reads its triangle's three indices and
+     * vertices (an upper bound: neighbours share them in caches) */
+    ctx->out->indices += (size_t)3u * ctx->width * ctx->height;
     gl->MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
 
