@@ -93,11 +93,19 @@ void tl_vis_rebuild(uint object, uint triangle, vec2 q)
         bx = tl_vis_barycentrics(p0, p1, p2, plane_n, tl_vis_ray(quad + vec2(1.0, 0.0))) - bq;
         by = tl_vis_barycentrics(p0, p1, p2, plane_n, tl_vis_ray(quad + vec2(0.0, 1.0))) - bq;
     }
-    // the pixel's centre is inside the triangle the rasteriser chose; a sliver (an edge-on
-    // triangle) may put it outside by rounding, or make the weights not finite: held to the triangle
+    // The rasteriser covers a pixel whose centre is inside the triangle at its snapped (sub-pixel
+    // fixed-point) vertices and interpolates its attribute planes there, extrapolated where the
+    // centre is just outside the triangle in float (a sliver's long edge through the centre): a
+    // weight of a few -1e-3. Kept so: clamping it to 0 and renormalising would move the point
+    // towards the opposite vertex (for a sliver, along its length: -0.001 x 90 pixels), not onto
+    // the edge, shifting uv and position by a tenth of a pixel or more. Only weights that no
+    // rounding of a covered centre explains (not finite; half a triangle's height outside: a
+    // degenerate triangle whose window area rounding decides) are held to the triangle.
     if (any(isnan(b)) || any(isinf(b))) b = vec3(1.0 / 3.0);
-    b = clamp(b, 0.0, 1.0);
-    b /= max(b.x + b.y + b.z, 1e-30);
+    if (any(lessThan(b, vec3(-0.5)))) {
+        b = clamp(b, 0.0, 1.0);
+        b /= max(b.x + b.y + b.z, 1e-30);
+    }
 
     v_object = object;
     v_view_position = p0 * b.x + p1 * b.y + p2 * b.z;
