@@ -31,6 +31,8 @@
 #define BENCH_STRATEGIES (TL_LIGHT_STRATEGY_COUNT_) /* auto, volumes, tiled */
 #define BENCH_CONFIGS (BENCH_MODES * BENCH_STRATEGIES * 6) /* x 6: as asked, R11G11B10F, Fresnel n.v, light 1/2, 1/4, tiled compute */
 #define BENCH_REFERENCE TL_MODE_FAT
+/* A pass's bit in bench_record.passes: tl_pass has more than 32 values (vis-resolve is the 33rd). */
+#define BENCH_PASS_BIT(p) ((uint64_t)1 << (p))
 #define BENCH_PNG_MAX_BYTES (300u * 1024u)
 /* Heat maps show |mode - fat| of the final image, largest RGB channel, 0..HEAT_SCALE 8-bit steps. */
 #define BENCH_HEAT_SCALE 16u
@@ -50,7 +52,9 @@
  * (strategy + BENCH_STRATEGIES * variant). Its name is the mode's with the strategy
  * ("thin-lpp/tiled", "fat/volumes", "thin-lpp/auto", "thin-lpp/tiled/r11g11b10f",
  * "thin-lpp/tiled/nv"), except forward: "forward" with per-object lists (volumes), "forward+"
- * with tile lists (tiled). */
+ * with tile lists (tiled). visibility has one configuration, "visibility/tiled": its plan lights
+ * from the tile lists whatever the strategy asked (volumes is downgraded) and its resolve is a
+ * compute pass, so it has no volumes, tiled-compute, light-scale or light-format variant. */
 typedef unsigned bench_config;
 #define BENCH_VARIANT_R11G11B10F 1u
 #define BENCH_VARIANT_FRESNEL_NV 2u
@@ -60,6 +64,7 @@ typedef unsigned bench_config;
                                           ("<mode>/tiled-compute"; "<mode>/tiled" is the fragment pass) */
 static inline bench_config bench_config_make(tl_render_mode m, tl_light_strategy s)
 {
+    if (m == TL_MODE_VISIBILITY) s = TL_LIGHT_STRATEGY_TILED; /* what its plan does, named so */
     return (unsigned)m + (unsigned)TL_MODE_COUNT_ * (unsigned)s;
 }
 static inline tl_render_mode bench_config_mode(bench_config c) { return (tl_render_mode)(c % TL_MODE_COUNT_); }
@@ -251,7 +256,7 @@ typedef struct bench_record {
     double ms_median, ms_p90;      /* GPU time of the frame (sum of the pass timers) */
     double *frame_ms;              /* each timed frame's, in order (frames interleaved across modes); may be NULL */
     double wall_ms_median, wall_ms_p90; /* render call to GPU done */
-    uint32_t passes;               /* bits (1u << tl_pass) of the plan's passes */
+    uint64_t passes;               /* bits BENCH_PASS_BIT(tl_pass) of the plan's passes (33 passes: past 32 bits) */
     double pass_ms[TL_PASS_COUNT]; /* median per pass */
     double pass_bytes[TL_PASS_COUNT];
     uint64_t pass_fragments[TL_PASS_COUNT];
@@ -271,7 +276,7 @@ typedef struct bench_record {
     uint32_t draw_calls, objects_drawn;
     uint64_t light_pairs;          /* pixel-light pairs the light pass shaded (tl_frame_stats.light_pairs) */
     double lighting_ms;            /* the passes that apply the lights: light-cull + lights or lights-tiled
-                                      (deferred), light-cull + forward */
+                                      (deferred), light-cull + forward, light-cull + vis-resolve */
     /* The roofline (docs/bandwidth.md, "Reading the results"): local lights only, at the grid the light
      * pass shades. */
     int pairs_counted;             /* exact_pairs and covered_pixels were counted (else absent) */
@@ -417,6 +422,8 @@ void bench_renderers_close(bench_run *run);
 /* The configurations rendered (at most BENCH_CONFIGS), strategy by strategy: fat first (the
  * reference of the strategy's group), then the requested modes. */
 size_t bench_render_modes(const bench_options *opt, bench_config *modes);
+/* The index in opt->strategies of the group visibility/tiled is rendered in (bench_sweep.c). */
+size_t bench_visibility_group(const bench_options *opt);
 int bench_mode_requested(const bench_options *opt, tl_render_mode mode);
 /* The record of (configuration, lights, size), or NULL. */
 const bench_record *bench_find(const bench_run *run, bench_config config, uint32_t lights, bench_size size);
@@ -432,6 +439,9 @@ double bench_median(double *v, size_t n);
  * a's frame rendered right before or after it (robust to a machine busy with other work), or the
  * ratio of the medians when the frame times are missing. */
 double bench_speedup(const bench_record *a, const bench_record *b);
+/* The pass that shades with the lights (its light-cull aside): lights + lights-tiled, forward's
+ * forward, visibility's vis-resolve (like forward's, it also evaluates the materials). */
+double bench_light_pass_ms(tl_render_mode mode, const double *pass_ms);
 double bench_per_light_ms(const bench_record *r);          /* lighting_ms / lights; NaN for 0 lights */
 double bench_ns_per_pair(const bench_record *r);           /* lighting_ms / light_pairs in ns; NaN when none */
 double bench_ms_per_mpixel_covered(const bench_record *r); /* lighting_ms / covered Mpx; NaN when none */

@@ -41,7 +41,8 @@ static int bench__data(FILE *f, const void *ctx)
 static const char *bench__colour(bench_config c)
 {
     static const char *const colours[TL_MODE_COUNT_] = {[TL_MODE_THIN_LPP] = "#1a9850", [TL_MODE_THIN_DEFERRED] = "#2166ac",
-                                                        [TL_MODE_FAT] = "#d7191c", [TL_MODE_FORWARD] = "#7b3294"};
+                                                        [TL_MODE_FAT] = "#d7191c", [TL_MODE_FORWARD] = "#7b3294",
+                                                        [TL_MODE_VISIBILITY] = "#e7298a"};
     const char *s = colours[bench_config_mode(c) % TL_MODE_COUNT_];
     return s ? s : "#4d4d4d";
 }

@@ -24,6 +24,7 @@ static const char *bench__colour(bench_config c)
     case TL_MODE_THIN_LPP: return "#1a9850";
     case TL_MODE_THIN_DEFERRED: return "#2166ac";
     case TL_MODE_FAT: return "#d7191c";
+    case TL_MODE_VISIBILITY: return "#e7298a";
     default: return "#7b3294";
     }
 }
@@ -312,7 +313,7 @@ static int bench__error_script(FILE *f, const void *ctx)
 /* ---- bytes per pixel ------------------------------------------------------------------------ */
 
 static tl_target_set bench__used_targets(const bench_run *run, const bench_config *modes, size_t mode_count,
-                                         uint32_t *passes)
+                                         uint64_t *passes)
 {
     tl_target_set used = 0;
     *passes = 0;
@@ -330,7 +331,7 @@ static int bench__bytes_data(FILE *f, const void *ctx)
     const bench_run *run = ((const tl_tool_plot *)ctx)->user;
     bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(&run->opt, modes);
-    uint32_t passes;
+    uint64_t passes;
     tl_target_set used = bench__used_targets(run, modes, mode_count, &passes);
     bench_size size = run->opt.sizes[0];
     double pixels = (double)size.width * size.height;
@@ -348,14 +349,14 @@ static int bench__bytes_data(FILE *f, const void *ctx)
     }
     fputs("\n\nmode", f);
     for (int p = 0; p < TL_PASS_COUNT; p++)
-        if (passes & (1u << p)) fprintf(f, " %s", tl_pass_name((tl_pass)p));
+        if (passes & BENCH_PASS_BIT(p)) fprintf(f, " %s", tl_pass_name((tl_pass)p));
     fputc('\n', f);
     for (size_t m = 0; m < mode_count; m++) {
         const bench_record *r = bench_find(run, modes[m], run->opt.lights[run->opt.light_count - 1], size);
         if (!r) continue;
         fprintf(f, "%s", bench_config_name(modes[m]));
         for (int p = 0; p < TL_PASS_COUNT; p++)
-            if (passes & (1u << p)) bench__value(f, r->pass_bytes[p] / pixels);
+            if (passes & BENCH_PASS_BIT(p)) bench__value(f, r->pass_bytes[p] / pixels);
         fputc('\n', f);
     }
     return 0;
@@ -369,7 +370,9 @@ static int bench__bytes_script(FILE *f, const void *ctx)
                                                                 "#b2abd2", "#7b3294", "#bababa", "#e0e0e0",
                                                                 "#8c510a", "#35978f", "#80cdc1", "#c51b7d",
                                                                 "#fee08b", "#ffd700", "#9970ab", "#5aae61",
-                                                                "#2d004b", "#762a83", "#c2a5cf"};
+                                                                "#2d004b", "#762a83", "#c2a5cf",
+                                                                [TL_TARGET_VIS_ID] = "#e7298a",
+                                                                [TL_TARGET_VIS_TILES] = "#f1b6da"};
     static const char *const pass_colours[TL_PASS_COUNT] = {
         [TL_PASS_DEPTH_PREPASS] = "#4d4d4d", [TL_PASS_GBUFFER] = "#2166ac",      [TL_PASS_SSAO] = "#35978f",
         [TL_PASS_SSAO_BLUR] = "#80cdc1",     [TL_PASS_SSAO_APPLY] = "#01665e",   [TL_PASS_LIGHT_CULL] = "#8c510a",
@@ -377,12 +380,13 @@ static int bench__bytes_script(FILE *f, const void *ctx)
         [TL_PASS_FORWARD] = "#7b3294",       [TL_PASS_TRANSPARENT] = "#b2abd2",  [TL_PASS_FOG] = "#878787",
         [TL_PASS_DOF] = "#c51b7d",           [TL_PASS_DOF_APPLY] = "#de77ae",    [TL_PASS_TONEMAP] = "#d7191c",
         [TL_PASS_FXAA] = "#bababa",          [TL_PASS_BLOOM] = "#ffd700",        [TL_PASS_SSR] = "#9970ab",
-        [TL_PASS_SSR_APPLY] = "#c2a5cf",     [TL_PASS_VIGNETTE] = "#5aae61",     [TL_PASS_LIGHT_REDUCE] = "#762a83"};
+        [TL_PASS_SSR_APPLY] = "#c2a5cf",     [TL_PASS_VIGNETTE] = "#5aae61",     [TL_PASS_LIGHT_REDUCE] = "#762a83",
+        [TL_PASS_LIGHT_UPSAMPLE] = "#af8dc3", [TL_PASS_VIS_CLASSIFY] = "#f1b6da", [TL_PASS_VIS_RESOLVE] = "#e7298a"};
     const tl_tool_plot *p = ctx;
     const bench_run *run = p->user;
     bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(&run->opt, modes);
-    uint32_t passes;
+    uint64_t passes;
     tl_target_set used = bench__used_targets(run, modes, mode_count, &passes);
     bench__terminal(f, p, 1300, 600);
     fprintf(f,
@@ -393,6 +397,7 @@ static int bench__bytes_script(FILE *f, const void *ctx)
             "set boxwidth 0.6\n"
             "set key outside right top\n"
             "set yrange [0:*]\n"
+            "set xtics rotate by -35 font ',8'\n" /* a dozen configurations' names side by side overlap */
             "unset grid\nset grid ytics\n",
             run->opt.sizes[0].width, run->opt.sizes[0].height, run->opt.lights[run->opt.light_count - 1]);
     fputs("set title 'targets the plan allocates'\nset ylabel 'bytes per pixel'\nplot ", f);
@@ -405,11 +410,11 @@ static int bench__bytes_script(FILE *f, const void *ctx)
         any = 1;
     }
     if (!any) fputs("NaN notitle", f);
-    fputs("\nset title 'bytes moved per pixel and frame (estimate, by pass)'\nset ylabel 'bytes per pixel per frame'\nplot ", f);
+    fputs("\nset title 'bytes moved per pixel and frame (estimate, by pass; compute passes count none)'\nset ylabel 'bytes per pixel per frame'\nplot ", f);
     col = 2;
     any = 0;
     for (int q = 0; q < TL_PASS_COUNT; q++) {
-        if (!(passes & (1u << q))) continue;
+        if (!(passes & BENCH_PASS_BIT(q))) continue;
         fprintf(f, "%s'%s.dat' index 1 using %d%s title columnheader(%d) lc rgb '%s'", any ? ", " : "", p->name, col,
                 any ? "" : ":xtic(1)", col, pass_colours[q] ? pass_colours[q] : "#999999");
         col++;

@@ -113,7 +113,8 @@ static void bench__speedup_line(const bench_run *run, bench__summary *s, const c
     if (any) bench__say(s, "%s lights", line);
 }
 
-/* The fastest thin (thin-lpp, thin-deferred) and fat configurations at a light count. */
+/* The fastest thin (thin-lpp, thin-deferred) and fat configurations at a light count. visibility
+ * and forward are no thin G-buffer: they are set against these apart (bench__visibility_lines). */
 static void bench__fastest(const bench_run *run, bench_size size, const bench_config *modes, size_t mode_count,
                            uint32_t n, const bench_record **thin, const bench_record **fat)
 {
@@ -127,15 +128,22 @@ static void bench__fastest(const bench_run *run, bench_size size, const bench_co
     }
 }
 
+/* The light passes' name in the summary: cull + shading (visibility's shading pass, vis-resolve,
+ * also evaluates the materials, as forward's does). */
+static const char *bench__light_pass_name(const bench_record *r)
+{
+    return r->mode == TL_MODE_VISIBILITY ? "light pass (light-cull + vis-resolve)" : "light pass (cull + shading)";
+}
+
 /* Which pass of a frame takes the most of it (the light passes, cull + shading, counted as one):
  * its name and share. */
 static const char *bench__dominant_pass(const bench_record *r, double *share)
 {
-    const char *name = "light pass (cull + shading)";
+    const char *name = bench__light_pass_name(r);
     double most = r->lighting_ms;
     for (int p = 0; p < TL_PASS_COUNT; p++) {
-        if (!(r->passes & (1u << p)) || p == TL_PASS_LIGHT_CULL || p == TL_PASS_LIGHTS || p == TL_PASS_LIGHTS_TILED ||
-            (r->mode == TL_MODE_FORWARD && p == TL_PASS_FORWARD))
+        if (!(r->passes & BENCH_PASS_BIT(p)) || p == TL_PASS_LIGHT_CULL || p == TL_PASS_LIGHTS || p == TL_PASS_LIGHTS_TILED ||
+            (r->mode == TL_MODE_FORWARD && p == TL_PASS_FORWARD) || (r->mode == TL_MODE_VISIBILITY && p == TL_PASS_VIS_RESOLVE))
             continue;
         if (r->pass_ms[p] > most) most = r->pass_ms[p], name = tl_pass_name((tl_pass)p);
     }
@@ -170,7 +178,7 @@ static void bench__fastest_line(const bench_run *run, bench__summary *s, const c
     const char *pass = bench__dominant_pass(thin, &share);
     snprintf(name, sizeof name, "%s%s", pass, strstr(pass, "pass") ? "" : " pass");
     char light[48] = "";
-    if (strcmp(pass, "light pass (cull + shading)") != 0)
+    if (strcmp(pass, bench__light_pass_name(thin)) != 0)
         snprintf(light, sizeof light, "; the light pass %.0f %%", 100.0 * light_share);
     bench__say(s, "%sthe %s is %.0f %% of the fastest thin frame on this machine (%s, %u lights, %.2f ms%s)", at,
                name, 100.0 * share, bench_config_name(thin->config), thin->lights, thin->ms_median, light);
@@ -179,6 +187,74 @@ static void bench__fastest_line(const bench_run *run, bench__summary *s, const c
                    "%slight efficiency (floor / light ms, the roofline table) at %u lights: %s %.2f, %s %.2f",
                    at, thin->lights, bench_config_name(thin->config), thin->light_efficiency,
                    bench_config_name(fat->config), fat->light_efficiency);
+}
+
+/* visibility is no thin G-buffer: depth and a 32-bit triangle id per pixel, the materials and the
+ * lights evaluated in vis-resolve from the rebuilt triangle (docs/frame.md, "Visibility buffer"), so
+ * the "fastest thin" line leaves it out and it is set apart here: its frame against the fastest fat
+ * and the fastest thin configuration of each light count (the median of per-frame ratios, as every
+ * speed-up), the memory it allocates beside thin-lpp's and fat's of its strategy group, and where
+ * its frame's time goes at the largest light count. */
+static void bench__visibility_lines(const bench_run *run, bench__summary *s, const char *at, bench_size size,
+                                    const bench_config *modes, size_t mode_count)
+{
+    const bench_options *opt = &run->opt;
+    bench_config vis = bench_config_make(TL_MODE_VISIBILITY, TL_LIGHT_STRATEGY_TILED);
+    tl_light_strategy group = opt->strategies[bench_visibility_group(opt)];
+    const char *vname = bench_config_name(vis);
+    char line[BENCH__LINE];
+    snprintf(line, sizeof line,
+             "%s%s (not a thin G-buffer: depth + a 32-bit triangle id, materials and lights in vis-resolve; "
+             "compared apart) over the fastest fat and the fastest thin configuration (frame time):",
+             at, vname);
+    int any = 0;
+    const bench_record *last = NULL;
+    for (size_t li = 0; li < opt->light_count; li++) {
+        uint32_t n = opt->lights[li];
+        const bench_record *v = bench_find(run, vis, n, size), *thin, *fat;
+        if (!v || !(v->ms_median > 0.0)) continue;
+        last = v;
+        bench__fastest(run, size, modes, mode_count, n, &thin, &fat);
+        if (!thin && !fat) continue;
+        bench__add(line, "%s", any ? ";" : "");
+        if (fat) bench__add(line, " %.2fx over %s", bench_speedup(v, fat), bench_config_name(fat->config));
+        if (thin) bench__add(line, "%s %.2fx over %s", fat ? "," : "", bench_speedup(v, thin), bench_config_name(thin->config));
+        bench__add(line, " at %u", n);
+        any = 1;
+    }
+    if (any) bench__say(s, "%s lights", line);
+    if (!last) return;
+    const bench_record *lpp = bench_find(run, bench_config_make(TL_MODE_THIN_LPP, group), last->lights, size),
+                       *fat = bench_find(run, bench_config_make(BENCH_REFERENCE, group), last->lights, size);
+    snprintf(line, sizeof line,
+             "%s%s allocates %u B/px (sum %u; depth %u + vis.id %u, vis.tiles %u, light.lists %u)", at, vname,
+             last->bytes_per_pixel, last->bytes_per_pixel_sum, last->target_bpp[TL_TARGET_DEPTH],
+             last->target_bpp[TL_TARGET_VIS_ID], last->target_bpp[TL_TARGET_VIS_TILES],
+             last->target_bpp[TL_TARGET_LIGHT_LISTS]);
+    if (lpp)
+        bench__add(line, " against %s's %u (depth %u + RT0 %u + light buffer %u)", bench_config_name(lpp->config),
+                   lpp->bytes_per_pixel, lpp->target_bpp[TL_TARGET_DEPTH], lpp->target_bpp[TL_TARGET_RT0],
+                   bench_light_buffer_bpp(lpp));
+    if (fat)
+        bench__add(line, "%s %s's %u (depth + G-buffer %u)", lpp ? " and" : " against", bench_config_name(fat->config),
+                   fat->bytes_per_pixel, bench__gbuffer_only_bpp(fat));
+    bench__add(line, "; it moves %.1f MiB a frame by the estimate", last->bytes_moved / 1048576.0);
+    if (lpp) bench__add(line, " (%s %.1f)", bench_config_name(lpp->config), lpp->bytes_moved / 1048576.0);
+    /* the estimate counts bytes per fragment of a samples-passed query: a compute pass has none */
+    bench__add(line, ", which counts nothing for its compute passes (light-cull, vis-classify, vis-resolve)");
+    bench__say(s, "%s", line);
+    if (!(last->ms_median > 0.0)) return;
+    snprintf(line, sizeof line, "%swhere %s's frame goes at %u lights (%.2f ms):", at, vname, last->lights,
+             last->ms_median);
+    static const tl_pass order[] = {TL_PASS_GBUFFER, TL_PASS_LIGHT_CULL, TL_PASS_VIS_CLASSIFY, TL_PASS_VIS_RESOLVE};
+    double rest = last->ms_median;
+    for (size_t k = 0; k < sizeof order / sizeof order[0]; k++) {
+        if (!(last->passes & BENCH_PASS_BIT(order[k]))) continue;
+        bench__add(line, "%s %s %.0f %%", k ? "," : "", tl_pass_name(order[k]), 100.0 * last->pass_ms[order[k]] / last->ms_median);
+        rest -= last->pass_ms[order[k]];
+    }
+    bench__add(line, ", the other passes %.0f %%", 100.0 * (rest > 0.0 ? rest : 0.0) / last->ms_median);
+    bench__say(s, "%s", line);
 }
 
 static void bench__scale_lines(const bench_run *run, bench__summary *s, const char *at, bench_size size);
@@ -212,12 +288,14 @@ static void bench__summarise(const bench_run *run, bench__summary *s)
          * --quick, whose few configurations would set the subject against fat's slowest strategy) */
         for (size_t m = 0; !opt->quick && subject != ref && m < mode_count; m++) {
             tl_render_mode om = bench_config_mode(modes[m]);
-            if (modes[m] == subject || (om != BENCH_REFERENCE && om != TL_MODE_FORWARD && om != bench_config_mode(subject)))
+            if (modes[m] == subject || (om != BENCH_REFERENCE && om != TL_MODE_FORWARD && om != TL_MODE_VISIBILITY &&
+                                        om != bench_config_mode(subject)))
                 continue;
             bench__speedup_line(run, s, at, size, subject, modes[m], 0);
             if (om == bench_config_mode(subject)) bench__speedup_line(run, s, at, size, subject, modes[m], 1);
         }
         bench__fastest_line(run, s, at, size, modes, mode_count);
+        bench__visibility_lines(run, s, at, size, modes, mode_count);
         bench__scale_lines(run, s, at, size);
         /* the worst image quality of each configuration */
         char line[BENCH__LINE];
@@ -312,11 +390,11 @@ static void bench__scale_row(const bench_record *r, bench__scale_cells *c)
 {
     int ref = r->mode == BENCH_REFERENCE, scaled = bench_config_scaled(r->config);
     bench__fmt(c->reduce, sizeof c->reduce, "%.2f",
-               r->passes & (1u << TL_PASS_LIGHT_REDUCE) ? r->pass_ms[TL_PASS_LIGHT_REDUCE] : NAN);
+               r->passes & BENCH_PASS_BIT(TL_PASS_LIGHT_REDUCE) ? r->pass_ms[TL_PASS_LIGHT_REDUCE] : NAN);
     bench__fmt(c->upsample, sizeof c->upsample, "%.2f",
-               r->passes & (1u << TL_PASS_LIGHT_UPSAMPLE) ? r->pass_ms[TL_PASS_LIGHT_UPSAMPLE] : NAN);
+               r->passes & BENCH_PASS_BIT(TL_PASS_LIGHT_UPSAMPLE) ? r->pass_ms[TL_PASS_LIGHT_UPSAMPLE] : NAN);
     bench__fmt(c->material, sizeof c->material, "%.2f",
-               r->passes & (1u << TL_PASS_MATERIAL) ? r->pass_ms[TL_PASS_MATERIAL] : NAN);
+               r->passes & BENCH_PASS_BIT(TL_PASS_MATERIAL) ? r->pass_ms[TL_PASS_MATERIAL] : NAN);
     bench__err_cell(c->fat, sizeof c->fat, &r->ldr, !ref);
     bench__err_cell(c->edge_fat, sizeof c->edge_fat, &r->edge_ldr, !ref && r->edge_pixels);
     bench__err_cell(c->s1, sizeof c->s1, &r->scale1_ldr, r->has_scale1);
@@ -508,7 +586,7 @@ void bench_print_table(const bench_run *run)
            run->gl_renderer, run->gl_version, run->context, run->context_platform, run->cpu, run->cores, run->load_start, run->load_end, run->seconds);
     printf("%s\n", run->light_definition);
     printf("ms = %s per frame (median, p90); light ms = the passes that apply the lights (light-cull + lights,\n"
-           "lights-tiled or forward); ns/pair = light ms per pixel-light pair shaded;\n"
+           "lights-tiled, forward or vis-resolve); ns/pair = light ms per pixel-light pair shaded;\n"
            "B/px = memory the targets occupy (shared where lifetimes allow; sum = as if each had its own);\n"
            "MiB moved = the renderer's bytes-moved estimate per frame;\n"
            "PSNR and max err (8-bit steps) of the final image against fat of the same frame; NaN = HDR pixels\n",
@@ -614,15 +692,15 @@ static void bench__json_record(tl_tool_json *j, const bench_record *r)
     tl_tool_json_num(j, "wall_ms_p90", r->wall_ms_p90);
     tl_tool_json_object(j, "pass_ms", 1);
     for (int p = 0; p < TL_PASS_COUNT; p++)
-        if (r->passes & (1u << p)) tl_tool_json_num(j, tl_pass_name((tl_pass)p), r->pass_ms[p]);
+        if (r->passes & BENCH_PASS_BIT(p)) tl_tool_json_num(j, tl_pass_name((tl_pass)p), r->pass_ms[p]);
     tl_tool_json_close(j, '}');
     tl_tool_json_object(j, "pass_bytes", 1);
     for (int p = 0; p < TL_PASS_COUNT; p++)
-        if (r->passes & (1u << p)) tl_tool_json_num(j, tl_pass_name((tl_pass)p), r->pass_bytes[p]);
+        if (r->passes & BENCH_PASS_BIT(p)) tl_tool_json_num(j, tl_pass_name((tl_pass)p), r->pass_bytes[p]);
     tl_tool_json_close(j, '}');
     tl_tool_json_object(j, "pass_fragments", 1);
     for (int p = 0; p < TL_PASS_COUNT; p++)
-        if (r->passes & (1u << p)) tl_tool_json_uint(j, tl_pass_name((tl_pass)p), r->pass_fragments[p]);
+        if (r->passes & BENCH_PASS_BIT(p)) tl_tool_json_uint(j, tl_pass_name((tl_pass)p), r->pass_fragments[p]);
     tl_tool_json_close(j, '}');
     tl_tool_json_uint(j, "bytes_per_pixel", r->bytes_per_pixel);
     tl_tool_json_uint(j, "bytes_per_pixel_sum", r->bytes_per_pixel_sum);
@@ -874,25 +952,26 @@ static void bench__md_passes(FILE *f, const bench_run *run)
     const bench_options *opt = &run->opt;
     bench_config modes[BENCH_CONFIGS];
     size_t mode_count = bench_render_modes(opt, modes);
-    uint32_t n = opt->lights[opt->light_count - 1], used = 0;
+    uint32_t n = opt->lights[opt->light_count - 1];
+    uint64_t used = 0;
     for (size_t m = 0; m < mode_count; m++) {
         const bench_record *r = bench_find(run, modes[m], n, opt->sizes[0]);
         if (r) used |= r->passes;
     }
     fprintf(f, "\nGPU time per pass at %u lights, ms (median; MiB moved by the estimate in brackets):\n\n| mode |", n);
     for (int p = 0; p < TL_PASS_COUNT; p++)
-        if (used & (1u << p)) fprintf(f, " %s |", tl_pass_name((tl_pass)p));
+        if (used & BENCH_PASS_BIT(p)) fprintf(f, " %s |", tl_pass_name((tl_pass)p));
     fputs(" frame |\n|---|", f);
     for (int p = 0; p < TL_PASS_COUNT; p++)
-        if (used & (1u << p)) fputs("---:|", f);
+        if (used & BENCH_PASS_BIT(p)) fputs("---:|", f);
     fputs("---:|\n", f);
     for (size_t m = 0; m < mode_count; m++) {
         const bench_record *r = bench_find(run, modes[m], n, opt->sizes[0]);
         if (!r) continue;
         fprintf(f, "| `%s` |", bench_config_name(r->config));
         for (int p = 0; p < TL_PASS_COUNT; p++) {
-            if (!(used & (1u << p))) continue;
-            if (r->passes & (1u << p)) fprintf(f, " %.1f (%.0f) |", r->pass_ms[p], r->pass_bytes[p] / 1048576.0);
+            if (!(used & BENCH_PASS_BIT(p))) continue;
+            if (r->passes & BENCH_PASS_BIT(p)) fprintf(f, " %.1f (%.0f) |", r->pass_ms[p], r->pass_bytes[p] / 1048576.0);
             else fputs(" |", f);
         }
         fprintf(f, " %.1f (%.0f) |\n", r->ms_median, r->bytes_moved / 1048576.0);

@@ -82,12 +82,13 @@ static tl_renderer_desc bench__shadow_desc(const bench_options *opt, bench_confi
     return d;
 }
 
-/* The light pass: light-cull + lights or lights-tiled (deferred), light-cull + forward. */
+/* The light pass: light-cull + lights or lights-tiled (deferred), light-cull + forward, light-cull +
+ * vis-resolve (visibility; bench_light_pass_ms). */
 static double bench__light_ms(tl_render_mode m, const tl_frame_stats *st)
 {
-    double cull = fmax(st->pass_ms[TL_PASS_LIGHT_CULL], 0.0);
-    if (m == TL_MODE_FORWARD) return cull + fmax(st->pass_ms[TL_PASS_FORWARD], 0.0);
-    return cull + fmax(st->pass_ms[TL_PASS_LIGHTS], 0.0) + fmax(st->pass_ms[TL_PASS_LIGHTS_TILED], 0.0);
+    double ms[TL_PASS_COUNT];
+    for (int p = 0; p < TL_PASS_COUNT; p++) ms[p] = fmax(st->pass_ms[p], 0.0);
+    return ms[TL_PASS_LIGHT_CULL] + bench_light_pass_ms(m, ms);
 }
 
 /* Per slot and timed frame: frame, shadow maps and light pass times; the last frame's statistics. */

@@ -19,14 +19,17 @@
 #include "tool_util.h"
 
 
+/* TL_MODE_THIN_LPP .. TL_MODE_VISIBILITY (tl_render_mode order, DEFAULT left out): name, slug. Every
+ * mode has its row: a mode without one was named "(null)" in the table and in file names.
+ * visibility is always tiled (bench_config_make): its plan lights from the tile lists. */
 static const char *const bench__names[BENCH_STRATEGIES][BENCH_MODES][2] = {
-    /* TL_MODE_THIN_LPP .. TL_MODE_FORWARD (tl_render_mode order, DEFAULT left out): name, slug */
     {{"thin-lpp/auto", "thin-lpp-auto"}, {"thin-deferred/auto", "thin-deferred-auto"}, {"fat/auto", "fat-auto"},
-     {"forward/auto", "forward-auto"}},
+     {"forward/auto", "forward-auto"}, {"visibility/tiled", "visibility-tiled"}},
     {{"thin-lpp/volumes", "thin-lpp-volumes"}, {"thin-deferred/volumes", "thin-deferred-volumes"},
-     {"fat/volumes", "fat-volumes"}, {"forward", "forward"}},
+     {"fat/volumes", "fat-volumes"}, {"forward", "forward"}, {"visibility/tiled", "visibility-tiled"}},
     {{"thin-lpp/tiled", "thin-lpp-tiled"}, {"thin-deferred/tiled", "thin-deferred-tiled"}, {"fat/tiled", "fat-tiled"},
-     {"forward+", "forward-plus"}}};
+     {"forward+", "forward-plus"}, {"visibility/tiled", "visibility-tiled"}}};
+_Static_assert(BENCH_MODES == 5, "a new mode needs its names in bench__names (and its colour in the plots)");
 
 static const char *bench__config_string(bench_config c, int slug)
 {
@@ -44,7 +47,7 @@ static const char *bench__config_string(bench_config c, int slug)
     static const char *const compute[BENCH_MODES][2] = {{"thin-lpp/tiled-compute", "thin-lpp-tiled-compute"},
                                                          {"thin-deferred/tiled-compute", "thin-deferred-tiled-compute"},
                                                          {"fat/tiled-compute", "fat-tiled-compute"},
-                                                         {"?", "?"}};
+                                                         {"?", "?"}, {"?", "?"}};
     if (v == BENCH_VARIANT_TILED_COMPUTE) return s == TL_LIGHT_STRATEGY_TILED ? compute[m - 1][slug] : "?";
     if (v && (m != TL_MODE_THIN_LPP || s != TL_LIGHT_STRATEGY_TILED)) return "?";
     if (v == BENCH_VARIANT_R11G11B10F) return slug ? "thin-lpp-tiled-r11g11b10f" : "thin-lpp/tiled/r11g11b10f";
@@ -57,13 +60,24 @@ const char *bench_config_slug(bench_config c) { return bench__config_string(c, 1
 
 bench_config bench_reference_of(bench_config c) { return bench_config_make(BENCH_REFERENCE, bench_config_strategy(c)); }
 
+/* The strategy group visibility is rendered in (once: it always lights with tiles): the tiled
+ * strategy's, so fat/tiled is its error reference; without tiles asked, the first strategy's (its fat
+ * the reference; the name stays visibility/tiled, what its plan does). */
+size_t bench_visibility_group(const bench_options *opt)
+{
+    for (size_t s = 0; s < opt->strategy_count; s++)
+        if (opt->strategies[s] == TL_LIGHT_STRATEGY_TILED) return s;
+    return 0;
+}
+
 size_t bench_render_modes(const bench_options *opt, bench_config *modes)
 {
     size_t n = 0;
     for (size_t s = 0; s < opt->strategy_count; s++) {
         modes[n++] = bench_config_make(BENCH_REFERENCE, opt->strategies[s]);
         for (size_t i = 0; i < opt->mode_count; i++)
-            if (opt->modes[i] != BENCH_REFERENCE) modes[n++] = bench_config_make(opt->modes[i], opt->strategies[s]);
+            if (opt->modes[i] != BENCH_REFERENCE && (opt->modes[i] != TL_MODE_VISIBILITY || s == bench_visibility_group(opt)))
+                modes[n++] = bench_config_make(opt->modes[i], opt->strategies[s]);
         bench_config lpp = bench_config_make(TL_MODE_THIN_LPP, opt->strategies[s]);
         if (s == 0 && bench_mode_requested(opt, TL_MODE_THIN_LPP)) { /* the light scales (they light with volumes) */
             if (opt->light_scales & 1u) modes[n++] = bench_config_variant(lpp, BENCH_VARIANT_LIGHT_HALF);
@@ -75,7 +89,8 @@ size_t bench_render_modes(const bench_options *opt, bench_config *modes)
             modes[n++] = bench_config_variant(bench_config_make(BENCH_REFERENCE, TL_LIGHT_STRATEGY_TILED),
                                               BENCH_VARIANT_TILED_COMPUTE);
             for (size_t i = 0; i < opt->mode_count; i++)
-                if (opt->modes[i] != BENCH_REFERENCE && opt->modes[i] != TL_MODE_FORWARD)
+                if (opt->modes[i] != BENCH_REFERENCE && opt->modes[i] != TL_MODE_FORWARD &&
+                    opt->modes[i] != TL_MODE_VISIBILITY) /* its resolve is compute already */
                     modes[n++] = bench_config_variant(bench_config_make(opt->modes[i], TL_LIGHT_STRATEGY_TILED),
                                                       BENCH_VARIANT_TILED_COMPUTE);
         }
@@ -110,6 +125,13 @@ double bench_speedup(const bench_record *a, const bench_record *b)
     for (uint32_t f = 0; f < a->frames; f++) ratios[f] = b->frame_ms[f] / a->frame_ms[f];
     bench_median_p90(ratios, a->frames, &median, &unused);
     return median;
+}
+
+double bench_light_pass_ms(tl_render_mode mode, const double *pass_ms)
+{
+    if (mode == TL_MODE_FORWARD) return pass_ms[TL_PASS_FORWARD];
+    if (mode == TL_MODE_VISIBILITY) return pass_ms[TL_PASS_VIS_RESOLVE];
+    return pass_ms[TL_PASS_LIGHTS] + pass_ms[TL_PASS_LIGHTS_TILED];
 }
 
 double bench_per_light_ms(const bench_record *r) { return r->lights ? r->lighting_ms / r->lights : NAN; }
@@ -217,7 +239,7 @@ static void bench__plan_figures(tl_tool_log *log, tl_renderer *r, const tl_frame
     rec->bytes_per_pixel = (uint32_t)((st->allocated_target_bytes + pixels / 2) / pixels);
     tl_frame_plan plan;
     if (tl_renderer_get_plan(r, &plan) == TL_OK) {
-        for (size_t i = 0; i < plan.pass_count && i < TL_PASS_COUNT; i++) rec->passes |= 1u << plan.passes[i].pass;
+        for (size_t i = 0; i < plan.pass_count && i < TL_PASS_COUNT; i++) rec->passes |= BENCH_PASS_BIT(plan.passes[i].pass);
         rec->gbuffer_bytes_per_pixel = plan.gbuffer_bytes_per_pixel;
         rec->strategy = plan.light_strategy;
         rec->lighting = plan.lighting;
@@ -232,7 +254,7 @@ static void bench__plan_figures(tl_tool_log *log, tl_renderer *r, const tl_frame
             }
     } else {
         for (int p = 0; p < TL_PASS_COUNT; p++)
-            if (st->pass_ms[p] > 0.0) rec->passes |= 1u << p;
+            if (st->pass_ms[p] > 0.0) rec->passes |= BENCH_PASS_BIT(p);
         rec->gbuffer_bytes_per_pixel = (uint32_t)((st->gbuffer_bytes + st->light_buffer_bytes + pixels / 2) / pixels);
     }
 }
@@ -290,9 +312,7 @@ static void bench__summarise_frames(bench_run *run, tl_renderer *r, bench__sampl
     rec->relit_pixels = st->relit_pixels;
     rec->relit_fraction = st->relit_fraction;
     bench__plan_figures(&run->log, r, st, pixels, rec);
-    rec->lighting_ms = rec->pass_ms[TL_PASS_LIGHT_CULL] +
-                       (rec->mode == TL_MODE_FORWARD ? rec->pass_ms[TL_PASS_FORWARD]
-                                                     : rec->pass_ms[TL_PASS_LIGHTS] + rec->pass_ms[TL_PASS_LIGHTS_TILED]);
+    rec->lighting_ms = rec->pass_ms[TL_PASS_LIGHT_CULL] + bench_light_pass_ms(rec->mode, rec->pass_ms);
 }
 
 /* The roofline of the last frame: its exact pairs counted, what the strategy evaluated, the ALU
