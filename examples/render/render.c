@@ -60,7 +60,8 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         [TL_TARGET_LIGHT_DEPTH] = "light_depth", [TL_TARGET_LIGHT_RT0] = "light_rt0_normal_gloss",
         [TL_TARGET_LIGHT_OFFSET] = "light_offset", [TL_TARGET_LIGHT_REDUCED_DIFFUSE] = "light_reduced_diffuse",
         [TL_TARGET_LIGHT_REDUCED_SPECULAR] = "light_reduced_specular",
-        [TL_TARGET_LIGHT_REDUCED_FRESNEL] = "light_reduced_fresnel"};
+        [TL_TARGET_LIGHT_REDUCED_FRESNEL] = "light_reduced_fresnel",
+        [TL_TARGET_VIS_ID] = "vis_id"}; /* as read back: object slot, triangle, drawn, 1 (-1, -1, 0, 1: nothing) */
     tl_frame_plan plan;
     if (tl_renderer_get_plan(r, &plan) != TL_OK) memset(&plan, 0, sizeof plan);
     for (int t = 0; t < TL_TARGET_COUNT; t++) {
@@ -76,8 +77,10 @@ static int dump_targets(tl_renderer *r, const char *dir, uint32_t w, uint32_t h)
         snprintf(path, sizeof path, "%s/%s.exr", dir, names[t]);
         /* each at its own precision: half floats hold 16F targets and 8-bit channels exactly; depth
          * (24 or 32 bits, read as window depth and distance), the decoded RT0 normal (2 x 10 or 12
-         * bits) and 32-bit float targets need full floats */
-        int full = t == TL_TARGET_DEPTH || t == TL_TARGET_RT0 || t == TL_TARGET_LIGHT_DEPTH || t == TL_TARGET_LIGHT_RT0 || plan.target_bytes_per_pixel[t] >= 16;
+         * bits), visibility's id (triangles up to 2^20, past half's 2^11 integers) and 32-bit float
+         * targets need full floats */
+        int full = t == TL_TARGET_DEPTH || t == TL_TARGET_RT0 || t == TL_TARGET_LIGHT_DEPTH || t == TL_TARGET_LIGHT_RT0 ||
+                   t == TL_TARGET_VIS_ID || plan.target_bytes_per_pixel[t] >= 16;
         tl_image_desc id = {.width = tw, .height = th, .channels = 4, .type = TL_PIXEL_F32, .bottom_up = 1,
                             .full_float = full};
         if (tl_tool_write_image("thinlight-render", path, &id, buf)) {

@@ -29,7 +29,8 @@ static const char usage_head[] =
     "  --stats               print per-pass GPU times and target bytes\n"
     "  --print-plan          print the frame plan: passes, inputs, outputs, targets, programs\n"
     "  --dump-targets DIR    write every target of the plan as EXR into DIR (depth, decoded\n"
-    "                        normals and 32-bit targets as 32-bit floats, the others as half)\n";
+    "                        normals, visibility's id (vis_id.exr: object, triangle, drawn) and\n"
+    "                        32-bit targets as 32-bit floats, the others as half)\n";
 static const char usage_options[] = "Renderer options (docs/renderer.md, \"Options at run time\"):\n";
 static const char usage_tail[] =
     "  --list-options        list every option and the values it takes, then exit\n"
