@@ -42,7 +42,7 @@ static void vw_key_view(vw_app *app, int key, int mods)
 
 static void vw_key_settings(vw_app *app, int key, int mods)
 {
-    if (key >= GLFW_KEY_1 && key <= GLFW_KEY_4) {
+    if (key >= GLFW_KEY_1 && key <= GLFW_KEY_5) { /* thin-lpp, thin-deferred, fat, forward, visibility */
         app->desc.options.mode = (tl_render_mode)(TL_MODE_THIN_LPP + (key - GLFW_KEY_1));
         app->rebuild = 1;
     } else if (key == GLFW_KEY_T) {

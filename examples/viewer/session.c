@@ -140,7 +140,7 @@ int vw_apply_settings(vw_app *app)
     if (!err) err = vw_role(app, &app->split, app->split_on, app->split_mode, 0);
     if (!err) err = vw_role(app, &app->fat, fat_needed, TL_MODE_FAT, 0);
     if (err) return -1;
-    vw_views_tile_pass(app, app->r);
+    vw_views_app_passes(app, app->r);
     vw_refresh_plan(app);
     memset(&app->timings, 0, sizeof app->timings);
     app->rebuild = 0;
@@ -164,7 +164,7 @@ int vw_resize(vw_app *app, uint32_t w, uint32_t h)
     tl_renderer *all[3] = {app->r, app->fat, app->split};
     for (int i = 0; i < 3; i++)
         if (all[i] && tl_renderer_resize(all[i], w, h) != TL_OK) return -1;
-    vw_views_tile_pass(app, app->r);
+    vw_views_app_passes(app, app->r);
     vw_refresh_plan(app);
     return 0;
 }

@@ -300,7 +300,8 @@ static void vw_ui_settings(vw_app *app)
 
 static void vw_ui_views(vw_app *app)
 {
-    static const char *modes[] = {"thin-lpp", "thin-deferred", "fat", "forward"};
+    static const char *modes[] = {"thin-lpp", "thin-deferred", "fat", "forward", "visibility"};
+    static_assert(sizeof modes / sizeof modes[0] == TL_MODE_COUNT_ - TL_MODE_THIN_LPP, "a mode's name for the split combo");
     const char *names[VW_VIEW_COUNT];
     for (int i = 0; i < VW_VIEW_COUNT; i++) names[i] = vw_view_name(static_cast<vw_view>(i));
     bool c = vw_combo("view", &app->view, names, 0, VW_VIEW_COUNT);
@@ -311,7 +312,7 @@ static void vw_ui_views(vw_app *app)
     if (ImGui::Checkbox("split: right half in", &split)) { app->split_on = split; app->grid = 0; c = true; }
     ImGui::SameLine();
     ImGui::SetNextItemWidth(120);
-    if (vw_combo("##split", &app->split_mode, modes, TL_MODE_THIN_LPP, 4) && app->split_on)
+    if (vw_combo("##split", &app->split_mode, modes, TL_MODE_THIN_LPP, TL_MODE_COUNT_ - TL_MODE_THIN_LPP) && app->split_on)
         app->rebuild = 1; // the right-hand renderer's mode
     ImGui::SliderFloat("difference scale", &app->diff_scale, 1.0f, 64.0f, "x%.0f", ImGuiSliderFlags_Logarithmic);
     if (c) vw_update_view(app);

@@ -43,6 +43,8 @@ typedef enum vw_view {
     VW_VIEW_SHADOW_ATLAS,   /* the shadow atlas's depth, per view (shadow_views.c) */
     VW_VIEW_SHADOW_CASCADES, /* each pixel's cascade of the casting directional light, over the image */
     VW_VIEW_SHADOW_ONLY,    /* the shadow-only term: the casting lights' visibility weighted by their diffuse light */
+    VW_VIEW_VIS_ID,         /* visibility: the id buffer, each (object, triangle) a hashed colour */
+    VW_VIEW_VIS_NORMALS,    /* visibility: the normal rebuilt from each pixel's triangle, as vis-resolve does */
     VW_VIEW_COUNT
 } vw_view;
 
@@ -170,15 +172,16 @@ const char *vw_view_help(vw_view v);
 /** Builds app->image for the current view (or the grid, or the split view) from the frame just
  *  rendered; 0 on success. */
 int vw_views_build(vw_app *app, const tl_camera *cam);
-/** Installs or removes the application pass the tile view reads the light lists with. */
-void vw_views_tile_pass(vw_app *app, tl_renderer *r);
+/** Installs or removes the application passes of the views: the one the tile view reads the light
+ *  lists with, and in visibility the one whose read keeps RT0 for the normals and gloss views. */
+void vw_views_app_passes(vw_app *app, tl_renderer *r);
 int vw_views_init(vw_app *app, void *(*loader)(const char *));
 void vw_views_free(vw_app *app);
 /** Colour of t in [0,1] on the heat-map scale (black, blue, green, yellow, red, white). */
 void vw_heat(float t, uint8_t rgb[3]);
 /** Grid of every view: columns and rows (first view top left, row by row). */
 #define VW_GRID_COLS 5u
-#define VW_GRID_ROWS 5u
+#define VW_GRID_ROWS 6u
 
 /* camera.c */
 void vw_camera_from_scene(vw_camera *c, const tl_camera *scene_cam, float extent);

@@ -1,7 +1,8 @@
 /* The debug views: each reads the frame's targets back through the public API
- * (tl_renderer_read_target, which decodes RT0 and linearises depth; tl_albedo_reconstruct for
- * RT1's chroma; an application pass for the tiled light lists) and turns them into RGBA8, rows
- * bottom to top. The grid puts every view in one image; the split view two modes side by side. */
+ * (tl_renderer_read_target, which decodes RT0 and linearises depth and splits visibility's id;
+ * tl_albedo_reconstruct for RT1's chroma; an application pass for the tiled light lists, and in
+ * visibility one whose read keeps RT0) and turns them into RGBA8, rows bottom to top. The grid puts
+ * every view in one image; the split view two modes side by side. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -92,6 +93,7 @@ static int vw_view_final(vw_app *app, tl_renderer *r, const tl_camera *cam, uint
 
 static int vw_view_normals_gloss(vw_app *app, tl_renderer *r, uint8_t *out, int gloss)
 {
+    /* visibility writes RT0 when something reads it: here the viewer's own pass (vw_views_app_passes) */
     const float *ng = vw_read(app, r, vw_fat(app) ? TL_TARGET_FAT_NORMAL : TL_TARGET_RT0, 0);
     const float *d = vw_read(app, r, TL_TARGET_DEPTH, 1);
     if (!ng || !d) return vw_unavailable(app, "no G-buffer normals in this mode");
@@ -511,6 +513,126 @@ static int vw_view_shadow_only(vw_app *app, tl_renderer *r, const tl_camera *cam
     return vw_shadow_only(app, r, out);
 }
 
+/* ---- visibility's id buffer ------------------------------------------------------------------ */
+
+/* The id as the G-buffer pass stores it ((object slot + 1) << 20 | triangle, renderer.h) from what
+ * tl_renderer_read_target gives (object, triangle, drawn); 0 where nothing was drawn. */
+static uint32_t vw_vis_id(const float *p)
+{
+    if (p[2] < 0.5f || p[0] < 0.0f || p[1] < 0.0f) return 0;
+    return (((uint32_t)p[0] + 1u) << 20) | (uint32_t)p[1];
+}
+
+/* The id's colour (docs/viewer.md, "vis-id"): a 32-bit integer hash (Wellons' lowbias32) of the id,
+ * its three low bytes b as 64 + 3 b / 4 per channel, so that no triangle is near black, which is
+ * where nothing was drawn. */
+static void vw_vis_colour(uint32_t id, uint8_t *px)
+{
+    uint32_t h = id;
+    h ^= h >> 16;
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    h *= 0x846ca68bu;
+    h ^= h >> 16;
+    for (int k = 0; k < 3; k++) px[k] = id ? (uint8_t)(64u + ((h >> (8 * k)) & 255u) * 3u / 4u) : 0;
+    px[3] = 255;
+}
+
+static int vw_view_vis_id(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    (void)cam;
+    const float *v = vw_read(app, r, TL_TARGET_VIS_ID, 0);
+    if (!v) return vw_unavailable(app, "the id buffer exists in visibility only");
+    for (size_t i = 0, n = vw_pixels(app); i < n; i++) vw_vis_colour(vw_vis_id(v + 4 * i), out + 4 * i);
+    return 0;
+}
+
+static float vw_dot(const float a[3], const float b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* An object's transform (column-major, all zero: the identity) applied to a point. */
+static void vw_object_point(const float *m, int identity, const float p[3], float o[3])
+{
+    for (int k = 0; k < 3; k++)
+        o[k] = identity ? p[k] : m[k] * p[0] + m[4 + k] * p[1] + m[8 + k] * p[2] + m[12 + k];
+}
+
+/* The rebuilt normal of one pixel, in world space: its triangle's vertices placed by the object's
+ * transform, the barycentrics of the pixel's view ray (from the eye along d) against the triangle's
+ * plane, held to the triangle as vis_rebuild.glsl holds them, the vertex normals interpolated and
+ * turned by the inverse transpose of the transform. 0 when the id names no triangle of the scene. */
+static int vw_rebuild_normal(const tl_scene *s, uint32_t object, uint32_t triangle, const float eye[3],
+                             const float d[3], float n[3])
+{
+    if (object >= s->object_count) return 0;
+    const tl_object *o = &s->objects[object];
+    if ((uint64_t)triangle * 3u + 3u > o->index_count || o->primitive != 0) return 0;
+    int identity = 1;
+    for (int k = 0; k < 16; k++) identity &= o->transform[k] == 0.0f;
+    const tl_vertex *v[3];
+    float p[3][3];
+    for (int k = 0; k < 3; k++) {
+        uint64_t at = (uint64_t)o->first_index + 3u * triangle + (uint64_t)k;
+        if (at >= s->index_count || s->indices[at] >= s->vertex_count) return 0;
+        v[k] = &s->vertices[s->indices[at]];
+        vw_object_point(o->transform, identity, v[k]->position, p[k]);
+        for (int c = 0; c < 3; c++) p[k][c] -= eye[c];
+    }
+    float e1[3], e2[3], pv[3], q[3], t[3] = {-p[0][0], -p[0][1], -p[0][2]}, b[3];
+    for (int c = 0; c < 3; c++) e1[c] = p[1][c] - p[0][c], e2[c] = p[2][c] - p[0][c];
+    vw_cross(d, e2, pv);
+    float inv = 1.0f / vw_dot(e1, pv);
+    vw_cross(t, e1, q);
+    b[1] = vw_dot(t, pv) * inv;
+    b[2] = vw_dot(d, q) * inv;
+    b[0] = 1.0f - b[1] - b[2];
+    if (!isfinite(b[0]) || !isfinite(b[1]) || !isfinite(b[2])) b[0] = b[1] = b[2] = 1.0f / 3.0f;
+    float sum = 0.0f;
+    for (int k = 0; k < 3; k++) sum += b[k] = b[k] < 0.0f ? 0.0f : b[k] > 1.0f ? 1.0f : b[k];
+    float m[3] = {0, 0, 0};
+    for (int k = 0; k < 3; k++)
+        for (int c = 0; c < 3; c++) m[c] += v[k]->normal[c] * b[k] / (sum > 1e-30f ? sum : 1e-30f);
+    if (identity) {
+        memcpy(n, m, sizeof m);
+    } else { /* the inverse transpose's columns: the cross products of the transform's, over its determinant */
+        const float *a = o->transform, a0[3] = {a[0], a[1], a[2]}, a1[3] = {a[4], a[5], a[6]}, a2[3] = {a[8], a[9], a[10]};
+        float c0[3], c1[3], c2[3];
+        vw_cross(a1, a2, c0);
+        vw_cross(a2, a0, c1);
+        vw_cross(a0, a1, c2);
+        float det = vw_dot(a0, c0), sign = det < 0.0f ? -1.0f : 1.0f;
+        for (int c = 0; c < 3; c++) n[c] = sign * (c0[c] * m[0] + c1[c] * m[1] + c2[c] * m[2]);
+    }
+    vw_normalize(n);
+    return 1;
+}
+
+/* Each pixel's normal rebuilt on the CPU from the id buffer and the scene, as vis-resolve rebuilds
+ * it (vis_rebuild.glsl) before the material's normal map: view space, n / 2 + 1/2 (the normals
+ * view's mapping); black where nothing was drawn, magenta where the id names no triangle. */
+static int vw_view_vis_normals(vw_app *app, tl_renderer *r, const tl_camera *cam, uint8_t *out)
+{
+    const float *v = vw_read(app, r, TL_TARGET_VIS_ID, 0);
+    if (!v) return vw_unavailable(app, "the id buffer exists in visibility only");
+    vw_basis b;
+    vw_camera_basis(app, cam, &b);
+    for (uint32_t y = 0; y < app->height; y++)
+        for (uint32_t x = 0; x < app->width; x++) {
+            size_t i = (size_t)y * app->width + x;
+            const float *p = v + 4 * i;
+            if (!vw_vis_id(p)) { vw_put(out + 4 * i, 0, 0, 0); continue; }
+            float sx = ((2.0f * ((float)x + 0.5f) / (float)app->width) - 1.0f) * b.tan_x;
+            float sy = ((2.0f * ((float)y + 0.5f) / (float)app->height) - 1.0f) * b.tan_y, d[3], n[3];
+            for (int k = 0; k < 3; k++) d[k] = b.fwd[k] + b.right[k] * sx + b.up[k] * sy;
+            if (!vw_rebuild_normal(app->scene, (uint32_t)p[0], (uint32_t)p[1], b.eye, d, n)) {
+                vw_put(out + 4 * i, 1, 0, 1);
+                continue;
+            }
+            float nx = vw_dot(n, b.right), ny = vw_dot(n, b.up), nz = -vw_dot(n, b.fwd);
+            vw_put(out + 4 * i, nx * 0.5f + 0.5f, ny * 0.5f + 0.5f, nz * 0.5f + 0.5f);
+        }
+    return 0;
+}
+
 /* ---- legends -------------------------------------------------------------------------------- */
 
 static void vw_grey(float t, uint8_t rgb[3]) { rgb[0] = rgb[1] = rgb[2] = vw_u8(t); }
@@ -638,6 +760,10 @@ static const vw_view_def vw_view_table[VW_VIEW_COUNT] = {
     [VW_VIEW_SHADOW_ONLY] = {"shadow-only", "shadow term alone: the casting lights' visibility weighted by their diffuse "
                              "light, black shadowed to white lit; blue: no casting light reaches", vw_view_shadow_only,
                              vw_legend_shadow_only},
+    [VW_VIEW_VIS_ID] = {"vis-id", "visibility: the id buffer, each object and triangle a hashed colour; black: nothing drawn",
+                        vw_view_vis_id, NULL},
+    [VW_VIEW_VIS_NORMALS] = {"vis-normals", "visibility: the normal rebuilt on the CPU from each pixel's id and the scene's "
+                             "triangle, as vis-resolve does, n * 0.5 + 0.5", vw_view_vis_normals, NULL},
 };
 
 const char *vw_view_name(vw_view v) { return v < VW_VIEW_COUNT ? vw_view_table[v].name : "unknown"; }
@@ -755,16 +881,36 @@ static void vw_tile_pass(void *user, const tl_app_pass_context *ctx)
     for (size_t t = 0; t < tiles; t++) h[t] = h[4 + 2 * t] == UINT32_MAX ? UINT32_MAX : h[4 + 2 * t + 1];
 }
 
-void vw_views_tile_pass(vw_app *app, tl_renderer *r)
+/* Does nothing: its declared read of RT0 is what it is for (visibility's G-buffer pass writes RT0
+ * only when a later pass reads it, as SSAO does; keep_targets keeps memory, not writes). */
+static void vw_rt0_pass(void *user, const tl_app_pass_context *ctx)
 {
-    tl_app_pass_desc d = {.name = "viewer.tiles", .before = "tonemap", .reads = TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS),
-                          .writes = TL_TARGET_BIT(TL_TARGET_HDR), .execute = vw_tile_pass, .user = app};
+    (void)user;
+    (void)ctx;
+}
+
+/* Adds the application pass `d` when wanted and missing, removes it when there and not wanted. */
+static void vw_app_pass(tl_renderer *r, const tl_frame_plan *p, const tl_app_pass_desc *d, int want)
+{
+    int has = 0;
+    for (size_t i = 0; i < p->pass_count; i++) has |= !strcmp(p->passes[i].name, d->name);
+    if (has && !want) tl_renderer_remove_pass(r, d->name);
+    if (!has && want) tl_renderer_add_pass(r, d);
+}
+
+void vw_views_app_passes(vw_app *app, tl_renderer *r)
+{
+    tl_app_pass_desc tiles = {.name = "viewer.tiles", .before = "tonemap",
+                              .reads = TL_TARGET_BIT(TL_TARGET_LIGHT_LISTS), .writes = TL_TARGET_BIT(TL_TARGET_HDR),
+                              .execute = vw_tile_pass, .user = app};
+    tl_app_pass_desc rt0 = {.name = "viewer.rt0", .before = "tonemap", .reads = TL_TARGET_BIT(TL_TARGET_RT0),
+                            .writes = TL_TARGET_BIT(TL_TARGET_HDR), .execute = vw_rt0_pass, .user = app};
     tl_frame_plan *p = &app->plan;
-    int has = 0, want = app->view == VW_VIEW_TILE_LIGHTS || app->grid;
     if (tl_renderer_get_plan(r, p) != TL_OK) return;
-    for (size_t i = 0; i < p->pass_count; i++) has |= !strcmp(p->passes[i].name, d.name);
-    if (has && (!want || p->light_strategy != TL_LIGHT_STRATEGY_TILED)) tl_renderer_remove_pass(r, d.name);
-    if (!has && want && p->light_strategy == TL_LIGHT_STRATEGY_TILED) tl_renderer_add_pass(r, &d);
+    vw_app_pass(r, p, &tiles, (app->view == VW_VIEW_TILE_LIGHTS || app->grid) && p->light_strategy == TL_LIGHT_STRATEGY_TILED);
+    if (tl_renderer_get_plan(r, p) != TL_OK) return;
+    vw_app_pass(r, p, &rt0, app->desc.options.mode == TL_MODE_VISIBILITY &&
+                                (app->grid || (!app->split_on && (app->view == VW_VIEW_NORMALS || app->view == VW_VIEW_GLOSS))));
     tl_renderer_get_plan(r, p);
 }
 
