@@ -10,28 +10,31 @@
 
 enum { VW_W = 320, VW_H = 180, GRID_W = 640, GRID_H = 360 };
 
-static const char *const modes[4] = {"thin-lpp", "thin-deferred", "fat", "forward"};
+enum { NM = 5 };
+static const char *const modes[NM] = {"thin-lpp", "thin-deferred", "fat", "forward", "visibility"};
 /* The views in the viewer's order (--view names; the grid puts them row by row, 5 across). */
-enum { NV = 24, NV_NO_EFFECTS = 14 }; /* views; those that need no effect come first */
+enum { NV = 26, NV_NO_EFFECTS = 14, V_VIS_ID = 24, V_VIS_NORMALS = 25 }; /* views; those that need no effect first */
 static const char *const views[NV] = {"final", "normals", "gloss", "luma", "chroma", "albedo", "depth",
                                       "position", "light-diffuse", "light-specular", "tile-lights", "hdr",
                                       "before-fxaa", "diff-fat", "ao-raw", "ao", "dof-coc", "ssr", "bloom",
                                       "msaa-edges", "material-model", "shadow-atlas", "shadow-cascades",
-                                      "shadow-only"};
+                                      "shadow-only", "vis-id", "vis-normals"};
 /* Which views each mode has (the G-buffer it writes) with every effect off: 1 = available
  * (the effects' views: test_viewer_effects.c; the shadow views need --shadows: test_viewer_shadows.c). */
-static const int has_view[4][NV] = {
+static const int has_view[NM][NV] = {
     /* thin-lpp: RT0, light buffer; no RT1 */
-    {1, 1, 1, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
+    {1, 1, 1, 0, 0, 0, 1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0},
     /* thin-deferred: RT0, RT1; no light buffer */
-    {1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
+    {1, 1, 1, 1, 1, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0},
     /* fat: its normal, albedo and position targets */
-    {1, 1, 1, 0, 0, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
+    {1, 1, 1, 0, 0, 1, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0},
     /* forward: depth only (Forward+ has the tile lists) */
-    {1, 0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0},
+    {1, 0, 0, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 0, 0},
+    /* visibility: depth and the id, the tile lists; RT0 (normals, gloss) kept by the viewer's pass */
+    {1, 1, 1, 0, 0, 0, 1, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 0, 0, 1, 0, 0, 0, 1, 1},
 };
 /* Views that draw a scale legend into their pixels (bottom left; not in the grid's thumbnails). */
-static const int has_legend[NV] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 1, 1, 1};
+static const int has_legend[NV] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 1, 1, 1, 1, 0, 0, 0, 0, 1, 1, 1, 0, 0};
 
 /* An unmoved camera: the scene's, exactly as thinlight-render draws it, in every mode. */
 static void final_view_equals_render(int m)
@@ -58,7 +61,7 @@ TL_TEST(viewer_final_view_equals_thinlight_render) { final_view_equals_render(0)
 
 TL_TEST_FULL(viewer_final_view_equals_thinlight_render_each_mode)
 {
-    for (int m = 1; m < 4; m++) final_view_equals_render(m);
+    for (int m = 1; m < NM; m++) final_view_equals_render(m);
 }
 
 /* The grid in each mode: views the mode has are non-blank, views it lacks are the placeholder,
@@ -97,6 +100,76 @@ TL_TEST(viewer_grid_views_thin_lpp) { check_grid(0); }
 TL_TEST_FULL(viewer_grid_views_thin_deferred) { check_grid(1); }
 TL_TEST_FULL(viewer_grid_views_fat) { check_grid(2); }
 TL_TEST_FULL(viewer_grid_views_forward) { check_grid(3); }
+TL_TEST_FULL(viewer_grid_views_visibility) { check_grid(4); }
+
+/* The vis-id view's colour of an id (docs/viewer.md): Wellons' lowbias32 hash of (object slot + 1)
+ * << 20 | triangle, each of its three low bytes b as 64 + 3 b / 4; black where nothing was drawn. */
+static void vis_colour(const float *p, uint8_t rgb[3])
+{
+    uint32_t id = p[2] > 0.5f ? (((uint32_t)p[0] + 1u) << 20) | (uint32_t)p[1] : 0u, h = id;
+    h ^= h >> 16;
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    h *= 0x846ca68bu;
+    h ^= h >> 16;
+    for (int k = 0; k < 3; k++) rgb[k] = id ? (uint8_t)(64u + ((h >> (8 * k)) & 255u) * 3u / 4u) : 0;
+}
+
+/* vis-id (mode visibility): every pixel the colour docs/viewer.md gives the id thinlight-render's
+ * --dump-targets wrote for the same frame (vis_id.exr: object, triangle, drawn), exactly; many
+ * colours (the crypt's triangles); the placeholder in another mode. */
+TL_TEST(viewer_vis_id_view_colours_each_triangle)
+{
+    char cmd[2048], path[1024];
+    snprintf(cmd, sizeof cmd, "'%s' default --size %ux%u --mode visibility --light-strategy tiled -o '%s/vis.png' "
+             "--dump-targets '%s/vis_targets' 2>/dev/null", TL_RENDER, VW_W, VW_H, TL_WORK, TL_WORK);
+    TL_CHECK(run(cmd) == 0);
+    image v = shot(VW_W, VW_H, "--mode visibility --view vis-id", "vis_id.png"),
+          none = shot(VW_W, VW_H, "--mode thin-lpp --view vis-id", "vis_id_thin.png");
+    snprintf(path, sizeof path, "%s/vis_targets/vis_id.exr", TL_WORK);
+    tl_float_image ids = {0};
+    TL_CHECK(tl_image_read_rgb_float(path, &(tl_image_read_desc){.logger = {.fn = log_line}}, &ids) == TL_OK);
+    TL_CHECK(v.px && ids.rgb && v.w == ids.width && v.h == ids.height);
+    size_t wrong = 0, drawn = 0;
+    for (uint32_t y = 0; v.px && ids.rgb && y < VW_H; y++) /* both rows top to bottom */
+        for (uint32_t x = 0; x < VW_W; x++) {
+            const float *f = ids.rgb + 3 * ((size_t)y * VW_W + x);
+            uint8_t want[3];
+            vis_colour(f, want);
+            drawn += f[2] > 0.5f;
+            wrong += memcmp(at(&v, x, y), want, 3) != 0;
+        }
+    printf("vis-id: %zu of %zu pixels drawn, %zu not the colour of their id, %zu colours (64: at least)\n", drawn,
+           (size_t)VW_W * VW_H, wrong, v.px ? colours(&v) : 0);
+    TL_CHECK(drawn > 0 && wrong == 0 && colours(&v) == 64);
+    TL_CHECK(none.px && is_placeholder(&none));
+    tl_float_image_free(&ids);
+    release(&v);
+    release(&none);
+}
+
+/* vis-normals (mode visibility): the normals rebuilt on the CPU from each pixel's id and the
+ * scene's triangle are the rasteriser's, RT0's as the normals view shows it in the same mode (its
+ * octahedral 2 x 12 bits aside: measured at most 2 levels apart, 0.005 on average, at 320x180; the
+ * crypt has no normal map), and not the final
+ * image; the placeholder in another mode. */
+TL_TEST(viewer_vis_normals_view_matches_rt0)
+{
+    image rebuilt = shot(VW_W, VW_H, "--mode visibility --view vis-normals", "vis_normals.png"),
+          rt0 = shot(VW_W, VW_H, "--mode visibility --view normals", "vis_rt0_normals.png"),
+          fin = shot(VW_W, VW_H, "--mode visibility", "vis_final.png"),
+          none = shot(VW_W, VW_H, "--mode fat --view vis-normals", "vis_normals_fat.png");
+    tl_image_error e = compare(&rebuilt, &rt0), f = compare(&rebuilt, &fin);
+    printf("vis-normals against RT0's normals: max %.0f mean %.4f levels; against the final image mean %.1f\n",
+           e.max_abs, e.mean_abs, f.mean_abs);
+    TL_CHECK(rebuilt.px && colours(&rebuilt) > 32 && !is_placeholder(&rebuilt) && !is_placeholder(&rt0));
+    TL_CHECK(e.max_abs <= 3.0 && e.mean_abs < 0.1 && f.mean_abs > 10.0);
+    TL_CHECK(none.px && is_placeholder(&none));
+    release(&rebuilt);
+    release(&rt0);
+    release(&fin);
+    release(&none);
+}
 
 /* Thumbnail pixel (x, y) of a cell (GL rows: from the bottom) is the full view's pixel
  * (x W / cw, y H / ch); PNG rows run from the top. The full view's legend is left out: the

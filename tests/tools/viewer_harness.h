@@ -15,7 +15,7 @@
 #include "tl_test.h"
 
 /* The viewer's grid of every view (VW_GRID_COLS x VW_GRID_ROWS in examples/viewer/viewer.h). */
-enum { GRID_COLS = 5, GRID_ROWS = 5 };
+enum { GRID_COLS = 5, GRID_ROWS = 6 };
 
 typedef struct image {
     uint32_t w, h;
