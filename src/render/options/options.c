@@ -10,7 +10,8 @@
 
 const tl_option_info tl__frame_option_rows[] = {
     TL__OPT_ENUM(mode, tl_render_mode, TL_MODE_COUNT_, TL_MODE_THIN_LPP, NULL,
-                 "how the frame is rendered: thin G-buffer with light buffer, thin deferred, fat (the reference) or forward"),
+                 "how the frame is rendered: thin G-buffer with light buffer, thin deferred, fat (the reference), forward, "
+                 "or a visibility buffer (depth and a triangle id, shaded by a compute resolve)"),
     TL__OPT_ENUM(depth_format, tl_depth_format, TL_DEPTH_FORMAT_COUNT_, TL_DEPTH_FORMAT_D24, NULL,
                  "depth storage: D24S8, D32F, or D32F with reversed Z"),
     TL__OPT_ENUM(rt0, tl_rt0_packing, TL_RT0_COUNT_, TL_RT0_RGBA8, NULL,
