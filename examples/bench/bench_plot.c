@@ -410,7 +410,7 @@ static int bench__bytes_script(FILE *f, const void *ctx)
         any = 1;
     }
     if (!any) fputs("NaN notitle", f);
-    fputs("\nset title 'bytes moved per pixel and frame (estimate, by pass; compute passes count none)'\nset ylabel 'bytes per pixel per frame'\nplot ", f);
+    fputs("\nset title 'bytes moved per pixel and frame (estimate, by pass)'\nset ylabel 'bytes per pixel per frame'\nplot ", f);
     col = 2;
     any = 0;
     for (int q = 0; q < TL_PASS_COUNT; q++) {

@@ -240,8 +240,10 @@ static void bench__visibility_lines(const bench_run *run, bench__summary *s, con
                    fat->bytes_per_pixel, bench__gbuffer_only_bpp(fat));
     bench__add(line, "; it moves %.1f MiB a frame by the estimate", last->bytes_moved / 1048576.0);
     if (lpp) bench__add(line, " (%s %.1f)", bench_config_name(lpp->config), lpp->bytes_moved / 1048576.0);
-    /* the estimate counts bytes per fragment of a samples-passed query: a compute pass has none */
-    bench__add(line, ", which counts nothing for its compute passes (light-cull, vis-classify, vis-resolve)");
+    /* a library whose estimate counts bytes per fragment of a samples-passed query counts none for a
+       compute pass: said rather than left to read as free */
+    if ((last->passes & BENCH_PASS_BIT(TL_PASS_VIS_RESOLVE)) && last->pass_bytes[TL_PASS_VIS_RESOLVE] <= 0.0)
+        bench__add(line, ", which counts nothing for its compute passes (vis-classify, vis-resolve)");
     bench__say(s, "%s", line);
     if (!(last->ms_median > 0.0)) return;
     snprintf(line, sizeof line, "%swhere %s's frame goes at %u lights (%.2f ms):", at, vname, last->lights,
