@@ -90,11 +90,13 @@ static inline float bench_config_light_scale(bench_config c)
     return v == BENCH_VARIANT_LIGHT_HALF || v == BENCH_VARIANT_LIGHT_QUARTER
                ? 1.0f / (float)(2u << (v - BENCH_VARIANT_LIGHT_HALF)) : 0.0f;
 }
-/* The tiled light pass: compute for that variant; the fragment pass for the others when the bench
- * measures both (`asked` auto, the default), else `asked` (--tiled-shading fragment|compute). */
+/* The tiled light pass: compute for that variant and for visibility (its resolve is a compute pass:
+ * asking it for the fragment pass would be a downgrade); the fragment pass for the others when the
+ * bench measures both (`asked` auto, the default), else `asked` (--tiled-shading fragment|compute). */
 static inline tl_tiled_shading bench_config_tiled_shading(bench_config c, tl_tiled_shading asked)
 {
-    if (bench_config_variant_of(c) == BENCH_VARIANT_TILED_COMPUTE) return TL_TILED_SHADING_COMPUTE;
+    if (bench_config_variant_of(c) == BENCH_VARIANT_TILED_COMPUTE || bench_config_mode(c) == TL_MODE_VISIBILITY)
+        return TL_TILED_SHADING_COMPUTE;
     return asked == TL_TILED_SHADING_AUTO ? TL_TILED_SHADING_FRAGMENT : asked;
 }
 /* The Fresnel layout: n.v for that variant, else `asked` (--fresnel). */
