@@ -558,7 +558,8 @@ static void vw_object_point(const float *m, int identity, const float p[3], floa
 
 /* The rebuilt normal of one pixel, in world space: its triangle's vertices placed by the object's
  * transform, the barycentrics of the pixel's view ray (from the eye along d) against the triangle's
- * plane, held to the triangle as vis_rebuild.glsl holds them, the vertex normals interpolated and
+ * plane (perspective-correct: vis_rebuild.glsl's window-space weights, formulated as its fallback
+ * for triangles crossing the eye's plane is), held to the triangle as vis_rebuild.glsl holds them, the vertex normals interpolated and
  * turned by the inverse transpose of the transform. 0 when the id names no triangle of the scene. */
 static int vw_rebuild_normal(const tl_scene *s, uint32_t object, uint32_t triangle, const float eye[3],
                              const float d[3], float n[3])
