@@ -4,9 +4,7 @@
 #ifndef TL_FORWARD_COLOR_GLSL
 #define TL_FORWARD_COLOR_GLSL
 
-#ifdef TL_SSAO_AMBIENT
-layout(binding = TL_UNIT_AO) uniform sampler2D u_ao;
-#endif
+#include "ambient.glsl"
 
 vec3 tl_forward_color(tl_surface s, vec3 n, vec3 v, tl_light_sums sums, ivec2 px)
 {
@@ -14,16 +12,7 @@ vec3 tl_forward_color(tl_surface s, vec3 n, vec3 v, tl_light_sums sums, ivec2 px
 #ifdef TL_SPECULAR_NONE
     specular = fresnel = vec3(0.0);
 #endif
-#ifdef TL_SSAO_AMBIENT
-    // SSAO (docs/effects.md): the ambient term, and with TL_SSAO_DIFFUSE the diffuse light
-    float ao = texelFetch(u_ao, px, 0).r;
-#ifdef TL_SSAO_DIFFUSE
-    diffuse *= ao;
-#endif
-    vec3 ambient = u_ambient * (s.occlusion * ao);
-#else
-    vec3 ambient = u_ambient * s.occlusion;
-#endif
+    vec3 ambient = tl_ambient(s.occlusion, px, diffuse);
     vec3 c = s.albedo * (diffuse + ambient) + s.specular * specular + fresnel + s.emissive;
 #if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD) && !defined(TL_STIPPLE)
     c = tl_model_shade(u_material_model, s, clamp(dot(n, v), 0.0, 1.0), diffuse, ambient, s.specular * specular + fresnel,

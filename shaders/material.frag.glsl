@@ -21,9 +21,7 @@ layout(binding = TL_UNIT_LIGHT_COAT) uniform sampler2D u_light_coat; // the coat
 #endif
 
 layout(location = TL_OUT_HDR) out vec4 o_color;
-#ifdef TL_SSAO_AMBIENT
-layout(binding = TL_UNIT_AO) uniform sampler2D u_ao;
-#endif
+#include "ambient.glsl" // the ambient term, with SSAO's AO
 
 vec3 tl_finite(vec3 c) // FP16 sums of many bright lights can reach Inf: keep targets finite
 {
@@ -94,16 +92,7 @@ void main()
 #else
     vec3 f0 = s.specular;
 #endif
-#ifdef TL_SSAO_AMBIENT
-    // SSAO (docs/effects.md): the ambient term, and with TL_SSAO_DIFFUSE the diffuse light
-    float ao = texelFetch(u_ao, ivec2(gl_FragCoord.xy), 0).r;
-#ifdef TL_SSAO_DIFFUSE
-    diffuse *= ao;
-#endif
-    vec3 ambient = u_ambient * (s.occlusion * ao);
-#else
-    vec3 ambient = u_ambient * s.occlusion;
-#endif
+    vec3 ambient = tl_ambient(s.occlusion, ivec2(gl_FragCoord.xy), diffuse);
     vec3 c = s.albedo * (diffuse + ambient) + f0 * specular + fresnel + s.emissive;
 #ifdef TL_MODEL
     float nv_m = clamp(dot(tl_material_normal(), normalize(-v_view_position)), 0.0, 1.0);

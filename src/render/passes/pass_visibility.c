@@ -64,7 +64,7 @@ static void tl__vis_permute_samples(const tl__plan_input *in, const tl__pass_dec
 
 /* ---- vis-classify ---------------------------------------------------------------------------- */
 
-static void tl__classify_declare(const tl__plan_input *in, tl__pass_decl *d)
+static void tl__vis_classify_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
     if (!in->mode->visibility) return;
     d->reads = d->samples = TL__B(VIS_ID);
@@ -75,7 +75,7 @@ static void tl__classify_declare(const tl__plan_input *in, tl__pass_decl *d)
 
 /* The buffer for the plan's tiles (made again when it needs more), its dispatches reset to no
  * tiles, then one workgroup per tile. */
-static void tl__classify_execute(const tl__pass_ctx *ctx)
+static void tl__vis_classify_execute(const tl__pass_ctx *ctx)
 {
     const GladGLContext *gl = ctx->gl;
     tl__vis_tiles *t = &ctx->lights->vis;
@@ -103,15 +103,15 @@ const tl__pass_def tl__pass_vis_classify = {
     .name = "vis-classify",
     .programs = {{"vis-classify", NULL, NULL, "vis_classify.comp.glsl"}},
     .targets = {&tl__target_vis_id, &tl__target_vis_tiles},
-    .declare = tl__classify_declare,
+    .declare = tl__vis_classify_declare,
     .permute = tl__vis_permute_samples,
-    .execute = tl__classify_execute,
+    .execute = tl__vis_classify_execute,
     .services = TL__PASS_LIGHTS,
 };
 
 /* ---- vis-resolve ----------------------------------------------------------------------------- */
 
-static void tl__resolve_declare(const tl__plan_input *in, tl__pass_decl *d)
+static void tl__vis_resolve_declare(const tl__plan_input *in, tl__pass_decl *d)
 {
     if (!in->mode->visibility) return;
     d->samples = TL__B(VIS_ID) | (tl__ssao_pass(in) ? TL__B(AO) : 0u);
@@ -121,7 +121,7 @@ static void tl__resolve_declare(const tl__plan_input *in, tl__pass_decl *d)
     d->light_data = in->lights ? TL__LIGHTS_VIEW | TL__LIGHTS_TILES : 0u;
 }
 
-static void tl__resolve_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
+static void tl__vis_resolve_permute(const tl__plan_input *in, const tl__pass_decl *d, tl__pass_defines *out)
 {
     tl__perm *k = &out->slot[0];
     out->used[0] = 1;
@@ -134,7 +134,7 @@ static void tl__resolve_permute(const tl__plan_input *in, const tl__pass_decl *d
 }
 
 /* The id's split refused past its bits, naming the object (the visible opaque ones: those drawn). */
-static tl_result tl__resolve_prepare(const tl__pass_ctx *ctx, const tl__view *v, const tl_renderer_options *o)
+static tl_result tl__vis_resolve_prepare(const tl__pass_ctx *ctx, const tl__view *v, const tl_renderer_options *o)
 {
     (void)v;
     (void)o;
@@ -156,7 +156,7 @@ static tl_result tl__resolve_prepare(const tl__pass_ctx *ctx, const tl__view *v,
     return TL_OK;
 }
 
-static void tl__resolve_execute(const tl__pass_ctx *ctx)
+static void tl__vis_resolve_execute(const tl__pass_ctx *ctx)
 {
     const GladGLContext *gl = ctx->gl;
     const tl__scene_gpu *g = ctx->scene;
@@ -186,9 +186,9 @@ const tl__pass_def tl__pass_vis_resolve = {
     .id = TL_PASS_VIS_RESOLVE,
     .name = "vis-resolve",
     .programs = {{"vis-resolve", NULL, NULL, "vis_resolve.comp.glsl"}},
-    .declare = tl__resolve_declare,
-    .permute = tl__resolve_permute,
-    .execute = tl__resolve_execute,
-    .prepare = tl__resolve_prepare,
+    .declare = tl__vis_resolve_declare,
+    .permute = tl__vis_resolve_permute,
+    .execute = tl__vis_resolve_execute,
+    .prepare = tl__vis_resolve_prepare,
     .services = TL__PASS_SCENE | TL__PASS_LIGHTS | TL__PASS_SHADOWS,
 };
