@@ -30,6 +30,8 @@ void main()
         }
     }
     barrier();
+    // the dispatches' other sizes (the buffer was cleared to zeros): four 8 x 8 workgroups a tile
+    if (gl_WorkGroupID.xy == uvec2(0u) && lane < uint(TL_VIS_BUCKETS)) tl_vis_dispatch[lane].yz = uvec2(4u, 1u);
     if (lane < uint(TL_VIS_BUCKETS) && (s_buckets[lane / 32u] & (1u << (lane % 32u))) != 0u) {
         uint tiles = gl_NumWorkGroups.x * gl_NumWorkGroups.y;
         uint n = atomicAdd(tl_vis_dispatch[lane].x, 1u);

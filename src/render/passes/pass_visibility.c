@@ -87,9 +87,10 @@ static void tl__vis_classify_execute(const tl__pass_ctx *ctx)
         tl__gl_label(gl, GL_BUFFER, t->buffer, "buffer.vis.tiles");
         t->bytes = bytes;
     }
-    static const GLuint empty[4] = {0u, 4u, 1u, 0u}; /* no tile; four 8 x 8 workgroups per tile */
-    gl->ClearNamedBufferSubData(t->buffer, GL_RGBA32UI, 0, (GLsizeiptr)TL__VIS_BUCKETS * TL__VIS_DISPATCH_BYTES,
-                                GL_RGBA_INTEGER, GL_UNSIGNED_INT, empty);
+    /* zeros, from no client memory (a clear with data reads it through the application's unpack
+     * state in Mesa); the classify's first workgroup writes the dispatches' y and z */
+    gl->ClearNamedBufferSubData(t->buffer, GL_R32UI, 0, (GLsizeiptr)TL__VIS_BUCKETS * TL__VIS_DISPATCH_BYTES,
+                                GL_RED_INTEGER, GL_UNSIGNED_INT, NULL);
     gl->MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     gl->BindBufferBase(GL_SHADER_STORAGE_BUFFER, TL__SSBO_VIS_TILES, t->buffer);
     tl__state_program(gl, ctx->state, ctx->programs[0]);
