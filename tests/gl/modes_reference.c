@@ -65,13 +65,14 @@ int modes_render(const tl_scene *s, tl_renderer_desc d, modes_frame *f)
     }
     if (ok && (d.options.mode == TL_MODE_THIN_LPP || d.options.mode == TL_MODE_THIN_DEFERRED))
         ok = (f->normal = read_target(r, TL_TARGET_RT0, n)) != NULL;
+    if (ok && d.options.mode == TL_MODE_VISIBILITY) ok = (f->vis_id = read_target(r, TL_TARGET_VIS_ID, n)) != NULL;
     tl_renderer_destroy(r);
     return ok && f->hdr && f->ldr && f->out && f->depth;
 }
 
 void modes_frame_free(modes_frame *f)
 {
-    void *p[] = {f->hdr, f->ldr, f->out, f->depth, f->position, f->normal, f->albedo, f->material};
+    void *p[] = {f->hdr, f->ldr, f->out, f->depth, f->position, f->normal, f->albedo, f->material, f->vis_id};
     for (size_t i = 0; i < sizeof p / sizeof p[0]; i++) free(p[i]);
     memset(f, 0, sizeof *f);
 }
@@ -166,6 +167,117 @@ static size_t lights_at(const tl_ref_light *all, size_t count, const double p[3]
     return n;
 }
 
+/* ---- visibility's surface outside its triangle ---------------------------------------------- */
+
+static void cross3(const double a[3], const double b[3], double o[3])
+{
+    o[0] = a[1] * b[2] - a[2] * b[1];
+    o[1] = a[2] * b[0] - a[0] * b[2];
+    o[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+static double dot3(const double a[3], const double b[3]) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/* Window coordinates (pixels) of view-space point p. */
+static void to_window(const modes_frame *m, const double p[3], double out[2])
+{
+    double c[4];
+    for (int r = 0; r < 4; r++)
+        c[r] = (double)m->proj[r] * p[0] + (double)m->proj[4 + r] * p[1] + (double)m->proj[8 + r] * p[2] + m->proj[12 + r];
+    out[0] = (c[0] / c[3] * 0.5 + 0.5) * m->w;
+    out[1] = (c[1] / c[3] * 0.5 + 0.5) * m->h;
+}
+
+/* Distance in pixels from q to segment ab. */
+static double segment_distance(const double q[2], const double a[2], const double b[2])
+{
+    double ex = b[0] - a[0], ey = b[1] - a[1], l2 = ex * ex + ey * ey;
+    double t = l2 > 0.0 ? fmin(fmax(((q[0] - a[0]) * ex + (q[1] - a[1]) * ey) / l2, 0.0), 1.0) : 0.0;
+    return hypot(q[0] - a[0] - t * ex, q[1] - a[1] - t * ey);
+}
+
+/* Pixel (x, y) of a visibility frame whose centre lies outside its triangle (the one VIS_ID names),
+ * in double. The rasteriser covers a pixel whose centre is outside the exact triangle by up to its
+ * sub-pixel snapping of the vertices, and shades its attribute planes extrapolated there, as
+ * vis_rebuild.glsl does. Returns 1 with the centre's distance outside the triangle in pixels and
+ * the triangle's own point nearest in barycentrics (clamped to [0, 1] and renormalised), with its
+ * normal (the interpolated one, facing the eye as the resolve's); 0 where the centre is inside (or
+ * nothing was drawn). */
+static int vis_surface_outside(const tl_scene *s, const modes_frame *m, const tl_projection *pr, size_t x, size_t y,
+                               double p[3], double n[3], double *outside_px)
+{
+    size_t i = y * m->w + x;
+    if (m->vis_id[4 * i + 2] == 0.0f) return 0;
+    const size_t obj = (size_t)m->vis_id[4 * i], tri = (size_t)m->vis_id[4 * i + 1];
+    if (obj >= s->object_count) return 0;
+    const tl_object *o = &s->objects[obj];
+    double model[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}, mv[16];
+    int zero = 1;
+    for (int k = 0; k < 16; k++) zero &= o->transform[k] == 0.0f;
+    for (int k = 0; k < 16 && !zero; k++) model[k] = o->transform[k];
+    for (int c = 0; c < 4; c++)
+        for (int r = 0; r < 4; r++) {
+            mv[4 * c + r] = 0.0;
+            for (int k = 0; k < 4; k++) mv[4 * c + r] += (double)m->view[4 * k + r] * model[4 * c + k];
+        }
+    /* the normal matrix: the cofactors of model-view's 3x3 (its inverse transpose times the
+     * determinant; the direction is normalised below, so only the determinant's sign matters) */
+    double col[3][3], nm[3][3];
+    for (int c = 0; c < 3; c++)
+        for (int r = 0; r < 3; r++) col[c][r] = mv[4 * c + r];
+    cross3(col[1], col[2], nm[0]);
+    cross3(col[2], col[0], nm[1]);
+    cross3(col[0], col[1], nm[2]);
+    double det = dot3(col[0], nm[0]);
+    double P[3][3], N[3][3];
+    for (int v = 0; v < 3; v++) {
+        const tl_vertex *vx = &s->vertices[s->indices[o->first_index + 3 * tri + (size_t)v]];
+        for (int r = 0; r < 3; r++) {
+            P[v][r] = mv[12 + r];
+            N[v][r] = 0.0;
+            for (int k = 0; k < 3; k++) {
+                P[v][r] += mv[4 * k + r] * vx->position[k];
+                N[v][r] += nm[k][r] * vx->normal[k] * (det < 0.0 ? -1.0 : 1.0);
+            }
+        }
+    }
+    /* the pixel centre's ray, through two depths of its window point */
+    float ndc_x = ((float)x + 0.5f) * (1.0f / (float)m->w) * 2.0f - 1.0f;
+    float ndc_y = ((float)y + 0.5f) * (1.0f / (float)m->h) * 2.0f - 1.0f, q0[3], q1[3];
+    tl_view_position_from_depth(pr, ndc_x, ndc_y, 0.25f, q0);
+    tl_view_position_from_depth(pr, ndc_x, ndc_y, 0.75f, q1);
+    double org[3], dir[3], e1[3], e2[3], pv[3], t[3], qv[3];
+    for (int k = 0; k < 3; k++) {
+        org[k] = q0[k];
+        dir[k] = (double)q1[k] - q0[k];
+        e1[k] = P[1][k] - P[0][k];
+        e2[k] = P[2][k] - P[0][k];
+        t[k] = org[k] - P[0][k];
+    }
+    cross3(dir, e2, pv);
+    double inv = 1.0 / dot3(e1, pv);
+    cross3(t, e1, qv);
+    double b[3] = {0.0, dot3(t, pv) * inv, dot3(dir, qv) * inv};
+    b[0] = 1.0 - b[1] - b[2];
+    if (!isfinite(b[0]) || !isfinite(b[1]) || !isfinite(b[2]) || fmin(b[0], fmin(b[1], b[2])) >= 0.0) return 0;
+    double win[3][2], centre[2] = {(double)x + 0.5, (double)y + 0.5};
+    for (int v = 0; v < 3; v++) to_window(m, P[v], win[v]);
+    *outside_px = fmin(segment_distance(centre, win[0], win[1]),
+                       fmin(segment_distance(centre, win[1], win[2]), segment_distance(centre, win[2], win[0])));
+    double sum = 0.0;
+    for (int v = 0; v < 3; v++) sum += (b[v] = fmin(fmax(b[v], 0.0), 1.0));
+    double face[3], nl;
+    cross3(e1, e2, face);
+    const double facing = dot3(face, P[0]) < 0.0 ? 1.0 : -1.0; /* double-sided: towards the eye */
+    for (int k = 0; k < 3; k++) {
+        p[k] = (b[0] * P[0][k] + b[1] * P[1][k] + b[2] * P[2][k]) / sum;
+        n[k] = facing * (b[0] * N[0][k] + b[1] * N[1][k] + b[2] * N[2][k]);
+    }
+    nl = sqrt(dot3(n, n));
+    for (int k = 0; k < 3; k++) n[k] /= nl;
+    return 1;
+}
+
 /* The tone curve and sRGB encoding of tonemap.frag.glsl, in double, times 255. */
 static double ldr255(double c)
 {
@@ -225,6 +337,18 @@ void modes_compare_reference(const tl_scene *s, const modes_frame *fat, const mo
              * the position its light pass rebuilt from depth, whose texel fetch may round the D24
              * code's conversion to float the other way: the range spans one float step either way */
             const double *p = interpolated ? pf : pm;
+            /* visibility at a pixel whose centre is outside its triangle (vis_surface_outside): the
+             * resolve evaluates the triangle's attributes extrapolated there as the rasteriser does,
+             * so the reference stays at fat's point; the range at the triangle's own (clamped) point
+             * is kept for the figure the test prints, to show the pixels tell the two apart */
+            double pc[3], nc[3], outside_px = 0.0, tri_lo[3], tri_hi[3];
+            const int outside = m->vis_id && vis_surface_outside(s, m, &pr, x, y, pc, nc, &outside_px);
+            if (outside) {
+                double cp[3];
+                shade_range(model, &surf, pc, nc, tilt, here, lights_at(all, nl, pc, here), cp, tri_lo, tri_hi);
+                res->vis_outside++;
+                res->vis_outside_worst_px = fmax(res->vis_outside_worst_px, outside_px);
+            }
             size_t count = lights_at(all, nl, p, here);
             double c[3], lo[3], hi[3];
             shade_range(model, &surf, p, nm, tilt, here, count, c, lo, hi);
@@ -254,6 +378,13 @@ void modes_compare_reference(const tl_scene *s, const modes_frame *fat, const mo
                 }
                 res->beyond += e > 1.0;
                 res->compared++;
+                if (outside) {
+                    double tlo = b + tri_lo[k], thi = b + tri_hi[k], ttol = 4.0 * TL_HALF_REL_STEP * fabs(thi) + 4.0 * 0x1.0p-24;
+                    double te = (got < tlo ? tlo - got : got > thi ? got - thi : 0.0) / ttol;
+                    res->vis_outside_values++;
+                    res->vis_outside_clamped_beyond += te > 1.0;
+                    res->vis_outside_clamped_worst = fmax(res->vis_outside_clamped_worst, te);
+                }
                 /* the LDR difference this frame may have from fat's: the reference ranges and
                  * tolerances of both, through the tone curve; its 8-bit rounding makes a difference
                  * of k + f steps (0 <= f < 1) k + 1 steps with probability f: E[d^2] = k^2 + f (2k + 1) */

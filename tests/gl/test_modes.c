@@ -1,4 +1,4 @@
-/* The frame planner (pure) and the four render modes on OSMesa: what each plan allocates, draws and
+/* The frame planner (pure) and the five render modes on OSMesa: what each plan allocates, draws and
  * compiles; every mode's image against the fat full-float reference of the same frame; rendering
  * into a caller-owned framebuffer. */
 #include "tl_test.h"
@@ -51,11 +51,24 @@ TL_TEST(plan_rules_exhaustive)
             tl_frame_plan p;
             TL_CHECK(tl_frame_plan_build(&d, &f, &p) == TL_OK);
             int lights = f.point_lights || f.spot_lights || f.directional_lights;
+            /* forward lights in its geometry pass, visibility in vis-resolve from the tile lists: neither
+             * has a light pass nor its per-type programs */
+            const int vis = mode == TL_MODE_VISIBILITY, light_pass = mode != TL_MODE_FORWARD && !vis;
             /* light types: one program per type present, none for absent ones */
-            TL_CHECK(any_program_has(&p, "TL_LIGHT_TYPE=1") == (mode != TL_MODE_FORWARD && f.point_lights));
-            TL_CHECK(any_program_has(&p, "TL_LIGHT_TYPE=2") == (mode != TL_MODE_FORWARD && f.spot_lights));
-            TL_CHECK(any_program_has(&p, "TL_LIGHT_TYPE=3") == (mode != TL_MODE_FORWARD && f.directional_lights));
-            TL_CHECK(has_pass(&p, TL_PASS_LIGHTS) == (mode != TL_MODE_FORWARD && lights));
+            TL_CHECK(any_program_has(&p, "TL_LIGHT_TYPE=1") == (light_pass && f.point_lights));
+            TL_CHECK(any_program_has(&p, "TL_LIGHT_TYPE=2") == (light_pass && f.spot_lights));
+            TL_CHECK(any_program_has(&p, "TL_LIGHT_TYPE=3") == (light_pass && f.directional_lights));
+            TL_CHECK(has_pass(&p, TL_PASS_LIGHTS) == (light_pass && lights));
+            /* visibility: classify and resolve always (the resolve writes HDR, lit or not); the tile
+             * lists culled for it whenever there are lights (the planner forces tiles) */
+            TL_CHECK(has_pass(&p, TL_PASS_VIS_CLASSIFY) == vis && has_pass(&p, TL_PASS_VIS_RESOLVE) == vis);
+            if (vis) {
+                TL_CHECK(has_pass(&p, TL_PASS_LIGHT_CULL) == lights);
+                TL_CHECK(((p.targets & BIT(TL_TARGET_VIS_ID)) != 0) && ((p.targets & BIT(TL_TARGET_VIS_TILES)) != 0));
+                TL_CHECK(p.light_strategy == TL_LIGHT_STRATEGY_TILED);
+            } else {
+                TL_CHECK(!(p.targets & (BIT(TL_TARGET_VIS_ID) | BIT(TL_TARGET_VIS_TILES))));
+            }
             /* RT1 only in thin-deferred, and only when the light pass reads it */
             TL_CHECK(((p.targets & BIT(TL_TARGET_RT1)) != 0) == (mode == TL_MODE_THIN_DEFERRED && lights));
             /* UVs and texture sampling only with textures; tangents only with normal maps */
@@ -92,7 +105,7 @@ TL_TEST(plan_rules_exhaustive)
             TL_CHECK_EQ_U(sum, p.bytes_per_pixel);
             checked++;
         }
-    TL_CHECK_EQ_U(checked, 4 * 256);
+    TL_CHECK_EQ_U(checked, (size_t)(TL_MODE_COUNT_ - TL_MODE_THIN_LPP) * 256);
 }
 
 TL_TEST(plan_fat_layout_44_bytes)
@@ -175,10 +188,13 @@ TL_TEST(plan_allocations_match_renderer)
         }
         TL_CHECK_EQ_U(sum, (size_t)p.bytes_per_pixel * px);
         TL_CHECK_EQ_U(st.total_target_bytes, sum);
+        /* every image target of the plan reads back; a storage buffer (the tile lists, visibility's
+         * buckets: tl_plan_target.format 0) has no pixels to read, and neither has a target the plan
+         * does not allocate */
         for (int t = 0; t < TL_TARGET_COUNT; t++) {
             float probe[4 * 96 * 64];
             tl_result rr = tl_renderer_read_target(r, (tl_target_id)t, probe, &(size_t){sizeof probe});
-            TL_CHECK((rr == TL_OK) == ((p.targets & BIT(t)) != 0));
+            TL_CHECK((rr == TL_OK) == ((p.targets & BIT(t)) != 0 && p.target_info[t].format != 0));
         }
         /* timed passes are exactly the plan's */
         for (int q = 0; q < TL_PASS_COUNT; q++) TL_CHECK((st.pass_ms[q] != 0.0) == has_pass(&p, (tl_pass)q));
@@ -197,8 +213,13 @@ TL_TEST(plan_allocations_match_renderer)
         TL_CHECK(tl_renderer_get_plan(r, &p) == TL_OK);
         TL_CHECK(!any_program_has(&p, "TL_LIGHT_TYPE=2") && !any_program_has(&p, "TL_LIGHT_TYPE=3"));
         TL_CHECK(st.lights_drawn[TL_LIGHT_SPOT] == 0 && st.lights_drawn[TL_LIGHT_DIRECTIONAL] == 0);
-        if (mode != TL_MODE_FORWARD) TL_CHECK(st.light_fragments[TL_LIGHT_POINT] > 0);
-        else TL_CHECK(st.forward_light_pairs > 0);
+        /* what each mode counts of its lighting: the light pass's fragments; forward's per-object lists;
+         * visibility, which has no light pass, the pixel-light pairs of the tile lists its resolve
+         * walks (counted by light-cull) */
+        if (mode == TL_MODE_FORWARD) TL_CHECK(st.forward_light_pairs > 0);
+        else if (mode == TL_MODE_VISIBILITY)
+            TL_CHECK(st.light_pairs > 0 && st.light_list_entries > 0 && st.light_fragments[TL_LIGHT_POINT] == 0);
+        else TL_CHECK(st.light_fragments[TL_LIGHT_POINT] > 0);
         TL_CHECK(st.bytes_moved > 0.0);
         free(pts);
         tl_renderer_destroy(r);
@@ -235,12 +256,39 @@ static size_t count_nonfinite(const float *v, size_t n)
     return bad;
 }
 
+/* Visibility's pixels whose centre lies outside the triangle VIS_ID names (modes_reference.c,
+ * vis_surface_outside): the rasteriser covers them because it snaps each vertex to
+ * GL_SUBPIXEL_BITS, which moves a point of the triangle at most sqrt(2) 2^-(bits + 1) pixels, plus
+ * the float evaluation of the window coordinates (16 roundings of coordinates up to the frame's
+ * size); a centre farther out than that (a wrong triangle in the id) fails here. There the
+ * resolve extrapolates the triangle's attributes as the rasteriser does (vis_rebuild.glsl), and the
+ * reference compares it at fat's point like forward: on slivers (triangles a fraction of a pixel
+ * across, whose barycentrics change fast across them) the triangle's own clamped point differs by
+ * more than fat's FP16 error, which the printed figure shows. Before the resolve kept the
+ * extrapolated weights (when it clamped them), the crypt with 64 lights had 9 values up to 9.5
+ * times the tolerance beyond the reference, all at such pixels. */
+static void check_vis_outside(const modes_ref_result *r, uint32_t w, uint32_t h)
+{
+    typedef void (*get_integerv_fn)(unsigned int pname, int *data);
+    get_integerv_fn get = (get_integerv_fn)tl_context_proc_loader(g_ctx, "glGetIntegerv");
+    int bits = -1;
+    if (get) get(0x0D50 /* GL_SUBPIXEL_BITS */, &bits);
+    TL_CHECK(bits >= 4); /* the GL minimum */
+    const double bound = sqrt(2.0) * ldexp(1.0, -(bits + 1)) + 16.0 * 0x1.0p-24 * (double)(w > h ? w : h);
+    printf("   visibility: %zu pixels' centres outside their triangle, up to %.5f px (bound %.5f: %d sub-pixel bits); "
+           "at the triangle's clamped point %zu of their %zu values would be beyond (worst %.2f of the tolerance)\n",
+           r->vis_outside, r->vis_outside_worst_px, bound, bits, r->vis_outside_clamped_beyond, r->vis_outside_values,
+           r->vis_outside_clamped_worst);
+    TL_CHECK_LE(r->vis_outside_worst_px, bound);
+}
+
 /* Every mode renders a scene like fat does, and like the double-precision reference
  * (modes_reference.h) evaluated on the G-buffer each mode stored. Bounds, each derived:
  * - HDR: every value on a surface both frames see within 4 FP16 steps of the reference's range
  *   (stored albedo and F0, the base term's store, the light-buffer or light-sum store, the HDR
  *   store, each below one step; forward's range spans fat's normal tilted by its FP16 error, a thin
- *   mode's one float step of window depth either way).
+ *   mode's one float step of window depth either way; visibility's is forward's (its id checked
+ *   against the scene's triangles: check_vis_outside).
  * - LDR (tone-mapped, before FXAA): each 8-bit value is the tone curve (tonemap.frag.glsl, in
  *   double) of its HDR value rounded to nearest, within half a step and the curve's float
  *   evaluation. So the PSNR against fat is what 8-bit rounding makes of the two frames' HDR
@@ -297,6 +345,7 @@ static void compare_scene_to_fat(const tl_scene *s, uint32_t w, uint32_t h, size
              * TIE_EPS in test_albedo.c) */
             printf("   tone map: LDR within %.7f steps of the double tone curve of HDR\n", r.tonemap_worst);
             TL_CHECK_LE(r.tonemap_worst, 0.5 + 255.0 * 32.0 * 0x1.0p-24);
+            if (mode == TL_MODE_VISIBILITY) check_vis_outside(&r, w, h);
         }
         if (f == &img) modes_frame_free(&img);
     }
