@@ -63,6 +63,13 @@ static const combo k_combos[] = {
      {.mode = TL_MODE_FAT, TILED, .msaa = 2, .msaa_lighting = TL_MSAA_LIGHTING_SAMPLE_EDGES}},
     {"forward+, msaa 4", 0, 0, {.mode = TL_MODE_FORWARD, TILED, .msaa = 4}},
     {"forward volumes, no pre-pass", 0, 0, {.mode = TL_MODE_FORWARD, VOLUMES, .forward_depth_prepass = TL_SWITCH_OFF}},
+    /* visibility: vis-classify appends each tile to its buckets with atomics (the lists' order
+     * follows the workgroups' order), vis-resolve writes HDR per material; the crypt's glass goes
+     * forward after it, its casting lights through the resolve's shadow gate */
+    {"visibility, glass, shadows", 0, 1, {.mode = TL_MODE_VISIBILITY}},
+    {"visibility tiles of 8, reversed z, ggx, ssao, ssr", 0, 0,
+     {.mode = TL_MODE_VISIBILITY, .tile_size = 8, .depth_format = TL_DEPTH_FORMAT_D32F_REVERSED,
+      .lighting = TL_LIGHTING_GGX, .ssao = {.enabled = 1}, .ssr = {.enabled = 1}}},
     {"effects: ssao disc, distance fog, dof, bloom, ssr, vignette", 0, 0,
      {.ssao = {.enabled = 1, .method = TL_SSAO_DISC}, .fog = {.enabled = 1, .mode = TL_FOG_DISTANCE, .color = {0.1f, 0.1f, 0.12f}},
       .dof = {.enabled = 1}, .bloom = {.enabled = 1, .threshold = 0.3f}, .ssr = {.enabled = 1},
@@ -90,6 +97,7 @@ static const combo k_combos[] = {
     {"showcase: clearcoat sums, tiled 1/2", 1, 1, {LPP, TILED, .light_scale = 0.5f, .clearcoat = TL_CLEARCOAT_SUMS}},
     {"showcase: volumes 1/4, msaa 4", 1, 0, {LPP, VOLUMES, .light_scale = 0.25f, .msaa = 4}},
     {"showcase: thin-deferred tiled 1/1, msaa 2", 1, 0, {.mode = TL_MODE_THIN_DEFERRED, TILED, .msaa = 2}},
+    {"showcase: visibility (a dispatch per material)", 1, 0, {.mode = TL_MODE_VISIBILITY}},
 };
 #define COMBOS (sizeof k_combos / sizeof k_combos[0])
 
