@@ -60,6 +60,8 @@ TL_COUNTED_VOID(ProgramUniformMatrix4fv, (GLuint p, GLint l, GLsizei c, GLboolea
 TL_COUNTED_VOID(Uniform1i, (GLint l, GLint v), (l, v), )
 TL_COUNTED_VOID(DrawElementsInstancedBaseInstance, (GLenum m, GLsizei c, GLenum t, const void *i, GLsizei n, GLuint b),
                 (m, c, t, i, n, b), )
+TL_COUNTED_VOID(DispatchCompute, (GLuint x, GLuint y, GLuint z), (x, y, z), )
+TL_COUNTED_VOID(DispatchComputeIndirect, (GLintptr o), (o), )
 TL_COUNTED_VOID(TextureSubImage2D,
                 (GLuint t, GLint l, GLint x, GLint y, GLsizei w, GLsizei h, GLenum f, GLenum ty, const void *p),
                 (t, l, x, y, w, h, f, ty, p), )
@@ -87,7 +89,8 @@ static const tl_counted g_counted[] = {
     TL_ENTRY(GetFramebufferAttachmentParameteriv), TL_ENTRY(Finish), TL_ENTRY(CompileShader), TL_ENTRY(LinkProgram),
     TL_ENTRY(GetIntegerv), TL_ENTRY(GetQueryObjectuiv), TL_ENTRY(GetQueryObjectui64v), TL_ENTRY(ProgramUniform1i),
     TL_ENTRY(ProgramUniform1f), TL_ENTRY(ProgramUniformMatrix4fv), TL_ENTRY(Uniform1i),
-    TL_ENTRY(DrawElementsInstancedBaseInstance), TL_ENTRY(TextureSubImage2D), TL_ENTRY(GenerateTextureMipmap),
+    TL_ENTRY(DrawElementsInstancedBaseInstance), TL_ENTRY(DispatchCompute), TL_ENTRY(DispatchComputeIndirect),
+    TL_ENTRY(TextureSubImage2D), TL_ENTRY(GenerateTextureMipmap),
     TL_ENTRY(NamedBufferStorage), TL_ENTRY(NamedBufferData), TL_ENTRY(NamedBufferSubData), TL_ENTRY(BufferSubData),
 };
 #define TL_COUNTED_N (sizeof g_counted / sizeof g_counted[0])

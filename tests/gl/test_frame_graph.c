@@ -44,6 +44,19 @@ static int load_gl(GladGLContext *gl)
 
 /* ---- a steady frame makes no lookups, queries, compiles or waits -------------------------------- */
 
+/* The materials some non-empty object draws that are not alpha-blended (those go forward after the
+ * opaque frame). */
+static unsigned long opaque_materials_drawn(const tl_scene *s)
+{
+    unsigned long n = 0;
+    for (size_t m = 0; m < s->material_count; m++) {
+        int used = 0;
+        for (size_t o = 0; o < s->object_count && !used; o++) used = s->objects[o].material == m && s->objects[o].index_count;
+        n += used && !(s->materials[m].flags & TL_MATERIAL_ALPHA_BLEND);
+    }
+    return n;
+}
+
 TL_TEST(frame_graph_steady_frame_gl_calls)
 {
     if (!ensure_context()) { tl_test_failures++; return; }
@@ -75,7 +88,16 @@ TL_TEST(frame_graph_steady_frame_gl_calls)
         TL_CHECK_EQ_U(N(CompileShader) + N(LinkProgram), 0);
         TL_CHECK_EQ_U(N(GetIntegerv) + N(GetError) + N(GetQueryObjectuiv) + N(GetQueryObjectui64v), 0);
         TL_CHECK_EQ_U(N(NamedBufferSubData) + N(BufferSubData), 0); /* per-frame data: the mapped ring */
+        TL_CHECK_EQ_U(N(NamedBufferStorage) + N(NamedBufferData), 0); /* storage made once, grown only when short */
         TL_CHECK(N(DrawElementsInstancedBaseInstance) > 0);
+        if (mode == TL_MODE_VISIBILITY) {
+            /* vis-resolve: one indirect dispatch per opaque material the scene draws (its bucket's
+             * tiles), whatever the effects; vis-classify and light-cull one dispatch each */
+            TL_CHECK_EQ_U(N(DispatchComputeIndirect), opaque_materials_drawn(s));
+            if (!fx) TL_CHECK_EQ_U(N(DispatchCompute), 2);
+        } else {
+            TL_CHECK_EQ_U(N(DispatchComputeIndirect), 0);
+        }
         /* statistics read frames later: still no wait */
         tl_test_gl_counts_reset();
         tl_frame_stats st;
