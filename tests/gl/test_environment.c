@@ -29,7 +29,9 @@
 #define CAM_Z 12.0
 #define FOV_TAN 0.22 /* tan(fov_y / 2) */
 
-static const tl_render_mode all_modes[4] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
+static const tl_render_mode all_modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD,
+                                           TL_MODE_VISIBILITY};
+#define MODES ((int)(sizeof all_modes / sizeof all_modes[0]))
 
 /* Two rows of five unit spheres (top: a grey dielectric, bottom: gold), perceptual roughness
  * 0, 0.25, 0.5, 0.75, 1 from left to right; no lights; the camera on +Z looking down -Z, so view
@@ -162,7 +164,7 @@ TL_TEST(environment_plan_only_when_asked)
     sphere_row *g = malloc(sizeof *g);
     float *env = environment_image();
     sphere_row_build(g);
-    for (int m = 0; m < 4; m++) {
+    for (int m = 0; m < MODES; m++) {
         tl_renderer *r = make((tl_renderer_options){.mode = all_modes[m]});
         TL_CHECK(r && tl_renderer_set_scene(r, &g->s) == TL_OK);
         if (!r) continue;
@@ -197,7 +199,7 @@ TL_TEST_FULL(environment_removed_renders_todays_bytes)
     sphere_row *g = malloc(sizeof *g);
     float *env = environment_image();
     sphere_row_build(g);
-    for (int m = 0; m < 4; m++) {
+    for (int m = 0; m < MODES; m++) {
         uint8_t *a = NULL, *b = NULL;
         tl_renderer_options o = {.mode = all_modes[m]};
         render_rows(g, o, NULL, NULL, NULL, &a);
@@ -252,8 +254,8 @@ TL_TEST(background_colour_through_tone_map_every_mode)
     float *pos = NULL;
     render_rows(g, (tl_renderer_options){.mode = TL_MODE_FAT}, NULL, NULL, &pos, NULL);
     TL_CHECK(pos != NULL);
-    for (int m = 0; m < 5 && pos; m++) {
-        tl_renderer_options o = {.mode = all_modes[m % 4], .exposure = 1.3f, .msaa = m == 4 ? 4u : 0u};
+    for (int m = 0; m < MODES + 1 && pos; m++) { /* every mode, then thin-lpp with MSAA */
+        tl_renderer_options o = {.mode = all_modes[m % MODES], .exposure = 1.3f, .msaa = m == MODES ? 4u : 0u};
         memcpy(o.environment.background, bg, sizeof bg);
         uint8_t *out = NULL;
         render_rows(g, o, NULL, NULL, NULL, &out);
@@ -297,12 +299,12 @@ TL_TEST_FULL(environment_sky_is_the_image_every_mode)
     sphere_row_build(g);
     ibl_ref_env e = {env, ENV_W, ENV_H};
     render_rows(g, (tl_renderer_options){.mode = TL_MODE_FAT}, NULL, NULL, &pos, NULL);
-    for (int m = 0; m < 8 && pos; m++) {
-        int seam = m >= 4;
+    for (int m = 0; m < 2 * MODES && pos; m++) {
+        int seam = m >= MODES;
         g->s.camera.target[0] = seam ? -10.0f : 0.0f;
         g->s.camera.target[2] = seam ? (float)CAM_Z : 0.0f;
         float *hdr = NULL;
-        tl_renderer_options o = {.mode = all_modes[m % 4]};
+        tl_renderer_options o = {.mode = all_modes[m % MODES]};
         o.environment.intensity = 0.75f;
         render_rows(g, o, env, &hdr, NULL, NULL);
         double worst = 0.0;
@@ -318,7 +320,7 @@ TL_TEST_FULL(environment_sky_is_the_image_every_mode)
                 if (err > worst) worst = err;
             }
         }
-        printf("sky, %s%s: %zu pixels, largest relative error %.4f %%\n", tl_render_mode_name(all_modes[m % 4]),
+        printf("sky, %s%s: %zu pixels, largest relative error %.4f %%\n", tl_render_mode_name(all_modes[m % MODES]),
                seam ? " (looking at the wrap)" : "", n, 100.0 * worst);
         TL_CHECK(hdr != NULL && n > (size_t)W * H / 3);
         TL_CHECK_LE(worst, 0.01);
@@ -339,10 +341,11 @@ TL_TEST_FULL(environment_finite_every_mode)
     env[5] = NAN; /* bad pixels are taken as 0 */
     env[7] = -1.0f;
     env[9] = INFINITY;
-    for (int m = 0; m < 6; m++) {
+    for (int m = 0; m < MODES + 2; m++) { /* every mode, then thin-lpp with MSAA and with a light scale */
         float *hdr = NULL;
         uint8_t *out = NULL;
-        tl_renderer_options o = {.mode = all_modes[m % 4], .msaa = m == 4 ? 4u : 0u, .light_scale = m == 5 ? 0.5f : 0.0f};
+        tl_renderer_options o = {.mode = all_modes[m % MODES], .msaa = m == MODES ? 4u : 0u,
+                                 .light_scale = m == MODES + 1 ? 0.5f : 0.0f};
         render_rows(g, o, env, &hdr, NULL, &out);
         size_t bad = 0;
         for (size_t i = 0; hdr && i < (size_t)W * H * 4; i++) bad += !(hdr[i] >= 0.0f && hdr[i] <= 65504.0f);
@@ -376,7 +379,7 @@ TL_TEST_FULL(environment_leaves_unlit_materials_alone_every_mode)
         g->mat[k].model = TL_MATERIAL_MODEL_UNLIT;
         for (int c = 0; c < 3; c++) g->mat[k].albedo[c] = 0.5f;
     }
-    for (int m = 0; m < 4; m++) {
+    for (int m = 0; m < MODES; m++) {
         float *with = NULL, *without = NULL;
         render_rows(g, (tl_renderer_options){.mode = all_modes[m]}, env, &with, NULL, NULL);
         render_rows(g, (tl_renderer_options){.mode = all_modes[m]}, NULL, &without, NULL, NULL);
@@ -456,8 +459,9 @@ static double against_fat(const sphere_row *g, const float *pos, const float *fa
     return worst;
 }
 
-/* thin-lpp, thin-deferred and forward shade the environment's light as fat does (every mode
- * evaluates it in a geometry pass with the material's own data): within 0.1 %. */
+/* thin-lpp, thin-deferred, forward and visibility shade the environment's light as fat does (every
+ * mode evaluates it with the material's own data: in a geometry pass, visibility in its resolve from
+ * the rebuilt attributes): within 0.1 %. */
 TL_TEST(environment_every_mode_matches_fat)
 {
     sphere_row *g = malloc(sizeof *g);
@@ -465,7 +469,7 @@ TL_TEST(environment_every_mode_matches_fat)
     sphere_row_build(g);
     render_rows(g, (tl_renderer_options){.mode = TL_MODE_FAT}, env, &fat, &pos, NULL);
     TL_CHECK(pos && fat);
-    for (int m = 0; m < 4 && pos && fat; m++) {
+    for (int m = 0; m < MODES && pos && fat; m++) {
         if (all_modes[m] == TL_MODE_FAT) continue;
         float *hdr = NULL;
         render_rows(g, (tl_renderer_options){.mode = all_modes[m]}, env, &hdr, NULL, NULL);
