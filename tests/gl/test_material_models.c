@@ -89,8 +89,9 @@ TL_TEST(material_models_standard_pixels_unchanged_by_other_models)
     float *a = malloc(n * 16), *b = malloc(n * 16);
     uint8_t *rows = malloc(n);
     TL_CHECK(std && a && b && rows && tl_mm_rows(s, desc(TL_MODE_FORWARD), rows) == 0);
-    const tl_render_mode modes[4] = {TL_MODE_THIN_LPP, TL_MODE_FORWARD, TL_MODE_FAT, TL_MODE_THIN_DEFERRED};
-    for (int k = 0; k < 4 && std && a && b && rows; k++) {
+    const tl_render_mode modes[5] = {TL_MODE_THIN_LPP, TL_MODE_FORWARD, TL_MODE_FAT, TL_MODE_THIN_DEFERRED,
+                                     TL_MODE_VISIBILITY};
+    for (int k = 0; k < 5 && std && a && b && rows; k++) {
         TL_CHECK(tl_mm_render(s, desc(modes[k]), 1, a, NULL) == 0);
         TL_CHECK(tl_mm_render(std, desc(modes[k]), 1, b, NULL) == 0);
         size_t standard = 0, differ = 0;
@@ -444,6 +445,50 @@ TL_TEST(material_models_deferred_modes_match_forward)
     tl_scene_destroy(s);
 }
 
+/* Visibility's resolve evaluates each material with forward's light loop and colour (the exact
+ * per-light model terms, forward_color.glsl) on attributes rebuilt from the triangle: on the
+ * showcase every model's pixel is forward's within 2 FP16 steps (each frame's HDR store rounds once,
+ * GL allowing truncation: a whole step each; the sums are float in both). Against fat, which stores
+ * the models' parameters quantized and shades toon as standard, its error is printed beside
+ * forward's (material_models_deferred_modes_match_forward bounds fat's). */
+TL_TEST(material_models_visibility_matches_forward_every_model)
+{
+    if (!ensure_context()) return;
+    tl_scene *s = showcase(8);
+    size_t n = (size_t)W * H;
+    float *v = malloc(n * 16), *f = malloc(n * 16), *fat = malloc(n * 16);
+    uint8_t *rows = malloc(n);
+    int bad = !s || !v || !f || !fat || !rows || tl_mm_rows(s, desc(TL_MODE_FORWARD), rows) ||
+              tl_mm_render(s, desc(TL_MODE_FORWARD), 1, f, NULL) || tl_mm_render(s, desc(TL_MODE_FAT), 1, fat, NULL) ||
+              tl_mm_render(s, desc(TL_MODE_VISIBILITY), 1, v, NULL);
+    TL_CHECK(!bad);
+    if (!bad) {
+        tl_mm_error ef[TL_MATERIAL_MODEL_COUNT_], vfat[TL_MATERIAL_MODEL_COUNT_], ffat[TL_MATERIAL_MODEL_COUNT_];
+        tl_mm_compare(v, f, rows, n, ef);
+        tl_mm_compare(v, fat, rows, n, vfat);
+        tl_mm_compare(f, fat, rows, n, ffat);
+        const double tol = 2.0 * ldexp(1.0, -10);
+        size_t over[TL_MATERIAL_MODEL_COUNT_] = {0};
+        for (size_t i = 0; i < n; i++)
+            for (int c = 0; c < 3 && rows[i] < TL_MATERIAL_MODEL_COUNT_; c++)
+                over[rows[i]] += fabs(v[4 * i + c] - f[4 * i + c]) > tol * fabs(f[4 * i + c]) + 0x1.0p-24;
+        for (int m = 0; m < TL_MATERIAL_MODEL_COUNT_; m++) {
+            printf("  %-9s %4zu pixels: against forward largest relative %.3g (bound %.3g), %zu values over; PSNR "
+                   "against fat %.1f dB (forward's %.1f dB)\n",
+                   tl_material_model_name((uint32_t)m), ef[m].pixels, ef[m].max_rel, tol, over[m], vfat[m].psnr_db,
+                   ffat[m].psnr_db);
+            TL_CHECK_LE(W * H / 400, ef[m].pixels);
+            TL_CHECK_EQ_U(over[m], 0);
+            TL_CHECK_EQ_U(ef[m].nan_pixels, 0);
+        }
+    }
+    free(v);
+    free(f);
+    free(fat);
+    free(rows);
+    tl_scene_destroy(s);
+}
+
 /* KHR_materials_specular/_ior map onto F0: a metallic-roughness material converted per pixel from
  * dielectric_f0 renders as the constant material whose specular is mix(F0, base, metal) computed
  * here, in thin-lpp and forward. */
@@ -500,8 +545,9 @@ TL_TEST(material_models_every_mode_finite_and_lit)
     uint8_t *rows = malloc(n);
     if (!s || !a || !rows) goto done;
     TL_CHECK(tl_mm_rows(s, desc(TL_MODE_FORWARD), rows) == 0);
-    const tl_render_mode modes[4] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
-    for (int k = 0; k < 4; k++) {
+    const tl_render_mode modes[5] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD,
+                                     TL_MODE_VISIBILITY};
+    for (int k = 0; k < 5; k++) {
         TL_CHECK(tl_mm_render(s, desc(modes[k]), 1, a, NULL) == 0);
         double mean[TL_MATERIAL_MODEL_COUNT_] = {0};
         size_t count[TL_MATERIAL_MODEL_COUNT_] = {0}, bad = 0;
@@ -581,7 +627,8 @@ TL_TEST(material_models_showcase_desc_zero_is_default)
  * (a dielectric F0 other than 0.04), unlit and an emissive of strength 4 over 8 point lights: every
  * pixel within (lights + 2) FP16 ULPs of forward's value: each light's blend into a sum converts to
  * FP16 once and each mode's HDR write once, the terms are non-negative, and GL leaves the rounding
- * of a float-to-half conversion to the implementation (truncation allowed: a whole ULP each). */
+ * of a float-to-half conversion to the implementation (truncation allowed: a whole ULP each).
+ * Visibility sums its lights in float as forward does: within 2 ULPs (the two HDR writes). */
 TL_TEST(material_models_exact_ones_within_fp16_on_a_facing_plane)
 {
     enum { Q = 4, L = 8 };
@@ -613,25 +660,32 @@ TL_TEST(material_models_exact_ones_within_fp16_on_a_facing_plane)
     if (!ensure_context()) return;
     size_t n = (size_t)W * H;
     float *a = malloc(n * 16), *f = malloc(n * 16);
-    tl_renderer_desc d = desc(TL_MODE_THIN_LPP);
+    tl_renderer_desc d = desc(TL_MODE_FORWARD);
     d.options.depth_format = TL_DEPTH_FORMAT_D32F_REVERSED;
-    TL_CHECK(a && f && tl_mm_render(&s, d, 1, a, NULL) == 0);
-    d.options.mode = TL_MODE_FORWARD;
     TL_CHECK(a && f && tl_mm_render(&s, d, 1, f, NULL) == 0);
-    size_t lit = 0, over = 0;
-    double worst = 0.0;
-    for (size_t i = 0; a && f && i < n; i++) {
-        if (f[4 * i] == 0.0f && f[4 * i + 1] == 0.0f && f[4 * i + 2] == 0.0f) continue; /* background */
-        lit++;
-        for (int k = 0; k < 3; k++) {
-            double ref = f[4 * i + k], tol = (L + 2) * ldexp(1.0, -10) * ref + 1e-6, e = fabs(a[4 * i + k] - ref);
-            worst = fmax(worst, e / fmax(ref, 1e-6));
-            over += e > tol;
+    /* thin-lpp's sums blend each light into FP16; visibility sums in float as forward does: its HDR
+     * store and forward's round once each */
+    const tl_render_mode modes[2] = {TL_MODE_THIN_LPP, TL_MODE_VISIBILITY};
+    const double steps[2] = {L + 2, 2};
+    for (int mo = 0; mo < 2; mo++) {
+        d.options.mode = modes[mo];
+        TL_CHECK(a && f && tl_mm_render(&s, d, 1, a, NULL) == 0);
+        size_t lit = 0, over = 0;
+        double worst = 0.0;
+        for (size_t i = 0; a && f && i < n; i++) {
+            if (f[4 * i] == 0.0f && f[4 * i + 1] == 0.0f && f[4 * i + 2] == 0.0f) continue; /* background */
+            lit++;
+            for (int k = 0; k < 3; k++) {
+                double ref = f[4 * i + k], tol = steps[mo] * ldexp(1.0, -10) * ref + 1e-6, e = fabs(a[4 * i + k] - ref);
+                worst = fmax(worst, e / fmax(ref, 1e-6));
+                over += e > tol;
+            }
         }
+        printf("  %s: %zu pixels; largest relative difference %.3g (tolerance %.3g)\n", tl_render_mode_name(modes[mo]),
+               lit, worst, steps[mo] * ldexp(1.0, -10));
+        TL_CHECK_LE(n / 16, lit);
+        TL_CHECK_EQ_U(over, 0);
     }
-    printf("  %zu pixels; largest relative difference %.3g (tolerance %.3g)\n", lit, worst, (L + 2) * ldexp(1.0, -10));
-    TL_CHECK_LE(n / 16, lit);
-    TL_CHECK_EQ_U(over, 0);
     free(a);
     free(f);
 }
@@ -693,7 +747,7 @@ static double wrap_expected(tl_render_mode mode, const tl_material *m, const tl_
         wrapped += l[i].color[c] * fmax(nl + w, 0.0) / ((1.0 + w) * (1.0 + w));
     }
     if (m->model != TL_MATERIAL_MODEL_WRAP) return m->albedo[c] * d;
-    if (mode == TL_MODE_FORWARD) return m->albedo[c] * wrapped;
+    if (mode == TL_MODE_FORWARD || mode == TL_MODE_VISIBILITY) return m->albedo[c] * wrapped; /* forward's loop */
     return m->albedo[c] * d * (0.5 + w) / (0.5 * (1.0 + w) * (1.0 + w));
 }
 
@@ -704,7 +758,8 @@ static double wrap_expected(tl_render_mode mode, const tl_material *m, const tl_
  * forward's; at 0, 37, 73 and 102 degrees (the last past the terminator: only forward wraps it)
  * each mode has its own. Tolerance: each light's blend into thin-lpp's FP16 sum and each HDR write
  * round once (a whole FP16 step each, GL allows truncation): (lights + 2) steps for thin-lpp, 2 for
- * forward. Dropping the scaling moves thin-lpp's wraps by 4 %, 12.5 % and 33 %. */
+ * forward and visibility (forward's light loop in its resolve: the exact weight). Dropping the
+ * scaling moves thin-lpp's wraps by 4 %, 12.5 % and 33 %. */
 TL_TEST(material_models_wrap_thin_lpp_bounded_by_double_reference)
 {
     static tl_vertex v[WQ * 4];
@@ -729,9 +784,9 @@ TL_TEST(material_models_wrap_thin_lpp_bounded_by_double_reference)
                   .object_count = WQ, .materials = mat, .material_count = WQ, .lights = sets[0], .light_count = WL,
                   .camera = {.position = {0, 0, 4}, .target = {0, 0, 0}, .up = {0, 1, 0}, .near_z = 1, .far_z = 10}};
     if (!ensure_context()) return;
-    const tl_render_mode modes[2] = {TL_MODE_THIN_LPP, TL_MODE_FORWARD};
+    const tl_render_mode modes[3] = {TL_MODE_THIN_LPP, TL_MODE_FORWARD, TL_MODE_VISIBILITY};
     const size_t n = (size_t)WW * WH;
-    for (int mo = 0; mo < 2; mo++) {
+    for (int mo = 0; mo < 3; mo++) {
         float *hdr[2] = {malloc(n * 16), malloc(n * 16)};
         TL_CHECK(hdr[0] && hdr[1] && wrap_render(&s, modes[mo], (const tl_light(*)[WL])sets, 2, hdr) == 0);
         double steps = mo == 0 ? WL + 2.0 : 2.0;
