@@ -791,7 +791,7 @@ typedef struct tl_frame_stats {
                                              includes Mesa's vertex processing and binning, which run there) */
     double wall_ms;                     /**< render call start to GPU done; synchronous statistics only, else 0 */
     size_t target_bytes[TL_TARGET_COUNT]; /**< bytes each allocated target occupies; 0 = not allocated */
-    size_t gbuffer_bytes;               /**< depth + RT0 + RT1 + FAT_* (no effect target, no light lists) */
+    size_t gbuffer_bytes;               /**< depth + RT0 + RT1 + FAT_* + VIS_ID (no effect target, no light lists) */
     size_t light_buffer_bytes;          /**< LIGHT_DIFFUSE + LIGHT_SPECULAR + LIGHT_FRESNEL (+ their LIGHT_REDUCED_* copies) */
     size_t total_target_bytes;          /**< sum of target_bytes */
     size_t allocated_target_bytes;      /**< memory the targets actually occupy (shared blocks once) */

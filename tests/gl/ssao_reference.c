@@ -440,6 +440,7 @@ static int read_frame(tl_renderer *r, tl_renderer *r0, const tl_renderer_desc *d
     f->hemisphere = d->options.ssao.method == TL_SSAO_HEMISPHERE;
     f->clear = d->options.depth_format == TL_DEPTH_FORMAT_D32F_REVERSED ? 0.0f : 1.0f;
     tl_render_mode mode = d->options.mode;
+    /* thin modes and visibility (RT0 written for SSAO) store RT0; forward rebuilds normals from depth */
     f->source = mode == TL_MODE_FAT ? SRC_FAT : mode == TL_MODE_FORWARD ? SRC_DEPTH_NORMALS : SRC_THIN;
     f->depth = tl_test_read_target(r, TL_TARGET_DEPTH, n);
     if (f->source == SRC_THIN) f->rt0 = tl_test_read_target(r, TL_TARGET_RT0, n);
@@ -541,7 +542,9 @@ TL_TEST(ssao_matches_cpu_estimator_every_mode)
 {
     quads q;
     corner_scene(&q);
-    static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
+    /* visibility: its G-buffer pass writes RT0 for the estimator, vis-resolve takes the AO as forward does */
+    static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD,
+                                           TL_MODE_VISIBILITY};
     const tl_ssao_desc params[2] = {
         {.samples = 16, .radius = 0.5f, .bias = 0.0f, .falloff = 0.5f, .exponent = 3.0f, .blur_radius = 2},
         {.samples = 12, .radius = 1.0f, .bias = 0.05f, .falloff = 1.5f, .exponent = 2.0f, .blur_radius = 1},

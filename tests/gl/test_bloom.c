@@ -19,7 +19,9 @@
 
 #define BIT(t) TL_TARGET_BIT(t)
 
-static const tl_render_mode k_modes[4] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
+static const tl_render_mode k_modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD,
+                                         TL_MODE_VISIBILITY};
+#define K_MODES ((int)(sizeof k_modes / sizeof k_modes[0]))
 static const tl_light_strategy k_strategies[2] = {TL_LIGHT_STRATEGY_VOLUMES, TL_LIGHT_STRATEGY_TILED};
 
 static tl_renderer *renderer(tl_renderer_desc d, const tl_scene *s)
@@ -112,7 +114,7 @@ TL_TEST(bloom_plan_half_size_chain_rounds_up)
 TL_TEST(bloom_off_plans_nothing_in_every_mode)
 {
     tl_scene_feature_set f = {.point_lights = 40, .directional_lights = 1, .has_specular = 1};
-    for (int m = 0; m < 4; m++)
+    for (int m = 0; m < K_MODES; m++)
         for (int s = 0; s < 2; s++) {
             tl_renderer_desc d = {.options.mode = k_modes[m], .options.light_strategy = k_strategies[s], .width = 320,
                                   .height = 180};
@@ -157,7 +159,7 @@ TL_TEST(bloom_off_renders_identical_bytes_in_every_mode)
     const uint32_t w = 96, h = 64;
     size_t n = (size_t)w * h * 4;
     uint8_t *a = malloc(n), *b = malloc(n), *c = malloc(n);
-    for (int m = 0; m < 4 && a && b && c; m++)
+    for (int m = 0; m < K_MODES && a && b && c; m++)
         for (int st = 0; st < 2; st++) {
             tl_renderer_desc d = {.options.mode = k_modes[m], .options.light_strategy = k_strategies[st], .width = w,
                                   .height = h};
@@ -438,7 +440,7 @@ TL_TEST_FULL(bloom_finite_at_fp16_max_and_on_tiny_targets)
     }
     /* the crypt on tiny targets, every mode, bloom with SSAO, fog and DoF: finite HDR and bloom */
     for (size_t i = 0; i < 2; i++)
-        for (int m = 0; m < 4; m++) {
+        for (int m = 0; m < K_MODES; m++) {
             uint32_t w = sizes[i][0], h = sizes[i][1];
             tl_renderer *r = renderer((tl_renderer_desc){.options.mode = k_modes[m], .width = w, .height = h,
                                                          .options.keep_targets = BIT(TL_TARGET_HDR) | BIT(TL_TARGET_BLOOM),

@@ -20,7 +20,8 @@
 
 #define BIT(t) TL_TARGET_BIT(t)
 
-static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
+static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD,
+                                        TL_MODE_VISIBILITY};
 static const tl_depth_format depths[] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
 
 /* ---- planning ------------------------------------------------------------------------------------ */
@@ -59,7 +60,11 @@ TL_TEST(effects_off_plan_nothing_on_plan_their_passes)
         e.options.ssao.enabled = 1, e.options.ssao.method = TL_SSAO_DISC;
         TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
         TL_CHECK((on.targets & BIT(TL_TARGET_AO)) && (on.targets & BIT(TL_TARGET_AO_RAW)));
-        TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel + 4u); /* ao.raw and ao, R16F */
+        /* visibility stores no normal unless an effect reads one: its G-buffer pass then writes RT0 */
+        const int vis = modes[m] == TL_MODE_VISIBILITY;
+        TL_CHECK(!vis || (!(base.targets & BIT(TL_TARGET_RT0)) && (on.targets & BIT(TL_TARGET_RT0))));
+        TL_CHECK_EQ_U(on.bytes_per_pixel, base.bytes_per_pixel + 4u + /* ao.raw and ao, R16F */
+                                              (vis ? on.target_bytes_per_pixel[TL_TARGET_RT0] : 0u));
         e = d;
         e.options.fog.enabled = 1, e.options.fog.mode = TL_FOG_HEIGHT;
         TL_CHECK(tl_frame_plan_build(&e, &f, &on) == TL_OK);
@@ -214,9 +219,9 @@ TL_TEST(ssao_inner_corner_darkens_bounded)
 
 /* Every effect on at once, on tiny targets and with reversed D32F at near 1e-3, far 1e4 (1:10^7)
  * and an infinite far plane: AO in [0, 1] and HDR finite everywhere. */
-/* tl_frame_stats counts by what a target is: G-buffer bytes are depth, RT0, RT1 and the fat targets,
- * light-buffer bytes the light targets; the effects' targets (AO, DOF, bloom, SSR) and the light
- * lists are neither, in every mode, with every effect on. */
+/* tl_frame_stats counts by what a target is: G-buffer bytes are depth, RT0, RT1, the fat targets and
+ * visibility's id, light-buffer bytes the light targets; the effects' targets (AO, DOF, bloom, SSR),
+ * the light lists and visibility's material buckets are neither, in every mode, with every effect on. */
 TL_TEST_FULL(effects_stats_count_effect_targets_apart)
 {
     quads q;
@@ -225,9 +230,10 @@ TL_TEST_FULL(effects_stats_count_effect_targets_apart)
                             .color = {4, 4, 4}, .radius = 10.0f};
     q.s.lights = q.light;
     q.s.light_count = 1;
-    const uint32_t gbuffer = BIT(TL_TARGET_DEPTH) | BIT(TL_TARGET_RT0) | BIT(TL_TARGET_RT1) | BIT(TL_TARGET_FAT_POSITION) |
-                             BIT(TL_TARGET_FAT_NORMAL) | BIT(TL_TARGET_FAT_ALBEDO) | BIT(TL_TARGET_FAT_MATERIAL);
-    const uint32_t light = BIT(TL_TARGET_LIGHT_DIFFUSE) | BIT(TL_TARGET_LIGHT_SPECULAR) | BIT(TL_TARGET_LIGHT_FRESNEL);
+    const tl_target_set gbuffer = BIT(TL_TARGET_DEPTH) | BIT(TL_TARGET_RT0) | BIT(TL_TARGET_RT1) |
+                                  BIT(TL_TARGET_FAT_POSITION) | BIT(TL_TARGET_FAT_NORMAL) | BIT(TL_TARGET_FAT_ALBEDO) |
+                                  BIT(TL_TARGET_FAT_MATERIAL) | BIT(TL_TARGET_VIS_ID);
+    const tl_target_set light = BIT(TL_TARGET_LIGHT_DIFFUSE) | BIT(TL_TARGET_LIGHT_SPECULAR) | BIT(TL_TARGET_LIGHT_FRESNEL);
     for (size_t m = 0; m < sizeof modes / sizeof modes[0]; m++) {
         tl_renderer_desc d = {.width = 64, .height = 48, .options.mode = modes[m],
                               .options.light_strategy = TL_LIGHT_STRATEGY_TILED,

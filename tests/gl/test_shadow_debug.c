@@ -80,7 +80,8 @@ TL_TEST(shadow_debug_plan_unchanged_when_off)
  * against the truth: no acne, at most 0.5 % of the counted pixels in the wrong state. */
 TL_TEST(shadow_debug_only_term_against_truth)
 {
-    static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
+    static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD,
+                                           TL_MODE_VISIBILITY};
     tl_shadow_case c;
     TL_CHECK(tl_shadow_stiff_case(&c));
     tl_light lights[2] = {c.lights[0], /* and a point light above the box */

@@ -16,7 +16,8 @@
 
 enum { W = 320, H = 180 };
 
-static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT};
+/* the modes that plan SSR (forward does not); visibility's G-buffer pass writes RT0 for it */
+static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_VISIBILITY};
 static const tl_depth_format depths[] = {TL_DEPTH_FORMAT_D24, TL_DEPTH_FORMAT_D32F_REVERSED};
 
 /* A floor y = 0 (object 0, black mirror) and an emissive quad x in [-2, 2], y in [1, 3] at
@@ -194,8 +195,9 @@ TL_TEST(ssr_off_plans_nothing_and_changes_no_byte)
     mirror_scene m;
     mirror(&m, 1.5f);
     tl_scene_feature_set f = {.point_lights = 2, .has_specular = 1};
-    const tl_render_mode all[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
-    for (size_t md = 0; md < 4; md++) {
+    const tl_render_mode all[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD,
+                                  TL_MODE_VISIBILITY};
+    for (size_t md = 0; md < sizeof all / sizeof all[0]; md++) {
         tl_renderer_desc plain = {.width = 64, .height = 36, .options.mode = all[md]}, off = plain, on = plain;
         off.options.ssr = (tl_ssr_desc){.enabled = 0, .steps = 9, .thickness = 3.0f, .intensity = 2.0f};
         on.options.ssr.enabled = 1;
