@@ -17,7 +17,9 @@
 #define W 128
 #define H 96
 
-static const tl_render_mode modes[4] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
+static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD,
+                                        TL_MODE_VISIBILITY};
+#define MODES ((int)(sizeof modes / sizeof modes[0]))
 
 /* The pixel position of world point p through the scene's camera (GL conventions). */
 static void project(const tl_camera *c, const float p[3], double out[2])
@@ -76,7 +78,7 @@ static void check_model(int n)
     double want, tol;
     expected_pixels(s, &want, &tol);
     TL_CHECK(want > 40.0); /* every model draws something on screen */
-    for (int m = 0; m < 4; m++) {
+    for (int m = 0; m < MODES; m++) {
         tl_renderer_desc d = {.width = W, .height = H, .options = {.mode = modes[m]}};
         tl_renderer *r = tl_test_render_once(s, d);
         TL_CHECK(r != NULL);

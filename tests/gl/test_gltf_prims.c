@@ -18,7 +18,9 @@
 #define W 64
 #define H 48
 
-static const tl_render_mode modes[4] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
+static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD,
+                                        TL_MODE_VISIBILITY};
+#define MODES ((int)(sizeof modes / sizeof modes[0]))
 
 static void work_dir(char *out, size_t n, const char *test)
 {
@@ -87,7 +89,7 @@ TL_TEST(gltf_strip_and_fan_render_as_their_triangle_lists)
             return;
         }
         tl_scene *sa = load(a, 1), *sb = load(b, 1);
-        for (int m = 0; m < 4 && sa && sb; m++) {
+        for (int m = 0; m < MODES && sa && sb; m++) {
             float *ha = render_hdr(sa, modes[m], 0.0f, NULL), *hb = render_hdr(sb, modes[m], 0.0f, NULL);
             size_t drawn = 0;
             for (size_t i = 0; ha && i < (size_t)W * H; i++) drawn += ha[4 * i] > 0.0f;
@@ -160,7 +162,7 @@ TL_TEST(gltf_vertex_colors_multiply_base_colour_and_alpha_in_every_mode)
             float v = k < 2 ? roundf(vc[k][ch] * 255.0f) / 255.0f : k == 2 ? roundf(vc[k][ch] * 65535.0f) / 65535.0f : vc[k][ch];
             want[k][ch] = base[ch] * v;
         }
-    for (int m = 0; m < 4 && s; m++) {
+    for (int m = 0; m < MODES && s; m++) {
         tl_frame_plan plan;
         float *hdr = render_hdr(s, modes[m], 1.0f, &plan);
         if (!hdr) continue;
@@ -213,7 +215,7 @@ TL_TEST(gltf_texcoord1_selects_the_second_uv_set_in_every_mode)
             tol[k][ch] = 0.5f * (srgb_to_linear((v + 1.0f) / 255.0f) - srgb_to_linear((v - 1.0f) / 255.0f)) +
                          want[k][ch] * 0x1p-10f;
         }
-    for (int m = 0; m < 4 && s; m++) {
+    for (int m = 0; m < MODES && s; m++) {
         tl_frame_plan plan;
         float *hdr = render_hdr(s, modes[m], 1.0f, &plan);
         if (!hdr) continue;
@@ -232,7 +234,7 @@ TL_TEST(gltf_texcoord1_selects_the_second_uv_set_in_every_mode)
 TL_TEST(gltf_points_lines_pass_and_attributes_planned_only_when_used)
 {
     tl_scene_feature_set f = {.directional_lights = 1};
-    for (int m = 0; m < 4; m++) {
+    for (int m = 0; m < MODES; m++) {
         tl_renderer_desc d = {.width = W, .height = H, .options = {.mode = modes[m]}};
         tl_frame_plan with, without;
         f.has_points_lines = 1;

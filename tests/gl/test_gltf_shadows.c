@@ -27,9 +27,9 @@ static tl_scene *tl__load(const char *name, uint32_t budget)
 }
 
 /* The HDR luminance of `s` rendered alone (ambient off), rows bottom-up; malloc'd. */
-static float *tl__render(const tl_scene *s, uint32_t *plan_shadow_lights)
+static float *tl__render_mode(const tl_scene *s, tl_render_mode mode, uint32_t *plan_shadow_lights)
 {
-    tl_renderer_options o = {.ambient = {-1.0f, -1.0f, -1.0f}, .synchronous_stats = 1};
+    tl_renderer_options o = {.mode = mode, .ambient = {-1.0f, -1.0f, -1.0f}, .synchronous_stats = 1};
     tl_renderer *r = tl_test_render_once(s, (tl_renderer_desc){.width = W, .height = H, .options = o});
     float *p = r ? tl_test_read_target(r, TL_TARGET_HDR, (size_t)W * H) : NULL;
     tl_frame_plan plan;
@@ -37,6 +37,11 @@ static float *tl__render(const tl_scene *s, uint32_t *plan_shadow_lights)
     tl_renderer_destroy(r);
     for (size_t i = 0; p && i < (size_t)W * H; i++) p[i] = p[4 * i] + p[4 * i + 1] + p[4 * i + 2];
     return p;
+}
+
+static float *tl__render(const tl_scene *s, uint32_t *plan_shadow_lights)
+{
+    return tl__render_mode(s, TL_MODE_DEFAULT, plan_shadow_lights);
 }
 
 /* Where pixel (x, y) sees the floor, from the scene's camera (the renderer's: fov_y, aspect W/H,
@@ -111,21 +116,25 @@ static void tl__check_shadow(const float *cast, const float *plain, const tl_cam
 
 /* The rule (the tools' --shadows) makes the file's spot cast: the floor is dark in the box's
  * analytic shadow and unchanged around it; without the rule nothing casts: no shadow in the plan
- * and the image of the light without shadows. */
+ * and the image of the light without shadows. In the default mode and in visibility (its resolve
+ * gates the tile lists' lights by the same shadow lookup). */
 TL_TEST(gltf_shadows_rule_casts_the_box_shadow)
 {
     tl_scene *rule = tl__load("shadow_spot", 8), *none = tl__load("shadow_spot", 0);
     TL_CHECK(rule && none && rule->light_count == 1 && none->light_count == 1);
     if (!rule || !none || rule->light_count != 1 || none->light_count != 1) goto done;
     TL_CHECK(rule->lights[0].shadow && !none->lights[0].shadow);
-    uint32_t with = 0, without = 1;
-    float *cast = tl__render(rule, &with), *plain = tl__render(none, &without);
-    TL_CHECK(cast && plain);
-    TL_CHECK_EQ_U(with, 1);
-    TL_CHECK_EQ_U(without, 0);
-    if (cast && plain) tl__check_shadow(cast, plain, &rule->camera, "rule");
-    free(cast);
-    free(plain);
+    const tl_render_mode modes[2] = {TL_MODE_DEFAULT, TL_MODE_VISIBILITY};
+    for (int m = 0; m < 2; m++) {
+        uint32_t with = 0, without = 1;
+        float *cast = tl__render_mode(rule, modes[m], &with), *plain = tl__render_mode(none, modes[m], &without);
+        TL_CHECK(cast && plain);
+        TL_CHECK_EQ_U(with, 1);
+        TL_CHECK_EQ_U(without, 0);
+        if (cast && plain) tl__check_shadow(cast, plain, &rule->camera, m ? "rule, visibility" : "rule");
+        free(cast);
+        free(plain);
+    }
 done:
     tl_scene_destroy(rule);
     tl_scene_destroy(none);
