@@ -98,7 +98,7 @@ static tl_shadow_error tl__measure(const char *scene, const tl_shadow_case *c, s
 }
 
 /* Every mode and strategy the lookup lives in (light volumes, tiled fragment and compute, forward
- * with per-object lists and Forward+). */
+ * with per-object lists and Forward+, visibility's resolve over the tile lists). */
 typedef struct tl__config {
     const char *name;
     tl_render_mode mode;
@@ -113,7 +113,9 @@ static const tl__config tl__configs[] = {
     {"mode=fat strategy=volumes", TL_MODE_FAT, TL_LIGHT_STRATEGY_VOLUMES, TL_TILED_SHADING_DEFAULT},
     {"mode=forward strategy=volumes", TL_MODE_FORWARD, TL_LIGHT_STRATEGY_VOLUMES, TL_TILED_SHADING_DEFAULT},
     {"mode=forward strategy=tiled(Forward+)", TL_MODE_FORWARD, TL_LIGHT_STRATEGY_TILED, TL_TILED_SHADING_DEFAULT},
+    {"mode=visibility strategy=tiled", TL_MODE_VISIBILITY, TL_LIGHT_STRATEGY_TILED, TL_TILED_SHADING_DEFAULT},
 };
+#define TL__CONFIG_VISIBILITY 7
 
 static tl_renderer_options tl__options(const tl__config *k, tl_depth_format depth)
 {
@@ -149,12 +151,18 @@ static void tl__stiff_against_truth(tl_shadow_filter filter, size_t first, size_
 
 #define TL__CONFIGS (sizeof tl__configs / sizeof tl__configs[0])
 
-/* The default tier: thin-lpp with tiles (the second configuration), PCF and PCSS; the full tier:
- * every configuration. */
+/* The default tier: thin-lpp with tiles (the second configuration), PCF and PCSS, and visibility
+ * (its resolve's shadow gate: the one lookup, in a compute pass); the full tier: every
+ * configuration. */
 TL_TEST(shadows_stiff_scene_against_truth_thin_lpp_tiled)
 {
     tl__stiff_against_truth(TL_SHADOW_FILTER_DEFAULT, 1, 1);
     tl__stiff_against_truth(TL_SHADOW_FILTER_PCSS, 1, 1);
+}
+
+TL_TEST(shadows_stiff_scene_against_truth_visibility)
+{
+    tl__stiff_against_truth(TL_SHADOW_FILTER_DEFAULT, TL__CONFIG_VISIBILITY, 1);
 }
 
 TL_TEST_FULL(shadows_stiff_scene_against_truth) { tl__stiff_against_truth(TL_SHADOW_FILTER_DEFAULT, 0, TL__CONFIGS); }
@@ -170,12 +178,13 @@ TL_TEST_FULL(shadows_pcss_stiff_scene_against_truth) { tl__stiff_against_truth(T
  * loss is far above that: one texel of PCF's (2r + 1)^2 tent wrongly shadowed takes its bilinear
  * weight, and PCSS's kernel at least PCF's. With a box standing in both pools, the term against the
  * ray-traced truth: no acne, at most 0.5 % of the pixels in the wrong state. Both depth formats,
- * in thin-lpp's light volumes and tiled compute, fat and Forward+ (the one lookup, tl_shadow, in
- * each kind of lighting pass). */
+ * in thin-lpp's light volumes and tiled compute, fat, Forward+ and visibility (the one lookup,
+ * tl_shadow, in each kind of lighting pass). */
 static void tl__spot_against_truth(tl_shadow_filter filter)
 {
     const uint32_t w = 320, h = 180;
-    const size_t configs[] = {0, 2, 4, 6}; /* light volumes, tiled compute, fat, Forward+: one lookup */
+    /* light volumes, tiled compute, fat, Forward+, visibility's resolve: one lookup */
+    const size_t configs[] = {0, 2, 4, 6, TL__CONFIG_VISIBILITY};
     const float slack = (float)TL_HALF_REL_STEP; /* two roundings, half an FP16 step (2^-11) each */
     tl_shadow_case open, boxed;
     TL_CHECK(tl_shadow_spot_case(&open, 0) && tl_shadow_spot_case(&boxed, 1));
@@ -540,6 +549,11 @@ static void tl__term_values_scenes(size_t first, size_t count)
 
 TL_TEST(shadows_term_one_lit_zero_shadowed_away_from_edges) { tl__term_values_scenes(1, 1); }
 
+TL_TEST(shadows_term_one_lit_zero_shadowed_away_from_edges_visibility)
+{
+    tl__term_values_scenes(TL__CONFIG_VISIBILITY, 1);
+}
+
 TL_TEST_FULL(shadows_term_one_lit_zero_shadowed_away_from_edges_every_config)
 {
     tl__term_values_scenes(0, TL__CONFIGS);
@@ -735,41 +749,47 @@ static tl_renderer *tl__stiff_renderer(tl_shadow_case *c, tl_light *lights, size
 }
 
 /* No casting light: no shadow pass, no TL_SHADOWS in any program, the same plan and the same image
- * whatever the shadow options say, and no atlas. */
+ * whatever the shadow options say, and no atlas; in the default mode and in visibility. */
 TL_TEST(shadows_left_out_without_casters)
 {
     tl_shadow_case c;
     TL_CHECK(tl_shadow_stiff_case(&c));
     tl_light lights[2] = {c.lights[0], c.lights[1]};
     lights[0].shadow = lights[1].shadow = 0;
-    tl_renderer_options other = {.shadows = {.atlas_size = 1024, .max_lights = 2, .pcf_radius = 3}};
-    tl_renderer *a = tl__stiff_renderer(&c, lights, 2, (tl_renderer_options){0});
-    tl_renderer *b = tl__stiff_renderer(&c, lights, 2, other);
-    TL_CHECK(a && b);
-    if (a && b) {
-        tl_frame_plan pa, pb;
-        TL_CHECK(tl_renderer_get_plan(a, &pa) == TL_OK && tl_renderer_get_plan(b, &pb) == TL_OK);
-        TL_CHECK_EQ_U(pa.shadow_lights, 0);
-        for (size_t i = 0; i < pa.program_count; i++) TL_CHECK(strstr(pa.programs[i].defines, "TL_SHADOWS") == NULL);
-        char ta[16384], tb[16384];
-        tl_frame_plan_format(&pa, ta, sizeof ta);
-        tl_frame_plan_format(&pb, tb, sizeof tb);
-        TL_CHECK(strcmp(ta, tb) == 0);
-        tl_frame_stats st;
-        TL_CHECK(tl_renderer_render(a, NULL, &st) == TL_OK);
-        TL_CHECK_EQ_U(st.shadow_atlas_bytes, 0);
-        TL_CHECK_EQ_U(st.shadow_maps_rendered, 0);
-        float *ia = tl_test_read_target(a, TL_TARGET_HDR, 160 * 90), *ib = tl_test_read_target(b, TL_TARGET_HDR, 160 * 90);
-        TL_CHECK(ia && ib && memcmp(ia, ib, 160 * 90 * 4 * sizeof(float)) == 0);
-        free(ia);
-        free(ib);
+    for (int vis = 0; vis < 2; vis++) {
+        const tl_render_mode mode = vis ? TL_MODE_VISIBILITY : TL_MODE_DEFAULT;
+        tl_renderer_options other = {.mode = mode, .shadows = {.atlas_size = 1024, .max_lights = 2, .pcf_radius = 3}};
+        tl_renderer *a = tl__stiff_renderer(&c, lights, 2, (tl_renderer_options){.mode = mode});
+        tl_renderer *b = tl__stiff_renderer(&c, lights, 2, other);
+        TL_CHECK(a && b);
+        if (a && b) {
+            tl_frame_plan pa, pb;
+            TL_CHECK(tl_renderer_get_plan(a, &pa) == TL_OK && tl_renderer_get_plan(b, &pb) == TL_OK);
+            TL_CHECK_EQ_U(pa.shadow_lights, 0);
+            for (size_t i = 0; i < pa.program_count; i++)
+                TL_CHECK(strstr(pa.programs[i].defines, "TL_SHADOWS") == NULL);
+            char ta[16384], tb[16384];
+            tl_frame_plan_format(&pa, ta, sizeof ta);
+            tl_frame_plan_format(&pb, tb, sizeof tb);
+            TL_CHECK(strcmp(ta, tb) == 0);
+            tl_frame_stats st;
+            TL_CHECK(tl_renderer_render(a, NULL, &st) == TL_OK);
+            TL_CHECK_EQ_U(st.shadow_atlas_bytes, 0);
+            TL_CHECK_EQ_U(st.shadow_maps_rendered, 0);
+            float *ia = tl_test_read_target(a, TL_TARGET_HDR, 160 * 90);
+            float *ib = tl_test_read_target(b, TL_TARGET_HDR, 160 * 90);
+            TL_CHECK(ia && ib && memcmp(ia, ib, 160 * 90 * 4 * sizeof(float)) == 0);
+            free(ia);
+            free(ib);
+        }
+        tl_renderer_destroy(a);
+        tl_renderer_destroy(b);
     }
-    tl_renderer_destroy(a);
-    tl_renderer_destroy(b);
     tl_shadow_case_free(&c);
 }
 
-/* With a casting light the plan says so and every lighting program has the switch. */
+/* With a casting light the plan says so and every lighting program has the switch (visibility's
+ * resolve too). */
 TL_TEST(shadows_planned_with_a_caster)
 {
     tl_shadow_case c;
@@ -801,6 +821,21 @@ TL_TEST(shadows_planned_with_a_caster)
         off[0].shadow = off[1].shadow = 0; /* set_lights re-plans without shadows */
         TL_CHECK(tl_renderer_set_lights(r, off, 2) == TL_OK && tl_renderer_get_plan(r, &p) == TL_OK);
         TL_CHECK_EQ_U(p.shadow_lights, 0);
+    }
+    tl_renderer_destroy(r);
+    /* visibility lights in its resolve: that program has the switch, and no light pass is planned */
+    r = tl__stiff_renderer(&c, c.lights, 2, (tl_renderer_options){.mode = TL_MODE_VISIBILITY});
+    TL_CHECK(r != NULL);
+    if (r && tl_renderer_get_plan(r, &p) == TL_OK) {
+        TL_CHECK_EQ_U(p.shadow_lights, 2);
+        int resolve = 0;
+        for (size_t i = 0; i < p.program_count; i++) {
+            TL_CHECK(strncmp(p.programs[i].name, "lights.", 7) != 0);
+            if (p.programs[i].pass != TL_PASS_VIS_RESOLVE) continue;
+            resolve++;
+            TL_CHECK(strstr(p.programs[i].defines, "TL_SHADOWS") != NULL);
+        }
+        TL_CHECK_EQ_U(resolve, 1);
     }
     tl_renderer_destroy(r);
     tl_shadow_case_free(&c);
