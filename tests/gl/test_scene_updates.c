@@ -109,6 +109,9 @@ static const tl_renderer_options k_options[] = {
     {.mode = TL_MODE_FAT, .depth_format = TL_DEPTH_FORMAT_D32F_REVERSED},
     {.mode = TL_MODE_FORWARD},
     {.mode = TL_MODE_FORWARD, .light_strategy = TL_LIGHT_STRATEGY_TILED, .depth_format = TL_DEPTH_FORMAT_D32F_REVERSED},
+    /* visibility: the id names the object's slot and its triangle within the object's range, and the
+     * resolve reads the object record's first index and material: each update must keep them */
+    {.mode = TL_MODE_VISIBILITY},
 };
 #define OPTIONS (sizeof k_options / sizeof k_options[0])
 
