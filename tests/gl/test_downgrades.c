@@ -59,6 +59,15 @@ static const downgrade_case k_cases[] = {
     {"shadow debug with per-sample edges", {.mode = TL_MODE_FAT, .msaa = 4, .shadow_debug = 1},
      {.mode = TL_MODE_FAT, .msaa = 4}, 4, "shadow_debug", "1", "0", "multisampled"},
     {"full-screen lights with tiles", {.fullscreen_lights = 1}, {0}, 40, "fullscreen_lights", "1", "0", "tiled"},
+    /* visibility lights in its compute resolve from the tile lists, and has no light buffer */
+    {"light volumes in visibility", {.mode = TL_MODE_VISIBILITY, .light_strategy = TL_LIGHT_STRATEGY_VOLUMES},
+     {.mode = TL_MODE_VISIBILITY}, 4, "light_strategy", "volumes", "tiled", "tile lists"},
+    {"fragment tiles in visibility", {.mode = TL_MODE_VISIBILITY, .tiled_shading = TL_TILED_SHADING_FRAGMENT},
+     {.mode = TL_MODE_VISIBILITY}, 4, "tiled_shading", "fragment", "compute", "compute pass"},
+    {"light scale in visibility", {.mode = TL_MODE_VISIBILITY, .light_scale = 0.5f}, {.mode = TL_MODE_VISIBILITY}, 4,
+     "light_scale", "0.5", "1", "only thin-lpp"},
+    {"stipple in visibility", {.mode = TL_MODE_VISIBILITY, .transparency = TL_TRANSPARENCY_STIPPLE},
+     {.mode = TL_MODE_VISIBILITY}, 4, "transparency", "stipple", "forward", "thin-lpp"},
 };
 
 /* The room (render_room.h) with a point light and a directional one. */
@@ -108,7 +117,10 @@ TL_TEST(plan_lists_each_downgrade_with_option_value_and_reason)
                                          {.msaa = 4},                                   /* auto clearcoat: approx */
                                          {.light_buffer = TL_LIGHT_BUFFER_COMPACT},     /* default Fresnel: nv */
                                          {.mode = TL_MODE_FORWARD, .tile_size = 32},    /* a tile size with volumes */
-                                         {.mode = TL_MODE_FAT, .rt0 = TL_RT0_RGB10A2}}; /* RT0 fat does not have */
+                                         {.mode = TL_MODE_FAT, .rt0 = TL_RT0_RGB10A2},  /* RT0 fat does not have */
+                                         {.mode = TL_MODE_VISIBILITY},                  /* tiles by the mode */
+                                         {.mode = TL_MODE_VISIBILITY, .light_strategy = TL_LIGHT_STRATEGY_TILED,
+                                          .tiled_shading = TL_TILED_SHADING_COMPUTE, .light_scale = 1.0f}};
     for (size_t i = 0; i < sizeof autos / sizeof autos[0]; i++) {
         plan(&autos[i], 4, &p);
         TL_CHECK_EQ_U(p.downgrade_count, 0);
