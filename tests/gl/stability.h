@@ -32,7 +32,8 @@
 
 /* The render modes the key cases (FP16 limits, 10^4 lights, 1x1, empty scene) run in; the other
  * cases check the thin light buffer, which only thin-lpp has. */
-static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
+static const tl_render_mode modes[] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD,
+                                       TL_MODE_VISIBILITY};
 #define MODE_COUNT (sizeof modes / sizeof modes[0])
 
 /* ---- small hand-made scenes (stability_frame.c) -------------------------------------------- */
