@@ -13,10 +13,12 @@ vec3 tl_forward_color(tl_surface s, vec3 n, vec3 v, tl_light_sums sums, ivec2 px
     specular = fresnel = vec3(0.0);
 #endif
     vec3 ambient = tl_ambient(s.occlusion, px, diffuse);
-    vec3 c = s.albedo * (diffuse + ambient) + s.specular * specular + fresnel + s.emissive;
+    // summed in tl_model_shade's order, so that a standard material's pixel is the same float with
+    // the material models' switch on (another model on screen) as without
+    vec3 sp = s.specular * specular + fresnel;
+    vec3 c = s.albedo * (diffuse + ambient) + sp + s.emissive;
 #if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD) && !defined(TL_STIPPLE)
-    c = tl_model_shade(u_material_model, s, clamp(dot(n, v), 0.0, 1.0), diffuse, ambient, s.specular * specular + fresnel,
-                       tl_model_acc);
+    c = tl_model_shade(u_material_model, s, clamp(dot(n, v), 0.0, 1.0), diffuse, ambient, sp, tl_model_acc);
 #endif
 #ifdef TL_IBL
 #if defined(TL_MATERIAL_MODELS) && defined(TL_FORWARD) && !defined(TL_STIPPLE)
