@@ -424,6 +424,7 @@ TL_TEST(tile_light_counts_match_cpu_cull)
         {TL_MODE_THIN_LPP, TL_DEPTH_FORMAT_D24, 8},  {TL_MODE_THIN_LPP, TL_DEPTH_FORMAT_D24, 16},
         {TL_MODE_THIN_LPP, TL_DEPTH_FORMAT_D24, 32}, {TL_MODE_THIN_LPP, TL_DEPTH_FORMAT_D32F_REVERSED, 16},
         {TL_MODE_FAT, TL_DEPTH_FORMAT_D24, 16},      {TL_MODE_FORWARD, TL_DEPTH_FORMAT_D24, 16},
+        {TL_MODE_VISIBILITY, TL_DEPTH_FORMAT_D24, 16},
     };
     for (size_t k = 0; k < sizeof runs / sizeof runs[0]; k++) {
         tl_renderer_desc d = {.options.mode = runs[k].mode, .options.light_strategy = TL_LIGHT_STRATEGY_TILED,

@@ -239,6 +239,7 @@ static void coplanar_against_fat(tl_depth_format depth)
         {"forward", TL_MODE_FORWARD, TL_LIGHT_STRATEGY_VOLUMES, 0, 8, 0, 45.0},
         {"forward+", TL_MODE_FORWARD, TL_LIGHT_STRATEGY_TILED, 0, 8, 0, 45.0},
         {"forward no pre-pass", TL_MODE_FORWARD, TL_LIGHT_STRATEGY_VOLUMES, 1, 8, 0, 45.0},
+        {"visibility", TL_MODE_VISIBILITY, TL_LIGHT_STRATEGY_TILED, 0, 8, 0, 45.0},
     };
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         tl_renderer_desc d = base;

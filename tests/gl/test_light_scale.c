@@ -145,9 +145,10 @@ TL_TEST(light_scale_one_same_bytes_in_every_mode_and_strategy)
     TL_CHECK(tl_scene_create_default(&(tl_default_scene_desc){.point_lights = 24, .detail = 1}, &s) == TL_OK);
     if (!s) return;
     static uint8_t base[W * H * 4], other[W * H * 4];
-    const tl_render_mode modes[4] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD};
+    const tl_render_mode modes[5] = {TL_MODE_THIN_LPP, TL_MODE_THIN_DEFERRED, TL_MODE_FAT, TL_MODE_FORWARD,
+                                     TL_MODE_VISIBILITY};
     const tl_light_strategy strategies[2] = {TL_LIGHT_STRATEGY_VOLUMES, TL_LIGHT_STRATEGY_TILED};
-    for (int m = 0; m < 4; m++)
+    for (int m = 0; m < 5; m++)
         for (int k = 0; k < 2; k++) {
             TL_CHECK(output_of(s, modes[m], strategies[k], 0.0f, base));
             TL_CHECK(output_of(s, modes[m], strategies[k], 1.0f, other));
