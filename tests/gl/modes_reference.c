@@ -202,14 +202,10 @@ static double segment_distance(const double q[2], const double a[2], const doubl
  * vis_rebuild.glsl does. Returns 1 with the centre's distance outside the triangle in pixels and
  * the triangle's own point nearest in barycentrics (clamped to [0, 1] and renormalised), with its
  * normal (the interpolated one, facing the eye as the resolve's); 0 where the centre is inside (or
- * nothing was drawn). */
-static int vis_surface_outside(const tl_scene *s, const modes_frame *m, const tl_projection *pr, size_t x, size_t y,
-                               double p[3], double n[3], double *outside_px)
+ * nothing was drawn); -1 where the id names no triangle of the scene. */
+/* Triangle `tri` of object `obj` in the frame's view space: its vertices and vertex normals. */
+static void vis_triangle(const tl_scene *s, const modes_frame *m, size_t obj, size_t tri, double P[3][3], double N[3][3])
 {
-    size_t i = y * m->w + x;
-    if (m->vis_id[4 * i + 2] == 0.0f) return 0;
-    const size_t obj = (size_t)m->vis_id[4 * i], tri = (size_t)m->vis_id[4 * i + 1];
-    if (obj >= s->object_count) return 0;
     const tl_object *o = &s->objects[obj];
     double model[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1}, mv[16];
     int zero = 1;
@@ -229,7 +225,6 @@ static int vis_surface_outside(const tl_scene *s, const modes_frame *m, const tl
     cross3(col[2], col[0], nm[1]);
     cross3(col[0], col[1], nm[2]);
     double det = dot3(col[0], nm[0]);
-    double P[3][3], N[3][3];
     for (int v = 0; v < 3; v++) {
         const tl_vertex *vx = &s->vertices[s->indices[o->first_index + 3 * tri + (size_t)v]];
         for (int r = 0; r < 3; r++) {
@@ -241,6 +236,17 @@ static int vis_surface_outside(const tl_scene *s, const modes_frame *m, const tl
             }
         }
     }
+}
+
+static int vis_surface_outside(const tl_scene *s, const modes_frame *m, const tl_projection *pr, size_t x, size_t y,
+                               double p[3], double n[3], double *outside_px)
+{
+    size_t i = y * m->w + x;
+    if (m->vis_id[4 * i + 2] == 0.0f) return 0;
+    const size_t obj = (size_t)m->vis_id[4 * i], tri = (size_t)m->vis_id[4 * i + 1];
+    if (obj >= s->object_count || 3 * tri + 2 >= s->objects[obj].index_count) return -1; /* no such triangle */
+    double P[3][3], N[3][3];
+    vis_triangle(s, m, obj, tri, P, N);
     /* the pixel centre's ray, through two depths of its window point */
     float ndc_x = ((float)x + 0.5f) * (1.0f / (float)m->w) * 2.0f - 1.0f;
     float ndc_y = ((float)y + 0.5f) * (1.0f / (float)m->h) * 2.0f - 1.0f, q0[3], q1[3];
@@ -342,7 +348,9 @@ void modes_compare_reference(const tl_scene *s, const modes_frame *fat, const mo
              * so the reference stays at fat's point; the range at the triangle's own (clamped) point
              * is kept for the figure the test prints, to show the pixels tell the two apart */
             double pc[3], nc[3], outside_px = 0.0, tri_lo[3], tri_hi[3];
-            const int outside = m->vis_id && vis_surface_outside(s, m, &pr, x, y, pc, nc, &outside_px);
+            const int vis = m->vis_id ? vis_surface_outside(s, m, &pr, x, y, pc, nc, &outside_px) : 0;
+            const int outside = vis == 1;
+            res->vis_bad_ids += vis < 0;
             if (outside) {
                 double cp[3];
                 shade_range(model, &surf, pc, nc, tilt, here, lights_at(all, nl, pc, here), cp, tri_lo, tri_hi);

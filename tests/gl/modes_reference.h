@@ -46,6 +46,7 @@ typedef struct modes_ref_result {
      * the triangle's own clamped point would put beyond the tolerance (the resolve extrapolates as
      * the rasteriser does: they are compared at fat's point) */
     size_t vis_outside, vis_outside_values, vis_outside_clamped_beyond;
+    size_t vis_bad_ids; /* compared pixels whose id names no triangle of the scene */
     double vis_outside_worst_px, vis_outside_clamped_worst;
 } modes_ref_result;
 

@@ -280,6 +280,7 @@ static void check_vis_outside(const modes_ref_result *r, uint32_t w, uint32_t h)
            r->vis_outside, r->vis_outside_worst_px, bound, bits, r->vis_outside_clamped_beyond, r->vis_outside_values,
            r->vis_outside_clamped_worst);
     TL_CHECK_LE(r->vis_outside_worst_px, bound);
+    TL_CHECK_EQ_U(r->vis_bad_ids, 0);
 }
 
 /* Every mode renders a scene like fat does, and like the double-precision reference
