@@ -191,5 +191,6 @@ const tl__pass_def tl__pass_vis_resolve = {
     .permute = tl__vis_resolve_permute,
     .execute = tl__vis_resolve_execute,
     .prepare = tl__vis_resolve_prepare,
+    /* the shadows service also hands the device, where prepare's refusal is logged */
     .services = TL__PASS_SCENE | TL__PASS_LIGHTS | TL__PASS_SHADOWS,
 };
