@@ -668,6 +668,19 @@ static void modes_log_error(void *user, tl_log_level level, const char *message)
     if (level == TL_LOG_ERROR) fprintf(stderr, "%s\n", message);
 }
 
+/* The generated test scenes, each loaded with 8 seeded point lights added. */
+static const char *const modes_gltf_files[3] = {"textured_boxes.gltf", "materials.glb", "lights.gltf"};
+
+static tl_scene *modes_load_gltf(const char *dir, int f)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/%s", dir, modes_gltf_files[f]);
+    tl_scene *s = NULL;
+    tl_gltf_options go = {.extra_lights = 8, .logger = {modes_log_error, NULL}};
+    TL_CHECK(tl_scene_load_gltf(path, &go, &s) == TL_OK);
+    return s;
+}
+
 /* The generated glTF test scenes (textures and a node hierarchy; several materials with alpha
  * MASK, BLEND and double-sided; punctual lights of every type) render through every mode like fat
  * does, and each gets its own plan. */
@@ -676,14 +689,9 @@ TL_TEST(modes_match_fat_gltf_scenes)
     if (!ensure_context()) { tl_test_failures++; return; }
     const char *dir = TL_TEST_WORK_DIR "/modes_gltf";
     TL_CHECK(tl_test_write_gltf_scenes(dir) == 0);
-    static const char *const files[] = {"textured_boxes.gltf", "materials.glb", "lights.gltf"};
     char plans[3][2048];
     for (int f = 0; f < 3; f++) {
-        char path[512];
-        snprintf(path, sizeof path, "%s/%s", dir, files[f]);
-        tl_scene *s = NULL;
-        tl_gltf_options go = {.extra_lights = 8, .logger = {modes_log_error, NULL}};
-        TL_CHECK(tl_scene_load_gltf(path, &go, &s) == TL_OK);
+        tl_scene *s = modes_load_gltf(dir, f);
         if (!s) continue;
         const uint32_t w = 240, h = 136;
         size_t n = (size_t)w * h * 4;
@@ -705,7 +713,7 @@ TL_TEST(modes_match_fat_gltf_scenes)
             if (!(s->materials[s->objects[i].material].flags & TL_MATERIAL_ALPHA_BLEND))
                 opaque[o.object_count++] = s->objects[i];
         TL_CHECK(opaque != NULL);
-        if (opaque) compare_scene_to_fat(&o, w, h, 1000, 40.0, files[f]); /* objects on the background */
+        if (opaque) compare_scene_to_fat(&o, w, h, 1000, 40.0, modes_gltf_files[f]); /* objects on the background */
         free(opaque);
         tl_scene_feature_set fs;
         tl_scene_features(s, &fs);
@@ -734,14 +742,9 @@ TL_TEST(visibility_psnr_within_1db_of_forward_gltf_scenes)
     if (!ensure_context()) { tl_test_failures++; return; }
     const char *dir = TL_TEST_WORK_DIR "/modes_gltf_psnr";
     TL_CHECK(tl_test_write_gltf_scenes(dir) == 0);
-    static const char *const files[] = {"textured_boxes.gltf", "materials.glb", "lights.gltf"};
     const uint32_t w = 240, h = 136;
     for (int f = 0; f < 3; f++) {
-        char path[512];
-        snprintf(path, sizeof path, "%s/%s", dir, files[f]);
-        tl_scene *s = NULL;
-        tl_gltf_options go = {.extra_lights = 8, .logger = {modes_log_error, NULL}};
-        TL_CHECK(tl_scene_load_gltf(path, &go, &s) == TL_OK);
+        tl_scene *s = modes_load_gltf(dir, f);
         if (!s) continue;
         frame_images fat = {0};
         tl_frame_stats st;
@@ -751,7 +754,7 @@ TL_TEST(visibility_psnr_within_1db_of_forward_gltf_scenes)
         TL_CHECK(ok);
         printf("%s, %ux%u: output PSNR against fat: visibility %.2f dB, forward %.2f dB, thin-lpp %.2f dB (visibility "
                "%s 1 dB of it)\n",
-               files[f], w, h, vis, fwd, lpp, vis >= lpp - 1.0 ? "within" : "NOT within");
+               modes_gltf_files[f], w, h, vis, fwd, lpp, vis >= lpp - 1.0 ? "within" : "NOT within");
         TL_CHECK(fabs(vis - fwd) <= 1.0);
         free(fat.ldr);
         free(fat.hdr);
